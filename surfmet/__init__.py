@@ -1,0 +1,46 @@
+"""surfmet: rough-surface metrology and contact mechanics.
+
+Reading scans::
+
+    import surfmet
+    topo = surfmet.read("scan.nms")        # Topography or Profile, heights in metres
+    surfmet.write(topo, "copy.x3p")
+
+Analysis lives in submodules (``surfmet.areal``, ``surfmet.filters``...) and in the two
+array-level engines ``profiles`` and ``contact``; they are imported on first use so that
+``import surfmet`` stays fast.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from surfmet._version import __version__
+from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
+from surfmet.model import Profile, Topography
+
+
+def read(path: Any, format: str | None = None, **options: Any) -> Topography | Profile:
+    """Read a scan file (see :func:`surfmet.io.read`)."""
+    from surfmet.io import read as _read
+
+    return _read(path, format=format, **options)
+
+
+def write(scan: Topography | Profile, path: Any, format: str | None = None, **options: Any) -> Any:
+    """Write a scan file (see :func:`surfmet.io.write`)."""
+    from surfmet.io import write as _write
+
+    return _write(scan, path, format=format, **options)
+
+
+__all__ = [
+    "Profile",
+    "SurfmetError",
+    "SurfmetFormatError",
+    "SurfmetInputError",
+    "Topography",
+    "__version__",
+    "read",
+    "write",
+]

@@ -1,0 +1,5 @@
+"""``python -m surfmet`` runs the command-line interface."""
+
+from surfmet.cli import main
+
+raise SystemExit(main())

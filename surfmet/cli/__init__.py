@@ -1,0 +1,110 @@
+"""The ``surfmet`` command: one entry point, one module per subcommand.
+
+Each module in :data:`SUBCOMMANDS` defines ``add_parser(subparsers)``, which adds its parser
+and sets ``func`` (``func(args) -> int``). Modules import heavy dependencies inside ``func``
+so that ``surfmet --help`` and ``surfmet info`` stay fast.
+
+Exit status: 0 ok, 1 user error (bad input, unreadable file), 2 internal error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+from collections.abc import Sequence
+
+from surfmet._version import __version__
+
+SUBCOMMANDS = (
+    "info",
+    "formats",
+    "roughness",
+    "fit",
+    "contact",
+    "hertz_check",
+    "rolling",
+    "rotor",
+    "show",
+    "report",
+    "demo",
+)
+
+EPILOG = """examples:
+  surfmet info scan.nms --json
+  surfmet roughness plate.x3p --level plane --json
+  surfmet fit ball.x3p --shape sphere
+  surfmet contact --radius 20mm --load 10N --materials steel,aluminium
+  surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,aluminium
+  surfmet rotor table3_frames.tsv
+  surfmet demo --out demo_out
+
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.
+"""
+
+
+class UserError(Exception):
+    """A command-line usage error (exit status 1)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    # argparse exits with status 2 on usage errors; our convention reserves 2 for internal
+    # errors, so usage errors become UserError (status 1).
+    def error(self, message: str) -> None:  # type: ignore[override]
+        raise UserError(f"{self.prog}: {message}")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The full argument parser with every available subcommand."""
+    parser = _Parser(
+        prog="surfmet",
+        description="Rough-surface metrology and contact mechanics.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"surfmet {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    for name in SUBCOMMANDS:
+        try:
+            mod = importlib.import_module(f"surfmet.cli.{name}")
+        except ModuleNotFoundError as exc:  # subcommand not built yet
+            if exc.name != f"surfmet.cli.{name}":
+                raise
+            continue
+        mod.add_parser(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the CLI; returns the exit status."""
+    from surfmet.errors import user_error_types
+
+    argv = list(sys.argv[1:] if argv is None else argv)
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv)
+        if not getattr(args, "func", None):
+            parser.print_help(sys.stderr)
+            return 1
+        return int(args.func(args) or 0)
+    except UserError as exc:
+        print(f"surfmet: error: {exc}", file=sys.stderr)
+        return 1
+    except user_error_types() as exc:
+        print(f"surfmet: error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("surfmet: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        return 0
+    except Exception as exc:  # noqa: BLE001 - the last line of defence
+        if os.environ.get("SURFMET_DEBUG"):
+            raise
+        print(
+            f"surfmet: internal error: {type(exc).__name__}: {exc} "
+            "(set SURFMET_DEBUG=1 for the traceback, and please report it)",
+            file=sys.stderr,
+        )
+        return 2

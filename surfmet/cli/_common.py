@@ -1,0 +1,67 @@
+"""Helpers shared by the subcommands: argument types, JSON output, progress bars."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Iterable, Iterator
+from typing import Any, TypeVar
+
+from surfmet import units
+from surfmet.errors import SurfmetInputError
+
+T = TypeVar("T")
+
+
+def _argtype(parse: Any, what: str) -> Any:
+    def convert(text: str) -> Any:
+        try:
+            return parse(text)
+        except SurfmetInputError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    convert.__name__ = what  # argparse names the type in its messages
+    return convert
+
+
+length = _argtype(units.parse_length, "length")
+force = _argtype(units.parse_force, "force")
+pressure = _argtype(units.parse_pressure, "pressure")
+length_range = _argtype(units.parse_length_range, "length range")
+force_range = _argtype(units.parse_force_range, "load range")
+
+
+def positive_length(text: str) -> float:
+    """argparse type: a strictly positive length in metres."""
+    value = length(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"length {text!r} must be positive")
+    return value
+
+
+def add_json_flag(parser: argparse.ArgumentParser) -> None:
+    """The ``--json`` flag every subcommand shares."""
+    parser.add_argument(
+        "--json", action="store_true", help="machine-readable JSON on stdout (logs go to stderr)"
+    )
+
+
+def emit_json(obj: Any) -> None:
+    """Write ``obj`` as JSON on stdout (NaN/inf become null)."""
+    text = json.dumps(units.jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False)
+    sys.stdout.write(text + "\n")
+    sys.stdout.flush()
+
+
+def log(message: str) -> None:
+    """A line of human information on stderr."""
+    print(message, file=sys.stderr)
+
+
+def progress(iterable: Iterable[T], total: int | None = None, desc: str = "") -> Iterator[T]:
+    """A progress bar on stderr for long loops (hidden when stderr is not a terminal)."""
+    from tqdm.auto import tqdm
+
+    yield from tqdm(iterable, total=total, desc=desc, file=sys.stderr, leave=False,
+                    disable=None, dynamic_ncols=True)

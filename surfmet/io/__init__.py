@@ -1,0 +1,63 @@
+"""Scan readers and writers, one module per format, registered by name.
+
+``surfmet.io.read(path)`` detects the format from magic bytes, then from the extension.
+Loading a file imports only the data model, the error types and the format modules: never
+analysis, plotting or numba.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from surfmet.io.registry import (
+    FormatSpec,
+    detect_format,
+    encode,
+    formats,
+    read,
+    read_bytes,
+    register_reader,
+    register_writer,
+    write,
+)
+
+# Every built-in format module; each registers itself on import. Order matters only for
+# magic detection ties, which ``priority`` settles.
+FORMAT_MODULES = (
+    "x3p",
+    "sur",
+    "plu",
+    "opd",
+    "nms",
+    "metropro",
+    "al3d",
+    "frt",
+    "sdf",
+    "asc",
+    "gwy",
+    "dektak",
+    "opdx",
+    "hfm",
+    "xyz",
+    "npy",
+)
+
+for _mod in FORMAT_MODULES:
+    try:
+        importlib.import_module(f"surfmet.io.{_mod}")
+    except ModuleNotFoundError as _exc:  # a format module not written yet
+        if _exc.name != f"surfmet.io.{_mod}":
+            raise
+
+__all__ = [
+    "FORMAT_MODULES",
+    "FormatSpec",
+    "detect_format",
+    "encode",
+    "formats",
+    "read",
+    "read_bytes",
+    "register_reader",
+    "register_writer",
+    "write",
+]

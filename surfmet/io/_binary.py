@@ -1,0 +1,171 @@
+"""Bounds-checked helpers shared by the readers.
+
+Every size a header states is checked against the bytes that are really there before
+anything is allocated, so a 1 KB file claiming a 10^9-point grid fails fast with a clear
+:class:`~surfmet.errors.SurfmetFormatError` instead of allocating gigabytes.
+"""
+
+from __future__ import annotations
+
+import struct
+from typing import Any, NoReturn
+
+import numpy as np
+
+from surfmet.errors import SurfmetFormatError
+
+# Largest grid any reader accepts: 2**31 points is 16 GiB of float64, beyond any instrument.
+MAX_POINTS = 2**31
+
+
+class ByteReader:
+    """A cursor over a bytes object whose reads fail with a format error when short.
+
+    Parameters
+    ----------
+    buf : bytes
+        The whole file.
+    name : str
+        File name, for messages.
+    fmt : str
+        Format name, for messages.
+    """
+
+    def __init__(self, buf: bytes, name: str, fmt: str, pos: int = 0) -> None:
+        self.buf = buf
+        self.name = name
+        self.fmt = fmt
+        self.pos = pos
+
+    def __len__(self) -> int:
+        return len(self.buf)
+
+    @property
+    def remaining(self) -> int:
+        """Bytes left after the cursor."""
+        return len(self.buf) - self.pos
+
+    def fail(self, problem: str) -> NoReturn:
+        """Raise a format error naming the file, the format and the problem."""
+        raise SurfmetFormatError(f"{self.name}: {self.fmt} file: {problem}")
+
+    def need(self, n: int, what: str = "data") -> None:
+        """Fail unless ``n`` more bytes are available at the cursor."""
+        if n < 0:
+            self.fail(f"negative size {n} for {what}")
+        if self.pos + n > len(self.buf):
+            self.fail(
+                f"truncated: {what} needs {n} bytes at offset {self.pos}, "
+                f"the file has {len(self.buf)}"
+            )
+
+    def seek(self, pos: int, what: str = "offset") -> None:
+        """Move the cursor to ``pos`` (checked)."""
+        if pos < 0 or pos > len(self.buf):
+            self.fail(f"{what} {pos} lies outside the file ({len(self.buf)} bytes)")
+        self.pos = pos
+
+    def skip(self, n: int, what: str = "field") -> None:
+        """Advance by ``n`` bytes (checked)."""
+        self.need(n, what)
+        self.pos += n
+
+    def bytes(self, n: int, what: str = "field") -> bytes:
+        """Read ``n`` raw bytes."""
+        self.need(n, what)
+        out = self.buf[self.pos : self.pos + n]
+        self.pos += n
+        return out
+
+    def unpack(self, fmt: str, what: str = "header") -> tuple[Any, ...]:
+        """``struct.unpack`` at the cursor, advancing it."""
+        size = struct.calcsize(fmt)
+        self.need(size, what)
+        out = struct.unpack_from(fmt, self.buf, self.pos)
+        self.pos += size
+        return out
+
+    def unpack_at(self, offset: int, fmt: str, what: str = "header") -> tuple[Any, ...]:
+        """``struct.unpack`` at an absolute offset; the cursor does not move."""
+        size = struct.calcsize(fmt)
+        if offset < 0 or offset + size > len(self.buf):
+            self.fail(f"truncated: {what} at offset {offset} needs {size} bytes")
+        return struct.unpack_from(fmt, self.buf, offset)
+
+    def cstring(self, n: int, what: str = "text field", encoding: str = "latin-1") -> str:
+        """Read a fixed-width, NUL-padded text field."""
+        raw = self.bytes(n, what)
+        return raw.split(b"\0", 1)[0].decode(encoding, errors="replace").strip()
+
+    def array(self, dtype: Any, count: int, what: str = "height data") -> np.ndarray:
+        """Read ``count`` items of ``dtype`` at the cursor into a new array."""
+        dt = np.dtype(dtype)
+        if count < 0 or count > MAX_POINTS:
+            self.fail(f"absurd item count {count} for {what}")
+        nbytes = count * dt.itemsize
+        self.need(nbytes, what)
+        out = np.frombuffer(self.buf, dtype=dt, count=count, offset=self.pos).copy()
+        self.pos += nbytes
+        return out
+
+
+def check_grid(nx: int, ny: int, name: str, fmt: str, available: int | None = None,
+               itemsize: int = 1) -> tuple[int, int]:
+    """Validate a grid size from a header.
+
+    Parameters
+    ----------
+    nx, ny : int
+        Points along x and y.
+    available : int, optional
+        Bytes (or, with ``itemsize=1``, items) that the file really holds for the data; the
+        grid must fit in it.
+    itemsize : int
+        Bytes per point in the file.
+
+    Returns
+    -------
+    (nx, ny) as Python ints.
+    """
+    try:
+        nx, ny = int(nx), int(ny)
+    except (TypeError, ValueError, OverflowError):
+        raise SurfmetFormatError(f"{name}: {fmt} file: grid size {nx!r} x {ny!r} is not an integer") from None
+    if nx <= 0 or ny <= 0:
+        raise SurfmetFormatError(f"{name}: {fmt} file: grid size {nx} x {ny} has no points")
+    if nx * ny > MAX_POINTS:
+        raise SurfmetFormatError(f"{name}: {fmt} file: absurd grid size {nx} x {ny}")
+    if available is not None and nx * ny * itemsize > available:
+        raise SurfmetFormatError(
+            f"{name}: {fmt} file: truncated: header says {nx} x {ny} points "
+            f"({nx * ny * itemsize} bytes) but only {available} bytes of data follow"
+        )
+    return nx, ny
+
+
+def check_step(value: float, name: str, fmt: str, what: str = "pixel size") -> float:
+    """Validate a positive, finite lateral step (already in metres)."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise SurfmetFormatError(f"{name}: {fmt} file: {what} {value!r} is not a number") from None
+    if not (np.isfinite(v) and v > 0):
+        raise SurfmetFormatError(f"{name}: {fmt} file: {what} {value!r} is not a positive length")
+    return v
+
+
+def decode_text(buf: bytes) -> str:
+    """Decode text files: UTF-8 (with or without BOM), else Latin-1 (never fails)."""
+    try:
+        return buf.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return buf.decode("latin-1")
+
+
+def looks_like_text(buf: bytes, n: int = 2048) -> bool:
+    """True if the start of ``buf`` holds no NUL bytes and mostly printable characters."""
+    head = buf[:n]
+    if not head or b"\0" in head:
+        return False
+    printable = sum(1 for b in head if b in b"\t\r\n" or 32 <= b < 127 or b >= 160)
+    return printable / len(head) > 0.95

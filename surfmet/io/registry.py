@@ -1,0 +1,269 @@
+"""The reader/writer registry: one entry per file format, detection by magic bytes.
+
+Each format module calls :func:`register_reader` (and optionally :func:`register_writer`) at
+import time. :func:`read` picks the format from ``format=``, else from the first registered
+magic check that accepts the bytes, else from the file extension, and turns any failure
+inside a reader into :class:`~surfmet.errors.SurfmetFormatError`, so that a damaged file can
+never surface as an ``IndexError`` from deep inside numpy.
+"""
+
+from __future__ import annotations
+
+import os
+import struct
+import zipfile
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
+from surfmet.model import Profile, Topography
+
+Scan = Topography | Profile
+Decoder = Callable[..., Scan]
+Encoder = Callable[..., bytes]
+MagicCheck = Callable[[bytes], bool]
+
+
+@dataclass(frozen=True)
+class FormatSpec:
+    """What the registry knows about one format."""
+
+    name: str
+    extensions: tuple[str, ...]
+    description: str
+    decode: Decoder | None = None
+    encode: Encoder | None = None
+    magic: MagicCheck | None = None
+    priority: int = 50  # lower = tried first during magic detection
+
+
+_FORMATS: dict[str, FormatSpec] = {}
+
+
+def register_reader(
+    name: str,
+    *,
+    extensions: tuple[str, ...] | list[str],
+    description: str,
+    magic: MagicCheck | None = None,
+    priority: int = 50,
+) -> Callable[[Decoder], Decoder]:
+    """Register ``decode(buf: bytes, name: str, **options) -> Topography | Profile``.
+
+    Parameters
+    ----------
+    name : str
+        Registry name, used by ``read(..., format=name)``.
+    extensions : sequence of str
+        File extensions without dot, lower case (``"x3p"``).
+    description : str
+        One line for ``surfmet formats`` and error messages.
+    magic : callable, optional
+        ``magic(buf) -> bool``: True if the bytes look like this format. Must be cheap and
+        must never raise.
+    priority : int
+        Order of magic checks; strong binary signatures use small numbers, text heuristics
+        larger ones.
+    """
+
+    def deco(func: Decoder) -> Decoder:
+        old = _FORMATS.get(name)
+        _FORMATS[name] = FormatSpec(
+            name=name,
+            extensions=tuple(e.lower().lstrip(".") for e in extensions),
+            description=description,
+            decode=func,
+            encode=old.encode if old else None,
+            magic=magic,
+            priority=priority,
+        )
+        return func
+
+    return deco
+
+
+def register_writer(name: str) -> Callable[[Encoder], Encoder]:
+    """Register ``encode(scan, **options) -> bytes`` for an already registered format."""
+
+    def deco(func: Encoder) -> Encoder:
+        if name not in _FORMATS:
+            raise KeyError(f"register the reader of {name!r} before its writer")
+        spec = _FORMATS[name]
+        _FORMATS[name] = FormatSpec(**{**spec.__dict__, "encode": func})
+        return func
+
+    return deco
+
+
+def formats() -> dict[str, FormatSpec]:
+    """All registered formats, by name."""
+    _load_all()
+    return dict(_FORMATS)
+
+
+def _load_all() -> None:
+    # Importing surfmet.io registers every built-in format.
+    import surfmet.io  # noqa: F401
+
+
+def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
+    """Name of the format of ``buf``: magic bytes first, then the file extension.
+
+    Raises
+    ------
+    SurfmetFormatError
+        If neither the content nor the extension identifies a registered format.
+    """
+    _load_all()
+    for spec in sorted(_FORMATS.values(), key=lambda s: s.priority):
+        if spec.magic is None or spec.decode is None:
+            continue
+        try:
+            if spec.magic(buf):
+                return spec.name
+        except Exception:  # noqa: BLE001 - a magic check must never break detection
+            continue
+    suffixes = [s.lower().lstrip(".") for s in Path(str(filename)).suffixes]
+    for ext in reversed(suffixes):
+        for spec in _FORMATS.values():
+            if ext in spec.extensions and spec.decode is not None:
+                return spec.name
+    names = ", ".join(sorted(_FORMATS))
+    raise SurfmetFormatError(
+        f"{filename or '<bytes>'}: unknown file format (no known signature, extension "
+        f"{''.join(Path(str(filename)).suffixes) or 'none'}); pass format= one of: {names}"
+    )
+
+
+# Exceptions that a damaged file can provoke inside a decoder. Anything else is a bug in
+# surfmet and must surface as such.
+_DAMAGE = (
+    ValueError,
+    IndexError,
+    KeyError,
+    struct.error,
+    zipfile.BadZipFile,
+    zlib.error,
+    EOFError,
+    UnicodeError,
+    OverflowError,
+    MemoryError,
+    TypeError,
+    AttributeError,
+    LookupError,
+    ArithmeticError,
+    RecursionError,
+)
+
+
+def read_bytes(buf: bytes, format: str | None = None, name: str = "<bytes>", **options: Any) -> Scan:
+    """Decode a scan held in memory. See :func:`read`."""
+    _load_all()
+    if not isinstance(buf, (bytes, bytearray, memoryview)):
+        raise SurfmetInputError("read_bytes needs a bytes object")
+    buf = bytes(buf)
+    if len(buf) == 0:
+        raise SurfmetFormatError(f"{name}: the file is empty")
+    fmt = format or detect_format(buf, name)
+    spec = _FORMATS.get(fmt)
+    if spec is None or spec.decode is None:
+        raise SurfmetFormatError(f"{name}: no reader for format {fmt!r}; known: {sorted(_FORMATS)}")
+    try:
+        scan = spec.decode(buf, name, **options)
+    except SurfmetFormatError:
+        raise
+    except SurfmetError as exc:
+        raise SurfmetFormatError(f"{name}: inconsistent {fmt} file: {exc}") from exc
+    except _DAMAGE as exc:
+        raise SurfmetFormatError(
+            f"{name}: corrupted or truncated {fmt} file ({type(exc).__name__}: {exc})"
+        ) from exc
+    return _validated(scan, fmt, name)
+
+
+def _validated(scan: Any, fmt: str, name: str) -> Scan:
+    if not isinstance(scan, (Topography, Profile)):
+        raise SurfmetFormatError(f"{name}: the {fmt} reader returned no scan")
+    values = scan.heights if isinstance(scan, Topography) else scan.z
+    if values.size == 0:
+        raise SurfmetFormatError(f"{name}: the file holds zero points")
+    finite = np.isfinite(values)
+    if not finite.any():
+        raise SurfmetFormatError(f"{name}: every point of the scan is non-measured (all NaN)")
+    if np.isinf(values).any():
+        raise SurfmetFormatError(f"{name}: the scan holds infinite heights")
+    md = dict(scan.metadata)
+    md.setdefault("format", fmt)
+    return scan.replace(metadata=md)
+
+
+def read(path: str | os.PathLike[str], format: str | None = None, **options: Any) -> Scan:
+    """Read a scan file.
+
+    Parameters
+    ----------
+    path : path-like
+        The file.
+    format : str, optional
+        Registry name; overrides detection (see :func:`formats`).
+    **options
+        Passed to the format's reader (for example ``channel=`` for Gwyddion files).
+
+    Returns
+    -------
+    Topography or Profile
+        Heights in metres, NaN where not measured, ``metadata["format"]`` set.
+
+    Raises
+    ------
+    SurfmetFormatError
+        Unknown format, unreadable, truncated, corrupted or inconsistent file, zero points
+        or all points non-measured. The message names the file and the problem.
+    """
+    p = Path(path)
+    try:
+        buf = p.read_bytes()
+    except FileNotFoundError:
+        raise SurfmetFormatError(f"{p}: no such file") from None
+    except IsADirectoryError:
+        raise SurfmetFormatError(f"{p}: is a directory, not a scan file") from None
+    except OSError as exc:
+        raise SurfmetFormatError(f"{p}: cannot read the file ({exc.strerror or exc})") from None
+    scan = read_bytes(buf, format=format, name=str(p), **options)
+    return scan.with_metadata(source=str(p))
+
+
+def encode(scan: Scan, format: str, **options: Any) -> bytes:
+    """Encode a scan into the bytes of ``format`` (a format with a writer)."""
+    _load_all()
+    spec = _FORMATS.get(format)
+    if spec is None or spec.encode is None:
+        writable = sorted(n for n, s in _FORMATS.items() if s.encode is not None)
+        raise SurfmetInputError(f"no writer for format {format!r}; writable formats: {writable}")
+    return spec.encode(scan, **options)
+
+
+def write(scan: Scan, path: str | os.PathLike[str], format: str | None = None, **options: Any) -> Path:
+    """Write a scan; the format comes from ``format=`` or the file extension.
+
+    The file is written to a temporary name and renamed, so a failed write never leaves a
+    half-written file behind.
+    """
+    _load_all()
+    p = Path(path)
+    if format is None:
+        ext = p.suffix.lower().lstrip(".")
+        candidates = [s.name for s in _FORMATS.values() if ext in s.extensions and s.encode]
+        if not candidates:
+            raise SurfmetInputError(f"{p}: cannot tell the output format from the extension {ext!r}")
+        format = candidates[0]
+    data = encode(scan, format, **options)
+    tmp = p.with_name(p.name + ".part")
+    tmp.write_bytes(data)
+    os.replace(tmp, p)
+    return p

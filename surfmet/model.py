@@ -1,0 +1,254 @@
+"""The data model: :class:`Topography` (areal scan) and :class:`Profile` (line scan).
+
+Both hold SI values only: heights in metres, NaN where the instrument did not measure.
+They are frozen dataclasses whose arrays are made read-only, so a scan cannot be changed
+behind the back of code that holds it; derive new ones with :meth:`Topography.replace`.
+
+Metadata conventions (every key optional; readers add anything else the file carries):
+
+``format``             registry name of the reader (``"x3p"``, ``"nms"``...)
+``instrument``         instrument or software name as written in the file
+``vendor``             manufacturer
+``date``               acquisition date, ISO 8601 text where the file allows
+``height_unit``        height unit used in the file (``"m"``, ``"um"``, ``""`` if none)
+``lateral_unit``       lateral unit used in the file
+``lateral_calibrated`` ``False`` where the file states no lateral unit (dx, dy are then
+                       the file's numbers taken as metres)
+``source``             the path the scan was read from
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+
+
+def _frozen_array(values: Any, ndim: int, name: str) -> np.ndarray:
+    # Reuse an array that is already float64 and read-only; copy anything else, so that
+    # freezing never makes the caller's own array read-only behind its back.
+    if isinstance(values, np.ndarray) and values.dtype == np.float64 and not values.flags.writeable:
+        arr = values
+    else:
+        try:
+            arr = np.array(values, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise SurfmetInputError(f"{name} must be numeric: {exc}") from None
+    if arr.ndim != ndim:
+        raise SurfmetInputError(f"{name} must be a {ndim}D array, got shape {arr.shape}")
+    arr.setflags(write=False)
+    return arr
+
+
+def _check_step(value: float, name: str) -> float:
+    v = float(value)
+    if not (math.isfinite(v) and v > 0):
+        raise SurfmetInputError(f"{name} must be a positive finite length in metres, got {value!r}")
+    return v
+
+
+@dataclass(frozen=True, eq=False)
+class Topography:
+    """An areal height map.
+
+    Parameters
+    ----------
+    heights : array_like, shape (ny, nx)
+        Heights in metres; row ``j`` is at ``y = j * dy``, column ``i`` at ``x = i * dx``.
+        NaN marks points that were not measured.
+    dx, dy : float
+        Pixel sizes along x (columns) and y (rows), in metres.
+    metadata : mapping, optional
+        Instrument, date, original units and whatever else the file carries.
+    """
+
+    heights: np.ndarray
+    dx: float
+    dy: float
+    metadata: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "heights", _frozen_array(self.heights, 2, "heights"))
+        object.__setattr__(self, "dx", _check_step(self.dx, "dx"))
+        object.__setattr__(self, "dy", _check_step(self.dy, "dy"))
+        object.__setattr__(self, "metadata", MappingProxyType(dict(self.metadata)))
+        if self.heights.size == 0:
+            raise SurfmetInputError("a topography needs at least one point")
+
+    kind = "areal"
+
+    @property
+    def ny(self) -> int:
+        """Number of rows (points along y)."""
+        return int(self.heights.shape[0])
+
+    @property
+    def nx(self) -> int:
+        """Number of columns (points along x)."""
+        return int(self.heights.shape[1])
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """``(ny, nx)``."""
+        return (self.ny, self.nx)
+
+    @property
+    def mask(self) -> np.ndarray:
+        """Boolean array, True where the point was *not* measured."""
+        return np.isnan(self.heights)
+
+    @property
+    def nan_fraction(self) -> float:
+        """Fraction of non-measured points."""
+        return float(np.count_nonzero(np.isnan(self.heights)) / self.heights.size)
+
+    @property
+    def has_nan(self) -> bool:
+        """True if any point is non-measured."""
+        return bool(np.isnan(self.heights).any())
+
+    @property
+    def size_x(self) -> float:
+        """Physical width ``nx * dx`` in metres."""
+        return self.nx * self.dx
+
+    @property
+    def size_y(self) -> float:
+        """Physical height ``ny * dy`` in metres."""
+        return self.ny * self.dy
+
+    @property
+    def x(self) -> np.ndarray:
+        """Column positions in metres, starting at 0."""
+        return np.arange(self.nx) * self.dx
+
+    @property
+    def y(self) -> np.ndarray:
+        """Row positions in metres, starting at 0."""
+        return np.arange(self.ny) * self.dy
+
+    def replace(self, **changes: Any) -> Topography:
+        """A copy with some fields changed (``heights=``, ``dx=``, ``metadata=``...)."""
+        return dataclasses.replace(self, **changes)
+
+    def with_metadata(self, **items: Any) -> Topography:
+        """A copy whose metadata has ``items`` added or replaced."""
+        md = dict(self.metadata)
+        md.update(items)
+        return dataclasses.replace(self, metadata=md)
+
+    def __repr__(self) -> str:
+        return (
+            f"Topography(nx={self.nx}, ny={self.ny}, dx={self.dx:.6g} m, dy={self.dy:.6g} m, "
+            f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class Profile:
+    """A line scan.
+
+    Parameters
+    ----------
+    z : array_like, shape (n,)
+        Heights in metres, NaN where not measured.
+    dx : float
+        Sampling step in metres. For a non-uniform profile, the mean step.
+    x : array_like, shape (n,), optional
+        Positions in metres, strictly increasing, for non-uniformly sampled profiles
+        (e.g. a Dektak export). ``None`` means uniform: ``x = i * dx``.
+    metadata : mapping, optional
+        As for :class:`Topography`.
+    """
+
+    z: np.ndarray
+    dx: float
+    x: np.ndarray | None = None
+    metadata: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "z", _frozen_array(self.z, 1, "z"))
+        object.__setattr__(self, "dx", _check_step(self.dx, "dx"))
+        if self.x is not None:
+            x = _frozen_array(self.x, 1, "x")
+            if x.shape != self.z.shape:
+                raise SurfmetInputError(f"x has {x.size} points but z has {self.z.size}")
+            if not np.all(np.isfinite(x)) or (x.size > 1 and not np.all(np.diff(x) > 0)):
+                raise SurfmetInputError("profile positions x must be finite and increasing")
+            object.__setattr__(self, "x", x)
+        object.__setattr__(self, "metadata", MappingProxyType(dict(self.metadata)))
+        if self.z.size == 0:
+            raise SurfmetInputError("a profile needs at least one point")
+
+    kind = "profile"
+
+    @property
+    def n(self) -> int:
+        """Number of points."""
+        return int(self.z.size)
+
+    @property
+    def nx(self) -> int:
+        """Number of points (same as :attr:`n`, for symmetry with Topography)."""
+        return self.n
+
+    @property
+    def ny(self) -> int:
+        """Always 1."""
+        return 1
+
+    @property
+    def is_uniform(self) -> bool:
+        """True if the profile is sampled at a constant step."""
+        return self.x is None
+
+    @property
+    def positions(self) -> np.ndarray:
+        """Point positions in metres (``x`` or ``i * dx``)."""
+        if self.x is not None:
+            return self.x
+        return np.arange(self.n) * self.dx
+
+    @property
+    def length(self) -> float:
+        """Evaluation length: ``n * dx`` for uniform profiles, the x extent otherwise."""
+        if self.x is not None:
+            return float(self.x[-1] - self.x[0])
+        return self.n * self.dx
+
+    @property
+    def mask(self) -> np.ndarray:
+        """Boolean array, True where not measured."""
+        return np.isnan(self.z)
+
+    @property
+    def nan_fraction(self) -> float:
+        """Fraction of non-measured points."""
+        return float(np.count_nonzero(np.isnan(self.z)) / self.z.size)
+
+    def replace(self, **changes: Any) -> Profile:
+        """A copy with some fields changed."""
+        return dataclasses.replace(self, **changes)
+
+    def with_metadata(self, **items: Any) -> Profile:
+        """A copy whose metadata has ``items`` added or replaced."""
+        md = dict(self.metadata)
+        md.update(items)
+        return dataclasses.replace(self, metadata=md)
+
+    def __repr__(self) -> str:
+        kind = "uniform" if self.is_uniform else "non-uniform"
+        return (
+            f"Profile(n={self.n}, dx={self.dx:.6g} m, {kind}, "
+            f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
+        )
+
+
+Scan = Topography | Profile

@@ -1,0 +1,216 @@
+"""Units at the edges: parsing command-line quantities, naming file units, JSON quantities.
+
+Inside surfmet every value is SI (m, Pa, N). Conversions happen only here, in readers
+(file unit to metre) and in output (JSON and display).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+# Symbols accepted on the command line and in file headers. Both the micro sign (U+00B5)
+# and the Greek mu (U+03BC) occur in real files.
+LENGTH_UNITS: Mapping[str, float] = {
+    "m": 1.0,
+    "cm": 1e-2,
+    "mm": 1e-3,
+    "um": 1e-6,
+    "µm": 1e-6,
+    "μm": 1e-6,
+    "nm": 1e-9,
+    "pm": 1e-12,
+    "a": 1e-10,
+    "å": 1e-10,
+}
+
+# Spelled-out forms found in instrument headers.
+_LENGTH_ALIASES: Mapping[str, str] = {
+    "meter": "m",
+    "meters": "m",
+    "metre": "m",
+    "metres": "m",
+    "millimeter": "mm",
+    "millimeters": "mm",
+    "millimetre": "mm",
+    "micrometer": "um",
+    "micrometers": "um",
+    "micrometre": "um",
+    "micron": "um",
+    "microns": "um",
+    "mic": "um",
+    "nanometer": "nm",
+    "nanometers": "nm",
+    "nanometre": "nm",
+    "angstrom": "a",
+    "centimeter": "cm",
+}
+
+FORCE_UNITS: Mapping[str, float] = {"n": 1.0, "mn": 1e-3, "un": 1e-6, "µn": 1e-6, "kn": 1e3}
+PRESSURE_UNITS: Mapping[str, float] = {
+    "pa": 1.0,
+    "kpa": 1e3,
+    "mpa": 1e6,
+    "gpa": 1e9,
+    "n/mm2": 1e6,
+    "n/mm^2": 1e6,
+}
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_QUANTITY_RE = re.compile(rf"^\s*({_NUMBER})\s*([^\s\d].*?)?\s*$")
+
+
+def length_factor(unit: str) -> float:
+    """Metres per ``unit``, for a unit name as it appears in a file header.
+
+    Parameters
+    ----------
+    unit : str
+        ``"mm"``, ``"um"``, ``"µm"``, ``"micrometer"``, ``"nm"``, ``"m"``...
+
+    Raises
+    ------
+    SurfmetInputError
+        If the unit is not a length unit.
+    """
+    key = unit.strip().lower().rstrip(".")
+    key = _LENGTH_ALIASES.get(key, key)
+    if key in LENGTH_UNITS:
+        return LENGTH_UNITS[key]
+    # Keep the case-sensitive micro signs working after lower().
+    if unit.strip() in LENGTH_UNITS:
+        return LENGTH_UNITS[unit.strip()]
+    raise SurfmetInputError(f"unknown length unit {unit!r}; use one of nm, um, µm, mm, m")
+
+
+def _parse(text: str, table: Mapping[str, float], kind: str, default: str) -> float:
+    if not isinstance(text, str):
+        value = float(text)
+        if not math.isfinite(value):
+            raise SurfmetInputError(f"{kind} must be finite, got {text!r}")
+        return value
+    m = _QUANTITY_RE.match(text)
+    if not m:
+        raise SurfmetInputError(
+            f"cannot read {kind} {text!r}: write a number with an optional unit, e.g. "
+            f"'1.5{default}'"
+        )
+    number = float(m.group(1))
+    unit = (m.group(2) or "").strip()
+    if not unit:
+        factor = 1.0
+    elif table is LENGTH_UNITS:
+        try:
+            factor = length_factor(unit)
+        except SurfmetInputError:
+            raise SurfmetInputError(
+                f"unknown unit {unit!r} in {kind} {text!r}; use nm, um, µm, mm or m"
+            ) from None
+    else:
+        key = unit.lower()
+        if key not in table:
+            names = ", ".join(sorted({k for k in table}))
+            raise SurfmetInputError(f"unknown unit {unit!r} in {kind} {text!r}; use {names}")
+        factor = table[key]
+    value = number * factor
+    if not math.isfinite(value):
+        raise SurfmetInputError(f"{kind} {text!r} is not finite")
+    return value
+
+
+def parse_length(text: str | float) -> float:
+    """Parse a length such as ``"468um"``, ``"0.5 mm"``, ``"20mm"`` or ``"2e-6"`` to metres.
+
+    A bare number is taken in metres (SI).
+    """
+    return _parse(text, LENGTH_UNITS, "length", "um")
+
+
+def parse_force(text: str | float) -> float:
+    """Parse a force such as ``"10N"``, ``"4.7 N"`` or ``"500mN"`` to newtons."""
+    return _parse(text, FORCE_UNITS, "force", "N")
+
+
+def parse_pressure(text: str | float) -> float:
+    """Parse a pressure such as ``"1.2GPa"`` or ``"300 MPa"`` to pascals."""
+    return _parse(text, PRESSURE_UNITS, "pressure", "MPa")
+
+
+def parse_length_range(text: str) -> tuple[float, float]:
+    """Parse ``"X0:X1"`` (each a length with optional unit) into metres, X0 < X1."""
+    parts = text.split(":")
+    if len(parts) != 2:
+        raise SurfmetInputError(f"cannot read range {text!r}: write START:END, e.g. 468um:733um")
+    lo, hi = parse_length(parts[0]), parse_length(parts[1])
+    if not hi > lo:
+        raise SurfmetInputError(f"range {text!r} is empty: END must exceed START")
+    return lo, hi
+
+
+def parse_force_range(text: str) -> tuple[float, float, int | None]:
+    """Parse ``"F1:F2[:N]"`` into (F1, F2, N) newtons; N is a point count or None."""
+    parts = text.split(":")
+    if len(parts) not in (2, 3):
+        raise SurfmetInputError(f"cannot read load range {text!r}: write F1:F2[:N], e.g. 1N:100N:9")
+    lo, hi = parse_force(parts[0]), parse_force(parts[1])
+    n: int | None = None
+    if len(parts) == 3:
+        try:
+            n = int(parts[2])
+        except ValueError:
+            raise SurfmetInputError(f"point count {parts[2]!r} in {text!r} is not an integer") from None
+        if n < 2:
+            raise SurfmetInputError(f"load range {text!r} needs at least 2 points")
+    if not (lo > 0 and hi > lo):
+        raise SurfmetInputError(f"load range {text!r} must satisfy 0 < F1 < F2")
+    return lo, hi, n
+
+
+def quantity(value: Any, unit: str) -> dict[str, Any]:
+    """A JSON quantity ``{"value": v, "unit": unit}``; NaN and inf become ``None``."""
+    return {"value": jsonable(value), "unit": unit}
+
+
+def jsonable(obj: Any) -> Any:
+    """Convert ``obj`` recursively into plain JSON types.
+
+    Mappings become dicts, sequences and arrays become lists, NumPy scalars become Python
+    numbers, NaN and inf become ``None``, bytes are decoded, anything else unknown is
+    turned into its ``str``.
+    """
+    import numpy as np
+
+    if obj is None or isinstance(obj, (bool, str)):
+        return obj
+    if isinstance(obj, Mapping):
+        return {str(k): jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, np.ndarray):
+        return [jsonable(v) for v in obj.tolist()]
+    if isinstance(obj, (list, tuple)):
+        return [jsonable(v) for v in obj]
+    if isinstance(obj, np.generic):
+        obj = obj.item()
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else None
+    if isinstance(obj, int):
+        return obj
+    if isinstance(obj, (bytes, bytearray)):
+        return bytes(obj).decode("utf-8", errors="replace")
+    if hasattr(obj, "isoformat"):
+        return obj.isoformat()
+    return str(obj)
+
+
+def format_length(value: float, digits: int = 4) -> str:
+    """Human display of a length in the most readable of nm, µm, mm, m."""
+    if value is None or not math.isfinite(value):
+        return "n/a"
+    a = abs(value)
+    for unit, f in (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)):
+        if a >= f or unit == "nm":
+            return f"{value / f:.{digits}g} {unit}"
+    return f"{value:g} m"  # pragma: no cover
