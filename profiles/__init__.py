@@ -1,8 +1,65 @@
 """profiles: the 1D engine (profile parameters, ISO Gaussian filtering, circle fitting).
 
 Arrays and SI floats in, arrays and small frozen dataclasses out. Never imports surfmet.
+
+Main entry points
+-----------------
+analyze_profile      window, levelling, λs/λc filters and ISO parameters in one call
+profile_parameters   Ra, Rq, Rp, Rv, Rz, Rt, Rsk, Rku, Rsm, Rdq of a profile
+split_profile        primary / waviness / roughness by the ISO 16610-21 Gaussian filter
+iso4288_cutoff       automatic λc per ISO 4288
+fit_circle           radius of a ball or roller from a profile
+material_ratio, material_ratio_curve, rk_parameters   Abbott-Firestone curve, Rmr(c), Rk
+remove_form          least-squares line / polynomial removal
 """
 
+from profiles.analysis import ProfileAnalysis, analyze_profile
+from profiles.circle import CircleFit, fit_circle
+from profiles.cutoff import CutoffChoice, iso4288_cutoff
 from profiles.errors import ProfileError
+from profiles.filters import (
+    ALPHA,
+    ProfileSplit,
+    gaussian_mean_line,
+    gaussian_transmission,
+    split_profile,
+)
+from profiles.form import FormFit, level_profile, remove_form
+from profiles.material_ratio import (
+    RkParameters,
+    height_at_ratio,
+    material_ratio,
+    material_ratio_curve,
+    rk_parameters,
+    section_height_difference,
+)
+from profiles.parameters import ProfileParameters, profile_parameters
+from profiles.positions import RegularProfile, regularize
 
-__all__ = ["ProfileError"]
+__all__ = [
+    "ALPHA",
+    "CircleFit",
+    "CutoffChoice",
+    "FormFit",
+    "ProfileAnalysis",
+    "ProfileError",
+    "ProfileParameters",
+    "ProfileSplit",
+    "RegularProfile",
+    "RkParameters",
+    "analyze_profile",
+    "fit_circle",
+    "gaussian_mean_line",
+    "gaussian_transmission",
+    "height_at_ratio",
+    "iso4288_cutoff",
+    "level_profile",
+    "material_ratio",
+    "material_ratio_curve",
+    "profile_parameters",
+    "regularize",
+    "remove_form",
+    "rk_parameters",
+    "section_height_difference",
+    "split_profile",
+]

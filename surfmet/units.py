@@ -162,7 +162,9 @@ def parse_force_range(text: str) -> tuple[float, float, int | None]:
         try:
             n = int(parts[2])
         except ValueError:
-            raise SurfmetInputError(f"point count {parts[2]!r} in {text!r} is not an integer") from None
+            raise SurfmetInputError(
+                f"point count {parts[2]!r} in {text!r} is not an integer"
+            ) from None
         if n < 2:
             raise SurfmetInputError(f"load range {text!r} needs at least 2 points")
     if not (lo > 0 and hi > lo):

@@ -66,7 +66,8 @@ def run(args: argparse.Namespace) -> int:
     if scan.kind == "areal":
         print(f"scan size     {format_length(scan.size_x)} x {format_length(scan.size_y)}")
     else:
-        print(f"length        {format_length(scan.length)} ({'uniform' if scan.is_uniform else 'non-uniform'})")
+        sampling = "uniform" if scan.is_uniform else "non-uniform"
+        print(f"length        {format_length(scan.length)} ({sampling})")
     print(f"non-measured  {100 * scan.nan_fraction:.3f} %")
     for key, value in rec["metadata"].items():
         text = str(value)

@@ -130,7 +130,9 @@ def check_grid(nx: int, ny: int, name: str, fmt: str, available: int | None = No
     try:
         nx, ny = int(nx), int(ny)
     except (TypeError, ValueError, OverflowError):
-        raise SurfmetFormatError(f"{name}: {fmt} file: grid size {nx!r} x {ny!r} is not an integer") from None
+        raise SurfmetFormatError(
+            f"{name}: {fmt} file: grid size {nx!r} x {ny!r} is not an integer"
+        ) from None
     if nx <= 0 or ny <= 0:
         raise SurfmetFormatError(f"{name}: {fmt} file: grid size {nx} x {ny} has no points")
     if nx * ny > MAX_POINTS:

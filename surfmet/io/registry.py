@@ -126,7 +126,7 @@ def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
         try:
             if spec.magic(buf):
                 return spec.name
-        except Exception:  # noqa: BLE001 - a magic check must never break detection
+        except Exception:
             continue
     suffixes = [s.lower().lstrip(".") for s in Path(str(filename)).suffixes]
     for ext in reversed(suffixes):
@@ -158,10 +158,14 @@ _DAMAGE = (
     LookupError,
     ArithmeticError,
     RecursionError,
+    NotImplementedError,  # e.g. a zip member with an unknown compression method
+    OSError,
 )
 
 
-def read_bytes(buf: bytes, format: str | None = None, name: str = "<bytes>", **options: Any) -> Scan:
+def read_bytes(
+    buf: bytes, format: str | None = None, name: str = "<bytes>", **options: Any
+) -> Scan:
     """Decode a scan held in memory. See :func:`read`."""
     _load_all()
     if not isinstance(buf, (bytes, bytearray, memoryview)):
@@ -248,7 +252,9 @@ def encode(scan: Scan, format: str, **options: Any) -> bytes:
     return spec.encode(scan, **options)
 
 
-def write(scan: Scan, path: str | os.PathLike[str], format: str | None = None, **options: Any) -> Path:
+def write(
+    scan: Scan, path: str | os.PathLike[str], format: str | None = None, **options: Any
+) -> Path:
     """Write a scan; the format comes from ``format=`` or the file extension.
 
     The file is written to a temporary name and renamed, so a failed write never leaves a
@@ -260,7 +266,9 @@ def write(scan: Scan, path: str | os.PathLike[str], format: str | None = None, *
         ext = p.suffix.lower().lstrip(".")
         candidates = [s.name for s in _FORMATS.values() if ext in s.extensions and s.encode]
         if not candidates:
-            raise SurfmetInputError(f"{p}: cannot tell the output format from the extension {ext!r}")
+            raise SurfmetInputError(
+                f"{p}: cannot tell the output format from the extension {ext!r}"
+            )
         format = candidates[0]
     data = encode(scan, format, **options)
     tmp = p.with_name(p.name + ".part")

@@ -1,0 +1,306 @@
+"""Profile (R-) parameters per ISO 4287:1997 / ISO 21920-2:2021.
+
+The heights passed in are measured from the mean line (a roughness profile, or a levelled
+primary profile); nothing is re-centred here. All values are SI (metres; slopes and shape
+factors dimensionless) and come from measured points only (NaN = not measured).
+
+Definitions used (``ln`` evaluation length, ``lr`` sampling length, ``z`` heights):
+
+``Ra``   arithmetic mean of ``|z|`` over ``ln``.
+``Rq``   root mean square of ``z`` over ``ln`` (ISO 21920-2; ISO 4287 defines it per
+         ``lr`` and averages, which differs only for non-stationary profiles).
+``Rsk``  ``mean(z**3) / Rq**3`` over ``ln``.  ``Rku``  ``mean(z**4) / Rq**4``.
+``Rp``   mean over the sampling lengths of the highest peak ``max(z)`` in each.
+``Rv``   mean over the sampling lengths of the deepest valley ``-min(z)`` in each
+         (a positive number).
+``Rz``   mean over the sampling lengths of ``max(z) - min(z)`` in each (= Rp + Rv); with
+         five sampling lengths this is the classical DIN "RzDin".
+``Rt``   ``max(z) - min(z)`` over ``ln``.
+``Rsm``  mean width of the profile elements (ISO 4287): an element is a peak (part
+         above the mean line) with the adjacent valley; peaks and valleys lower than the
+         height discrimination (10 % of Rz) or narrower than the width discrimination
+         (1 % of ``lr``) are not counted as such but merged into their neighbours
+         (ISO 4287 height/spacing discrimination). Widths are measured between
+         successive up-crossings of the mean line, located by linear interpolation.
+``Rdq``  root mean square of the local slope ``dz/dx``, with the seven-point derivative of
+         ISO 4287:1997 (note to the local slope), ``(z[i+3] - 9 z[i+2] + 45 z[i+1] - 45 z[i-1]
+         + 9 z[i-2] - z[i-3]) / (60 dx)``, evaluated where all seven points are measured.
+         For non-uniform positions the central difference is used instead.
+
+Sampling lengths: with ``sampling_length=None`` the evaluation length is divided into
+``n_sampling`` equal parts (what a profilometer does on a cursor window); otherwise
+``n_sampling`` sampling lengths of the given size are taken from the centre of the profile
+(``n_sampling=None``: as many whole ones as fit) and every parameter is evaluated on that
+central evaluation length.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import asdict, dataclass
+from types import MappingProxyType
+from typing import Any, ClassVar
+
+import numpy as np
+
+from profiles._arrays import as_heights, as_positions, as_step, cell_widths, require_valid
+from profiles.errors import ProfileError
+
+# ISO 4287:1997, note to the local slope dZ/dX: seven-point first derivative.
+_SLOPE7 = np.array([-1.0, 9.0, -45.0, 0.0, 45.0, -9.0, 1.0]) / 60.0
+
+
+@dataclass(frozen=True)
+class ProfileParameters:
+    """ISO 4287 / ISO 21920-2 profile parameters, SI units (see :attr:`UNITS`).
+
+    NaN means "not defined for this profile" (e.g. ``Rsm`` when no complete profile
+    element exists, ``Rsk`` of a perfectly flat profile).
+    """
+
+    Ra: float
+    Rq: float
+    Rp: float
+    Rv: float
+    Rz: float
+    Rt: float
+    Rsk: float
+    Rku: float
+    Rsm: float
+    Rdq: float
+
+    UNITS: ClassVar[Mapping[str, str]] = MappingProxyType(
+        {
+            "Ra": "m",
+            "Rq": "m",
+            "Rp": "m",
+            "Rv": "m",
+            "Rz": "m",
+            "Rt": "m",
+            "Rsk": "",
+            "Rku": "",
+            "Rsm": "m",
+            "Rdq": "",
+        }
+    )
+
+    def as_dict(self) -> dict[str, float]:
+        """``{symbol: value}`` in SI, in the order of :attr:`UNITS`."""
+        return {k: float(v) for k, v in asdict(self).items()}
+
+
+def evaluation_slice(
+    n_points: int, dx: float, sampling_length: float, n_sampling: int | None
+) -> tuple[slice, int]:
+    """Central run of whole sampling lengths within ``n_points`` uniform points.
+
+    Returns
+    -------
+    (slice, n_sections)
+        The points of the evaluation length and the number of sampling lengths in it.
+
+    Raises
+    ------
+    ProfileError
+        If the profile holds fewer than ``n_sampling`` sampling lengths.
+    """
+    length = n_points * dx
+    per = sampling_length / dx  # points per sampling length (may be fractional)
+    # one sample of slack: a 4 mm trace may be stored as 8000 or as 8001 points
+    fits = math.floor((n_points + 1) / per + 1e-9)
+    wanted = fits if n_sampling is None else int(n_sampling)
+    if wanted < 1 or fits < wanted:
+        need = (wanted if wanted >= 1 else 1) * sampling_length
+        raise ProfileError(
+            f"profile is {length * 1e3:.4g} mm long but {max(wanted, 1)} sampling length(s) "
+            f"of {sampling_length * 1e3:.4g} mm need {need * 1e3:.4g} mm: measure a longer "
+            f"profile, use fewer sampling lengths or a shorter cut-off"
+        )
+    m = min(round(wanted * per), n_points)
+    start = (n_points - m) // 2
+    return slice(start, start + m), wanted
+
+
+def _sections(pos: np.ndarray, widths: np.ndarray, n_sections: int) -> np.ndarray:
+    """Index of the sampling length each point falls in (by the start of its cell)."""
+    start = pos[0] - 0.5 * widths[0]
+    total = float(np.sum(widths))
+    lr = total / n_sections
+    left = pos - 0.5 * widths - start
+    k = np.floor(left / lr + 1e-9).astype(np.int64)
+    return np.clip(k, 0, n_sections - 1)
+
+
+def _local_slope(z: np.ndarray, pos: np.ndarray, uniform: bool, dx: float) -> np.ndarray:
+    """Local slopes at the points where the derivative stencil is fully measured."""
+    if uniform:
+        if z.size < 7:
+            return np.empty(0)
+        windows = np.lib.stride_tricks.sliding_window_view(z, 7)
+        slope = windows @ _SLOPE7 / dx
+    else:
+        if z.size < 3:
+            return np.empty(0)
+        slope = (z[2:] - z[:-2]) / (pos[2:] - pos[:-2])
+    return slope[np.isfinite(slope)]
+
+
+def _upcrossing_widths(
+    z: np.ndarray, pos: np.ndarray, height: float, width: float
+) -> np.ndarray:
+    """Widths of the profile elements (ISO 4287, with height/spacing discrimination).
+
+    The profile is cut into runs of constant sign (z >= 0 is "peak" side); a run of
+    non-measured points breaks the chain of elements. A run is significant if its extreme
+    reaches ``height`` and its width (between its interpolated mean-line crossings) reaches
+    ``width``; a run cut by the profile end or a gap is judged on what is visible.
+    Insignificant runs are absorbed by their neighbours, so significant peaks separated
+    only by insignificant valleys form one peak. An element starts at the up-crossing that
+    opens a significant peak whose preceding significant run (with no gap between) is a
+    valley; element widths are the distances between successive such up-crossings.
+    """
+    n = z.size
+    valid = np.isfinite(z)
+    sign = np.where(valid, np.where(z >= 0, 1, -1), 0)
+    change = np.flatnonzero(sign[1:] != sign[:-1]) + 1
+    starts = np.concatenate(([0], change))
+    ends = np.concatenate((change, [n])) - 1
+    s = sign[starts]
+    extreme = np.maximum.reduceat(np.where(valid, z * sign, -np.inf), starts)
+
+    prev_sign = np.concatenate(([0], sign[starts[1:] - 1]))
+    next_sign = np.concatenate((sign[ends[:-1] + 1], [0]))
+    open_start = prev_sign != -s
+    open_end = next_sign != -s
+
+    def crossing(i: np.ndarray) -> np.ndarray:
+        # mean-line crossing between points i-1 and i (linear interpolation)
+        i = np.clip(i, 1, n - 1)
+        z0, z1 = z[i - 1], z[i]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return pos[i - 1] + (pos[i] - pos[i - 1]) * z0 / (z0 - z1)
+
+    x_start = np.where(open_start, pos[starts], crossing(starts))
+    x_end = np.where(open_end, pos[ends], crossing(ends + 1))
+    significant = (s != 0) & (extreme >= height) & (x_end - x_start >= width)
+
+    events = np.flatnonzero(significant | (s == 0))
+    ev_sign = s[events]
+    prev_ev = np.concatenate(([0], ev_sign[:-1]))
+    is_up = (ev_sign > 0) & (prev_ev < 0)
+    chain = np.cumsum(ev_sign == 0)
+    up_x = x_start[events][is_up]
+    up_chain = chain[is_up]
+    return np.diff(up_x)[np.diff(up_chain) == 0]
+
+
+def profile_parameters(
+    z: Any,
+    dx: float,
+    *,
+    x: Any = None,
+    sampling_length: float | None = None,
+    n_sampling: int | None = 5,
+    height_discrimination: float = 0.10,
+    width_discrimination: float = 0.01,
+) -> ProfileParameters:
+    """Compute the ISO profile parameters of a profile measured from its mean line.
+
+    Parameters
+    ----------
+    z : array_like, shape (n,)
+        Heights in metres from the mean line (roughness profile or levelled primary
+        profile); NaN where not measured.
+    dx : float
+        Sampling step in metres (for non-uniform ``x``: only used if ``x`` is None).
+    x : array_like, optional
+        Point positions in metres when the sampling is not uniform. Each point then counts
+        with the length of profile it stands for (half-way to its neighbours).
+    sampling_length : float, optional
+        Sampling length ``lr`` in metres (normally ``lr = λc``). ``None``: the profile is
+        the evaluation length and is divided into ``n_sampling`` equal sampling lengths.
+    n_sampling : int or None
+        Number of sampling lengths (default 5, ISO 4288). With ``sampling_length`` given,
+        ``None`` takes all whole sampling lengths that fit.
+    height_discrimination, width_discrimination : float
+        For ``Rsm``: fraction of ``Rz`` and of ``lr`` below which peaks/valleys are not
+        counted (ISO 4287 defaults 10 % and 1 %).
+
+    Returns
+    -------
+    ProfileParameters
+
+    Raises
+    ------
+    ProfileError
+        All-NaN profile, bad step/positions, or a profile shorter than the requested
+        sampling lengths.
+    """
+    z = as_heights(z)
+    uniform = x is None
+    if uniform:
+        dx = as_step(dx)
+        pos = np.arange(z.size) * dx
+    else:
+        pos = as_positions(x, z.size)
+        dx = float(np.median(np.diff(pos))) if z.size > 1 else as_step(dx)
+    if n_sampling is not None and int(n_sampling) < 1:
+        raise ProfileError(f"n_sampling must be >= 1, got {n_sampling}")
+    require_valid(z, 1, "profile parameters")
+
+    if sampling_length is not None:
+        lr = as_step(sampling_length, "sampling_length")
+        if uniform:
+            sl, n_sections = evaluation_slice(z.size, dx, lr, n_sampling)
+        else:
+            total = float(np.sum(cell_widths(pos)))
+            fits = math.floor(total / lr * (1 + 1e-9))
+            n_sections = fits if n_sampling is None else int(n_sampling)
+            if n_sections < 1 or fits < n_sections:
+                raise ProfileError(
+                    f"profile is {total * 1e3:.4g} mm long, shorter than "
+                    f"{max(n_sections, 1)} sampling length(s) of {lr * 1e3:.4g} mm"
+                )
+            centre = 0.5 * (pos[0] + pos[-1])
+            half = 0.5 * n_sections * lr
+            keep = np.flatnonzero((pos >= centre - half) & (pos <= centre + half))
+            sl = slice(int(keep[0]), int(keep[-1]) + 1)
+        z = z[sl]
+        pos = pos[sl]
+    else:
+        n_sections = 5 if n_sampling is None else int(n_sampling)
+
+    widths = np.full(z.size, dx) if uniform else cell_widths(pos)
+    lr = float(np.sum(widths)) / n_sections
+    valid = require_valid(z, 1, "profile parameters")
+    zv, wv = z[valid], widths[valid]
+    wsum = float(np.sum(wv))
+
+    Ra = float(np.sum(wv * np.abs(zv)) / wsum)
+    Rq = float(math.sqrt(np.sum(wv * zv * zv) / wsum))
+    if Rq > 0:
+        Rsk = float(np.sum(wv * zv**3) / wsum / Rq**3)
+        Rku = float(np.sum(wv * zv**4) / wsum / Rq**4)
+    else:
+        Rsk = Rku = math.nan
+    Rt = float(zv.max() - zv.min())
+
+    # sections are contiguous runs of points: reduce each with reduceat
+    sec = _sections(pos, widths, n_sections)[valid]
+    first = np.concatenate(([0], np.flatnonzero(np.diff(sec)) + 1))
+    top = np.maximum.reduceat(zv, first)
+    bottom = np.minimum.reduceat(zv, first)
+    Rp = float(np.mean(top))
+    Rv = float(np.mean(-bottom))
+    Rz = float(np.mean(top - bottom))
+
+    elements = _upcrossing_widths(z, pos, height_discrimination * Rz, width_discrimination * lr)
+    Rsm = float(np.mean(elements)) if elements.size else math.nan
+
+    slope = _local_slope(z, pos, uniform, dx)
+    Rdq = float(math.sqrt(np.mean(slope * slope))) if slope.size else math.nan
+
+    return ProfileParameters(
+        Ra=Ra, Rq=Rq, Rp=Rp, Rv=Rv, Rz=Rz, Rt=Rt, Rsk=Rsk, Rku=Rku, Rsm=Rsm, Rdq=Rdq
+    )

@@ -1,0 +1,83 @@
+"""Unit parsing at the edges, and JSON quantities."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from surfmet import SurfmetInputError
+from surfmet.units import (
+    format_length,
+    jsonable,
+    length_factor,
+    parse_force,
+    parse_force_range,
+    parse_length,
+    parse_length_range,
+    parse_pressure,
+    quantity,
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "metres"),
+    [
+        ("468um", 468e-6),
+        ("468 µm", 468e-6),
+        ("468μm", 468e-6),  # Greek mu
+        ("0.5mm", 0.5e-3),
+        ("20 mm", 0.02),
+        ("312.5nm", 312.5e-9),
+        ("2e-6", 2e-6),
+        ("1.5m", 1.5),
+        (".25um", 0.25e-6),
+    ],
+)
+def test_parse_length(text, metres):
+    assert parse_length(text) == pytest.approx(metres, rel=1e-15)
+
+
+@pytest.mark.parametrize("text", ["", "abc", "12 furlongs", "5 N", "1e999mm", "nan"])
+def test_parse_length_rejects(text):
+    with pytest.raises(SurfmetInputError):
+        parse_length(text)
+
+
+def test_other_quantities():
+    assert parse_force("500mN") == pytest.approx(0.5)
+    assert parse_force("10") == 10.0
+    assert parse_pressure("1.2GPa") == pytest.approx(1.2e9)
+    assert parse_pressure("300 MPa") == pytest.approx(3e8)
+    assert parse_length_range("468um:733um") == pytest.approx((468e-6, 733e-6))
+    assert parse_force_range("1N:100N:9") == (1.0, 100.0, 9)
+    for bad in ("733um:468um", "1um", "a:b"):
+        with pytest.raises(SurfmetInputError):
+            parse_length_range(bad)
+    for bad in ("100:1", "0:1", "1:2:1", "1:2:x"):
+        with pytest.raises(SurfmetInputError):
+            parse_force_range(bad)
+
+
+def test_header_unit_names():
+    assert length_factor("micrometer") == 1e-6
+    assert length_factor("Microns") == 1e-6
+    assert length_factor("µm") == 1e-6
+    assert length_factor("mm") == 1e-3
+    with pytest.raises(SurfmetInputError):
+        length_factor("rad")
+
+
+def test_json_quantities():
+    q = quantity(np.float32(1.5), "m")
+    assert q == {"value": 1.5, "unit": "m"}
+    assert quantity(float("nan"), "m")["value"] is None
+    obj = jsonable({"a": np.arange(3), "b": (np.int64(2), math.inf), "c": b"x"})
+    assert obj == {"a": [0, 1, 2], "b": [2, None], "c": "x"}
+    json.dumps(obj, allow_nan=False)
+
+
+def test_format_length():
+    assert format_length(136e-6) == "136 µm"
+    assert format_length(0.02) == "20 mm"
+    assert format_length(float("nan")) == "n/a"
