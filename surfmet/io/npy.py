@@ -47,7 +47,7 @@ def _check_header(buf: bytes, name: str) -> None:
             shape, _, dtype = np.lib.format.read_array_header_1_0(f)
         else:
             shape, _, dtype = np.lib.format.read_array_header_2_0(f)
-    except Exception as exc:  # noqa: BLE001 - any header damage is a format error
+    except Exception as exc:
         raise SurfmetFormatError(f"{name}: npy file: unreadable header ({exc})") from None
     count = int(np.prod(shape, dtype=np.int64)) if shape else 1
     if count > MAX_POINTS or count * dtype.itemsize > len(buf):
