@@ -353,3 +353,18 @@ def test_truncation_and_corruption_of_a_real_file(realdata):
     bad[mid:mid + 8] = bytes(255 - x for x in bad[mid:mid + 8])
     with pytest.raises(SurfmetFormatError):
         read_bytes(bytes(bad), name="flipped.x3p")
+
+
+def test_float32_writer_is_exact_or_refuses():
+    """dtype='F' halves the file; it must round-trip exactly and refuse lossy input."""
+    rng = np.random.default_rng(11)
+    h = (rng.normal(size=(200, 150)) * 1e-6).astype(np.float32).astype(np.float64)
+    h[rng.random(h.shape) < 0.05] = np.nan
+    t = Topography(h, 5e-6, 4e-6)
+    back = read_bytes(encode(t, "x3p", dtype="F"))
+    assert np.array_equal(back.heights, h, equal_nan=True)
+    assert back.dx == t.dx and back.dy == t.dy
+    assert len(encode(t, "x3p", dtype="F")) < 0.7 * len(encode(t, "x3p"))
+    lossy = Topography(rng.normal(size=(5, 5)) * 1e-6, 1e-6, 1e-6)
+    with pytest.raises(SurfmetInputError, match="float32"):
+        encode(lossy, "x3p", dtype="F")

@@ -456,7 +456,7 @@ def _token(value: Any, default: str) -> str:
 
 @register_writer(FORMAT)
 def encode(scan: Topography | Profile, **options: Any) -> bytes:
-    """Encode a scan as X3P (float64 ``D`` data, SUR for areal, PRF for profiles).
+    """Encode a scan as X3P (float ``D`` or ``F`` data, SUR for areal, PRF for profiles).
 
     Parameters
     ----------
@@ -464,14 +464,16 @@ def encode(scan: Topography | Profile, **options: Any) -> bytes:
         A uniformly sampled scan (non-uniform profiles have no X3P incremental axis).
     **options
         ``date`` (ISO 8601 text for Record2, default the scan's ``date`` metadata or now),
-        ``comment`` (default built from the metadata).
+        ``comment`` (default built from the metadata), ``dtype`` (``"D"``, float64, the
+        default; or ``"F"``, float32, half the size, accepted only when every height is
+        exactly representable in float32, so that the round trip stays exact).
 
     Returns
     -------
     bytes
         The zip archive.
     """
-    unknown = set(options) - {"date", "comment"}
+    unknown = set(options) - {"date", "comment", "dtype"}
     if unknown:
         raise SurfmetInputError(f"x3p writer: unknown option(s) {sorted(unknown)}")
     md = dict(scan.metadata)
@@ -490,7 +492,19 @@ def encode(scan: Topography | Profile, **options: Any) -> bytes:
         dy = scan.dx
     else:
         raise SurfmetInputError("x3p writer needs a Topography or a Profile")
-    data = np.ascontiguousarray(z, dtype="<f8").tobytes()
+    ztype = str(options.get("dtype", "D")).upper()
+    if ztype not in ("D", "F"):
+        raise SurfmetInputError(f"x3p writer: dtype must be 'D' or 'F', not {ztype!r}")
+    zarr = np.ascontiguousarray(z, dtype="<f8" if ztype == "D" else "<f4")
+    if ztype == "F":
+        back = zarr.astype(np.float64)
+        same = (back == np.asarray(z)) | (np.isnan(back) & np.isnan(np.asarray(z)))
+        if not same.all():
+            raise SurfmetInputError(
+                "x3p writer: dtype='F' would round heights that are not float32 values; "
+                "round them first (np.float32) or keep dtype='D'"
+            )
+    data = zarr.tobytes()
     data_md5 = hashlib.md5(data).hexdigest()
     invalid = np.isnan(np.asarray(z)).ravel()
     valid_bin = None
@@ -533,7 +547,7 @@ def encode(scan: Topography | Profile, **options: Any) -> bytes:
         "      </CY>",
         "      <CZ>",
         "        <AxisType>A</AxisType>",
-        "        <DataType>D</DataType>",
+        f"        <DataType>{ztype}</DataType>",
         "      </CZ>",
         "    </Axes>",
         "  </Record1>",
