@@ -97,3 +97,12 @@ def test_loading_does_not_import_analysis():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "", f"loading pulled in: {out.stdout.strip()}"
+
+
+def test_unknown_reader_option_is_an_input_error():
+    from surfmet import SurfmetInputError
+
+    data = encode(Topography(np.ones((2, 2)), 1e-6, 1e-6), "npy")
+    with pytest.raises(SurfmetInputError, match="no option"):
+        read_bytes(data, format="npy", colour="red")
+    assert read_bytes(data, format="npy", dx=2e-6).dx == 2e-6

@@ -62,7 +62,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"kind          {rec['kind']}")
     print(f"grid          {scan.nx} x {scan.ny}")
     dy = format_length(scan.dy) if scan.kind == "areal" else "-"
-    print(f"pixel size    {format_length(scan.dx)} x {dy}")
+    note = ""
+    if not scan.metadata.get("lateral_calibrated", True):
+        note = "  (uncalibrated: the file states no lateral unit)"
+    print(f"pixel size    {format_length(scan.dx)} x {dy}{note}")
     if scan.kind == "areal":
         print(f"scan size     {format_length(scan.size_x)} x {format_length(scan.size_y)}")
     else:

@@ -9,6 +9,7 @@ never surface as an ``IndexError`` from deep inside numpy.
 
 from __future__ import annotations
 
+import inspect
 import os
 import struct
 import zipfile
@@ -177,6 +178,7 @@ def read_bytes(
     spec = _FORMATS.get(fmt)
     if spec is None or spec.decode is None:
         raise SurfmetFormatError(f"{name}: no reader for format {fmt!r}; known: {sorted(_FORMATS)}")
+    _check_options(spec, options)
     try:
         scan = spec.decode(buf, name, **options)
     except SurfmetFormatError:
@@ -188,6 +190,23 @@ def read_bytes(
             f"{name}: corrupted or truncated {fmt} file ({type(exc).__name__}: {exc})"
         ) from exc
     return _validated(scan, fmt, name)
+
+
+def _check_options(spec: FormatSpec, options: dict[str, Any]) -> None:
+    # A misspelt option is the user's mistake, not damage in the file: say so before the
+    # decoder runs, rather than letting a TypeError pass for a corrupted file.
+    if not options:
+        return
+    params = inspect.signature(spec.decode).parameters
+    if any(p.kind is inspect.Parameter.VAR_KEYWORD for p in params.values()):
+        return
+    accepted = [n for n, p in list(params.items())[2:] if p.kind is not p.VAR_POSITIONAL]
+    unknown = sorted(set(options) - set(accepted))
+    if unknown:
+        raise SurfmetInputError(
+            f"the {spec.name} reader takes no option(s) {unknown}; it accepts "
+            f"{accepted or 'no options'}"
+        )
 
 
 def _validated(scan: Any, fmt: str, name: str) -> Scan:
