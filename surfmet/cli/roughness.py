@@ -1,0 +1,146 @@
+"""``surfmet roughness FILE...``: ISO 25178-2 S-parameters or ISO 21920-2 R-parameters."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, log, positive_length
+
+EPILOG = """examples:
+  surfmet roughness plate.x3p
+  surfmet roughness plate.x3p --level plane --json
+  surfmet roughness plate.x3p --lc 0.8mm --ls 2.5um --spikes
+  surfmet roughness ball.nms --level sphere
+  surfmet roughness plate.x3p --profile row:100 --lc 0.25mm
+  surfmet roughness scans/*.x3p --csv table.csv
+
+Without --ls/--lc an areal scan is evaluated after the form removal only (the S-F
+surface); a profile gets an automatic ISO 4288 cut-off. --spikes removes spikes (reported)
+before levelling; every result carries an Sq/Sa spike diagnosis.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "roughness",
+        help="areal (S) or profile (R) roughness parameters of scan files",
+        description="Roughness parameters with the form removal, filters, cut-offs and "
+        "spike handling used stated in the output.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
+    p.add_argument("--level", default="plane",
+                   help="form removal: none, mean, plane, poly:N, sphere, cylinder "
+                   "(default plane; a line on profiles)")
+    p.add_argument("--ls", type=positive_length, default=None,
+                   help="S-filter nesting index λs (e.g. 2.5um)")
+    p.add_argument("--lc", type=positive_length, default=None,
+                   help="L-filter nesting index / cut-off λc (e.g. 0.8mm)")
+    p.add_argument("--window", default=None, metavar="X0:X1",
+                   help="evaluate only x in X0..X1 (e.g. 468um:733um)")
+    p.add_argument("--profile", default=None, metavar="row:K|col:K",
+                   help="evaluate one row or column of an areal scan (R-parameters)")
+    p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
+    out = p.add_mutually_exclusive_group()
+    add_json_flag(out)
+    out.add_argument("--csv", metavar="OUT", default=None,
+                     help="write one row per file to OUT ('-' for stdout)")
+    p.set_defaults(func=run)
+    return p
+
+
+def _options(args: argparse.Namespace) -> dict[str, Any]:
+    return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
+            "profile": args.profile, "spikes": args.spikes}
+
+
+def _display(value: Any, unit: str) -> str:
+    from surfmet.units import format_length
+
+    if value is None:
+        return "n/a"
+    if unit == "m":
+        return format_length(value)
+    if unit == "1/m²":
+        return f"{value * 1e-6:.5g} 1/mm²"
+    if unit == "1/m":
+        return f"{value * 1e-3:.5g} 1/mm"
+    return f"{value:.5g} {unit}".rstrip()
+
+
+def _print_table(rec: dict[str, Any]) -> None:
+    print(f"file  {rec['file']}")
+    s = rec["settings"]
+    filters = ", ".join(f"{f['kind']}-filter {f['nesting_index']['value']:.4g} m ({f['edge']})"
+                        for f in s.get("filters", []) or [])
+    print(f"  kind {s.get('kind')}, level {s.get('level')}"
+          + (f", {filters}" if filters else ""))
+    for sym, q in rec["parameters"].items():
+        print(f"  {sym:<6} {_display(q['value'], q['unit'])}")
+    sp = s.get("spikes", {})
+    if sp.get("removed"):
+        print(f"  spikes removed: {sp['count']} ({sp['n_points']} points, "
+              f"{100 * sp['fraction']:.3g} %)")
+    diag = s.get("spike_diagnosis")
+    if diag:
+        print(f"  diagnosis: {diag['message']}")
+    for note in s.get("notes", []) or []:
+        print(f"  note: {note}")
+
+
+def _write_csv(records: list[dict[str, Any]], out: str) -> None:
+    symbols: list[str] = []
+    units: dict[str, str] = {}
+    for rec in records:
+        for sym, q in rec.get("parameters", {}).items():
+            if sym not in units:
+                symbols.append(sym)
+                units[sym] = q["unit"]
+    cols = ["file", "status", "error"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols]
+    fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
+    try:
+        w = csv.writer(fh)
+        w.writerow(cols)
+        for rec in records:
+            params = rec.get("parameters", {})
+            row = [rec["file"], rec["status"], rec.get("error", "")]
+            for sym in symbols:
+                v = params.get(sym, {}).get("value")
+                row.append("" if v is None else repr(float(v)))
+            w.writerow(row)
+    finally:
+        if fh is not sys.stdout:
+            fh.close()
+
+
+def run(args: argparse.Namespace) -> int:
+    from surfmet.roughness import roughness, roughness_many
+
+    opts = _options(args)
+    if len(args.files) == 1 and not args.csv:
+        # One file: errors propagate, so the CLI prints one line and exits 1.
+        res = roughness(args.files[0], **opts)
+        rec = {"file": args.files[0], **res.to_json()}
+        if args.json:
+            emit_json(rec)
+        else:
+            _print_table(rec)
+        return 0
+    records = roughness_many(args.files, **opts)
+    failed = [r for r in records if r["status"] != "ok"]
+    for r in failed:
+        msg = r["error"]
+        log(f"surfmet: error: {msg if msg.startswith(r['file']) else r['file'] + ': ' + msg}")
+    if args.csv:
+        _write_csv(records, args.csv)
+    elif args.json:
+        emit_json(records)
+    else:
+        for rec in records:
+            if rec["status"] == "ok":
+                _print_table(rec)
+    return 1 if failed else 0

@@ -1,0 +1,325 @@
+"""The roughness pipeline: read, spikes, F-operator, S/L filters, parameters — all recorded.
+
+``roughness(scan)`` evaluates an areal scan (S-parameters, ISO 25178-2) or a profile
+(R-parameters, ISO 21920-2 / ISO 4287 through :func:`profiles.analyze_profile`), and
+returns a :class:`RoughnessResult` whose ``settings`` say exactly what was done: the form
+removed, the filters and nesting indices, the edge treatment, the window, the spikes
+removed and the Sq/Sa (or Rq/Ra) spike diagnosis.
+
+Order of operations for an areal scan (ISO 25178-2, 3.1.4): optional window →
+optional spike removal (:mod:`surfmet.spikes`, on the raw scan, because spikes would bias
+the least-squares form) → F-operator (:mod:`surfmet.form`) → optional S-filter (λs) →
+optional L-filter (λc) (:mod:`surfmet.filters`) → parameters (:mod:`surfmet.areal`).
+Without ``ls``/``lc`` the parameters are those of the S-F surface after the F-operator,
+which is what surfalize and SurfaceTopography report after their plane levelling.
+
+``roughness_many`` runs several files one after the other and records a failed file in
+its own entry instead of stopping; the per-file work is the top-level, picklable
+:func:`roughness_file`, so that a process pool or Dask can map it.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Profile, Topography
+from surfmet.units import jsonable, parse_length, parse_length_range
+
+AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
+
+
+@dataclass(frozen=True, eq=False)
+class RoughnessResult:
+    """Outcome of :func:`roughness`.
+
+    Attributes
+    ----------
+    kind : {"areal", "profile"}
+    parameters : dict
+        ``{symbol: (value, unit)}``; SI lengths, ratios in %, angles in degrees.
+    settings : dict
+        What was done (form, filters, cut-offs, edge treatment, window, spikes, diagnosis).
+    spike_report : SpikeReport or None
+        Present when spike removal ran.
+    spike_diagnosis : SpikeDiagnosis or None
+        Sq/Sa (Rq/Ra) diagnosis of the evaluated surface.
+    file : str or None
+        Source path when known.
+    """
+
+    kind: str
+    parameters: dict[str, tuple[float, str]]
+    settings: dict[str, Any] = field(default_factory=dict)
+    spike_report: Any = None
+    spike_diagnosis: Any = None
+    file: str | None = None
+
+    def value(self, symbol: str) -> float:
+        """The value of one parameter (SI)."""
+        try:
+            return self.parameters[symbol][0]
+        except KeyError:
+            raise SurfmetInputError(
+                f"{symbol!r} was not computed; have {', '.join(self.parameters)}"
+            ) from None
+
+    def to_json(self) -> dict[str, Any]:
+        """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types)."""
+        return {
+            "parameters": {k: {"value": jsonable(v), "unit": u}
+                           for k, (v, u) in self.parameters.items()},
+            "settings": jsonable(self.settings),
+        }
+
+
+def _length_or_none(value: Any, what: str) -> float | None:
+    if value is None:
+        return None
+    if isinstance(value, str) and value.strip().lower() in ("none", "off", ""):
+        return None
+    v = parse_length(value)
+    if not v > 0:
+        raise SurfmetInputError(f"{what} must be a positive length, got {value!r}")
+    return v
+
+
+def _window(window: Any) -> tuple[float, float] | None:
+    if window is None:
+        return None
+    if isinstance(window, str):
+        return parse_length_range(window)
+    try:
+        lo, hi = (float(v) for v in window)
+    except (TypeError, ValueError):
+        raise SurfmetInputError(f"window must be X0:X1 or (x0, x1), got {window!r}") from None
+    if not hi > lo:
+        raise SurfmetInputError(f"window {window!r} is empty: X1 must exceed X0")
+    return lo, hi
+
+
+def _crop_areal(topo: Topography, win: tuple[float, float]) -> Topography:
+    x = topo.x
+    cols = np.flatnonzero((x >= win[0] - 1e-12 * topo.dx) & (x <= win[1] + 1e-12 * topo.dx))
+    if cols.size < 2:
+        raise SurfmetInputError(
+            f"window {win[0]:.6g}..{win[1]:.6g} m holds fewer than 2 columns of the "
+            f"{topo.size_x:.6g} m wide scan"
+        )
+    md = dict(topo.metadata)
+    md["window_x0"] = float(x[cols[0]])
+    return topo.replace(heights=topo.heights[:, cols[0]: cols[-1] + 1], metadata=md)
+
+
+def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
+    if isinstance(scan, (Topography, Profile)):
+        return scan, scan.metadata.get("source")
+    if isinstance(scan, (str, os.PathLike)):
+        from surfmet.io import read
+
+        return read(scan), str(scan)
+    raise SurfmetInputError(
+        f"roughness needs a Topography, a Profile or a file path, got {type(scan).__name__}"
+    )
+
+
+def roughness(
+    scan: Topography | Profile | str | os.PathLike,
+    *,
+    level: str = "plane",
+    ls: Any = None,
+    lc: Any = None,
+    window: Any = None,
+    profile: str | None = None,
+    spikes: bool = False,
+    edge: str = "moment",
+    which: Any = None,
+) -> RoughnessResult:
+    """Roughness parameters of a scan with every processing step recorded.
+
+    Parameters
+    ----------
+    scan : Topography, Profile or path
+    level : str
+        F-operator: ``"none"``, ``"mean"``, ``"plane"``, ``"poly:N"``, ``"sphere"``,
+        ``"cylinder"`` (areal); on a profile ``"plane"`` means a least-squares line.
+    ls, lc : float or str, optional
+        Nesting indices of the S- and L-filters (metres, or text with a unit such as
+        ``"2.5um"``). Areal default: none (the S-F surface). Profile default: ``lc="auto"``
+        (ISO 4288 choice by the profile engine), since R-parameters need an L-filter.
+    window : "X0:X1" or (x0, x1), optional
+        Restrict the evaluation to this x-range (metres from the scan origin).
+    profile : "row:K" or "col:K", optional
+        Evaluate a profile extracted from an areal scan (R-parameters).
+    spikes : bool
+        Remove spikes (:func:`surfmet.spikes.remove_spikes`) before levelling; the report
+        goes into the result.
+    edge : {"moment", "renormalise", "discard"}
+        Edge treatment of the areal Gaussian filters.
+    which : optional
+        Areal parameters to compute (symbols or groups, see
+        :func:`surfmet.areal.areal_parameters`); default all.
+
+    Returns
+    -------
+    RoughnessResult
+
+    Raises
+    ------
+    SurfmetInputError, SurfmetFormatError, profiles.ProfileError
+        Unreadable file, bad option, scan too small for a cut-off, all-NaN data.
+    """
+    data, source = _read(scan)
+    ls_v = _length_or_none(ls, "ls")
+    lc_v = _length_or_none(lc, "lc")
+    win = _window(window)
+    if ls_v is not None and lc_v is not None and not ls_v < lc_v:
+        raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
+    if isinstance(data, Profile) or profile is not None:
+        return _profile_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
+                                  profile=profile, spikes=spikes)
+    return _areal_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
+                            spikes=spikes, edge=edge, which=which)
+
+
+def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
+                     spikes: bool, edge: str, which: Any) -> RoughnessResult:
+    from surfmet.areal import PARAMETER_UNITS, areal_parameters
+    from surfmet.filters import l_filter, s_filter
+    from surfmet.form import remove_form
+    from surfmet.spikes import remove_spikes, spike_diagnosis
+
+    settings: dict[str, Any] = {"kind": "areal", "grid": {"nx": topo.nx, "ny": topo.ny},
+                                "dx": {"value": topo.dx, "unit": "m"},
+                                "dy": {"value": topo.dy, "unit": "m"}}
+    if window is not None:
+        topo = _crop_areal(topo, window)
+        settings["window"] = {"value": list(window), "unit": "m"}
+    else:
+        settings["window"] = None
+    if not np.isfinite(topo.heights).any():
+        raise SurfmetInputError("the scan has no measured point")
+    settings["non_measured_fraction"] = topo.nan_fraction
+    report = None
+    before = None
+    if spikes:
+        levelled_raw, _ = remove_form(topo, level)
+        before = spike_diagnosis(levelled_raw)
+        topo, report = remove_spikes(topo)
+        settings["spikes"] = report.as_dict()
+    else:
+        settings["spikes"] = {"removed": False}
+    surface, form = remove_form(topo, level)
+    settings["form"] = form.as_dict()
+    settings["level"] = form.method
+    filters = []
+    settings["ls"] = None if ls is None else {"value": ls, "unit": "m"}
+    settings["lc"] = None if lc is None else {"value": lc, "unit": "m"}
+    if ls is not None:
+        surface, info = s_filter(surface, ls, edge=edge)
+        filters.append(info.as_dict())
+    if lc is not None:
+        surface, info = l_filter(surface, lc, edge=edge)
+        filters.append(info.as_dict())
+    settings["filters"] = filters
+    settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
+    params = areal_parameters(surface, which)
+    values = params.as_dict()
+    settings["n_valid_points"] = params.n_valid
+    if params.notes:
+        settings["notes"] = list(params.notes)
+    diag = spike_diagnosis(surface)
+    dd = diag.as_dict()
+    if before is not None:
+        dd["before_spike_removal"] = before.as_dict()
+    settings["spike_diagnosis"] = dd
+    return RoughnessResult(
+        kind="areal",
+        parameters={k: (v, PARAMETER_UNITS[k]) for k, v in values.items()},
+        settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
+    )
+
+
+def _profile_level(level: str) -> str:
+    text = str(level).strip().lower()
+    if text in ("sphere", "cylinder") or text.startswith("cylinder:"):
+        raise SurfmetInputError(
+            f"level {level!r} is an areal form; for a profile use none, mean, plane (a "
+            "least-squares line) or poly:N"
+        )
+    return "line" if text == "plane" else text
+
+
+def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
+                       ) -> RoughnessResult:
+    import profiles
+    from surfmet.extract import extract_profile
+    from surfmet.spikes import remove_spikes, spike_diagnosis
+
+    settings: dict[str, Any] = {"kind": "profile"}
+    report = None
+    lvl = _profile_level(level)
+    if isinstance(data, Topography):
+        if profile is None:  # pragma: no cover - guarded by the caller
+            raise SurfmetInputError("an areal scan needs profile='row:K' or 'col:K'")
+        if spikes:
+            data, report = remove_spikes(data)
+            settings["spikes"] = report.as_dict()
+        prof = extract_profile(data, profile)
+        settings["profile"] = prof.metadata.get("profile")
+    else:
+        if profile is not None:
+            raise SurfmetInputError("--profile applies to areal scans; this file is a profile")
+        prof = data
+        if spikes:
+            as_topo = Topography(prof.z[None, :], prof.dx, prof.dx, metadata=prof.metadata)
+            cleaned, report = remove_spikes(as_topo)
+            prof = prof.replace(z=cleaned.heights[0])
+            settings["spikes"] = report.as_dict()
+    if not spikes:
+        settings["spikes"] = {"removed": False}
+    lc_arg: Any = "auto" if lc is None else lc
+    ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
+                                  ls=ls, lc=lc_arg)
+    settings.update(ap.settings)
+    settings["level"] = lvl
+    units = type(ap.parameters).UNITS
+    values = ap.parameters.as_dict()
+    rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
+    diag = spike_diagnosis(rough)
+    settings["spike_diagnosis"] = diag.as_dict()
+    return RoughnessResult(
+        kind="profile",
+        parameters={k: (v, units.get(k, "")) for k, v in values.items()},
+        settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
+    )
+
+
+def roughness_file(path: str | os.PathLike, **options: Any) -> dict[str, Any]:
+    """Roughness of one file as a JSON-ready dict; errors are returned, not raised.
+
+    Returns ``{"file", "status": "ok", "parameters", "settings"}`` or
+    ``{"file", "status": "error", "error": message}``. Top-level and picklable, for
+    process pools and Dask.
+    """
+    from surfmet.errors import user_error_types
+
+    name = str(path)
+    try:
+        res = roughness(path, **options)
+    except user_error_types() as exc:
+        return {"file": name, "status": "error", "error": str(exc)}
+    except Exception as exc:  # a bug must not stop a batch; it is reported as such
+        return {"file": name, "status": "error",
+                "error": f"internal error: {type(exc).__name__}: {exc}"}
+    return {"file": name, "status": "ok", **res.to_json()}
+
+
+def roughness_many(paths: Iterable[str | os.PathLike], **options: Any) -> list[dict[str, Any]]:
+    """:func:`roughness_file` on each path in turn; one entry per file, failures included."""
+    return [roughness_file(p, **options) for p in paths]

@@ -1,0 +1,139 @@
+"""``surfmet roughness`` and ``surfmet fit``: JSON shape, units, CSV, errors."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+import surfmet
+from surfmet.areal import PARAMETER_UNITS
+from surfmet.cli import main
+from surfmet.model import Topography
+
+
+def _run(capsys, *argv):
+    rc = main(list(argv))
+    out, err = capsys.readouterr()
+    return rc, out, err
+
+
+@pytest.fixture
+def scan(tmp_path):
+    rng = np.random.default_rng(0)
+    _, i = np.mgrid[:96, :128]
+    z = 1e-7 * rng.standard_normal((96, 128)) + 1e-4 * i * 1e-6
+    path = tmp_path / "plate.npz"
+    surfmet.write(Topography(z, 1e-6, 1e-6), path)
+    return path
+
+
+@pytest.fixture
+def ball(tmp_path):
+    rng = np.random.default_rng(1)
+    R, n, dx = 10e-3, 80, 5e-6
+    j, i = np.mgrid[:n, :n]
+    z = np.sqrt(R**2 - (i * dx - 2e-4) ** 2 - (j * dx - 2e-4) ** 2) + 2e-8 * rng.standard_normal(
+        (n, n))
+    path = tmp_path / "ball.npz"
+    surfmet.write(Topography(z, dx, dx), path)
+    return path, R
+
+
+def test_one_file_json_shape(capsys, scan):
+    rc, out, _ = _run(capsys, "roughness", str(scan), "--json")
+    assert rc == 0
+    rec = json.loads(out)
+    assert set(rec) == {"file", "parameters", "settings"}
+    assert rec["file"] == str(scan)
+    for sym, q in rec["parameters"].items():
+        assert set(q) == {"value", "unit"}
+        assert q["unit"] == PARAMETER_UNITS[sym]
+    assert rec["parameters"]["Sa"]["unit"] == "m"
+    assert rec["parameters"]["Ssk"] == {"value": rec["parameters"]["Ssk"]["value"], "unit": ""}
+    s = rec["settings"]
+    assert s["level"] == "plane" and s["ls"] is None and s["lc"] is None
+    assert s["filters"] == [] and s["spikes"] == {"removed": False}
+    assert "message" in s["spike_diagnosis"]
+    # the plane (a 1e-4 tilt) was removed: Sq is that of the noise
+    assert rec["parameters"]["Sq"]["value"] == pytest.approx(1e-7, rel=0.05)
+
+
+def test_filters_and_spikes_are_recorded(capsys, scan):
+    rc, out, _ = _run(capsys, "roughness", str(scan), "--lc", "50um", "--ls", "2um",
+                      "--spikes", "--level", "poly:2", "--json")
+    assert rc == 0
+    s = json.loads(out)["settings"]
+    assert s["lc"] == {"value": pytest.approx(50e-6), "unit": "m"}
+    assert s["ls"] == {"value": pytest.approx(2e-6), "unit": "m"}
+    assert [f["kind"] for f in s["filters"]] == ["S", "L"]
+    assert s["filters"][1]["edge"] == "moment"
+    assert s["spikes"]["removed"] is True and s["spikes"]["count"] == 0
+    assert s["level"] == "poly:2"
+
+
+def test_several_files_json_and_csv(capsys, scan, tmp_path):
+    bad = tmp_path / "broken.x3p"
+    bad.write_bytes(b"PK\x03\x04 not really a zip")
+    rc, out, err = _run(capsys, "roughness", str(scan), str(bad), str(scan), "--json")
+    assert rc == 1  # one file failed
+    recs = json.loads(out)
+    assert [r["status"] for r in recs] == ["ok", "error", "ok"]
+    assert "error" in recs[1] and recs[1]["file"] == str(bad)
+    assert err.count("\n") == 1 and "broken.x3p" in err
+    out_csv = tmp_path / "t.csv"
+    rc, _, _ = _run(capsys, "roughness", str(scan), str(bad), "--csv", str(out_csv))
+    rows = list(csv.DictReader(io.StringIO(out_csv.read_text())))
+    assert rc == 1
+    assert rows[0]["status"] == "ok" and float(rows[0]["Sa_m"]) > 0
+    assert rows[1]["status"] == "error" and rows[1]["error"]
+    assert list(rows[0])[:5] == ["file", "status", "error", "Sa_m", "Sq_m"]
+    assert "Ssk" in rows[0] and "Spd_1/m²" in rows[0]
+
+
+def test_human_table(capsys, scan):
+    rc, out, _ = _run(capsys, "roughness", str(scan))
+    assert rc == 0 and "Sa" in out and "nm" in out and "diagnosis" in out
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["roughness", "/nonexistent/scan.x3p"], "scan.x3p"),
+    (["roughness", "{scan}", "--lc", "3furlong"], "unit"),
+    (["roughness", "{scan}", "--lc", "1mm"], "too small"),
+    (["roughness", "{scan}", "--level", "banana"], "banana"),
+    (["roughness", "{scan}", "--profile", "row:999"], "row"),
+    (["fit", "{scan}", "--shape", "circle"], "--profile"),
+])
+def test_user_errors_exit_1_with_one_line(capsys, scan, argv, needle):
+    argv = [a.replace("{scan}", str(scan)) for a in argv]
+    rc, out, err = _run(capsys, *argv)
+    assert rc == 1
+    assert out == ""
+    assert err.count("\n") == 1 and err.startswith("surfmet: error:")
+    assert needle in err
+
+
+def test_fit_sphere_json(capsys, ball):
+    path, R = ball
+    rc, out, _ = _run(capsys, "fit", str(path), "--shape", "sphere", "--json")
+    assert rc == 0
+    rec = json.loads(out)
+    for key in ("radius", "rms_residual", "radius_uncertainty"):
+        assert rec[key]["unit"] == "m" and isinstance(rec[key]["value"], float)
+    assert rec["center"]["unit"] == "m" and len(rec["center"]["value"]) == 3
+    assert abs(rec["radius"]["value"] - R) < 4 * rec["radius_uncertainty"]["value"]
+
+
+def test_fit_circle_of_a_row(capsys, ball):
+    path, R = ball
+    rc, out, _ = _run(capsys, "fit", str(path), "--shape", "circle", "--profile", "row:40",
+                      "--loss", "huber", "--json")
+    assert rc == 0
+    rec = json.loads(out)
+    # row 40 is at y = 2e-4 m, through the apex: the section radius is R
+    assert rec["radius"]["value"] == pytest.approx(R, rel=0.02)
+    assert len(rec["center"]["value"]) == 2 and rec["center"]["unit"] == "m"
+    assert rec["radius_uncertainty"]["unit"] == "m"

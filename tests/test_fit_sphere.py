@@ -1,0 +1,83 @@
+"""Sphere fits of synthetic ball scans: the radius comes back within its uncertainty."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from surfmet.errors import SurfmetInputError
+from surfmet.fitting import fit_sphere
+from surfmet.model import Topography
+
+
+def _cap(rng, R, half_angle_deg, n, noise, holes=0.0, concave=False):
+    """A spherical cap of radius R seen from above, n x n points, z noise σ = noise."""
+    half_width = R * np.sin(np.radians(half_angle_deg)) / np.sqrt(2)  # cap inside the disc
+    dx = 2 * half_width / (n - 1)
+    j, i = np.mgrid[:n, :n]
+    X, Y = i * dx, j * dx
+    xc = half_width + rng.uniform(-0.1, 0.1) * half_width
+    yc = half_width + rng.uniform(-0.1, 0.1) * half_width
+    zc = rng.uniform(-1e-3, 1e-3)
+    root = np.sqrt(R**2 - (X - xc) ** 2 - (Y - yc) ** 2)
+    z = (zc - root if concave else zc + root) + noise * rng.standard_normal(X.shape)
+    if holes:
+        z[rng.random(z.shape) < holes] = np.nan
+    return Topography(z, dx, dx), (xc, yc, zc)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_radius_within_its_uncertainty(seed):
+    rng = np.random.default_rng(seed)
+    R = rng.uniform(0.5e-3, 25e-3)
+    angle = rng.uniform(3, 30)
+    noise = rng.uniform(5e-9, 200e-9)
+    topo, centre = _cap(rng, R, angle, int(rng.integers(60, 160)), noise,
+                        holes=rng.uniform(0, 0.3), concave=bool(seed % 3 == 0))
+    f = fit_sphere(topo)
+    assert abs(f.radius - R) < 3.5 * f.radius_uncertainty
+    assert np.allclose(f.center, centre, atol=4 * max(f.center_uncertainty))
+    assert f.rms_residual == pytest.approx(noise, rel=0.1)
+    assert f.convex == (seed % 3 != 0)
+    assert f.pv_form_deviation > 4 * noise
+    assert np.isnan(f.residuals).sum() == np.isnan(topo.heights).sum()
+
+
+def test_uncertainty_matches_the_scatter_of_repeated_fits():
+    # The Jacobian uncertainty must be realistic, not just large: compare with the
+    # standard deviation of the radius over independent noise draws.
+    rng = np.random.default_rng(10)
+    R, radii, uncs = 10e-3, [], []
+    for _ in range(40):
+        topo, _ = _cap(rng, R, 8.0, 60, 50e-9)
+        f = fit_sphere(topo)
+        radii.append(f.radius)
+        uncs.append(f.radius_uncertainty)
+    assert np.std(radii, ddof=1) == pytest.approx(np.mean(uncs), rel=0.3)
+    assert abs(np.mean(radii) - R) < 3 * np.std(radii) / np.sqrt(len(radii)) + 1e-9
+
+
+def test_robust_loss_resists_spikes():
+    rng = np.random.default_rng(3)
+    R = 10e-3  # a 20 mm ball, as in Alaci et al. 2022
+    topo, _ = _cap(rng, R, 10, 100, 20e-9)
+    z = topo.heights.copy()
+    idx = rng.choice(z.size, 60, replace=False)
+    z.ravel()[idx] += rng.uniform(2e-6, 10e-6, idx.size)
+    spiky = topo.replace(heights=z)
+    plain = fit_sphere(spiky)
+    robust = fit_sphere(spiky, loss="soft_l1")
+    assert abs(robust.radius - R) < abs(plain.radius - R) / 5
+    assert abs(robust.radius - R) < 1e-3 * R
+
+
+def test_plane_and_too_few_points_are_refused():
+    j, i = np.mgrid[:20, :20]
+    with pytest.raises(SurfmetInputError):
+        fit_sphere(Topography(np.full((20, 20), np.nan), 1e-6, 1e-6))
+    z = np.full((3, 3), np.nan)
+    z[0, :2] = 1.0
+    with pytest.raises(SurfmetInputError):
+        fit_sphere(Topography(z, 1e-6, 1e-6))
+    with pytest.raises(SurfmetInputError):
+        fit_sphere(Topography(1e-6 * (i + j), 1e-6, 1e-6), loss="l2")
