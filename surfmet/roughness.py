@@ -291,7 +291,7 @@ def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
     units = type(ap.parameters).UNITS
     values = ap.parameters.as_dict()
     rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
-    diag = spike_diagnosis(rough)
+    diag = spike_diagnosis(rough, prefix="R")
     settings["spike_diagnosis"] = diag.as_dict()
     return RoughnessResult(
         kind="profile",

@@ -132,14 +132,17 @@ class SpikeDiagnosis:
         }
 
 
-def spike_diagnosis(heights: np.ndarray | Topography) -> SpikeDiagnosis:
+def spike_diagnosis(heights: np.ndarray | Topography, prefix: str = "S") -> SpikeDiagnosis:
     """Diagnose spikes from the height distribution of a (levelled) surface.
 
     Parameters
     ----------
     heights : Topography or array
         Heights after form removal; NaN points are ignored.
+    prefix : {"S", "R"}
+        Parameter family named in the message: areal (Sq/Sa) or profile (Rq/Ra).
     """
+    q, a, k, z_, p_ = (f"{prefix}q", f"{prefix}a", f"{prefix}ku", f"{prefix}z", f"{prefix}sk")
     z = heights.heights if isinstance(heights, Topography) else np.asarray(heights, float)
     v = z[np.isfinite(z)]
     if v.size < 3:
@@ -149,7 +152,7 @@ def spike_diagnosis(heights: np.ndarray | Topography) -> SpikeDiagnosis:
     sq = float(np.sqrt(np.mean(d * d)))
     if not sa > 0:
         return SpikeDiagnosis(float("nan"), GAUSSIAN_SQ_OVER_SA, float("nan"), 0, False,
-                              "flat surface: Sq/Sa undefined")
+                              f"flat surface: {q}/{a} undefined")
     ratio = sq / sa
     sku = float(np.mean(d**4) / sq**4)
     med = float(np.median(v))
@@ -159,16 +162,16 @@ def spike_diagnosis(heights: np.ndarray | Topography) -> SpikeDiagnosis:
     suspected = ratio > SUSPECT_SQ_OVER_SA or n_out > 0
     if suspected:
         msg = (
-            f"Sq/Sa = {ratio:.3g}, against {GAUSSIAN_SQ_OVER_SA:.3g} (= sqrt(pi/2)) for a "
-            f"Gaussian surface and at most ~1.4 for real textures; Sku = {sku:.3g}. "
+            f"{q}/{a} = {ratio:.3g}, against {GAUSSIAN_SQ_OVER_SA:.3g} (= sqrt(pi/2)) for a "
+            f"Gaussian surface and at most ~1.4 for real textures; {k} = {sku:.3g}. "
             f"{n_out} point(s) lie beyond {OUTLIER_SIGMAS:g} robust sigma of the height "
-            "distribution. A few extreme heights (spikes, outliers, dust) dominate Sq, Sz, "
-            "Ssk and Sku: remove spikes (roughness(..., spikes=True) / --spikes) or check "
-            "the scan before trusting them."
+            f"distribution. A few extreme heights (spikes, outliers, dust) dominate {q}, "
+            f"{z_}, {p_} and {k}: remove spikes (roughness(..., spikes=True) / --spikes) or "
+            "check the scan before trusting them."
         )
     else:
         msg = (
-            f"Sq/Sa = {ratio:.3g} (Gaussian surface: {GAUSSIAN_SQ_OVER_SA:.3g}); no sign of "
+            f"{q}/{a} = {ratio:.3g} (Gaussian surface: {GAUSSIAN_SQ_OVER_SA:.3g}); no sign of "
             "spikes."
         )
     return SpikeDiagnosis(ratio, GAUSSIAN_SQ_OVER_SA, sku, n_out, bool(suspected), msg)
