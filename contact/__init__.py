@@ -2,7 +2,23 @@
 resistance, the rotor of Alaci et al. 2022).
 
 Arrays and SI floats in, arrays and small frozen dataclasses out. Never imports surfmet.
+
+Main entry points::
+
+    from contact import material, composite_modulus, hertz_sphere, solve_sphere
+    E = composite_modulus(material("steel"), material("aluminium"))
+    hertz_sphere(0.02, 10.0, E)            # a, delta, p0 of the paper's ball
+    res = solve_sphere(0.02, 10.0, E)      # FFT-BEM, smooth ball: ContactResult
+    res = solve_sphere(0.02, 10.0, E, roughness=z, roughness_dx=5e-6)   # rough
+    prob = SphereContact(0.02, E, 100.0, roughness=z, roughness_dx=5e-6)
+    results = prob.sweep([1, 3, 10, 30, 100])   # warm-started load sweep
+
+Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
+
+from __future__ import annotations
+
+from typing import Any
 
 from contact.errors import (
     ContactError,
@@ -11,11 +27,67 @@ from contact.errors import (
     EdgeContactError,
     EdgeContactWarning,
 )
+from contact.hertz import (
+    HertzCylinder,
+    HertzSphere,
+    hertz_cylinder,
+    hertz_sphere,
+    hertz_sphere_from_approach,
+)
+from contact.materials import (
+    MATERIALS,
+    Material,
+    compliance,
+    composite_modulus,
+    contact_hardness,
+    displacement_shares,
+    material,
+)
+
+_LAZY = {
+    "solve_normal": "contact.bem",
+    "SolverStats": "contact.bem",
+    "ContactResult": "contact.result",
+    "SphereContact": "contact.sphere",
+    "solve_sphere": "contact.sphere",
+    "auto_domain": "contact.geometry",
+    "sphere_gap": "contact.geometry",
+    "cylinder_gap": "contact.geometry",
+}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'contact' has no attribute {name!r}")
+
 
 __all__ = [
+    "MATERIALS",
     "ContactError",
     "ContactInputError",
+    "ContactResult",
     "ConvergenceError",
     "EdgeContactError",
     "EdgeContactWarning",
+    "HertzCylinder",
+    "HertzSphere",
+    "Material",
+    "SolverStats",
+    "SphereContact",
+    "auto_domain",
+    "compliance",
+    "composite_modulus",
+    "contact_hardness",
+    "cylinder_gap",
+    "displacement_shares",
+    "hertz_cylinder",
+    "hertz_sphere",
+    "hertz_sphere_from_approach",
+    "material",
+    "solve_normal",
+    "solve_sphere",
+    "sphere_gap",
 ]

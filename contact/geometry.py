@@ -1,0 +1,233 @@
+"""Gaps on a grid and the automatic choice of the computational domain.
+
+Conventions: the grid has ``n`` cells of pitch ``dx`` per side; cell ``(i, j)`` has its
+centre at ``x = (j - n//2) dx``, ``y = (i - n//2) dy``, so the sphere apex sits on the
+centre of cell ``(n//2, n//2)``. Roughness arrays follow the surfmet layout: row ``i`` at
+``Y = i dy``, column ``j`` at ``X = j dx`` (scan coordinates, metres).
+
+The composite roughness ``z`` is the sum of the two surfaces' heights, each measured
+outward from its own body, so that it *closes* the gap: ``h = x^2/(2R) - z``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.fft as sfft
+
+from contact.errors import ContactInputError
+from contact.hertz import hertz_sphere
+
+
+def centred_coordinates(n: int, d: float) -> np.ndarray:
+    """Cell-centre coordinates of an n-cell axis with the origin on cell n//2."""
+    return (np.arange(n) - n // 2) * d
+
+
+def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
+               dy: float | None = None, exact: bool = False) -> np.ndarray:
+    """Initial gap of a sphere over a flat, (ny, n) cells, apex on the centre cell.
+
+    ``exact=False`` gives the Hertz paraboloid r^2/(2R); ``exact=True`` the sphere
+    R - sqrt(R^2 - r^2) (it differs by r^4/(8R^3), a relative 1e-5 at r = a for the
+    paper's ball).
+    """
+    if not (radius > 0 and math.isfinite(radius)):
+        raise ContactInputError(f"the sphere radius must be positive, got {radius!r}")
+    ny = n if ny is None else ny
+    dy = dx if dy is None else dy
+    r2 = centred_coordinates(n, dx)[None, :] ** 2 + centred_coordinates(ny, dy)[:, None] ** 2
+    if not exact:
+        return r2 / (2.0 * radius)
+    if r2.max() >= radius**2:
+        raise ContactInputError("the domain is wider than the sphere; use a smaller size")
+    return radius - np.sqrt(radius**2 - r2)
+
+
+def cylinder_gap(n: int, dx: float, radius: float, *, ny: int | None = None) -> np.ndarray:
+    """Initial gap x^2/(2R) of a cylinder with its axis along y, shape (ny, n)."""
+    if not (radius > 0 and math.isfinite(radius)):
+        raise ContactInputError(f"the cylinder radius must be positive, got {radius!r}")
+    ny = n if ny is None else ny
+    x = centred_coordinates(n, dx)
+    return np.broadcast_to(x[None, :] ** 2 / (2.0 * radius), (ny, n)).copy()
+
+
+def plane_fit(z: np.ndarray, dx: float = 1.0, dy: float = 1.0) -> tuple[float, float, float]:
+    """Least-squares plane ``c + bx X + by Y`` through the finite points of ``z``."""
+    _ny, _nx = z.shape
+    yy, xx = np.nonzero(np.isfinite(z))
+    if yy.size < 3:
+        raise ContactInputError("a roughness map needs at least 3 measured points")
+    a = np.column_stack((np.ones(yy.size), xx * dx, yy * dy))
+    coef, *_ = np.linalg.lstsq(a, z[yy, xx], rcond=None)
+    return float(coef[0]), float(coef[1]), float(coef[2])
+
+
+def remove_plane(z: np.ndarray, dx: float = 1.0, dy: float = 1.0) -> tuple[np.ndarray, tuple]:
+    """``z`` minus its least-squares plane, and the plane (c, slope_x, slope_y)."""
+    c, bx, by = plane_fit(z, dx, dy)
+    ny, nx = z.shape
+    plane = c + bx * np.arange(nx)[None, :] * dx + by * np.arange(ny)[:, None] * dy
+    return z - plane, (c, bx, by)
+
+
+def fill_nan(z: np.ndarray) -> tuple[np.ndarray, float]:
+    """Fill non-measured points with the nearest measured value; return the filled fraction.
+
+    Raises
+    ------
+    ContactInputError
+        If nothing is measured.
+    """
+    from scipy.ndimage import distance_transform_edt
+
+    z = np.asarray(z, dtype=float)
+    bad = ~np.isfinite(z)
+    if not bad.any():
+        return z, 0.0
+    if bad.all():
+        raise ContactInputError("the roughness map is NaN everywhere: nothing was measured")
+    idx = distance_transform_edt(bad, return_distances=False, return_indices=True)
+    return z[tuple(idx)], float(bad.mean())
+
+
+def fast_even(n: int) -> int:
+    """The smallest even n' >= n whose FFTs (of n' and 2n') are fast."""
+    m = max(2, int(n))
+    while True:
+        m = sfft.next_fast_len(m, real=True)
+        if m % 2 == 0 and sfft.next_fast_len(2 * m, real=True) == 2 * m:
+            return m
+        m += 1
+
+
+@dataclass(frozen=True)
+class Domain:
+    """A square computational domain: ``n`` cells of pitch ``dx`` per side.
+
+    ``reason`` says how it was chosen (shown to the user).
+    """
+
+    n: int
+    dx: float
+    reason: str = ""
+
+    @property
+    def size(self) -> float:
+        """Side length n dx (m)."""
+        return self.n * self.dx
+
+
+def contact_extent(radius: float, load: float, e_star: float, roughness_rms: float = 0.0) -> float:
+    """Estimated radius (m) inside which a rough ball may touch the plate.
+
+    The smooth ball touches within the Hertz radius a. Roughness lets asperities up to
+    about three standard deviations high touch further out, where the undeformed sphere
+    stands x^2/(2R) above the plate: r^2 = a^2 + 2R (3 sigma).
+    """
+    a = hertz_sphere(radius, load, e_star).a
+    return math.sqrt(a**2 + 6.0 * radius * max(roughness_rms, 0.0))
+
+
+def auto_domain(
+    radius: float,
+    load: float,
+    e_star: float,
+    *,
+    roughness_rms: float = 0.0,
+    roughness_dx: float | None = None,
+    grid: int | None = None,
+    size: float | None = None,
+    max_grid: int = 1024,
+    smooth_grid: int = 256,
+    margin: float = 1.25,
+) -> Domain:
+    """Choose the domain side and grid for a ball of radius R under load W.
+
+    Rules (each overridable):
+
+    - side = 2 * margin * r_c with r_c from :func:`contact_extent` (Hertz radius widened by
+      the roughness); ``size`` overrides it;
+    - smooth ball: ``smooth_grid`` cells (256 gives the Hertz peak pressure to ~4e-6);
+    - rough ball: the pitch of the roughness data, but at least 32 cells per Hertz radius,
+      and at most ``max_grid`` cells per side (coarser than the scan past that);
+    - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
+    """
+    a = hertz_sphere(radius, load, e_star).a
+    if size is not None and not (size > 0 and math.isfinite(size)):
+        raise ContactInputError(f"the domain size must be positive, got {size!r}")
+    if grid is not None and int(grid) < 8:
+        raise ContactInputError(f"the grid needs at least 8 cells per side, got {grid!r}")
+    rough = roughness_rms > 0 and roughness_dx is not None
+    side = size if size is not None else 2.0 * margin * contact_extent(
+        radius, load, e_star, roughness_rms if rough else 0.0)
+    why = "user size" if size is not None else (
+        "2.5 x the contact radius estimated from Hertz and the roughness" if rough
+        else "2.5 x the Hertz radius")
+    if grid is not None:
+        n = int(grid)
+        if n % 2:
+            n += 1
+        return Domain(n, side / n, f"{why}; user grid")
+    if not rough:
+        n = fast_even(smooth_grid)
+        return Domain(n, side / n, f"{why}; {n} cells for a smooth ball")
+    dx = min(float(roughness_dx), a / 32.0)
+    n = fast_even(math.ceil(side / dx))
+    if n > max_grid:
+        n = fast_even(max_grid) if fast_even(max_grid) <= max_grid else max_grid
+        return Domain(n, side / n, f"{why}; capped at {n} cells (coarser than the scan)")
+    return Domain(n, side / n, f"{why}; pitch of the roughness data")
+
+
+def sample_roughness(
+    z: np.ndarray,
+    zdx: float,
+    zdy: float,
+    centre: tuple[float, float],
+    n: int,
+    dx: float,
+) -> np.ndarray:
+    """Resample the roughness onto the n x n contact grid centred on ``centre`` (X, Y).
+
+    Bilinear interpolation; when the contact grid is coarser than the data, the data are
+    first averaged over one contact cell (box filter) so that the grid sees the cell-mean
+    roughness instead of an aliased sample.
+
+    Raises
+    ------
+    ContactInputError
+        If the grid reaches outside the roughness data.
+    """
+    from scipy.ndimage import map_coordinates, uniform_filter
+
+    ny_r, nx_r = z.shape
+    X = centre[0] + centred_coordinates(n, dx)
+    Y = centre[1] + centred_coordinates(n, dx)
+    tol = 1e-9 * max(zdx, zdy)
+    inside = (X[0] >= -tol and Y[0] >= -tol and X[-1] <= (nx_r - 1) * zdx + tol
+              and Y[-1] <= (ny_r - 1) * zdy + tol)
+    if not inside:
+        raise ContactInputError("the contact grid reaches outside the roughness data")
+    data = z
+    fx, fy = dx / zdx, dx / zdy
+    if fx > 1.5 or fy > 1.5:
+        data = uniform_filter(z, size=(max(1, round(fy)), max(1, round(fx))), mode="nearest")
+    ci = np.clip(Y / zdy, 0, ny_r - 1)
+    cj = np.clip(X / zdx, 0, nx_r - 1)
+    return map_coordinates(data, np.meshgrid(ci, cj, indexing="ij"), order=1, mode="nearest")
+
+
+def max_centred_cells(shape: tuple[int, int], zdx: float, zdy: float,
+                      centre: tuple[float, float], dx: float) -> int:
+    """The largest even n whose centred n x n grid of pitch dx fits inside the data."""
+    ny_r, nx_r = shape
+    half_x = min(centre[0], (nx_r - 1) * zdx - centre[0])
+    half_y = min(centre[1], (ny_r - 1) * zdy - centre[1])
+    half = min(half_x, half_y)
+    # cells run from -(n//2) to n - 1 - n//2: the low side is the binding one
+    n = 2 * math.floor(half / dx + 1e-9)
+    return max(n, 0)

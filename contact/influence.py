@@ -1,0 +1,141 @@
+"""Influence coefficients of an elastic half-space: Love's uniform pressure on a rectangle.
+
+A cell of size dx * dy carrying a uniform pressure p displaces the surface point (x, y)
+(measured from the cell centre) by ``p * K(x, y) / E*`` into the body, with (Love 1929,
+Phil. Trans. R. Soc. A 228:377; Johnson 1985, *Contact Mechanics*, eq. 3.25)::
+
+    K(x, y) = 1/pi * sum over the four corners (xc, yc) = (x +- dx/2, y +- dy/2) of
+              +- [ xc asinh(yc/|xc|) + yc asinh(xc/|yc|) ]
+
+with sign + at (x+dx/2, y+dy/2) and (x-dx/2, y-dy/2), - at the other two. This is the
+classical form ``x ln(y + r) + y ln(x + r)`` rewritten with asinh: the ``x ln|x|`` parts
+cancel between corners, and asinh avoids the cancellation of ``ln(y + r)`` for y < 0.
+
+Two convolution operators are built from K (both cached by grid, pitch and periodicity):
+
+- **free boundary** (DC-FFT; Liu, Wang & Liu 2000, Wear 243:101): the kernel is laid out on
+  a grid of twice the size with wrap-around offsets, the pressure is zero-padded, and the
+  first quadrant of the cyclic convolution is the exact linear convolution.
+- **periodic**: the pressure repeats with the domain. The Fourier coefficients of the
+  periodised Love kernel are the alias sum of the continuous half-space response
+  2/|q| (Johnson 1985 sec. 13.2, the wavy surface; Stanley & Kato 1997, J. Tribol.
+  119:481)
+  times the transform of the uniform cell::
+
+      K^(q) = sum_{m,n} 2/|q + G_mn| * sinc(qx' dx/2) * sinc(qy' dy/2),   q' = q + G_mn
+
+  with G_mn = (2 pi m / dx, 2 pi n / dy); the sum is truncated at |m|, |n| <= n_alias. The
+  terms alternate in sign, so the truncation error falls fast; the q = 0 term (the mean
+  displacement, a rigid-body motion in a periodic problem) is zero.
+
+All kernels here are for E* = 1; divide by E* to get displacements.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import numpy as np
+import scipy.fft as sfft
+
+
+def _corner(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    ax = np.abs(x)
+    ay = np.abs(y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = np.where(ax > 0, x * np.arcsinh(y / np.where(ax > 0, ax, 1.0)), 0.0)
+        t2 = np.where(ay > 0, y * np.arcsinh(x / np.where(ay > 0, ay, 1.0)), 0.0)
+    return t1 + t2
+
+
+def love_coefficients(x: np.ndarray, y: np.ndarray, dx: float, dy: float) -> np.ndarray:
+    """Displacement at (x, y) per unit pressure on the cell [-dx/2, dx/2] x [-dy/2, dy/2].
+
+    For E* = 1 (divide by E*). ``x`` and ``y`` broadcast against each other.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Positions relative to the cell centre, in metres.
+    dx, dy : float
+        Cell size in metres.
+    """
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    hx, hy = 0.5 * dx, 0.5 * dy
+    k = (
+        _corner(x + hx, y + hy)
+        - _corner(x + hx, y - hy)
+        - _corner(x - hx, y + hy)
+        + _corner(x - hx, y - hy)
+    )
+    return k / math.pi
+
+
+def self_influence(dx: float, dy: float) -> float:
+    """Displacement of a cell centre per unit pressure on the cell itself (E* = 1).
+
+    Equals (2/pi) [dx asinh(dy/dx) + dy asinh(dx/dy)]; for a square cell,
+    (4/pi) asinh(1) dx = 1.1222 dx.
+    """
+    return float(love_coefficients(np.array(0.0), np.array(0.0), dx, dy))
+
+
+@lru_cache(maxsize=8)
+def free_kernel_quadrant(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
+    """K at the non-negative offsets (i dy, j dx), 0 <= i < ny, 0 <= j < nx (read-only).
+
+    K is even in x and in y, so this quadrant holds the whole free-boundary kernel.
+    """
+    q = love_coefficients(np.arange(nx)[None, :] * dx, np.arange(ny)[:, None] * dy, dx, dy)
+    q.setflags(write=False)
+    return q
+
+
+def _wrapped(quadrant: np.ndarray) -> np.ndarray:
+    """Lay the even kernel out on a (2ny, 2nx) cyclic grid (offset +-n left at zero)."""
+    ny, nx = quadrant.shape
+    k = np.zeros((2 * ny, 2 * nx))
+    k[:ny, :nx] = quadrant
+    k[ny + 1 :, :nx] = quadrant[:0:-1, :]
+    k[:ny, nx + 1 :] = quadrant[:, :0:-1]
+    k[ny + 1 :, nx + 1 :] = quadrant[:0:-1, :0:-1]
+    return k
+
+
+@lru_cache(maxsize=8)
+def free_kernel_spectrum(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
+    """Real spectrum, shape (2ny, nx + 1), of the zero-padded free-boundary kernel (E* = 1).
+
+    The kernel is even in both directions, so its transform is real; ``irfft2(rfft2(p,
+    s=(2ny, 2nx)) * spectrum)[:ny, :nx]`` is the displacement of the pressure ``p``.
+    """
+    spec = sfft.rfft2(_wrapped(free_kernel_quadrant(ny, nx, dx, dy)))
+    out = np.ascontiguousarray(spec.real)
+    out.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=8)
+def periodic_kernel_spectrum(
+    ny: int, nx: int, dx: float, dy: float, n_alias: int = 8
+) -> np.ndarray:
+    """Real spectrum, shape (ny, nx//2 + 1), of the periodised Love kernel (E* = 1).
+
+    ``irfft2(rfft2(p) * spectrum, s=(ny, nx))`` is the displacement of the periodic
+    pressure ``p``, up to its mean (the q = 0 coefficient is zero).
+    """
+    from contact.kernels import periodic_love_spectrum
+
+    spec = periodic_love_spectrum(ny, nx, float(dx), float(dy), int(n_alias))
+    spec.setflags(write=False)
+    return spec
+
+
+@lru_cache(maxsize=8)
+def periodic_kernel_real(ny: int, nx: int, dx: float, dy: float, n_alias: int = 8) -> np.ndarray:
+    """The periodic kernel in real space, shape (ny, nx), offsets wrapped (read-only)."""
+    k = sfft.irfft2(periodic_kernel_spectrum(ny, nx, dx, dy, n_alias), s=(ny, nx))
+    k.setflags(write=False)
+    return k

@@ -1,0 +1,185 @@
+"""Elastic and plastic constants of common contact materials, and the composite modulus.
+
+Each entry holds Young's modulus ``E`` (Pa), Poisson's ratio ``nu`` and an indentation
+hardness ``hardness`` (Pa), the flow pressure at which an elastic-perfectly-plastic contact
+caps the pressure. The elastic constants are room-temperature handbook values; hardness
+varies with heat treatment and temper by tens of percent, so the table's hardness is a
+typical value and any measured value should override it (``material(name, hardness=...)``).
+
+Sources
+-------
+- Steel and aluminium: E = 210 GPa, nu = 0.30 and E = 70 GPa, nu = 0.33, the textbook
+  values that reproduce the Hertz figures of Alaci, Ciornei & Romanu (2022), Materials
+  15:2518 (delta = 0.936 um, a = 136 um at 10 N, R = 20 mm).
+- Other elastic constants: W. D. Callister & D. G. Rethwisch, *Materials Science and
+  Engineering*, 9th ed., Wiley (2014), Table 6.1 and Appendix B; ASM Handbook vol. 2
+  (1990) for the aluminium and copper alloys; manufacturers' data sheets for the
+  ceramics.
+- Hardness: Vickers hardness HV (kgf/mm^2) converted as H = 9.807 MPa * HV (ASTM E384);
+  typical HV: hardened AISI 52100 bearing steel 750 (ASTM A295, 60-66 HRC), AISI 1020
+  steel 130, 6061-T6 aluminium 107, annealed copper 50, C26000 brass 120, Ti-6Al-4V 349,
+  soda-lime glass 550, fused silica 900, WC-6Co 1600, Si3N4 1550, alumina 1700,
+  PMMA 20.
+
+Composite modulus (Johnson 1985, *Contact Mechanics*, eq. 4.22)::
+
+    1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+
+and the "elastic compliance" P = 1/E* of Alaci et al. (2022), eq. (5).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+from contact.errors import ContactInputError
+
+_HV = 9.807e6  # Pa per Vickers number (1 kgf/mm^2)
+
+
+@dataclass(frozen=True)
+class Material:
+    """Isotropic elastic constants and an indentation hardness.
+
+    Parameters
+    ----------
+    name : str
+        Display name.
+    E : float
+        Young's modulus in Pa.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    hardness : float or None
+        Indentation hardness in Pa (the plastic flow pressure), or None if unknown.
+    source : str
+        Where the numbers come from.
+    """
+
+    name: str
+    E: float
+    nu: float
+    hardness: float | None = None
+    source: str = "user"
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.E) and self.E > 0):
+            raise ContactInputError(f"material {self.name!r}: E must be a positive modulus in Pa")
+        if not (math.isfinite(self.nu) and -1.0 < self.nu <= 0.5):
+            raise ContactInputError(
+                f"material {self.name!r}: Poisson's ratio must lie in (-1, 0.5], got {self.nu}"
+            )
+        if self.hardness is not None and not (
+            math.isfinite(self.hardness) and self.hardness > 0
+        ):
+            raise ContactInputError(
+                f"material {self.name!r}: hardness must be a positive pressure in Pa"
+            )
+
+    @property
+    def plane_strain_modulus(self) -> float:
+        """E / (1 - nu^2) in Pa."""
+        return self.E / (1.0 - self.nu**2)
+
+
+_CALLISTER = "Callister & Rethwisch (2014) Table 6.1"
+
+MATERIALS: dict[str, Material] = {
+    m.name: m
+    for m in (
+        Material("steel", 210e9, 0.30, 750 * _HV,
+                 "Alaci et al. (2022) E, nu; hardened AISI 52100 bearing steel HV 750"),
+        Material("mild_steel", 207e9, 0.30, 130 * _HV, f"{_CALLISTER}; AISI 1020 HV 130"),
+        Material("aluminium", 70e9, 0.33, 107 * _HV,
+                 "Alaci et al. (2022) E, nu; 6061-T6 HV 107 (ASM Handbook vol. 2)"),
+        Material("copper", 110e9, 0.34, 50 * _HV, f"{_CALLISTER}; annealed C11000 HV 50"),
+        Material("brass", 97e9, 0.34, 120 * _HV, f"{_CALLISTER}; C26000 half-hard HV 120"),
+        Material("titanium", 114e9, 0.34, 349 * _HV, "ASM Handbook vol. 2: Ti-6Al-4V HV 349"),
+        Material("glass", 72e9, 0.23, 550 * _HV, "soda-lime glass, data sheets: HV 550"),
+        Material("fused_silica", 73e9, 0.17, 900 * _HV, "fused silica, data sheets: HV 900"),
+        Material("tungsten_carbide", 620e9, 0.24, 1600 * _HV, "WC-6Co, data sheets: HV 1600"),
+        Material("silicon_nitride", 310e9, 0.27, 1550 * _HV,
+                 "bearing-grade Si3N4 (ASTM F2094), data sheets: HV 1550"),
+        Material("alumina", 380e9, 0.22, 1700 * _HV, "99.5 % Al2O3, data sheets: HV 1700"),
+        Material("pmma", 3.0e9, 0.37, 20 * _HV, "PMMA, data sheets: HV 20"),
+    )
+}
+
+ALIASES: dict[str, str] = {
+    "aluminum": "aluminium",
+    "al": "aluminium",
+    "aluminium_alloy": "aluminium",
+    "bearing_steel": "steel",
+    "52100": "steel",
+    "aisi52100": "steel",
+    "ti6al4v": "titanium",
+    "ti": "titanium",
+    "cu": "copper",
+    "silica": "fused_silica",
+    "wc": "tungsten_carbide",
+    "si3n4": "silicon_nitride",
+    "al2o3": "alumina",
+    "sapphire": "alumina",
+    "soda_lime_glass": "glass",
+}
+
+
+def material(
+    name: str,
+    *,
+    E: float | None = None,
+    nu: float | None = None,
+    hardness: float | None = None,
+) -> Material:
+    """A material from the table, with any of its values overridden by the user's.
+
+    Parameters
+    ----------
+    name : str
+        Table name or alias (case-insensitive; ``-`` and spaces read as ``_``).
+    E, nu, hardness : float, optional
+        User values (Pa, -, Pa) that replace the table's.
+
+    Raises
+    ------
+    ContactInputError
+        If the name is unknown or an override is out of range.
+    """
+    key = name.strip().lower().replace("-", "_").replace(" ", "_")
+    key = ALIASES.get(key, key)
+    if key not in MATERIALS:
+        known = ", ".join(sorted(MATERIALS))
+        raise ContactInputError(f"unknown material {name!r}; known materials: {known}")
+    base = MATERIALS[key]
+    changes = {k: v for k, v in (("E", E), ("nu", nu), ("hardness", hardness)) if v is not None}
+    if not changes:
+        return base
+    return dataclasses.replace(base, source=base.source + " (user overrides)", **changes)
+
+
+def compliance(m1: Material, m2: Material) -> float:
+    """The elastic compliance P = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 in 1/Pa (Alaci eq. 5)."""
+    return (1.0 - m1.nu**2) / m1.E + (1.0 - m2.nu**2) / m2.E
+
+
+def composite_modulus(m1: Material, m2: Material) -> float:
+    """The composite (contact) modulus E* = 1/P in Pa (Johnson 1985, eq. 4.22)."""
+    return 1.0 / compliance(m1, m2)
+
+
+def contact_hardness(m1: Material, m2: Material) -> float | None:
+    """The hardness that caps the contact pressure: that of the softer body (or None)."""
+    values = [m.hardness for m in (m1, m2) if m.hardness is not None]
+    return min(values) if values else None
+
+
+def displacement_shares(m1: Material, m2: Material) -> tuple[float, float]:
+    """The fractions of the combined normal displacement taken by each body.
+
+    Under the same pressure each half-space deflects in proportion to its own compliance
+    (1 - nu^2)/E, so body ``i`` takes ``((1 - nu_i^2)/E_i) / P`` of the displacement the
+    solver reports for the pair.
+    """
+    p = compliance(m1, m2)
+    return ((1.0 - m1.nu**2) / m1.E / p, (1.0 - m2.nu**2) / m2.E / p)

@@ -1,0 +1,282 @@
+"""The result of a normal-contact solve: fields, scalars and the quantities derived from them.
+
+All values SI. Conventions (shared with :mod:`contact.bem`): row ``i`` is at
+``y[i]``, column ``j`` at ``x[j]`` (cell centres, metres, relative to the solver's
+reference point, the sphere apex for :func:`contact.sphere.solve_sphere`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.ascontiguousarray(a)
+    a.setflags(write=False)
+    return a
+
+
+@dataclass(frozen=True, eq=False)
+class ContactResult:
+    """Normal contact solution on a regular grid.
+
+    Fields (arrays of shape (ny, nx))
+    ---------------------------------
+    pressure : contact pressure p (Pa), >= 0, <= hardness when a hardness is set.
+    gap : deformed gap between the surfaces (m), >= 0; 0 where in contact.
+    displacement : combined elastic normal displacement u of both surfaces, positive into
+        the bodies (m). Body i takes the share ((1 - nu_i^2)/E_i) * E* of it
+        (:func:`contact.materials.displacement_shares`).
+    plastic_displacement : permanent combined indentation where the pressure reached the
+        hardness (m), 0 elsewhere (Almqvist et al. 2007, Wear 262:1321).
+
+    Scalars
+    -------
+    load : total normal force (N).
+    approach : rigid-body approach delta (m) in the gap equation g = h + u - delta.
+    pmax : maximum pressure (Pa).
+    contact_area : area of the cells with p > 0 (m^2); area_fraction = that / domain area.
+    contact_radius : sqrt(contact_area / pi) (m).
+    radius_95 : radius about the pressure centroid of the disc holding 95 % of the load (m).
+    centroid : (x, y) of the pressure centroid (m).
+    n_clusters : number of contact spots (4-connected cells with p > 0; in a periodic domain
+        spots that wrap around the boundary count once).
+    plastic_area : area of the cells at the hardness (m^2).
+    iterations, residual, converged : solver record; the residual is the rms gap error on
+        the contact divided by the displacement one cell at the mean contact pressure makes
+        on itself (about the rms relative pressure error per cell).
+    touches_edge : pressure on the outermost ring of cells: the domain may cut the contact.
+    """
+
+    pressure: np.ndarray
+    gap: np.ndarray
+    displacement: np.ndarray
+    plastic_displacement: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    dx: float
+    dy: float
+    e_star: float
+    hardness: float | None
+    periodic: bool
+    load: float
+    approach: float
+    pmax: float
+    contact_area: float
+    area_fraction: float
+    contact_radius: float
+    radius_95: float
+    centroid: tuple[float, float]
+    n_clusters: int
+    plastic_area: float
+    iterations: int
+    residual: float
+    converged: bool
+    touches_edge: bool
+    notes: tuple[str, ...] = ()
+    hertz: Any = None
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """Grid shape (ny, nx)."""
+        return self.pressure.shape  # type: ignore[return-value]
+
+    @property
+    def contact(self) -> np.ndarray:
+        """Boolean map of the cells in contact (p > 0)."""
+        return self.pressure > 0
+
+    @property
+    def plastic(self) -> bool:
+        """True if some cells reached the hardness."""
+        return self.plastic_area > 0
+
+    @property
+    def regime(self) -> str:
+        """"elastic", "plastic at the asperity scale" (some cells at the hardness while the
+        Hertz peak pressure of the same load stays below it) or "plastic at the Hertz
+        scale"; "elastic" also when no hardness was given."""
+        if self.hardness is None or self.plastic_area <= 0:
+            return "elastic"
+        p0 = getattr(self.hertz, "p0", None)
+        if p0 is not None and p0 < self.hardness:
+            return "plastic at the asperity scale"
+        return "plastic at the Hertz scale"
+
+    @property
+    def mean_pressure(self) -> float:
+        """Load over contact area (Pa); NaN without contact."""
+        return self.load / self.contact_area if self.contact_area > 0 else math.nan
+
+    def radial_coordinates(self, centre: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+        """Distance of every cell centre from ``centre`` (m), shape (ny, nx)."""
+        return np.hypot(self.x[None, :] - centre[0], self.y[:, None] - centre[1])
+
+    def summary(self) -> dict[str, Any]:
+        """The scalar results as a plain dict (SI values, no arrays)."""
+        out: dict[str, Any] = {
+            "load": self.load,
+            "approach": self.approach,
+            "pmax": self.pmax,
+            "mean_pressure": self.mean_pressure,
+            "contact_area": self.contact_area,
+            "area_fraction": self.area_fraction,
+            "contact_radius": self.contact_radius,
+            "radius_95": self.radius_95,
+            "centroid": self.centroid,
+            "n_clusters": self.n_clusters,
+            "plastic_area": self.plastic_area,
+            "regime": self.regime,
+            "hardness": self.hardness,
+            "e_star": self.e_star,
+            "periodic": self.periodic,
+            "grid": self.shape,
+            "dx": self.dx,
+            "dy": self.dy,
+            "iterations": self.iterations,
+            "residual": self.residual,
+            "converged": self.converged,
+            "touches_edge": self.touches_edge,
+            "notes": list(self.notes),
+        }
+        return out
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """The fields and coordinates, for ``np.savez``."""
+        return {
+            "pressure": self.pressure,
+            "gap": self.gap,
+            "displacement": self.displacement,
+            "plastic_displacement": self.plastic_displacement,
+            "x": self.x,
+            "y": self.y,
+        }
+
+
+def count_clusters(contact: np.ndarray, periodic: bool = False) -> int:
+    """Number of 4-connected clusters of True cells (merged across edges when periodic)."""
+    from skimage.measure import label
+
+    if not contact.any():
+        return 0
+    labels, n = label(contact, connectivity=1, return_num=True)
+    if not periodic or n <= 1:
+        return int(n)
+    parent = list(range(n + 1))
+
+    def find(a: int) -> int:
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    for a_edge, b_edge in ((labels[0, :], labels[-1, :]), (labels[:, 0], labels[:, -1])):
+        both = (a_edge > 0) & (b_edge > 0)
+        for a, b in zip(a_edge[both], b_edge[both]):
+            ra, rb = find(int(a)), find(int(b))
+            if ra != rb:
+                parent[ra] = rb
+    return len({find(k) for k in range(1, n + 1)})
+
+
+def load_radius(pressure: np.ndarray, x: np.ndarray, y: np.ndarray, centre: tuple[float, float],
+                fraction: float = 0.95) -> float:
+    """Radius about ``centre`` of the smallest disc of cell centres holding ``fraction``
+    of the load (linear interpolation between the cells' distances)."""
+    mask = pressure > 0
+    if not mask.any():
+        return 0.0
+    yy, xx = np.nonzero(mask)
+    r = np.hypot(x[xx] - centre[0], y[yy] - centre[1])
+    w = pressure[mask]
+    order = np.argsort(r, kind="stable")
+    cum = np.cumsum(w[order])
+    target = fraction * cum[-1]
+    k = int(np.searchsorted(cum, target))
+    if k == 0:
+        return float(r[order[0]])
+    r0, r1 = r[order[k - 1]], r[order[k]]
+    c0, c1 = cum[k - 1], cum[k]
+    return float(r0 + (r1 - r0) * (target - c0) / (c1 - c0)) if c1 > c0 else float(r1)
+
+
+def edge_pressure(pressure: np.ndarray, width: int = 1) -> bool:
+    """True if any cell within ``width`` cells of the domain boundary carries pressure."""
+    w = max(1, int(width))
+    return bool(
+        (pressure[:w] > 0).any()
+        or (pressure[-w:] > 0).any()
+        or (pressure[:, :w] > 0).any()
+        or (pressure[:, -w:] > 0).any()
+    )
+
+
+def build_result(
+    *,
+    pressure: np.ndarray,
+    gap: np.ndarray,
+    displacement: np.ndarray,
+    plastic_displacement: np.ndarray,
+    x: np.ndarray,
+    y: np.ndarray,
+    dx: float,
+    dy: float,
+    e_star: float,
+    hardness: float | None,
+    periodic: bool,
+    approach: float,
+    iterations: int,
+    residual: float,
+    converged: bool,
+    notes: tuple[str, ...] = (),
+    hertz: Any = None,
+    extra: dict[str, Any] | None = None,
+) -> ContactResult:
+    """Assemble a :class:`ContactResult`, computing every derived quantity from the fields."""
+    da = dx * dy
+    contact = pressure > 0
+    load = float(pressure.sum() * da)
+    area = float(np.count_nonzero(contact) * da)
+    if load > 0:
+        cx = float((pressure.sum(axis=0) * x).sum() * da / load)
+        cy = float((pressure.sum(axis=1) * y).sum() * da / load)
+    else:
+        cx = cy = math.nan
+    plastic_area = 0.0
+    if hardness is not None:
+        plastic_area = float(np.count_nonzero(pressure >= hardness) * da)
+    return ContactResult(
+        pressure=_frozen(pressure),
+        gap=_frozen(gap),
+        displacement=_frozen(displacement),
+        plastic_displacement=_frozen(plastic_displacement),
+        x=_frozen(np.asarray(x, float)),
+        y=_frozen(np.asarray(y, float)),
+        dx=float(dx),
+        dy=float(dy),
+        e_star=float(e_star),
+        hardness=None if hardness is None else float(hardness),
+        periodic=bool(periodic),
+        load=load,
+        approach=float(approach),
+        pmax=float(pressure.max()) if pressure.size else 0.0,
+        contact_area=area,
+        area_fraction=area / (pressure.size * da),
+        contact_radius=math.sqrt(area / math.pi),
+        radius_95=load_radius(pressure, x, y, (cx, cy)) if load > 0 else 0.0,
+        centroid=(cx, cy),
+        n_clusters=count_clusters(contact, periodic),
+        plastic_area=plastic_area,
+        iterations=int(iterations),
+        residual=float(residual),
+        converged=bool(converged),
+        touches_edge=edge_pressure(pressure),
+        notes=tuple(notes),
+        hertz=hertz,
+        extra=dict(extra or {}),
+    )

@@ -1,0 +1,343 @@
+"""A (rough) ball on a (rough) plate: grid set-up, edge detection and enlargement, sweeps.
+
+:class:`SphereContact` prepares the geometry once (levelled roughness, domain, gap) and
+solves it for any number of loads, warm-starting each from the previous pressure field.
+:func:`solve_sphere` is the one-call form.
+
+Edge policy. A free-boundary solver can only put pressure inside its domain. When the
+contact pressure reaches the outermost cells, the domain probably cut the contact short;
+other codes return that truncated answer silently. Here the domain is enlarged (same
+pitch, 1.5 times the side) and the solve repeated, with an
+:class:`~contact.errors.EdgeContactWarning` that says so. When the roughness data do not
+extend far enough, an :class:`~contact.errors.EdgeContactError` is raised instead
+(``on_edge="warn"`` returns the flagged, truncated result with the warning).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import numpy as np
+
+from contact.bem import SolverStats, solve_normal
+from contact.errors import ContactInputError, EdgeContactError, EdgeContactWarning
+from contact.geometry import (
+    Domain,
+    auto_domain,
+    centred_coordinates,
+    fast_even,
+    fill_nan,
+    max_centred_cells,
+    remove_plane,
+    sample_roughness,
+    sphere_gap,
+)
+from contact.hertz import hertz_sphere
+from contact.result import ContactResult
+
+_ON_EDGE = ("enlarge", "warn", "raise")
+
+
+def _positive(value: Any, what: str, unit: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ContactInputError(f"{what} must be a number in {unit}, got {value!r}") from None
+    if not (math.isfinite(v) and v > 0):
+        raise ContactInputError(f"{what} must be positive and finite (in {unit}), got {value!r}")
+    return v
+
+
+class SphereContact:
+    """A ball of radius R on a plate, with optional composite roughness, ready to solve.
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius R (m).
+    e_star : float
+        Composite modulus E* (Pa).
+    load : float
+        The (largest) load the domain is sized for (N).
+    roughness : ndarray, optional
+        Composite roughness z (m), shape (ny, nx), NaN where not measured: the sum of the
+        two surfaces' heights measured outward from their own bodies (it closes the gap,
+        h = r^2/(2R) - z). Non-measured points are filled with the nearest measured value.
+    roughness_dx, roughness_dy : float, optional
+        Pitch of the roughness data (m); ``roughness_dy`` defaults to ``roughness_dx``.
+    centre : (float, float), optional
+        Scan coordinates (X, Y) of the ball's apex; default the centre of the data.
+    level : bool
+        Remove the least-squares plane of the whole roughness map first. A tilt between
+        ball and plate is a rigid-body rotation: it only moves the contact sideways, and a
+        height offset only shifts the approach. Levelling makes the result independent of
+        both (the removed plane is kept in ``extra["removed_plane"]``).
+    hardness : float, optional
+        Pressure cap (Pa) for an elastic-perfectly-plastic contact.
+    periodic : bool
+        Periodic domain (the ball then has periodic images; meant for comparisons).
+    grid, size : optional
+        Cells per side and side length (m) overriding the automatic choice
+        (:func:`contact.geometry.auto_domain`).
+    max_grid : int
+        Largest automatic grid (cells per side).
+    exact_sphere : bool
+        Use R - sqrt(R^2 - r^2) instead of the Hertz paraboloid.
+    """
+
+    def __init__(
+        self,
+        radius: float,
+        e_star: float,
+        load: float,
+        *,
+        roughness: np.ndarray | None = None,
+        roughness_dx: float | None = None,
+        roughness_dy: float | None = None,
+        centre: tuple[float, float] | None = None,
+        level: bool = True,
+        hardness: float | None = None,
+        periodic: bool = False,
+        grid: int | None = None,
+        size: float | None = None,
+        max_grid: int = 1024,
+        exact_sphere: bool = False,
+    ):
+        self.radius = _positive(radius, "the ball radius", "m")
+        self.e_star = _positive(e_star, "E*", "Pa")
+        self.design_load = _positive(load, "the load", "N")
+        self.hardness = None if hardness is None else _positive(hardness, "the hardness", "Pa")
+        self.periodic = bool(periodic)
+        self.exact_sphere = bool(exact_sphere)
+        self.notes: list[str] = []
+        self.extra: dict[str, Any] = {}
+        self._z = None
+        rms = 0.0
+        if roughness is not None:
+            z = np.array(roughness, dtype=float)
+            if z.ndim != 2 or min(z.shape) < 2:
+                raise ContactInputError(f"the roughness must be a 2D map, got shape {z.shape}")
+            if not np.isfinite(z).any():
+                raise ContactInputError("the roughness map is NaN everywhere: nothing measured")
+            self.zdx = _positive(roughness_dx, "the roughness pitch dx", "m")
+            self.zdy = self.zdx if roughness_dy is None else _positive(
+                roughness_dy, "the roughness pitch dy", "m")
+            if level:
+                z, plane = remove_plane(z, self.zdx, self.zdy)
+                self.extra["removed_plane"] = {"offset": plane[0], "slope_x": plane[1],
+                                               "slope_y": plane[2]}
+            z, filled = fill_nan(z)
+            if filled > 0:
+                self.notes.append(f"{100 * filled:.2f} % of the roughness map was not "
+                                  "measured and was filled with the nearest measured value")
+            self._z = z
+            rms = float(np.sqrt(np.mean((z - z.mean()) ** 2)))
+            ny_r, nx_r = z.shape
+            self.centre = centre if centre is not None else (
+                0.5 * (nx_r - 1) * self.zdx, 0.5 * (ny_r - 1) * self.zdy)
+        self.roughness_rms = rms
+        dom = auto_domain(self.radius, self.design_load, self.e_star, roughness_rms=rms,
+                          roughness_dx=self.zdx if self._z is not None else None,
+                          grid=grid, size=size, max_grid=max_grid)
+        if self._z is not None:
+            fit = max_centred_cells(self._z.shape, self.zdx, self.zdy, self.centre, dom.dx)
+            if fit < 8:
+                raise ContactInputError(
+                    "the roughness data are too small for even an 8 x 8 contact grid around "
+                    "the apex; use a larger scan or a finer grid"
+                )
+            if dom.n > fit:
+                self.notes.append(
+                    f"the domain was limited to the roughness data: {fit} instead of {dom.n} "
+                    "cells per side"
+                )
+                dom = Domain(fit, dom.dx, dom.reason + "; limited by the scan size")
+        self._set_domain(dom)
+
+    # -- grid -------------------------------------------------------------------------
+    def _set_domain(self, dom: Domain) -> None:
+        self.domain = dom
+        n, dx = dom.n, dom.dx
+        h = sphere_gap(n, dx, self.radius, exact=self.exact_sphere)
+        if self._z is not None:
+            h = h - sample_roughness(self._z, self.zdx, self.zdy, self.centre, n, dx)
+        # Approach counted from the first touch: offsets of the data drop out.
+        self.gap0 = h - h.min()
+
+    @property
+    def x(self) -> np.ndarray:
+        """Cell-centre x coordinates relative to the apex (m)."""
+        return centred_coordinates(self.domain.n, self.domain.dx)
+
+    def _can_enlarge(self) -> int:
+        n_new = fast_even(math.ceil(1.5 * self.domain.n))
+        if self._z is None:
+            return n_new
+        fit = max_centred_cells(self._z.shape, self.zdx, self.zdy, self.centre, self.domain.dx)
+        return min(n_new, fit) if fit > self.domain.n else 0
+
+    @staticmethod
+    def _embed(p: np.ndarray, n: int) -> np.ndarray:
+        m = p.shape[0]
+        out = np.zeros((n, n))
+        o = n // 2 - m // 2
+        out[o:o + m, o:o + m] = p
+        return out
+
+    # -- solving ----------------------------------------------------------------------
+    def solve(
+        self,
+        load: float | None = None,
+        *,
+        approach: float | None = None,
+        initial: ContactResult | np.ndarray | None = None,
+        on_edge: str = "enlarge",
+        max_enlarge: int = 4,
+        tol: float = 1e-6,
+        max_iter: int = 2000,
+        precision: str = "mixed",
+        workers: int | None = None,
+        callback: Callable[[int, float], Any] | None = None,
+        strict: bool = True,
+        stats: SolverStats | None = None,
+    ) -> ContactResult:
+        """Solve at one load (or approach), enlarging the domain if the contact reaches it.
+
+        Parameters
+        ----------
+        load : float, optional
+            Normal load W (N); default the load the problem was built for.
+        approach : float, optional
+            Prescribed approach from first touch (m), instead of a load.
+        initial : ContactResult or ndarray, optional
+            Warm start (the solution at a nearby load); resized if the grid changed.
+        on_edge : {"enlarge", "warn", "raise"}
+            What to do when pressure reaches the domain edge (see the module notes).
+        max_enlarge : int
+            Most enlargements before giving up with :class:`EdgeContactError`.
+        tol, max_iter, precision, workers, callback, strict, stats
+            Passed to :func:`contact.bem.solve_normal`.
+        """
+        if on_edge not in _ON_EDGE:
+            raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
+        if approach is None:
+            load = self.design_load if load is None else _positive(load, "the load", "N")
+        elif load is not None:
+            raise ContactInputError("give a load or an approach, not both")
+        notes = list(self.notes)
+        p0 = None
+        if initial is not None:
+            p0 = np.asarray(initial.pressure if isinstance(initial, ContactResult) else initial)
+        for attempt in range(max_enlarge + 1):
+            n, dx = self.domain.n, self.domain.dx
+            if p0 is not None and p0.shape != (n, n):
+                p0 = self._embed(p0, n) if p0.shape[0] < n else None
+            origin = (-(n // 2) * dx, -(n // 2) * dx)
+            res = solve_normal(
+                self.gap0, dx, e_star=self.e_star, load=load, approach=approach,
+                periodic=self.periodic, hardness=self.hardness, initial=p0, tol=tol,
+                max_iter=max_iter, precision=precision, workers=workers, origin=origin,
+                callback=callback, strict=strict, edge="ignore", stats=stats,
+            )
+            if not res.touches_edge:
+                break
+            side = n * dx
+            if on_edge == "raise":
+                raise EdgeContactError(
+                    f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain; "
+                    "enlarge it (size=...) or let the solver do it (on_edge='enlarge')"
+                )
+            if on_edge == "warn":
+                msg = (f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain: "
+                       "the result is truncated")
+                warnings.warn(msg, EdgeContactWarning, stacklevel=2)
+                notes.append(msg)
+                break
+            n_new = self._can_enlarge()
+            if n_new <= n or attempt == max_enlarge:
+                where = ("the roughness data end there" if self._z is not None and n_new <= n
+                         else f"gave up after {max_enlarge} enlargements")
+                raise EdgeContactError(
+                    f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain and "
+                    f"it cannot be enlarged ({where}); use a larger scan, a smaller load, or "
+                    "accept a truncated result (on_edge='warn', CLI --on-edge warn)"
+                )
+            msg = (f"contact pressure reached the edge of the {side * 1e3:.4g} mm domain; "
+                   f"enlarged to {n_new * dx * 1e3:.4g} mm ({n_new} cells) and solved again")
+            warnings.warn(msg, EdgeContactWarning, stacklevel=2)
+            notes.append(msg)
+            self._set_domain(Domain(n_new, dx, self.domain.reason + "; enlarged"))
+            p0 = self._embed(np.asarray(res.pressure), n_new)
+        W = res.load
+        hz = hertz_sphere(self.radius, W, self.e_star) if W > 0 else None
+        if self.hardness is not None and res.plastic_area > 0 and hz is not None:
+            frac = res.plastic_area / res.contact_area
+            if hz.p0 < self.hardness:
+                notes.append(
+                    f"plastic at the asperity scale ({100 * frac:.3g} % of the contact area at "
+                    f"the hardness) although elastic at the Hertz scale (Hertz p0 = "
+                    f"{hz.p0 / 1e6:.4g} MPa < hardness {self.hardness / 1e6:.4g} MPa)"
+                )
+            else:
+                notes.append(f"plastic at the Hertz scale (Hertz p0 = {hz.p0 / 1e6:.4g} MPa "
+                             f">= hardness {self.hardness / 1e6:.4g} MPa)")
+        extra = {**res.extra, **self.extra, "domain": self.domain.reason,
+                 "roughness_rms": self.roughness_rms}
+        return _with(res, notes=tuple(notes), hertz=hz, extra=extra)
+
+    def sweep(self, loads: Iterable[float], **kwargs: Any) -> list[ContactResult]:
+        """Solve at each load in turn, each warm-started from the previous solution."""
+        out: list[ContactResult] = []
+        prev = None
+        for w in loads:
+            prev = self.solve(w, initial=prev, **kwargs)
+            out.append(prev)
+        return out
+
+
+def _with(res: ContactResult, **changes: Any) -> ContactResult:
+    import dataclasses
+
+    return dataclasses.replace(res, **changes)
+
+
+def solve_sphere(
+    radius: float,
+    load: float,
+    e_star: float,
+    *,
+    roughness: np.ndarray | None = None,
+    roughness_dx: float | None = None,
+    roughness_dy: float | None = None,
+    centre: tuple[float, float] | None = None,
+    level: bool = True,
+    hardness: float | None = None,
+    periodic: bool = False,
+    grid: int | None = None,
+    size: float | None = None,
+    max_grid: int = 1024,
+    exact_sphere: bool = False,
+    **solve_kwargs: Any,
+) -> ContactResult:
+    """Normal contact of a (rough) ball on a (rough) plate in one call.
+
+    See :class:`SphereContact` for the geometry parameters and
+    :meth:`SphereContact.solve` for the solver ones (``on_edge``, ``tol``, ``callback``...).
+
+    Examples
+    --------
+    >>> from contact import solve_sphere, composite_modulus, material
+    >>> E = composite_modulus(material("steel"), material("aluminium"))
+    >>> res = solve_sphere(0.02, 10.0, E)
+    >>> abs(res.pmax / res.hertz.p0 - 1) < 1e-4
+    True
+    """
+    problem = SphereContact(
+        radius, e_star, load, roughness=roughness, roughness_dx=roughness_dx,
+        roughness_dy=roughness_dy, centre=centre, level=level, hardness=hardness,
+        periodic=periodic, grid=grid, size=size, max_grid=max_grid, exact_sphere=exact_sphere,
+    )
+    return problem.solve(load, **solve_kwargs)

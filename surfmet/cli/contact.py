@@ -1,0 +1,249 @@
+"""``surfmet contact``: normal contact of a (rough) ball on a (rough) plate by FFT-BEM."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length, pressure
+
+EPILOG = """examples:
+  surfmet contact --radius 20mm --load 10N --materials steel,aluminium
+  surfmet contact --plate plate.nms --ball ball.nms --radius 20mm --load 10N \\
+      --materials steel,aluminium --json
+  surfmet contact --plate plate.x3p --radius 20mm --load 10N --materials steel,aluminium \\
+      --plastic --out result.npz
+  surfmet contact --radius 20mm --load 10N --materials steel:E=200GPa:nu=0.29,al:H=1GPa
+
+Materials: steel, aluminium, glass, copper, brass, titanium, fused_silica,
+tungsten_carbide, silicon_nitride, alumina, pmma, mild_steel (override any value with
+NAME:E=...:nu=...:H=...). Without a scan the smooth (Hertz) case is solved.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "contact",
+        help="normal contact of a rough ball on a rough plate (FFT boundary elements)",
+        description="Solve the frictionless normal contact of a ball on a plate with the "
+        "FFT boundary-element method, using the scans' roughness when given, and compare "
+        "with Hertz.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
+    p.add_argument("--ball", metavar="FILE", help="scan of the ball (its sphere is removed)")
+    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
+                   help="ball radius, e.g. 20mm")
+    p.add_argument("--load", type=force, required=True, metavar="F", help="normal load, e.g. 10N")
+    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
+                   help="ball and plate materials, e.g. steel,aluminium")
+    plast = p.add_mutually_exclusive_group()
+    plast.add_argument("--hardness", type=pressure, metavar="P",
+                       help="cap the pressure at this hardness (elastic-perfectly-plastic)")
+    plast.add_argument("--plastic", action="store_true",
+                       help="cap the pressure at the softer material's table hardness")
+    p.add_argument("--grid", type=int, metavar="N", help="cells per side (default: automatic)")
+    p.add_argument("--size", type=positive_length, metavar="L",
+                   help="domain side (default: automatic from Hertz and the roughness)")
+    p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
+    p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
+                   help="contact reaching the domain edge: enlarge the domain (default), "
+                   "warn and return the truncated result, or fail")
+    p.add_argument("--tol", type=float, default=1e-6, help="solver tolerance (default 1e-6)")
+    p.add_argument("--max-iter", type=int, default=2000, help="iteration limit (default 2000)")
+    p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def parse_material(text: str) -> Any:
+    """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact.materials.Material`."""
+    from contact.materials import material
+    from surfmet.errors import SurfmetInputError
+    from surfmet.units import parse_pressure
+
+    name, *opts = [s.strip() for s in text.split(":")]
+    kw: dict[str, float] = {}
+    for opt in opts:
+        key, sep, value = opt.partition("=")
+        key = key.strip().lower()
+        if not sep:
+            raise SurfmetInputError(f"cannot read material option {opt!r}: write KEY=VALUE")
+        if key == "e":
+            kw["E"] = parse_pressure(value)
+        elif key in ("nu", "poisson"):
+            try:
+                kw["nu"] = float(value)
+            except ValueError:
+                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
+        elif key in ("h", "hardness"):
+            kw["hardness"] = parse_pressure(value)
+        else:
+            raise SurfmetInputError(f"unknown material option {key!r}: use E, nu or H")
+    return material(name, **kw)
+
+
+def _materials(text: str) -> tuple[Any, Any]:
+    from surfmet.errors import SurfmetInputError
+
+    parts = [s for s in text.split(",") if s.strip()]
+    if len(parts) != 2:
+        raise SurfmetInputError(f"--materials needs two names, BALL,PLATE; got {text!r}")
+    return parse_material(parts[0]), parse_material(parts[1])
+
+
+def _q(value: Any, unit: str) -> dict[str, Any]:
+    from surfmet.units import quantity
+
+    return quantity(value, unit)
+
+
+def record(res: Any, ball: Any, plate: Any, pair: Any, args: argparse.Namespace) -> dict:
+    """The JSON record of a contact result (every dimensional value as value/unit)."""
+    hz = res.hertz
+    rec: dict[str, Any] = {
+        "load": _q(res.load, "N"),
+        "pmax": _q(res.pmax, "Pa"),
+        "mean_pressure": _q(res.mean_pressure, "Pa"),
+        "contact_radius": _q(res.contact_radius, "m"),
+        "radius_95": _q(res.radius_95, "m"),
+        "approach": _q(res.approach, "m"),
+        "contact_area": _q(res.contact_area, "m^2"),
+        "area_fraction": _q(res.area_fraction, ""),
+        "centroid": _q(list(res.centroid), "m"),
+        "n_clusters": res.n_clusters,
+        "plastic_area": _q(res.plastic_area, "m^2"),
+        "regime": res.regime,
+        "iterations": res.iterations,
+        "residual": res.residual,
+        "converged": res.converged,
+        "touches_edge": res.touches_edge,
+        "hertz": {
+            "a": _q(hz.a if hz else None, "m"),
+            "delta": _q(hz.delta if hz else None, "m"),
+            "p0": _q(hz.p0 if hz else None, "Pa"),
+        },
+        "grid": {"nx": res.shape[1], "ny": res.shape[0], "dx": _q(res.dx, "m"),
+                 "size": _q(res.shape[1] * res.dx, "m"), "periodic": res.periodic},
+        "materials": {
+            "ball": {"name": ball.name, "E": _q(ball.E, "Pa"), "nu": ball.nu},
+            "plate": {"name": plate.name, "E": _q(plate.E, "Pa"), "nu": plate.nu},
+            "e_star": _q(res.e_star, "Pa"),
+        },
+        "hardness": _q(res.hardness, "Pa"),
+        "radius": _q(args.radius, "m"),
+        "scans": {"plate": args.plate, "ball": args.ball},
+        "notes": list(res.notes),
+    }
+    if pair is not None:
+        rec["roughness"] = {
+            "composite_rms": _q(pair.rms, "m"),
+            "plate_rms": _q(pair.plate_rms, "m"),
+            "ball_rms": _q(pair.ball_rms, "m"),
+            "ball_fit_radius": _q(pair.ball_radius, "m"),
+            "filled_fraction": _q(pair.filled_fraction, ""),
+            "notes": list(pair.notes),
+        }
+    return rec
+
+
+def run(args: argparse.Namespace) -> int:
+    import json
+    import warnings
+
+    import numpy as np
+
+    import surfmet
+    from contact.errors import EdgeContactWarning
+    from contact.materials import composite_modulus, contact_hardness
+    from contact.sphere import solve_sphere
+    from surfmet.errors import SurfmetInputError
+    from surfmet.pairing import prepare_pair
+    from surfmet.units import format_length, jsonable
+
+    ball_m, plate_m = _materials(args.materials)
+    e_star = composite_modulus(ball_m, plate_m)
+    hardness = args.hardness
+    if args.plastic:
+        hardness = contact_hardness(ball_m, plate_m)
+        if hardness is None:
+            raise SurfmetInputError("--plastic: neither material has a hardness; give --hardness")
+    if args.grid is not None and args.grid < 8:
+        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    if not (args.tol > 0):
+        raise SurfmetInputError("--tol must be positive")
+
+    pair = None
+    if args.plate or args.ball:
+        plate = surfmet.read(args.plate) if args.plate else None
+        ball = surfmet.read(args.ball) if args.ball else None
+        pair = prepare_pair(plate, ball)
+        if not args.json:
+            for note in pair.notes:
+                log(f"note: {note}")
+
+    bar = None
+    big = (args.grid or 0) >= 512 or pair is not None
+
+    def callback(it: int, residual: float) -> None:
+        nonlocal bar
+        if bar is None:
+            from tqdm.auto import tqdm
+
+            bar = tqdm(desc="contact", unit="it", file=sys.stderr, leave=False,
+                       disable=None if big else True, dynamic_ncols=True)
+        bar.update(1)
+        bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", EdgeContactWarning)
+        try:
+            res = solve_sphere(
+                args.radius, args.load, e_star,
+                roughness=None if pair is None else pair.roughness,
+                roughness_dx=None if pair is None else pair.dx,
+                roughness_dy=None if pair is None else pair.dy,
+                hardness=hardness, periodic=args.periodic, grid=args.grid, size=args.size,
+                tol=args.tol, max_iter=args.max_iter, callback=callback,
+                on_edge=args.on_edge,
+            )
+        finally:
+            if bar is not None:
+                bar.close()
+    for w in caught:
+        if issubclass(w.category, EdgeContactWarning):
+            log(f"warning: {w.message}")
+
+    rec = record(res, ball_m, plate_m, pair, args)
+    if args.out:
+        np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
+                            summary=json.dumps(jsonable(rec)))
+    if args.json:
+        emit_json(rec)
+        return 0
+    hz = res.hertz
+    print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
+    print(f"grid           {res.shape[1]} x {res.shape[0]}, pitch {format_length(res.dx)}, "
+          f"side {format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
+    print(f"load           {res.load:.6g} N")
+    print(f"max pressure   {res.pmax / 1e6:.6g} MPa   (Hertz p0 {hz.p0 / 1e6:.6g} MPa)")
+    print(f"contact radius {format_length(res.contact_radius)} = sqrt(A/pi)   "
+          f"(Hertz a {format_length(hz.a)}; 95 % of the load within "
+          f"{format_length(res.radius_95)})")
+    print(f"approach       {format_length(res.approach)}   (Hertz delta "
+          f"{format_length(hz.delta)})")
+    print(f"area fraction  {res.area_fraction:.4g}   clusters {res.n_clusters}")
+    if res.hardness is not None:
+        print(f"plastic area   {res.plastic_area * 1e12:.6g} um^2   ({res.regime}; hardness "
+              f"{res.hardness / 1e6:.5g} MPa)")
+    print(f"solver         {res.iterations} iterations, residual {res.residual:.2e}, "
+          f"{'converged' if res.converged else 'NOT converged'}"
+          f"{', touches the edge' if res.touches_edge else ''}")
+    for note in res.notes:
+        print(f"note           {note}")
+    if args.out:
+        print(f"fields saved   {args.out}")
+    return 0

@@ -1,0 +1,205 @@
+"""Prepare a plate scan and a ball scan for the contact engine.
+
+:func:`prepare_pair` turns the two scans into one composite roughness map on one grid:
+
+1. the plate is levelled (least-squares plane removed: a tilt of the specimen under the
+   profilometer is not roughness);
+2. the ball's best-fit sphere is removed (:func:`surfmet.form.remove_form` with
+   ``"sphere"``); what remains is its roughness and form error, positive outward;
+3. the ball residual is mirrored (x -> -x): the ball was scanned from above and is turned
+   over onto the plate, which reverses one in-plane axis;
+4. both are resampled (bilinear) onto one square grid of the finer pitch, over the
+   central region the two scans share; non-measured points are filled with the nearest
+   measured value (the fraction is reported);
+5. the composite roughness is the sum of the two, each measured outward from its own body,
+   so that it closes the gap: h = r^2/(2R) - z (the convention of :mod:`contact.sphere`).
+
+The result holds plain arrays and SI floats, ready for :func:`contact.solve_sphere`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+
+
+@dataclass(frozen=True, eq=False)
+class PairedRoughness:
+    """Composite roughness of a ball-plate pair on one grid.
+
+    Attributes
+    ----------
+    roughness : ndarray (ny, nx)
+        Composite roughness z (m), no NaN: plate (levelled) + ball (sphere removed).
+    dx, dy : float
+        Grid pitch (m).
+    plate_rms, ball_rms : float or None
+        Rms of each surface's residual on the common grid (m); None if not given.
+    ball_radius : float or None
+        Radius of the best-fit sphere of the ball scan (m).
+    filled_fraction : float
+        Fraction of the common grid that was not measured in at least one scan and was
+        filled.
+    notes : tuple of str
+        What was done, for the user.
+    """
+
+    roughness: np.ndarray
+    dx: float
+    dy: float
+    plate_rms: float | None
+    ball_rms: float | None
+    ball_radius: float | None
+    filled_fraction: float
+    notes: tuple[str, ...] = ()
+    fits: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def rms(self) -> float:
+        """Rms of the composite roughness (m)."""
+        z = self.roughness
+        return float(np.sqrt(np.mean((z - z.mean()) ** 2)))
+
+
+def _areal(scan: Any, what: str) -> Topography:
+    if not isinstance(scan, Topography):
+        kind = getattr(scan, "kind", type(scan).__name__)
+        raise SurfmetInputError(f"the {what} must be an areal scan (Topography), got {kind}")
+    if not np.isfinite(scan.heights).any():
+        raise SurfmetInputError(f"the {what} scan has no measured point")
+    return scan
+
+
+def _fill(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    from scipy.ndimage import distance_transform_edt
+
+    bad = ~np.isfinite(z)
+    if not bad.any():
+        return z, bad
+    idx = distance_transform_edt(bad, return_distances=False, return_indices=True)
+    return z[tuple(idx)], bad
+
+
+def _resample(z: np.ndarray, dx: float, dy: float, nx: int, ny: int, pitch: float
+              ) -> tuple[np.ndarray, np.ndarray]:
+    """Bilinear resampling of a centred (ny, nx) window of pitch ``pitch``; also returns
+    where the source was not measured (nearest-neighbour of the NaN mask)."""
+    from scipy.ndimage import map_coordinates, uniform_filter
+
+    filled, bad = _fill(z)
+    sy, sx = z.shape
+    cx, cy = 0.5 * (sx - 1) * dx, 0.5 * (sy - 1) * dy
+    X = cx + (np.arange(nx) - 0.5 * (nx - 1)) * pitch
+    Y = cy + (np.arange(ny) - 0.5 * (ny - 1)) * pitch
+    ci = np.clip(Y / dy, 0, sy - 1)
+    cj = np.clip(X / dx, 0, sx - 1)
+    coords = np.meshgrid(ci, cj, indexing="ij")
+    fy, fx = pitch / dy, pitch / dx
+    if fx > 1.5 or fy > 1.5:  # coarser target grid: average over a target cell first
+        filled = uniform_filter(filled, size=(max(1, round(fy)), max(1, round(fx))),
+                                mode="nearest")
+    out = map_coordinates(filled, coords, order=1, mode="nearest")
+    holes = map_coordinates(bad.astype(float), coords, order=0, mode="nearest") > 0.5
+    return out, holes
+
+
+def prepare_pair(
+    plate: Topography | None = None,
+    ball: Topography | None = None,
+    *,
+    pitch: float | None = None,
+    mirror_ball: bool = True,
+    max_filled: float = 0.5,
+) -> PairedRoughness:
+    """Composite roughness of a plate scan and a ball scan on one grid.
+
+    Parameters
+    ----------
+    plate : Topography, optional
+        Scan of the flat counter-face (levelled here).
+    ball : Topography, optional
+        Scan of the ball's cap (its best-fit sphere is removed here).
+    pitch : float, optional
+        Grid pitch (m); default the finest pitch of the scans given.
+    mirror_ball : bool
+        Mirror the ball residual in x (the ball is turned over onto the plate).
+    max_filled : float
+        Largest acceptable fraction of non-measured points on the common grid.
+
+    Raises
+    ------
+    SurfmetInputError
+        No scan, a profile instead of an areal scan, an all-NaN scan, too few measured
+        points, or a bad pitch.
+    """
+    from surfmet.form import remove_form
+
+    if plate is None and ball is None:
+        raise SurfmetInputError("give a plate scan, a ball scan, or both")
+    notes: list[str] = []
+    fits: dict[str, Any] = {}
+    parts: list[tuple[str, np.ndarray, float, float]] = []
+    ball_radius = None
+    if plate is not None:
+        plate = _areal(plate, "plate")
+        lev, fit = remove_form(plate, "plane")
+        fits["plate"] = fit.as_dict()
+        notes.append("plate levelled (least-squares plane removed)")
+        parts.append(("plate", np.asarray(lev.heights), plate.dx, plate.dy))
+    if ball is not None:
+        ball = _areal(ball, "ball")
+        res, fit = remove_form(ball, "sphere")
+        fits["ball"] = fit.as_dict()
+        ball_radius = float(fit.shape["radius"]["value"])
+        z = np.asarray(res.heights)
+        if mirror_ball:
+            z = z[:, ::-1]
+        notes.append(f"ball: best-fit sphere of radius {ball_radius * 1e3:.5g} mm removed"
+                     + (", residual mirrored in x" if mirror_ball else ""))
+        parts.append(("ball", z, ball.dx, ball.dy))
+
+    if pitch is None:
+        pitch = min(min(dx, dy) for _, _, dx, dy in parts)
+    elif not (math.isfinite(pitch) and pitch > 0):
+        raise SurfmetInputError(f"the pitch must be a positive length, got {pitch!r}")
+    width = min((z.shape[1] - 1) * dx for _, z, dx, _ in parts)
+    height = min((z.shape[0] - 1) * dy for _, z, _, dy in parts)
+    nx = math.floor(width / pitch + 1e-9) + 1
+    ny = math.floor(height / pitch + 1e-9) + 1
+    if nx < 8 or ny < 8:
+        raise SurfmetInputError(
+            f"the common area of the scans holds only {nx} x {ny} points at pitch "
+            f"{pitch:.3g} m; use larger scans or a finer pitch"
+        )
+    total = np.zeros((ny, nx))
+    holes = np.zeros((ny, nx), dtype=bool)
+    rms: dict[str, float] = {}
+    for name, z, dx, dy in parts:
+        zr, bad = _resample(z, dx, dy, nx, ny, pitch)
+        zr = zr - zr[~bad].mean() if (~bad).any() else zr
+        rms[name] = float(np.sqrt(np.mean(zr[~bad] ** 2))) if (~bad).any() else math.nan
+        total += zr
+        holes |= bad
+    filled = float(holes.mean())
+    if filled > max_filled:
+        raise SurfmetInputError(
+            f"{100 * filled:.1f} % of the common grid was not measured in at least one scan "
+            f"(limit {100 * max_filled:.0f} %)"
+        )
+    if filled > 0:
+        notes.append(f"{100 * filled:.2f} % of the common grid not measured; filled with the "
+                     "nearest measured value")
+    if len(parts) == 2:
+        notes.append(f"scans resampled onto a common {nx} x {ny} grid of pitch "
+                     f"{pitch * 1e6:.4g} um")
+    return PairedRoughness(
+        roughness=total, dx=float(pitch), dy=float(pitch), plate_rms=rms.get("plate"),
+        ball_rms=rms.get("ball"), ball_radius=ball_radius, filled_fraction=filled,
+        notes=tuple(notes), fits=fits,
+    )

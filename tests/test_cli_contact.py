@@ -1,0 +1,130 @@
+"""``surfmet contact`` end to end: smooth Hertz case, scans, JSON, saved fields, errors."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from contact_synth import rough_surface
+
+import surfmet
+from contact import composite_modulus, hertz_sphere, material
+from surfmet.cli import main
+
+E_STAR = composite_modulus(material("steel"), material("aluminium"))
+KEYS = ("pmax", "contact_radius", "approach", "area_fraction", "load")
+
+
+def _json(capsys, argv):
+    assert main(argv) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_smooth_case_json(capsys):
+    rec = _json(capsys, ["contact", "--radius", "20mm", "--load", "10N",
+                         "--materials", "steel,aluminium", "--json"])
+    hz = hertz_sphere(0.02, 10.0, E_STAR)
+    for key in KEYS:
+        assert set(rec[key]) == {"value", "unit"}, key
+    assert rec["load"] == {"value": pytest.approx(10.0, rel=1e-10), "unit": "N"}
+    assert rec["pmax"]["unit"] == "Pa"
+    assert rec["pmax"]["value"] == pytest.approx(hz.p0, rel=1e-4)
+    assert rec["contact_radius"]["unit"] == "m"
+    assert abs(rec["contact_radius"]["value"] - hz.a) < rec["grid"]["dx"]["value"]
+    assert rec["approach"]["value"] == pytest.approx(hz.delta, rel=1e-4)
+    assert rec["area_fraction"]["unit"] == ""
+    assert rec["converged"] is True and rec["touches_edge"] is False
+    assert isinstance(rec["iterations"], int) and rec["iterations"] > 0
+    assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a), "unit": "m"}
+    assert rec["hertz"]["delta"]["value"] == pytest.approx(0.936e-6, abs=0.5e-9)
+    assert rec["hertz"]["p0"]["unit"] == "Pa"
+
+
+def test_text_output_and_overrides(capsys):
+    assert main(["contact", "--radius", "20mm", "--load", "10N", "--grid", "64",
+                 "--materials", "steel:E=200GPa:nu=0.29,al:H=1GPa", "--plastic"]) == 0
+    out = capsys.readouterr().out
+    assert "max pressure" in out and "Hertz p0" in out and "plastic area" in out
+    assert "200 GPa" not in out  # E* is shown, not E
+    E = composite_modulus(material("steel", E=200e9, nu=0.29), material("aluminium"))
+    assert f"{E / 1e9:.4g} GPa" in out
+
+
+def test_scans_and_saved_fields(tmp_path, capsys):
+    dx = 5e-6
+    plate_z = rough_surface(192, dx, 0.4e-6, seed=1)
+    yy, xx = np.indices(plate_z.shape)
+    plate = surfmet.Topography(plate_z + 2e-3 * xx * dx + 1e-5, dx, dx)  # hidden tilt
+    n, bdx = 40, 25e-6
+    yy, xx = np.indices((n, n))
+    r2 = ((xx - 19.5) * bdx) ** 2 + ((yy - 19.5) * bdx) ** 2
+    ball = surfmet.Topography(np.sqrt(0.02**2 - r2) + rough_surface(n, bdx, 0.05e-6, 2,
+                                                                   corr=50e-6), bdx, bdx)
+    surfmet.write(plate, tmp_path / "plate.npz")
+    surfmet.write(ball, tmp_path / "ball.npz")
+    out = tmp_path / "res.npz"
+    rec = _json(capsys, ["contact", "--plate", str(tmp_path / "plate.npz"), "--ball",
+                         str(tmp_path / "ball.npz"), "--radius", "20mm", "--load", "10N",
+                         "--materials", "steel,aluminium", "--json", "--out", str(out)])
+    assert rec["converged"] and not rec["touches_edge"]
+    assert rec["load"]["value"] == pytest.approx(10.0, rel=1e-10)
+    assert rec["roughness"]["ball_fit_radius"]["value"] == pytest.approx(0.02, rel=0.02)
+    assert rec["roughness"]["composite_rms"]["value"] == pytest.approx(0.4e-6, rel=0.3)
+    hz = hertz_sphere(0.02, 10.0, E_STAR)
+    assert rec["pmax"]["value"] > hz.p0  # rough: asperity peaks above the Hertz peak
+    with np.load(out) as f:
+        assert f["pressure"].shape == (rec["grid"]["ny"], rec["grid"]["nx"])
+        assert f["pressure"].sum() * float(f["dx"]) * float(f["dy"]) == pytest.approx(10.0)
+        assert set(f.files) >= {"pressure", "gap", "displacement", "plastic_displacement", "x",
+                                "y", "summary"}
+        assert json.loads(str(f["summary"]))["pmax"]["value"] == rec["pmax"]["value"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["--radius", "20mm", "--load=-1N", "--materials", "steel,aluminium"],
+    ["--radius", "20mm", "--load", "10N", "--materials", "steel"],
+    ["--radius", "20mm", "--load", "10N", "--materials", "steel,unobtainium"],
+    ["--radius", "0mm", "--load", "10N", "--materials", "steel,aluminium"],
+    ["--radius", "20mm", "--load", "10N", "--materials", "steel:E=-3GPa,aluminium"],
+    ["--radius", "20mm", "--load", "10N", "--materials", "steel,aluminium", "--grid", "4"],
+])
+def test_user_errors_exit_1_with_one_line(argv, capsys):
+    assert main(["contact", *argv]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("surfmet: error:")
+
+
+def test_all_nan_plate_is_refused(tmp_path, capsys):
+    np.save(tmp_path / "nan.npy", np.full((20, 20), np.nan))
+    assert main(["contact", "--plate", str(tmp_path / "nan.npy"), "--radius", "20mm",
+                 "--load", "10N", "--materials", "steel,aluminium"]) == 1
+    assert "error" in capsys.readouterr().err
+
+
+def test_non_convergence_is_an_error_with_the_residual(capsys):
+    assert main(["contact", "--radius", "20mm", "--load", "10N", "--materials",
+                 "steel,aluminium", "--max-iter", "1", "--tol", "1e-12", "--grid", "32"]) == 1
+    assert "residual" in capsys.readouterr().err
+
+
+@pytest.mark.realdata
+def test_real_plate_scan(realdata, capsys):
+    rec = _json(capsys, ["contact", "--plate", str(realdata("plu-1.plu")), "--radius", "20mm",
+                         "--load", "10N", "--materials", "steel,aluminium", "--json"])
+    assert rec["converged"] and not rec["touches_edge"]
+    assert rec["load"]["value"] == pytest.approx(10.0, rel=1e-10)
+    assert rec["n_clusters"] > 1
+    assert rec["pmax"]["value"] > rec["hertz"]["p0"]["value"]
+
+
+@pytest.mark.realdata
+def test_real_scan_too_small_for_the_contact(realdata, capsys):
+    # nms-1 is 160 um wide, narrower than the 274 um Hertz contact
+    argv = ["contact", "--plate", str(realdata("nms-1.nms")), "--radius", "20mm", "--load",
+            "10N", "--materials", "steel,aluminium"]
+    assert main(argv) == 1
+    assert "edge" in capsys.readouterr().err
+    rec = _json(capsys, [*argv, "--on-edge", "warn", "--json"])
+    assert rec["touches_edge"] is True
+    assert any("truncated" in note for note in rec["notes"])

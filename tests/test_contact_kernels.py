@@ -1,0 +1,165 @@
+"""Every numba kernel of contact.kernels against its plain-numpy twin, on small inputs."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from contact import kernels as kn
+from contact.influence import free_kernel_quadrant, periodic_kernel_real
+
+
+def _state(seed: int, ny: int = 7, nx: int = 9, hmax: float = math.inf):
+    rng = np.random.default_rng(seed)
+    n = ny * nx
+    p = rng.uniform(0.0, 2.0, n)
+    p[rng.random(n) < 0.3] = 0.0  # out of contact
+    if math.isfinite(hmax):
+        p[rng.random(n) < 0.2] = hmax  # yielded
+        p = np.minimum(p, hmax)
+    u = rng.normal(size=n)
+    h = rng.normal(size=n)
+    return rng, p, u, h
+
+
+@pytest.mark.parametrize("hmax", [math.inf, 1.5])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_gap_mean_and_residual(seed, hmax):
+    _, p, u, h = _state(seed, hmax=hmax)
+    got = kn.pk_gap_mean(p, u, h, hmax)
+    want = kn.pk_gap_mean_reference(p, u, h, hmax)
+    assert got[1] == want[1] and got[3] == want[3]
+    np.testing.assert_allclose(got[0], want[0], rtol=1e-12)
+    np.testing.assert_allclose(got[2], want[2], rtol=1e-12)
+    gbar = got[0] / got[1]
+    d = np.empty_like(p)
+    G, viol, nviol = kn.pk_residual(p, u, h, gbar, hmax, d)
+    d_ref, G_ref, viol_ref, nviol_ref = kn.pk_residual_reference(p, u, h, gbar, hmax)
+    np.testing.assert_allclose(d, d_ref, rtol=1e-14)
+    np.testing.assert_allclose([G, viol], [G_ref, viol_ref], rtol=1e-12)
+    assert nviol == nviol_ref
+
+
+@pytest.mark.parametrize("hmax", [math.inf, 1.5])
+def test_direction_and_masked_copy(hmax):
+    rng, p, _, _ = _state(3, hmax=hmax)
+    nx = 9
+    d = rng.normal(size=p.size)
+    t = rng.normal(size=p.size)
+    t_ref, lo_ref, hi_ref = kn.pk_direction_reference(d, p, t.copy(), 0.7, hmax, nx)
+    t32 = np.empty(p.size, dtype=np.float32)
+    lo, hi = kn.pk_direction(d, p, t, 0.7, hmax, t32, nx)
+    np.testing.assert_allclose(t, t_ref, rtol=1e-14)
+    np.testing.assert_allclose(t32, t_ref, rtol=1e-6)
+    assert (lo, hi) == (lo_ref, hi_ref)
+    out = np.empty(p.size)
+    lo, hi = kn.masked_copy(d, p, hmax, out, nx)
+    out_ref, lo_ref, hi_ref = kn.masked_copy_reference(d, p, hmax, nx)
+    np.testing.assert_array_equal(out, out_ref)
+    assert (lo, hi) == (lo_ref, hi_ref)
+
+
+def test_direction_empty_set_reports_no_rows():
+    p = np.zeros(12)
+    lo, hi = kn.pk_direction(np.ones(12), p, np.zeros(12), 0.0, math.inf,
+                             np.zeros(12, np.float32), 4)
+    assert hi <= lo
+
+
+@pytest.mark.parametrize("subtract", [True, False])
+@pytest.mark.parametrize("hmax", [math.inf, 1.5])
+def test_step_length_and_center(subtract, hmax):
+    rng, p, _, _ = _state(4, hmax=hmax)
+    r = rng.normal(size=p.size).astype(np.float32)
+    t = rng.normal(size=p.size)
+    d = rng.normal(size=p.size)
+    got = kn.pk_step_length(r, t, d, p, hmax, subtract)
+    want = kn.pk_step_length_reference(r, t, d, p, hmax, subtract)
+    np.testing.assert_allclose(got, want, rtol=1e-10, atol=1e-14)
+    z = np.empty(p.size)
+    rho = kn.center_on_free(r, z, d, p, hmax, subtract)
+    z_ref, rho_ref = kn.center_on_free_reference(r, d, p, hmax, subtract)
+    np.testing.assert_allclose(z, z_ref, rtol=1e-10, atol=1e-14)
+    np.testing.assert_allclose(rho, rho_ref, rtol=1e-10)
+
+
+@pytest.mark.parametrize("hmax", [math.inf, 1.5])
+@pytest.mark.parametrize("seed", [5, 6])
+def test_update_pressure(seed, hmax):
+    rng, p, _, _ = _state(seed, hmax=hmax)
+    t = np.where((p > 0) & (p < hmax), rng.normal(size=p.size), 0.0)
+    d = rng.normal(size=p.size)
+    tau = 0.8
+    new_ref, corr_ref, entered_ref = kn.pk_update_pressure_reference(p, t, d, tau, hmax)
+    cidx = np.empty(p.size, np.int64)
+    cval = np.empty(p.size)
+    q = p.copy()
+    nc, total, entered = kn.pk_update_pressure(q, t, d, tau, hmax, cidx, cval)
+    np.testing.assert_allclose(q, new_ref, rtol=1e-14)
+    np.testing.assert_allclose(total, new_ref.sum(), rtol=1e-12)
+    assert entered == entered_ref
+    dense = np.zeros(p.size)
+    dense[cidx[:nc]] = cval[:nc]
+    np.testing.assert_allclose(dense, corr_ref, rtol=1e-12, atol=1e-15)
+
+
+@pytest.mark.parametrize("hmax", [math.inf, 1.2, 0.9])
+def test_capped_scale(hmax):
+    _rng, p, _, _ = _state(7, hmax=hmax)
+    target = 0.9 * np.minimum(p, hmax).sum() if math.isfinite(hmax) else 1.7 * p.sum()
+    cidx = np.empty(p.size, np.int64)
+    cval = np.empty(p.size)
+    q = p.copy()
+    s, nc = kn.capped_scale(q, target, hmax, cidx, cval, 0)
+    _s_ref, q_ref = kn.capped_scale_reference(p, target, hmax)
+    np.testing.assert_allclose(q, q_ref, rtol=1e-9)
+    np.testing.assert_allclose(q.sum(), target, rtol=1e-12)
+    assert q.max() <= hmax
+    # the recorded corrections are exactly the departure from the plain scaling s * p
+    dense = np.zeros(p.size)
+    dense[cidx[:nc]] = cval[:nc]
+    np.testing.assert_allclose(s * p + dense, q, rtol=1e-12, atol=1e-14)
+
+
+def test_axpy_scale():
+    rng = np.random.default_rng(8)
+    u = rng.normal(size=50)
+    r = rng.normal(size=50).astype(np.float32)
+    want = kn.axpy_scale_reference(u, r, 0.3, 1.1)
+    kn.axpy_scale(u, r, 0.3, 1.1)
+    np.testing.assert_allclose(u, want, rtol=1e-14)
+
+
+@pytest.mark.parametrize("periodic", [False, True])
+def test_sparse_convolve_add(periodic):
+    ny, nx = 6, 10
+    kernel = (periodic_kernel_real(ny, nx, 1.0, 1.0) if periodic
+              else free_kernel_quadrant(ny, nx, 1.0, 1.0))
+    kernel = np.ascontiguousarray(kernel)
+    rng = np.random.default_rng(9)
+    u = rng.normal(size=ny * nx)
+    cidx = np.array([0, 17, 59, 23], dtype=np.int64)
+    cval = rng.normal(size=4)
+    want = kn.sparse_convolve_add_reference(u, cidx, cval, kernel, nx, periodic)
+    kn.sparse_convolve_add(u, cidx, cval, 4, kernel, nx, periodic)
+    np.testing.assert_allclose(u, want, rtol=1e-13)
+
+
+def test_scatter_sets_and_clears():
+    buf = np.zeros((4, 5))
+    cidx = np.array([3, 12, 19], dtype=np.int64)
+    cval = np.array([1.0, 2.0, 3.0])
+    lo, hi = kn.scatter(buf, cidx, cval, 3, True)
+    assert (lo, hi) == (0, 4)
+    assert buf.ravel()[12] == 2.0 and buf.sum() == 6.0
+    kn.scatter(buf, cidx, cval, 3, False)
+    assert not buf.any()
+
+
+@pytest.mark.parametrize(("ny", "nx", "dx", "dy"), [(8, 6, 1.0, 1.0), (7, 9, 1e-6, 2.5e-6)])
+def test_periodic_spectrum(ny, nx, dx, dy):
+    got = kn.periodic_love_spectrum(ny, nx, dx, dy, 3)
+    want = kn.periodic_love_spectrum_reference(ny, nx, dx, dy, 3)
+    np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-20)
