@@ -159,6 +159,13 @@ def _valid_values(z: np.ndarray) -> np.ndarray:
     return v
 
 
+def _dot(a: np.ndarray, b: np.ndarray) -> float:
+    # einsum sums in a fixed order on one thread, unlike BLAS ddot whose blocking follows
+    # the thread count: results must be bitwise identical between a serial run and Dask
+    # workers (which run single-threaded BLAS).
+    return float(np.einsum("i,i->", a, b))
+
+
 def _centred(z: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
     """(heights minus valid mean with NaN kept, valid mask, all-valid flag)."""
     valid = ~np.isnan(z)
@@ -184,8 +191,8 @@ def height_parameters(topo: Topography) -> dict[str, float]:
     sp = float(d.max())
     sv = float(-d.min())
     if sq > 0:
-        ssk = float(np.dot(d2, d)) / d.size / sq**3
-        sku = float(np.dot(d2, d2)) / d.size / sq2**2
+        ssk = _dot(d2, d) / d.size / sq**3
+        sku = _dot(d2, d2) / d.size / sq2**2
     else:
         ssk = sku = float("nan")
     return {"Sa": sa, "Sq": sq, "Sp": sp, "Sv": sv, "Sz": sp + sv, "Ssk": ssk, "Sku": sku}
@@ -205,15 +212,15 @@ def gradient_parameters(topo: Topography) -> dict[str, float]:
     gy = np.diff(z, axis=0)  # Δy z, shape (ny-1, nx)
     full = not np.isnan(z).any()
     if full:
-        mx = float(np.dot(gx.ravel(), gx.ravel())) / gx.size
-        my = float(np.dot(gy.ravel(), gy.ravel())) / gy.size
+        mx = _dot(gx.ravel(), gx.ravel()) / gx.size
+        my = _dot(gy.ravel(), gy.ravel()) / gy.size
     else:
         vx = gx[~np.isnan(gx)]
         vy = gy[~np.isnan(gy)]
         if vx.size == 0 or vy.size == 0:
             raise SurfmetInputError("no pair of adjacent measured points: Sdq is undefined")
-        mx = float(np.dot(vx, vx)) / vx.size
-        my = float(np.dot(vy, vy)) / vy.size
+        mx = _dot(vx, vx) / vx.size
+        my = _dot(vy, vy) / vy.size
     sdq = math.sqrt(mx / dx**2 + my / dy**2)
 
     # Cell areas. |e_x × e_y|² = (dy Δx z)² + (dx Δy z)² + (dx dy)² for a corner triangle.

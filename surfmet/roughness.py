@@ -51,6 +51,12 @@ class RoughnessResult:
         Sq/Sa (Rq/Ra) diagnosis of the evaluated surface.
     file : str or None
         Source path when known.
+    surface : Topography or None
+        The evaluated areal surface (after window, spikes, F-operator and filters) that
+        the S-parameters describe, for figures; not part of the JSON.
+    analysis : profiles.ProfileAnalysis or None
+        The profile engine's analysis behind R-parameters (primary, waviness, roughness),
+        for figures; not part of the JSON.
     """
 
     kind: str
@@ -59,6 +65,8 @@ class RoughnessResult:
     spike_report: Any = None
     spike_diagnosis: Any = None
     file: str | None = None
+    surface: Any = field(default=None, repr=False)
+    analysis: Any = field(default=None, repr=False)
 
     def value(self, symbol: str) -> float:
         """The value of one parameter (SI)."""
@@ -242,6 +250,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         kind="areal",
         parameters={k: (v, PARAMETER_UNITS[k]) for k, v in values.items()},
         settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
+        surface=surface,
     )
 
 
@@ -297,6 +306,7 @@ def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
         kind="profile",
         parameters={k: (v, units.get(k, "")) for k, v in values.items()},
         settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
+        analysis=ap,
     )
 
 
@@ -320,6 +330,32 @@ def roughness_file(path: str | os.PathLike, **options: Any) -> dict[str, Any]:
     return {"file": name, "status": "ok", **res.to_json()}
 
 
-def roughness_many(paths: Iterable[str | os.PathLike], **options: Any) -> list[dict[str, Any]]:
-    """:func:`roughness_file` on each path in turn; one entry per file, failures included."""
-    return [roughness_file(p, **options) for p in paths]
+def roughness_many(
+    paths: Iterable[str | os.PathLike],
+    *,
+    workers: int | None = 1,
+    scheduler: str | None = None,
+    progress: bool | None = False,
+    **options: Any,
+) -> list[dict[str, Any]]:
+    """:func:`roughness_file` on each path; one entry per file, in order, failures included.
+
+    Parameters
+    ----------
+    paths : iterable of path-like
+    workers : int or None
+        Local processes (1 = serial, the default here; None = one per core).
+    scheduler : str, optional
+        Address of a Dask distributed scheduler; the files are processed there instead.
+    progress : bool or None
+        Show a progress bar on stderr (None: only on a terminal).
+    **options
+        Passed to :func:`roughness` (level, ls, lc, window, profile, spikes...).
+    """
+    from functools import partial
+
+    from surfmet.batch import batch_map
+
+    return batch_map(partial(roughness_file, **options), [str(p) for p in paths],
+                     workers=workers, scheduler=scheduler, progress=progress,
+                     desc="roughness")

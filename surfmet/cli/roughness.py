@@ -16,10 +16,16 @@ EPILOG = """examples:
   surfmet roughness ball.nms --level sphere
   surfmet roughness plate.x3p --profile row:100 --lc 0.25mm
   surfmet roughness scans/*.x3p --csv table.csv
+  surfmet roughness scans/*.x3p --workers 8 --json > table.json
+  surfmet roughness scans/*.x3p --scheduler tcp://10.0.0.5:8786 --csv table.csv
 
 Without --ls/--lc an areal scan is evaluated after the form removal only (the S-F
 surface); a profile gets an automatic ISO 4288 cut-off. --spikes removes spikes (reported)
 before levelling; every result carries an Sq/Sa spike diagnosis.
+
+Several files run in parallel over local processes (--workers, default: one per CPU), or
+on a Dask distributed cluster (--scheduler; the workers must see the same paths). A file
+that fails gets an error row and the others go on; the exit status is then 1.
 """
 
 
@@ -45,12 +51,27 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--profile", default=None, metavar="row:K|col:K",
                    help="evaluate one row or column of an areal scan (R-parameters)")
     p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
+    p.add_argument("--workers", type=_positive_int, default=None, metavar="N",
+                   help="local processes for several files (default: one per CPU; 1 = serial)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run several files on a Dask distributed cluster, e.g. "
+                   "tcp://host:8786 (the workers must see the same paths)")
     out = p.add_mutually_exclusive_group()
     add_json_flag(out)
     out.add_argument("--csv", metavar="OUT", default=None,
                      help="write one row per file to OUT ('-' for stdout)")
     p.set_defaults(func=run)
     return p
+
+
+def _positive_int(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {n}")
+    return n
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
@@ -118,7 +139,10 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.roughness import roughness, roughness_many
+    from functools import partial
+
+    from surfmet.batch import batch_map
+    from surfmet.roughness import roughness, roughness_file
 
     opts = _options(args)
     if len(args.files) == 1 and not args.csv:
@@ -130,7 +154,9 @@ def run(args: argparse.Namespace) -> int:
         else:
             _print_table(rec)
         return 0
-    records = roughness_many(args.files, **opts)
+    # roughness_file returns error rows itself; batch_map adds rows for dead workers
+    records = batch_map(partial(roughness_file, **opts), args.files, workers=args.workers,
+                        scheduler=args.scheduler, desc="roughness")
     failed = [r for r in records if r["status"] != "ok"]
     for r in failed:
         msg = r["error"]

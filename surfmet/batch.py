@@ -1,0 +1,239 @@
+"""Run one function over many items: serially, over local processes, or on a Dask cluster.
+
+``batch_map(func, items)`` returns ``[func(item) for item in items]`` in the input order,
+with three guarantees whatever the engine:
+
+* **the same results**: every item is computed by the same top-level function with the
+  same arguments, in a fresh call; nothing is shared between items, so the numbers are
+  bitwise those of the serial run, as long as the function's arithmetic does not depend
+  on the number of threads (a BLAS ``dot`` does: Dask workers run single-threaded BLAS,
+  a serial run multi-threaded BLAS, and such sums then differ in the last bits);
+* **a failure stays in its row**: an exception, or a worker process that dies (a crash,
+  the kernel's out-of-memory killer), turns into ``on_error(item, message)`` in that
+  item's place and the batch goes on;
+* **a progress bar** on stderr (tqdm; hidden when stderr is not a terminal).
+
+Engines:
+
+``workers=1``
+    in this process.
+``workers=N`` (default: the CPUs this process may use)
+    a :class:`concurrent.futures.ProcessPoolExecutor` of N processes started by the
+    ``forkserver`` method where the platform has it (``spawn`` elsewhere): never ``fork``,
+    which can deadlock a child when the parent holds threads (numba, BLAS, tqdm's monitor).
+``scheduler="tcp://host:port"`` (or a :class:`distributed.Client`)
+    the tasks go to a Dask distributed cluster (Rocklin 2015, *Dask: parallel computation
+    with blocked algorithms and task scheduling*, Proc. SciPy). The workers must have
+    surfmet installed and see the same file paths (a shared file system). A worker that
+    dies is retried on another by the scheduler; an item that kills workers repeatedly
+    comes back as ``KilledWorker`` in its row.
+
+``func`` must be picklable for the two parallel engines: a module-level function, or a
+:func:`functools.partial` of one (for example ``partial(roughness_file, level="plane")``).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Iterable
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+
+def default_workers() -> int:
+    """The number of CPUs this process may run on (at least 1)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - macOS, Windows
+        return max(1, os.cpu_count() or 1)
+
+
+def error_row(item: Any, message: str) -> dict[str, Any]:
+    """The default row for a failed item: ``{"file", "status": "error", "error"}``."""
+    return {"file": str(item), "status": "error", "error": message}
+
+
+def _describe(exc: BaseException) -> str:
+    from surfmet.errors import user_error_types
+
+    if isinstance(exc, user_error_types()):
+        return str(exc)
+    return f"internal error: {type(exc).__name__}: {exc}"
+
+
+def _bar(total: int, desc: str, show: bool | None) -> Any:
+    from tqdm.auto import tqdm
+
+    # disable=None hides the bar when stderr is not a terminal (logs, CI, pipes)
+    return tqdm(total=total, desc=desc, file=sys.stderr, leave=False, dynamic_ncols=True,
+                disable=None if show is None else not show)
+
+
+def batch_map(
+    func: Callable[[Any], Any],
+    items: Iterable[Any],
+    *,
+    workers: int | None = None,
+    scheduler: Any = None,
+    on_error: Callable[[Any, str], Any] = error_row,
+    progress: bool | None = None,
+    desc: str = "",
+    connect_timeout: float = 10.0,
+) -> list[Any]:
+    """``[func(item) for item in items]``, in parallel, failures kept in their rows.
+
+    Parameters
+    ----------
+    func : callable
+        Picklable for the parallel engines (see the module docstring).
+    items : iterable
+        Work items (file paths...).
+    workers : int, optional
+        Local processes; default :func:`default_workers`. ``1`` runs in this process.
+        Ignored when ``scheduler`` is given (the cluster decides).
+    scheduler : str or distributed.Client, optional
+        Address of a Dask scheduler (``"tcp://10.0.0.5:8786"``), or a client.
+    on_error : callable
+        ``on_error(item, message)`` gives the row of an item whose call raised or whose
+        worker died. Default :func:`error_row`.
+    progress : bool, optional
+        Force the progress bar on or off; default: shown when stderr is a terminal.
+    desc : str
+        Label of the progress bar.
+    connect_timeout : float
+        Seconds to wait for the Dask scheduler before giving up.
+
+    Returns
+    -------
+    list
+        One result per item, in the order of ``items``.
+
+    Raises
+    ------
+    SurfmetInputError
+        ``workers`` < 1, or a scheduler that cannot be reached.
+    """
+    items = list(items)
+    if workers is not None and int(workers) < 1:
+        raise SurfmetInputError(f"workers must be at least 1, got {workers}")
+    if not items:
+        return []
+    if scheduler is not None:
+        return _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout)
+    n = default_workers() if workers is None else int(workers)
+    n = min(n, len(items))
+    if n == 1:
+        return _serial_map(func, items, on_error, progress, desc)
+    return _process_map(func, items, n, on_error, progress, desc)
+
+
+def _call(func: Callable[[Any], Any], item: Any, on_error: Callable[[Any, str], Any]) -> Any:
+    try:
+        return func(item)
+    except Exception as exc:  # one bad item must not stop the batch
+        return on_error(item, _describe(exc))
+
+
+def _serial_map(func, items, on_error, progress, desc) -> list[Any]:
+    out = []
+    with _bar(len(items), desc, progress) as bar:
+        for item in items:
+            out.append(_call(func, item, on_error))
+            bar.update(1)
+    return out
+
+
+def _mp_context() -> Any:
+    import multiprocessing as mp
+
+    methods = mp.get_all_start_methods()
+    return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
+
+
+def _process_map(func, items, n, on_error, progress, desc) -> list[Any]:
+    import pickle
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures.process import BrokenProcessPool
+
+    try:
+        pickle.dumps(func)
+    except Exception as exc:
+        raise SurfmetInputError(
+            f"the batch function cannot be sent to worker processes ({exc}); use a "
+            "module-level function or a functools.partial of one, or workers=1"
+        ) from None
+    results: list[Any] = [None] * len(items)
+    broken: list[int] = []
+    with _bar(len(items), desc, progress) as bar:
+        pool = ProcessPoolExecutor(max_workers=n, mp_context=_mp_context())
+        try:
+            futures = {pool.submit(func, item): k for k, item in enumerate(items)}
+            for fut in as_completed(futures):
+                k = futures[fut]
+                try:
+                    results[k] = fut.result()
+                except BrokenProcessPool:
+                    broken.append(k)
+                    continue  # re-run below, each alone, to find the culprit
+                except Exception as exc:
+                    results[k] = on_error(items[k], _describe(exc))
+                bar.update(1)
+        except BaseException:
+            # Ctrl-C or a bug here: drop the queued items instead of waiting for them all
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
+        pool.shutdown(wait=True)
+        # A dead worker breaks the whole pool and fails every pending item. Re-run those
+        # one per fresh single-process pool: the innocent ones succeed, the item that
+        # kills its process again gets the error row.
+        for k in sorted(broken):
+            with ProcessPoolExecutor(max_workers=1, mp_context=_mp_context()) as solo:
+                try:
+                    results[k] = solo.submit(func, items[k]).result()
+                except BrokenProcessPool:
+                    results[k] = on_error(items[k], "the worker process died while "
+                                          "processing this item (a crash, or out of memory)")
+                except Exception as exc:
+                    results[k] = on_error(items[k], _describe(exc))
+            bar.update(1)
+    return results
+
+
+def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout
+              ) -> list[Any]:
+    try:
+        from distributed import Client, as_completed
+    except ImportError as exc:  # pragma: no cover - a dependency of surfmet
+        raise SurfmetInputError(f"--scheduler needs dask.distributed: {exc}") from None
+
+    own = not isinstance(scheduler, Client)
+    if own:
+        try:
+            client = Client(scheduler, timeout=f"{connect_timeout}s", set_as_default=False)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise SurfmetInputError(
+                f"cannot reach the Dask scheduler at {scheduler!r}: {exc}"
+            ) from None
+    else:
+        client = scheduler
+    try:
+        # pure=False: identical items are computed (and reported) once each, in place
+        futures = client.map(func, items, pure=False)
+        index = {f.key: k for k, f in enumerate(futures)}
+        results: list[Any] = [None] * len(items)
+        with _bar(len(items), desc, progress) as bar, client.as_current():
+            for fut in as_completed(futures):
+                k = index[fut.key]
+                try:
+                    results[k] = fut.result()
+                except Exception as exc:
+                    results[k] = on_error(items[k], _describe(exc))
+                fut.release()
+                bar.update(1)
+        return results
+    finally:
+        if own:
+            client.close()
+

@@ -1,0 +1,91 @@
+"""``surfmet report FILE... -o report.html``: one self-contained HTML report."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length
+
+EPILOG = """examples:
+  surfmet report plate.x3p -o report.html
+  surfmet report scans/*.nms -o lab.html --level poly:2 --lc 0.25mm --ls 2.5um
+  surfmet report trace.csv -o trace.html                 (a profile: R-parameters)
+  surfmet report plate.nms -o hertz.html --radius 10mm --load 4.7N \\
+      --materials steel,aluminium --ball ball.nms
+  surfmet report scans/*.x3p -o quick.html --no-3d --json
+
+The page holds, per scan: the instrument metadata, the parameter table with units and
+the filters used, the 3D view, height map, Abbott-Firestone curve and PSD (profile plots
+for a profile), and with --radius, --load and --materials the Hertz check. Pictures are
+embedded (data URIs): the single file opens offline. A scan that fails gets its error in
+the page and the exit status is 1.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "report",
+        help="self-contained HTML report: metadata, parameters, pictures, Hertz check",
+        description="Evaluate scans and write one HTML file with everything embedded.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
+    p.add_argument("-o", "--output", required=True, metavar="HTML", help="report to write")
+    p.add_argument("--title", default="surfmet report", help="page title")
+    p.add_argument("--level", default="plane",
+                   help="form removal: none, mean, plane, poly:N, sphere, cylinder")
+    p.add_argument("--ls", type=positive_length, default=None, help="S-filter λs, e.g. 2.5um")
+    p.add_argument("--lc", type=positive_length, default=None, help="L-filter λc, e.g. 0.8mm")
+    p.add_argument("--window", default=None, metavar="X0:X1", help="evaluate x in X0..X1 only")
+    p.add_argument("--profile", default=None, metavar="row:K|col:K",
+                   help="evaluate one row or column of areal scans (R-parameters)")
+    p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
+    p.add_argument("--no-3d", dest="no_3d", action="store_true",
+                   help="leave out the 3D views (faster)")
+    hz = p.add_argument_group("Hertz check (all three to enable)")
+    hz.add_argument("--radius", type=positive_length, metavar="L", help="ball radius, e.g. 10mm")
+    hz.add_argument("--load", type=force, metavar="F", help="normal load, e.g. 4.7N")
+    hz.add_argument("--materials", metavar="BALL,PLATE", help="e.g. steel,aluminium")
+    hz.add_argument("--ball", metavar="FILE", help="scan of the ball (optional)")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    from surfmet.errors import SurfmetInputError
+    from surfmet.report import HertzOptions, hertz_check_available, write_report
+
+    options = {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
+               "profile": args.profile, "spikes": args.spikes}
+    given = [n for n in ("radius", "load", "materials") if getattr(args, n) is not None]
+    hertz = None
+    if given or args.ball:
+        missing = [f"--{n}" for n in ("radius", "load", "materials") if getattr(args, n) is None]
+        if missing:
+            raise SurfmetInputError(f"the Hertz check needs --radius, --load and --materials; "
+                                    f"missing {', '.join(missing)}")
+        if not args.load > 0:
+            raise SurfmetInputError(f"--load must be positive, got {args.load} N")
+        if not hertz_check_available():
+            raise SurfmetInputError(
+                "the Hertz check is not available in this installation (surfmet.hertz_check "
+                "is missing); leave out --radius/--load/--materials")
+        hertz = HertzOptions(radius=args.radius, load=args.load, materials=args.materials,
+                             ball=args.ball)
+    sections = write_report(args.files, args.output, options, title=args.title,
+                            include_3d=not args.no_3d, hertz=hertz)
+    failed = [s for s in sections if s.status != "ok"]
+    for s in failed:
+        msg = s.error or ""
+        log(f"surfmet: error: {msg if msg.startswith(s.file) else s.file + ': ' + msg}")
+    for s in sections:
+        if s.hertz_error:
+            log(f"surfmet: error: {s.file}: Hertz check: {s.hertz_error}")
+    if args.json:
+        emit_json({"output": args.output, "scans": [s.summary() for s in sections]})
+    else:
+        log(f"wrote {args.output} ({len(sections) - len(failed)} of {len(sections)} scans)")
+    return 1 if failed or any(s.hertz_error for s in sections) else 0

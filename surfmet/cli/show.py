@@ -1,0 +1,125 @@
+"""``surfmet show FILE -o view.png``: a picture of a scan (3D, 2D height map, or profile)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, log
+
+EPILOG = """examples:
+  surfmet show plate.x3p -o plate.png
+  surfmet show plate.x3p -o plate_map.png --2d
+  surfmet show plate.x3p -o plate.png --exaggeration 500 --size 1600x1200
+  surfmet show ball.nms -o ball.png --level sphere
+  surfmet show trace.csv -o trace.png            (a profile: primary, waviness, roughness)
+  surfmet show plate.x3p -o plate.pdf --2d --json
+
+The 3D view is rendered off-screen with pyvista (no display needed) and saved as PNG;
+heights are exaggerated by a round factor written in the picture. --2d draws a matplotlib
+height map (colour bar in µm, scale bar), saved in any format matplotlib knows (png, pdf,
+svg). The scan is levelled first (--level, default plane; none keeps it as measured).
+"""
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"size {text!r} must be WIDTHxHEIGHT, e.g. 1200x900"
+                                         ) from None
+    if not (64 <= w <= 8192 and 64 <= h <= 8192):
+        raise argparse.ArgumentTypeError(f"size {text!r}: each side must be 64..8192 pixels")
+    return w, h
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "show",
+        help="render a scan: 3D view (pyvista) or 2D height map / profile plot (matplotlib)",
+        description="Render a scan to an image file: a shaded 3D surface coloured by height, "
+        "a 2D height map with colour bar and scale (--2d), or, for a profile, the primary, "
+        "waviness and roughness profiles.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("file", help="scan file")
+    p.add_argument("-o", "--output", required=True, metavar="IMAGE", help="image to write")
+    p.add_argument("--2d", dest="two_d", action="store_true",
+                   help="matplotlib height map instead of the 3D view")
+    p.add_argument("--level", default="plane",
+                   help="form removal before drawing: none, mean, plane, poly:N, sphere, "
+                   "cylinder (default plane)")
+    p.add_argument("--format", help="force a reader (see 'surfmet formats')")
+    p.add_argument("--exaggeration", type=float, default=None, metavar="X",
+                   help="vertical exaggeration of the 3D view (default: automatic)")
+    p.add_argument("--cmap", default="viridis", help="matplotlib colormap (default viridis)")
+    p.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
+                   help="3D image size in pixels (default 1200x900)")
+    p.add_argument("--max-points", type=int, default=300_000, metavar="N",
+                   help="decimate larger scans to about N points for the 3D view")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    import surfmet
+    from surfmet.errors import SurfmetInputError
+    from surfmet.model import Profile
+
+    out = Path(args.output)
+    if not out.parent.exists():
+        raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
+    scan = surfmet.read(args.file, format=args.format)
+    rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level}
+    if isinstance(scan, Profile):
+        import profiles
+        from surfmet.plots._style import close
+        from surfmet.plots.profile import profile_figure
+        from surfmet.roughness import _profile_level
+
+        if not args.two_d:
+            log("surfmet: a profile has no 3D view; drawing its profiles")
+        ap = profiles.analyze_profile(scan.z, scan.dx, x=scan.x,
+                                      level=_profile_level(args.level), lc="auto")
+        fig = profile_figure(ap, title=Path(args.file).name)
+        _save(fig, out)
+        close(fig)
+        rec.update(view="profile", lc={"value": ap.settings.get("lc"), "unit": "m"})
+    else:
+        from surfmet.form import remove_form
+
+        levelled, _ = remove_form(scan, args.level)
+        if args.two_d:
+            from surfmet.plots._style import close
+            from surfmet.plots.areal import height_map
+
+            fig = height_map(levelled, cmap=args.cmap)
+            _save(fig, out)
+            close(fig)
+            rec["view"] = "2d"
+        else:
+            from surfmet.render import render_3d
+
+            if out.suffix.lower() != ".png":
+                raise SurfmetInputError(f"the 3D view is written as PNG; name the output "
+                                        f"*.png (got {out.name}), or use --2d for pdf/svg")
+            img = render_3d(levelled, out, exaggeration=args.exaggeration, cmap=args.cmap,
+                            window_size=args.size, max_points=args.max_points)
+            rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])])
+    if args.json:
+        emit_json(rec)
+    else:
+        log(f"wrote {out}")
+    return 0
+
+
+def _save(fig: Any, out: Path) -> None:
+    from surfmet.errors import SurfmetInputError
+
+    try:
+        fig.savefig(out, dpi=120)
+    except ValueError as exc:  # matplotlib: unknown extension
+        raise SurfmetInputError(f"cannot write {out.name}: {exc}") from None

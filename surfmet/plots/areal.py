@@ -1,0 +1,267 @@
+"""Areal figures: the height map, the Abbott–Firestone (material ratio) curve, the PSD.
+
+Units everywhere in surfmet's figures: heights in µm, lateral lengths in µm (or mm when
+the extent passes 2 mm, :func:`lateral_unit`), pressures in MPa, wavevectors in rad/µm.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Profile, Topography
+from surfmet.plots._style import MM, UM, finish, new_figure
+
+HEIGHT_LABEL = "height (µm)"
+
+
+def lateral_unit(extent: float) -> tuple[float, str]:
+    """Scale (metres per unit) and name of the unit for lateral axes: µm up to 2 mm, mm
+    beyond, so that tick labels stay short."""
+    return (MM, "mm") if abs(extent) > 2e-3 else (UM, "µm")
+
+
+def nice_length(target: float) -> float:
+    """The 1-2-5 × 10ⁿ length closest below ``target`` (for scale bars)."""
+    if not target > 0:
+        return 0.0
+    e = math.floor(math.log10(target))
+    for m in (5.0, 2.0, 1.0):
+        if m * 10**e <= target:
+            return m * 10**e
+    return 10.0 ** (e - 1) * 5.0  # pragma: no cover - unreachable
+
+
+def add_scale_bar(ax: Any, extent_m: float, scale: float, unit: str, color: str = "white"
+                  ) -> Any:
+    """A lateral scale bar of a round length (about a fifth of ``extent_m``) in the lower
+    right corner of ``ax`` (whose data units are ``scale`` metres)."""
+    from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
+
+    length = nice_length(extent_m / 5.0)
+    if length <= 0:
+        return None
+    # labelled in the axes' own unit, so the bar and the ticks never disagree
+    bar = AnchoredSizeBar(ax.transData, length / scale, f"{length / scale:g} {unit}",
+                          "lower right",
+                          pad=0.4, color=color, frameon=False, size_vertical=0,
+                          label_top=True, sep=3)
+    ax.add_artist(bar)
+    return bar
+
+
+def height_map(
+    topo: Topography,
+    path: str | Path | None = None,
+    *,
+    ax: Any = None,
+    cmap: str = "viridis",
+    title: str | None = None,
+    scale_bar: bool = True,
+) -> Any:
+    """2D height map with a colour bar in µm and a lateral scale bar.
+
+    Row ``j`` (y = j dy) is drawn upwards and pixels keep their aspect (non-square pixels
+    are drawn non-square); non-measured points are light grey.
+
+    Parameters
+    ----------
+    topo : Topography
+    path : str or Path, optional
+        Save the figure there (PNG, PDF, SVG... by extension).
+    ax : matplotlib Axes, optional
+        Draw into this axes instead of a new figure.
+    cmap : str
+    title : str, optional
+    scale_bar : bool
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    if not isinstance(topo, Topography):
+        raise SurfmetInputError(f"height_map needs a Topography, got {type(topo).__name__}")
+    import matplotlib as mpl
+
+    if ax is None:
+        fig, ax = new_figure(size=(6.4, 5.0))
+    else:
+        fig = ax.figure
+    scale, unit = lateral_unit(max(topo.size_x, topo.size_y))
+    z = np.asarray(topo.heights) / UM
+    cm = mpl.colormaps[cmap].with_extremes(bad="#d0d0d0")
+    extent = (-0.5 * topo.dx / scale, (topo.nx - 0.5) * topo.dx / scale,
+              -0.5 * topo.dy / scale, (topo.ny - 0.5) * topo.dy / scale)
+    finite = z[np.isfinite(z)]
+    vmin, vmax = (np.percentile(finite, [0.1, 99.9]) if finite.size else (0.0, 1.0))
+    if not vmax > vmin:
+        vmin, vmax = vmin - 0.5, vmax + 0.5
+    im = ax.imshow(np.ma.masked_invalid(z), origin="lower", extent=extent, cmap=cm,
+                   vmin=vmin, vmax=vmax, interpolation="antialiased", aspect="equal")
+    ax.set_xlabel(f"x ({unit})")
+    ax.set_ylabel(f"y ({unit})")
+    cb = fig.colorbar(im, ax=ax, shrink=0.9, extend="both")
+    cb.set_label(HEIGHT_LABEL)
+    if scale_bar:
+        add_scale_bar(ax, max(topo.size_x, topo.size_y), scale, unit)
+    ax.set_title(title if title is not None else _scan_title(topo))
+    return finish(fig, path)
+
+
+def _scan_title(scan: Topography | Profile) -> str:
+    from surfmet.units import format_length
+
+    name = Path(str(scan.metadata.get("source", ""))).name
+    if isinstance(scan, Topography):
+        size = f"{format_length(scan.size_x)} × {format_length(scan.size_y)}"
+    else:
+        size = format_length(scan.length)
+    return f"{name}  ({size})" if name else size
+
+
+def _heights_of(scan: Any) -> np.ndarray:
+    if isinstance(scan, Topography):
+        z = np.asarray(scan.heights).ravel()
+    elif isinstance(scan, Profile):
+        z = np.asarray(scan.z)
+    else:
+        z = np.asarray(scan, dtype=float).ravel()
+    z = z[np.isfinite(z)]
+    if z.size < 2:
+        raise SurfmetInputError("the material ratio curve needs at least 2 measured points")
+    return z - z.mean()
+
+
+def abbott_firestone(
+    scan: Topography | Profile | np.ndarray,
+    path: str | Path | None = None,
+    *,
+    ax: Any = None,
+    parameters: dict[str, Any] | None = None,
+    title: str | None = None,
+    points: int = 1001,
+) -> Any:
+    """The Abbott–Firestone (material ratio) curve, heights about the mean (µm).
+
+    With ``parameters`` holding the ISO 13565-2 / ISO 25178-2 functional family (``Sk,
+    Spk, Svk, Smr1, Smr2`` or ``Rk, Rpk, Rvk, Mr1, Mr2``; values SI, ratios in %), the
+    construction is drawn: the core limits at Smr1 and Smr2, the equivalent straight line
+    and the peak and dale triangles of heights Spk and Svk.
+
+    Parameters
+    ----------
+    scan : Topography, Profile or array
+        The evaluated (levelled, filtered) surface; NaN ignored.
+    parameters : dict, optional
+        ``{symbol: value}`` or ``{symbol: (value, unit)}`` (as in ``RoughnessResult``).
+    points : int
+        Material ratios at which the curve is drawn.
+    """
+    from profiles import height_at_ratio, material_ratio_curve
+
+    z = _heights_of(scan)
+    if ax is None:
+        fig, ax = new_figure(size=(5.6, 4.2))
+    else:
+        fig = ax.figure
+    mr, h = material_ratio_curve(z, n=points)
+    ax.plot(100 * mr, h / UM, color="C0", lw=1.6, label="material ratio curve")
+    ax.set_xlim(0, 100)
+    ax.set_xlabel("material ratio (%)")
+    ax.set_ylabel("height about the mean (µm)")
+    ax.grid(True, alpha=0.3)
+    vals = {k: (v[0] if isinstance(v, (tuple, list)) else v) for k, v in (parameters or {}).items()}
+    names = None
+    for fam in (("Sk", "Spk", "Svk", "Smr1", "Smr2"), ("Rk", "Rpk", "Rvk", "Mr1", "Mr2")):
+        if all(vals.get(k) is not None and np.isfinite(vals[k]) for k in fam):
+            names = fam
+            break
+    if names is not None:
+        k_, pk, vk, m1, m2 = (float(vals[n]) for n in names)
+        upper = float(height_at_ratio(z, min(max(m1 / 100, 0.0), 1.0)))
+        lower = upper - k_
+        ax.plot([0, 100], [upper / UM, lower / UM], "--", color="C3", lw=1,
+                label="equivalent straight line")
+        for level in (upper, lower):
+            ax.axhline(level / UM, color="0.4", lw=0.8, ls=":")
+        ax.fill([0, 0, m1], [upper / UM, (upper + pk) / UM, upper / UM], color="C1", alpha=0.35,
+                label=f"{names[1]} = {pk / UM:.4g} µm")
+        ax.fill([m2, 100, 100], [lower / UM, lower / UM, (lower - vk) / UM], color="C2",
+                alpha=0.35, label=f"{names[2]} = {vk / UM:.4g} µm")
+        ax.annotate(f"{names[0]} = {k_ / UM:.4g} µm\n{names[3]} = {m1:.3g} %, "
+                    f"{names[4]} = {m2:.3g} %", xy=(0.5, 0.97), xycoords="axes fraction",
+                    ha="center", va="top", fontsize=8)
+        ax.legend(loc="lower left", fontsize=8)
+    ax.set_title(title if title is not None else "Abbott–Firestone curve")
+    return finish(fig, path)
+
+
+def psd_figure(
+    spectra: Any,
+    path: str | Path | None = None,
+    *,
+    ax: Any = None,
+    labels: Sequence[str] | None = None,
+    fits: Sequence[Any] | None = None,
+    title: str | None = None,
+) -> Any:
+    """Log–log PSD ``C(q)`` against the wavevector ``q`` (rad/µm), with the wavelength
+    ``λ = 2π/q`` (µm) on the top axis.
+
+    Parameters
+    ----------
+    spectra : PSD or sequence of PSD
+        From :mod:`surfmet.psd`; profile PSDs in µm³, radial (areal) PSDs in µm⁴. Mixing
+        the two kinds on one axes is refused (different units).
+    labels : sequence of str, optional
+    fits : sequence of HurstFit or None, optional
+        Power laws to overlay over their fitted band, labelled with H.
+    """
+    from surfmet.psd import PSD
+
+    items = [spectra] if isinstance(spectra, PSD) else list(spectra)
+    if not items:
+        raise SurfmetInputError("psd_figure needs at least one PSD")
+    kinds = {s.kind for s in items}
+    if len(kinds) > 1:
+        raise SurfmetInputError("profile (m³) and radial (m⁴) PSDs have different units; "
+                                "draw them on separate axes")
+    kind = kinds.pop()
+    power = 3 if kind == "profile" else 4
+    if ax is None:
+        fig, ax = new_figure(size=(6.0, 4.2))
+    else:
+        fig = ax.figure
+    for k, s in enumerate(items):
+        lab = labels[k] if labels is not None and k < len(labels) else None
+        ok = s.C > 0
+        ax.loglog(s.q[ok] * UM, s.C[ok] / UM**power, lw=1.2, label=lab, color=f"C{k}")
+    for k, f in enumerate(fits or []):
+        if f is None:
+            continue
+        q = np.geomspace(f.q_range[0], f.q_range[1], 50)
+        c = f.prefactor * q**f.slope
+        ax.loglog(q * UM, c / UM**power, "--", color=f"C{k}", lw=1.5, alpha=0.8,
+                  label=f"power-law fit: H = {f.hurst:.3f}")
+    ax.set_xlabel("wavevector q (rad/µm)")
+    ax.set_ylabel(f"PSD C(q) (µm{'³' if power == 3 else '⁴'})")
+    ax.grid(True, which="both", alpha=0.25)
+    top = ax.secondary_xaxis("top", functions=(_q_to_lambda, _q_to_lambda))
+    top.set_xlabel("wavelength λ (µm)")
+    if labels is not None or fits:
+        ax.legend(fontsize=8)
+    default = "PSD of the profile" if kind == "profile" else "radially averaged PSD"
+    ax.set_title(title if title is not None else default, fontsize=10)
+    return finish(fig, path)
+
+
+def _q_to_lambda(q: Any) -> Any:
+    # λ = 2π/q is its own inverse; guard q = 0 for matplotlib's transform probes
+    q = np.asarray(q, dtype=float)
+    with np.errstate(divide="ignore"):
+        return np.where(q > 0, 2 * np.pi / np.where(q > 0, q, 1.0), np.inf)

@@ -1,0 +1,571 @@
+"""One self-contained HTML report for one or several scans.
+
+``write_report(paths, "report.html")`` writes a single file that opens anywhere, offline:
+the style sheet is inline and every picture is a PNG embedded as a ``data:`` URI; the page
+loads nothing and runs no script. All text from files (metadata, names, messages) is
+HTML-escaped, so a scan whose metadata says ``<script>`` shows that text and runs nothing.
+
+For each scan the report holds:
+
+* the instrument metadata and the grid (as ``surfmet info`` reports them);
+* the parameter table from :func:`surfmet.roughness.roughness`, each value with its unit
+  (lengths in µm, Spd in 1/mm², Spc in 1/µm; the exact SI value is kept in the cell's
+  ``data-si`` attribute), and the processing settings used (form removal, S/L filters
+  with nesting indices and edge treatment, spikes, window, the full settings as JSON);
+* pictures: the 3D view (:func:`surfmet.render.render_3d`), the height map, the
+  Abbott–Firestone curve with the Sk construction, the PSD with its Hurst fit; for a
+  profile, the primary / waviness / roughness figure instead of the two maps;
+* when a ball radius, a load and the materials are given, the Hertz-check section
+  (:mod:`surfmet.hertz_check`): verdict, reasons, Hertz against boundary elements and the
+  radial pressure profile.
+
+A scan that cannot be read or evaluated gets a section with its error; the others go on.
+"""
+
+from __future__ import annotations
+
+import base64
+import datetime as _dt
+import html
+import io
+import json
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+
+# Display units of the parameter table: (SI unit) -> (factor to divide by, shown unit).
+DISPLAY_UNITS: dict[str, tuple[float, str]] = {
+    "m": (1e-6, "µm"),
+    "1/m²": (1e6, "1/mm²"),
+    "1/m": (1e6, "1/µm"),
+}
+
+_CSS = """
+body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
+max-width:1200px;color:#222;padding:0 1em}
+h1{font-size:1.6em;margin-bottom:.2em}h2{border-bottom:2px solid #4a7;padding-bottom:.2em;
+margin-top:2em}h3{margin-top:1.4em}
+table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.25em .6em;
+text-align:left;vertical-align:top}th{background:#eef5ee}td.num{text-align:right;
+font-variant-numeric:tabular-nums}
+.figs{display:flex;flex-wrap:wrap;gap:1em}.figs figure{margin:0;flex:1 1 480px}
+.figs img{max-width:100%;height:auto;border:1px solid #ddd}
+figcaption{font-size:.85em;color:#555}.error{color:#a00;font-weight:bold}
+.ok{color:#070;font-weight:bold}.meta td:first-child{white-space:nowrap;color:#555}
+pre{background:#f6f6f6;padding:.6em;overflow:auto;font-size:.8em;max-height:30em}
+.small{font-size:.85em;color:#555}.cols{display:flex;flex-wrap:wrap;gap:2em}
+.cols>div:first-child{flex:0 0 auto}.cols>div:last-child{flex:1 1 420px;min-width:0}
+"""
+
+
+def esc(value: Any) -> str:
+    """HTML-escaped text of any value (quotes too, so it is safe in attributes)."""
+    return html.escape(str(value), quote=True)
+
+
+def png_data_uri(png: bytes) -> str:
+    """``data:image/png;base64,...`` for PNG bytes."""
+    if not png.startswith(b"\x89PNG\r\n\x1a\n"):
+        raise SurfmetInputError("not a PNG image")
+    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+
+
+def figure_png(fig: Any, dpi: int = 100) -> bytes:
+    """PNG bytes of a matplotlib figure, which is then closed."""
+    from surfmet.plots._style import close
+
+    buf = io.BytesIO()
+    try:
+        fig.savefig(buf, format="png", dpi=dpi)
+    finally:
+        close(fig)
+    return buf.getvalue()
+
+
+def array_png(img: np.ndarray) -> bytes:
+    """PNG bytes of an RGB(A) uint8 image array."""
+    import matplotlib.image as mpimg
+
+    buf = io.BytesIO()
+    mpimg.imsave(buf, np.asarray(img), format="png")
+    return buf.getvalue()
+
+
+def display_value(value: Any, unit: str) -> tuple[str, str]:
+    """``(number text, unit text)`` of an SI parameter value for the table."""
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "n/a", unit
+    factor, shown = DISPLAY_UNITS.get(unit, (1.0, unit))
+    return f"{value / factor:.5g}", shown
+
+
+@dataclass(frozen=True)
+class HertzOptions:
+    """Inputs of the Hertz-check section (SI): ball radius (m), load (N), the materials as
+    ``"BALL,PLATE"`` (names with optional ``:E=..:nu=..:H=..``), and an optional ball scan."""
+
+    radius: float
+    load: float
+    materials: str
+    ball: str | None = None
+
+
+@dataclass
+class ScanSection:
+    """What the report shows for one scan (kept for the JSON summary and the tests)."""
+
+    file: str
+    status: str = "ok"
+    error: str | None = None
+    kind: str | None = None
+    info: dict[str, Any] = field(default_factory=dict)
+    parameters: dict[str, Any] = field(default_factory=dict)
+    settings: dict[str, Any] = field(default_factory=dict)
+    figures: list[tuple[str, bytes]] = field(default_factory=list)
+    hertz: dict[str, Any] | None = None
+    hertz_figure: bytes | None = None
+    hertz_error: str | None = None
+
+    def summary(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"file": self.file, "status": self.status}
+        if self.error:
+            out["error"] = self.error
+        else:
+            out["kind"] = self.kind
+            out["figures"] = [name for name, _ in self.figures]
+            out["hertz_check"] = self.hertz is not None
+            if self.hertz_error:
+                out["hertz_error"] = self.hertz_error
+        return out
+
+
+# ---------------------------------------------------------------------------------------
+# computing a section
+
+
+def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
+                   ) -> list[tuple[str, bytes]]:
+    from surfmet.plots.areal import abbott_firestone, height_map, psd_figure
+    from surfmet.psd import fit_hurst, psd
+
+    figs: list[tuple[str, bytes]] = []
+    if include_3d:
+        from surfmet.render import render_3d
+
+        img = render_3d(surface, window_size=(1000, 750))
+        figs.append(("3D view of the evaluated surface (heights exaggerated, see the "
+                     "picture)", array_png(img)))
+    figs.append(("height map of the evaluated surface", figure_png(height_map(surface))))
+    figs.append(("Abbott–Firestone curve with the ISO 13565-2 / 25178-2 Sk construction",
+                 figure_png(abbott_firestone(surface, parameters=params))))
+    if surface.nx >= 16 and surface.ny >= 16:
+        spec = psd(surface)
+        try:
+            fit = fit_hurst(spec)
+        except SurfmetInputError:
+            fit = None
+        figs.append(("radially averaged PSD (Hann window) with a self-affine fit",
+                     figure_png(psd_figure(spec, fits=[fit] if fit else None))))
+    return figs
+
+
+def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
+    from surfmet.plots.areal import abbott_firestone, psd_figure
+    from surfmet.plots.profile import profile_figure
+    from surfmet.psd import fit_hurst, profile_psd
+
+    figs = [("primary profile and mean line, waviness, roughness",
+             figure_png(profile_figure(analysis, title=name)))]
+    rough = np.asarray(analysis.roughness)[np.asarray(analysis.evaluated)]
+    figs.append(("Abbott–Firestone curve of the roughness profile (evaluation length)",
+                 figure_png(abbott_firestone(rough))))
+    if rough.size >= 16:
+        spec = profile_psd(rough, float(analysis.settings["dx"]))
+        try:
+            fit = fit_hurst(spec)
+        except SurfmetInputError:
+            fit = None
+        figs.append(("PSD of the roughness profile (Hann window)",
+                     figure_png(psd_figure(spec, fits=[fit] if fit else None))))
+    return figs
+
+
+def hertz_check_available() -> bool:
+    """True when :mod:`surfmet.hertz_check` can be imported."""
+    import importlib.util
+
+    return importlib.util.find_spec("surfmet.hertz_check") is not None
+
+
+def _run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
+    """Call :func:`surfmet.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
+
+    This is the one place the report touches the Hertz-check module.
+    """
+    try:
+        from surfmet.hertz_check import hertz_check
+    except ImportError:
+        raise SurfmetInputError(
+            "the Hertz check is not available in this installation (surfmet.hertz_check "
+            "is missing); run the report without --radius/--load/--materials"
+        ) from None
+    import surfmet
+
+    ball = surfmet.read(hz.ball) if hz.ball else None
+    res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
+    return res.to_json()
+
+
+def _num(v: Any) -> Any:
+    """A value of the Hertz-check JSON: ``{"value": v, "unit": u}`` or a bare number."""
+    if isinstance(v, dict) and "value" in v:
+        return v["value"]
+    return v
+
+
+def hertz_figure(check: dict[str, Any]) -> bytes | None:
+    """The radial pressure figure (Hertz vs BEM) of a Hertz-check record, as PNG."""
+    from surfmet.plots.contact import radial_pressure
+
+    rp = check.get("radial_profile") or {}
+    a0 = _num((check.get("hertz") or {}).get("a"))
+    try:
+        r, pb, ph = (np.asarray(_num(rp[k]), dtype=float) for k in ("r", "p_bem", "p_hertz"))
+    except (KeyError, TypeError, ValueError):
+        return None
+    if a0 is None or r.size < 2:
+        return None
+    return figure_png(radial_pressure(r, pb, ph, float(a0)))
+
+
+def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
+                 include_3d: bool = True, hertz: HertzOptions | None = None) -> ScanSection:
+    """Compute everything the report shows for one scan; errors end up in the section.
+
+    Parameters
+    ----------
+    path : str or Path
+    options : dict, optional
+        Keyword arguments of :func:`surfmet.roughness.roughness` (level, ls, lc, window,
+        profile, spikes, edge).
+    include_3d : bool
+        Render the 3D view (pyvista) for areal scans.
+    hertz : HertzOptions, optional
+        Add the Hertz-check section.
+    """
+    import surfmet
+    from surfmet.cli.info import describe
+    from surfmet.errors import user_error_types
+    from surfmet.roughness import roughness
+
+    options = dict(options or {})
+    sec = ScanSection(file=str(path))
+    try:
+        scan = surfmet.read(path)
+        sec.info = describe(scan)
+        res = roughness(scan, **options)
+        sec.kind = res.kind  # "profile" also for a row of an areal scan
+        sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
+        sec.settings = res.settings
+        name = Path(str(path)).name
+        if res.kind == "areal":
+            sec.figures = _figures_areal(res.surface, res.parameters, include_3d)
+        else:
+            sec.figures = _figures_profile(res.analysis, name)
+    except user_error_types() as exc:
+        sec.status, sec.error = "error", str(exc)
+        return sec
+    if hertz is not None:
+        # its own failure (no convergence, contact at the domain edge...) must not hide
+        # the roughness part
+        try:
+            sec.hertz = _run_hertz_check(scan, hertz)
+            sec.hertz_figure = hertz_figure(sec.hertz)
+        except user_error_types() as exc:
+            sec.hertz_error = str(exc)
+    return sec
+
+
+# ---------------------------------------------------------------------------------------
+# HTML
+
+
+def _kv_table(rows: Iterable[tuple[str, Any]], cls: str = "meta") -> str:
+    body = "".join(f"<tr><td>{esc(k)}</td><td>{esc(v)}</td></tr>" for k, v in rows)
+    return f'<table class="{cls}">{body}</table>'
+
+
+def _fmt_q(q: Any) -> str:
+    """Human text of a ``{"value", "unit"}`` quantity (lengths in µm)."""
+    from surfmet.units import format_length
+
+    if isinstance(q, dict) and "value" in q:
+        v, u = q["value"], q.get("unit", "")
+        if v is None:
+            return "n/a"
+        if u == "m" and isinstance(v, (int, float)):
+            return format_length(v)
+        if isinstance(v, (int, float)):
+            return f"{v:.5g} {u}".rstrip()
+        return f"{v} {u}".rstrip()
+    return str(q)
+
+
+def _info_html(info: dict[str, Any]) -> str:
+    rows = [("format", info.get("format")), ("kind", info.get("kind")),
+            ("grid", f"{info.get('nx')} × {info.get('ny')}" if info.get("kind") == "areal"
+             else f"{info.get('nx')} points")]
+    rows.append(("pixel size", f"{_fmt_q(info.get('dx'))} × {_fmt_q(info.get('dy'))}"
+                 if info.get("kind") == "areal" else _fmt_q(info.get("dx"))))
+    if info.get("kind") == "areal":
+        rows.append(("scan size", f"{_fmt_q(info.get('size_x'))} × "
+                                  f"{_fmt_q(info.get('size_y'))}"))
+    else:
+        rows.append(("length", _fmt_q(info.get("length"))))
+    rows.append(("non-measured", f"{100 * float(info.get('nan_fraction') or 0):.3f} %"))
+    for k, v in (info.get("metadata") or {}).items():
+        text = _meta_text(_jsonable(v))
+        if len(text) > 400:
+            text = text[:397] + "..."
+        rows.append((k, text))
+    return "<h3>Instrument and grid</h3>" + _kv_table(rows)
+
+
+def _meta_text(v: Any) -> str:
+    """Readable text of a metadata value: quantities with their unit, mappings as
+    ``key: value; ...``, numbers with 6 significant digits."""
+    if isinstance(v, dict):
+        if "value" in v and "unit" in v and len(v) == 2:
+            return _fmt_q(v)
+        def inner(x: Any) -> str:
+            t = _meta_text(x)
+            nested = isinstance(x, dict) and not ("value" in x and "unit" in x)
+            return "{" + t + "}" if nested else t
+
+        return "; ".join(f"{k}: {inner(x)}" for k, x in v.items())
+    if isinstance(v, list):
+        return "[" + ", ".join(_meta_text(x) for x in v) + "]"
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    return "" if v is None else str(v)
+
+
+def _jsonable(v: Any) -> Any:
+    from surfmet.units import jsonable
+
+    return jsonable(v)
+
+
+def _params_html(params: dict[str, Any]) -> str:
+    head = "<tr><th>parameter</th><th>value</th><th>unit</th></tr>"
+    rows = []
+    for sym, q in params.items():
+        value, unit = q["value"], q["unit"]
+        text, shown = display_value(value, unit)
+        si = "" if value is None else repr(float(value))
+        rows.append(f'<tr data-symbol="{esc(sym)}"><td>{esc(sym)}</td>'
+                    f'<td class="num" data-si="{esc(si)}" data-si-unit="{esc(unit)}">'
+                    f"{esc(text)}</td><td>{esc(shown)}</td></tr>")
+    return ('<h3>Parameters</h3><table class="params">' + head + "".join(rows) + "</table>")
+
+
+def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
+    rows: list[tuple[str, str]] = []
+    if s.get("kind") == "areal":
+        rows.append(("surface", s.get("surface", "")))
+        form = s.get("form") or {}
+        rows.append(("F-operator (form removed)",
+                     f"{s.get('level')} (residual rms {_fmt_q(form.get('residual_rms'))})"))
+        for name in ("ls", "lc"):
+            rows.append((f"{'S' if name == 'ls' else 'L'}-filter nesting index {name}",
+                         _fmt_q(s[name]) if s.get(name) else "none"))
+        for f in s.get("filters") or []:
+            rows.append((f"{f.get('kind')}-filter",
+                         f"Gaussian ISO 16610-61, λ = {_fmt_q(f.get('nesting_index'))}, "
+                         f"edge treatment {f.get('edge')}"))
+        rows.append(("measured points used", str(s.get("n_valid_points"))))
+    else:
+        rows.append(("parameters of", str(s.get("parameters_of", ""))))
+        rows.append(("levelling", str(s.get("level"))))
+        lc = s.get("lc")
+        rows.append(("λc (L-filter cut-off)", "none" if lc is None else
+                     f"{_fmt_q({'value': lc, 'unit': 'm'})} ({s.get('lc_mode')})"))
+        ls = s.get("ls")
+        rows.append(("λs (S-filter cut-off)", "none" if ls is None else
+                     _fmt_q({"value": ls, "unit": "m"})))
+        if s.get("filter"):
+            rows.append(("filter", str(s["filter"])))
+        for key in ("lc_note", "ls_note"):
+            if s.get(key):
+                rows.append(("note", str(s[key])))
+        if s.get("evaluation_length") is not None:
+            rows.append(("evaluation length",
+                         f"{_fmt_q({'value': s['evaluation_length'], 'unit': 'm'})} "
+                         f"({s.get('n_sampling')} sampling lengths)"))
+    win = s.get("window")
+    rows.append(("window", "whole scan" if not win else json.dumps(_jsonable(win))))
+    sp = s.get("spikes") or {}
+    rows.append(("spikes", f"removed: {sp.get('count', 0)} spike(s)" if sp.get("removed")
+                 else "not removed"))
+    diag = s.get("spike_diagnosis") or {}
+    if diag.get("message"):
+        rows.append(("spike diagnosis", diag["message"]))
+    for note in s.get("notes") or []:
+        rows.append(("note", str(note)))
+    return rows
+
+
+def _settings_html(s: dict[str, Any]) -> str:
+    full = json.dumps(_jsonable(s), indent=1, ensure_ascii=False)
+    return ("<h3>Processing (settings used)</h3>" + _kv_table(_settings_rows(s))
+            + "<details><summary>all settings (JSON, SI units)</summary><pre>"
+            + esc(full) + "</pre></details>")
+
+
+def _figures_html(figs: Sequence[tuple[str, bytes]]) -> str:
+    items = "".join(
+        f'<figure><img alt="{esc(cap)}" src="{png_data_uri(png)}">'
+        f"<figcaption>{esc(cap)}</figcaption></figure>" for cap, png in figs)
+    return f'<h3>Pictures</h3><div class="figs">{items}</div>' if figs else ""
+
+
+def _hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None) -> str:
+    holds = check.get("hertz_holds")
+    verdict = ('<span class="ok">Hertz holds</span>' if holds else
+               '<span class="error">Hertz does not hold</span>' if holds is not None else
+               "no verdict")
+    parts = ["<h3>Hertz check</h3>", f'<p class="verdict">{verdict}'
+             f" (α = {esc(_fmt_q(check.get('alpha')))})</p>"]
+    if hz is not None:
+        parts.append(_kv_table([("ball radius", _fmt_q({"value": hz.radius, "unit": "m"})),
+                                ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
+                                ("ball scan", hz.ball or "none (smooth ball)")]))
+    reasons = check.get("reasons") or []
+    if reasons:
+        parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")
+    rows = []
+    hertz, bem = check.get("hertz") or {}, check.get("bem") or {}
+    for key in sorted(set(hertz) | set(bem)):
+        if isinstance(hertz.get(key), (list, dict)) and not (
+                isinstance(hertz.get(key), dict) and "value" in hertz[key]):
+            continue
+        rows.append(f"<tr><td>{esc(key)}</td><td>{esc(_fmt_q(hertz.get(key, '')))}</td>"
+                    f"<td>{esc(_fmt_q(bem.get(key, '')))}</td></tr>")
+    if rows:
+        parts.append('<table class="hertz"><tr><th>quantity</th><th>Hertz</th>'
+                     "<th>boundary elements</th></tr>" + "".join(rows) + "</table>")
+    if fig is not None:
+        parts.append(_figures_html([("radial pressure: Hertz against boundary elements",
+                                     fig)]).replace("<h3>Pictures</h3>", ""))
+    return "".join(parts)
+
+
+def _section_html(k: int, sec: ScanSection, hz: HertzOptions | None) -> str:
+    name = Path(sec.file).name
+    out = [f'<section class="scan" id="scan-{k}"><h2>{esc(name)}</h2>'
+           f'<p class="small">{esc(sec.file)}</p>']
+    if sec.status != "ok":
+        out.append(f'<p class="error">could not be evaluated: {esc(sec.error)}</p></section>')
+        return "".join(out)
+    out.append(_info_html(sec.info))
+    out.append('<div class="cols"><div>' + _params_html(sec.parameters) + "</div><div>"
+               + _settings_html(sec.settings) + "</div></div>")
+    out.append(_figures_html(sec.figures))
+    if sec.hertz is not None:
+        out.append(_hertz_html(sec.hertz, sec.hertz_figure, hz))
+    elif sec.hertz_error:
+        out.append(f'<h3>Hertz check</h3><p class="error">failed: {esc(sec.hertz_error)}</p>')
+    out.append("</section>")
+    return "".join(out)
+
+
+def _overview(sections: Sequence[ScanSection]) -> str:
+    head = "<tr><th>scan</th><th>kind</th><th>Sa / Ra</th><th>Sq / Rq</th><th>status</th></tr>"
+    rows = []
+    for k, s in enumerate(sections):
+        a = s.parameters.get("Sa") or s.parameters.get("Ra") or {}
+        q = s.parameters.get("Sq") or s.parameters.get("Rq") or {}
+        ta = " ".join(display_value(a.get("value"), a.get("unit", "m"))) if a else ""
+        tq = " ".join(display_value(q.get("value"), q.get("unit", "m"))) if q else ""
+        status = "ok" if s.status == "ok" else f"error: {s.error}"
+        rows.append(f'<tr><td><a href="#scan-{k}">{esc(Path(s.file).name)}</a></td>'
+                    f"<td>{esc(s.kind or '')}</td><td class=\"num\">{esc(ta)}</td>"
+                    f'<td class="num">{esc(tq)}</td><td>{esc(status)}</td></tr>')
+    return '<table class="overview">' + head + "".join(rows) + "</table>"
+
+
+def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report",
+                options: dict[str, Any] | None = None, hertz: HertzOptions | None = None
+                ) -> str:
+    """The report page for computed sections (see :func:`scan_section`)."""
+    from surfmet import __version__
+
+    now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    opts = {k: v for k, v in (options or {}).items() if v not in (None, False)}
+    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+             '<meta name="viewport" content="width=device-width, initial-scale=1">',
+             f"<title>{esc(title)}</title><style>{_CSS}</style></head><body>",
+             f"<h1>{esc(title)}</h1>",
+             f'<p class="small">surfmet {esc(__version__)}, {esc(now)}; options: '
+             f"{esc(json.dumps(_jsonable(opts), ensure_ascii=False) if opts else 'defaults')}"
+             "</p>", _overview(sections)]
+    parts.extend(_section_html(k, s, hertz) for k, s in enumerate(sections))
+    parts.append("</body></html>")
+    return "\n".join(parts)
+
+
+def write_report(
+    paths: Iterable[str | Path],
+    out: str | Path,
+    options: dict[str, Any] | None = None,
+    *,
+    title: str = "surfmet report",
+    include_3d: bool = True,
+    hertz: HertzOptions | None = None,
+    progress: bool | None = None,
+) -> list[ScanSection]:
+    """Evaluate each scan and write the self-contained HTML report to ``out``.
+
+    Parameters
+    ----------
+    paths : iterable of path
+    out : path
+        The HTML file to write.
+    options : dict, optional
+        :func:`surfmet.roughness.roughness` keyword arguments.
+    title : str
+    include_3d : bool
+        Render the 3D views (the slowest part; off-screen pyvista).
+    hertz : HertzOptions, optional
+        Add the Hertz-check section to each scan.
+    progress : bool, optional
+        Progress bar on stderr (default: when stderr is a terminal).
+
+    Returns
+    -------
+    list of ScanSection
+        One per scan, in order (``status`` "ok" or "error").
+    """
+    from surfmet.batch import _bar
+
+    paths = [str(p) for p in paths]
+    if not paths:
+        raise SurfmetInputError("the report needs at least one scan file")
+    out = Path(out)
+    if not out.parent.exists():
+        raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
+    sections = []
+    with _bar(len(paths), "report", progress) as bar:
+        for p in paths:
+            sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
+            bar.update(1)
+    out.write_text(render_html(sections, title=title, options=options, hertz=hertz),
+                   encoding="utf-8")
+    return sections
