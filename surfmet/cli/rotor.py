@@ -1,0 +1,314 @@
+"""``surfmet rotor FILE``: the rotor's law of motion from frame indices (Table 3 of the paper).
+
+FILE is tab- or space-separated text: a header ``k`` then one column per test, one row per
+mark (row ``k`` = the frame at which the rotor had turned ``(k - 1)`` mark steps). Empty
+cells, ``nan`` or ``-`` mark missing readings. Columns whose names differ only in trailing
+digits (``as1``, ``as2``...) form a group. ``paper2022`` names the paper's Table 3 as shipped
+with surfmet.
+"""
+
+from __future__ import annotations
+
+import argparse
+import itertools
+import math
+from pathlib import Path
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, log
+from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet.units import quantity
+
+PAPER_ALIAS = "paper2022"
+
+EPILOG = """examples:
+  surfmet rotor paper2022
+  surfmet rotor table3_frames.tsv --plot residuals.png
+  surfmet rotor runs.tsv --fps 240 --step-deg 45 --json
+  surfmet rotor paper2022 --cv exact --json > rotor.json
+
+Models (fitted on the times, weighted by a reading-noise model with the frame quantisation
+as its floor): rest (the paper's: constant acceleration from rest at the first mark),
+parabola (the paper's general parabola on the angles), const (constant acceleration, free
+start), position / speed (decaying acceleration), unbalance, and their combinations.
+The BIC picks one per test; misread rows are found robustly and left out."""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "rotor",
+        help="law of motion of the rolling rotor from frame indices (Table 3)",
+        description="Fit the rotor's law of motion to frame indices per mark: the paper's "
+        "parabolas, constant acceleration with a free start, decaying acceleration "
+        "(position- or speed-dependent), unbalance; select by BIC, find misread rows, "
+        "compare the groups of tests.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("file", help=f"TSV of frame indices (header 'k' then columns), or "
+                   f"{PAPER_ALIAS!r} for the paper's Table 3")
+    p.add_argument("--fps", type=float, default=120.0, help="camera frame rate (default 120)")
+    p.add_argument("--step-deg", type=float, default=90.0,
+                   help="rotation between successive rows, degrees (default 90)")
+    p.add_argument("--cv", choices=("approx", "exact"), default="approx",
+                   help="leave-one-point-out errors from leverages (fast) or refits")
+    p.add_argument("--threshold", type=float, default=4.0,
+                   help="misread threshold in noise sigmas (default 4)")
+    p.add_argument("--plot", metavar="PATH", help="write the residual figure to PATH (.png/.pdf)")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def read_frames_table(path: str | Path) -> tuple[list[int], dict[str, list[float]]]:
+    """Read a frame-index table: header ``k`` and column names, then integer rows.
+
+    Returns the row numbers and ``{column: values}`` (NaN for missing readings).
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise SurfmetFormatError(f"{path}: no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SurfmetFormatError(f"{path}: cannot read it as text ({exc})") from None
+    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    if not lines:
+        raise SurfmetFormatError(f"{path}: empty file")
+    sep = "\t" if "\t" in lines[0] else None
+    header = [h.strip() for h in lines[0].split(sep)]
+    if header[0].lower() != "k" or len(header) < 2:
+        raise SurfmetFormatError(
+            f"{path}: the header must be 'k' followed by column names, got {lines[0]!r}"
+        )
+    names = header[1:]
+    if len(set(names)) != len(names):
+        raise SurfmetFormatError(f"{path}: repeated column names in {names}")
+    ks: list[int] = []
+    cols: dict[str, list[float]] = {n: [] for n in names}
+    for lineno, line in enumerate(lines[1:], start=2):
+        cells = [c.strip() for c in line.split(sep)] if sep else line.split()
+        if len(cells) < len(header):
+            cells += [""] * (len(header) - len(cells))
+        if len(cells) > len(header):
+            raise SurfmetFormatError(f"{path}:{lineno}: {len(cells)} cells for "
+                                     f"{len(header)} columns")
+        try:
+            ks.append(int(cells[0]))
+        except ValueError:
+            raise SurfmetFormatError(f"{path}:{lineno}: row number {cells[0]!r} is not an "
+                                     "integer") from None
+        for name, cell in zip(names, cells[1:]):
+            if cell.lower() in ("", "nan", "-", "na"):
+                cols[name].append(math.nan)
+                continue
+            try:
+                v = float(cell)
+            except ValueError:
+                raise SurfmetFormatError(
+                    f"{path}:{lineno}: {cell!r} in column {name!r} is not a frame index"
+                ) from None
+            if not math.isfinite(v):
+                raise SurfmetFormatError(f"{path}:{lineno}: {cell!r} is not finite")
+            cols[name].append(v)
+    if len(ks) < 2:
+        raise SurfmetFormatError(f"{path}: no data rows")
+    if any(b <= a for a, b in itertools.pairwise(ks)):
+        raise SurfmetFormatError(f"{path}: row numbers k must increase")
+    return ks, cols
+
+
+def _paper_path() -> Path:
+    return Path(__file__).resolve().parents[1] / "data" / "table3_frames.tsv"
+
+
+def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
+    from contact.lawofmotion import MODELS, PARAM_UNITS
+
+    spec = MODELS[fit.model]
+    keys = list(spec.free)
+    if fit.model != "parabola" and ("a_c" in keys):
+        keys += ["amplitude", "phase"]
+    params = {k: quantity(fit.params[k], PARAM_UNITS[k]) for k in keys}
+    stderr = {k: quantity(v, PARAM_UNITS[k]) for k, v in fit.stderr.items()}
+    rec: dict[str, Any] = {
+        "description": spec.description,
+        "effect": spec.effect,
+        "n_params": fit.p,
+        "n_rows": fit.n,
+        "rms": quantity(fit.rms, "s"),
+        "rms_frames": quantity(fit.rms * fps, "frame"),
+        "bic": fit.bic,
+        "loo_rms": quantity(fit.loo_rms, "s"),
+        "loo_kind": fit.loo_kind,
+        "chi2_quantisation": fit.chi2_quant,
+        "runs_z": fit.runs_z,
+        "lag1": fit.lag1,
+        "noise": {"sigma_t": quantity(fit.noise.sigma_t, "s"),
+                  "sigma_a": quantity(fit.noise.sigma_a, "rad")},
+        "params": params,
+        "stderr": stderr,
+        "residuals": quantity([float(v) for v in fit.residuals], "s"),
+    }
+    if fit.angle_rms is not None:
+        rec["angle_rms"] = quantity(fit.angle_rms, "rad")
+    return rec
+
+
+def analysis_record(an: Any, source: str) -> dict[str, Any]:
+    """The JSON record of a :class:`contact.lawofmotion.LawOfMotionAnalysis`."""
+    from contact.rotor import mass_properties
+
+    sym = mass_properties(collar_offset="symmetric")
+    fps = an.fps
+    tests = []
+    for t in an.tests:
+        sel = t.fit
+        rec = {
+            "name": t.name,
+            "group": t.group,
+            "selected_model": t.selected,
+            "effect": t.effect,
+            "decay_form": t.decay_form,
+            "outliers": list(t.outliers),
+            "eps0": quantity(t.eps0, "rad/s²"),
+            "eps0_stderr": quantity(t.eps0_stderr, "rad/s²"),
+            "start": {
+                "t0": quantity(sel.params.get("t0", 0.0), "s"),
+                "phi0": quantity(sel.params.get("phi0", 0.0), "rad"),
+                "omega_at_first_mark": quantity(t.omega_first, "rad/s"),
+            },
+            "noise": {"sigma_t": quantity(sel.noise.sigma_t, "s"),
+                      "sigma_a": quantity(sel.noise.sigma_a, "rad")},
+            "k": [int(v) for v in t.k],
+            "frames": [float(v) for v in t.frames],
+            "misread_z": [float(v) for v in t.z],
+            "models": {m: _fit_record(f, fps) for m, f in t.fits.items()},
+        }
+        amp = sel.params.get("amplitude", 0.0)
+        if amp:
+            # for the paper's rotor: A = M g e / (J + M R^2)
+            rec["com_offset_paper_rotor"] = quantity(
+                amp * sym.rolling_inertia / (sym.mass * 9.80665), "m")
+        tests.append(rec)
+    groups = []
+    units = ("rad/s²", "rad/s", "rad")
+    for g in an.groups:
+        groups.append({
+            "name": g.name,
+            "tests": list(g.tests),
+            "paper_parabola": [quantity(float(c), u) for c, u in zip(g.paper_parabola, units)],
+            "paper_parabola_stderr": [quantity(float(c), u)
+                                      for c, u in zip(g.paper_parabola_stderr, units)],
+            "paper_parabola_rms": quantity(g.paper_rms, "rad"),
+            "eps0": {m: {"mean": quantity(v[0], "rad/s²"), "uncertainty": quantity(v[1], "rad/s²"),
+                         "values": quantity(list(v[2]), "rad/s²")} for m, v in g.eps.items()},
+            "study_params": {k: {"mean": quantity(v[0], _unit(k)),
+                                 "uncertainty": quantity(v[1], _unit(k)),
+                                 "values": quantity(list(v[2]), _unit(k))}
+                             for k, v in g.params.items()},
+            "leave_one_test_out_rms": {m: quantity(v, "s") for m, v in g.loto_rms.items()},
+        })
+    comps = []
+    for c in an.comparisons:
+        unit = "rad/s²" if c.quantity == "eps0" else _unit(c.quantity)
+        comps.append({
+            "groups": [c.a, c.b],
+            "model": c.model,
+            "quantity": c.quantity,
+            "difference": quantity(c.difference, unit),
+            "uncertainty": quantity(c.uncertainty, unit),
+            "z": c.z,
+            "p_value": c.p_value,
+            "ratio": c.ratio,
+        })
+    return {
+        "file": source,
+        "fps": quantity(an.fps, "1/s"),
+        "step": quantity(an.step, "rad"),
+        "noise_floor": quantity(an.noise_floor, "s"),
+        "study_model": an.study_model,
+        "total_bic": an.total_bic,
+        "tests": tests,
+        "groups": groups,
+        "comparisons": comps,
+    }
+
+
+def _unit(key: str) -> str:
+    from contact.lawofmotion import PARAM_UNITS
+
+    return PARAM_UNITS.get(key, "")
+
+
+def _print_summary(an: Any, source: str) -> None:
+    fps = an.fps
+    print(f"file          {source}")
+    print(f"frame rate    {fps:g} /s (quantisation sigma {an.noise_floor * 1e3:.2f} ms = "
+          f"{an.noise_floor * fps:.3f} frame)")
+    print(f"mark step     {math.degrees(an.step):g} deg")
+    print()
+    print("per test (rms in frames; BIC; leave-one-out rms in frames)")
+    print(f"  {'test':6s} {'model':26s} {'effect':19s} {'misread k':12s} "
+          f"{'eps0 rad/s2':>16s} {'rest':>6s} {'const':>6s} {'chosen':>7s}")
+    for t in an.tests:
+        rest, const, sel = t.fits["rest"], t.fits["const"], t.fit
+        out = ",".join(str(k) for k in t.outliers) or "-"
+        print(f"  {t.name:6s} {t.selected:26s} {t.effect:19s} {out:12s} "
+              f"{t.eps0:9.3f} ± {t.eps0_stderr:5.3f} {rest.rms * fps:6.2f} "
+              f"{const.rms * fps:6.2f} {sel.rms * fps:7.2f}")
+    print()
+    print("  BIC / leave-one-out rms (frames) per model")
+    names = [m for m in an.tests[0].fits]
+    print("  " + f"{'test':6s}" + "".join(f"{m[:14]:>15s}" for m in names))
+    for t in an.tests:
+        print("  " + f"{t.name:6s}" + "".join(
+            f"{t.fits[m].bic:8.1f}/{t.fits[m].loo_rms * fps:5.2f}"[:15].rjust(15) for m in names))
+    print()
+    print(f"study model (smallest BIC over all tests): {an.study_model}")
+    for g in an.groups:
+        c2, c1, c0 = g.paper_parabola
+        print(f"group {g.name!r} ({', '.join(g.tests)})")
+        print(f"  paper's parabola through the mean times: phi = {c2:.4f} t^2 + {c1:.4f} t "
+              f"+ {c0:.4f}   (rms {g.paper_rms:.3f} rad)")
+        for m in dict.fromkeys(("paper", "rest", "const", an.study_model)):
+            mean, u, vals = g.eps[m]
+            label = "paper (2 c2)" if m == "paper" else m
+            print(f"  eps0 {label:26s} {mean:7.3f} ± {u:5.3f} rad/s2   "
+                  f"[{', '.join(f'{v:.3f}' for v in vals)}]")
+        for k, (mean, u, _vals) in g.params.items():
+            print(f"  {k:31s} {mean:9.4f} ± {u:6.4f} {_unit(k)}")
+        loto = ", ".join(f"{m} {v * fps:.2f}" for m, v in g.loto_rms.items()
+                         if m in ("rest", "const", an.study_model) and math.isfinite(v))
+        print(f"  leave-one-test-out rms (frames): {loto}")
+    if an.comparisons:
+        print()
+        print("group comparison (b - a)")
+        for c in an.comparisons:
+            print(f"  {c.b} - {c.a} {c.quantity:9s} [{c.model:20s}] {c.difference:+8.4f} ± "
+                  f"{c.uncertainty:.4f}  z {c.z:+6.2f}  p {c.p_value:.3g}")
+
+
+def run(args: argparse.Namespace) -> int:
+    from contact.lawofmotion import analyse_table
+
+    if not (math.isfinite(args.fps) and args.fps > 0):
+        raise SurfmetInputError(f"--fps must be positive, got {args.fps}")
+    if not (math.isfinite(args.step_deg) and args.step_deg > 0):
+        raise SurfmetInputError(f"--step-deg must be positive, got {args.step_deg}")
+    source = str(_paper_path()) if args.file == PAPER_ALIAS else args.file
+    ks, cols = read_frames_table(source)
+    if not args.json:
+        log(f"analysing {len(cols)} test(s) of {len(ks)} rows ...")
+    an = analyse_table(cols, ks, fps=args.fps, step=math.radians(args.step_deg), cv=args.cv,
+                       threshold=args.threshold)
+    if args.plot:
+        from surfmet.plots.rotor import residual_figure
+
+        residual_figure(an, path=args.plot)
+        log(f"residual figure written to {args.plot}")
+    if args.json:
+        emit_json(analysis_record(an, source))
+    else:
+        _print_summary(an, source)
+    return 0

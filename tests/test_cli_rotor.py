@@ -1,0 +1,122 @@
+"""``surfmet rotor``: the paper's Table 3 end to end (JSON, summary, figure) and bad input."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from surfmet.cli import main
+
+
+@pytest.fixture(scope="module")
+def paper_run(tmp_path_factory):
+    """One run of the CLI on the shipped Table 3, with the residual figure."""
+    out = tmp_path_factory.mktemp("rotor")
+    plot = out / "residuals.png"
+    capture = pytest.MonkeyPatch()
+    import io
+    import sys
+
+    buf = io.StringIO()
+    capture.setattr(sys, "stdout", buf)
+    try:
+        code = main(["rotor", "paper2022", "--json", "--plot", str(plot)])
+    finally:
+        capture.undo()
+    return code, json.loads(buf.getvalue()), plot
+
+
+def test_json_structure_and_units(paper_run):
+    code, rec, plot = paper_run
+    assert code == 0
+    assert plot.exists() and plot.stat().st_size > 10_000
+    assert rec["fps"] == {"value": 120.0, "unit": "1/s"}
+    assert rec["step"]["unit"] == "rad"
+    assert rec["noise_floor"]["value"] == pytest.approx(1 / (120 * 12**0.5))
+    names = [t["name"] for t in rec["tests"]]
+    assert names == ["as1", "as2", "as3", "s1", "s2", "s3"]
+    for t in rec["tests"]:
+        assert t["effect"] in ("none", "decaying", "unbalance", "decaying+unbalance")
+        assert t["eps0"]["unit"] == "rad/s²"
+        assert set(t["models"]) >= {"rest", "parabola", "const", "position", "speed",
+                                    "unbalance", "position+unbalance"}
+        for m in t["models"].values():
+            assert m["rms"]["unit"] == "s"
+            assert isinstance(m["bic"], float)
+            for q in m["params"].values():
+                assert set(q) == {"value", "unit"}
+    groups = {g["name"]: g for g in rec["groups"]}
+    assert set(groups) == {"as", "s"}
+    assert [q["unit"] for q in groups["as"]["paper_parabola"]] == ["rad/s²", "rad/s", "rad"]
+
+
+def test_paper_findings(paper_run):
+    _, rec, _ = paper_run
+    groups = {g["name"]: g for g in rec["groups"]}
+    # the paper's two parabolas, through the mean times, to three digits; its "phi_s" is the
+    # asymmetric columns' and its "phi_a" the symmetric ones'
+    c_as = [q["value"] for q in groups["as"]["paper_parabola"]]
+    c_s = [q["value"] for q in groups["s"]["paper_parabola"]]
+    assert c_as == pytest.approx([0.821, 1.134, -0.527], abs=5e-4)
+    assert c_s == pytest.approx([0.951, 1.0254, -0.249], abs=7e-4)
+    tests = {t["name"]: t for t in rec["tests"]}
+    # the rows that were misread or mistyped (each 8-10 frames off, z > 10)
+    assert tests["as2"]["outliers"] == [7, 24]
+    assert 23 in tests["s1"]["outliers"]
+    assert tests["s2"]["outliers"] == [20]
+    assert 22 in tests["s3"]["outliers"]
+    assert tests["as1"]["outliers"] == [] and tests["as3"]["outliers"] == []
+    # every test: the acceleration decays; constant acceleration is far outside the noise
+    for t in tests.values():
+        assert t["effect"].startswith("decaying")
+        sel = t["models"][t["selected_model"]]
+        assert sel["rms_frames"]["value"] < 1.6
+        assert t["models"]["rest"]["rms_frames"]["value"] > 8
+        assert t["models"]["const"]["runs_z"] < -2  # systematic
+        assert sel["bic"] < t["models"]["const"]["bic"] - 20
+        assert sel["loo_rms"]["value"] < t["models"]["const"]["loo_rms"]["value"]
+    assert rec["study_model"] == "position"
+    tb = rec["total_bic"]
+    assert tb["position"] < tb["speed"] - 50  # the position form is clearly preferred
+    comp = {(c["model"], c["quantity"]): c for c in rec["comparisons"]}
+    # constant acceleration: the symmetric rotor is faster by ~0.26 rad/s^2 (z > 4) ...
+    assert comp[("paper", "eps0")]["difference"]["value"] == pytest.approx(0.259, abs=0.002)
+    assert comp[("const", "eps0")]["z"] > 4
+    # ... with the decay modelled the initial accelerations agree, the decay rates do not
+    assert abs(comp[("position", "eps0")]["z"]) < 1
+    assert comp[("position", "eta")]["z"] < -4
+
+
+def test_human_summary(capsys, tmp_path):
+    table = tmp_path / "t.tsv"
+    from contact.rotor_sim import simulate_random_run
+
+    a = simulate_random_run(40, "none", n_misread=0).frames
+    b = simulate_random_run(41, "none", n_misread=0).frames
+    rows = ["k\tx1\tx2"] + [f"{k}\t{int(p)}\t{int(q)}" for k, (p, q) in enumerate(zip(a, b), 1)]
+    table.write_text("\n".join(rows) + "\n")
+    assert main(["rotor", str(table)]) == 0
+    out = capsys.readouterr().out
+    assert "group 'x'" in out and "paper's parabola" in out
+    assert "const" in out and "none" in out
+
+
+@pytest.mark.parametrize(
+    ("content", "args", "needle"),
+    [
+        (None, [], "no such file"),
+        ("a\tb\n1\t2\n", [], "header"),
+        ("k\tx1\n1\t10\n2\tten\n", [], "frame index"),
+        ("k\tx1\n1\t10\n2\t20\n3\t25\n", [], "readings"),
+        ("k\tx1\n2\t10\n1\t20\n", [], "increase"),
+        ("k\tx1\n1\t10\n2\t20\n", ["--fps", "-5"], "fps"),
+    ],
+)
+def test_bad_input_is_a_one_line_user_error(tmp_path, capsys, content, args, needle):
+    path = tmp_path / "bad.tsv"
+    if content is not None:
+        path.write_text(content)
+    assert main(["rotor", str(path), *args]) == 1
+    err = capsys.readouterr().err
+    assert "error" in err and needle in err and "Traceback" not in err
