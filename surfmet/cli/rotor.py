@@ -269,8 +269,8 @@ def _print_summary(an: Any, source: str) -> None:
     for g in an.groups:
         c2, c1, c0 = g.paper_parabola
         print(f"group {g.name!r} ({', '.join(g.tests)})")
-        print(f"  paper's parabola through the mean times: phi = {c2:.4f} t^2 + {c1:.4f} t "
-              f"+ {c0:.4f}   (rms {g.paper_rms:.3f} rad)")
+        print(f"  paper's parabola through the mean times: phi = {c2:.4f} t^2 {c1:+.4f} t "
+              f"{c0:+.4f}   (rms {g.paper_rms:.3f} rad)")
         for m in dict.fromkeys(("paper", "rest", "const", an.study_model)):
             mean, u, vals = g.eps[m]
             label = "paper (2 c2)" if m == "paper" else m
