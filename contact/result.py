@@ -158,30 +158,42 @@ class ContactResult:
         }
 
 
-def count_clusters(contact: np.ndarray, periodic: bool = False) -> int:
-    """Number of 4-connected clusters of True cells (merged across edges when periodic)."""
+def cluster_labels(contact: np.ndarray, periodic: bool = False) -> tuple[np.ndarray, int]:
+    """Label the 4-connected contact spots: ``(labels, n)`` with labels 1..n, 0 = no contact.
+
+    In a periodic domain, spots that wrap across the boundary get one label (the
+    scikit-image labelling of the cell grid, then a union-find over the opposite edges).
+    """
     from skimage.measure import label
 
-    if not contact.any():
-        return 0
+    contact = np.asarray(contact, dtype=bool)
     labels, n = label(contact, connectivity=1, return_num=True)
     if not periodic or n <= 1:
-        return int(n)
-    parent = list(range(n + 1))
+        return labels, int(n)
+    parent = np.arange(n + 1)
 
-    def find(a: int) -> int:
+    def root(a: int) -> int:
         while parent[a] != a:
             parent[a] = parent[parent[a]]
-            a = parent[a]
+            a = int(parent[a])
         return a
 
-    for a_edge, b_edge in ((labels[0, :], labels[-1, :]), (labels[:, 0], labels[:, -1])):
-        both = (a_edge > 0) & (b_edge > 0)
-        for a, b in zip(a_edge[both], b_edge[both]):
-            ra, rb = find(int(a)), find(int(b))
+    for first, last in ((labels[0, :], labels[-1, :]), (labels[:, 0], labels[:, -1])):
+        both = (first > 0) & (last > 0)
+        for a, b in zip(first[both], last[both]):
+            ra, rb = root(int(a)), root(int(b))
             if ra != rb:
-                parent[ra] = rb
-    return len({find(k) for k in range(1, n + 1)})
+                parent[max(ra, rb)] = min(ra, rb)
+    roots = np.array([root(k) for k in range(n + 1)])
+    _, dense = np.unique(roots, return_inverse=True)  # 0 stays 0: root(0) == 0 is smallest
+    return dense.reshape(-1)[labels], int(dense.max())
+
+
+def count_clusters(contact: np.ndarray, periodic: bool = False) -> int:
+    """Number of 4-connected clusters of True cells (merged across edges when periodic)."""
+    if not np.any(contact):
+        return 0
+    return cluster_labels(contact, periodic)[1]
 
 
 def load_radius(pressure: np.ndarray, x: np.ndarray, y: np.ndarray, centre: tuple[float, float],

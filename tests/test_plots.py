@@ -226,8 +226,7 @@ def test_pressure_map_numbers_every_cluster(tmp_path, seed):
 
 
 def test_cluster_labels_wrap_in_periodic_domains():
-    from contact.result import count_clusters
-    from surfmet.plots.contact import cluster_labels
+    from contact.result import cluster_labels, count_clusters
 
     c = np.zeros((20, 20), bool)
     c[5:8, 0:3] = True

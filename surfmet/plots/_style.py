@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
 
@@ -37,3 +38,38 @@ def finish(fig: Any, path: str | Path | None = None, dpi: int = 120) -> Any:
 def close(fig: Any) -> None:
     """Release a figure's memory (batch runs make many)."""
     pyplot().close(fig)
+
+
+def lateral_unit(extent: float) -> tuple[float, str]:
+    """Scale (metres per unit) and name of the unit for lateral axes: µm up to 2 mm, mm
+    beyond, so that tick labels stay short."""
+    return (MM, "mm") if abs(extent) > 2e-3 else (UM, "µm")
+
+
+def nice_length(target: float) -> float:
+    """The 1-2-5 × 10ⁿ length closest below ``target`` (for scale bars)."""
+    if not target > 0:
+        return 0.0
+    e = math.floor(math.log10(target))
+    for m in (5.0, 2.0, 1.0):
+        if m * 10**e <= target:
+            return m * 10**e
+    return 10.0 ** (e - 1) * 5.0  # pragma: no cover - unreachable
+
+
+def add_scale_bar(ax: Any, extent_m: float, scale: float, unit: str, color: str = "white"
+                  ) -> Any:
+    """A lateral scale bar of a round length (about a fifth of ``extent_m``) in the lower
+    right corner of ``ax`` (whose data units are ``scale`` metres)."""
+    from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
+
+    length = nice_length(extent_m / 5.0)
+    if length <= 0:
+        return None
+    # labelled in the axes' own unit, so the bar and the ticks never disagree
+    bar = AnchoredSizeBar(ax.transData, length / scale, f"{length / scale:g} {unit}",
+                          "lower right",
+                          pad=0.4, color=color, frameon=False, size_vertical=0,
+                          label_top=True, sep=3)
+    ax.add_artist(bar)
+    return bar

@@ -6,7 +6,6 @@ the extent passes 2 mm, :func:`lateral_unit`), pressures in MPa, wavevectors in 
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -15,44 +14,9 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Profile, Topography
-from surfmet.plots._style import MM, UM, finish, new_figure
+from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
 
 HEIGHT_LABEL = "height (µm)"
-
-
-def lateral_unit(extent: float) -> tuple[float, str]:
-    """Scale (metres per unit) and name of the unit for lateral axes: µm up to 2 mm, mm
-    beyond, so that tick labels stay short."""
-    return (MM, "mm") if abs(extent) > 2e-3 else (UM, "µm")
-
-
-def nice_length(target: float) -> float:
-    """The 1-2-5 × 10ⁿ length closest below ``target`` (for scale bars)."""
-    if not target > 0:
-        return 0.0
-    e = math.floor(math.log10(target))
-    for m in (5.0, 2.0, 1.0):
-        if m * 10**e <= target:
-            return m * 10**e
-    return 10.0 ** (e - 1) * 5.0  # pragma: no cover - unreachable
-
-
-def add_scale_bar(ax: Any, extent_m: float, scale: float, unit: str, color: str = "white"
-                  ) -> Any:
-    """A lateral scale bar of a round length (about a fifth of ``extent_m``) in the lower
-    right corner of ``ax`` (whose data units are ``scale`` metres)."""
-    from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
-
-    length = nice_length(extent_m / 5.0)
-    if length <= 0:
-        return None
-    # labelled in the axes' own unit, so the bar and the ticks never disagree
-    bar = AnchoredSizeBar(ax.transData, length / scale, f"{length / scale:g} {unit}",
-                          "lower right",
-                          pad=0.4, color=color, frameon=False, size_vertical=0,
-                          label_top=True, sep=3)
-    ax.add_artist(bar)
-    return bar
 
 
 def height_map(

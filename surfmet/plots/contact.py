@@ -12,39 +12,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.plots._style import MPA, finish, new_figure
-from surfmet.plots.areal import add_scale_bar, lateral_unit
-
-
-def cluster_labels(contact: np.ndarray, periodic: bool = False) -> tuple[np.ndarray, int]:
-    """Label the 4-connected contact spots (1..n, 0 = no contact).
-
-    The connectivity is that of :attr:`contact.ContactResult.n_clusters`; in a periodic
-    domain spots that wrap across the boundary get one label.
-    """
-    from skimage.measure import label
-
-    contact = np.asarray(contact, dtype=bool)
-    labels, n = label(contact, connectivity=1, return_num=True)
-    if not periodic or n <= 1:
-        return labels, int(n)
-    parent = np.arange(n + 1)
-
-    def root(a: int) -> int:
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = int(parent[a])
-        return a
-
-    for first, last in ((labels[0, :], labels[-1, :]), (labels[:, 0], labels[:, -1])):
-        both = (first > 0) & (last > 0)
-        for a, b in zip(first[both], last[both]):
-            ra, rb = root(int(a)), root(int(b))
-            if ra != rb:
-                parent[max(ra, rb)] = min(ra, rb)
-    roots = np.array([root(k) for k in range(n + 1)])
-    _, dense = np.unique(roots, return_inverse=True)  # 0 stays 0 (root(0) == 0 is smallest)
-    return dense.reshape(-1)[labels], int(dense.max())
+from surfmet.plots._style import MPA, add_scale_bar, finish, lateral_unit, new_figure
 
 
 def pressure_map(
@@ -112,6 +80,8 @@ def pressure_map(
                    cmap=cm, vmin=0.0, vmax=vmax / MPA, interpolation="nearest", aspect="equal")
     cb = fig.colorbar(im, ax=ax, shrink=0.9, extend="max" if pmax > vmax else "neither")
     cb.set_label("contact pressure (MPa)")
+    from contact.result import cluster_labels
+
     labels, n = cluster_labels(contact, bool(getattr(result, "periodic", False)))
     if zoom and contact.any():
         # frame the contact (with a margin), not the whole solver domain

@@ -14,8 +14,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.plots._style import UM, finish, new_figure
-from surfmet.plots.areal import lateral_unit
+from surfmet.plots._style import UM, finish, lateral_unit, new_figure
 
 
 def profile_figure(analysis: Any, path: str | Path | None = None, *, title: str | None = None

@@ -65,9 +65,9 @@ def residual_figure(
             ax.set_title(f"{t.name}: {t.effect}", fontsize=9)
             ax.tick_params(labelsize=7)
             if gi == len(groups) - 1:
-                ax.set_xlabel("time since first mark, s", fontsize=8)
+                ax.set_xlabel("time since first mark (s)", fontsize=8)
             if ti == 0:
-                ax.set_ylabel("model − measured, frames", fontsize=8)
+                ax.set_ylabel("model − measured (frames)", fontsize=8)
             ax.legend(fontsize=6, loc="lower left")
     fig.suptitle("Law of motion: residuals of constant acceleration vs the chosen model",
                  fontsize=10)
@@ -98,8 +98,8 @@ def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
             tt = np.linspace(0, tmax, 200)
             ax.plot(tt, c2 * tt**2 + c1 * tt + c0, "--", color=col, lw=1.2,
                     label=f"{g.name}: paper parabola {c2:.3f} t² + {c1:.3f} t {c0:+.3f}")
-    ax.set_xlabel("time since first mark, s")
-    ax.set_ylabel("rotation angle, rad")
+    ax.set_xlabel("time since first mark (s)")
+    ax.set_ylabel("rotation angle (rad)")
     ax.legend(fontsize=7)
     ax.set_title("Law of motion: data (x = misread), chosen models (—), paper's fits (--)",
                  fontsize=9)
@@ -124,8 +124,8 @@ def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -
             omega = d / np.maximum(tt[phi.size:] - tt[: phi.size], 1e-12)
             eps = p["eps0"] - p["eta"] * (phi - p["phi0"]) - p["gamma"] * omega
             ax.plot(phi, eps, color=col, lw=1, label=f"{name} ({t.selected})")
-    ax.set_xlabel("rotation angle, rad")
-    ax.set_ylabel("smooth angular acceleration, rad/s²")
+    ax.set_xlabel("rotation angle (rad)")
+    ax.set_ylabel("smooth angular acceleration (rad/s²)")
     ax.legend(fontsize=7)
     return finish(fig, path)
 
@@ -144,7 +144,7 @@ def rolling_law_figure(inference: Any, path: str | Path | None = None,
     ax.axhline(1.0, color="k", lw=0.6, ls=":")
     ax.axhline(4 / 3, color="0.5", lw=0.6, ls="--")
     ax.text(ax.get_xlim()[0], 4 / 3, " Hertz 4/3", fontsize=7, va="bottom")
-    ax.set_xlabel("assumed equivalent slope asin(sin α sin β), degrees")
+    ax.set_xlabel("assumed equivalent slope asin(sin α sin β) (°)")
     ax.set_ylabel("λ implied by the accelerations")
     ax.set_ylim(0, min(12.0, float(np.nanmax([np.nanmax(i.lam) for _, i in infs] + [2])) * 1.3))
     ax.legend(fontsize=7)
