@@ -30,7 +30,7 @@ remain are corrected at each point. Three treatments, the same as the profile en
 Outputs are NaN where the input is NaN. Short kernels are applied directly
 (:func:`scipy.ndimage.correlate1d`); long ones by FFT along each axis with zero padding (a
 linear, not circular, correlation). On a complete grid the weight moments are separable
-(outer products of 1D sums), so the moment filter costs four 1D FFT passes instead of two.
+(outer products of 1D sums), so the moment filter adds only passes over the edge bands.
 """
 
 from __future__ import annotations
@@ -162,8 +162,31 @@ def _check_cutoff(topo: Topography, cutoff: float, what: str) -> float:
     return c
 
 
+def _edge_slices(mask: np.ndarray) -> list[slice]:
+    """The runs of True in a 1D mask, as slices (the lopsided bands at both ends)."""
+    idx = np.flatnonzero(mask)
+    if idx.size == 0:
+        return []
+    breaks = np.flatnonzero(np.diff(idx) > 1)
+    starts = np.concatenate(([idx[0]], idx[breaks + 1]))
+    stops = np.concatenate((idx[breaks] + 1, [idx[-1] + 1]))
+    return [slice(int(a), int(b)) for a, b in zip(starts, stops)]
+
+
 def _moment_full(z: np.ndarray, gx, kx, gy, ky) -> np.ndarray:
-    """Order-1 regression filter on a complete grid, using separable weight moments."""
+    """Order-1 regression filter on a complete grid, using separable weight moments.
+
+    With product weights g(u) g(v) the local plane fit decouples in centred coordinates,
+    so the fitted value at the point is
+
+        Z00 - mux (Z10 - mux Z00) / vx - muy (Z01 - muy Z00) / vy
+
+    (moments normalised by the weight sum; mux, vx the mean and variance of the x offsets
+    under the truncated weights, likewise for y). mux and muy vanish except in bands of
+    one nesting index along the edges, so the slope terms are computed on those bands
+    only; the normalisations are folded into per-row and per-column coefficients to keep
+    the passes over scan-sized arrays few.
+    """
     ny, nx = z.shape
 
     def sums(g: np.ndarray, k: np.ndarray, n: int) -> tuple[np.ndarray, ...]:
@@ -174,33 +197,37 @@ def _moment_full(z: np.ndarray, gx, kx, gy, ky) -> np.ndarray:
     sy0, sy1, sy2 = sums(gy, ky, ny)
     mux, muy = sx1 / sx0, sy1 / sy0
     vx, vy = sx2 / sx0 - mux**2, sy2 / sy0 - muy**2
-    # Shared forward FFTs: z along x (kernels g, g·k), then p = z ⋆ g along y (g, g·k).
-    edge_x = np.abs(mux) > 1e-12 * (1 + np.sqrt(vx))
-    edge_y = np.abs(muy) > 1e-12 * (1 + np.sqrt(vy))
-    xs = _correlate_many(z, (gx, gx * kx) if edge_x.any() else (gx,), 1)
-    px, qx = xs[0], (xs[1] if len(xs) > 1 else None)
-    inv = np.outer(1.0 / sy0, 1.0 / sx0)
-    ys = _correlate_many(px, (gy, gy * ky) if edge_y.any() else (gy,), 0)
-    z00, z01 = ys[0], (ys[1] if len(ys) > 1 else None)
-    z00 *= inv
-    out = z00
-    # Slope terms matter only where the truncated kernel is lopsided (near the edges);
-    # in place, because these arrays are the size of the scan.
-    corr_x = None
-    if qx is not None:
-        cols = np.flatnonzero(edge_x)
-        corr_x = _correlate_axis(np.ascontiguousarray(qx[:, cols]), gy, 0)
-        corr_x *= inv[:, cols]
-        corr_x -= mux[cols] * z00[:, cols]
-        corr_x *= mux[cols] / vx[cols]
-    if z01 is not None:
-        z01 *= inv
-        tmp = np.multiply(z00, muy[:, None])
-        z01 -= tmp
-        z01 *= (muy / vy)[:, None]
-        out -= z01
-    if corr_x is not None:
-        out[:, cols] -= corr_x
+    bands_x = _edge_slices(np.abs(mux) > 1e-12 * (1 + np.sqrt(vx)))
+    bands_y = _edge_slices(np.abs(muy) > 1e-12 * (1 + np.sqrt(vy)))
+
+    # x pass: P = (z ⋆ g) / sx0 everywhere; on the x bands also the slope correction
+    # D = mux (Q - mux P) / vx with Q = (z ⋆ g·k) / sx0, which the y pass must subtract.
+    xs = _correlate_many(z, (gx, gx * kx) if bands_x else (gx,), 1)
+    p = xs[0]
+    p *= 1.0 / sx0
+    d_blocks = []
+    for b in bands_x:
+        q = xs[1][:, b]
+        d_blocks.append(q * (mux[b] / (vx[b] * sx0[b])) - p[:, b] * (mux[b] ** 2 / vx[b]))
+
+    # y pass on P: A = P ⋆ g, and on the y bands B = P ⋆ g·k for the y slope term.
+    ys = _correlate_many(p, (gy, gy * ky) if bands_y else (gy,), 0)
+    out = ys[0]
+    ca = 1.0 / sy0
+    for b in bands_y:
+        ca[b] *= 1.0 + muy[b] ** 2 / vy[b]
+    out *= ca[:, None]
+    for b in bands_y:
+        out[b] -= ys[1][b] * (muy[b] / (vy[b] * sy0[b]))[:, None]
+    if d_blocks:
+        # the x slope term is weighted along y like Z00 itself, by g / sy0
+        corr = _correlate_axis(np.concatenate(d_blocks, axis=1), gy, 0)
+        corr *= (1.0 / sy0)[:, None]
+        start = 0
+        for b, blk in zip(bands_x, d_blocks):
+            width = blk.shape[1]
+            out[:, b] -= corr[:, start:start + width]
+            start += width
     return out
 
 
