@@ -1,0 +1,531 @@
+"""Rolling resistance from a contact solution, and its load exponent lambda.
+
+Alaci et al. (2022) write the rolling-friction moment as M_r = s_r N^lambda. Here M_r is
+computed from the contact solution itself, under two dissipation models, over a sweep of
+loads, and lambda is fitted.
+
+Hysteresis model (Greenwood, Minshall & Tabor 1961, Proc. R. Soc. A 259:480; Johnson 1985,
+*Contact Mechanics*, sec. 9.2). A fraction alpha_h of the work done on the material as it
+is loaded on entering the contact is lost. With the body rolling towards +x, material
+passes through the contact in -x; per unit rolling distance the work put in is
+
+    W_in = iint p [-du_z/dx]_+ dA,      F_r = alpha_h W_in,      M_r = F_r R,
+
+with u_z the normal surface displacement (positive into the body). For a smooth Hertz
+sphere u_z = delta - r^2/(2R) inside the contact and F_r = (3/16) alpha_h N a / R (Johnson
+eq. 9.19), so M_r ∝ N^(4/3); for a cylinder F_r' = 2 alpha_h W' a / (3 pi R) and
+M_r ∝ W'^(3/2).
+
+Which displacement. (1) *Which body.* Under one frictionless pressure each half-space
+deflects in proportion to its compliance (1 - nu_i^2)/E_i, so body i takes the share
+``contact.materials.displacement_shares`` of the combined displacement the solver returns,
+and the work on it is that share of W_in. ``share`` selects the body that loses energy;
+the default 1 (the combined displacement) means both bodies lose the same fraction
+alpha_h. Neither the share nor alpha_h changes lambda. (2) *Which derivative.* The
+formula's d/dx stands for the rate at which a material point is loaded as it travels, the
+material derivative. For a smooth ball the field is steady in the contact frame and the
+two coincide. On rough surfaces in pure rolling, both surfaces' asperities travel *with*
+the material (at -V in the contact frame), so the asperity pattern is not steady: inside
+the contact u = delta - h with h = r^2/(2R) - z(material point), hence
+Du/Dt = V x / R exactly and the asperity slopes cancel. ``kinematics="rolling"`` (the
+default) evaluates this: W_in = (1/R) iint p [x]_+ dA. ``kinematics="frozen"`` evaluates
+the formula literally on the snapshot, -du/dx of the computed displacement field, in which
+the asperity slopes dz/dx enter; that is the loading of material flowing past asperities
+that stay put in the contact frame (a rough rigid slider, not rolling), kept for
+comparison.
+
+Plastic model (first pass). On its first pass the ball leaves a permanent track; the
+work of plastic flow at the flow pressure H per unit rolling distance is
+
+    F_pl = H * (permanent indentation volume per unit length of track)
+         = H * int d(y) dy,
+
+where d(y) is the mean permanent indentation of the material at lateral position y.
+A material point reaches its largest interference with the ball where it crosses the line
+x = 0 (the macroscopic interference delta - (x^2 + y^2)/(2R) is largest there), so its
+plastic indentation in the quasi-static elastic-plastic solution near x = 0 is its final
+one. d(y) is the mean of the solution's plastic displacement over the band |x| <= b
+around that line, with b chosen so that the macroscopic interference changes across the
+band by at most ``band`` (default 5 %) of the depth scale (the largest plastic
+displacement plus the roughness rms): a resolution-independent, nearly unbiased sample of
+the material's final state (one column for a smooth ball). Quasi-static: the asymmetry
+the track itself gives the pressure (the rear half meets already flattened material) is
+neglected. M_pl = F_pl R.
+
+Exponent. log M_r is fitted against log N by least squares over the sweep: lambda_eff is
+the slope, with a Student-t confidence interval; the local exponent d ln M / d ln N
+(second-order finite differences on the log grid) shows how lambda drifts with the load.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from contact.errors import ContactInputError
+
+KINEMATICS = ("rolling", "frozen")
+MODELS = ("hysteresis", "plastic")
+_DIRECTIONS = {"+x": (1, 1.0), "-x": (1, -1.0), "+y": (0, 1.0), "-y": (0, -1.0)}
+
+
+def _direction(direction: str) -> tuple[int, float]:
+    try:
+        return _DIRECTIONS[direction]
+    except KeyError:
+        raise ContactInputError(
+            f"direction must be one of {sorted(_DIRECTIONS)}, got {direction!r}"
+        ) from None
+
+
+def _check_fraction(value: float, what: str) -> float:
+    v = float(value)
+    if not (math.isfinite(v) and 0 < v <= 1):
+        raise ContactInputError(f"{what} must lie in (0, 1], got {value!r}")
+    return v
+
+
+def _fields(result: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, bool]:
+    """(pressure, displacement, x, y, cell area, is_line) of a 2D or a line result."""
+    p = np.asarray(result.pressure, dtype=float)
+    u = np.asarray(result.displacement, dtype=float)
+    if p.ndim == 1:
+        x = np.asarray(result.x, dtype=float)
+        return p[None, :], u[None, :], x, np.zeros(1), float(result.dx), True
+    return p, u, np.asarray(result.x, float), np.asarray(result.y, float), \
+        float(result.dx * result.dy), False
+
+
+def hysteresis_work(
+    result: Any,
+    radius: float | None = None,
+    *,
+    kinematics: str = "rolling",
+    direction: str = "+x",
+    share: float = 1.0,
+    apex: tuple[float, float] = (0.0, 0.0),
+) -> float:
+    """Work put into the material per unit rolling distance, iint p [-du_z/dx]_+ dA.
+
+    Parameters
+    ----------
+    result : contact.ContactResult or contact.line.LineContactResult
+        Contact solution (for a line contact, per unit length along the line: N/m).
+    radius : float
+        Radius R of the ball or cylinder (m); needed by ``kinematics="rolling"``.
+    kinematics : {"rolling", "frozen"}
+        "rolling": material derivative with the roughness travelling with the material,
+        -du_z/dx = (x - x_apex)/R in the contact (see the module notes); "frozen": the
+        snapshot's -du_z/dx of the computed displacement field (central differences).
+    direction : {"+x", "-x", "+y", "-y"}
+        Direction the ball rolls in (the material passes through the contact the other
+        way); a line contact rolls along x only.
+    share : float
+        Fraction of the combined displacement taken by the body that loses energy
+        (``contact.materials.displacement_shares``); 1 = the combined displacement.
+    apex : (float, float)
+        Coordinates of the ball's apex on the grid (m); the origin in
+        :mod:`contact.sphere`.
+
+    Returns
+    -------
+    float
+        Work per unit rolling distance (J/m = N; N for a line contact per unit length).
+    """
+    if kinematics not in KINEMATICS:
+        raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
+    share = _check_fraction(share, "the displacement share")
+    axis, sign = _direction(direction)
+    p, u, x, y, da, line = _fields(result)
+    if line and axis != 1:
+        raise ContactInputError("a line contact rolls along x: direction must be +x or -x")
+    if kinematics == "rolling":
+        if radius is None or not (math.isfinite(radius) and radius > 0):
+            raise ContactInputError("kinematics='rolling' needs the ball radius R (m)")
+        coord = (x - apex[0])[None, :] if axis == 1 else (y - apex[1])[:, None]
+        rate = sign * coord / radius
+    else:
+        if p.shape[axis] < 3:
+            raise ContactInputError("the grid is too small to differentiate the displacement")
+        step = float(result.dx) if axis == 1 else float(result.dy)
+        rate = -sign * np.gradient(u, step, axis=axis)
+    return share * float((p * np.clip(rate, 0.0, None)).sum() * da)
+
+
+def plastic_work(
+    result: Any,
+    radius: float,
+    *,
+    band: float = 0.05,
+    roughness_rms: float = 0.0,
+    direction: str = "+x",
+    apex: tuple[float, float] = (0.0, 0.0),
+) -> float:
+    """Plastic work per unit rolling distance on a first pass, H * int d(y) dy.
+
+    Parameters
+    ----------
+    result : contact.ContactResult
+        Elastic-perfectly-plastic solution (``hardness`` set).
+    radius : float
+        Ball radius R (m).
+    band : float
+        The band |x| <= b sampled for d(y) is as wide as lets the macroscopic
+        interference change by ``band`` times the depth scale (see the module notes).
+    roughness_rms : float
+        Rms of the roughness (m), part of the depth scale.
+    direction : {"+x", "-x", "+y", "-y"}
+        Rolling direction; the band lies across it.
+    apex : (float, float)
+        The ball's apex (m).
+
+    Returns
+    -------
+    float
+        F_pl in N (J per metre rolled); 0 when nothing yields.
+    """
+    H = getattr(result, "hardness", None)
+    if H is None:
+        raise ContactInputError("the plastic model needs an elastic-plastic solution "
+                                "(solve with a hardness)")
+    if not (math.isfinite(radius) and radius > 0):
+        raise ContactInputError(f"the radius must be a positive length, got {radius!r}")
+    if not (math.isfinite(band) and band > 0):
+        raise ContactInputError(f"band must be positive, got {band!r}")
+    axis, _ = _direction(direction)
+    upl = np.asarray(result.plastic_displacement, dtype=float)
+    depth = float(upl.max()) + max(float(roughness_rms), 0.0)
+    if depth <= 0 or not (upl > 0).any():
+        return 0.0
+    x = np.asarray(result.x, float) - apex[0]
+    y = np.asarray(result.y, float) - apex[1]
+    along, across = (x, float(result.dy)) if axis == 1 else (y, float(result.dx))
+    step = float(result.dx) if axis == 1 else float(result.dy)
+    half = max(math.sqrt(2.0 * radius * band * depth), 0.5 * step * (1 + 1e-9))
+    sel = np.abs(along) <= half
+    d = upl[:, sel].mean(axis=1) if axis == 1 else upl[sel, :].mean(axis=0)
+    return float(H) * float(d.sum()) * across
+
+
+@dataclass(frozen=True)
+class ExponentFit:
+    """Least-squares power law M = s N^lambda.
+
+    Attributes
+    ----------
+    exponent : float
+        lambda (the slope of ln M against ln N).
+    ci : (float, float)
+        Confidence interval of lambda (Student t, ``confidence`` level).
+    prefactor : float
+        s (unit: [M] / [N]^lambda).
+    stderr : float
+        Standard error of lambda.
+    n : int
+        Points fitted.
+    rms_log_residual : float
+        Rms of the residuals of ln M.
+    confidence : float
+    """
+
+    exponent: float
+    ci: tuple[float, float]
+    prefactor: float
+    stderr: float
+    n: int
+    rms_log_residual: float
+    confidence: float
+
+
+def fit_exponent(loads: Sequence[float], moments: Sequence[float],
+                 confidence: float = 0.95) -> ExponentFit:
+    """Fit ln M = ln s + lambda ln N by least squares, with a confidence interval.
+
+    Raises
+    ------
+    ContactInputError
+        Fewer than 3 points, non-positive values, or a single load value.
+    """
+    from scipy import stats
+
+    n_ = np.asarray(loads, dtype=float)
+    m_ = np.asarray(moments, dtype=float)
+    if n_.shape != m_.shape or n_.ndim != 1:
+        raise ContactInputError("loads and moments must be 1D arrays of the same length")
+    if n_.size < 3:
+        raise ContactInputError(f"fitting an exponent with a confidence interval needs at "
+                                f"least 3 loads, got {n_.size}")
+    if not (np.all(n_ > 0) and np.all(m_ > 0) and np.isfinite(n_).all()
+            and np.isfinite(m_).all()):
+        raise ContactInputError("loads and moments must be positive and finite to take logs")
+    if not 0 < confidence < 1:
+        raise ContactInputError(f"confidence must lie in (0, 1), got {confidence!r}")
+    lx, ly = np.log(n_), np.log(m_)
+    sxx = float(((lx - lx.mean()) ** 2).sum())
+    if sxx <= 0:
+        raise ContactInputError("the loads must not all be equal")
+    slope = float(((lx - lx.mean()) * (ly - ly.mean())).sum() / sxx)
+    icpt = float(ly.mean() - slope * lx.mean())
+    resid = ly - (icpt + slope * lx)
+    dof = n_.size - 2
+    se = math.sqrt(float((resid**2).sum()) / dof / sxx)
+    t = float(stats.t.ppf(0.5 + confidence / 2, dof))
+    return ExponentFit(exponent=slope, ci=(slope - t * se, slope + t * se),
+                       prefactor=math.exp(icpt), stderr=se, n=int(n_.size),
+                       rms_log_residual=math.sqrt(float((resid**2).mean())),
+                       confidence=float(confidence))
+
+
+def local_exponent(loads: Sequence[float], moments: Sequence[float]) -> np.ndarray:
+    """d ln M / d ln N at each load (second-order differences; one-sided at the ends)."""
+    n_ = np.asarray(loads, dtype=float)
+    m_ = np.asarray(moments, dtype=float)
+    if n_.size < 2 or n_.shape != m_.shape:
+        raise ContactInputError("the local exponent needs at least 2 loads and moments")
+    if not (np.all(n_ > 0) and np.all(m_ > 0)):
+        raise ContactInputError("loads and moments must be positive to take logs")
+    if n_.size == 2:
+        s = (math.log(m_[1]) - math.log(m_[0])) / (math.log(n_[1]) - math.log(n_[0]))
+        return np.array([s, s])
+    return np.gradient(np.log(m_), np.log(n_))
+
+
+def log_loads(lo: float, hi: float, n: int) -> np.ndarray:
+    """``n`` log-spaced loads from ``lo`` to ``hi`` (both included)."""
+    if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
+        raise ContactInputError(f"need 0 < lo < hi, got {lo!r}, {hi!r}")
+    if int(n) < 2:
+        raise ContactInputError("a load sweep needs at least 2 loads")
+    return np.geomspace(lo, hi, int(n))
+
+
+@dataclass(frozen=True, eq=False)
+class RollingSweep:
+    """Rolling resistance over a load sweep and its exponent.
+
+    Attributes
+    ----------
+    model : {"hysteresis", "plastic"}
+    loads : ndarray
+        Normal loads N (N; N/m for a line contact).
+    forces : ndarray
+        F_r, the dissipated work per unit rolling distance (N; N/m for a line).
+    moments : ndarray
+        M_r = F_r R (N m; N m/m for a line).
+    fit : ExponentFit or None
+        Power-law fit over the loads with a positive moment (None if fewer than 3).
+    local_lambda : ndarray
+        d ln M / d ln N (NaN where the moment is 0).
+    radius : float
+    settings : dict
+        alpha_h, share, kinematics, hardness, grid, ...
+    notes : tuple of str
+    results : tuple
+        The contact solutions (for figures; not part of JSON records).
+    """
+
+    model: str
+    loads: np.ndarray
+    forces: np.ndarray
+    moments: np.ndarray
+    fit: ExponentFit | None
+    local_lambda: np.ndarray
+    radius: float
+    settings: dict[str, Any] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()
+    results: tuple[Any, ...] = field(default=(), repr=False)
+
+    @property
+    def lambda_eff(self) -> float:
+        """The fitted exponent (NaN without a fit)."""
+        return self.fit.exponent if self.fit is not None else math.nan
+
+    @property
+    def lambda_ci(self) -> tuple[float, float]:
+        """Its confidence interval (NaN, NaN without a fit)."""
+        return self.fit.ci if self.fit is not None else (math.nan, math.nan)
+
+
+def _finish(model: str, loads: np.ndarray, forces: np.ndarray, radius: float,
+            settings: dict[str, Any], notes: list[str], results: Sequence[Any],
+            confidence: float) -> RollingSweep:
+    moments = forces * radius
+    pos = moments > 0
+    fit = None
+    if pos.sum() >= 3:
+        fit = fit_exponent(loads[pos], moments[pos], confidence)
+    else:
+        notes.append(f"only {int(pos.sum())} of {loads.size} loads dissipate: no exponent "
+                     "fitted (3 needed)")
+    if (~pos).any() and pos.any():
+        notes.append(f"no dissipation at {int((~pos).sum())} load(s) "
+                     f"({', '.join(f'{w:.4g}' for w in loads[~pos])}); fitted over the rest")
+    local = np.full(loads.size, math.nan)
+    if pos.sum() >= 2:
+        local[pos] = local_exponent(loads[pos], moments[pos])
+    return RollingSweep(model=model, loads=loads, forces=forces, moments=moments, fit=fit,
+                        local_lambda=local, radius=float(radius), settings=settings,
+                        notes=tuple(notes), results=tuple(results))
+
+
+def _loads(loads: Iterable[float]) -> np.ndarray:
+    arr = np.asarray(list(loads), dtype=float)
+    if arr.ndim != 1 or arr.size < 1:
+        raise ContactInputError("give at least one load")
+    if not (np.isfinite(arr).all() and (arr > 0).all()):
+        raise ContactInputError("loads must be positive and finite (N)")
+    return np.sort(arr)
+
+
+def sphere_sweep(
+    radius: float,
+    e_star: float,
+    loads: Iterable[float],
+    *,
+    model: str = "hysteresis",
+    roughness: np.ndarray | None = None,
+    roughness_dx: float | None = None,
+    roughness_dy: float | None = None,
+    roughness_rms: float | None = None,
+    centre: tuple[float, float] | None = None,
+    hardness: float | None = None,
+    alpha_h: float = 1.0,
+    share: float = 1.0,
+    kinematics: str = "rolling",
+    band: float = 0.05,
+    grid: int | None = None,
+    size: float | None = None,
+    max_grid: int = 1024,
+    tol: float = 1e-6,
+    confidence: float = 0.95,
+    progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
+) -> RollingSweep:
+    """Rolling resistance of a (rough) ball on a plate over a load sweep.
+
+    One domain is sized for the largest load (enlarged if a solution reaches its edge)
+    and every load is warm-started from the previous one, in increasing order.
+
+    Parameters
+    ----------
+    radius, e_star : float
+        Ball radius R (m), composite modulus E* (Pa).
+    loads : iterable of float
+        Normal loads (N); see :func:`log_loads`.
+    model : {"hysteresis", "plastic"}
+        Dissipation model (module notes). "plastic" needs ``hardness``.
+    roughness, roughness_dx, roughness_dy : optional
+        Composite roughness (m) and pitch, as for :class:`contact.sphere.SphereContact`.
+    roughness_rms : float, optional
+        Rms roughness for the plastic band width (default: from ``roughness``).
+    centre : (float, float), optional
+        Where the ball's apex sits on the roughness map (X, Y in m from its first point);
+        default the middle of the map.
+    hardness : float, optional
+        Flow pressure of the softer body (Pa).
+    alpha_h : float
+        Hysteresis loss fraction (hysteresis model); M_r is proportional to it.
+    share : float
+        Displacement share of the lossy body (hysteresis model; 1 = both bodies).
+    kinematics : {"rolling", "frozen"}
+        See :func:`hysteresis_work`.
+    band : float
+        See :func:`plastic_work`.
+    grid, size, max_grid, tol
+        Domain and solver settings (:class:`contact.sphere.SphereContact`).
+    confidence : float
+        Level of the exponent's confidence interval.
+    progress : callable, optional
+        Wraps the iterable of loads (e.g. a progress bar).
+    """
+    from contact.hertzcheck import solve_elastic_plastic
+    from contact.sphere import SphereContact
+
+    if model not in MODELS:
+        raise ContactInputError(f"model must be one of {MODELS}, got {model!r}")
+    if model == "plastic" and hardness is None:
+        raise ContactInputError("the plastic model needs the hardness of the softer body")
+    if not (math.isfinite(alpha_h) and alpha_h > 0):
+        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    if kinematics not in KINEMATICS:
+        raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
+    _check_fraction(share, "the displacement share")
+    w = _loads(loads)
+    problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness,
+                            roughness_dx=roughness_dx, roughness_dy=roughness_dy,
+                            centre=centre, grid=grid, size=size, max_grid=max_grid)
+    rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
+    forces = np.zeros(w.size)
+    results: list[Any] = []
+    notes = list(problem.notes)
+    prev = None
+    upl = None
+    sequence = progress(range(w.size)) if progress is not None else range(w.size)
+    for k in sequence:
+        el = problem.solve(float(w[k]), initial=prev, tol=tol)
+        prev = el
+        if model == "hysteresis":
+            res = el
+            forces[k] = alpha_h * hysteresis_work(el, radius, kinematics=kinematics,
+                                                  share=share)
+        else:
+            n_now = problem.domain.n
+            start = upl if upl is not None and upl.shape == (n_now, n_now) else None
+            res = solve_elastic_plastic(problem, float(w[k]), float(hardness), elastic=el,
+                                        plastic_start=start, tol=tol)
+            upl = np.asarray(res.plastic_displacement)
+            forces[k] = plastic_work(res, radius, band=band, roughness_rms=rms)
+        results.append(res)
+    for r in results:
+        notes.extend(n for n in r.notes if n not in notes)
+    settings = {"model": model, "alpha_h": alpha_h if model == "hysteresis" else None,
+                "share": share if model == "hysteresis" else None,
+                "kinematics": kinematics if model == "hysteresis" else None,
+                "band": band if model == "plastic" else None, "hardness": hardness,
+                "e_star": float(e_star), "grid": problem.domain.n, "dx": problem.domain.dx,
+                "roughness_rms": rms, "contact": "sphere"}
+    return _finish(model, w, forces, float(radius), settings, notes, results, confidence)
+
+
+def cylinder_sweep(
+    radius: float,
+    e_star: float,
+    loads_per_length: Iterable[float],
+    *,
+    alpha_h: float = 1.0,
+    share: float = 1.0,
+    kinematics: str = "rolling",
+    n: int = 1024,
+    size: float | None = None,
+    roughness: np.ndarray | None = None,
+    roughness_dx: float | None = None,
+    confidence: float = 0.95,
+    progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
+) -> RollingSweep:
+    """Hysteresis rolling resistance of a cylinder (plane strain) over a load sweep.
+
+    Loads, forces and moments are per unit length of the cylinder (N/m, N/m, N m/m). One
+    domain, 2.5 contact widths of the largest load (unless ``size``), serves every load.
+    """
+    from contact.hertz import hertz_cylinder
+    from contact.line import solve_cylinder
+
+    if not (math.isfinite(alpha_h) and alpha_h > 0):
+        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    w = _loads(loads_per_length)
+    side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
+    forces = np.zeros(w.size)
+    results = []
+    sequence = progress(range(w.size)) if progress is not None else range(w.size)
+    for k in sequence:
+        res = solve_cylinder(radius, float(w[k]), e_star, n=n, size=side, roughness=roughness,
+                             roughness_dx=roughness_dx)
+        forces[k] = alpha_h * hysteresis_work(res, radius, kinematics=kinematics, share=share)
+        results.append(res)
+    settings = {"model": "hysteresis", "alpha_h": alpha_h, "share": share,
+                "kinematics": kinematics, "e_star": float(e_star), "grid": int(n),
+                "dx": side / n, "contact": "cylinder"}
+    return _finish("hysteresis", w, forces, float(radius), settings, [], results, confidence)

@@ -1,0 +1,104 @@
+"""``surfmet hertz-check PLATE``: does Hertz hold for this scan at this load?"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length, pressure
+
+EPILOG = """examples:
+  surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,aluminium
+  surfmet hertz-check plate.nms --ball ball.nms --radius 20mm --load 4.7N \\
+      --materials steel,aluminium --json
+  surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,al:H=0.9GPa \\
+      --plot hertz.png
+
+The verdict combines the Greenwood-Johnson-Matsubara parameter alpha = sigma R / a0^2
+(sigma: combined rms roughness after levelling the plate and removing the ball's
+sphere; Hertz holds for alpha < 0.05) with a boundary-element solution on the scans
+compared with Hertz: averaged pressure profile, effective contact radius, approach, and
+yield at the softer material's hardness. Spikes are removed from the scans first.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "hertz-check",
+        help="does Hertz hold for this rough contact? (GJM alpha and boundary elements)",
+        description="Compare the rough contact of a ball on a scanned plate (and ball) with "
+        "Hertz theory, and say whether Hertz holds, with the reasons.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("plate", metavar="PLATE", help="scan of the plate")
+    p.add_argument("--ball", metavar="BALL", help="scan of the ball (its sphere is removed)")
+    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
+                   help="ball radius, e.g. 20mm")
+    p.add_argument("--load", type=force, required=True, metavar="F",
+                   help="normal load, e.g. 10N")
+    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
+                   help="ball and plate materials, e.g. steel,aluminium "
+                   "(override with NAME:E=..:nu=..:H=..)")
+    p.add_argument("--hardness", type=pressure, metavar="P",
+                   help="hardness of the softer body (default: the materials' table value)")
+    p.add_argument("--elastic", action="store_true",
+                   help="elastic solution only (do not check yield)")
+    p.add_argument("--keep-spikes", action="store_true",
+                   help="do not remove spikes from the scans")
+    p.add_argument("--grid", type=int, metavar="N",
+                   help="contact grid, cells per side (default: automatic)")
+    p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
+                   help="contact reaching the domain edge: enlarge (default), warn, fail")
+    p.add_argument("--plot", metavar="FILE",
+                   help="write the pressure map and the radial profile against Hertz")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    from surfmet.errors import SurfmetInputError
+    from surfmet.hertz_check import hertz_check
+    from surfmet.units import format_length
+
+    if args.grid is not None and args.grid < 8:
+        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    if args.elastic and args.hardness is not None:
+        raise SurfmetInputError("--elastic and --hardness exclude each other")
+    check = hertz_check(args.plate, radius=args.radius, load=args.load,
+                        materials=args.materials, ball=args.ball, hardness=args.hardness,
+                        plastic=not args.elastic, spikes=not args.keep_spikes, grid=args.grid,
+                        on_edge=args.on_edge)
+    for note in check.notes:
+        log(f"note: {note}")
+    if args.plot:
+        from surfmet.plots._style import close
+
+        close(check.figure(args.plot))
+        log(f"figure written to {args.plot}")
+    if args.json:
+        emit_json(check.to_json())
+        return 0
+    c = check.comparison
+    hz = c.hertz
+    print(f"{'Hertz holds' if c.hertz_holds else 'Hertz does not hold'} "
+          f"(α = {c.alpha:.3g}, σ = {format_length(c.sigma)})")
+    for reason in c.reasons:
+        print(f"  - {reason}")
+    print()
+    print(f"{'':16}{'Hertz':>14}{'BEM':>14}")
+    rows = [
+        ("peak pressure", f"{hz.p0 / 1e6:.4g} MPa", f"{c.pmax / 1e6:.4g} MPa"),
+        ("contact radius", format_length(hz.a), format_length(c.contact_radius)),
+        ("approach", format_length(hz.delta), format_length(c.approach)),
+        ("area / πa0²", "1", f"{c.area_fraction:.3g}"),
+        ("yielded / πa0²", "0", f"{c.plastic_fraction:.3g}"),
+    ]
+    for name, a, b in rows:
+        print(f"{name:16}{a:>14}{b:>14}")
+    res = check.result
+    print(f"grid {res.shape[1]} x {res.shape[0]}, pitch {format_length(res.dx)}; "
+          f"load {check.load:.4g} N, R = {format_length(check.radius)}, "
+          f"{check.ball_material.name} on {check.plate_material.name}")
+    return 0

@@ -1,0 +1,123 @@
+"""``surfmet rolling``: rolling-resistance moment over a load sweep and its exponent lambda."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import (
+    add_json_flag,
+    emit_json,
+    force_range,
+    log,
+    positive_length,
+    pressure,
+)
+
+EPILOG = """examples:
+  surfmet rolling --radius 20mm --materials steel,aluminium --loads 1N:100N:9
+  surfmet rolling --plate plate.x3p --ball ball.x3p --radius 20mm \\
+      --materials steel,aluminium --loads 1N:100N:9 --json
+  surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
+      --loads 1N:100N:9 --model plastic --plot lambda.png
+
+M_r = s_r N^lambda is computed from the contact solution at each load (log-spaced,
+warm-started): the hysteresis model (Johnson, Contact Mechanics 9.2: the work done on the
+material entering the contact, times alpha_h) or the plastic model (the plastic work of
+the first pass at the softer body's hardness). lambda_eff is the least-squares slope of
+log M_r against log N with its confidence interval; the local exponent shows how it
+drifts with the load. A smooth ball gives lambda = 4/3.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "rolling",
+        help="rolling-resistance exponent lambda (M_r = s_r N^lambda) from contact solutions",
+        description="Rolling-resistance moment of a ball on a (rough) plate over a load "
+        "sweep, under the hysteresis or the plastic dissipation model, and the fitted "
+        "exponent lambda with its confidence interval.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
+    p.add_argument("--ball", metavar="FILE", help="scan of the ball (its sphere is removed)")
+    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
+                   help="ball radius, e.g. 20mm")
+    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
+                   help="ball and plate materials, e.g. steel,aluminium")
+    p.add_argument("--loads", type=force_range, required=True, metavar="F1:F2[:N]",
+                   help="load range, N log-spaced loads (default 9), e.g. 1N:100N:9")
+    p.add_argument("--model", choices=("hysteresis", "plastic"), default="hysteresis",
+                   help="dissipation model (default hysteresis)")
+    p.add_argument("--alpha-h", type=float, default=1.0, metavar="A",
+                   help="hysteresis loss fraction (default 1: M_r is the work put in)")
+    p.add_argument("--lossy", choices=("both", "plate", "ball"), default="both",
+                   help="body that dissipates (its share of the displacement; default both)")
+    p.add_argument("--kinematics", choices=("rolling", "frozen"), default="rolling",
+                   help="rolling: asperities travel with the material (default); frozen: "
+                   "the snapshot's -du/dx, asperity slopes included")
+    p.add_argument("--hardness", type=pressure, metavar="P",
+                   help="hardness of the softer body for the plastic model (default: table)")
+    p.add_argument("--keep-spikes", action="store_true",
+                   help="do not remove spikes from the scans")
+    p.add_argument("--grid", type=int, metavar="N",
+                   help="contact grid, cells per side (default: automatic)")
+    p.add_argument("--plot", metavar="FILE", help="write M_r(N) and the local exponent")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    import math
+
+    from contact.rolling import log_loads
+    from surfmet.cli._common import progress
+    from surfmet.errors import SurfmetInputError
+    from surfmet.rolling import rolling_resistance
+
+    lo, hi, n = args.loads
+    n = 9 if n is None else n
+    if n < 3:
+        raise SurfmetInputError("--loads needs at least 3 loads to fit an exponent with a "
+                                "confidence interval")
+    if not (math.isfinite(args.alpha_h) and args.alpha_h > 0):
+        raise SurfmetInputError("--alpha-h must be positive")
+    if args.grid is not None and args.grid < 8:
+        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    if args.hardness is not None and args.model != "plastic":
+        raise SurfmetInputError("--hardness applies to --model plastic")
+    rep = rolling_resistance(
+        args.plate, args.ball, radius=args.radius, materials=args.materials,
+        loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
+        alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
+        spikes=not args.keep_spikes, grid=args.grid,
+        progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
+    )
+    for note in rep.notes:
+        log(f"note: {note}")
+    if args.plot:
+        from surfmet.plots._style import close
+
+        close(rep.figure(args.plot))
+        log(f"figure written to {args.plot}")
+    if args.json:
+        emit_json(rep.to_json())
+        return 0
+    s = rep.sweep
+    lo_ci, hi_ci = s.lambda_ci
+    print(f"model          {s.model}"
+          + (f" ({s.settings['kinematics']} kinematics, alpha_h = {args.alpha_h:g})"
+             if s.model == "hysteresis" else
+             f" (first pass, hardness {s.settings['hardness'] / 1e9:.4g} GPa)"))
+    if s.fit is not None:
+        print(f"lambda_eff     {s.lambda_eff:.4f}   "
+              f"{100 * s.fit.confidence:.0f} % CI [{lo_ci:.4f}, {hi_ci:.4f}]  "
+              f"(s_r = {s.fit.prefactor:.4g} N^(1-λ) m)")
+    else:
+        print("lambda_eff     not fitted (fewer than 3 loads dissipate)")
+    print(f"{'load (N)':>12}{'M_r (N m)':>14}{'local λ':>10}")
+    for w, m, lam in zip(s.loads, s.moments, s.local_lambda):
+        print(f"{w:12.4g}{m:14.4g}{lam:10.4f}")
+    return 0

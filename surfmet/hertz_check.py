@@ -1,0 +1,315 @@
+"""Does Hertz hold for this scan? Scan-level Hertz check: pairing, boundary elements, verdict.
+
+:func:`hertz_check` takes the plate scan (and optionally the ball scan), removes spikes
+(optical outliers are not asperities: a single 50 µm spike would carry newtons in an
+elastic solution), levels the plate, removes the ball's sphere, pairs the two on one grid
+(:func:`surfmet.pairing.prepare_pair`), solves the contact elastically and with the softer
+body's hardness (:func:`contact.hertzcheck.check_sphere`) and compares with Hertz
+(criteria and verdict in :mod:`contact.hertzcheck`).
+
+The combined roughness sigma of the GJM parameter is sqrt(sigma_plate^2 + sigma_ball^2),
+each the rms of its scan's *measured* points after its own form removal (plane for the
+plate, best-fit sphere for the ball), over the whole scan: non-measured points neither
+count nor are replaced by anything in sigma (the contact solver sees them filled with the
+nearest measured value, which the notes report).
+
+``HertzCheck.to_json()`` has exactly the keys ``hertz_holds``, ``alpha``, ``sigma``,
+``hertz`` {a, delta, p0}, ``bem`` {pmax, contact_radius, approach, area_fraction,
+plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}; every
+dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
+``plastic_fraction`` are fractions of the nominal Hertz area pi a0^2;
+``contact_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+
+
+def parse_materials(materials: Any) -> tuple[Any, Any]:
+    """``"BALL,PLATE"`` (each ``NAME[:E=..][:nu=..][:H=..]``) or a pair of
+    :class:`contact.materials.Material` -> (ball, plate)."""
+    from contact.materials import Material
+
+    if isinstance(materials, (tuple, list)) and len(materials) == 2 and all(
+            isinstance(m, Material) for m in materials):
+        return materials[0], materials[1]
+    if not isinstance(materials, str):
+        raise SurfmetInputError(f"materials must be 'BALL,PLATE' text, got {materials!r}")
+    from surfmet.cli.contact import parse_material
+
+    parts = [s for s in materials.split(",") if s.strip()]
+    if len(parts) != 2:
+        raise SurfmetInputError(f"materials need two names, BALL,PLATE; got {materials!r}")
+    return parse_material(parts[0]), parse_material(parts[1])
+
+
+def _scan(obj: Any, what: str) -> Topography | None:
+    if obj is None:
+        return None
+    if isinstance(obj, (str, os.PathLike, Path)):
+        import surfmet
+
+        obj = surfmet.read(obj)
+    if not isinstance(obj, Topography):
+        kind = getattr(obj, "kind", type(obj).__name__)
+        raise SurfmetInputError(f"the Hertz check needs an areal scan of the {what}, got {kind}")
+    return obj
+
+
+@dataclass(frozen=True, eq=False)
+class PreparedScans:
+    """Scans made ready for the contact engine.
+
+    Attributes
+    ----------
+    pair : PairedRoughness or None
+        Composite roughness on one grid (None: two smooth bodies).
+    sigma, sigma_plate, sigma_ball : float
+        Combined rms roughness and its parts (m), from the measured points (0 for a
+        surface not given).
+    notes : tuple of str
+    spikes_removed : dict
+        Spikes removed per scan (counts).
+    """
+
+    pair: Any
+    sigma: float
+    sigma_plate: float
+    sigma_ball: float
+    notes: tuple[str, ...]
+    spikes_removed: dict[str, int]
+
+
+def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -> PreparedScans:
+    """Spike removal, levelling, sphere removal and pairing of a plate and a ball scan.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path, optional
+        The scans (either, both or none).
+    spikes : bool
+        Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first; they
+        become non-measured points.
+    """
+    from surfmet.pairing import prepare_pair
+
+    plate = _scan(plate, "plate")
+    ball = _scan(ball, "ball")
+    if plate is None and ball is None:
+        return PreparedScans(None, 0.0, 0.0, 0.0, ("no scan: smooth surfaces",), {})
+    notes: list[str] = []
+    removed: dict[str, int] = {}
+    if spikes:
+        from surfmet.spikes import remove_spikes
+
+        cleaned = []
+        for name, scan in (("plate", plate), ("ball", ball)):
+            if scan is None:
+                cleaned.append(None)
+                continue
+            new, report = remove_spikes(scan)
+            removed[name] = int(report.count)
+            if report.count:
+                notes.append(f"{report.count} spike(s) removed from the {name} scan "
+                             f"({report.n_points} points made non-measured)")
+            cleaned.append(new)
+        plate, ball = cleaned
+    pair = prepare_pair(plate, ball)
+    notes.extend(pair.notes)
+    s_plate = s_ball = 0.0
+    if "plate" in pair.fits:
+        s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
+    if "ball" in pair.fits:
+        s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
+    return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
+                         sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed)
+
+
+def _q(value: Any, unit: str) -> dict[str, Any]:
+    from surfmet.units import quantity
+
+    return quantity(value, unit)
+
+
+@dataclass(frozen=True, eq=False)
+class HertzCheck:
+    """Outcome of :func:`hertz_check`.
+
+    Attributes
+    ----------
+    comparison : contact.hertzcheck.HertzComparison
+        Criteria, verdict and the compared quantities.
+    elastic, plastic : contact.ContactResult
+        Elastic solution, and the elastic-plastic one (None without a hardness).
+    radius, load, e_star : float
+    ball_material, plate_material : contact.materials.Material
+    scans : PreparedScans
+    notes : tuple of str
+    """
+
+    comparison: Any
+    elastic: Any
+    plastic: Any
+    radius: float
+    load: float
+    e_star: float
+    ball_material: Any
+    plate_material: Any
+    scans: PreparedScans
+    notes: tuple[str, ...]
+
+    @property
+    def hertz_holds(self) -> bool:
+        return self.comparison.hertz_holds
+
+    @property
+    def reasons(self) -> tuple[str, ...]:
+        return self.comparison.reasons
+
+    @property
+    def alpha(self) -> float:
+        return self.comparison.alpha
+
+    @property
+    def sigma(self) -> float:
+        return self.comparison.sigma
+
+    @property
+    def result(self) -> Any:
+        """The solution the comparison was made on (elastic-plastic when available)."""
+        return self.plastic if self.plastic is not None else self.elastic
+
+    def to_json(self) -> dict[str, Any]:
+        """The record with exactly the issue's keys (see the module notes)."""
+        c = self.comparison
+        hz = c.hertz
+        prof = c.profile
+        return {
+            "hertz_holds": bool(c.hertz_holds),
+            "alpha": _q(c.alpha, ""),
+            "sigma": _q(c.sigma, "m"),
+            "hertz": {"a": _q(hz.a, "m"), "delta": _q(hz.delta, "m"), "p0": _q(hz.p0, "Pa")},
+            "bem": {
+                "pmax": _q(c.pmax, "Pa"),
+                "contact_radius": _q(c.contact_radius, "m"),
+                "approach": _q(c.approach, "m"),
+                "area_fraction": _q(c.area_fraction, ""),
+                "plastic_fraction": _q(c.plastic_fraction, ""),
+            },
+            "reasons": list(c.reasons),
+            "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
+                               "p_hertz": _q(prof.p_hertz, "Pa")},
+        }
+
+    def details(self) -> dict[str, Any]:
+        """Inputs, every criterion, the elastic peak pressure, the grid and the notes."""
+        c = self.comparison
+        return {
+            "load": _q(self.load, "N"),
+            "radius": _q(self.radius, "m"),
+            "materials": {"ball": self.ball_material.name, "plate": self.plate_material.name,
+                          "e_star": _q(self.e_star, "Pa")},
+            "hardness": _q(c.hardness, "Pa"),
+            "sigma_plate": _q(self.scans.sigma_plate, "m"),
+            "sigma_ball": _q(self.scans.sigma_ball, "m"),
+            "elastic_pmax": _q(c.elastic_pmax, "Pa"),
+            "profile_deviation": _q(c.profile_deviation, ""),
+            "criteria": [{"name": k.name, "value": k.value, "limit": k.limit,
+                          "passed": k.passed, "decisive": k.decisive} for k in c.criteria],
+            "grid": {"n": self.result.shape[1], "dx": _q(self.result.dx, "m")},
+            "notes": list(self.notes),
+        }
+
+    def figure(self, path: str | Path | None = None) -> Any:
+        """Pressure map and radial profile against Hertz (:mod:`surfmet.plots.hertz`)."""
+        from surfmet.plots.hertz import hertz_check_figure
+
+        return hertz_check_figure(self, path)
+
+
+def hertz_check(
+    scan: Any = None,
+    *,
+    radius: float,
+    load: float,
+    materials: Any = "steel,aluminium",
+    ball: Any = None,
+    hardness: float | None = None,
+    plastic: bool = True,
+    spikes: bool = True,
+    grid: int | None = None,
+    max_grid: int = 1024,
+    on_edge: str = "enlarge",
+) -> HertzCheck:
+    """Does Hertz hold for this plate (and ball) at this load?
+
+    Parameters
+    ----------
+    scan : Topography or path, optional
+        Scan of the plate; None for a smooth plate.
+    radius : float
+        Ball radius R (m).
+    load : float
+        Normal load W (N).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``, e.g. ``"steel,aluminium"`` or ``"steel,al:H=0.9GPa"``.
+    ball : Topography or path, optional
+        Scan of the ball (its best-fit sphere is removed).
+    hardness : float, optional
+        Flow pressure of the softer body (Pa); default the materials' (softer) hardness.
+    plastic : bool
+        Solve the elastic-plastic contact too (needs a hardness).
+    spikes : bool
+        Remove spikes from the scans before anything else.
+    grid, max_grid : int, optional
+        Contact grid (cells per side) and the largest automatic grid.
+    on_edge : {"enlarge", "warn", "raise"}
+        Contact reaching the domain edge (see :mod:`contact.sphere`).
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Bad inputs, a scan too small for the contact, a solver failure.
+    """
+    from contact.hertzcheck import check_sphere
+    from contact.materials import composite_modulus, contact_hardness
+    from surfmet.units import parse_force, parse_length
+
+    radius = parse_length(radius) if isinstance(radius, str) else float(radius)
+    load = parse_force(load) if isinstance(load, str) else float(load)
+    if not (math.isfinite(radius) and radius > 0):
+        raise SurfmetInputError(f"the ball radius must be a positive length, got {radius!r}")
+    if not (math.isfinite(load) and load > 0):
+        raise SurfmetInputError(f"the load must be a positive force in N, got {load!r}")
+    ball_m, plate_m = parse_materials(materials)
+    e_star = composite_modulus(ball_m, plate_m)
+    if hardness is None and plastic:
+        hardness = contact_hardness(ball_m, plate_m)
+    if not plastic:
+        hardness = None
+    if hardness is not None and not (math.isfinite(hardness) and hardness > 0):
+        raise SurfmetInputError(f"the hardness must be a positive pressure, got {hardness!r}")
+    prep = prepare_scans(scan, ball, spikes=spikes)
+    pair = prep.pair
+    check = check_sphere(
+        radius, load, e_star,
+        roughness=None if pair is None else pair.roughness,
+        roughness_dx=None if pair is None else pair.dx,
+        roughness_dy=None if pair is None else pair.dy,
+        sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
+    )
+    notes = [*prep.notes, *check.notes]
+    if hardness is None:
+        notes.append("no hardness known: elastic solution only, yield not checked")
+    return HertzCheck(comparison=check.comparison, elastic=check.elastic,
+                      plastic=check.plastic, radius=radius, load=load, e_star=e_star,
+                      ball_material=ball_m, plate_material=plate_m, scans=prep,
+                      notes=tuple(notes))

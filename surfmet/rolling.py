@@ -1,0 +1,193 @@
+"""Scan-level rolling resistance: the effective exponent lambda of M_r = s_r N^lambda for a
+ball rolling on a scanned plate (and a scanned ball).
+
+The scans are prepared as for the Hertz check (:func:`surfmet.hertz_check.prepare_scans`:
+spikes removed, plate levelled, ball sphere removed, both paired on one grid) and the load
+sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
+choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
+
+``RollingReport.to_json()`` holds ``lambda_eff``, ``lambda_ci`` [lo, hi], ``loads``,
+``moments``, ``local_lambda``, ``model`` and the ``settings`` used; every value is
+``{"value": v, "unit": "..."}``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+
+LOSSY = ("both", "plate", "ball")
+
+
+@dataclass(frozen=True, eq=False)
+class RollingReport:
+    """Outcome of :func:`rolling_resistance`.
+
+    Attributes
+    ----------
+    sweep : contact.rolling.RollingSweep
+    radius : float
+    ball_material, plate_material : contact.materials.Material
+    scans : surfmet.hertz_check.PreparedScans
+    notes : tuple of str
+    """
+
+    sweep: Any
+    radius: float
+    ball_material: Any
+    plate_material: Any
+    scans: Any
+    notes: tuple[str, ...]
+
+    @property
+    def lambda_eff(self) -> float:
+        return self.sweep.lambda_eff
+
+    @property
+    def lambda_ci(self) -> tuple[float, float]:
+        return self.sweep.lambda_ci
+
+    def to_json(self) -> dict[str, Any]:
+        from surfmet.units import quantity
+
+        s = self.sweep
+        st = dict(s.settings)
+        settings = {
+            "radius": quantity(self.radius, "m"),
+            "materials": {"ball": self.ball_material.name, "plate": self.plate_material.name},
+            "e_star": quantity(st.get("e_star"), "Pa"),
+            "hardness": quantity(st.get("hardness"), "Pa"),
+            "alpha_h": quantity(st.get("alpha_h"), ""),
+            "displacement_share": quantity(st.get("share"), ""),
+            "kinematics": st.get("kinematics"),
+            "band": quantity(st.get("band"), ""),
+            "grid": st.get("grid"),
+            "dx": quantity(st.get("dx"), "m"),
+            "sigma": quantity(self.scans.sigma if self.scans is not None else 0.0, "m"),
+            "confidence": quantity(s.fit.confidence if s.fit is not None else None, ""),
+            "forces": quantity(s.forces, "N"),
+            "notes": list(self.notes),
+        }
+        return {
+            "lambda_eff": quantity(s.lambda_eff, ""),
+            "lambda_ci": quantity(list(s.lambda_ci), ""),
+            "loads": quantity(s.loads, "N"),
+            "moments": quantity(s.moments, "N m"),
+            "local_lambda": quantity(s.local_lambda, ""),
+            "model": s.model,
+            "settings": settings,
+        }
+
+    def figure(self, path: Any = None) -> Any:
+        """M_r(N) and the local exponent (:func:`surfmet.plots.hertz.rolling_figure`)."""
+        from surfmet.plots.hertz import rolling_figure
+
+        return rolling_figure(self.sweep, path)
+
+
+def _load_list(loads: Any) -> np.ndarray:
+    from contact.rolling import log_loads
+    from surfmet.units import parse_force_range
+
+    if isinstance(loads, str):
+        lo, hi, n = parse_force_range(loads)
+        return log_loads(lo, hi, n or 9)
+    arr = np.asarray(list(loads) if not isinstance(loads, np.ndarray) else loads, dtype=float)
+    if arr.ndim != 1 or arr.size < 2:
+        raise SurfmetInputError("give at least two loads (or a range F1:F2[:N])")
+    return arr
+
+
+def rolling_resistance(
+    plate: Any = None,
+    ball: Any = None,
+    *,
+    radius: float,
+    materials: Any = "steel,aluminium",
+    loads: Any = "1N:100N:9",
+    model: str = "hysteresis",
+    hardness: float | None = None,
+    alpha_h: float = 1.0,
+    lossy: str = "both",
+    kinematics: str = "rolling",
+    spikes: bool = True,
+    grid: int | None = None,
+    max_grid: int = 1024,
+    centre: tuple[float, float] | None = None,
+    progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
+) -> RollingReport:
+    """Rolling-resistance moments over a load sweep and the fitted exponent lambda.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path, optional
+        The scans; without them the smooth (Hertz) case is computed.
+    radius : float
+        Ball radius R (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    loads : str or sequence of float
+        ``"F1:F2[:N]"`` (N log-spaced loads, default 9) or the loads (N).
+    model : {"hysteresis", "plastic"}
+        Dissipation model (see :mod:`contact.rolling`).
+    hardness : float, optional
+        Flow pressure of the softer body (Pa; plastic model); default the materials'.
+    alpha_h : float
+        Hysteresis loss fraction.
+    lossy : {"both", "plate", "ball"}
+        The body whose hysteresis dissipates: its share of the displacement is used
+        ("both": the combined displacement, both bodies losing alpha_h).
+    kinematics : {"rolling", "frozen"}
+        See :func:`contact.rolling.hysteresis_work`.
+    spikes : bool
+        Remove spikes from the scans first.
+    grid, max_grid : int, optional
+        Contact grid settings.
+    centre : (float, float), optional
+        Apex position on the paired roughness map (m); default its middle.
+    progress : callable, optional
+        Wraps the iterable of loads (a progress bar).
+    """
+    from contact.materials import composite_modulus, contact_hardness, displacement_shares
+    from contact.rolling import MODELS, sphere_sweep
+    from surfmet.hertz_check import parse_materials, prepare_scans
+    from surfmet.units import parse_length
+
+    radius = parse_length(radius) if isinstance(radius, str) else float(radius)
+    if not (math.isfinite(radius) and radius > 0):
+        raise SurfmetInputError(f"the ball radius must be a positive length, got {radius!r}")
+    if model not in MODELS:
+        raise SurfmetInputError(f"model must be one of {MODELS}, got {model!r}")
+    if lossy not in LOSSY:
+        raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
+    ball_m, plate_m = parse_materials(materials)
+    e_star = composite_modulus(ball_m, plate_m)
+    if model == "plastic" and hardness is None:
+        hardness = contact_hardness(ball_m, plate_m)
+        if hardness is None:
+            raise SurfmetInputError("the plastic model needs a hardness: give --hardness or "
+                                    "a material with H=...")
+    share = 1.0
+    if lossy != "both":
+        shares = displacement_shares(ball_m, plate_m)
+        share = shares[0] if lossy == "ball" else shares[1]
+    w = _load_list(loads)
+    prep = prepare_scans(plate, ball, spikes=spikes)
+    pair = prep.pair
+    sweep = sphere_sweep(
+        radius, e_star, w, model=model,
+        roughness=None if pair is None else pair.roughness,
+        roughness_dx=None if pair is None else pair.dx,
+        roughness_dy=None if pair is None else pair.dy,
+        roughness_rms=prep.sigma, centre=centre, hardness=hardness, alpha_h=alpha_h,
+        share=share, kinematics=kinematics, grid=grid, max_grid=max_grid, progress=progress,
+    )
+    notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]
+    return RollingReport(sweep=sweep, radius=radius, ball_material=ball_m,
+                         plate_material=plate_m, scans=prep, notes=tuple(notes))

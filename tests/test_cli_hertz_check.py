@@ -1,0 +1,100 @@
+"""``surfmet hertz-check``: verdict and reasons on the terminal, the issue's JSON, the figure,
+and clear refusals."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from contact_synth import rough_surface
+
+import surfmet
+from contact import composite_modulus, hertz_sphere, material
+from surfmet.cli import main
+from surfmet.model import Profile, Topography
+
+E_STAR = composite_modulus(material("steel"), material("aluminium"))
+R, W = 5e-3, 1.0
+
+
+@pytest.fixture
+def plates(tmp_path):
+    hz = hertz_sphere(R, W, E_STAR)
+    smooth = rough_surface(192, 2e-6, 0.01 * hz.delta, seed=1, corr=10e-6)
+    rough = rough_surface(256, 2e-6, 1.5 * hz.delta, seed=2, corr=10e-6)
+    spikes = np.random.default_rng(3).choice(rough.size, 30, replace=False)
+    rough.flat[spikes] += 40e-6  # single-pixel optical spikes on top of the roughness
+    return {"smooth": surfmet.write(Topography(smooth, 2e-6, 2e-6), tmp_path / "smooth.npz"),
+            "rough": surfmet.write(Topography(rough, 2e-6, 2e-6), tmp_path / "rough.x3p"),
+            "profile": surfmet.write(Profile(smooth[0], 2e-6), tmp_path / "p.npz"),
+            "tmp": tmp_path}
+
+
+def _args(path, *extra):
+    return ["hertz-check", str(path), "--radius", "5mm", "--load", "1N",
+            "--materials", "steel,aluminium", "--grid", "96", *extra]
+
+
+def test_verdicts_and_json(plates, capsys):
+    assert main(_args(plates["smooth"], "--json")) == 0
+    out, err = capsys.readouterr()
+    rec = json.loads(out)
+    assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
+    assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
+                        "radial_profile"}
+    hz = hertz_sphere(R, W, E_STAR)
+    assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
+    assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
+    assert not err.strip().startswith("{")
+
+    assert main(_args(plates["rough"], "--json")) == 0
+    out, err = capsys.readouterr()
+    rec = json.loads(out)
+    assert rec["hertz_holds"] is False and rec["alpha"]["value"] == pytest.approx(1.5, rel=0.1)
+    assert rec["bem"]["plastic_fraction"]["value"] > 0
+    assert "spike(s) removed from the plate scan" in err  # spikes are not asperities
+
+
+def test_human_output_and_figure(plates, capsys):
+    png = plates["tmp"] / "hc.png"
+    assert main(_args(plates["rough"], "--plot", str(png))) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("Hertz does not hold (α = ")
+    assert "α = σR/a0²" in out and "peak pressure" in out and "yielded / πa0²" in out
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and "figure written" in err
+    assert main(_args(plates["smooth"], "--elastic")) == 0
+    out, _ = capsys.readouterr()
+    assert out.startswith("Hertz holds") and "hardness" not in out
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["hertz-check", "{smooth}", "--radius", "5mm", "--load=-1N", "--materials",
+      "steel,aluminium"], "positive"),
+    (["hertz-check", "{smooth}", "--radius", "5mm", "--load", "1N", "--materials",
+      "steel"], "BALL,PLATE"),
+    (["hertz-check", "{smooth}", "--radius", "5mm", "--load", "1N", "--materials",
+      "steel,aluminium", "--grid", "4"], "--grid"),
+    (["hertz-check", "{profile}", "--radius", "5mm", "--load", "1N", "--materials",
+      "steel,aluminium"], "areal"),
+    (["hertz-check", "{smooth}", "--radius", "20mm", "--load", "100N", "--materials",
+      "steel,aluminium"], "larger scan"),
+    (["hertz-check", "{tmp}/absent.x3p", "--radius", "5mm", "--load", "1N", "--materials",
+      "steel,aluminium"], "absent.x3p"),
+])
+def test_user_errors_exit_1(plates, capsys, argv, needle):
+    argv = [a.format(**{k: str(v) for k, v in plates.items()}) for a in argv]
+    assert main(argv) == 1
+    out, err = capsys.readouterr()
+    assert needle in err and "Traceback" not in err and out == ""
+
+
+def test_smooth_scan_is_checked_without_scan_noise(tmp_path, capsys):
+    # a perfectly flat plate gives alpha = 0 and Hertz to a fraction of a percent
+    flat = surfmet.write(Topography(np.zeros((128, 128)), 2e-6, 2e-6), tmp_path / "f.npz")
+    assert main(_args(flat, "--json")) == 0
+    rec = json.loads(capsys.readouterr().out)
+    hz = hertz_sphere(R, W, E_STAR)
+    assert rec["alpha"]["value"] == 0 and rec["hertz_holds"] is True
+    assert rec["bem"]["pmax"]["value"] == pytest.approx(hz.p0, rel=5e-3)
+    assert rec["bem"]["approach"]["value"] == pytest.approx(hz.delta, rel=5e-3)
