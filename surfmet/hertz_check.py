@@ -30,25 +30,8 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.materials import parse_materials
 from surfmet.model import Topography
-
-
-def parse_materials(materials: Any) -> tuple[Any, Any]:
-    """``"BALL,PLATE"`` (each ``NAME[:E=..][:nu=..][:H=..]``) or a pair of
-    :class:`contact.materials.Material` -> (ball, plate)."""
-    from contact.materials import Material
-
-    if isinstance(materials, (tuple, list)) and len(materials) == 2 and all(
-            isinstance(m, Material) for m in materials):
-        return materials[0], materials[1]
-    if not isinstance(materials, str):
-        raise SurfmetInputError(f"materials must be 'BALL,PLATE' text, got {materials!r}")
-    from surfmet.cli.contact import parse_material
-
-    parts = [s for s in materials.split(",") if s.strip()]
-    if len(parts) != 2:
-        raise SurfmetInputError(f"materials need two names, BALL,PLATE; got {materials!r}")
-    return parse_material(parts[0]), parse_material(parts[1])
 
 
 def _scan(obj: Any, what: str) -> Topography | None:

@@ -156,7 +156,8 @@ def rolling_resistance(
     """
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
-    from surfmet.hertz_check import parse_materials, prepare_scans
+    from surfmet.hertz_check import prepare_scans
+    from surfmet.materials import parse_materials
     from surfmet.units import parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)

@@ -59,42 +59,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def parse_material(text: str) -> Any:
-    """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact.materials.Material`."""
-    from contact.materials import material
-    from surfmet.errors import SurfmetInputError
-    from surfmet.units import parse_pressure
-
-    name, *opts = [s.strip() for s in text.split(":")]
-    kw: dict[str, float] = {}
-    for opt in opts:
-        key, sep, value = opt.partition("=")
-        key = key.strip().lower()
-        if not sep:
-            raise SurfmetInputError(f"cannot read material option {opt!r}: write KEY=VALUE")
-        if key == "e":
-            kw["E"] = parse_pressure(value)
-        elif key in ("nu", "poisson"):
-            try:
-                kw["nu"] = float(value)
-            except ValueError:
-                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
-        elif key in ("h", "hardness"):
-            kw["hardness"] = parse_pressure(value)
-        else:
-            raise SurfmetInputError(f"unknown material option {key!r}: use E, nu or H")
-    return material(name, **kw)
-
-
-def _materials(text: str) -> tuple[Any, Any]:
-    from surfmet.errors import SurfmetInputError
-
-    parts = [s for s in text.split(",") if s.strip()]
-    if len(parts) != 2:
-        raise SurfmetInputError(f"--materials needs two names, BALL,PLATE; got {text!r}")
-    return parse_material(parts[0]), parse_material(parts[1])
-
-
 def _q(value: Any, unit: str) -> dict[str, Any]:
     from surfmet.units import quantity
 
@@ -161,10 +125,11 @@ def run(args: argparse.Namespace) -> int:
     from contact.materials import composite_modulus, contact_hardness
     from contact.sphere import solve_sphere
     from surfmet.errors import SurfmetInputError
+    from surfmet.materials import parse_materials
     from surfmet.pairing import prepare_pair
     from surfmet.units import format_length, jsonable
 
-    ball_m, plate_m = _materials(args.materials)
+    ball_m, plate_m = parse_materials(args.materials)
     e_star = composite_modulus(ball_m, plate_m)
     hardness = args.hardness
     if args.plastic:

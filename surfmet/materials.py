@@ -1,0 +1,57 @@
+"""Material specifications at the surfmet layer: text such as ``steel,aluminium`` or
+``steel:E=200GPa:nu=0.29,aluminium:H=1.1GPa`` to :class:`contact.materials.Material`.
+
+The table itself (values with their sources) lives in :mod:`contact.materials`; this module
+only parses the user's text, with units, into it.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.units import parse_pressure
+
+
+def parse_material(text: str) -> Any:
+    """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact.materials.Material`.
+
+    ``E`` and ``H`` take pressure units (``200GPa``, ``1.1GPa``; a bare number is Pa).
+    """
+    from contact.materials import material
+
+    name, *opts = [s.strip() for s in str(text).split(":")]
+    kw: dict[str, float] = {}
+    for opt in opts:
+        key, sep, value = opt.partition("=")
+        key = key.strip().lower()
+        if not sep:
+            raise SurfmetInputError(f"cannot read material option {opt!r}: write KEY=VALUE")
+        if key == "e":
+            kw["E"] = parse_pressure(value)
+        elif key in ("nu", "poisson"):
+            try:
+                kw["nu"] = float(value)
+            except ValueError:
+                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
+        elif key in ("h", "hardness"):
+            kw["hardness"] = parse_pressure(value)
+        else:
+            raise SurfmetInputError(f"unknown material option {key!r}: use E, nu or H")
+    return material(name, **kw)
+
+
+def parse_materials(materials: Any) -> tuple[Any, Any]:
+    """``"BALL,PLATE"`` text, or a pair of :class:`contact.materials.Material`,
+    -> ``(ball, plate)``."""
+    from contact.materials import Material
+
+    if isinstance(materials, (tuple, list)) and len(materials) == 2 and all(
+            isinstance(m, Material) for m in materials):
+        return materials[0], materials[1]
+    if not isinstance(materials, str):
+        raise SurfmetInputError(f"materials must be 'BALL,PLATE' text, got {materials!r}")
+    parts = [s for s in materials.split(",") if s.strip()]
+    if len(parts) != 2:
+        raise SurfmetInputError(f"materials need two names, BALL,PLATE; got {materials!r}")
+    return parse_material(parts[0]), parse_material(parts[1])
