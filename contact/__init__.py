@@ -12,6 +12,9 @@ Main entry points::
     res = solve_sphere(0.02, 10.0, E, roughness=z, roughness_dx=5e-6)   # rough
     prob = SphereContact(0.02, E, 100.0, roughness=z, roughness_dx=5e-6)
     results = prob.sweep([1, 3, 10, 30, 100])   # warm-started load sweep
+    check_sphere(...)                      # BEM against Hertz, with a verdict (hertzcheck)
+    sphere_sweep(...); fit_exponent(...)   # rolling-resistance exponent (rolling)
+    analyse_table(columns)                 # rotor law of motion (lawofmotion)
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
@@ -53,6 +56,16 @@ _LAZY = {
     "auto_domain": "contact.geometry",
     "sphere_gap": "contact.geometry",
     "cylinder_gap": "contact.geometry",
+    "gjm_alpha": "contact.hertzcheck",
+    "check_sphere": "contact.hertzcheck",
+    "sphere_sweep": "contact.rolling",
+    "cylinder_sweep": "contact.rolling",
+    "fit_exponent": "contact.rolling",
+    "solve_cylinder": "contact.line",
+    "mass_properties": "contact.rotor",
+    "angular_acceleration": "contact.rotor",
+    "analyse_test": "contact.lawofmotion",
+    "analyse_table": "contact.lawofmotion",
 }
 
 
@@ -77,17 +90,27 @@ __all__ = [
     "Material",
     "SolverStats",
     "SphereContact",
+    "analyse_table",
+    "analyse_test",
+    "angular_acceleration",
     "auto_domain",
+    "check_sphere",
     "compliance",
     "composite_modulus",
     "contact_hardness",
     "cylinder_gap",
+    "cylinder_sweep",
     "displacement_shares",
+    "fit_exponent",
+    "gjm_alpha",
     "hertz_cylinder",
     "hertz_sphere",
     "hertz_sphere_from_approach",
+    "mass_properties",
     "material",
+    "solve_cylinder",
     "solve_normal",
     "solve_sphere",
     "sphere_gap",
+    "sphere_sweep",
 ]
