@@ -261,15 +261,15 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         Add the Hertz-check section.
     """
     import surfmet
-    from surfmet.cli.info import describe
     from surfmet.errors import user_error_types
+    from surfmet.records import scan_record
     from surfmet.roughness import roughness
 
     options = dict(options or {})
     sec = ScanSection(file=str(path))
     try:
         scan = surfmet.read(path)
-        sec.info = describe(scan)
+        sec.info = scan_record(scan)
         res = roughness(scan, **options)
         sec.kind = res.kind  # "profile" also for a row of an areal scan
         sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}

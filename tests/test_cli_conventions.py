@@ -45,6 +45,7 @@ INVOCATIONS = {
     "rotor": ["rotor", "{frames}", "--json"],
     "show": ["show", "{scan}", "-o", "{tmp}/view.png", "--2d", "--json"],
     "report": ["report", "{scan}", "-o", "{tmp}/report.html", "--no-3d", "--json"],
+    "demo": ["demo", "--out", "{tmp}/demo", "--quick", "--json"],
 }
 
 

@@ -59,61 +59,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def _q(value: Any, unit: str) -> dict[str, Any]:
-    from surfmet.units import quantity
-
-    return quantity(value, unit)
-
-
-def record(res: Any, ball: Any, plate: Any, pair: Any, args: argparse.Namespace) -> dict:
-    """The JSON record of a contact result (every dimensional value as value/unit)."""
-    hz = res.hertz
-    rec: dict[str, Any] = {
-        "load": _q(res.load, "N"),
-        "pmax": _q(res.pmax, "Pa"),
-        "mean_pressure": _q(res.mean_pressure, "Pa"),
-        "contact_radius": _q(res.contact_radius, "m"),
-        "radius_95": _q(res.radius_95, "m"),
-        "approach": _q(res.approach, "m"),
-        "contact_area": _q(res.contact_area, "m^2"),
-        "area_fraction": _q(res.area_fraction, ""),
-        "centroid": _q(list(res.centroid), "m"),
-        "n_clusters": res.n_clusters,
-        "plastic_area": _q(res.plastic_area, "m^2"),
-        "regime": res.regime,
-        "iterations": res.iterations,
-        "residual": res.residual,
-        "converged": res.converged,
-        "touches_edge": res.touches_edge,
-        "hertz": {
-            "a": _q(hz.a if hz else None, "m"),
-            "delta": _q(hz.delta if hz else None, "m"),
-            "p0": _q(hz.p0 if hz else None, "Pa"),
-        },
-        "grid": {"nx": res.shape[1], "ny": res.shape[0], "dx": _q(res.dx, "m"),
-                 "size": _q(res.shape[1] * res.dx, "m"), "periodic": res.periodic},
-        "materials": {
-            "ball": {"name": ball.name, "E": _q(ball.E, "Pa"), "nu": ball.nu},
-            "plate": {"name": plate.name, "E": _q(plate.E, "Pa"), "nu": plate.nu},
-            "e_star": _q(res.e_star, "Pa"),
-        },
-        "hardness": _q(res.hardness, "Pa"),
-        "radius": _q(args.radius, "m"),
-        "scans": {"plate": args.plate, "ball": args.ball},
-        "notes": list(res.notes),
-    }
-    if pair is not None:
-        rec["roughness"] = {
-            "composite_rms": _q(pair.rms, "m"),
-            "plate_rms": _q(pair.plate_rms, "m"),
-            "ball_rms": _q(pair.ball_rms, "m"),
-            "ball_fit_radius": _q(pair.ball_radius, "m"),
-            "filled_fraction": _q(pair.filled_fraction, ""),
-            "notes": list(pair.notes),
-        }
-    return rec
-
-
 def run(args: argparse.Namespace) -> int:
     import json
     import warnings
@@ -182,7 +127,10 @@ def run(args: argparse.Namespace) -> int:
         if issubclass(w.category, EdgeContactWarning):
             log(f"warning: {w.message}")
 
-    rec = record(res, ball_m, plate_m, pair, args)
+    from surfmet.records import contact_record
+
+    rec = contact_record(res, ball_m, plate_m, pair, radius=args.radius,
+                         plate_file=args.plate, ball_file=args.ball)
     if args.out:
         np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
                             summary=json.dumps(jsonable(rec)))

@@ -38,71 +38,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "linear"
-               ) -> dict[str, Any]:
-    """The fit as a JSON-ready dict (value/unit pairs)."""
-    from surfmet.errors import SurfmetInputError
-    from surfmet.model import Profile, Topography
-    from surfmet.units import quantity
-
-    if shape == "sphere":
-        if not isinstance(scan, Topography):
-            raise SurfmetInputError("a sphere fit needs an areal scan; for a profile use "
-                                    "--shape circle")
-        if profile is not None:
-            raise SurfmetInputError("--profile applies to --shape circle only")
-        from surfmet.fitting import fit_sphere
-
-        f = fit_sphere(scan, loss=loss)
-        return {
-            "shape": "sphere",
-            "radius": quantity(f.radius, "m"),
-            "center": quantity(list(f.center), "m"),
-            "rms_residual": quantity(f.rms_residual, "m"),
-            "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
-            "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-            "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
-            "n_points": f.n_points,
-            "convex": f.convex,
-            "loss": loss,
-        }
-    import numpy as np
-
-    import profiles
-
-    if isinstance(scan, Topography):
-        if profile is None:
-            raise SurfmetInputError("a circle fit of an areal scan needs --profile row:K "
-                                    "or col:K")
-        from surfmet.extract import extract_profile
-
-        prof = extract_profile(scan, profile)
-    elif isinstance(scan, Profile):
-        if profile is not None:
-            raise SurfmetInputError("--profile applies to areal scans; this file is a profile")
-        prof = scan
-    else:  # pragma: no cover
-        raise SurfmetInputError(f"cannot fit {type(scan).__name__}")
-    f = profiles.fit_circle(np.asarray(prof.positions), np.asarray(prof.z), loss=loss)
-    return {
-        "shape": "circle",
-        "profile": prof.metadata.get("profile"),
-        "radius": quantity(f.radius, "m"),
-        "center": quantity(list(f.center), "m"),
-        "rms_residual": quantity(f.rms_residual, "m"),
-        "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
-        "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-        "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
-        "n_points": f.n_points,
-        "loss": loss,
-    }
-
-
 def run(args: argparse.Namespace) -> int:
     import surfmet
     from surfmet.units import format_length
 
     scan = surfmet.read(args.file)
+    from surfmet.records import fit_record
+
     rec = {"file": args.file, **fit_record(scan, args.shape, args.profile, args.loss)}
     if args.json:
         emit_json(rec)

@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json
-from surfmet.units import format_length, quantity
+from surfmet.units import format_length
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
@@ -26,34 +26,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def describe(scan: Any) -> dict[str, Any]:
-    """The ``info`` record of a scan, with every dimensional value as value/unit."""
-    md = dict(scan.metadata)
-    out: dict[str, Any] = {
-        "file": md.pop("source", None),
-        "format": md.pop("format", None),
-        "kind": scan.kind,
-        "nx": scan.nx,
-        "ny": scan.ny,
-        "dx": quantity(scan.dx, "m"),
-        "dy": quantity(getattr(scan, "dy", None), "m"),
-        "nan_fraction": scan.nan_fraction,
-    }
-    if scan.kind == "areal":
-        out["size_x"] = quantity(scan.size_x, "m")
-        out["size_y"] = quantity(scan.size_y, "m")
-    else:
-        out["length"] = quantity(scan.length, "m")
-        out["uniform"] = scan.is_uniform
-    out["metadata"] = md
-    return out
-
-
 def run(args: argparse.Namespace) -> int:
     import surfmet
 
     scan = surfmet.read(args.file, format=args.format)
-    rec = describe(scan)
+    from surfmet.records import scan_record
+
+    rec = scan_record(scan)
     if args.json:
         emit_json(rec)
         return 0

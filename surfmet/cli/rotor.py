@@ -10,13 +10,12 @@ with surfmet.
 from __future__ import annotations
 
 import argparse
-import itertools
 import math
 from pathlib import Path
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json, log
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
 PAPER_ALIAS = "paper2022"
@@ -58,64 +57,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
-
-
-def read_frames_table(path: str | Path) -> tuple[list[int], dict[str, list[float]]]:
-    """Read a frame-index table: header ``k`` and column names, then integer rows.
-
-    Returns the row numbers and ``{column: values}`` (NaN for missing readings).
-    """
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SurfmetFormatError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SurfmetFormatError(f"{path}: cannot read it as text ({exc})") from None
-    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
-    if not lines:
-        raise SurfmetFormatError(f"{path}: empty file")
-    sep = "\t" if "\t" in lines[0] else None
-    header = [h.strip() for h in lines[0].split(sep)]
-    if header[0].lower() != "k" or len(header) < 2:
-        raise SurfmetFormatError(
-            f"{path}: the header must be 'k' followed by column names, got {lines[0]!r}"
-        )
-    names = header[1:]
-    if len(set(names)) != len(names):
-        raise SurfmetFormatError(f"{path}: repeated column names in {names}")
-    ks: list[int] = []
-    cols: dict[str, list[float]] = {n: [] for n in names}
-    for lineno, line in enumerate(lines[1:], start=2):
-        cells = [c.strip() for c in line.split(sep)] if sep else line.split()
-        if len(cells) < len(header):
-            cells += [""] * (len(header) - len(cells))
-        if len(cells) > len(header):
-            raise SurfmetFormatError(f"{path}:{lineno}: {len(cells)} cells for "
-                                     f"{len(header)} columns")
-        try:
-            ks.append(int(cells[0]))
-        except ValueError:
-            raise SurfmetFormatError(f"{path}:{lineno}: row number {cells[0]!r} is not an "
-                                     "integer") from None
-        for name, cell in zip(names, cells[1:]):
-            if cell.lower() in ("", "nan", "-", "na"):
-                cols[name].append(math.nan)
-                continue
-            try:
-                v = float(cell)
-            except ValueError:
-                raise SurfmetFormatError(
-                    f"{path}:{lineno}: {cell!r} in column {name!r} is not a frame index"
-                ) from None
-            if not math.isfinite(v):
-                raise SurfmetFormatError(f"{path}:{lineno}: {cell!r} is not finite")
-            cols[name].append(v)
-    if len(ks) < 2:
-        raise SurfmetFormatError(f"{path}: no data rows")
-    if any(b <= a for a, b in itertools.pairwise(ks)):
-        raise SurfmetFormatError(f"{path}: row numbers k must increase")
-    return ks, cols
 
 
 def _paper_path() -> Path:
@@ -297,6 +238,8 @@ def run(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.step_deg) and args.step_deg > 0):
         raise SurfmetInputError(f"--step-deg must be positive, got {args.step_deg}")
     source = str(_paper_path()) if args.file == PAPER_ALIAS else args.file
+    from surfmet.frames import read_frames_table
+
     ks, cols = read_frames_table(source)
     if not args.json:
         log(f"analysing {len(cols)} test(s) of {len(ks)} rows ...")
