@@ -20,11 +20,40 @@ Algorithm
 ---------
 Polonsky & Keer (1999), Wear 231:206: constrained conjugate gradient on the contact set,
 with the mean gap removed (the Lagrange multiplier of the load constraint) and points
-re-entering the contact restarting the conjugacy. Elastic-perfectly-plastic contact caps
-the pressure at the hardness as in Almqvist, Sahlin, Larsson & Glavatskih (2007), Wear
-262:1321: capped points leave the CG set, and the gap they keep negative is the plastic
-displacement. Free boundaries use DC-FFT (Liu, Wang & Liu 2000, Wear 243:101); periodic
-ones the periodised Love kernel.
+re-entering the contact restarting the conjugacy. Free boundaries use DC-FFT (Liu, Wang &
+Liu 2000, Wear 243:101); periodic ones the periodised Love kernel.
+
+Elastic-perfectly-plastic contact
+---------------------------------
+The pressure is capped at the hardness H as in Almqvist, Sahlin, Larsson & Glavatskih
+(2007), Wear 262:1321: the capped points are a second active set, with their own
+complementarity (0 <= p <= H; g = 0 where 0 < p < H; g >= 0 where p = 0; g <= 0 where
+p = H, -g being the plastic displacement). The solution minimises the elastic energy
+q(p) = p.K p / 2 + (h - delta).p over the box 0 <= p <= H (and, in load control, the
+hyperplane sum p = W / (dx dy)), a convex bound-constrained quadratic programme. The
+plain Polonsky-Keer step alone is not enough there: when every loaded point is capped no
+free point is left to step on, the load rescaling of a handful of free points amplifies
+them wildly, and a step that moves many points on and off the cap can raise q and cycle.
+Following the gradient-projection / conjugate-gradient scheme of More & Toraldo (1991,
+SIAM J. Optim. 1:93) and the bound-constrained CG of Vollebregt ("The bound-constrained
+conjugate gradient method for non-negative matrices", 2014, J. Optim. Theory Appl.
+162:931), the iteration is made monotone in q:
+
+- each Polonsky-Keer step (CG on the free points, projection onto [0, H], points entering
+  the contact or leaving the cap, load rescaling) is checked against q. The step s and
+  K s (= the change of u, known by superposition) give q along s exactly, for the cost of
+  a dot product: a step that raises q is cut to its minimiser;
+- when that step cannot be taken (no free point, no descent, a load the rescaling cannot
+  restore, or a rescaling by more than a factor 2), or after a cut one, a projected
+  gradient step is taken instead: p + theta (P(p - alpha g) - p), where P is the exact
+  projection onto the feasible set (clip(x - mu, 0, H) with the shift mu that restores the
+  load) and theta the exact minimiser of q on that segment (one convolution). It moves
+  points into contact and on and off the cap all at once and lowers q unless p is
+  optimal; alpha follows Barzilai & Borwein (1988, IMA J. Numer. Anal. 8:141).
+
+q thus decreases at every step, which rules out the cycling; the iteration stops at the
+tolerance, at ``max_iter``, or (not converged) when even an exact displacement leaves no
+descent direction. The elastic path (no hardness) is untouched.
 
 What makes it fast
 ------------------
@@ -176,12 +205,18 @@ def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool) -> Convo
 
 @dataclass
 class SolverStats:
-    """Counters of one solve, for benchmarks and diagnostics."""
+    """Counters of one solve, for benchmarks and diagnostics.
+
+    ``projected_steps`` and ``damped_steps`` count the projected gradient steps and the
+    Polonsky-Keer steps cut to the minimiser of the energy (elastic-plastic solves only).
+    """
 
     iterations: int = 0
     fft_single: int = 0
     fft_double: int = 0
     sparse_corrections: int = 0
+    projected_steps: int = 0
+    damped_steps: int = 0
     levels: list[tuple[int, int, int]] = field(default_factory=list)
 
 
@@ -388,13 +423,19 @@ def solve_normal(
 
 def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max_iter,
              single, precondition, workers, callback, stats):
-    """The Polonsky-Keer iteration. Returns (p, u*E*, delta, iterations, residual, ok)."""
+    """The Polonsky-Keer iteration. Returns (p, u*E*, delta, iterations, residual, ok).
+
+    With a finite ``hmax`` (elastic-perfectly-plastic) the steps are made monotone in the
+    elastic energy and projected gradient steps are taken where the CG step cannot move
+    (see "Elastic-perfectly-plastic contact" in the module notes).
+    """
     ny, nx = h.shape
     n = ny * nx
     conv = convolution(ny, nx, float(dx), float(dy), bool(periodic))
     k00 = conv.k00
     da = dx * dy
     load_control = load is not None
+    plastic = math.isfinite(hmax)
     # Work in units where E* = 1: hE = E* h, uE = K * p, so that gE = hE + uE - E* delta.
     hE = (h * e_star).ravel()
     target = load / da if load_control else 0.0
@@ -406,13 +447,22 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
     else:
         pen = np.maximum(e_star * approach - hE, 0.0)
         p = pen / (k00 * math.sqrt(n)) if pen.any() else np.zeros(n)
+    s_dir = np.empty(n) if plastic else None
+    cand = np.empty(n, dtype=np.int64) if plastic else None
     if load_control:
         total = p.sum()
         p *= target / total
-        if math.isfinite(hmax) and p.max() > hmax:
-            cidx0 = np.empty(n, dtype=np.int64)
-            cval0 = np.empty(n)
-            kn.capped_scale(p, target, hmax, cidx0, cval0, 0)
+        if plastic:
+            # A feasible start (0 <= p <= H, sum p = target): the projection of p, where
+            # the points out of contact are ranked by their gap; if the loaded points
+            # cannot carry the load at the cap, the pressure goes first to the points
+            # that are closest to touching.
+            rank = np.where(p > 0, 0.0, hE - hE.min())
+            kn.projected_gradient(p, rank, 1.0 / k00, target, hmax, True, s_dir, cand, nx)
+            p += s_dir
+            np.clip(p, 0.0, hmax, out=p)
+    elif plastic:
+        np.minimum(p, hmax, out=p)
 
     def exact(pp: np.ndarray) -> np.ndarray:
         stats.fft_double += 1
@@ -427,11 +477,17 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
     z = np.zeros(n)
     t = np.zeros(n)
     t32 = np.zeros(n, dtype=np.float32 if single else np.float64)
-    cidx = np.empty(n, dtype=np.int64)
-    cval = np.empty(n)
+    # a capped point may carry two corrections: one from the step, one from the rescaling
+    cidx = np.empty(2 * n if plastic else n, dtype=np.int64)
+    cval = np.empty(2 * n if plastic else n)
     dense = np.zeros((ny, nx))
     kernel_real = np.ascontiguousarray(conv.real)
     sparse_limit = max(4, int(SPARSE_FACTOR * math.log2(4 * n)))
+    if plastic:
+        p_old = np.empty(n)
+        u_old = np.empty(n)
+        alpha = 1.0 / k00  # projected-gradient step: a cell's pressure closes its own gap
+        projected_next = False
 
     G_old = 1.0
     restart = True
@@ -473,6 +529,38 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
         if it >= max_iter:
             return p.reshape(ny, nx), u.reshape(ny, nx), delta_e / e_star, it, res, False
         it += 1
+        if plastic and (projected_next or n_free == 0):
+            # Projected gradient step p <- p + theta (P(p - alpha d) - p): it moves points
+            # on and off the cap and into contact all at once, and with the exact line
+            # search theta it always lowers the objective unless p is already optimal.
+            projected_next = False
+            gs, ss, _mu, lo, hi = kn.projected_gradient(p, d, alpha, target, hmax,
+                                                       load_control, s_dir, cand, nx)
+            if not gs < 0.0:
+                # no descent direction: optimal up to the noise of an inexact u
+                stalls += 1
+                if synced or stalls > 3:
+                    return (p.reshape(ny, nx), u.reshape(ny, nx), delta_e / e_star, it,
+                            res, False)
+                u = exact(p)
+                synced = True
+                continue
+            stats.projected_steps += 1
+            stats.fft_single += int(single)
+            stats.fft_double += int(not single)
+            w = conv(s_dir.reshape(ny, nx), (lo, hi), single=single, workers=workers).ravel()
+            sks = float(np.dot(s_dir[lo * nx:hi * nx], w[lo * nx:hi * nx]))
+            theta = min(1.0, -gs / sks) if sks > 0 else 1.0
+            kn.add_step(p, s_dir, u, w, theta, hmax)
+            if sks > 0:
+                # Barzilai-Borwein: the inverse Rayleigh quotient of K along the last step
+                alpha = ss / sks
+            synced = False
+            restart = True
+            stalls = 0
+            if callback is not None:
+                callback(it, res)
+            continue
         if precondition:
             lo, hi = kn.masked_copy(d, p, hmax, t32, nx)
             zin = conv.precondition(t32.reshape(ny, nx), (lo, hi), single=single,
@@ -490,6 +578,10 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
         r = conv(t32.reshape(ny, nx), (lo, hi), single=single, workers=workers).ravel()
         tau, _ = kn.pk_step_length(r, t, d, p, hmax, load_control)
         if not (tau > 0 and math.isfinite(tau)):
+            if plastic:
+                projected_next = True
+                restart = True
+                continue
             # Not a descent direction: the conjugacy was lost (a changed contact or plastic
             # set, or float32 noise in the last digits). Restart from steepest descent on
             # an exact displacement; give up if even that cannot make progress.
@@ -503,7 +595,11 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
                 synced = True
             restart = True
             continue
-        stalls = 0
+        if not plastic:
+            stalls = 0
+        else:
+            np.copyto(p_old, p)
+            np.copyto(u_old, u)
         nc, total, entered = kn.pk_update_pressure(p, t, d, tau, hmax, cidx, cval)
         restart = entered > 0
         s = 1.0
@@ -521,5 +617,27 @@ def _pk_loop(h, dx, dy, e_star, load, approach, periodic, hmax, p_init, tol, max
                 u += conv(dense, (lo_c, hi_c), single=single, workers=workers).ravel()
                 kn.scatter(dense, cidx, cval, nc, False)
         synced = False
+        if plastic:
+            # The CG step, its projection, the entering and released points and the load
+            # rescaling together make the step p - p_old; K of it is u - u_old, so the
+            # objective along it is known exactly without another convolution.
+            gs, sks, total = kn.step_terms(p, p_old, u, u_old, d)
+            if (not gs < 0.0 or (load_control and abs(total - target) > 1e-10 * target)
+                    or not 0.5 <= s <= 2.0):
+                # uphill, a total the rescaling cannot restore (points must enter or leave
+                # the cap), or a rescaling that blows up the few free points: undo it and
+                # take a projected gradient step instead
+                p, p_old = p_old, p
+                u, u_old = u_old, u
+                projected_next = True
+                restart = True
+            else:
+                stalls = 0
+                if sks > 0.0 and -gs < 0.5 * sks:
+                    # the full step would raise the objective: stop at its minimiser
+                    kn.blend(p, p_old, u, u_old, -gs / sks)
+                    stats.damped_steps += 1
+                    restart = True
+                    projected_next = True
         if callback is not None:
             callback(it, res)

@@ -121,14 +121,19 @@ class Domain:
         return self.n * self.dx
 
 
-def contact_extent(radius: float, load: float, e_star: float, roughness_rms: float = 0.0) -> float:
+def contact_extent(radius: float, load: float, e_star: float, roughness_rms: float = 0.0,
+                   hardness: float | None = None) -> float:
     """Estimated radius (m) inside which a rough ball may touch the plate.
 
-    The smooth ball touches within the Hertz radius a. Roughness lets asperities up to
-    about three standard deviations high touch further out, where the undeformed sphere
-    stands x^2/(2R) above the plate: r^2 = a^2 + 2R (3 sigma).
+    The smooth elastic ball touches within the Hertz radius a; with a hardness H the
+    contact cannot be smaller than the fully plastic radius sqrt(W / (pi H)) (the mean
+    pressure cannot exceed H). Roughness lets asperities up to about three standard
+    deviations high touch further out, where the undeformed sphere stands x^2/(2R) above
+    the plate: r^2 = a^2 + 2R (3 sigma).
     """
     a = hertz_sphere(radius, load, e_star).a
+    if hardness is not None and hardness > 0:
+        a = max(a, math.sqrt(load / (math.pi * hardness)))
     return math.sqrt(a**2 + 6.0 * radius * max(roughness_rms, 0.0))
 
 
@@ -144,13 +149,15 @@ def auto_domain(
     max_grid: int = 1024,
     smooth_grid: int = 256,
     margin: float = 1.25,
+    hardness: float | None = None,
 ) -> Domain:
     """Choose the domain side and grid for a ball of radius R under load W.
 
     Rules (each overridable):
 
-    - side = 2 * margin * r_c with r_c from :func:`contact_extent` (Hertz radius widened by
-      the roughness); ``size`` overrides it;
+    - side = 2 * margin * r_c with r_c from :func:`contact_extent` (Hertz radius, or the
+      fully plastic radius when a ``hardness`` makes it larger, widened by the roughness);
+      ``size`` overrides it;
     - smooth ball: ``smooth_grid`` cells (256 gives the Hertz peak pressure to ~4e-6);
     - rough ball: the pitch of the roughness data, but at least 32 cells per Hertz radius,
       and at most ``max_grid`` cells per side (coarser than the scan past that);
@@ -163,7 +170,7 @@ def auto_domain(
         raise ContactInputError(f"the grid needs at least 8 cells per side, got {grid!r}")
     rough = roughness_rms > 0 and roughness_dx is not None
     side = size if size is not None else 2.0 * margin * contact_extent(
-        radius, load, e_star, roughness_rms if rough else 0.0)
+        radius, load, e_star, roughness_rms if rough else 0.0, hardness=hardness)
     why = "user size" if size is not None else (
         "2.5 x the contact radius estimated from Hertz and the roughness" if rough
         else "2.5 x the Hertz radius")

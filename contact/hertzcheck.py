@@ -467,29 +467,36 @@ def solve_elastic_plastic(
     plastic_start: np.ndarray | None = None,
     pressure_start: np.ndarray | None = None,
     tol: float = 1e-6,
+    method: str = "auto",
     yield_tol: float = 1e-3,
     relax: float = 0.7,
     anderson: int = 6,
     max_outer: int = 300,
-    engine_iterations: int = 200,
+    engine_iterations: int = 2000,
 ) -> Any:
-    """Elastic-perfectly-plastic solution of a ball on a plate, robustly.
+    """Elastic-perfectly-plastic solution of a ball on a plate.
 
-    The solver's own capped Polonsky-Keer iteration (:func:`contact.bem.solve_normal`
-    with ``hardness``) is tried first, from the elastic solution. On rough contacts it can
-    stall: when every loaded cell of an iterate sits at the cap, no free cell is left to
-    take a step and none can enter (seen on the paper's plate at 1-100 N). The fallback
-    is a plastic-displacement iteration built on elastic solves only: solve the elastic
-    contact of the gap h + u_pl, take the pressure above the hardness on the yielded set,
-    and deepen u_pl there by the displacement that excess pressure makes (one
-    convolution); where u_pl > 0 and p < H the indentation shrinks. At the fixed point
-    p <= H everywhere and p = H wherever u_pl > 0, the conditions the capped solver
-    solves. The load constraint pushes part of the removed load back onto the yielded
-    cells, a slow mode of the plain iteration when most of the contact yields; Anderson
-    mixing (Walker & Ni 2011, SIAM J. Numer. Anal. 49:1715) over the last ``anderson``
-    steps removes it. Every elastic solve is warm-started. Deeply plastic contacts (a
-    smooth ball with the Hertz p0 tens of times the hardness) converge slowly and may
-    raise :class:`~contact.errors.ConvergenceError`.
+    Two independent algorithms solve the same conditions (p <= H everywhere, p = H
+    wherever the plastic displacement u_pl > 0, elastic complementarity elsewhere, load
+    balance):
+
+    - ``"capped"``: the solver's own capped Polonsky-Keer iteration
+      (:func:`contact.bem.solve_normal` with ``hardness``; the plastic cells are a second
+      active set, see the notes of :mod:`contact.bem`), warm-started from the elastic
+      solution clipped at H. Exact to the solver tolerance and robust from elastic to
+      fully plastic contacts; the default.
+    - ``"fixed-point"``: a plastic-displacement iteration built on elastic solves only:
+      solve the elastic contact of the gap h + u_pl, take the pressure above the hardness
+      on the yielded set, and deepen u_pl there by the displacement that excess pressure
+      makes (one convolution); where u_pl > 0 and p < H the indentation shrinks. The load
+      constraint pushes part of the removed load back onto the yielded cells, a slow mode
+      of the plain iteration when most of the contact yields; Anderson mixing (Walker & Ni
+      2011, SIAM J. Numer. Anal. 49:1715) over the last ``anderson`` steps removes it.
+      Every elastic solve is warm-started. It shares nothing with the capped iteration
+      but the elastic solver, which makes it a cross-check; deeply plastic contacts (Hertz
+      p0 tens of times H) converge slowly and may raise
+      :class:`~contact.errors.ConvergenceError`.
+    - ``"auto"``: ``"capped"``.
 
     Parameters
     ----------
@@ -502,20 +509,23 @@ def solve_elastic_plastic(
     elastic : ContactResult, optional
         Elastic solution of ``problem`` at ``load`` (solved here if absent).
     plastic_start, pressure_start : ndarray, optional
-        Warm start of the plastic displacement and the pressure (e.g. from a lower load
-        of a sweep; plastic displacement only grows with the load).
+        Warm start of the plastic displacement (fixed-point iteration) and of the
+        pressure (e.g. from a lower load of a sweep; plastic displacement only grows with
+        the load).
     tol : float
-        Tolerance of the elastic solves.
+        Tolerance of the solves (:func:`contact.bem.solve_normal`).
+    method : {"auto", "capped", "fixed-point"}
+        The algorithm (see above).
     yield_tol : float
-        Stop when the pressure exceeds H by at most this fraction of H.
+        Fixed point: stop when the pressure exceeds H by at most this fraction of H.
     relax : float
-        Mixing parameter of the plastic-displacement update (0 < relax <= 1).
+        Fixed point: mixing parameter of the plastic-displacement update (0 < relax <= 1).
     anderson : int
-        Depth of the Anderson mixing history.
+        Fixed point: depth of the Anderson mixing history.
     max_outer : int
-        Outer-iteration limit.
+        Fixed point: outer-iteration limit.
     engine_iterations : int
-        Iteration budget of the first attempt with the capped solver.
+        Capped solver: iteration limit.
 
     Returns
     -------
@@ -527,7 +537,7 @@ def solve_elastic_plastic(
     Raises
     ------
     ConvergenceError
-        Neither method converged.
+        The chosen method did not converge.
     """
     import dataclasses
     import warnings
@@ -538,8 +548,13 @@ def solve_elastic_plastic(
 
     if not (math.isfinite(hardness) and hardness > 0):
         raise ContactInputError(f"the hardness must be a positive pressure, got {hardness!r}")
+    if method not in ("auto", "capped", "fixed-point"):
+        raise ContactInputError(
+            f"method must be 'auto', 'capped' or 'fixed-point', got {method!r}")
     if getattr(problem, "hardness", None) is not None:
         raise ContactInputError("give the elastic problem (built without a hardness)")
+    if method == "auto":
+        method = "capped"
     n, dx = problem.domain.n, problem.domain.dx
     e_star = problem.e_star
     origin = (-(n // 2) * dx, -(n // 2) * dx)
@@ -561,15 +576,12 @@ def solve_elastic_plastic(
         return dataclasses.replace(res, hertz=hz, notes=tuple(notes),
                                    extra={**res.extra, "plastic_method": method, **extra})
 
-    if plastic_start is None:
-        try:
-            res = solve_normal(h, dx, e_star=e_star, load=load, hardness=hardness,
-                               initial=np.minimum(start, hardness), tol=tol,
-                               max_iter=engine_iterations, origin=origin, edge="ignore",
-                               strict=True)
-            return finish(res, "capped conjugate gradient (contact.bem)", {})
-        except ConvergenceError:
-            pass
+    if method == "capped":
+        res = solve_normal(h, dx, e_star=e_star, load=load, hardness=hardness,
+                           initial=np.minimum(start, hardness), tol=tol,
+                           max_iter=engine_iterations, origin=origin, edge="ignore",
+                           strict=True)
+        return finish(res, "capped conjugate gradient (contact.bem)", {})
 
     conv = convolution(n, n, float(dx), float(dx), False)
     upl = (np.zeros_like(h) if plastic_start is None

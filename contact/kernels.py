@@ -303,7 +303,11 @@ def capped_scale(p, target, hmax, cidx, cval, nc):  # pragma: no cover - compile
     corrections relative to the plain scaling s * p are recorded for the displacement
     update: those already in ``cidx/cval[:nc]`` (made before the scaling) are multiplied
     by s, then (1 - s) hmax is appended for every capped point and hmax - s p for every
-    point the scaling pushes over the cap. Returns (s, #corrections).
+    point the scaling pushes over the cap, so ``cidx``/``cval`` must hold ``nc + p.size``
+    entries (a capped point may then carry two corrections). When no scaling can reach
+    the target (the capped points alone carry more, or every loaded point is capped and
+    they carry less), p is left as it is with s = 1: points must leave the cap or enter,
+    which scaling cannot do; the caller checks the total. Returns (s, #corrections).
     """
     total = 0.0
     n_cap = 0
@@ -313,18 +317,12 @@ def capped_scale(p, target, hmax, cidx, cval, nc):  # pragma: no cover - compile
         else:
             total += p[i]
     free_target = target - n_cap * hmax if n_cap > 0 else target
-    if total <= 0.0 or free_target <= 0.0:
-        # The capped points alone carry too much: scale every point down (s < 1 keeps
-        # all of them below the cap, and the cap is met again as the iteration goes on).
-        grand = total + n_cap * hmax
-        if grand <= 0.0:
-            return 1.0, nc
-        s = target / grand
-        for k in range(nc):
-            cval[k] *= s
-        for i in range(p.size):
-            p[i] *= s
-        return s, nc
+    if free_target <= 0.0 or total <= 0.0:
+        # No scaling of the uncapped points can balance the load: the capped points
+        # alone carry too much (some must leave the cap), or every loaded point is
+        # capped and they carry too little (new points must enter). Leave p unchanged;
+        # the caller sees the total and takes another kind of step.
+        return 1.0, nc
     s = free_target / total
     if hmax < np.inf:
         # Newton on the piecewise-linear f(s) = sum min(s p, hmax) - free_target (exact
@@ -373,8 +371,7 @@ def capped_scale_reference(p, target, hmax):
     capped = p >= hmax
     free_target = target - capped.sum() * hmax if capped.any() else target
     if free_target <= 0 or not (p[~capped] > 0).any():
-        s = target / p.sum()
-        return s, s * p
+        return 1.0, p.copy()
     lo, hi = 0.0, 1.0
     while np.minimum(hi * p[~capped], hmax).sum() < free_target:
         hi *= 2.0
@@ -446,9 +443,11 @@ def sparse_convolve_add_reference(u, cidx, cval, kernel, nx, periodic):
 
 @nb.njit(cache=True)
 def scatter(buf, cidx, cval, nc, value_mode):  # pragma: no cover - compiled
-    """buf[cidx[:nc]] = cval[:nc] (value_mode True) or 0 (False); return the row span.
+    """buf[cidx[:nc]] += cval[:nc] (value_mode True) or = 0 (False); return the row span.
 
     Used to turn many corrections into a dense array for one FFT and to clear it after.
+    A cell may carry several corrections (a capped cell changed by the step and then by
+    the load rescaling): they add up, so ``buf`` must be zero on entry.
     """
     lo = buf.shape[0]
     hi = 0
@@ -456,7 +455,10 @@ def scatter(buf, cidx, cval, nc, value_mode):  # pragma: no cover - compiled
     for k in range(nc):
         r = cidx[k] // nx
         c = cidx[k] % nx
-        buf[r, c] = cval[k] if value_mode else 0.0
+        if value_mode:
+            buf[r, c] += cval[k]
+        else:
+            buf[r, c] = 0.0
         if r < lo:
             lo = r
         if r + 1 > hi:
@@ -533,3 +535,194 @@ def center_on_free_reference(zin, d, p, hmax, subtract_mean):
     zbar = float(zin[free].mean()) if (subtract_mean and free.any()) else 0.0
     z = np.where(free, zin - zbar, 0.0)
     return z, float((d * z)[free].sum())
+
+
+# --------------------------------------------------------------------------------------
+# Elastic-perfectly-plastic safeguards: projected-gradient step and exact line search
+# --------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def _capped_sum(x, cand, m, mu, hmax):  # pragma: no cover - compiled
+    """sum over the candidates of clip(x - mu, 0, hmax) and the count strictly inside."""
+    f = 0.0
+    cnt = 0
+    for k in range(m):
+        v = x[cand[k]] - mu
+        if v >= hmax:
+            f += hmax
+        elif v > 0.0:
+            f += v
+            cnt += 1
+    return f, cnt
+
+
+@nb.njit(cache=True)
+def projected_gradient(p, d, alpha, target, hmax, load_control, s, cand,
+                       nx):  # pragma: no cover - compiled
+    """s = P(p - alpha d) - p, the step to the projection of a gradient step.
+
+    P is the Euclidean projection onto the feasible pressures: the box 0 <= p <= hmax
+    and, in load control, the hyperplane sum(p) = target. That projection is
+    clip(x - mu, 0, hmax) with the one shift mu that restores the total (the Lagrange
+    multiplier of the load; it plays the role of the approach), found by safeguarded
+    Newton on the piecewise-linear, non-increasing total. Only points with x above a
+    lower bound of mu can carry pressure; they are gathered in ``cand`` first, so that
+    the far, open part of the grid is passed over once.
+
+    Returns (sum d s, sum s^2, mu, lo, hi) with [lo, hi) the rows where s != 0.
+    """
+    n = p.size
+    xmin_c = np.inf
+    xmin = np.inf
+    xmax = -np.inf
+    for i in range(n):
+        x = p[i] - alpha * d[i]
+        s[i] = x
+        if x < xmin:
+            xmin = x
+        if x > xmax:
+            xmax = x
+        if p[i] > 0.0 and x < xmin_c:
+            xmin_c = x
+    mu = 0.0
+    if load_control:
+        # At mu = min over the loaded points of x minus hmax every loaded point would sit
+        # at the cap, which carries at least the current total when that is feasible
+        # (sum p = target, p <= hmax): a lower bound of mu. Otherwise (a start that
+        # overloads its points) the bound comes from all points.
+        a = (xmin_c if xmin_c < np.inf else xmin) - hmax
+        b = xmax
+        m = 0
+        for i in range(n):
+            if s[i] > a:
+                cand[m] = i
+                m += 1
+        f, _ = _capped_sum(s, cand, m, a, hmax)
+        if f < target:
+            a = xmin - hmax
+            for i in range(n):
+                cand[i] = i
+            m = n
+        mu = min(max(0.0, a), b)
+        for _ in range(200):
+            f, cnt = _capped_sum(s, cand, m, mu, hmax)
+            f -= target
+            if f > 0.0:
+                a = mu
+            else:
+                b = mu
+            if abs(f) <= 1e-15 * target or b - a <= 1e-15 * max(abs(a), abs(b)):
+                break
+            new = mu + f / cnt if cnt > 0 else 0.5 * (a + b)
+            if not (a < new < b):
+                new = 0.5 * (a + b)
+            if new == mu:
+                break
+            mu = new
+    gs = 0.0
+    ss = 0.0
+    lo = n // nx
+    hi = 0
+    for i in range(n):
+        v = s[i] - mu
+        if v >= hmax:
+            v = hmax
+        elif v < 0.0:
+            v = 0.0
+        si = v - p[i]
+        s[i] = si
+        if si != 0.0:
+            gs += d[i] * si
+            ss += si * si
+            r = i // nx
+            if r < lo:
+                lo = r
+            hi = r + 1
+    if hi == 0:
+        lo = 0
+    return gs, ss, mu, lo, hi
+
+
+def projected_gradient_reference(p, d, alpha, target, hmax, load_control):
+    """numpy twin of :func:`projected_gradient` (mu by bisection); returns (s, gs, ss, mu)."""
+    x = p - alpha * d
+    mu = 0.0
+    if load_control:
+        lo, hi = x.min() - hmax, x.max()
+        for _ in range(300):
+            mid = 0.5 * (lo + hi)
+            if np.clip(x - mid, 0.0, hmax).sum() > target:
+                lo = mid
+            else:
+                hi = mid
+        mu = 0.5 * (lo + hi)
+    s = np.clip(x - mu, 0.0, hmax) - p
+    return s, float(d @ s), float(s @ s), mu
+
+
+@nb.njit(cache=True)
+def add_step(p, s, u, w, theta, hmax):  # pragma: no cover - compiled
+    """p += theta s (kept in [0, hmax], a point meant to reach the cap put on it exactly),
+    u += theta w (w may be float32)."""
+    snap = hmax * (1.0 - 1e-14)
+    for i in range(p.size):
+        si = s[i]
+        if si != 0.0:
+            v = p[i] + theta * si
+            if v >= snap:
+                v = hmax
+            elif v < 0.0:
+                v = 0.0
+            p[i] = v
+        u[i] += theta * w[i]
+
+
+def add_step_reference(p, s, u, w, theta, hmax):
+    """numpy twin of :func:`add_step`; returns (p, u)."""
+    v = np.clip(p + theta * s, 0.0, hmax)
+    v[v >= hmax * (1 - 1e-14)] = hmax
+    return np.where(s != 0, v, p), u + theta * w.astype(float)
+
+
+@nb.njit(cache=True)
+def step_terms(p, p_old, u, u_old, d):  # pragma: no cover - compiled
+    """For the step s = p - p_old with K s = u - u_old: (sum d s, sum s K s, sum p).
+
+    Along p_old + theta s the objective changes by theta sum(d s) + theta^2/2 sum(s K s):
+    its exact minimiser is theta = -sum(d s) / sum(s K s), and the full step raises the
+    objective when that is below 1/2.
+    """
+    gs = 0.0
+    sks = 0.0
+    tot = 0.0
+    for i in range(p.size):
+        pi = p[i]
+        si = pi - p_old[i]
+        if si != 0.0:
+            gs += d[i] * si
+            sks += si * (u[i] - u_old[i])
+        tot += pi
+    return gs, sks, tot
+
+
+def step_terms_reference(p, p_old, u, u_old, d):
+    """numpy twin of :func:`step_terms`."""
+    s = p - p_old
+    return float(d @ s), float(s @ (u - u_old)), float(p.sum())
+
+
+@nb.njit(cache=True)
+def blend(p, p_old, u, u_old, theta):  # pragma: no cover - compiled
+    """p = p_old + theta (p - p_old), u likewise, in place (a damped step)."""
+    for i in range(p.size):
+        po = p_old[i]
+        if p[i] != po:
+            p[i] = po + theta * (p[i] - po)
+        uo = u_old[i]
+        u[i] = uo + theta * (u[i] - uo)
+
+
+def blend_reference(p, p_old, u, u_old, theta):
+    """numpy twin of :func:`blend`; returns (p, u)."""
+    return p_old + theta * (p - p_old), u_old + theta * (u - u_old)

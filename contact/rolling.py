@@ -462,7 +462,6 @@ def sphere_sweep(
     results: list[Any] = []
     notes = list(problem.notes)
     prev = None
-    upl = None
     sequence = progress(range(w.size)) if progress is not None else range(w.size)
     for k in sequence:
         el = problem.solve(float(w[k]), initial=prev, tol=tol)
@@ -472,11 +471,8 @@ def sphere_sweep(
             forces[k] = alpha_h * hysteresis_work(el, radius, kinematics=kinematics,
                                                   share=share)
         else:
-            n_now = problem.domain.n
-            start = upl if upl is not None and upl.shape == (n_now, n_now) else None
             res = solve_elastic_plastic(problem, float(w[k]), float(hardness), elastic=el,
-                                        plastic_start=start, tol=tol)
-            upl = np.asarray(res.plastic_displacement)
+                                        tol=tol)
             forces[k] = plastic_work(res, radius, band=band, roughness_rms=rms)
         results.append(res)
     for r in results:

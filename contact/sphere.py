@@ -141,7 +141,7 @@ class SphereContact:
         self.roughness_rms = rms
         dom = auto_domain(self.radius, self.design_load, self.e_star, roughness_rms=rms,
                           roughness_dx=self.zdx if self._z is not None else None,
-                          grid=grid, size=size, max_grid=max_grid)
+                          grid=grid, size=size, max_grid=max_grid, hardness=self.hardness)
         if self._z is not None:
             fit = max_centred_cells(self._z.shape, self.zdx, self.zdy, self.centre, dom.dx)
             if fit < 8:

@@ -163,3 +163,99 @@ def test_periodic_spectrum(ny, nx, dx, dy):
     got = kn.periodic_love_spectrum(ny, nx, dx, dy, 3)
     want = kn.periodic_love_spectrum_reference(ny, nx, dx, dy, 3)
     np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-20)
+
+
+def test_scatter_adds_repeated_cells():
+    # a capped cell can carry two corrections (the step's and the load rescaling's):
+    # both must reach the displacement
+    buf = np.zeros((3, 4))
+    cidx = np.array([5, 5, 7], dtype=np.int64)
+    cval = np.array([1.0, -0.25, 2.0])
+    assert kn.scatter(buf, cidx, cval, 3, True) == (1, 2)
+    assert buf.ravel()[5] == 0.75 and buf.ravel()[7] == 2.0
+    kn.scatter(buf, cidx, cval, 3, False)
+    assert not buf.any()
+
+
+@pytest.mark.parametrize("case", ["capped_too_much", "all_capped_too_little"])
+def test_capped_scale_leaves_an_unreachable_target(case):
+    # no scaling of the uncapped cells reaches the target: p must stay feasible (<= hmax)
+    # and unchanged, s = 1, so that the caller sees the total and steps otherwise
+    hmax = 1.0
+    if case == "capped_too_much":
+        p = np.array([1.0, 1.0, 1.0, 0.3, 0.0])
+        target = 2.5
+    else:
+        p = np.array([1.0, 1.0, 0.0, 0.0])
+        target = 3.0
+    q = p.copy()
+    cidx = np.empty(2 * p.size, np.int64)
+    cval = np.empty(2 * p.size)
+    s, nc = kn.capped_scale(q, target, hmax, cidx, cval, 0)
+    assert s == 1.0 and nc == 0
+    np.testing.assert_array_equal(q, p)
+    s_ref, q_ref = kn.capped_scale_reference(p, target, hmax)
+    assert s_ref == 1.0
+    np.testing.assert_array_equal(q_ref, p)
+
+
+@pytest.mark.parametrize("load_control", [True, False])
+@pytest.mark.parametrize("seed", [10, 11, 12])
+def test_projected_gradient(seed, load_control):
+    _, p, _, _ = _state(seed, hmax=1.5)
+    rng = np.random.default_rng(seed + 100)
+    d = rng.normal(size=p.size)
+    target = float(p.sum())
+    s = np.empty(p.size)
+    cand = np.empty(p.size, np.int64)
+    gs, ss, mu, lo, hi = kn.projected_gradient(p, d, 0.7, target, 1.5, load_control, s,
+                                               cand, 9)
+    s_ref, gs_ref, ss_ref, mu_ref = kn.projected_gradient_reference(p, d, 0.7, target, 1.5,
+                                                                    load_control)
+    np.testing.assert_allclose(s, s_ref, atol=1e-12)
+    np.testing.assert_allclose([gs, ss, mu], [gs_ref, ss_ref, mu_ref], rtol=1e-9,
+                               atol=1e-12)
+    new = p + s
+    assert new.min() >= 0 and new.max() <= 1.5
+    if load_control:
+        assert new.sum() == pytest.approx(target, rel=1e-14)
+    # a projected gradient step is a descent direction (d.s <= -|s|^2 / alpha)
+    assert gs <= -ss / 0.7 * (1 - 1e-12)
+    rows = np.nonzero(s.reshape(-1, 9).any(axis=1))[0]
+    assert (lo, hi) == (int(rows[0]), int(rows[-1]) + 1)
+
+
+def test_projected_gradient_from_an_overloaded_start():
+    # loaded cells far above the cap (a warm start for a larger load): the projection
+    # must spread the excess onto other cells, here ranked by d
+    p = np.array([0.0, 5.0, 0.0, 0.0, 7.0, 0.0])
+    d = np.array([3.0, 0.0, 1.0, 2.0, 0.0, 4.0])
+    s = np.empty(6)
+    cand = np.empty(6, np.int64)
+    kn.projected_gradient(p, d, 1.0, 12.0, 2.5, True, s, cand, 3)
+    s_ref, *_ = kn.projected_gradient_reference(p, d, 1.0, 12.0, 2.5, True)
+    np.testing.assert_allclose(s, s_ref, atol=1e-12)
+    new = p + s
+    assert new.sum() == pytest.approx(12.0, rel=1e-14) and new.max() <= 2.5
+    assert new[2] >= new[3] >= new[0] >= new[5]  # the smaller d, the more pressure
+
+
+def test_add_step_step_terms_and_blend():
+    rng, p, u, _ = _state(13, hmax=1.5)
+    s = np.where(rng.random(p.size) < 0.5, rng.normal(size=p.size), 0.0)
+    s = np.clip(p + s, 0.0, 1.5) - p
+    s[3] = 1.5 - p[3]  # meant to land on the cap
+    w = rng.normal(size=p.size).astype(np.float32)
+    p_ref, u_ref = kn.add_step_reference(p, s, u, w, 1.0, 1.5)
+    q, v = p.copy(), u.copy()
+    kn.add_step(q, s, v, w, 1.0, 1.5)
+    np.testing.assert_allclose(q, p_ref, rtol=1e-15)
+    np.testing.assert_allclose(v, u_ref, rtol=1e-14)
+    assert q[3] == 1.5
+    d = rng.normal(size=p.size)
+    got = kn.step_terms(q, p, v, u, d)
+    np.testing.assert_allclose(got, kn.step_terms_reference(q, p, v, u, d), rtol=1e-12)
+    p_ref, u_ref = kn.blend_reference(q, p, v, u, 0.3)
+    kn.blend(q, p, v, u, 0.3)
+    np.testing.assert_allclose(q, p_ref, rtol=1e-14)
+    np.testing.assert_allclose(v, u_ref, rtol=1e-14)
