@@ -40,6 +40,28 @@ def positive_length(text: str) -> float:
     return value
 
 
+def add_ball_arguments(parser: Any, *, plate_option: bool = True, required: bool = True) -> None:
+    """The ball-on-plate arguments shared by contact, hertz-check, rolling and report:
+    ``--plate`` (unless the plate is positional), ``--ball``, ``--radius``, ``--materials``."""
+    if plate_option:
+        parser.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
+    parser.add_argument("--ball", metavar="FILE",
+                        help="scan of the ball (its best-fit sphere is removed)")
+    parser.add_argument("--radius", type=positive_length, required=required, metavar="L",
+                        help="ball radius, e.g. 20mm")
+    parser.add_argument("--materials", required=required, metavar="BALL,PLATE",
+                        help="ball and plate materials, e.g. steel,aluminium "
+                        "(override values with NAME:E=..:nu=..:H=..)")
+
+
+def save_figure(fig: Any, path: str) -> None:
+    """Close a written matplotlib figure and say where it went (on stderr)."""
+    from surfmet.plots._style import close
+
+    close(fig)
+    log(f"figure written to {path}")
+
+
 def add_json_flag(parser: argparse.ArgumentParser) -> None:
     """The ``--json`` flag every subcommand shares."""
     parser.add_argument(

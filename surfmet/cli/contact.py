@@ -6,7 +6,15 @@ import argparse
 import sys
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length, pressure
+from surfmet.cli._common import (
+    add_ball_arguments,
+    add_json_flag,
+    emit_json,
+    force,
+    log,
+    positive_length,
+    pressure,
+)
 
 EPILOG = """examples:
   surfmet contact --radius 20mm --load 10N --materials steel,aluminium
@@ -32,13 +40,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
-    p.add_argument("--ball", metavar="FILE", help="scan of the ball (its sphere is removed)")
-    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
-                   help="ball radius, e.g. 20mm")
+    add_ball_arguments(p)
     p.add_argument("--load", type=force, required=True, metavar="F", help="normal load, e.g. 10N")
-    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
-                   help="ball and plate materials, e.g. steel,aluminium")
     plast = p.add_mutually_exclusive_group()
     plast.add_argument("--hardness", type=pressure, metavar="P",
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")

@@ -5,7 +5,15 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length, pressure
+from surfmet.cli._common import (
+    add_ball_arguments,
+    add_json_flag,
+    emit_json,
+    force,
+    log,
+    pressure,
+    save_figure,
+)
 
 EPILOG = """examples:
   surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,aluminium
@@ -32,14 +40,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("plate", metavar="PLATE", help="scan of the plate")
-    p.add_argument("--ball", metavar="BALL", help="scan of the ball (its sphere is removed)")
-    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
-                   help="ball radius, e.g. 20mm")
+    add_ball_arguments(p, plate_option=False)
     p.add_argument("--load", type=force, required=True, metavar="F",
                    help="normal load, e.g. 10N")
-    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
-                   help="ball and plate materials, e.g. steel,aluminium "
-                   "(override with NAME:E=..:nu=..:H=..)")
     p.add_argument("--hardness", type=pressure, metavar="P",
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--elastic", action="store_true",
@@ -73,10 +76,7 @@ def run(args: argparse.Namespace) -> int:
     for note in check.notes:
         log(f"note: {note}")
     if args.plot:
-        from surfmet.plots._style import close
-
-        close(check.figure(args.plot))
-        log(f"figure written to {args.plot}")
+        save_figure(check.figure(args.plot), args.plot)
     if args.json:
         emit_json(check.to_json())
         return 0

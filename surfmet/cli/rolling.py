@@ -6,12 +6,14 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import (
+    add_ball_arguments,
     add_json_flag,
     emit_json,
     force_range,
     log,
-    positive_length,
     pressure,
+    progress,
+    save_figure,
 )
 
 EPILOG = """examples:
@@ -40,12 +42,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
-    p.add_argument("--ball", metavar="FILE", help="scan of the ball (its sphere is removed)")
-    p.add_argument("--radius", type=positive_length, required=True, metavar="L",
-                   help="ball radius, e.g. 20mm")
-    p.add_argument("--materials", required=True, metavar="BALL,PLATE",
-                   help="ball and plate materials, e.g. steel,aluminium")
+    add_ball_arguments(p)
     p.add_argument("--loads", type=force_range, required=True, metavar="F1:F2[:N]",
                    help="load range, N log-spaced loads (default 9), e.g. 1N:100N:9")
     p.add_argument("--model", choices=("hysteresis", "plastic"), default="hysteresis",
@@ -73,7 +70,6 @@ def run(args: argparse.Namespace) -> int:
     import math
 
     from contact.rolling import log_loads
-    from surfmet.cli._common import progress
     from surfmet.errors import SurfmetInputError
     from surfmet.rolling import rolling_resistance
 
@@ -98,10 +94,7 @@ def run(args: argparse.Namespace) -> int:
     for note in rep.notes:
         log(f"note: {note}")
     if args.plot:
-        from surfmet.plots._style import close
-
-        close(rep.figure(args.plot))
-        log(f"figure written to {args.plot}")
+        save_figure(rep.figure(args.plot), args.plot)
     if args.json:
         emit_json(rep.to_json())
         return 0
