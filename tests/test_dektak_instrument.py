@@ -74,3 +74,24 @@ def test_instrument_unfiltered_results_and_settings(dektak_analysis):
     assert s["lc_iso4288"]["lc"] == pytest.approx(0.08e-3)
     assert "no λc filter" in s["lc_note"]
     assert s["n_sampling"] == 5
+
+
+def test_the_cli_command_reproduces_the_numbers_in_the_file_header(realdata, capsys):
+    """The issue's contract, end to end: ``surfmet roughness dektak-1.csv --window
+    468um:733um --level plane`` against the instrument's results as the file itself states
+    them (parsed from its header, not typed here): Ra, Rq, Skew to their printed digits,
+    RzDin within 2 %."""
+    import json
+
+    from surfmet.cli import main
+
+    path = realdata("dektak-1.csv")
+    stated = surfmet.read(path).metadata["instrument_results"]
+    assert main(["roughness", str(path), "--window", "468um:733um", "--level", "plane",
+                 "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)["parameters"]
+    for ours, theirs, half_digit in (("Ra", "Ra", 0.000005e-6), ("Rq", "Rq", 0.000005e-6),
+                                     ("Rsk", "Skew", 0.005)):
+        assert got[ours]["unit"] == stated[theirs]["unit"]
+        assert abs(got[ours]["value"] - stated[theirs]["value"]) <= half_digit * (1 + 1e-9)
+    assert got["Rz"]["value"] == pytest.approx(stated["RzDin"]["value"], rel=0.02)
