@@ -4,10 +4,9 @@
 with three guarantees whatever the engine:
 
 * **the same results**: every item is computed by the same top-level function with the
-  same arguments, in a fresh call; nothing is shared between items, so the numbers are
-  bitwise those of the serial run, as long as the function's arithmetic does not depend
-  on the number of threads (a BLAS ``dot`` does: Dask workers run single-threaded BLAS,
-  a serial run multi-threaded BLAS, and such sums then differ in the last bits);
+  same arguments, in a fresh call, with single-threaded BLAS in every engine (Dask's
+  workers run that way; a multi-threaded BLAS splits its sums by thread count and would
+  change the last bits), so the numbers are bitwise those of the serial run;
 * **a failure stays in its row**: an exception, or a worker process that dies (a crash,
   the kernel's out-of-memory killer), turns into ``on_error(item, message)`` in that
   item's place and the batch goes on;
@@ -40,6 +39,20 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+
+
+class _SingleThreadedBlas:
+    """``func(item)`` with BLAS/LAPACK limited to one thread (threadpoolctl); picklable
+    whenever ``func`` is."""
+
+    def __init__(self, func: Callable[[Any], Any]) -> None:
+        self.func = func
+
+    def __call__(self, item: Any) -> Any:
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(limits=1, user_api="blas"):
+            return self.func(item)
 
 
 def default_workers() -> int:
@@ -120,6 +133,7 @@ def batch_map(
         raise SurfmetInputError(f"workers must be at least 1, got {workers}")
     if not items:
         return []
+    func = _SingleThreadedBlas(func)
     if scheduler is not None:
         return _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout)
     n = default_workers() if workers is None else int(workers)

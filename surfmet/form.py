@@ -144,9 +144,11 @@ def fit_polynomial(topo: Topography, deg: int) -> tuple[np.ndarray, FormFit]:
     full = n_valid == z.size
     zz = z if full else np.where(valid, z, 0.0)
     w = None if full else valid.astype(np.float64)
-    # Right-hand side: Σ P_a(x) P_b(y) z over valid points.
-    zx = zz @ px.T  # (ny, deg+1): Σ_i z[j, i] P_a(x_i)
-    rhs = np.array([py[b] @ zx[:, a] for a, b in terms])
+    # Right-hand side: Σ P_a(x) P_b(y) z over valid points. einsum, not BLAS: its fixed
+    # summation order makes the fit bitwise identical whatever the BLAS thread count (a
+    # serial run and single-threaded Dask workers must agree to the last bit).
+    zx = np.einsum("ji,ai->ja", zz, px)  # (ny, deg+1): Σ_i z[j, i] P_a(x_i)
+    rhs = np.array([np.einsum("j,j->", py[b], zx[:, a]) for a, b in terms])
     # Gram matrix: Σ P_a P_c (x) P_b P_d (y) over valid points.
     t = len(terms)
     gram = np.empty((t, t))
@@ -155,7 +157,8 @@ def fit_polynomial(topo: Topography, deg: int) -> tuple[np.ndarray, FormFit]:
             c, d = terms[q]
             fx = px[a] * px[c]
             fy = py[b] * py[d]
-            val = fy.sum() * fx.sum() if full else fy @ (w @ fx)
+            val = (fy.sum() * fx.sum() if full
+                   else np.einsum("j,j->", fy, np.einsum("ji,i->j", w, fx)))
             gram[p, q] = gram[q, p] = val
     coef, *_ = np.linalg.lstsq(gram, rhs, rcond=None)
     trend = np.zeros((ny, nx))

@@ -11,9 +11,12 @@ from surfmet.batch import batch_map, default_workers
 from surfmet.errors import SurfmetInputError
 from surfmet.roughness import roughness_file
 
-# small real files of several formats, profiles and areal scans, one with 27 % NaN
+# real files of several formats, profiles and areal scans, one with 27 % NaN; x3p-2 is a
+# complete 650 x 650 grid, large enough for a multi-threaded BLAS to split its sums (which
+# made Dask's single-threaded workers differ in the last bits before every engine ran
+# single-threaded BLAS)
 REAL = ["al3d-1.al3d", "frt-2.frt", "matrix-4.txt", "hfm-1.hfm", "opdx-3.opdx",
-        "dektak-1.csv", "test.gwy", "sdf-1.sdf"]
+        "dektak-1.csv", "test.gwy", "sdf-1.sdf", "x3p-2.x3p"]
 
 
 @pytest.fixture
