@@ -78,9 +78,16 @@ def table2_check(plate: surfmet.Topography, ball: surfmet.Topography) -> dict:
 
 
 def main(argv: list[str]) -> int:
-    quick = "--quick" in argv
-    args = [a for a in argv if not a.startswith("--")]
-    outdir = Path(args[0]) if args else Path("contact_out")
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("outdir", nargs="?", default="contact_out",
+                        help="output folder (default contact_out)")
+    parser.add_argument("--quick", action="store_true",
+                        help="one plate position and fewer loads (about 1 min)")
+    opts = parser.parse_args(argv)
+    quick = opts.quick
+    outdir = Path(opts.outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     t_start = time.time()
     findings: dict = {}

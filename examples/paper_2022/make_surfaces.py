@@ -156,8 +156,14 @@ def make_ball(seed: int = SEED + 1) -> Topography:
 
 
 def main(argv: list[str]) -> int:
+    import argparse
+
     root = Path(__file__).resolve().parents[2]
-    out = Path(argv[0]) if argv else root / "surfmet" / "data"
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("outdir", nargs="?", default=str(root / "surfmet" / "data"),
+                        help="where to write paper_plate.x3p and paper_ball.x3p "
+                        "(default: surfmet/data, the shipped copies)")
+    out = Path(parser.parse_args(argv).outdir)
     out.mkdir(parents=True, exist_ok=True)
     plate, ball = make_plate(), make_ball()
     (out / "paper_plate.x3p").write_bytes(encode(plate, "x3p", dtype="F",

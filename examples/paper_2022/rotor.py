@@ -16,14 +16,19 @@ import textwrap
 import time
 from pathlib import Path
 
-import numpy as np
+# The example beside this one is called contact.py (the name the project gives it): keep
+# this folder off the import path, or "import contact" would import that script.
+_HERE = Path(__file__).resolve().parent
+sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
-from contact.lawofmotion import (
+import numpy as np  # noqa: E402
+
+from contact.lawofmotion import (  # noqa: E402
     SELECTABLE,
     analyse_table,
     paper_parabola,
 )
-from contact.rotor import (
+from contact.rotor import (  # noqa: E402
     G_STANDARD,
     IDENTIFIABILITY,
     infer_rolling_law,
@@ -31,7 +36,7 @@ from contact.rotor import (
     optimal_collar_length,
     rolling_torque,
 )
-from contact.table3 import COLUMNS, table3, table3_tsv
+from contact.table3 import COLUMNS, table3, table3_tsv  # noqa: E402
 
 PAPER_PHI_S = (0.821, 1.134, -0.527)  # the paper's "phi_s(t)"
 PAPER_PHI_A = (0.951, 1.0254, -0.249)  # the paper's "phi_a(t)"
@@ -47,9 +52,16 @@ def heading(text: str) -> None:
 
 
 def main(argv: list[str]) -> int:
-    fast = "--fast" in argv
-    args = [a for a in argv if not a.startswith("--")]
-    out = Path(args[0] if args else "rotor_out")
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("outdir", nargs="?", default="rotor_out",
+                        help="output folder (default rotor_out)")
+    parser.add_argument("--fast", action="store_true",
+                        help="approximate leave-one-out instead of exact refits")
+    opts = parser.parse_args(argv)
+    fast = opts.fast
+    out = Path(opts.outdir)
     out.mkdir(parents=True, exist_ok=True)
     fps = 120.0
     step = math.pi / 2
