@@ -18,14 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.errors import ContactInputError
-
-
-def _positive(value: float, name: str, unit: str) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and v > 0):
-        raise ContactInputError(f"{name} must be a positive finite value in {unit}, got {value!r}")
-    return v
+from contact._validate import positive
 
 
 @dataclass(frozen=True)
@@ -112,9 +105,9 @@ def hertz_sphere(radius: float, load: float, e_star: float) -> HertzSphere:
     >>> round(h.delta * 1e6, 3), round(h.a * 1e6)
     (0.936, 137)
     """
-    R = _positive(radius, "radius", "m")
-    W = _positive(load, "load", "N")
-    E = _positive(e_star, "E*", "Pa")
+    R = positive(radius, "radius", "m")
+    W = positive(load, "load", "N")
+    E = positive(e_star, "E*", "Pa")
     a = (3.0 * W * R / (4.0 * E)) ** (1.0 / 3.0)
     return HertzSphere(radius=R, load=W, e_star=E, a=a, delta=a**2 / R,
                        p0=3.0 * W / (2.0 * math.pi * a**2))
@@ -122,9 +115,9 @@ def hertz_sphere(radius: float, load: float, e_star: float) -> HertzSphere:
 
 def hertz_sphere_from_approach(radius: float, delta: float, e_star: float) -> HertzSphere:
     """The Hertz solution for a prescribed approach delta: W = (4/3) E* R^(1/2) delta^(3/2)."""
-    R = _positive(radius, "radius", "m")
-    d = _positive(delta, "approach", "m")
-    E = _positive(e_star, "E*", "Pa")
+    R = positive(radius, "radius", "m")
+    d = positive(delta, "approach", "m")
+    E = positive(e_star, "E*", "Pa")
     load = 4.0 / 3.0 * E * math.sqrt(R) * d**1.5
     return hertz_sphere(R, load, E)
 
@@ -189,8 +182,8 @@ def hertz_cylinder(radius: float, load_per_length: float, e_star: float) -> Hert
     e_star : float
         Composite modulus E* in Pa.
     """
-    R = _positive(radius, "radius", "m")
-    W = _positive(load_per_length, "load per length", "N/m")
-    E = _positive(e_star, "E*", "Pa")
+    R = positive(radius, "radius", "m")
+    W = positive(load_per_length, "load per length", "N/m")
+    E = positive(e_star, "E*", "Pa")
     a = math.sqrt(4.0 * W * R / (math.pi * E))
     return HertzCylinder(radius=R, load_per_length=W, e_star=E, a=a, p0=2.0 * W / (math.pi * a))

@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 
 G_STANDARD = 9.80665
@@ -62,13 +63,6 @@ __all__ = [
     "rolling_torque",
     "tangential_forces",
 ]
-
-
-def _positive(name: str, value: float) -> float:
-    value = float(value)
-    if not (math.isfinite(value) and value > 0):
-        raise ContactInputError(f"{name} must be a positive finite number, got {value!r}")
-    return value
 
 
 # --------------------------------------------------------------------------------------------
@@ -99,7 +93,7 @@ class RotorGeometry:
             "ball_radius", "ball_density", "centre_distance", "rod_radius", "rod_density",
             "collar_outer_radius", "collar_density",
         ):
-            _positive(name, getattr(self, name))
+            positive(getattr(self, name), name)
         if not self.collar_length >= 0:
             raise ContactInputError(f"collar_length must be >= 0, got {self.collar_length!r}")
         if not 0 <= self.collar_inner_radius < self.collar_outer_radius:

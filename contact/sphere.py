@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.bem import SolverStats, solve_normal
 from contact.errors import ContactInputError, EdgeContactError, EdgeContactWarning
 from contact.geometry import (
@@ -39,16 +40,6 @@ from contact.hertz import hertz_sphere
 from contact.result import ContactResult
 
 _ON_EDGE = ("enlarge", "warn", "raise")
-
-
-def _positive(value: Any, what: str, unit: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ContactInputError(f"{what} must be a number in {unit}, got {value!r}") from None
-    if not (math.isfinite(v) and v > 0):
-        raise ContactInputError(f"{what} must be positive and finite (in {unit}), got {value!r}")
-    return v
 
 
 class SphereContact:
@@ -106,10 +97,10 @@ class SphereContact:
         max_grid: int = 1024,
         exact_sphere: bool = False,
     ):
-        self.radius = _positive(radius, "the ball radius", "m")
-        self.e_star = _positive(e_star, "E*", "Pa")
-        self.design_load = _positive(load, "the load", "N")
-        self.hardness = None if hardness is None else _positive(hardness, "the hardness", "Pa")
+        self.radius = positive(radius, "the ball radius", "m")
+        self.e_star = positive(e_star, "E*", "Pa")
+        self.design_load = positive(load, "the load", "N")
+        self.hardness = None if hardness is None else positive(hardness, "the hardness", "Pa")
         self.periodic = bool(periodic)
         self.exact_sphere = bool(exact_sphere)
         self.notes: list[str] = []
@@ -122,8 +113,8 @@ class SphereContact:
                 raise ContactInputError(f"the roughness must be a 2D map, got shape {z.shape}")
             if not np.isfinite(z).any():
                 raise ContactInputError("the roughness map is NaN everywhere: nothing measured")
-            self.zdx = _positive(roughness_dx, "the roughness pitch dx", "m")
-            self.zdy = self.zdx if roughness_dy is None else _positive(
+            self.zdx = positive(roughness_dx, "the roughness pitch dx", "m")
+            self.zdy = self.zdx if roughness_dy is None else positive(
                 roughness_dy, "the roughness pitch dy", "m")
             if level:
                 z, plane = remove_plane(z, self.zdx, self.zdy)
@@ -224,7 +215,7 @@ class SphereContact:
         if on_edge not in _ON_EDGE:
             raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
         if approach is None:
-            load = self.design_load if load is None else _positive(load, "the load", "N")
+            load = self.design_load if load is None else positive(load, "the load", "N")
         elif load is not None:
             raise ContactInputError("give a load or an approach, not both")
         notes = list(self.notes)

@@ -36,6 +36,19 @@ def scan_record(scan: Any) -> dict[str, Any]:
     return out
 
 
+def _fit_fields(f: Any) -> dict[str, Any]:
+    """The fields a sphere fit and a circle fit share, with their units."""
+    return {
+        "radius": quantity(f.radius, "m"),
+        "center": quantity(list(f.center), "m"),
+        "rms_residual": quantity(f.rms_residual, "m"),
+        "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
+        "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
+        "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
+        "n_points": f.n_points,
+    }
+
+
 def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "linear"
                ) -> dict[str, Any]:
     """The fit as a JSON-ready dict (value/unit pairs)."""
@@ -50,13 +63,7 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         f = fit_sphere(scan, loss=loss)
         return {
             "shape": "sphere",
-            "radius": quantity(f.radius, "m"),
-            "center": quantity(list(f.center), "m"),
-            "rms_residual": quantity(f.rms_residual, "m"),
-            "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
-            "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-            "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
-            "n_points": f.n_points,
+            **_fit_fields(f),
             "convex": f.convex,
             "loss": loss,
         }
@@ -81,13 +88,7 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
     return {
         "shape": "circle",
         "profile": prof.metadata.get("profile"),
-        "radius": quantity(f.radius, "m"),
-        "center": quantity(list(f.center), "m"),
-        "rms_residual": quantity(f.rms_residual, "m"),
-        "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
-        "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-        "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
-        "n_points": f.n_points,
+        **_fit_fields(f),
         "loss": loss,
     }
 
