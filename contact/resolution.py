@@ -37,6 +37,7 @@ no-contact switches between neighbouring cells times dx.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -261,6 +262,13 @@ QUANTITIES = {
     "profile_deviation": "1",
 }
 
+#: Criteria whose failure survives refinement although their quantity keeps moving: the
+#: variance of block means never exceeds the variance of the pixels, so sigma (and with it
+#: the GJM alpha) can only grow as the pixel shrinks; an alpha already above its limit
+#: stays above it on any finer scan.
+FAILURE_SURVIVES = {"alpha": "σ can only grow as the pixel shrinks, so this failure "
+                             "survives refinement"}
+
 #: hertz-check criterion -> the quantity it rests on (None: independent of the pixel).
 CRITERION_QUANTITY = {
     "alpha": "sigma", "profile": "profile_deviation", "radius": "a_star",
@@ -330,6 +338,9 @@ class ResolutionStudy:
             q = CRITERION_QUANTITY.get(c.name)
             if q is None or (q in self.trends and self.trends[q].converged):
                 used.append(c)
+            elif c.decisive and not c.passed and c.name in FAILURE_SURVIVES:
+                used.append(dataclasses.replace(
+                    c, reason=f"{c.reason} ({FAILURE_SURVIVES[c.name]})"))
             else:
                 left_decisive |= c.decisive
                 t = self.trends.get(q)

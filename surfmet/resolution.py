@@ -187,6 +187,14 @@ def run_cli(args: argparse.Namespace, command: str) -> int:
     def progress(label: str) -> None:
         log(f"resolution study: solving at {label}")
 
+    # the study sets each level's grid and domain itself; these options would be ignored
+    for opt in ("grid", "size", "out", "plot"):
+        if getattr(args, opt, None) is not None:
+            raise SurfmetInputError(f"--{opt} does not apply to --resolution-study (each "
+                                    "level's grid follows its pixel on one common domain)")
+    if getattr(args, "periodic", False):
+        raise SurfmetInputError("--periodic does not apply to --resolution-study")
+
     if command == "rolling":
         from contact.rolling import log_loads
         from surfmet.materials import parse_materials as pm

@@ -44,6 +44,7 @@ def test_block_average_keeps_the_mean_and_lowers_the_slope():
         assert zc.shape == (128 // k, 128 // k)
         assert zc.mean() == pytest.approx(z.mean(), abs=1e-15)
         assert rms_slope(zc, k * 1e-6) < 0.8 * rms_slope(z, 1e-6)
+        assert zc.std() <= z.std()  # why a failed alpha survives refinement
     # one block by hand: the mean of its four pixels
     a = np.arange(16.0).reshape(4, 4)
     assert block_average(a, 2)[0, 1] == pytest.approx((2 + 3 + 6 + 7) / 4)
@@ -122,6 +123,10 @@ def test_cli_hertz_check_study_json(capsys):
     assert out["verdict"]["decided"] == (out["verdict"]["hertz_holds"] is not None)
     for item in out["verdict"]["not_used"]:
         assert item.split(" (")[1].split(" ")[0] in out["keeps_moving"]
+    # sigma keeps moving on this plate, but alpha fails at every pixel and can only grow
+    assert "sigma" in out["keeps_moving"] and out["verdict"]["hertz_holds"] is False
+    assert any(r.startswith("α") and "survives refinement" in r
+               for r in out["verdict"]["reasons"])
 
 
 def test_cli_contact_study_text_and_errors(capsys):
@@ -135,6 +140,10 @@ def test_cli_contact_study_text_and_errors(capsys):
     assert rc == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "scan" in err[0]
+    rc = main(["contact", "--plate", _data("paper_plate.x3p"), "--radius", "20mm",
+               "--load", "5N", "--materials", "steel,aluminium", "--resolution-study",
+               "--grid", "64"])
+    assert rc == 1 and "--grid" in capsys.readouterr().err
 
 
 def test_cli_rolling_study_json(capsys):
