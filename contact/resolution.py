@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -288,6 +289,7 @@ class StudyLevel:
     comparison: Any = None
     result: Any = None
     sweep: Any = None
+    seconds: float = 0.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -473,6 +475,7 @@ def sphere_study(
     for k in factors:
         if progress is not None:
             progress(f"pixel x{k}")
+        t0 = time.perf_counter()
         zc, (i, j) = centred_blocks(z, k, centre)
         px, py = dx * k, dy * k
         n = n1 // k
@@ -490,7 +493,8 @@ def sphere_study(
             notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")
         vals = _level_values(main, comp, elastic.pmax, zc, px, hardness)
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=problem.domain.n, values=vals,
-                                 comparison=comp, result=main))
+                                 comparison=comp, result=main,
+                                 seconds=time.perf_counter() - t0))
     pixels = [lv.pixel for lv in levels]
     trends = {q: trend(q, pixels, [lv.values[q] for lv in levels], unit=u)
               for q, u in QUANTITIES.items()}
@@ -548,6 +552,7 @@ def rolling_study(
     for k in factors:
         if progress is not None:
             progress(f"pixel x{k}")
+        t0 = time.perf_counter()
         zc, (i, j) = centred_blocks(z, k, centre)
         px, py = dx * k, dy * k
         n = n1 // k
@@ -557,7 +562,8 @@ def rolling_study(
         lo, hi = sw.lambda_ci
         vals = {"lambda_eff": float(sw.lambda_eff), "lambda_lo": float(lo),
                 "lambda_hi": float(hi), "rms_slope": rms_slope(zc, px)}
-        levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw))
+        levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw,
+                                 seconds=time.perf_counter() - t0))
     pixels = [lv.pixel for lv in levels]
     trends = {q: trend(q, pixels, [lv.values[q] for lv in levels], unit="1")
               for q in ("lambda_eff", "rms_slope")}
