@@ -132,7 +132,9 @@ def corrected_area(contact: np.ndarray, dx: float, dy: float | None = None) -> f
 #: What theory expects of each quantity as the pixel shrinks.
 EXPECTED = {
     "a_star": "converges (Hertz scale: set by the ball's curvature and the load)",
-    "approach": "converges (set by the Hertz scale and the height distribution)",
+    "approach": "converges when the summit heights do (set by the Hertz scale and the "
+                "height distribution; the highest summits rise slowly as finer pixels sample "
+                "more extremes, and plastic flattening adds to it)",
     "sigma": "converges (block averaging removes only pixel-scale height variance)",
     "profile_deviation": "converges (azimuthal average: Hertz scale)",
     "area": "A ~ W/(E* h'_rms) ~ dx^(1-H): shrinks as the pixel shrinks on a self-affine "

@@ -85,9 +85,12 @@ def test_smooth_sphere_converges_to_hertz():
 
 
 def test_self_affine_plate_area_keeps_moving_while_a_star_converges():
-    rng = np.random.default_rng()
+    # hidden Hurst exponent and rms; the rms is small against the Hertz approach (0.36 µm)
+    # so that the highest summits, which rise slowly as finer pixels sample more extremes,
+    # move the approach by less than the 2 % criterion
+    rng = np.random.default_rng(20261125)
     hurst = rng.uniform(0.6, 0.85)
-    z = self_affine(400, 1e-6, rng.uniform(0.08, 0.12) * 1e-6, hurst, rng)
+    z = self_affine(400, 1e-6, rng.uniform(0.024, 0.036) * 1e-6, hurst, rng)
     study = sphere_study(RADIUS, LOAD, E_STAR, z, 1e-6)
     t = study.trends
     assert t["a_star"].converged and t["approach"].converged
