@@ -195,6 +195,9 @@ class Trend:
 
     def sentence(self) -> str:
         """One line for the user."""
+        if math.isnan(self.last_change):
+            return (f"{self.name}: not available at the two finest pixels, convergence "
+                    f"unknown. Theory: {self.expected}")
         pct = f"{100 * self.last_change:.3g} %" if math.isfinite(self.last_change) else "from 0"
         text = f"{self.name}: {self.status} ({pct} over the last halving"
         if not self.converged and math.isfinite(self.exponent):
@@ -231,7 +234,9 @@ def trend(name: str, pixels: Sequence[float], values: Sequence[float], unit: str
         raise ContactInputError("a trend needs at least two levels, one value per pixel size")
     fine, prev = float(v[-1]), float(v[-2])
     d = abs(fine - prev)
-    if d == 0:
+    if not (math.isfinite(fine) and math.isfinite(prev)):
+        change = d = math.nan  # a level gave no value: nothing to say about convergence
+    elif d == 0:
         change = 0.0
     elif fine == 0:
         change = math.inf
@@ -546,6 +551,7 @@ def rolling_study(
     if loads.size < 3 or not np.all(loads > 0):
         raise ContactInputError("a rolling study needs at least 3 positive loads")
     z, dy, shape = _levels(roughness, dx, dy, factors)
+    notes: list[str] = []
     sig = float(np.std(z))
     size = auto_domain(radius, float(loads[-1]), e_star, roughness_rms=sig, roughness_dx=dx,
                        grid=16, hardness=sweep_kwargs.get("hardness")).size
@@ -562,6 +568,8 @@ def rolling_study(
                           roughness_dy=py, roughness_rms=sig, centre=(j * px, i * py),
                           grid=n, size=n * px, **sweep_kwargs)
         lo, hi = sw.lambda_ci
+        if sw.fit is None:
+            notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")
         vals = {"lambda_eff": float(sw.lambda_eff), "lambda_lo": float(lo),
                 "lambda_hi": float(hi), "rms_slope": rms_slope(zc, px)}
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw,
@@ -570,4 +578,5 @@ def rolling_study(
     trends = {q: trend(q, pixels, [lv.values[q] for lv in levels], unit="1")
               for q in ("lambda_eff", "rms_slope")}
     return ResolutionStudy(levels=tuple(levels), trends=trends, side=n1 * dx,
+                           notes=tuple(notes),
                            settings={"factors": list(factors), "loads": loads.tolist()})

@@ -162,7 +162,8 @@ def study_lines(study: Any) -> list[str]:
         label = f"{label} ({unit})" if unit else label
         cells = "".join(f"{v * scale:>13.5g}" for v in t.values)
         pct = f"{100 * t.last_change:.3g} %" if math.isfinite(t.last_change) else "from 0"
-        lines.append(f"{label:18}{cells}   {t.status} ({pct})")
+        status = "unknown (no value)" if math.isnan(t.last_change) else f"{t.status} ({pct})"
+        lines.append(f"{label:18}{cells}   {status}")
     lines.append("")
     lines += [f"- {t.sentence()}" for t in study.trends.values()]
     lines += [f"note: {n}" for n in study.notes]

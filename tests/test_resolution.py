@@ -158,3 +158,14 @@ def test_cli_rolling_study_json(capsys):
     lam = [lv["lambda_eff"] for lv in out["levels"]]
     assert len(lam) == 4 and all(0.5 < v < 3 for v in lam)
     assert "lambda_eff" in out["trends"] and "verdict" not in out
+
+
+def test_smooth_rolling_study_gives_four_thirds():
+    from contact.resolution import rolling_study
+
+    study = rolling_study(RADIUS, E_STAR, [1.0, 2.0, 4.0], np.zeros((300, 300)), 1e-6)
+    lam = study.trends["lambda_eff"]
+    assert lam.converged
+    assert all(v == pytest.approx(4 / 3, rel=0.02) for v in lam.values)
+    with pytest.raises(ContactInputError):
+        rolling_study(RADIUS, E_STAR, [1.0, 2.0], np.zeros((300, 300)), 1e-6)
