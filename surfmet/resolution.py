@@ -173,7 +173,8 @@ def study_lines(study: Any) -> list[str]:
                 None: "Undecided (a decisive criterion rests on a quantity that keeps "
                       "moving)"}[holds]
         lines.append("")
-        lines.append(f"{head} at the native pixel, from converged quantities only:")
+        lines.append(f"{head} at the native pixel, from converged quantities (and failures "
+                     "that survive refinement) only:")
         lines += [f"  - {r}" for r in reasons]
         lines += [f"  (not used: {x})" for x in left]
     return lines
