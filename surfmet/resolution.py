@@ -202,8 +202,13 @@ def run_cli(args: argparse.Namespace, command: str) -> int:
         from surfmet.materials import parse_materials as pm
 
         lo, hi, n = args.loads
+        from contact.materials import displacement_shares
+
         kwargs: dict[str, Any] = {"model": args.model, "alpha_h": args.alpha_h,
                                   "kinematics": args.kinematics}
+        if args.lossy != "both":  # the lossy body's share of the displacement scales M_r
+            shares = displacement_shares(*pm(args.materials))
+            kwargs["share"] = shares[0] if args.lossy == "ball" else shares[1]
         if args.model == "plastic":
             h = args.hardness or contact_hardness(*pm(args.materials))
             if h is None:

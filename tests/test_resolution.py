@@ -169,3 +169,10 @@ def test_smooth_rolling_study_gives_four_thirds():
     assert all(v == pytest.approx(4 / 3, rel=0.02) for v in lam.values)
     with pytest.raises(ContactInputError):
         rolling_study(RADIUS, E_STAR, [1.0, 2.0], np.zeros((300, 300)), 1e-6)
+
+
+def test_a_scan_too_small_for_the_study_is_refused():
+    with pytest.raises(ContactInputError, match="too small for a resolution study"):
+        sphere_study(RADIUS, LOAD, E_STAR, np.zeros((60, 60)), 1e-6)
+    with pytest.raises(ContactInputError, match="decrease to 1"):
+        sphere_study(RADIUS, LOAD, E_STAR, np.zeros((400, 400)), 1e-6, factors=(2, 4, 1))
