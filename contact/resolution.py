@@ -287,7 +287,23 @@ CRITERION_QUANTITY = {
 
 @dataclass(frozen=True, eq=False)
 class StudyLevel:
-    """One level of the study: the solution on the scan coarsened ``factor`` times."""
+    """One level of the study: the solution on the scan coarsened ``factor`` times.
+
+    Attributes
+    ----------
+    factor : int
+        Block side in native pixels.
+    pixel : float
+        The level's pixel (m), also the contact grid's pitch.
+    grid : int
+        Contact cells per side.
+    values : dict of str to float
+        The quantities of :data:`QUANTITIES` (SI) at this level.
+    comparison, result, sweep
+        The Hertz comparison and the solution (contact), or the sweep (rolling).
+    seconds : float
+        Wall time of the level.
+    """
 
     factor: int
     pixel: float
