@@ -131,6 +131,19 @@ def main(argv: list[str]) -> int:
     close(checks["paper's 10 N check"].figure(outdir / "hertz_check_10N.png"))
     close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
 
+    heading("Which of these survive refinement? (resolution study: pixel 40, 20, 10, 5 µm)")
+    from surfmet.resolution import contact_study, study_json, study_lines
+
+    findings["resolution_study"] = {}
+    for label, chk in checks.items():
+        study, _ = contact_study(plate, ball, radius=RADIUS, load=chk.load,
+                                 materials=MATERIALS, hardness=hardness)
+        print(f"\n{label}: W = {chk.load:.3f} N")
+        for line in study_lines(study):
+            if not line.startswith("- "):  # the table and the verdict; the trends go to JSON
+                print(f"  {line}")
+        findings["resolution_study"][label] = study_json(study)
+
     heading("Do the asperities yield at the experiment's loads? (Fig. 17)")
     for label, chk in checks.items():
         c = chk.comparison

@@ -17,6 +17,8 @@ from surfmet.cli._common import (
 )
 
 EPILOG = """examples:
+  surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
+      --materials steel,aluminium --plastic --resolution-study
   surfmet contact --radius 20mm --load 10N --materials steel,aluminium
   surfmet contact --plate plate.nms --ball ball.nms --radius 20mm --load 10N \\
       --materials steel,aluminium --json
@@ -56,6 +58,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "warn and return the truncated result, or fail")
     p.add_argument("--tol", type=float, default=1e-6, help="solver tolerance (default 1e-6)")
     p.add_argument("--max-iter", type=int, default=2000, help="iteration limit (default 2000)")
+    p.add_argument("--resolution-study", action="store_true",
+                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
+                   "quantity per pixel and which converged (surfmet.resolution)")
     p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -77,6 +82,10 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.pairing import prepare_pair
     from surfmet.units import format_length, jsonable
 
+    if args.resolution_study:
+        from surfmet.resolution import run_cli
+
+        return run_cli(args, "contact")
     ball_m, plate_m = parse_materials(args.materials)
     e_star = composite_modulus(ball_m, plate_m)
     hardness = args.hardness

@@ -16,6 +16,8 @@ from surfmet.cli._common import (
 )
 
 EPILOG = """examples:
+  surfmet hertz-check plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
+      --materials steel,aluminium --resolution-study --json
   surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,aluminium
   surfmet hertz-check plate.nms --ball ball.nms --radius 20mm --load 4.7N \\
       --materials steel,aluminium --json
@@ -53,6 +55,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="contact grid, cells per side (default: automatic)")
     p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
                    help="contact reaching the domain edge: enlarge (default), warn, fail")
+    p.add_argument("--resolution-study", action="store_true",
+                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
+                   "quantity per pixel and which converged (surfmet.resolution)")
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)
@@ -69,6 +74,10 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError("--grid needs at least 8 cells per side")
     if args.elastic and args.hardness is not None:
         raise SurfmetInputError("--elastic and --hardness exclude each other")
+    if args.resolution_study:
+        from surfmet.resolution import run_cli
+
+        return run_cli(args, "hertz-check")
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
                         plastic=not args.elastic, spikes=not args.keep_spikes, grid=args.grid,

@@ -17,6 +17,8 @@ from surfmet.cli._common import (
 )
 
 EPILOG = """examples:
+  surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
+      --loads 1N:100N:5 --resolution-study
   surfmet rolling --radius 20mm --materials steel,aluminium --loads 1N:100N:9
   surfmet rolling --plate plate.x3p --ball ball.x3p --radius 20mm \\
       --materials steel,aluminium --loads 1N:100N:9 --json
@@ -60,6 +62,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="do not remove spikes from the scans")
     p.add_argument("--grid", type=int, metavar="N",
                    help="contact grid, cells per side (default: automatic)")
+    p.add_argument("--resolution-study", action="store_true",
+                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
+                   "quantity per pixel and which converged (surfmet.resolution)")
     p.add_argument("--plot", metavar="FILE", help="write M_r(N) and the local exponent")
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -84,6 +89,10 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError("--grid needs at least 8 cells per side")
     if args.hardness is not None and args.model != "plastic":
         raise SurfmetInputError("--hardness applies to --model plastic")
+    if args.resolution_study:
+        from surfmet.resolution import run_cli
+
+        return run_cli(args, "rolling")
     rep = rolling_resistance(
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,

@@ -1,0 +1,598 @@
+"""Resolution study: the same ball-on-plate contact on the scan coarsened 8x, 4x, 2x and native.
+
+A rough contact's answers depend on the lateral resolution of the roughness it is solved
+on. Hertz-scale quantities (the second-moment radius a*, the approach, the profile) are set
+by the ball's curvature and the height distribution and converge as the pixel shrinks;
+asperity-scale quantities (real area, peak pressure, yielded area) do not converge on a
+self-affine surface, because every halving of the pixel adds slopes and curvatures that
+were averaged away before.
+
+Coarsening is a block average of the heights (:func:`block_average`): the mean of each
+``k x k`` block of native pixels, an honest low-pass that a coarser instrument (a larger
+spot or stylus) would also apply. Every level is solved on the same physical domain,
+centred on the same point of the scan (to within half a native pixel), with the contact
+grid's pitch equal to the level's pixel, so that no interpolation adds a second filter.
+
+Per level the study reports a*, the approach, the real area, the perimeter-corrected area,
+the yielded fraction, pmax, the combined rms slope (and, from :func:`rolling_study`,
+lambda_eff). :func:`trend` says whether each quantity has converged (relative change below
+2 % over the last halving), its observed order and Richardson extrapolate when the changes
+shrink, and its power-law exponent against the pixel when they do not.
+
+Theory for the trends (small-load regime, Bush, Gibson & Thomas 1975, Wear 35:87;
+Persson 2001, J. Chem. Phys. 115:3840; Hyun, Pei, Molinari & Robbins 2004, Phys. Rev. E
+70:026117): the real area is A = kappa W / (E* h'_rms) with h'_rms the rms slope. For a
+self-affine surface with Hurst exponent H, h'_rms ~ dx^(H-1), so A ~ dx^(1-H): the area
+*shrinks* as the pixel shrinks and never converges until the surface's own small-scale
+cut-off is resolved; the elastic peak pressure grows like h'_rms. The study measures the
+rms slope of each level and gives the predicted area exponent from it.
+
+The perimeter correction follows Yastrebov, Anciaux & Molinari (2015), "From infinitesimal
+to full contact between rough surfaces: evolution of the contact area", Int. J. Solids
+Struct. 52:83-102 (also used in their 2017 J. Mech. Phys. Solids 107:469): counting the
+cells in contact over-estimates the area of a digitised contact by a term proportional to
+its perimeter, A_c = A - (pi - 1 + ln 2)/24 * P dx, with P the number of contact /
+no-contact switches between neighbouring cells times dx.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from contact._validate import positive
+from contact.errors import ContactInputError
+
+#: Relative change over the last halving below which a quantity counts as converged.
+CONVERGED = 0.02
+#: Yastrebov et al. (2015) perimeter coefficient (pi - 1 + ln 2) / 24.
+PERIMETER_COEFFICIENT = (math.pi - 1.0 + math.log(2.0)) / 24.0
+#: The coarsening factors of the study, coarsest first.
+FACTORS = (8, 4, 2, 1)
+
+
+def block_average(z: np.ndarray, factor: int) -> np.ndarray:
+    """Mean of each ``factor x factor`` block (rows and columns past a whole block dropped).
+
+    Parameters
+    ----------
+    z : ndarray (ny, nx)
+        Heights (finite).
+    factor : int
+        Block side in pixels (1 returns a copy).
+
+    Returns
+    -------
+    ndarray (ny // factor, nx // factor)
+    """
+    z = np.asarray(z, dtype=float)
+    k = int(factor)
+    if k < 1 or k != factor:
+        raise ContactInputError(f"the coarsening factor must be a positive integer, got {factor!r}")
+    if z.ndim != 2:
+        raise ContactInputError(f"the heights must be a 2D map, got shape {z.shape}")
+    ny, nx = z.shape[0] // k, z.shape[1] // k
+    if ny < 1 or nx < 1:
+        raise ContactInputError(f"a {z.shape} map is smaller than one {k} x {k} block")
+    return z[:ny * k, :nx * k].reshape(ny, k, nx, k).mean(axis=(1, 3))
+
+
+def centred_blocks(z: np.ndarray, factor: int, centre: tuple[int, int]
+                   ) -> tuple[np.ndarray, tuple[int, int]]:
+    """Block-average ``z`` with one block on the native pixel ``centre`` (row, column) and as
+    many whole blocks on either side as fit symmetrically.
+
+    Returns the coarse map and the (row, column) of the centre block in it. For an even
+    factor the centre block's middle lies half a native pixel before ``centre``.
+    """
+    k = int(factor)
+    out_slices = []
+    index = []
+    for c, n in zip(centre, z.shape):
+        start = c - k // 2
+        m = min(start // k, (n - start - k) // k)
+        if start < 0 or m < 0:
+            raise ContactInputError("the scan is too small around its centre for a "
+                                    f"{k} x {k} block")
+        out_slices.append(slice(start - m * k, start + (m + 1) * k))
+        index.append(m)
+    return block_average(z[tuple(out_slices)], k), (index[0], index[1])
+
+
+def rms_slope(z: np.ndarray, dx: float, dy: float | None = None) -> float:
+    """Rms gradient sqrt(<(dz/dx)^2 + (dz/dy)^2>) by forward differences (dimensionless)."""
+    z = np.asarray(z, dtype=float)
+    dy = dx if dy is None else dy
+    gx = np.diff(z, axis=1) / dx
+    gy = np.diff(z, axis=0) / dy
+    return float(math.sqrt(np.mean(gx**2) + np.mean(gy**2)))
+
+
+def corrected_area(contact: np.ndarray, dx: float, dy: float | None = None) -> float:
+    """Real contact area with the Yastrebov-Anciaux-Molinari (2015) perimeter correction.
+
+    A_c = n_contact dx dy - (pi - 1 + ln 2)/24 * (switches along x + switches along y) dx dy,
+    where a switch is a pair of neighbouring cells of which one is in contact.
+    """
+    c = np.asarray(contact, dtype=bool)
+    dy = dx if dy is None else dy
+    switches = int(np.count_nonzero(c[:, 1:] != c[:, :-1])
+                   + np.count_nonzero(c[1:, :] != c[:-1, :]))
+    return float((np.count_nonzero(c) - PERIMETER_COEFFICIENT * switches) * dx * dy)
+
+
+# -- trends ---------------------------------------------------------------------------------
+
+#: What theory expects of each quantity as the pixel shrinks.
+EXPECTED = {
+    "a_star": "converges (Hertz scale: set by the ball's curvature and the load)",
+    "approach": "converges when the summit heights do (set by the Hertz scale and the "
+                "height distribution; the highest summits rise slowly as finer pixels sample "
+                "more extremes, and plastic flattening adds to it)",
+    "sigma": "converges (block averaging removes only pixel-scale height variance)",
+    "profile_deviation": "converges (azimuthal average: Hertz scale)",
+    "area": "A ~ W/(E* h'_rms) ~ dx^(1-H): shrinks as the pixel shrinks on a self-affine "
+            "surface (Bush et al. 1975, Persson 2001)",
+    "corrected_area": "as the real area, A ~ dx^(1-H); the perimeter bias is removed",
+    "pmax": "elastic: grows like h'_rms ~ dx^(H-1), no limit; with a hardness it saturates "
+            "at the hardness",
+    "pmax_elastic": "grows like h'_rms ~ dx^(H-1) on a self-affine surface, no limit",
+    "yielded_fraction": "grows as more asperity peaks reach the hardness; no closed form",
+    "rms_slope": "h'_rms ~ dx^(H-1): grows as the pixel shrinks on a self-affine surface",
+    "lambda_eff": "no closed form; 4/3 for a smooth ball (Hertz)",
+}
+
+
+@dataclass(frozen=True)
+class Trend:
+    """How one quantity moves as the pixel shrinks.
+
+    Attributes
+    ----------
+    name, unit : str
+    pixels : tuple of float
+        Pixel sizes (m), coarsest first.
+    values : tuple of float
+    last_change : float
+        |v_finest - v_previous| / |v_finest| (0 when both are 0; inf when only the finest
+        is 0).
+    converged : bool
+        ``last_change < CONVERGED`` (or, for a fraction near zero, an absolute change
+        below :data:`ABSOLUTE`).
+    exponent : float
+        Local power-law exponent d ln|v| / d ln dx over the last halving (NaN when a value
+        is 0 or the signs differ): v ~ dx^exponent.
+    order : float
+        Observed order p of convergence, log2 of the ratio of the last two changes (NaN
+        when the changes do not shrink or fewer than three levels).
+    extrapolated : float
+        Richardson extrapolate v_finest + d_finest / (2^p - 1) (NaN without an order).
+    expected : str
+        What theory expects.
+    """
+
+    name: str
+    unit: str
+    pixels: tuple[float, ...]
+    values: tuple[float, ...]
+    last_change: float
+    converged: bool
+    exponent: float
+    order: float
+    extrapolated: float
+    expected: str
+
+    @property
+    def status(self) -> str:
+        """"converged" or "keeps moving"."""
+        return "converged" if self.converged else "keeps moving"
+
+    def sentence(self) -> str:
+        """One line for the user."""
+        if math.isnan(self.last_change):
+            return (f"{self.name}: not available at the two finest pixels, convergence "
+                    f"unknown. Theory: {self.expected}")
+        pct = f"{100 * self.last_change:.3g} %" if math.isfinite(self.last_change) else "from 0"
+        text = f"{self.name}: {self.status} ({pct} over the last halving"
+        if not self.converged and math.isfinite(self.exponent):
+            text += f"; ~ pixel^{self.exponent:.2f}"
+        if self.converged and math.isfinite(self.extrapolated):
+            text += f"; order {self.order:.2g}, extrapolated {self.extrapolated:.4g} {self.unit}"
+        return text + f"). Theory: {self.expected}"
+
+
+#: Absolute changes below which a fraction near zero counts as converged (a relative
+#: change of a value that is itself ~0 says nothing): fractions of p0 or of pi a0^2.
+ABSOLUTE = {"profile_deviation": 0.005, "yielded_fraction": 0.001}
+
+
+def trend(name: str, pixels: Sequence[float], values: Sequence[float], unit: str = "",
+          expected: str | None = None, atol: float | None = None) -> Trend:
+    """Fit the trend of ``values`` against ``pixels`` (both ordered coarsest first).
+
+    Parameters
+    ----------
+    name, unit : str
+    pixels : sequence of float
+        Pixel sizes, each half the previous one (a factor-2 refinement is assumed by the
+        Richardson step).
+    values : sequence of float
+    expected : str, optional
+        Theory's expectation; default from :data:`EXPECTED`.
+    atol : float, optional
+        Absolute change that also counts as converged; default from :data:`ABSOLUTE` (0).
+    """
+    h = np.asarray(pixels, dtype=float)
+    v = np.asarray(values, dtype=float)
+    if h.size != v.size or h.size < 2:
+        raise ContactInputError("a trend needs at least two levels, one value per pixel size")
+    fine, prev = float(v[-1]), float(v[-2])
+    d = abs(fine - prev)
+    if not (math.isfinite(fine) and math.isfinite(prev)):
+        change = d = math.nan  # a level gave no value: nothing to say about convergence
+    elif d == 0:
+        change = 0.0
+    elif fine == 0:
+        change = math.inf
+    else:
+        change = d / abs(fine)
+    if fine * prev > 0:
+        exponent = math.log(fine / prev) / math.log(h[-1] / h[-2])
+    else:
+        exponent = math.nan
+    order = extrap = math.nan
+    if v.size >= 3:
+        d_prev = abs(float(v[-2] - v[-3]))
+        if d_prev > 0 and 0 < d < d_prev:
+            ratio = h[-2] / h[-1]
+            order = math.log(d_prev / d) / math.log(ratio)
+            extrap = fine + (fine - prev) / (ratio**order - 1.0)
+    return Trend(name=name, unit=unit, pixels=tuple(map(float, h)), values=tuple(map(float, v)),
+                 last_change=float(change),
+                 converged=bool(change < CONVERGED or d < (ABSOLUTE.get(name, 0.0)
+                                                          if atol is None else atol)),
+                 exponent=float(exponent), order=float(order), extrapolated=float(extrap),
+                 expected=EXPECTED.get(name, "") if expected is None else expected)
+
+
+# -- the study ------------------------------------------------------------------------------
+
+#: Quantity name -> unit, in the order of the study's table.
+QUANTITIES = {
+    "a_star": "m", "approach": "m", "area": "m^2", "corrected_area": "m^2",
+    "yielded_fraction": "1", "pmax": "Pa", "pmax_elastic": "Pa", "sigma": "m", "rms_slope": "1",
+    "profile_deviation": "1",
+}
+
+#: Criteria whose failure survives refinement although their quantity keeps moving: the
+#: variance of block means never exceeds the variance of the pixels, so sigma (and with it
+#: the GJM alpha) can only grow as the pixel shrinks; an alpha already above its limit
+#: stays above it on any finer scan.
+FAILURE_SURVIVES = {"alpha": "σ can only grow as the pixel shrinks, so this failure "
+                             "survives refinement"}
+
+#: hertz-check criterion -> the quantity it rests on (None: independent of the pixel).
+CRITERION_QUANTITY = {
+    "alpha": "sigma", "profile": "profile_deviation", "radius": "a_star",
+    "approach": "approach", "yield": "yielded_fraction", "first_yield": None,
+    "peak": "pmax_elastic", "area": "area",
+}
+
+
+@dataclass(frozen=True, eq=False)
+class StudyLevel:
+    """One level of the study: the solution on the scan coarsened ``factor`` times.
+
+    Attributes
+    ----------
+    factor : int
+        Block side in native pixels.
+    pixel : float
+        The level's pixel (m), also the contact grid's pitch.
+    grid : int
+        Contact cells per side.
+    values : dict of str to float
+        The quantities of :data:`QUANTITIES` (SI) at this level.
+    comparison, result, sweep
+        The Hertz comparison and the solution (contact), or the sweep (rolling).
+    seconds : float
+        Wall time of the level.
+    """
+
+    factor: int
+    pixel: float
+    grid: int
+    values: dict[str, float]
+    comparison: Any = None
+    result: Any = None
+    sweep: Any = None
+    seconds: float = 0.0
+
+
+@dataclass(frozen=True, eq=False)
+class ResolutionStudy:
+    """The levels (coarsest first), the trends and the verdict's filtered criteria."""
+
+    levels: tuple[StudyLevel, ...]
+    trends: dict[str, Trend]
+    side: float
+    notes: tuple[str, ...] = ()
+    settings: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def pixels(self) -> tuple[float, ...]:
+        return tuple(lv.pixel for lv in self.levels)
+
+    @property
+    def converged(self) -> tuple[str, ...]:
+        """Names of the quantities that converged."""
+        return tuple(k for k, t in self.trends.items() if t.converged)
+
+    @property
+    def moving(self) -> tuple[str, ...]:
+        """Names of the quantities that keep moving."""
+        return tuple(k for k, t in self.trends.items() if not t.converged)
+
+    @property
+    def finest(self) -> StudyLevel:
+        return self.levels[-1]
+
+    def verdict(self) -> tuple[bool | None, tuple[str, ...], tuple[str, ...]]:
+        """Hertz verdict at the finest level from converged quantities only.
+
+        Returns ``(holds, reasons, left_out)``. ``reasons`` are the sentences of the
+        criteria whose quantity converged (or does not depend on the pixel); ``left_out``
+        names the criteria left out because their quantity keeps moving. ``holds`` is False
+        when a decisive criterion among those used fails (that failure survives
+        refinement), True when every decisive criterion was usable and passed, and None
+        when nothing used fails but a decisive criterion had to be left out (undecided),
+        or when the study has no Hertz comparison (rolling).
+        """
+        comp = self.finest.comparison
+        if comp is None:
+            return None, (), ()
+        used, left, left_decisive = [], [], False
+        for c in sorted(comp.criteria, key=lambda c: (c.passed or not c.decisive,
+                                                      not c.decisive)):
+            q = CRITERION_QUANTITY.get(c.name)
+            if q is None or (q in self.trends and self.trends[q].converged):
+                used.append(c)
+            elif c.decisive and not c.passed and c.name in FAILURE_SURVIVES:
+                used.append(dataclasses.replace(
+                    c, reason=f"{c.reason} ({FAILURE_SURVIVES[c.name]})"))
+            else:
+                left_decisive |= c.decisive
+                t = self.trends.get(q)
+                why = (f"{100 * t.last_change:.3g} %" if t is not None
+                       and math.isfinite(t.last_change) else "from 0")
+                left.append(f"{c.name} ({q} keeps moving with the pixel: {why} over the "
+                            "last halving)")
+        if any(c.decisive and not c.passed for c in used):
+            holds: bool | None = False
+        else:
+            holds = None if left_decisive else True
+        return holds, tuple(c.reason for c in used), tuple(left)
+
+
+def _plan(shape: tuple[int, int], dx: float, dy: float, side: float, factors: Sequence[int],
+          max_grid: int) -> tuple[tuple[int, int], int]:
+    """Native centre pixel and the native cell count of the common domain."""
+    kmax = max(factors)
+    if sorted(factors, reverse=True) != list(factors) or factors[-1] != 1:
+        raise ContactInputError("the factors must decrease to 1, e.g. (8, 4, 2, 1)")
+    cy, cx = (shape[0] - 1) // 2, (shape[1] - 1) // 2
+    avail = min(cy, shape[0] - 1 - cy) * dy, min(cx, shape[1] - 1 - cx) * dx
+    half = min(avail) - 2 * kmax * max(dx, dy)  # keep whole blocks on both sides
+    step = 2 * kmax
+    n_want = step * math.ceil(side / (step * dx))
+    n_fit = step * math.floor(2 * half / (step * dx)) if half > 0 else 0
+    n = min(n_want, n_fit)
+    if n < 8 * kmax:
+        raise ContactInputError(
+            f"the scan ({shape[1]} x {shape[0]} pixels) is too small for a resolution study "
+            f"coarsened {kmax}x: it needs at least {8 * kmax + 4 * kmax} pixels per side "
+            "around the centre")
+    if n > max_grid:
+        raise ContactInputError(
+            f"the native grid would be {n} x {n} cells (limit {max_grid}); use a smaller "
+            "load or crop the scan")
+    return (cy, cx), n
+
+
+def _level_values(res: Any, comp: Any, pmax_elastic: float, level_z: np.ndarray,
+                  pixel: float, hardness: float | None) -> dict[str, float]:
+    nominal = math.pi * comp.hertz.a**2
+    yielded = (res.plastic_area / nominal) if hardness is not None else 0.0
+    return {
+        "a_star": float(comp.contact_radius), "approach": float(comp.approach),
+        "area": float(res.contact_area),
+        "corrected_area": corrected_area(res.contact, res.dx, res.dy),
+        "yielded_fraction": float(yielded), "pmax": float(res.pmax),
+        "pmax_elastic": float(pmax_elastic),
+        "sigma": float(np.std(level_z)), "rms_slope": rms_slope(level_z, pixel),
+        "profile_deviation": float(comp.profile_deviation),
+    }
+
+
+def _levels(roughness: np.ndarray, dx: float, dy: float | None, factors: Sequence[int]
+            ) -> tuple[np.ndarray, float, tuple[int, int]]:
+    from contact.geometry import fill_nan, remove_plane
+
+    z = np.array(roughness, dtype=float)
+    if z.ndim != 2:
+        raise ContactInputError(f"the roughness must be a 2D map, got shape {z.shape}")
+    if not np.isfinite(z).any():
+        raise ContactInputError("the roughness map is NaN everywhere: nothing measured")
+    dx = positive(dx, "the roughness pitch dx", "m")
+    dy = dx if dy is None else positive(dy, "the roughness pitch dy", "m")
+    # level once at native, so that every level sees the same surface
+    z, _ = fill_nan(z)
+    z, _ = remove_plane(z, dx, dy)
+    return z, dy, z.shape
+
+
+def sphere_study(
+    radius: float,
+    load: float,
+    e_star: float,
+    roughness: np.ndarray,
+    dx: float,
+    dy: float | None = None,
+    *,
+    hardness: float | None = None,
+    sigma: float | None = None,
+    factors: Sequence[int] = FACTORS,
+    size: float | None = None,
+    max_grid: int = 4096,
+    on_edge: str = "enlarge",
+    tol: float = 1e-6,
+    progress: Callable[[str], Any] | None = None,
+) -> ResolutionStudy:
+    """Solve a rough ball on a plate at each coarsening factor and fit the trends.
+
+    Parameters
+    ----------
+    radius, load, e_star : float
+        R (m), W (N), E* (Pa).
+    roughness : ndarray (ny, nx)
+        Composite roughness (m) at its native pitch (NaN filled by the nearest value).
+    dx, dy : float
+        Native pitch (m).
+    hardness : float, optional
+        Adds the elastic-plastic solve and the yielded fraction.
+    sigma : float, optional
+        Rms roughness for the GJM alpha (m); default the native map's rms.
+    factors : sequence of int
+        Coarsening factors, decreasing to 1 (default 8, 4, 2, 1).
+    size : float, optional
+        Domain side (m); default :func:`contact.geometry.auto_domain`'s side at the native
+        pitch, limited to the scan.
+    max_grid : int
+        Largest native grid accepted (cells per side).
+    on_edge, tol
+        Passed to :meth:`contact.sphere.SphereContact.solve`.
+    progress : callable, optional
+        Called with a short label before each level.
+    """
+    from contact.geometry import auto_domain
+    from contact.hertzcheck import compare_with_hertz, solve_elastic_plastic
+    from contact.sphere import SphereContact
+
+    radius = positive(radius, "the ball radius", "m")
+    load = positive(load, "the load", "N")
+    e_star = positive(e_star, "E*", "Pa")
+    z, dy, shape = _levels(roughness, dx, dy, factors)
+    sig = float(np.std(z)) if sigma is None else float(sigma)
+    if size is None:
+        size = auto_domain(radius, load, e_star, roughness_rms=sig, roughness_dx=dx,
+                           grid=16, hardness=hardness).size
+    centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
+    notes: list[str] = []
+    levels = []
+    for k in factors:
+        if progress is not None:
+            progress(f"pixel x{k}")
+        t0 = time.perf_counter()
+        zc, (i, j) = centred_blocks(z, k, centre)
+        px, py = dx * k, dy * k
+        n = n1 // k
+        problem = SphereContact(radius, e_star, load, roughness=zc, roughness_dx=px,
+                                roughness_dy=py, centre=(j * px, i * py), level=False,
+                                grid=n, size=n * px)
+        elastic = problem.solve(load, on_edge=on_edge, tol=tol)
+        plastic = None
+        if hardness is not None:
+            plastic = solve_elastic_plastic(problem, load, hardness, elastic=elastic, tol=tol)
+        comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
+                                  hardness=hardness)
+        main = plastic if plastic is not None else elastic
+        if problem.domain.n != n:
+            notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")
+        vals = _level_values(main, comp, elastic.pmax, zc, px, hardness)
+        levels.append(StudyLevel(factor=int(k), pixel=px, grid=problem.domain.n, values=vals,
+                                 comparison=comp, result=main,
+                                 seconds=time.perf_counter() - t0))
+    pixels = [lv.pixel for lv in levels]
+    trends = {q: trend(q, pixels, [lv.values[q] for lv in levels], unit=u)
+              for q, u in QUANTITIES.items()}
+    if hardness is None:
+        trends.pop("yielded_fraction")
+    notes.append(_area_theory(trends))
+    return ResolutionStudy(levels=tuple(levels), trends=trends, side=n1 * dx,
+                           notes=tuple(notes),
+                           settings={"factors": list(factors), "load": load,
+                                     "hardness": hardness, "native_pixel": dx})
+
+
+def _area_theory(trends: dict[str, Trend]) -> str:
+    """The area exponent that A ~ 1/h'_rms predicts from the measured rms-slope trend."""
+    s = trends["rms_slope"].exponent
+    a = trends["area"].exponent
+    if not (math.isfinite(s) and math.isfinite(a)):
+        return "area theory: not comparable (a zero value)"
+    return (f"rms slope ~ pixel^{s:.2f} over the last halving, so A ~ 1/h'_rms predicts "
+            f"area ~ pixel^{-s:.2f}; measured pixel^{a:.2f}")
+
+
+def rolling_study(
+    radius: float,
+    e_star: float,
+    loads: Sequence[float],
+    roughness: np.ndarray,
+    dx: float,
+    dy: float | None = None,
+    *,
+    factors: Sequence[int] = FACTORS,
+    max_grid: int = 4096,
+    progress: Callable[[str], Any] | None = None,
+    **sweep_kwargs: Any,
+) -> ResolutionStudy:
+    """lambda_eff of :func:`contact.rolling.sphere_sweep` at each coarsening factor.
+
+    The domain is sized for the largest load at the native pitch and kept for every
+    level; ``sweep_kwargs`` go to :func:`~contact.rolling.sphere_sweep` (model, hardness,
+    alpha_h, share, kinematics...).
+    """
+    from contact.geometry import auto_domain
+    from contact.rolling import sphere_sweep
+
+    e_star = positive(e_star, "E*", "Pa")
+    loads = np.sort(np.asarray(loads, dtype=float))
+    if loads.size < 3 or not np.all(loads > 0):
+        raise ContactInputError("a rolling study needs at least 3 positive loads")
+    z, dy, shape = _levels(roughness, dx, dy, factors)
+    notes: list[str] = []
+    sig = float(np.std(z))
+    size = auto_domain(radius, float(loads[-1]), e_star, roughness_rms=sig, roughness_dx=dx,
+                       grid=16, hardness=sweep_kwargs.get("hardness")).size
+    centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
+    levels = []
+    for k in factors:
+        if progress is not None:
+            progress(f"pixel x{k}")
+        t0 = time.perf_counter()
+        zc, (i, j) = centred_blocks(z, k, centre)
+        px, py = dx * k, dy * k
+        n = n1 // k
+        sw = sphere_sweep(radius, e_star, loads, roughness=zc, roughness_dx=px,
+                          roughness_dy=py, roughness_rms=sig, centre=(j * px, i * py),
+                          grid=n, size=n * px, **sweep_kwargs)
+        lo, hi = sw.lambda_ci
+        if sw.fit is None:
+            notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")
+        vals = {"lambda_eff": float(sw.lambda_eff), "lambda_lo": float(lo),
+                "lambda_hi": float(hi), "rms_slope": rms_slope(zc, px)}
+        levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw,
+                                 seconds=time.perf_counter() - t0))
+    pixels = [lv.pixel for lv in levels]
+    trends = {q: trend(q, pixels, [lv.values[q] for lv in levels], unit="1")
+              for q in ("lambda_eff", "rms_slope")}
+    return ResolutionStudy(levels=tuple(levels), trends=trends, side=n1 * dx,
+                           notes=tuple(notes),
+                           settings={"factors": list(factors), "loads": loads.tolist()})

@@ -1,0 +1,237 @@
+"""Resolution studies on scans: ``--resolution-study`` of ``contact``, ``hertz-check`` and
+``rolling``.
+
+The scans are prepared as for the ordinary commands (spikes removed, plate levelled, the
+ball's sphere removed, both paired on the finer pitch by :func:`surfmet.pairing.prepare_pair`),
+then :mod:`contact.resolution` solves the contact on the composite roughness block-averaged
+8x, 4x, 2x and at the native pixel, and fits the trend of each quantity against the pixel.
+This module turns the study into JSON (values with units) and a table, and runs it from the
+command line.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+#: Display of each quantity: label, JSON unit, scale to the text unit, text unit.
+_SHOW = {
+    "a_star": ("a*", "m", 1e6, "µm"),
+    "approach": ("approach", "m", 1e6, "µm"),
+    "area": ("real area", "m^2", 1e12, "µm²"),
+    "corrected_area": ("corrected area", "m^2", 1e12, "µm²"),
+    "yielded_fraction": ("yielded / πa0²", "1", 1.0, ""),
+    "pmax": ("pmax", "Pa", 1e-6, "MPa"),
+    "pmax_elastic": ("pmax elastic", "Pa", 1e-6, "MPa"),
+    "sigma": ("σ", "m", 1e6, "µm"),
+    "rms_slope": ("rms slope", "1", 1.0, ""),
+    "profile_deviation": ("profile dev./p0", "1", 1.0, ""),
+    "lambda_eff": ("λ_eff", "1", 1.0, ""),
+}
+
+
+def _prepared(plate: Any, ball: Any, spikes: bool) -> Any:
+    from surfmet.hertz_check import prepare_scans
+
+    if plate is None and ball is None:
+        raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
+                                "smooth contact has nothing to refine")
+    prep = prepare_scans(plate, ball, spikes=spikes)
+    return prep
+
+
+def contact_study(
+    plate: Any = None,
+    ball: Any = None,
+    *,
+    radius: float,
+    load: float,
+    materials: Any = "steel,aluminium",
+    hardness: float | None = None,
+    spikes: bool = True,
+    factors: tuple[int, ...] = (8, 4, 2, 1),
+    progress: Any = None,
+) -> tuple[Any, Any]:
+    """Resolution study of a ball on a plate from scans.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path
+        The scans (at least one).
+    radius, load : float
+        R (m), W (N).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    hardness : float, optional
+        Adds the elastic-plastic solve and the yielded fraction (Pa).
+    spikes : bool
+        Remove spikes first.
+    factors : tuple of int
+        Coarsening factors, decreasing to 1.
+
+    Returns
+    -------
+    (contact.resolution.ResolutionStudy, surfmet.hertz_check.PreparedScans)
+    """
+    from contact.materials import composite_modulus
+    from contact.resolution import sphere_study
+    from surfmet.materials import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    prep = _prepared(plate, ball, spikes)
+    pair = prep.pair
+    study = sphere_study(radius, load, composite_modulus(ball_m, plate_m), pair.roughness,
+                         pair.dx, pair.dy, hardness=hardness, sigma=prep.sigma,
+                         factors=factors, progress=progress)
+    return study, prep
+
+
+def rolling_study(
+    plate: Any = None,
+    ball: Any = None,
+    *,
+    radius: float,
+    loads: Any,
+    materials: Any = "steel,aluminium",
+    spikes: bool = True,
+    factors: tuple[int, ...] = (8, 4, 2, 1),
+    progress: Any = None,
+    **sweep_kwargs: Any,
+) -> tuple[Any, Any]:
+    """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
+    ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`."""
+    from contact.materials import composite_modulus
+    from contact.resolution import rolling_study as engine
+    from surfmet.materials import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    prep = _prepared(plate, ball, spikes)
+    pair = prep.pair
+    study = engine(radius, composite_modulus(ball_m, plate_m), loads, pair.roughness,
+                   pair.dx, pair.dy, factors=factors, progress=progress, **sweep_kwargs)
+    return study, prep
+
+
+def study_json(study: Any) -> dict[str, Any]:
+    """The study as JSON: per level the pixel, grid and quantities with units; per quantity
+    its trend and whether it converged; the verdict from converged quantities only."""
+    from surfmet.units import quantity
+
+    def q(name: str, v: float) -> Any:
+        unit = _SHOW.get(name, (name, "1"))[1]
+        return quantity(v, unit) if unit != "1" else v
+
+    levels = []
+    for lv in study.levels:
+        levels.append({"factor": lv.factor, "pixel": quantity(lv.pixel, "m"), "grid": lv.grid,
+                       **{k: q(k, v) for k, v in lv.values.items()}})
+    trends = {}
+    for name, t in study.trends.items():
+        trends[name] = {
+            "converged": t.converged, "status": t.status,
+            "last_change": t.last_change, "exponent": t.exponent, "order": t.order,
+            "extrapolated": q(name, t.extrapolated), "expected": t.expected,
+            "values": [q(name, v) for v in t.values],
+        }
+    out: dict[str, Any] = {
+        "criterion": "converged: relative change below 2 % over the last halving of the "
+                     "pixel",
+        "side": quantity(study.side, "m"),
+        "pixels": [quantity(p, "m") for p in study.pixels],
+        "levels": levels, "trends": trends,
+        "converged": list(study.converged), "keeps_moving": list(study.moving),
+        "notes": list(study.notes),
+    }
+    holds, reasons, left = study.verdict()
+    if study.finest.comparison is not None:
+        out["verdict"] = {"hertz_holds": holds, "decided": holds is not None,
+                          "reasons": list(reasons), "not_used": list(left)}
+    return out
+
+
+def study_lines(study: Any) -> list[str]:
+    """A table (one row per quantity, one column per pixel) and the trend sentences."""
+    head = f"{'':18}" + "".join(f"{p * 1e6:>10.4g} µm" for p in study.pixels) + "   status"
+    lines = [f"resolution study: same {study.side * 1e3:.4g} mm domain, pixel coarsened "
+             + ", ".join(f"{lv.factor}x" for lv in study.levels), head]
+    for name, t in study.trends.items():
+        label, _, scale, unit = _SHOW.get(name, (name, "1", 1.0, ""))
+        label = f"{label} ({unit})" if unit else label
+        cells = "".join(f"{v * scale:>13.5g}" for v in t.values)
+        pct = f"{100 * t.last_change:.3g} %" if math.isfinite(t.last_change) else "from 0"
+        status = "unknown (no value)" if math.isnan(t.last_change) else f"{t.status} ({pct})"
+        lines.append(f"{label:18}{cells}   {status}")
+    lines.append("")
+    lines += [f"- {t.sentence()}" for t in study.trends.values()]
+    lines += [f"note: {n}" for n in study.notes]
+    holds, reasons, left = study.verdict()
+    if study.finest.comparison is not None:
+        head = {True: "Hertz holds", False: "Hertz does not hold",
+                None: "Undecided (a decisive criterion rests on a quantity that keeps "
+                      "moving)"}[holds]
+        lines.append("")
+        lines.append(f"{head} at the native pixel, from converged quantities (and failures "
+                     "that survive refinement) only:")
+        lines += [f"  - {r}" for r in reasons]
+        lines += [f"  (not used: {x})" for x in left]
+    return lines
+
+
+def run_cli(args: argparse.Namespace, command: str) -> int:
+    """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
+    from contact.materials import contact_hardness
+    from surfmet.cli._common import emit_json, log
+    from surfmet.materials import parse_materials
+
+    def progress(label: str) -> None:
+        log(f"resolution study: solving at {label}")
+
+    # the study sets each level's grid and domain itself; these options would be ignored
+    for opt in ("grid", "size", "out", "plot"):
+        if getattr(args, opt, None) is not None:
+            raise SurfmetInputError(f"--{opt} does not apply to --resolution-study (each "
+                                    "level's grid follows its pixel on one common domain)")
+    if getattr(args, "periodic", False):
+        raise SurfmetInputError("--periodic does not apply to --resolution-study")
+
+    if command == "rolling":
+        from contact.rolling import log_loads
+        from surfmet.materials import parse_materials as pm
+
+        lo, hi, n = args.loads
+        from contact.materials import displacement_shares
+
+        kwargs: dict[str, Any] = {"model": args.model, "alpha_h": args.alpha_h,
+                                  "kinematics": args.kinematics}
+        if args.lossy != "both":  # the lossy body's share of the displacement scales M_r
+            shares = displacement_shares(*pm(args.materials))
+            kwargs["share"] = shares[0] if args.lossy == "ball" else shares[1]
+        if args.model == "plastic":
+            h = args.hardness or contact_hardness(*pm(args.materials))
+            if h is None:
+                raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
+            kwargs["hardness"] = h
+        study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
+                                    loads=log_loads(lo, hi, 9 if n is None else n),
+                                    materials=args.materials, spikes=not args.keep_spikes,
+                                    progress=progress, **kwargs)
+    else:
+        hardness = getattr(args, "hardness", None)
+        if command == "contact" and args.plastic:
+            hardness = contact_hardness(*parse_materials(args.materials))
+        if command == "hertz-check" and not args.elastic and hardness is None:
+            hardness = contact_hardness(*parse_materials(args.materials))
+        plate = args.plate
+        study, _ = contact_study(plate, args.ball, radius=args.radius, load=args.load,
+                                    materials=args.materials, hardness=hardness,
+                                    spikes=not getattr(args, "keep_spikes", False),
+                                    progress=progress)
+    if args.json:
+        emit_json({"command": command, "resolution_study": study_json(study)})
+        return 0
+    for line in study_lines(study):
+        print(line)
+    return 0
