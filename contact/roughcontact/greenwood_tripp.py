@@ -40,6 +40,14 @@ Effective radius: a* = sqrt(5/2 <r²>_p), the radius of the Hertz distribution w
 same second moment of pressure (:func:`contact.hertzcheck.effective_radius`); a* = a for
 Hertz, so a*/a0 is Johnson's Fig. 13.12 ratio measured the same way as the BEM's.
 
+Limits. GT is a statistical model: it holds when many asperities lie under the ball
+(correlation lengths well below a0). Its asperities do not interact, so the asperity
+layer is too compliant where contact is nearly complete: for a surface of fixed lateral
+structure and amplitude ε the layer's compliance falls only like ε^(1/3), and a nearly
+smooth scan's GT a* stays several per cent above a0 (about 10 % at α = 0.005 on a
+4-10 µm band) while the boundary elements, and Hertz, agree. The solution depends only
+on α = σ_s R / a0² and μ = η σ_s √(R R_s) (dimensional analysis of the equation above).
+
 References
 ----------
 Greenwood, J. A. & Tripp, J. H. (1967). The elastic contact of rough spheres. J. Appl.
