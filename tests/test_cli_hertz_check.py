@@ -57,7 +57,7 @@ def test_verdicts_and_json(plates, capsys):
     assert rec["hertz_holds"] is False and rec["alpha"]["value"] == pytest.approx(1.5, rel=0.1)
     assert rec["bem"]["plastic_fraction"]["value"] > 0
     models = rec["models"]
-    for name, m in models.items():
+    for m in models.values():
         prof = m["radial_profile"]
         assert prof["r"]["unit"] == "m" and prof["p"]["unit"] == "Pa"
         assert len(prof["r"]["value"]) == len(prof["p"]["value"]) > 5

@@ -97,7 +97,7 @@ def test_solution_depends_only_on_alpha_and_mu():
 
 def test_plastic_cap_never_exceeds_hardness():
     hardness = 0.3e9
-    el, hz = _gt(1.0)
+    el, _ = _gt(1.0)
     pl, _ = _gt(1.0, hardness=hardness)
     w = np.geomspace(1e-12, 1e-4, 400)
     pm = asperity_mean_pressure(pl, w)
