@@ -319,8 +319,13 @@ def greenwood_tripp(
     # the domain: where the undeformed sphere stays within reach of the summits at the
     # Hertz approach plus the summit spread, enlarged until the edge carries no pressure
     r_max = max(2.0 * hz.a, math.sqrt(2.0 * radius * (hz.delta + 6.0 * sigma_s)))
+    from threadpoolctl import threadpool_limits
+
     for _ in range(8):
-        sol = _solve(law, hz, radius, e_star, load, r_max, rings, tol, max_iter)
+        # a 240² dense solve is sub-millisecond on one thread; a threaded BLAS on a busy
+        # machine makes it a hundred times slower
+        with threadpool_limits(limits=1, user_api="blas"):
+            sol = _solve(law, hz, radius, e_star, load, r_max, rings, tol, max_iter)
         p = sol[0]
         if p[-1] <= 1e-6 * p.max() and p[-rings // 10:].max() <= 1e-3 * p.max():
             break
