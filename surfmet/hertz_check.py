@@ -28,6 +28,7 @@ dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 from dataclasses import dataclass, field
@@ -345,7 +346,9 @@ def hertz_check(
     hierarchy = rough_ball_models(check, summits, radius=radius, load=load, e_star=e_star,
                                   hardness=hardness)
     if summits is None:
-        notes.append("no roughness spectrum: Greenwood-Tripp not evaluated")
+        notes.append("no usable roughness spectrum: Greenwood-Tripp not evaluated")
+    elif len(hierarchy.models) < (4 if hardness is not None else 3):
+        notes.append("a Greenwood-Tripp solve did not converge: left out of the models")
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
@@ -371,12 +374,18 @@ def scan_summits(prep: PreparedScans) -> Any:
         total = [a + b for a, b in zip(total, mom, strict=True)]
     if not all(math.isfinite(v) and v > 0 for v in total):
         return None
-    return summit_parameters(*total)
+    from contact.errors import ContactInputError
+
+    try:
+        return summit_parameters(*total)
+    except ContactInputError:  # moments no Gaussian surface has: no GW population
+        return None
 
 
 def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
                       e_star: float, hardness: float | None) -> Any:
     """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
+    from contact.errors import ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy
 
@@ -384,9 +393,12 @@ def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
     if summits is not None:
         kw = dict(sigma_s=summits.sigma_s, density=summits.density,
                   summit_radius=summits.radius)
-        extended["greenwood_tripp"] = greenwood_tripp(load, radius, e_star, **kw)
+        # a model that cannot be solved is left out of the hierarchy, not fatal to the check
+        with contextlib.suppress(ConvergenceError):
+            extended["greenwood_tripp"] = greenwood_tripp(load, radius, e_star, **kw)
         if hardness is not None:
-            extended["greenwood_tripp_plastic"] = greenwood_tripp(load, radius, e_star,
-                                                                  hardness=hardness, **kw)
+            with contextlib.suppress(ConvergenceError):
+                extended["greenwood_tripp_plastic"] = greenwood_tripp(
+                    load, radius, e_star, hardness=hardness, **kw)
     ref = check.plastic if check.plastic is not None else check.elastic
     return model_hierarchy(check.comparison, ref, extended)
