@@ -13,9 +13,14 @@ plate, best-fit sphere for the ball), over the whole scan: non-measured points n
 count nor are replaced by anything in sigma (the contact solver sees them filled with the
 nearest measured value, which the notes report).
 
-``HertzCheck.to_json()`` has exactly the keys ``hertz_holds``, ``alpha``, ``sigma``,
+``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``alpha``, ``sigma``,
 ``hertz`` {a, delta, p0}, ``bem`` {pmax, contact_radius, approach, area_fraction,
-plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}; every
+plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and (issue 11) ``models``
+{hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``contact_radius``,
+``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
+``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
+tolerance, :mod:`contact.roughcontact.hierarchy`) and ``summits`` (the combined spectral
+summit parameters; absent for smooth scans); every
 dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 ``plastic_fraction`` are fractions of the nominal Hertz area pi a0^2;
 ``contact_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`).
@@ -23,9 +28,10 @@ dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -69,6 +75,7 @@ class PreparedScans:
     sigma_ball: float
     notes: tuple[str, ...]
     spikes_removed: dict[str, int]
+    residuals: dict[str, Topography] = field(default_factory=dict)
 
 
 def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -> PreparedScans:
@@ -107,13 +114,20 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -
         plate, ball = cleaned
     pair = prepare_pair(plate, ball)
     notes.extend(pair.notes)
+    from surfmet.form import remove_form
+
+    # each surface's own residual, for its spectrum (summit parameters)
+    residuals = {name: remove_form(scan, form)[0]
+                 for name, scan, form in (("plate", plate, "plane"), ("ball", ball, "sphere"))
+                 if scan is not None}
     s_plate = s_ball = 0.0
     if "plate" in pair.fits:
         s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
     if "ball" in pair.fits:
         s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
     return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
-                         sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed)
+                         sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
+                         residuals=residuals)
 
 
 def _q(value: Any, unit: str) -> dict[str, Any]:
@@ -148,6 +162,16 @@ class HertzCheck:
     plate_material: Any
     scans: PreparedScans
     notes: tuple[str, ...]
+    hierarchy: Any = None
+    summits: Any = None
+
+    @property
+    def verdict(self) -> str:
+        """The simplest model within tolerance (hertz, greenwood_tripp,
+        greenwood_tripp_plastic or bem; see :mod:`contact.roughcontact.hierarchy`)."""
+        if self.hierarchy is None:
+            return "hertz" if self.hertz_holds else "bem"
+        return self.hierarchy.verdict
 
     @property
     def hertz_holds(self) -> bool:
@@ -190,7 +214,33 @@ class HertzCheck:
             "reasons": list(c.reasons),
             "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
                                "p_hertz": _q(prof.p_hertz, "Pa")},
+            **self._models_json(),
         }
+
+    def _models_json(self) -> dict[str, Any]:
+        h = self.hierarchy
+        if h is None:
+            return {}
+        models = {
+            name: {"contact_radius": _q(m.a_star, "m"), "approach": _q(m.approach, "m"),
+                   "peak_pressure": _q(m.peak, "Pa"),
+                   "radial_profile": {"r": _q(m.r, "m"), "p": _q(m.p, "Pa")},
+                   "radius_error": _q(m.radius_error, ""),
+                   "profile_error": _q(m.profile_error, "")}
+            for name, m in h.models.items()
+        }
+        out: dict[str, Any] = {"models": models,
+                               "verdict": {"model": h.verdict, "reasons": list(h.reasons)}}
+        sp = self.summits
+        if sp is not None:
+            out["summits"] = {
+                "density": _q(sp.density, "1/m^2"), "radius": _q(sp.radius, "m"),
+                "sigma_s": _q(sp.sigma_s, "m"), "nayak_alpha": _q(sp.alpha, ""),
+                "note": "spectral moments m0, m2, m4 of the plate and ball residuals summed "
+                        "(independent surfaces); the summit density and radius depend on the "
+                        "scans' lateral resolution (m2 and m4 grow as the pixel shrinks)",
+            }
+        return out
 
     def details(self) -> dict[str, Any]:
         """Inputs, every criterion, the elastic peak pressure, the grid and the notes."""
@@ -292,7 +342,63 @@ def hertz_check(
     notes = [*prep.notes, *check.notes]
     if hardness is None:
         notes.append("no hardness known: elastic solution only, yield not checked")
+    summits = scan_summits(prep)
+    hierarchy = rough_ball_models(check, summits, radius=radius, load=load, e_star=e_star,
+                                  hardness=hardness)
+    if summits is None:
+        notes.append("no usable roughness spectrum: Greenwood-Tripp not evaluated")
+    elif len(hierarchy.models) < (4 if hardness is not None else 3):
+        notes.append("a Greenwood-Tripp solve did not converge: left out of the models")
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
-                      notes=tuple(notes))
+                      notes=tuple(notes), hierarchy=hierarchy, summits=summits)
+
+
+def scan_summits(prep: PreparedScans) -> Any:
+    """Combined Greenwood-Williamson summit parameters of the plate and ball residuals.
+
+    Each residual's isotropic PSD (:func:`surfmet.psd.psd`, Hann-windowed) gives its
+    profile moments m0, m2, m4 (:func:`contact.roughcontact.isotropic_moments`); for two
+    independent surfaces the moments of the composite (sum) surface add, and Nayak/McCool
+    (:func:`contact.roughcontact.summit_parameters`) turn the sums into η, R_s, σ_s.
+    None when no scan has roughness. The results depend on the scans' lateral resolution.
+    """
+    from contact.roughcontact import isotropic_moments, summit_parameters
+    from surfmet.psd import psd
+
+    total = [0.0, 0.0, 0.0]
+    for topo in prep.residuals.values():
+        spec = psd(topo)
+        mom = isotropic_moments(spec.q, spec.C, spec.weights, spec.dq)
+        total = [a + b for a, b in zip(total, mom, strict=True)]
+    if not all(math.isfinite(v) and v > 0 for v in total):
+        return None
+    from contact.errors import ContactInputError
+
+    try:
+        return summit_parameters(*total)
+    except ContactInputError:  # moments no Gaussian surface has: no GW population
+        return None
+
+
+def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
+                      e_star: float, hardness: float | None) -> Any:
+    """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
+    from contact.errors import ConvergenceError
+    from contact.roughcontact.greenwood_tripp import greenwood_tripp
+    from contact.roughcontact.hierarchy import model_hierarchy
+
+    extended: dict[str, Any] = {}
+    if summits is not None:
+        kw = dict(sigma_s=summits.sigma_s, density=summits.density,
+                  summit_radius=summits.radius)
+        # a model that cannot be solved is left out of the hierarchy, not fatal to the check
+        with contextlib.suppress(ConvergenceError):
+            extended["greenwood_tripp"] = greenwood_tripp(load, radius, e_star, **kw)
+        if hardness is not None:
+            with contextlib.suppress(ConvergenceError):
+                extended["greenwood_tripp_plastic"] = greenwood_tripp(
+                    load, radius, e_star, hardness=hardness, **kw)
+    ref = check.plastic if check.plastic is not None else check.elastic
+    return model_hierarchy(check.comparison, ref, extended)

@@ -42,7 +42,10 @@ def test_verdicts_and_json(plates, capsys):
     rec = json.loads(out)
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
-                        "radial_profile"}
+                        "radial_profile", "models", "verdict", "summits"}
+    assert rec["verdict"]["model"] == "hertz"
+    assert set(rec["models"]) == {"hertz", "bem", "greenwood_tripp", "greenwood_tripp_plastic"}
+    assert "resolution" in rec["summits"]["note"]
     hz = hertz_sphere(R, W, E_STAR)
     assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
     assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
@@ -53,6 +56,24 @@ def test_verdicts_and_json(plates, capsys):
     rec = json.loads(out)
     assert rec["hertz_holds"] is False and rec["alpha"]["value"] == pytest.approx(1.5, rel=0.1)
     assert rec["bem"]["plastic_fraction"]["value"] > 0
+    models = rec["models"]
+    for m in models.values():
+        prof = m["radial_profile"]
+        assert prof["r"]["unit"] == "m" and prof["p"]["unit"] == "Pa"
+        assert len(prof["r"]["value"]) == len(prof["p"]["value"]) > 5
+        assert m["contact_radius"]["unit"] == "m" and m["approach"]["unit"] == "m"
+    # the errors are the Hertz comparison's own numbers for Hertz, 0 for the reference
+    hz = hertz_sphere(R, W, E_STAR)
+    a_bem = rec["bem"]["contact_radius"]["value"]
+    assert models["hertz"]["radius_error"]["value"] == pytest.approx(hz.a / a_bem - 1, rel=1e-9)
+    assert models["bem"]["profile_error"]["value"] == 0
+    # α = 1.5: Hertz fails, and Greenwood-Tripp (the spectrum's summits) does better
+    assert rec["verdict"]["model"] != "hertz"
+    gt = models["greenwood_tripp"]
+    assert abs(gt["radius_error"]["value"]) < abs(models["hertz"]["radius_error"]["value"])
+    assert gt["profile_error"]["value"] < models["hertz"]["profile_error"]["value"]
+    assert any(r.startswith(rec["verdict"]["model"]) or r.startswith("no model")
+               for r in rec["verdict"]["reasons"])
     assert "spike(s) removed from the plate scan" in err  # spikes are not asperities
 
 

@@ -5,6 +5,8 @@ Bush-Gibson-Thomas, Persson, Greenwood-Tripp) and the spectral summit parameters
 Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
+from contact.roughcontact.greenwood_tripp import GreenwoodTripp, greenwood_tripp
+from contact.roughcontact.hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
 from contact.roughcontact.summits import (
     SummitParameters,
     isotropic_moments,
@@ -13,8 +15,13 @@ from contact.roughcontact.summits import (
 )
 
 __all__ = [
+    "GreenwoodTripp",
+    "ModelHierarchy",
+    "ModelPrediction",
     "SummitParameters",
+    "greenwood_tripp",
     "isotropic_moments",
+    "model_hierarchy",
     "plasticity_index",
     "summit_parameters",
 ]

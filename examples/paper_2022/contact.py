@@ -153,6 +153,46 @@ def main(argv: list[str]) -> int:
               f"{100 * c.plastic_fraction:.1f} % of πa0² "
               f"({chk.plastic.plastic_area * 1e12:.0f} µm²)")
 
+    heading("Which model holds instead? Hertz < Greenwood-Tripp < GT capped at H < BEM")
+    from contact.roughcontact import plasticity_index
+
+    summits = checks["paper's 10 N check"].summits
+    psi = plasticity_index(e_star, hardness, summits)
+    print(f"summits from the scans' spectra (plate + ball moments; resolution-dependent): "
+          f"η = {summits.density * 1e-6:.4g} /mm², R_s = {summits.radius * 1e6:.3g} µm, "
+          f"σ_s = {summits.sigma_s * 1e6:.3g} µm, Nayak α = {summits.alpha:.3g}; "
+          f"plasticity index ψ = (E*/H) √(σ_s/R_s) = {psi:.3g}")
+    hier = {}
+    for label, chk in checks.items():
+        h = chk.hierarchy
+        cc = chk.comparison
+        # ψ speaks of the asperities in contact: compare it with the yielded share of the
+        # real contact area (the BEM's area at the hardness over its contact area)
+        share = cc.plastic_fraction / cc.area_fraction if cc.area_fraction > 0 else 0.0
+        row = {"load": chk.load, "verdict": h.verdict, "psi": psi,
+               "bem_yielded_fraction": cc.plastic_fraction,
+               "bem_yielded_share_of_real_area": share}
+        print(f"\n{label}: W = {chk.load:.3f} N -> {h.verdict}; BEM yield on "
+              f"{100 * cc.plastic_fraction:.1f} % of πa0², {100 * share:.0f} % of the real "
+              "contact area")
+        for name, m in h.models.items():
+            line = (f"  {name:24} a* = {m.a_star * 1e6:6.1f} µm ({100 * m.radius_error:+6.1f} %"
+                    f" vs BEM), profile error {100 * m.profile_error:5.1f} % of p0")
+            if name.startswith("greenwood"):
+                g_r, g_p = h.gain(name, "radius"), h.gain(name, "profile")
+                line += (f"; removes {100 * g_r:.0f} % of Hertz's radius error and "
+                         f"{100 * g_p:.0f} % of its profile error")
+                row[name] = {"radius_gain": g_r, "profile_gain": g_p}
+            row.setdefault("errors", {})[name] = {"radius": m.radius_error,
+                                                  "profile": m.profile_error}
+            print(line)
+        hier[label] = row
+    findings["model_hierarchy"] = {"summits": {"density": summits.density,
+                                               "radius": summits.radius,
+                                               "sigma_s": summits.sigma_s,
+                                               "nayak_alpha": summits.alpha},
+                                   "plasticity_index": psi, "by_load": hier}
+
     heading("Rolling-resistance exponent over 1-100 N")
     prep = prepare_scans(plate, ball)
     pair = prep.pair
@@ -315,6 +355,21 @@ def main(argv: list[str]) -> int:
         "in (N1 - N2)/N. A difference between the two laws of motion much larger than "
         "that is not evidence of λ ≠ 1.",
     ]
+    h10 = checks["paper's 10 N check"].hierarchy
+    share10 = hier["paper's 10 N check"]["bem_yielded_share_of_real_area"]
+    h1 = checks["asymmetric rotor, ball 1"].hierarchy
+    text.append(
+        f"Which model holds instead: at 10 N the Greenwood-Tripp rough sphere (GW summits "
+        f"from the scans' spectra) removes {100 * h10.gain('greenwood_tripp', 'radius'):.0f} "
+        f"% of Hertz's effective-radius error and "
+        f"{100 * h10.gain('greenwood_tripp', 'profile'):.0f} % of its profile error; at "
+        f"{n1:.2f} N {100 * h1.gain('greenwood_tripp', 'radius'):.0f} % and "
+        f"{100 * h1.gain('greenwood_tripp', 'profile'):.0f} %. The named model is "
+        f"{h10.verdict} at 10 N and {h1.verdict} at {n1:.2f} N. The plasticity index "
+        f"ψ = {psi:.1f} (≫ 1: GW predicts that nearly every asperity in contact yields) "
+        f"agrees with the BEM: at 10 N "
+        f"{100 * share10:.0f} % of the real contact area is at the hardness "
+        f"({100 * c10.plastic_fraction:.0f} % of πa0²).")
     for t in text:
         print()
         print("\n".join(_wrap(t)))

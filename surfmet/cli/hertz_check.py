@@ -29,6 +29,9 @@ The verdict combines the Greenwood-Johnson-Matsubara parameter alpha = sigma R /
 sphere; Hertz holds for alpha < 0.05) with a boundary-element solution on the scans
 compared with Hertz: averaged pressure profile, effective contact radius, approach, and
 yield at the softer material's hardness. Spikes are removed from the scans first.
+The verdict names the simplest model within tolerance of the boundary elements: hertz,
+greenwood_tripp (GW asperities from the scans' spectra under the Hertz body), its
+elastic-plastic variant capped at the hardness, or the BEM itself (JSON: models, verdict).
 """
 
 
@@ -106,6 +109,14 @@ def run(args: argparse.Namespace) -> int:
     ]
     for name, a, b in rows:
         print(f"{name:16}{a:>14}{b:>14}")
+    if check.hierarchy is not None:
+        h = check.hierarchy
+        print()
+        print(f"model: {h.verdict} ({h.reasons[0]})")
+        print(f"{'':26}{'a*':>12}{'a* error':>10}{'profile error':>15}")
+        for name, m in h.models.items():
+            print(f"{name:26}{format_length(m.a_star):>12}{100 * m.radius_error:>9.3g}%"
+                  f"{100 * m.profile_error:>13.3g}%")
     res = check.result
     print(f"grid {res.shape[1]} x {res.shape[0]}, pitch {format_length(res.dx)}; "
           f"load {check.load:.4g} N, R = {format_length(check.radius)}, "

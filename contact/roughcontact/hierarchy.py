@@ -1,0 +1,167 @@
+"""Which model holds? Hertz, Greenwood-Tripp and its elastic-plastic variant against the BEM.
+
+Each model's prediction is measured against the boundary-element solution (the reference)
+with the metrics of :mod:`contact.hertzcheck`:
+
+- ``radius_error``: a*_model / a*_BEM - 1, with a* the second-moment radius
+  sqrt(5/2 <r²>_p) (:func:`contact.hertzcheck.effective_radius`);
+- ``profile_error``: the area-weighted rms, over the BEM's radial bins within 1.5 a0, of
+  the azimuthally averaged BEM pressure minus the model's pressure averaged over the same
+  cells, in units of the Hertz p0 (for Hertz this is the existing ``profile_deviation``).
+
+The verdict names the simplest model within tolerance, in the order hertz <
+greenwood_tripp < greenwood_tripp_plastic < bem: Hertz when :mod:`contact.hertzcheck`'s
+verdict holds, otherwise the first extended model whose radius and profile errors are both
+within :data:`contact.hertzcheck.RADIUS_TOLERANCE` and ``PROFILE_TOLERANCE``, otherwise
+the BEM itself.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from contact.hertzcheck import (
+    PROFILE_EXTENT,
+    PROFILE_TOLERANCE,
+    RADIUS_TOLERANCE,
+    HertzComparison,
+    profile_deviation,
+    radial_average,
+)
+
+#: The hierarchy, simplest first.
+ORDER = ("hertz", "greenwood_tripp", "greenwood_tripp_plastic", "bem")
+
+
+@dataclass(frozen=True, eq=False)
+class ModelPrediction:
+    """One model's prediction and its errors against the BEM.
+
+    ``r``, ``p``: its radial pressure profile (m, Pa); ``radius_error`` and
+    ``profile_error`` are 0 for the BEM itself.
+    """
+
+    name: str
+    a_star: float
+    approach: float
+    peak: float
+    r: np.ndarray
+    p: np.ndarray
+    radius_error: float
+    profile_error: float
+
+    @property
+    def within_tolerance(self) -> bool:
+        return (abs(self.radius_error) <= RADIUS_TOLERANCE
+                and self.profile_error <= PROFILE_TOLERANCE)
+
+
+@dataclass(frozen=True, eq=False)
+class ModelHierarchy:
+    """All models, the named one and the reasons (sentences with numbers)."""
+
+    models: dict[str, ModelPrediction]
+    verdict: str
+    reasons: tuple[str, ...]
+
+    def gain(self, name: str, metric: str = "radius") -> float:
+        """Fraction of Hertz's error that model ``name`` removes (1 = all, < 0 = worse)."""
+        key = "radius_error" if metric == "radius" else "profile_error"
+        e_h = abs(getattr(self.models["hertz"], key))
+        e_m = abs(getattr(self.models[name], key))
+        return (1.0 - e_m / e_h) if e_h > 0 else 0.0
+
+
+class _Tabulated:
+    """A radial pressure p(r) given on points, as an object with ``pressure(r)``."""
+
+    def __init__(self, pressure: Any) -> None:
+        self.pressure = pressure
+
+
+def _measure(name: str, comp: HertzComparison, ref: Any, model_pressure: Any, a_star: float,
+             approach: float, peak: float, r: np.ndarray, p: np.ndarray) -> ModelPrediction:
+    hz = comp.hertz
+    prof = comp.profile
+    r_max = float(prof.r[-1]) + 0.5 * prof.width
+    avg = radial_average(np.asarray(ref.pressure), ref.x, ref.y, width=prof.width,
+                         r_max=r_max, hertz=_Tabulated(model_pressure))
+    err = profile_deviation(avg, hz.p0, PROFILE_EXTENT * hz.a)
+    return ModelPrediction(name=name, a_star=float(a_star), approach=float(approach),
+                           peak=float(peak), r=np.asarray(r, float), p=np.asarray(p, float),
+                           radius_error=float(a_star / comp.contact_radius - 1.0),
+                           profile_error=float(err))
+
+
+def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, Any]
+                    ) -> ModelHierarchy:
+    """Measure Hertz and the extended models against the BEM solution and name the simplest.
+
+    Parameters
+    ----------
+    comp : HertzComparison
+        :func:`contact.hertzcheck.compare_with_hertz`'s outcome on ``reference``.
+    reference : ContactResult
+        The BEM solution compared with (elastic-plastic when a hardness was given).
+    extended : dict
+        ``{"greenwood_tripp": GreenwoodTripp, "greenwood_tripp_plastic": ...}`` (either may
+        be absent).
+    """
+    hz = comp.hertz
+    prof = comp.profile
+    models: dict[str, ModelPrediction] = {}
+    rh = np.linspace(0.0, hz.a, 61)
+    models["hertz"] = _measure("hertz", comp, reference, hz.pressure, hz.a, hz.delta, hz.p0,
+                               rh, hz.pressure(rh))
+    for name in ORDER[1:3]:
+        sol = extended.get(name)
+        if sol is not None:
+            models[name] = _measure(name, comp, reference, sol.pressure, sol.a_star,
+                                    sol.approach, sol.peak, sol.r, sol.p)
+    models["bem"] = ModelPrediction(
+        name="bem", a_star=comp.contact_radius, approach=comp.approach, peak=comp.pmax,
+        r=prof.r, p=prof.p, radius_error=0.0, profile_error=0.0)
+    if comp.hertz_holds:
+        verdict = "hertz"
+    else:
+        verdict = next((n for n in ORDER[1:3] if n in models and models[n].within_tolerance),
+                       "bem")
+    reasons = []
+    h = models["hertz"]
+    for name, m in models.items():
+        if name == "bem":
+            continue
+        ok = m.within_tolerance
+        text = (f"{name}: a* = {m.a_star * 1e6:.4g} µm against the BEM's "
+                f"{comp.contact_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
+                f"profile off the BEM by {100 * m.profile_error:.3g} % of p0 "
+                f"({'within' if ok else 'beyond'} {100 * RADIUS_TOLERANCE:g} % / "
+                f"{100 * PROFILE_TOLERANCE:g} %)")
+        if name != "hertz" and (h.radius_error or h.profile_error):
+            hyp = models[name]
+            g_r = 1 - abs(hyp.radius_error) / abs(h.radius_error) if h.radius_error else 0.0
+            g_p = 1 - hyp.profile_error / h.profile_error if h.profile_error else 0.0
+            text += (f"; removes {100 * g_r:.3g} % of Hertz's radius error and "
+                     f"{100 * g_p:.3g} % of its profile error")
+        reasons.append(text)
+    if verdict == "hertz":
+        head = "Hertz holds (α, profile, radius, approach and yield within their limits)"
+    elif verdict == "bem":
+        head = ("no model of the hierarchy is within tolerance: only the boundary elements "
+                "describe this contact")
+    else:
+        head = (f"{verdict} is the simplest model within tolerance "
+                + ("(Hertz fails: " + "; ".join(c.name for c in comp.criteria
+                                                if c.decisive and not c.passed) + ")"))
+    return ModelHierarchy(models=models, verdict=verdict, reasons=(head, *reasons))
+
+
+def gains(h: ModelHierarchy, name: str) -> tuple[float, float]:
+    """(radius gain, profile gain) of model ``name`` over Hertz; NaN when absent."""
+    if name not in h.models:
+        return math.nan, math.nan
+    return h.gain(name, "radius"), h.gain(name, "profile")
