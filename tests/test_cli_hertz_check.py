@@ -42,7 +42,8 @@ def test_verdicts_and_json(plates, capsys):
     rec = json.loads(out)
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
-                        "radial_profile"}
+                        "radial_profile", "grid"}
+    assert rec["grid"]["nx"] == 96 and rec["grid"]["pixel_source"] == "--grid 96"
     hz = hertz_sphere(R, W, E_STAR)
     assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
     assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
