@@ -163,7 +163,8 @@ def auto_domain(
       and at most ``max_grid`` cells per side (coarser than the scan past that);
       ``max_grid=None`` keeps the scan's own pixel at any size (native resolution; the
       side is rounded up to a whole, FFT-friendly number of pixels, and the caller checks
-      the memory, :mod:`contact.memory`);
+      the memory, :mod:`contact.memory`), unless the pixel leaves fewer than 16 cells per
+      Hertz radius;
     - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
     """
     a = hertz_sphere(radius, load, e_star).a
@@ -185,12 +186,15 @@ def auto_domain(
     if not rough:
         n = fast_even(smooth_grid)
         return Domain(n, side / n, f"{why}; {n} cells for a smooth ball")
-    dx = min(float(roughness_dx), a / 32.0)
-    n = fast_even(math.ceil(side / dx - 1e-9))
     if max_grid is None:
+        # native: the scan's own pixel, unless it leaves fewer than 16 cells per Hertz radius
+        dx = min(float(roughness_dx), a / 16.0)
+        n = fast_even(math.ceil(side / dx - 1e-9))
         how = ("the scans' own pixel" if dx == float(roughness_dx)
-               else "32 cells per Hertz radius (finer than the scans' pixel)")
+               else "16 cells per Hertz radius (finer than the scans' pixel)")
         return Domain(n, dx, f"{why}; {how}")
+    dx = min(float(roughness_dx), a / 32.0)
+    n = fast_even(math.ceil(side / dx))
     if n > max_grid:
         n = fast_even(max_grid) if fast_even(max_grid) <= max_grid else max_grid
         return Domain(n, side / n, f"{why}; capped at {n} cells (coarser than the scan)")

@@ -155,11 +155,11 @@ class SphereContact:
             if covered < reach:
                 # checked in solve(): a truncated answer is still allowed with on_edge="warn"
                 self._uncovered = (
-                    f"the roughness data cover only {covered * 1e6:.4g} um around the ball's "
-                    f"apex, less than the {reach * 1e6:.4g} um contact diameter expected "
-                    "(Hertz): the scans do not overlap the contact; use larger scans or a "
-                    "smaller load (or accept a truncated result: on_edge='warn', CLI "
-                    "--on-edge warn)"
+                    "the scans do not overlap the contact: the roughness data end "
+                    f"{covered * 5e5:.4g} um from the ball's apex, inside the "
+                    f"{reach * 1e6:.4g} um contact diameter expected (Hertz); use larger "
+                    "scans or a smaller load (or accept a truncated result: on_edge='warn', "
+                    "CLI --on-edge warn)"
                 )
             if dom.n > fit:
                 self.notes.append(
@@ -238,7 +238,7 @@ class SphereContact:
         if on_edge not in _ON_EDGE:
             raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
         if self._uncovered is not None and on_edge != "warn":
-            raise ContactInputError(self._uncovered)
+            raise EdgeContactError(self._uncovered)
         if approach is None:
             load = self.design_load if load is None else positive(load, "the load", "N")
         elif load is not None:

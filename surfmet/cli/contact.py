@@ -178,5 +178,5 @@ def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
     if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
         return "the scans' own pixel"
     if pair is not None:
-        return "finer than the scans' pixel: 32 cells per Hertz radius"
+        return "finer than the scans' pixel: 16 cells per Hertz radius"
     return "automatic, smooth ball"
