@@ -28,7 +28,6 @@ import numpy as np
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
-
 #: Largest ratio of the coarsest to the finest pixel of a pair (either axis) accepted.
 MAX_PITCH_RATIO = 10.0
 
