@@ -19,10 +19,13 @@ result fields (pressure, gap, displacement, plastic)       32 per result
 nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the above
 =========================================================  ==============
 
-which sums to roughly 190 bytes per cell for one elastic solve, the figure
-:data:`BYTES_PER_CELL` holds; it was fitted to the peak resident set size (RSS) of the
-whole ``surfmet contact`` command at 1024^2, 2048^2 and 4096^2 (``benchmarks/native.py``
-records the measurements). An elastic-plastic solve adds p_old, u_old, the projected step
+which sums to roughly 200 bytes per cell for one elastic solve, the figure
+:data:`BYTES_PER_CELL` holds. Measured (``benchmarks/native.py``; peak resident set size,
+RSS, of the whole ``surfmet contact`` command on the bundled pair, minus the 0.23 GB the
+interpreter and the scans hold at small grids): 203 B/cell between 1024^2 and 2048^2,
+188-196 B/cell at 4096^2 and 8192^2 (13.2 GB peak RSS at 8192^2); a 1024^2 solve alone
+adds 232 MB to the RSS against the 274 MB estimated. The estimate is within 1.5x of the
+measured peak (a test checks it at 1024^2). An elastic-plastic solve adds p_old, u_old, the projected step
 and its candidates (4 x 8 B) and doubles the correction buffers (+16 B):
 :data:`PLASTIC_EXTRA_PER_CELL`. Every further result kept alive (the elastic and the
 plastic solution of ``hertz-check``, one per load of a rolling sweep) adds
@@ -41,7 +44,7 @@ import os
 from contact.errors import ContactMemoryError
 
 #: Peak bytes per grid cell of one elastic solve (measured; see the module notes).
-BYTES_PER_CELL = 190
+BYTES_PER_CELL = 200
 #: Extra peak bytes per cell of an elastic-plastic solve.
 PLASTIC_EXTRA_PER_CELL = 48
 #: Bytes per cell of each further result kept (four float64 fields).
