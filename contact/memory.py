@@ -25,8 +25,10 @@ RSS, of the whole ``surfmet contact`` command on the bundled pair, minus the 0.2
 interpreter and the scans hold at small grids): 203 B/cell between 1024^2 and 2048^2,
 188-196 B/cell at 4096^2 and 8192^2 (13.2 GB peak RSS at 8192^2); a 1024^2 solve alone
 adds 232 MB to the RSS against the 274 MB estimated. The estimate is within 1.5x of the
-measured peak (a test checks it at 1024^2). An elastic-plastic solve adds p_old, u_old, the projected step
-and its candidates (4 x 8 B) and doubles the correction buffers (+16 B):
+measured peak (a test checks it at 1024^2).
+
+An elastic-plastic solve adds p_old, u_old, the projected step and its candidates
+(4 x 8 B) and doubles the correction buffers (+16 B):
 :data:`PLASTIC_EXTRA_PER_CELL`. Every further result kept alive (the elastic and the
 plastic solution of ``hertz-check``, one per load of a rolling sweep) adds
 :data:`RESULT_BYTES_PER_CELL`.
