@@ -26,6 +26,7 @@ from typing import Any
 from contact.errors import (
     ContactError,
     ContactInputError,
+    ContactMemoryError,
     ConvergenceError,
     EdgeContactError,
     EdgeContactWarning,
@@ -81,6 +82,7 @@ __all__ = [
     "MATERIALS",
     "ContactError",
     "ContactInputError",
+    "ContactMemoryError",
     "ContactResult",
     "ConvergenceError",
     "EdgeContactError",

@@ -35,3 +35,7 @@ class EdgeContactError(ContactError, RuntimeError):
 class EdgeContactWarning(UserWarning):
     """Contact pressure reached the domain edge; the domain was enlarged (or the result is
     truncated, when enlarging was switched off)."""
+
+
+class ContactMemoryError(ContactInputError):
+    """The grid asked for would not fit in the available memory (see :mod:`contact.memory`)."""

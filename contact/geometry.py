@@ -146,7 +146,7 @@ def auto_domain(
     roughness_dx: float | None = None,
     grid: int | None = None,
     size: float | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     smooth_grid: int = 256,
     margin: float = 1.25,
     hardness: float | None = None,
@@ -161,6 +161,10 @@ def auto_domain(
     - smooth ball: ``smooth_grid`` cells (256 gives the Hertz peak pressure to ~4e-6);
     - rough ball: the pitch of the roughness data, but at least 32 cells per Hertz radius,
       and at most ``max_grid`` cells per side (coarser than the scan past that);
+      ``max_grid=None`` keeps the scan's own pixel at any size (native resolution; the
+      side is rounded up to a whole, FFT-friendly number of pixels, and the caller checks
+      the memory, :mod:`contact.memory`), unless the pixel leaves fewer than 16 cells per
+      Hertz radius;
     - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
     """
     a = hertz_sphere(radius, load, e_star).a
@@ -182,6 +186,13 @@ def auto_domain(
     if not rough:
         n = fast_even(smooth_grid)
         return Domain(n, side / n, f"{why}; {n} cells for a smooth ball")
+    if max_grid is None:
+        # native: the scan's own pixel, unless it leaves fewer than 16 cells per Hertz radius
+        dx = min(float(roughness_dx), a / 16.0)
+        n = fast_even(math.ceil(side / dx - 1e-9))
+        how = ("the scans' own pixel" if dx == float(roughness_dx)
+               else "16 cells per Hertz radius (finer than the scans' pixel)")
+        return Domain(n, dx, f"{why}; {how}")
     dx = min(float(roughness_dx), a / 32.0)
     n = fast_even(math.ceil(side / dx))
     if n > max_grid:

@@ -657,7 +657,7 @@ def check_sphere(
     hardness: float | None = None,
     grid: int | None = None,
     size: float | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     on_edge: str = "enlarge",
     tol: float = 1e-6,
 ) -> SphereCheck:
@@ -690,8 +690,11 @@ def check_sphere(
             dx = roughness_dx if roughness_dx else 1.0
             z, _ = remove_plane(np.asarray(roughness, dtype=float), dx, roughness_dy or dx)
             sigma = combined_rms(z)
+    # memory check: the elastic and the plastic result are kept together, and the
+    # plastic solve needs about one result's worth more (contact.memory)
     common = dict(roughness=roughness, roughness_dx=roughness_dx, roughness_dy=roughness_dy,
-                  grid=grid, size=size, max_grid=max_grid)
+                  grid=grid, size=size, max_grid=max_grid,
+                  results=1 if hardness is None else 3)
     el_problem = SphereContact(radius, e_star, load, **common)
     elastic = el_problem.solve(load, on_edge=on_edge, tol=tol)
     notes = list(elastic.notes)

@@ -399,7 +399,7 @@ def sphere_sweep(
     band: float = 0.05,
     grid: int | None = None,
     size: float | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     tol: float = 1e-6,
     confidence: float = 0.95,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
@@ -456,7 +456,8 @@ def sphere_sweep(
     w = _loads(loads)
     problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness,
                             roughness_dx=roughness_dx, roughness_dy=roughness_dy,
-                            centre=centre, grid=grid, size=size, max_grid=max_grid)
+                            centre=centre, grid=grid, size=size, max_grid=max_grid,
+                            results=w.size + 1)
     rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
     forces = np.zeros(w.size)
     results: list[Any] = []

@@ -29,6 +29,7 @@ from contact.geometry import (
     Domain,
     auto_domain,
     centred_coordinates,
+    contact_extent,
     fast_even,
     fill_nan,
     max_centred_cells,
@@ -37,6 +38,7 @@ from contact.geometry import (
     sphere_gap,
 )
 from contact.hertz import hertz_sphere
+from contact.memory import check_grid_memory
 from contact.result import ContactResult
 
 _ON_EDGE = ("enlarge", "warn", "raise")
@@ -73,8 +75,12 @@ class SphereContact:
     grid, size : optional
         Cells per side and side length (m) overriding the automatic choice
         (:func:`contact.geometry.auto_domain`).
-    max_grid : int
-        Largest automatic grid (cells per side).
+    max_grid : int or None
+        Largest automatic grid (cells per side); None: the roughness data's own pixel at
+        any size that fits in memory (native resolution).
+    results : int
+        Results of this problem kept alive together (for the memory check,
+        :func:`contact.memory.check_grid_memory`).
     exact_sphere : bool
         Use R - sqrt(R^2 - r^2) instead of the Hertz paraboloid.
     """
@@ -94,8 +100,9 @@ class SphereContact:
         periodic: bool = False,
         grid: int | None = None,
         size: float | None = None,
-        max_grid: int = 1024,
+        max_grid: int | None = 1024,
         exact_sphere: bool = False,
+        results: int = 1,
     ):
         self.radius = positive(radius, "the ball radius", "m")
         self.e_star = positive(e_star, "E*", "Pa")
@@ -103,9 +110,11 @@ class SphereContact:
         self.hardness = None if hardness is None else positive(hardness, "the hardness", "Pa")
         self.periodic = bool(periodic)
         self.exact_sphere = bool(exact_sphere)
+        self.results = max(int(results), 1)
         self.notes: list[str] = []
         self.extra: dict[str, Any] = {}
         self._z = None
+        self._uncovered: str | None = None
         rms = 0.0
         if roughness is not None:
             z = np.array(roughness, dtype=float)
@@ -140,6 +149,18 @@ class SphereContact:
                     "the roughness data are too small for even an 8 x 8 contact grid around "
                     "the apex; use a larger scan or a finer grid"
                 )
+            covered = fit * dom.dx
+            reach = 2.0 * contact_extent(self.radius, self.design_load, self.e_star,
+                                         hardness=self.hardness)
+            if covered < reach:
+                # checked in solve(): a truncated answer is still allowed with on_edge="warn"
+                self._uncovered = (
+                    "the scans do not overlap the contact: the roughness data end "
+                    f"{covered * 5e5:.4g} um from the ball's apex, inside the "
+                    f"{reach * 1e6:.4g} um contact diameter expected (Hertz); use larger "
+                    "scans or a smaller load (or accept a truncated result: on_edge='warn', "
+                    "CLI --on-edge warn)"
+                )
             if dom.n > fit:
                 self.notes.append(
                     f"the domain was limited to the roughness data: {fit} instead of {dom.n} "
@@ -150,6 +171,8 @@ class SphereContact:
 
     # -- grid -------------------------------------------------------------------------
     def _set_domain(self, dom: Domain) -> None:
+        # before anything of the grid's size is allocated: refuse what cannot fit
+        check_grid_memory(dom.n, plastic=self.hardness is not None, results=self.results)
         self.domain = dom
         n, dx = dom.n, dom.dx
         h = sphere_gap(n, dx, self.radius, exact=self.exact_sphere)
@@ -214,6 +237,8 @@ class SphereContact:
         """
         if on_edge not in _ON_EDGE:
             raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
+        if self._uncovered is not None and on_edge != "warn":
+            raise EdgeContactError(self._uncovered)
         if approach is None:
             load = self.design_load if load is None else positive(load, "the load", "N")
         elif load is not None:
@@ -309,7 +334,7 @@ def solve_sphere(
     periodic: bool = False,
     grid: int | None = None,
     size: float | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     exact_sphere: bool = False,
     **solve_kwargs: Any,
 ) -> ContactResult:

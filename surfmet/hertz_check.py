@@ -279,7 +279,7 @@ def hertz_check(
     plastic: bool = True,
     spikes: bool = True,
     grid: int | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     on_edge: str = "enlarge",
 ) -> HertzCheck:
     """Does Hertz hold for this plate (and ball) at this load?
@@ -303,7 +303,8 @@ def hertz_check(
     spikes : bool
         Remove spikes from the scans before anything else.
     grid, max_grid : int, optional
-        Contact grid (cells per side) and the largest automatic grid.
+        Contact grid (cells per side) and the largest automatic grid; ``max_grid=None``
+        runs on the scans' own pixel at any size that fits in memory (native resolution).
     on_edge : {"enlarge", "warn", "raise"}
         Contact reaching the domain edge (see :mod:`contact.sphere`).
 

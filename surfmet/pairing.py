@@ -28,6 +28,9 @@ import numpy as np
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
+#: Largest ratio of the coarsest to the finest pixel of a pair (either axis) accepted.
+MAX_PITCH_RATIO = 10.0
+
 
 @dataclass(frozen=True, eq=False)
 class PairedRoughness:
@@ -136,7 +139,7 @@ def prepare_pair(
     ------
     SurfmetInputError
         No scan, a profile instead of an areal scan, an all-NaN scan, too few measured
-        points, or a bad pitch.
+        points, a bad pitch, or pixels differing by more than :data:`MAX_PITCH_RATIO`.
     """
     from surfmet.form import remove_form
 
@@ -164,8 +167,16 @@ def prepare_pair(
                      + (", residual mirrored in x" if mirror_ball else ""))
         parts.append(("ball", z, ball.dx, ball.dy))
 
+    pitches = [d for _, _, dx, dy in parts for d in (dx, dy)]
+    if max(pitches) > MAX_PITCH_RATIO * min(pitches) * (1 + 1e-9):
+        raise SurfmetInputError(
+            f"the scans' pixels differ by {max(pitches) / min(pitches):.3g}x "
+            f"({min(pitches) * 1e6:.4g} um against {max(pitches) * 1e6:.4g} um), more than "
+            f"{MAX_PITCH_RATIO:g}x: resampling would invent the coarse scan's detail; "
+            "measure both at comparable resolution"
+        )
     if pitch is None:
-        pitch = min(min(dx, dy) for _, _, dx, dy in parts)
+        pitch = min(pitches)
     elif not (math.isfinite(pitch) and pitch > 0):
         raise SurfmetInputError(f"the pitch must be a positive length, got {pitch!r}")
     width = min((z.shape[1] - 1) * dx for _, z, dx, _ in parts)

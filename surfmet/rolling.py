@@ -118,7 +118,7 @@ def rolling_resistance(
     kinematics: str = "rolling",
     spikes: bool = True,
     grid: int | None = None,
-    max_grid: int = 1024,
+    max_grid: int | None = 1024,
     centre: tuple[float, float] | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
 ) -> RollingReport:
@@ -148,7 +148,8 @@ def rolling_resistance(
     spikes : bool
         Remove spikes from the scans first.
     grid, max_grid : int, optional
-        Contact grid settings.
+        Contact grid settings; ``max_grid=None`` runs on the scans' own pixel at any size
+        that fits in memory (native resolution).
     centre : (float, float), optional
         Apex position on the paired roughness map (m); default its middle.
     progress : callable, optional

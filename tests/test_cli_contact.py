@@ -124,7 +124,10 @@ def test_real_scan_too_small_for_the_contact(realdata, capsys):
     argv = ["contact", "--plate", str(realdata("nms-1.nms")), "--radius", "20mm", "--load",
             "10N", "--materials", "steel,aluminium"]
     assert main(argv) == 1
-    assert "edge" in capsys.readouterr().err
+    err = capsys.readouterr().err.strip().splitlines()
+    assert "do not overlap the contact" in err[-1] and "273.6 um" in err[-1]
+    assert len(err[-1]) < 400 and "Traceback" not in "".join(err)
+    assert all(line.startswith("note:") for line in err[:-1])
     rec = _json(capsys, [*argv, "--on-edge", "warn", "--json"])
     assert rec["touches_edge"] is True
     assert any("truncated" in note for note in rec["notes"])

@@ -42,10 +42,11 @@ def test_verdicts_and_json(plates, capsys):
     rec = json.loads(out)
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
-                        "radial_profile", "models", "verdict", "summits"}
+                        "radial_profile", "models", "verdict", "summits", "grid"}
     assert rec["verdict"]["model"] == "hertz"
     assert set(rec["models"]) == {"hertz", "bem", "greenwood_tripp", "greenwood_tripp_plastic"}
     assert "resolution" in rec["summits"]["note"]
+    assert rec["grid"]["nx"] == 96 and rec["grid"]["pixel_source"] == "--grid 96"
     hz = hertz_sphere(R, W, E_STAR)
     assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
     assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)

@@ -49,7 +49,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")
     plast.add_argument("--plastic", action="store_true",
                        help="cap the pressure at the softer material's table hardness")
-    p.add_argument("--grid", type=int, metavar="N", help="cells per side (default: automatic)")
+    p.add_argument("--grid", type=int, metavar="N",
+                   help="cells per side (default: the scans' own pixel, native resolution, "
+                   "when it fits in memory; 256 for a smooth ball)")
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the roughness)")
     p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
@@ -129,6 +131,7 @@ def run(args: argparse.Namespace) -> int:
                 roughness_dx=None if pair is None else pair.dx,
                 roughness_dy=None if pair is None else pair.dy,
                 hardness=hardness, periodic=args.periodic, grid=args.grid, size=args.size,
+                max_grid=None,
                 tol=args.tol, max_iter=args.max_iter, callback=callback,
                 on_edge=args.on_edge,
             )
@@ -143,6 +146,7 @@ def run(args: argparse.Namespace) -> int:
 
     rec = contact_record(res, ball_m, plate_m, pair, radius=args.radius,
                          plate_file=args.plate, ball_file=args.ball)
+    rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
         np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
                             summary=json.dumps(jsonable(rec)))
@@ -151,8 +155,9 @@ def run(args: argparse.Namespace) -> int:
         return 0
     hz = res.hertz
     print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
-    print(f"grid           {res.shape[1]} x {res.shape[0]}, pitch {format_length(res.dx)}, "
-          f"side {format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
+    print(f"grid           {res.shape[1]} x {res.shape[0]} cells, pixel "
+          f"{format_length(res.dx)} ({pixel_source(res.dx, pair, args.grid)}), side "
+          f"{format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
     print(f"load           {res.load:.6g} N")
     print(f"max pressure   {res.pmax / 1e6:.6g} MPa   (Hertz p0 {hz.p0 / 1e6:.6g} MPa)")
     print(f"contact radius {format_length(res.contact_radius)} = sqrt(A/pi)   "
@@ -172,3 +177,15 @@ def run(args: argparse.Namespace) -> int:
     if args.out:
         print(f"fields saved   {args.out}")
     return 0
+
+
+def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
+    """Where the contact grid's pixel came from, for the output (shared by the contact
+    commands)."""
+    if grid is not None:
+        return f"--grid {grid}"
+    if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
+        return "the scans' own pixel"
+    if pair is not None:
+        return "finer than the scans' pixel: 16 cells per Hertz radius"
+    return "automatic, smooth ball"

@@ -55,7 +55,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--keep-spikes", action="store_true",
                    help="do not remove spikes from the scans")
     p.add_argument("--grid", type=int, metavar="N",
-                   help="contact grid, cells per side (default: automatic)")
+                   help="contact grid, cells per side (default: the scans' own pixel, "
+                   "native resolution, when it fits in memory)")
     p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
                    help="contact reaching the domain edge: enlarge (default), warn, fail")
     p.add_argument("--resolution-study", action="store_true",
@@ -69,6 +70,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    from surfmet.cli.contact import pixel_source
     from surfmet.errors import SurfmetInputError
     from surfmet.hertz_check import hertz_check
     from surfmet.units import format_length
@@ -84,13 +86,21 @@ def run(args: argparse.Namespace) -> int:
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
                         plastic=not args.elastic, spikes=not args.keep_spikes, grid=args.grid,
-                        on_edge=args.on_edge)
+                        max_grid=None, on_edge=args.on_edge)
+    res = check.result
+    source = pixel_source(res.dx, check.scans.pair, args.grid)
     for note in check.notes:
         log(f"note: {note}")
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        emit_json(check.to_json())
+        from surfmet.units import quantity
+
+        # the issue's keys, and the grid the answer was computed on (issue 12)
+        out = {**check.to_json(), "grid": {
+            "nx": res.shape[1], "ny": res.shape[0], "dx": quantity(res.dx, "m"),
+            "pixel_source": source}}
+        emit_json(out)
         return 0
     c = check.comparison
     hz = c.hertz
@@ -117,8 +127,8 @@ def run(args: argparse.Namespace) -> int:
         for name, m in h.models.items():
             print(f"{name:26}{format_length(m.a_star):>12}{100 * m.radius_error:>9.3g}%"
                   f"{100 * m.profile_error:>13.3g}%")
-    res = check.result
-    print(f"grid {res.shape[1]} x {res.shape[0]}, pitch {format_length(res.dx)}; "
+    print(f"grid {res.shape[1]} x {res.shape[0]} cells, pixel {format_length(res.dx)} "
+          f"({source}); "
           f"load {check.load:.4g} N, R = {format_length(check.radius)}, "
           f"{check.ball_material.name} on {check.plate_material.name}")
     return 0

@@ -61,7 +61,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--keep-spikes", action="store_true",
                    help="do not remove spikes from the scans")
     p.add_argument("--grid", type=int, metavar="N",
-                   help="contact grid, cells per side (default: automatic)")
+                   help="contact grid, cells per side (default: the scans' own pixel, "
+                   "native resolution, when it fits in memory)")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
                    "quantity per pixel and which converged (surfmet.resolution)")
@@ -75,8 +76,10 @@ def run(args: argparse.Namespace) -> int:
     import math
 
     from contact.rolling import log_loads
+    from surfmet.cli.contact import pixel_source
     from surfmet.errors import SurfmetInputError
     from surfmet.rolling import rolling_resistance
+    from surfmet.units import format_length
 
     lo, hi, n = args.loads
     n = 9 if n is None else n
@@ -97,17 +100,21 @@ def run(args: argparse.Namespace) -> int:
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=not args.keep_spikes, grid=args.grid,
+        spikes=not args.keep_spikes, grid=args.grid, max_grid=None,
         progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
     )
     for note in rep.notes:
         log(f"note: {note}")
     if args.plot:
         save_figure(rep.figure(args.plot), args.plot)
-    if args.json:
-        emit_json(rep.to_json())
-        return 0
     s = rep.sweep
+    pair = rep.scans.pair if rep.scans is not None else None
+    source = pixel_source(s.settings["dx"], pair, args.grid)
+    if args.json:
+        out = rep.to_json()
+        out.setdefault("settings", {})["pixel_source"] = source
+        emit_json(out)
+        return 0
     lo_ci, hi_ci = s.lambda_ci
     print(f"model          {s.model}"
           + (f" ({s.settings['kinematics']} kinematics, alpha_h = {args.alpha_h:g})"
@@ -119,6 +126,8 @@ def run(args: argparse.Namespace) -> int:
               f"(s_r = {s.fit.prefactor:.4g} N^(1-λ) m)")
     else:
         print("lambda_eff     not fitted (fewer than 3 loads dissipate)")
+    print(f"grid           {s.settings['grid']} x {s.settings['grid']} cells, pixel "
+          f"{format_length(s.settings['dx'])} ({source})")
     print(f"{'load (N)':>12}{'M_r (N m)':>14}{'local λ':>10}")
     for w, m, lam in zip(s.loads, s.moments, s.local_lambda):
         print(f"{w:12.4g}{m:14.4g}{lam:10.4f}")

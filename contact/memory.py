@@ -1,0 +1,177 @@
+"""Memory model of a contact solve: estimate the peak before allocating, refuse what cannot fit.
+
+A solve on an n x n grid holds a fixed number of n^2 arrays at its peak. Counting them in
+bytes per cell (free boundary, :func:`contact.bem.solve_normal` with mixed precision,
+called through :class:`contact.sphere.SphereContact`):
+
+=========================================================  ==============
+array                                                      bytes per cell
+=========================================================  ==============
+gap h, E* h, p, u, d, z, t, the dense correction buffer    8 x 8 = 64
+float32 search direction t32                               4
+correction index and value (int64 + float64)               16
+kernel spectra on the padded 2n x (n + 1) grid (f64, f32)  16 + 8
+real kernel quadrant, preconditioner stiffness (f32)       8 + 2
+padded complex128 buffer of an exact convolution and its
+rfft / irfft temporaries                                   32 + 16 + 16
+set-up: sphere gap, resampling coordinates and samples     ~ 40 (freed)
+result fields (pressure, gap, displacement, plastic)       32 per result
+nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the above
+=========================================================  ==============
+
+which sums to roughly 200 bytes per cell for one elastic solve, the figure
+:data:`BYTES_PER_CELL` holds. Measured (``benchmarks/native.py``; peak resident set size,
+RSS, of the whole ``surfmet contact`` command on the bundled pair, minus the 0.23 GB the
+interpreter and the scans hold at small grids): 203 B/cell between 1024^2 and 2048^2,
+188-196 B/cell at 4096^2 and 8192^2 (13.2 GB peak RSS at 8192^2); a 1024^2 solve alone
+adds 232 MB to the RSS against the 274 MB estimated. The estimate is within 1.5x of the
+measured peak (a test checks it at 1024^2).
+
+An elastic-plastic solve adds p_old, u_old, the projected step and its candidates
+(4 x 8 B) and doubles the correction buffers (+16 B):
+:data:`PLASTIC_EXTRA_PER_CELL`. Every further result kept alive (the elastic and the
+plastic solution of ``hertz-check``, one per load of a rolling sweep) adds
+:data:`RESULT_BYTES_PER_CELL`.
+
+The available memory is the kernel's ``MemAvailable`` (``/proc/meminfo``), bounded by the
+cgroup limit where one is set; only :data:`SAFETY` of it is planned for, so that the
+out-of-memory killer never has to choose this process.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+
+from contact.errors import ContactMemoryError
+
+#: Peak bytes per grid cell of one elastic solve (measured; see the module notes).
+BYTES_PER_CELL = 200
+#: Extra peak bytes per cell of an elastic-plastic solve.
+PLASTIC_EXTRA_PER_CELL = 48
+#: Bytes per cell of each further result kept (four float64 fields).
+RESULT_BYTES_PER_CELL = 32
+#: Fixed overhead of a solve beyond the interpreter (bytes): FFT plans, small arrays.
+BASE_BYTES = 64 * 2**20
+#: Fraction of the available memory a solve may plan to use.
+SAFETY = 0.8
+
+
+def estimate_peak_bytes(n: int, *, ny: int | None = None, plastic: bool = False,
+                        results: int = 1) -> int:
+    """Estimated peak memory (bytes) that a solve on an (ny, n) grid adds to the process.
+
+    Parameters
+    ----------
+    n : int
+        Cells per side (columns).
+    ny : int, optional
+        Rows (default ``n``).
+    plastic : bool
+        Elastic-perfectly-plastic solve (a hardness is given).
+    results : int
+        Number of results kept alive together (at least 1).
+    """
+    cells = int(n) * int(n if ny is None else ny)
+    per = BYTES_PER_CELL + (PLASTIC_EXTRA_PER_CELL if plastic else 0)
+    per += RESULT_BYTES_PER_CELL * max(int(results) - 1, 0)
+    return BASE_BYTES + per * cells
+
+
+def _meminfo_available() -> int | None:
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        return None
+    return None
+
+
+def _cgroup_available() -> int | None:
+    try:
+        with open("/sys/fs/cgroup/memory.max", encoding="ascii") as fh:
+            limit = fh.read().strip()
+        if limit == "max":
+            return None
+        with open("/sys/fs/cgroup/memory.current", encoding="ascii") as fh:
+            used = int(fh.read().strip())
+        return max(int(limit) - used, 0)
+    except (OSError, ValueError):
+        return None
+
+
+def available_bytes() -> int | None:
+    """Memory available to this process now (bytes), or None where it cannot be read.
+
+    ``MemAvailable`` of ``/proc/meminfo`` (free memory plus reclaimable caches), bounded by
+    the cgroup v2 limit; elsewhere the free physical pages (``sysconf``).
+    """
+    found = [v for v in (_meminfo_available(), _cgroup_available()) if v is not None]
+    if not found:
+        try:
+            found = [os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")]
+        except (ValueError, OSError, AttributeError):
+            return None
+    return min(found)
+
+
+def largest_grid(budget: float, *, plastic: bool = False, results: int = 1) -> int:
+    """The largest even, FFT-friendly square grid whose estimate fits in ``budget`` bytes.
+
+    Returns 0 when not even an 8 x 8 grid fits.
+    """
+    from contact.geometry import fast_even
+
+    per = (BYTES_PER_CELL + (PLASTIC_EXTRA_PER_CELL if plastic else 0)
+           + RESULT_BYTES_PER_CELL * max(int(results) - 1, 0))
+    room = budget - BASE_BYTES
+    if room <= per * 64:
+        return 0
+    n = 2 * math.floor(math.sqrt(room / per) / 2)
+    while n >= 8 and fast_even(n) != n:
+        n -= 2
+    return max(n, 0)
+
+
+def check_grid_memory(n: int, *, ny: int | None = None, plastic: bool = False,
+                      results: int = 1, available: int | None = None) -> int:
+    """Refuse a grid whose estimated peak does not fit in the available memory.
+
+    Parameters
+    ----------
+    n, ny, plastic, results
+        As for :func:`estimate_peak_bytes`.
+    available : int, optional
+        Available memory (bytes); default :func:`available_bytes` (no check if unknown).
+
+    Returns
+    -------
+    int
+        The estimate (bytes).
+
+    Raises
+    ------
+    ContactMemoryError
+        The estimate exceeds :data:`SAFETY` times the available memory; the message names
+        the largest grid that fits.
+    """
+    need = estimate_peak_bytes(n, ny=ny, plastic=plastic, results=results)
+    avail = available_bytes() if available is None else int(available)
+    if avail is None:
+        return need
+    budget = SAFETY * avail
+    if need <= budget:
+        return need
+    best = largest_grid(budget, plastic=plastic, results=results)
+    gb = 1e9
+    fits = (f"the largest grid that fits is {best} x {best} cells: use grid={best} "
+            f"(CLI --grid {best}) or smaller" if best >= 8
+            else "not even an 8 x 8 grid fits: free some memory")
+    shape = f"{n} x {n if ny is None else ny}"
+    raise ContactMemoryError(
+        f"a {shape} contact grid needs about {need / gb:.3g} GB, but only "
+        f"{avail / gb:.3g} GB of memory is available ({100 * SAFETY:.0f} % of it may be "
+        f"used); {fits}"
+    )
