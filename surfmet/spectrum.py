@@ -268,3 +268,89 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
                     curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,
                     curvature_rms_real=c_r, summits=summits, plasticity=psi,
                     settings=settings)
+
+
+def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography, bool, str]:
+    """Level a scan for spectral or contact analysis: (scan, periodic, levelling).
+
+    A periodic scan (detected on the raw heights, or declared) only loses its mean, since a
+    fitted plane would break its periodicity; any other scan loses its least-squares plane.
+    """
+    if not isinstance(topo, Topography):
+        raise SurfmetInputError(f"an areal scan is needed, got "
+                                f"{getattr(topo, 'kind', type(topo).__name__)}")
+    per = is_periodic(topo) if periodic is None else bool(periodic)
+    if per:
+        z = np.asarray(topo.heights, float)
+        return Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), True, "mean"
+    from surfmet.form import remove_form
+
+    levelled, _ = remove_form(topo, "plane")
+    return levelled, False, "plane"
+
+
+def _qty(v: float | None, unit: str) -> dict[str, Any]:
+    from surfmet.units import quantity
+
+    return quantity(v, unit)
+
+
+def spectrum_record(s: Spectrum) -> dict[str, Any]:
+    """JSON-ready description of a :class:`Spectrum` (every dimensional value with a unit)."""
+    sm = s.summits
+    rec: dict[str, Any] = {
+        "periodic": s.periodic,
+        "periodic_detected": s.settings.get("periodic_detected"),
+        "window": s.settings.get("window"),
+        "hurst": {"value": s.hurst.hurst,
+                  "q_range": [_qty(s.hurst.q_range[0], "rad/m"),
+                              _qty(s.hurst.q_range[1], "rad/m")],
+                  "wavelength_range": [_qty(2 * math.pi / s.hurst.q_range[1], "m"),
+                                       _qty(2 * math.pi / s.hurst.q_range[0], "m")],
+                  "fit_residual_rms_decades": s.hurst.residual_rms},
+        "roll_off": {"q": _qty(s.roll_off, "rad/m"),
+                     "wavelength": _qty(2 * math.pi / s.roll_off if s.roll_off else None,
+                                        "m")},
+        "short_cutoff": {"q": _qty(s.short_cutoff, "rad/m"),
+                         "wavelength": _qty(2 * math.pi / s.short_cutoff
+                                            if s.short_cutoff else None, "m")},
+        "h_rms": {"spectrum": _qty(s.h_rms, "m"), "real_space": _qty(s.h_rms_real, "m")},
+        "slope_rms": {"spectrum": _qty(s.slope_rms, ""),
+                      "real_space": _qty(s.slope_rms_real, "")},
+        "curvature_rms": {"spectrum": _qty(s.curvature_rms, "1/m"),
+                          "real_space": _qty(s.curvature_rms_real, "1/m")},
+        "moments": {"m0": _qty(sm.m0, "m^2"), "m2": _qty(sm.m2, ""), "m4": _qty(sm.m4, "1/m^2")},
+        "nayak_alpha": sm.alpha,
+        "summits": {"density": _qty(sm.density, "1/m^2"), "radius": _qty(sm.radius, "m"),
+                    "sigma_s": _qty(sm.sigma_s, "m"), "mean_height": _qty(sm.mean_height, "m"),
+                    "gw_product": sm.gw_product},
+        "plasticity_index": s.plasticity,
+        "resolution_dependent": list(RESOLUTION_DEPENDENT),
+        "notes": ([] if 0.0 < s.hurst.hurst < 1.0 else
+                  [f"H = {s.hurst.hurst:.3g} lies outside (0, 1): the fitted band is not "
+                   "self-affine (a form, a filter or a single dominant wavelength)"]),
+        "psd": {"q": {"value": s.psd.q.tolist(), "unit": "rad/m"},
+                "C": {"value": s.psd.C.tolist(), "unit": "m^4"}},
+    }
+    return rec
+
+
+def plot_spectrum(s: Spectrum, path: Any = None) -> Any:
+    """PSD, the fitted power law over its band, and the cut-offs (log-log)."""
+    from surfmet.plots._style import finish, new_figure
+
+    fig, ax = new_figure()
+    ok = s.psd.C > 1e-12 * float(s.psd.C.max())  # wavevectors with no power: off the plot
+    ax.loglog(s.psd.q[ok], s.psd.C[ok], ".", ms=2, color="0.5", label="isotropic PSD")
+    lo, hi = s.hurst.q_range
+    qq = np.geomspace(lo, hi, 50)
+    ax.loglog(qq, s.hurst.prefactor * qq**s.hurst.slope, "r-", lw=2,
+              label=f"power law, H = {s.hurst.hurst:.3f}")
+    for q, name, style in ((s.roll_off, "roll-off", "--"), (s.short_cutoff, "short cut-off", ":")):
+        if q:
+            ax.axvline(q, color="k", ls=style, label=f"{name} λ = {2 * math.pi / q:.3g} m")
+    ax.set_xlabel("wavevector q (rad/m)")
+    ax.set_ylabel("C^iso(q) (m⁴)")
+    ax.set_title("periodic, unwindowed" if s.periodic else "Hann-windowed")
+    ax.legend(fontsize=8)
+    return finish(fig, path)

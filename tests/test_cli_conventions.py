@@ -46,6 +46,7 @@ INVOCATIONS = {
     "show": ["show", "{scan}", "-o", "{tmp}/view.png", "--2d", "--json"],
     "report": ["report", "{scan}", "-o", "{tmp}/report.html", "--no-3d", "--json"],
     "demo": ["demo", "--out", "{tmp}/demo", "--quick", "--json"],
+    "spectrum": ["spectrum", "{scan}", "--json"],
 }
 
 
