@@ -241,7 +241,8 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     hi = min(band[1] * 10**-0.1, float(spec.q.max()) if per or short else
              0.5 * float(spec.q.max()))
     hfit = None
-    for rng in ((lo, hi), band):
+    whole = (float(spec.q[0]), short if short else float(spec.q.max()))
+    for rng in ((lo, hi), band, whole):
         try:
             hfit = fit_hurst(spec, rng)
             break

@@ -5,6 +5,9 @@ Bush-Gibson-Thomas, Persson, Greenwood-Tripp) and the spectral summit parameters
 Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
+from contact.roughcontact.bgt import KAPPA_BGT, bush_gibson_thomas
+from contact.roughcontact.gw import greenwood_williamson, gw_integral, gw_state
+from contact.roughcontact.persson import KAPPA_PERSSON, ModelCurve, kappa, persson
 from contact.roughcontact.summits import (
     SummitParameters,
     isotropic_moments,
@@ -13,8 +16,17 @@ from contact.roughcontact.summits import (
 )
 
 __all__ = [
+    "KAPPA_BGT",
+    "KAPPA_PERSSON",
+    "ModelCurve",
     "SummitParameters",
+    "bush_gibson_thomas",
+    "greenwood_williamson",
+    "gw_integral",
+    "gw_state",
     "isotropic_moments",
+    "kappa",
+    "persson",
     "plasticity_index",
     "summit_parameters",
 ]
