@@ -69,11 +69,6 @@ class ModelCurve:
     mean_gap: np.ndarray | None
     stiffness: np.ndarray | None
 
-    @property
-    def kappa(self) -> np.ndarray:
-        """Not defined without E* and h'_rms; see :func:`kappa`."""
-        raise AttributeError("use contact.roughcontact.kappa(curve, e_star, slope_rms)")
-
 
 def kappa(area_fraction: np.ndarray, pressure: np.ndarray, e_star: float,
           slope_rms: float) -> np.ndarray:
