@@ -46,6 +46,9 @@ INVOCATIONS = {
     "show": ["show", "{scan}", "-o", "{tmp}/view.png", "--2d", "--json"],
     "report": ["report", "{scan}", "-o", "{tmp}/report.html", "--no-3d", "--json"],
     "demo": ["demo", "--out", "{tmp}/demo", "--quick", "--json"],
+    "spectrum": ["spectrum", "{scan}", "--json"],
+    "flat-contact": ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "1MPa",
+                     "--json"],
 }
 
 

@@ -5,8 +5,11 @@ Bush-Gibson-Thomas, Persson, Greenwood-Tripp) and the spectral summit parameters
 Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
+from contact.roughcontact.bgt import KAPPA_BGT, bush_gibson_thomas
 from contact.roughcontact.greenwood_tripp import GreenwoodTripp, greenwood_tripp
+from contact.roughcontact.gw import greenwood_williamson, gw_integral, gw_state
 from contact.roughcontact.hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
+from contact.roughcontact.persson import KAPPA_PERSSON, ModelCurve, kappa, persson
 from contact.roughcontact.summits import (
     SummitParameters,
     isotropic_moments,
@@ -15,13 +18,22 @@ from contact.roughcontact.summits import (
 )
 
 __all__ = [
+    "KAPPA_BGT",
+    "KAPPA_PERSSON",
     "GreenwoodTripp",
+    "ModelCurve",
     "ModelHierarchy",
     "ModelPrediction",
     "SummitParameters",
+    "bush_gibson_thomas",
     "greenwood_tripp",
+    "greenwood_williamson",
+    "gw_integral",
+    "gw_state",
     "isotropic_moments",
+    "kappa",
     "model_hierarchy",
+    "persson",
     "plasticity_index",
     "summit_parameters",
 ]

@@ -29,6 +29,8 @@ SUBCOMMANDS = (
     "show",
     "report",
     "demo",
+    "spectrum",
+    "flat_contact",
 )
 
 EPILOG = """examples:
@@ -38,6 +40,8 @@ EPILOG = """examples:
   surfmet contact --radius 20mm --load 10N --materials steel,aluminium
   surfmet hertz-check plate.x3p --radius 20mm --load 10N --materials steel,aluminium
   surfmet rotor table3_frames.tsv
+  surfmet spectrum plate.x3p --plot psd.png
+  surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
   surfmet demo --out demo_out
 
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.

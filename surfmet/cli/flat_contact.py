@@ -1,0 +1,105 @@
+"""``surfmet flat-contact FILE``: the scan on a flat, BEM against Persson, GW and BGT."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, log, pressure, save_figure
+from surfmet.cli.spectrum import add_periodic_argument, materials_e_star, periodic_flag
+
+EPILOG = """examples:
+  surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
+  surfmet flat-contact plate.x3p --materials aluminium --pressures 10MPa,50MPa --json
+  surfmet flat-contact synthetic.npz --e-star 1GPa --pressures 1MPa:30MPa:4 --plot fc.png
+  surfmet flat-contact plate.x3p --materials steel,aluminium --hardness 0.9GPa \\
+      --pressures 20MPa --periodic no
+
+--materials A presses the scan (material A) on a rigid flat; A,B on an elastic flat of B.
+The BEM is periodic when the scan is (opposite edges match, or --periodic yes) and has a
+free boundary otherwise; the output says which. Errors are model/BEM - 1.
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "flat-contact",
+        help="a scan pressed on a flat: boundary elements vs Persson, GW and BGT",
+        description="Nominally flat contact of a rough scan: area, mean gap, stiffness and "
+        "clusters from the BEM, and the error of each rough-contact theory against it.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("file", metavar="FILE", help="areal scan of the rough surface")
+    mod = p.add_mutually_exclusive_group(required=True)
+    mod.add_argument("--materials", metavar="A[,B]", help="scan material [, flat material]")
+    mod.add_argument("--e-star", type=pressure, metavar="E", help="composite modulus E*")
+    p.add_argument("--pressures", required=True, metavar="P[,P...]|P1:P2:N",
+                   help="nominal pressures, e.g. 1MPa,5MPa or 1MPa:100MPa:5 (log-spaced)")
+    p.add_argument("--hardness", type=pressure, metavar="H", default=None,
+                   help="cap the BEM pressure at H (elastic-perfectly-plastic)")
+    add_periodic_argument(p)
+    p.add_argument("--plot", metavar="OUT.png", default=None,
+                   help="plot A/A0 and the mean gap against p for all four")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    import surfmet
+    from surfmet.cli._common import progress
+    from surfmet.errors import SurfmetInputError
+    from surfmet.flat_contact import flat_contact, parse_pressures, plot, record
+
+    pressures = parse_pressures(args.pressures)
+    if args.e_star is not None:
+        if not args.e_star > 0:
+            raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
+        e_star, hard, names = args.e_star, args.hardness, []
+    else:
+        e_star, hard, names = materials_e_star(args.materials, args.hardness)
+        if args.hardness is None:
+            hard = None  # the BEM stays elastic unless a hardness is asked for
+    topo = surfmet.read(args.file)
+    bar = progress(range(len(pressures)), total=len(pressures), desc="pressures")
+    it = iter(bar)
+    rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
+                       periodic=periodic_flag(args.periodic),
+                       progress=lambda done, total: next(it, None))
+    rec = {"file": args.file, **({"materials": names} if names else {}), **record(rep)}
+    if args.plot:
+        save_figure(plot(rep, args.plot), args.plot)
+    if args.json:
+        emit_json(rec)
+        return 0
+    _print(rec)
+    return 0
+
+
+def _print(rec: dict[str, Any]) -> None:
+    print(f"file  {rec['file']}")
+    g = rec["grid"]
+    print(f"  {rec['boundary']} boundary, {g['nx']} x {g['ny']} cells, "
+          f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
+          f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
+    print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} "
+          f"{'K (MPa/um)':>11} {'err A':>8} {'err gap':>8}")
+    for r in rec["results"]:
+        pm = r["pressure"]["value"] / 1e6
+        b = r["bem"]
+        print(f"  {pm:9.4g} {'BEM':>8} {b['area_fraction']:10.4g} {b['kappa']:7.3f} "
+              f"{b['mean_gap']['value'] * 1e6:9.4g} {b['stiffness']['value'] / 1e12:11.4g}"
+              f"   clusters {b['n_clusters']}, corrected A/A0 {b['corrected_area_fraction']:.4g}")
+        for name in ("persson", "gw", "bgt"):
+            m = r[name]
+            gap = m["mean_gap"]["value"]
+            k = m["stiffness"]["value"]
+            ea, eg = m["relative_error"]["area_fraction"], m["relative_error"]["mean_gap"]
+            print(f"  {'':9} {name:>8} {m['area_fraction']:10.4g} {m['kappa']:7.3f} "
+                  f"{'-' if gap is None else f'{gap * 1e6:.4g}':>9} "
+                  f"{'-' if k is None else f'{k / 1e12:.4g}':>11} "
+                  f"{'-' if ea is None else f'{100 * ea:+.1f}%':>8} "
+                  f"{'-' if eg is None else f'{100 * eg:+.1f}%':>8}")
+    for note in rec["notes"]:
+        log(f"  note: {note}")

@@ -1,0 +1,125 @@
+"""``surfmet spectrum FILE``: PSD, Hurst exponent, cut-offs, rms values, GW summits."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import add_json_flag, emit_json, log, pressure, save_figure
+
+EPILOG = """examples:
+  surfmet spectrum plate.x3p
+  surfmet spectrum plate.x3p --json --plot psd.png
+  surfmet spectrum synthetic.npz --periodic yes
+  surfmet spectrum plate.x3p --materials steel,aluminium --hardness 0.9GPa
+
+A periodic scan (opposite edges match, or --periodic yes) keeps its mean-removed heights
+and is transformed unwindowed; any other scan loses its plane and is Hann-windowed.
+Slope, curvature, Nayak's alpha and the summit parameters depend on the scan's
+resolution (they grow as the pixel shrinks); h_rms and the Hurst exponent hardly do.
+"""
+
+
+def add_periodic_argument(p: argparse.ArgumentParser) -> None:
+    """``--periodic auto|yes|no`` (shared with flat-contact)."""
+    p.add_argument("--periodic", choices=("auto", "yes", "no"), default="auto",
+                   help="take the scan as periodic (default: detect from its edges)")
+
+
+def periodic_flag(text: str) -> bool | None:
+    """``auto`` -> None, ``yes`` -> True, ``no`` -> False."""
+    return {"auto": None, "yes": True, "no": False}[text]
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    p = sub.add_parser(
+        "spectrum",
+        help="isotropic PSD, Hurst exponent, cut-offs, rms values and GW summit parameters",
+        description="Spectral description of an areal scan (Jacobs et al. 2017; Nayak 1971; "
+        "McCool 1986).",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("file", metavar="FILE", help="areal scan file")
+    add_periodic_argument(p)
+    p.add_argument("--materials", metavar="A,B", default=None,
+                   help="scan and counter-body materials for the plasticity index")
+    p.add_argument("--hardness", type=pressure, metavar="P", default=None,
+                   help="hardness of the softer body (default: the materials' table value)")
+    p.add_argument("--plot", metavar="OUT.png", default=None, help="write the PSD plot")
+    add_json_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | None, list[str]]:
+    """``A`` (against a rigid body) or ``A,B`` -> (E*, hardness, names)."""
+    from contact.materials import contact_hardness
+    from surfmet.errors import SurfmetInputError
+    from surfmet.materials import parse_material
+
+    parts = [s for s in str(text).split(",") if s.strip()]
+    if len(parts) not in (1, 2):
+        raise SurfmetInputError(f"--materials takes A or A,B; got {text!r}")
+    mats = [parse_material(s) for s in parts]
+    inv = sum((1.0 - m.nu**2) / m.E for m in mats)
+    h = hardness
+    if h is None:
+        h = contact_hardness(mats[0], mats[-1]) if len(mats) == 2 else mats[0].hardness
+    return 1.0 / inv, h, [m.name for m in mats]
+
+
+def run(args: argparse.Namespace) -> int:
+    import surfmet
+    from surfmet.spectrum import plot_spectrum, prepare, spectrum, spectrum_record
+
+    topo = surfmet.read(args.file)
+    scan, per, level = prepare(topo, periodic_flag(args.periodic))
+    e_star = hard = None
+    names: list[str] = []
+    if args.materials:
+        e_star, hard, names = materials_e_star(args.materials, args.hardness)
+    s = spectrum(scan, periodic=per, e_star=e_star, hardness=hard)
+    rec = {"file": args.file, "levelling": level, **spectrum_record(s)}
+    if names:
+        rec["materials"] = names
+        rec["e_star"] = {"value": e_star, "unit": "Pa"}
+        rec["hardness"] = {"value": hard, "unit": "Pa"}
+    if args.plot:
+        save_figure(plot_spectrum(s, args.plot), args.plot)
+    if args.json:
+        emit_json(rec)
+        return 0
+    _print(rec, s)
+    return 0
+
+
+def _print(rec: dict[str, Any], s: Any) -> None:
+    from surfmet.units import format_length
+
+    def wl(q: float | None) -> str:
+        import math
+
+        return "none" if not q else f"{format_length(2 * math.pi / q)} (q = {q:.4g} rad/m)"
+
+    print(f"file  {rec['file']}")
+    print(f"  {'periodic, unwindowed' if s.periodic else 'not periodic, Hann window'}"
+          f" (levelling: {rec['levelling']})")
+    lo, hi = s.hurst.q_range
+    print(f"  Hurst H          {s.hurst.hurst:.4f}  fitted on q = {lo:.4g}..{hi:.4g} rad/m")
+    print(f"  roll-off         {wl(s.roll_off)}")
+    print(f"  short cut-off    {wl(s.short_cutoff)}")
+    print(f"  h_rms            {format_length(s.h_rms)} (spectrum), "
+          f"{format_length(s.h_rms_real)} (real space)")
+    print(f"  h'_rms *         {s.slope_rms:.5g} (spectrum), {s.slope_rms_real:.5g} (real space)")
+    print(f"  curvature rms *  {s.curvature_rms:.5g} 1/m (spectrum), "
+          f"{s.curvature_rms_real:.5g} 1/m (real space)")
+    sm = s.summits
+    print(f"  Nayak alpha *    {sm.alpha:.4g}")
+    print(f"  summits *        density {sm.density * 1e-6:.5g} 1/mm², radius "
+          f"{format_length(sm.radius)}, sigma_s {format_length(sm.sigma_s)}")
+    if s.plasticity is not None:
+        print(f"  plasticity psi * {s.plasticity:.4g}")
+    for note in rec["notes"]:
+        print(f"  note: {note}")
+    log("  * depends on the scan's resolution (grows as the pixel shrinks)")

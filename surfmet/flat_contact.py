@@ -1,0 +1,219 @@
+"""Which model holds for this scan? A rough scan on a flat: BEM against Persson, GW and BGT.
+
+:func:`flat_contact` levels the scan (a periodic one keeps its heights, see
+:func:`surfmet.spectrum.prepare`), describes its spectrum (:func:`surfmet.spectrum.spectrum`),
+runs the boundary elements along the nominal pressures (:func:`contact.flat.flat_contact`:
+periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
+the same spectrum:
+
+- Persson (2001, 2007): area erf(√2 p/(E* h'_rms)); mean gap and stiffness after Yang &
+  Persson (2008, PRL 100, 024303);
+- Greenwood & Williamson (1966) with the Nayak/McCool spectral summit parameters;
+- Bush, Gibson & Thomas (1975): A/A0 = √(2π) p/(E* h'_rms) (area only).
+
+Each model's relative error against the BEM is ``model/BEM - 1``. The h'_rms and the summit
+parameters are those of the whole discrete spectrum, i.e. of the same grid the BEM sees, so
+that the comparison is between theories and not between resolutions.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from contact.flat import FlatContact
+from contact.roughcontact import ModelCurve
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+from surfmet.spectrum import Spectrum
+
+
+@dataclass(frozen=True, eq=False)
+class FlatContactReport:
+    """BEM and theories at each nominal pressure (SI)."""
+
+    bem: FlatContact
+    models: dict[str, ModelCurve]
+    spectrum: Spectrum
+    levelling: str
+    settings: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def periodic(self) -> bool:
+        return self.bem.periodic
+
+    def kappa(self, area_fraction: np.ndarray) -> np.ndarray:
+        """``κ = (A/A0) E* h'_rms / p`` with this scan's spectral h'_rms."""
+        return (np.asarray(area_fraction) * self.bem.e_star * self.spectrum.slope_rms
+                / self.bem.pressure)
+
+
+def parse_pressures(text: str) -> np.ndarray:
+    """``P[,P...]`` or ``P1:P2:N`` (N log-spaced values) -> pressures in Pa."""
+    from surfmet.units import parse_pressure
+
+    text = str(text).strip()
+    if ":" in text:
+        parts = text.split(":")
+        if len(parts) != 3:
+            raise SurfmetInputError(f"a pressure range is P1:P2:N, got {text!r}")
+        try:
+            n = int(parts[2])
+        except ValueError:
+            raise SurfmetInputError(f"N in P1:P2:N must be an integer, got {parts[2]!r}") from None
+        p1, p2 = parse_pressure(parts[0]), parse_pressure(parts[1])
+        if not (0 < p1 < p2) or n < 2:
+            raise SurfmetInputError(f"need 0 < P1 < P2 and N >= 2 in {text!r}")
+        return np.geomspace(p1, p2, n)
+    vals = np.array([parse_pressure(s) for s in text.split(",") if s.strip()])
+    if vals.size == 0 or np.any(vals <= 0):
+        raise SurfmetInputError(f"pressures must be positive, got {text!r}")
+    return np.unique(vals)
+
+
+def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
+                 hardness: float | None = None, periodic: bool | None = None,
+                 progress: Any = None) -> FlatContactReport:
+    """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
+
+    Parameters
+    ----------
+    topo : Topography
+        The rough scan (heights in m).
+    e_star : float
+        Composite modulus E*, Pa.
+    pressures : array_like or str
+        Nominal pressures (Pa) or text for :func:`parse_pressures`.
+    hardness : float, optional
+        Cap of the BEM pressure (elastic-perfectly-plastic); the theories stay elastic.
+    periodic : bool, optional
+        None: detect from the edges.
+
+    Raises
+    ------
+    SurfmetInputError
+        Not an areal scan, bad pressures or moduli, unmeasured points.
+    """
+    from contact.errors import ContactInputError
+    from contact.flat import flat_contact as bem_sweep
+    from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
+    from surfmet.spectrum import prepare, spectrum
+
+    p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
+        np.atleast_1d(np.asarray(pressures, dtype=float)))
+    if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
+        raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
+    scan, per, level = prepare(topo, periodic)
+    if scan.nan_fraction > 0:
+        raise SurfmetInputError("the scan has unmeasured points; fill or crop them first")
+    spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
+                    hardness=hardness)
+    try:
+        bem = bem_sweep(np.asarray(scan.heights), scan.dx, scan.dy, pressures=p,
+                        e_star=e_star, periodic=per, hardness=hardness, progress=progress)
+        ps = spec.psd
+        models = {
+            "persson": persson(p, e_star, ps.q, ps.C, ps.weights, ps.dq),
+            "gw": greenwood_williamson(p, e_star, spec.summits),
+            "bgt": bush_gibson_thomas(p, e_star, spec.slope_rms),
+        }
+    except ContactInputError as exc:
+        raise SurfmetInputError(str(exc)) from None
+    return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
+                             settings={"pressures": p.tolist()})
+
+
+def _rel(model: float | None, ref: float) -> float | None:
+    if model is None or not (math.isfinite(ref) and ref != 0):
+        return None
+    return float(model / ref - 1.0)
+
+
+def record(rep: FlatContactReport) -> dict[str, Any]:
+    """JSON-ready record (every dimensional value with its unit)."""
+    from surfmet.spectrum import spectrum_record
+    from surfmet.units import quantity
+
+    s = rep.spectrum
+    srec = spectrum_record(s)
+    srec.pop("psd")
+    bem = rep.bem
+    results = []
+    for i, pt in enumerate(bem.points):
+        row: dict[str, Any] = {
+            "pressure": quantity(pt.pressure, "Pa"),
+            "bem": {
+                "area_fraction": pt.area_fraction,
+                "corrected_area_fraction": pt.corrected_area_fraction,
+                "mean_gap": quantity(pt.mean_gap, "m"),
+                "stiffness": quantity(pt.stiffness, "Pa/m"),
+                "n_clusters": pt.n_clusters,
+                "max_pressure": quantity(pt.max_pressure, "Pa"),
+                "plastic_fraction": pt.plastic_fraction,
+                "kappa": float(pt.area_fraction * bem.e_star * s.slope_rms / pt.pressure),
+                "kappa_corrected": float(pt.corrected_area_fraction * bem.e_star
+                                         * s.slope_rms / pt.pressure),
+                "iterations": pt.iterations,
+                "converged": pt.converged,
+            },
+        }
+        for name, m in rep.models.items():
+            a = float(m.area_fraction[i])
+            gap = None if m.mean_gap is None else float(m.mean_gap[i])
+            k = None if m.stiffness is None else float(m.stiffness[i])
+            row[name] = {
+                "area_fraction": a,
+                "mean_gap": quantity(gap, "m"),
+                "stiffness": quantity(k, "Pa/m"),
+                "kappa": float(a * bem.e_star * s.slope_rms / pt.pressure),
+                "relative_error": {
+                    "area_fraction": _rel(a, pt.area_fraction),
+                    "mean_gap": _rel(gap, pt.mean_gap),
+                    "stiffness": _rel(k, pt.stiffness),
+                },
+            }
+        results.append(row)
+    return {
+        "boundary": "periodic" if bem.periodic else "free",
+        "levelling": rep.levelling,
+        "grid": {"nx": bem.shape[1], "ny": bem.shape[0], "dx": quantity(bem.dx, "m"),
+                 "dy": quantity(bem.dy, "m")},
+        "e_star": quantity(bem.e_star, "Pa"),
+        "hardness": quantity(bem.hardness, "Pa"),
+        "spectrum": srec,
+        "results": results,
+        "notes": [
+            *bem.notes,
+            "BGT gives the area only (its load-separation law has no closed form)",
+            "relative_error = model / BEM - 1; the BEM area counts whole cells, the "
+            "corrected area removes the perimeter bias (Yastrebov et al. 2015)",
+        ],
+    }
+
+
+def plot(rep: FlatContactReport, path: Any = None) -> Any:
+    """A/A0 and ū against p for the BEM and the three theories."""
+    from surfmet.plots._style import finish, new_figure
+
+    fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
+    p = rep.bem.pressure
+    a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
+    a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
+              label="BEM, perimeter-corrected")
+    a2.semilogx(p, rep.bem.mean_gap * 1e6, "ko-", label="BEM")
+    styles = {"persson": "C0", "gw": "C1", "bgt": "C2"}
+    for name, m in rep.models.items():
+        a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
+        if m.mean_gap is not None:
+            a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+    a1.set_xlabel("nominal pressure p (Pa)")
+    a1.set_ylabel("A/A0")
+    a2.set_xlabel("nominal pressure p (Pa)")
+    a2.set_ylabel("mean gap ū (µm)")
+    a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
+    for ax in (a1, a2):
+        ax.legend(fontsize=8)
+    return finish(fig, path)

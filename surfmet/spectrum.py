@@ -1,0 +1,357 @@
+"""A scan's spectrum: Hurst exponent, cut-offs, rms values and Greenwood-Williamson summits.
+
+The isotropic PSD comes from :func:`surfmet.psd.areal_psd` (Jacobs, Junge & Pastewka 2017,
+Surf. Topogr.: Metrol. Prop. 5, 013001). A periodic scan (its opposite edges match, or the
+user says so) is transformed as it is; any other scan is Hann-windowed, as ``surfmet.psd``
+does, so that the edge jump does not leak a ``q⁻²`` tail into the spectrum.
+
+Cut-offs. The binned log-PSD is fitted by a continuous piecewise-linear curve with two
+knots, ``log q_r`` (roll-off) and ``log q_s`` (short-wavelength cut-off), chosen by least
+squares over all pairs of bin edges. A knot counts as a cut-off only where the slope changes
+by more than 1 (a self-affine slope is -2-2H ≤ -2, a plateau is 0); wavevectors that carry
+no power at all (below 1e-12 of the peak) end the spectrum and mark the short cut-off.
+The Hurst exponent is then fitted by :func:`surfmet.psd.fit_hurst` between the cut-offs.
+
+Moments. ``m0, m2, m4`` of the profiles (Nayak 1971) come from the radial PSD with the
+DFT-cell weights, so they reproduce the discrete Parseval sums; h_rms = √m0,
+h'_rms = √(2 m2), rms Laplacian = √(8 m4/3). The real-space values use finite differences
+(central, periodic where the scan is). Summit parameters follow Nayak (1971) and McCool
+(1986) via :func:`contact.roughcontact.summit_parameters`.
+
+Resolution. h_rms is set by the long wavelengths and hardly changes with the pixel size; for
+a self-affine surface h'_rms ∝ q_s^(1-H) and the curvature ∝ q_s^(2-H) grow without bound as
+the pixel shrinks, and so do α, the summit density and 1/R_s. :data:`RESOLUTION_DEPENDENT`
+lists them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from contact.roughcontact import (
+    SummitParameters,
+    isotropic_moments,
+    plasticity_index,
+    summit_parameters,
+)
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
+
+#: Values that change with the scan's lateral resolution (pixel size / short cut-off).
+RESOLUTION_DEPENDENT = ("slope_rms", "curvature_rms", "nayak_alpha", "summit_density",
+                        "summit_radius", "summit_sigma", "plasticity_index")
+
+#: Minimum change of log-log slope for a knot to count as a cut-off.
+_KNOT_MIN = 1.0
+
+
+@dataclass(frozen=True, eq=False)
+class Spectrum:
+    """Spectral description of an areal scan (SI units).
+
+    Attributes
+    ----------
+    psd : PSD
+        Isotropic PSD ``C^iso(q)``, m⁴.
+    periodic : bool
+        Whether the scan was taken as periodic (unwindowed).
+    hurst : HurstFit
+        Power law fitted between the cut-offs (``q_range`` in rad/m).
+    roll_off, short_cutoff : float or None
+        Cut-off wavevectors (rad/m), None where the spectrum shows none.
+    h_rms, slope_rms, curvature_rms : float
+        From the spectrum (m, -, 1/m).
+    h_rms_real, slope_rms_real, curvature_rms_real : float
+        From real space (finite differences).
+    summits : SummitParameters
+        Nayak/McCool summit statistics (α, η, R_s, σ_s).
+    plasticity : float or None
+        ψ = (E*/H) √(σ_s/R_s) when E* and the hardness were given.
+    """
+
+    psd: PSD
+    periodic: bool
+    hurst: HurstFit
+    roll_off: float | None
+    short_cutoff: float | None
+    h_rms: float
+    slope_rms: float
+    curvature_rms: float
+    h_rms_real: float
+    slope_rms_real: float
+    curvature_rms_real: float
+    summits: SummitParameters
+    plasticity: float | None = None
+    settings: dict[str, Any] = field(default_factory=dict)
+
+
+def is_periodic(topo: Topography, tol: float = 0.1) -> bool:
+    """Whether the scan's opposite edges match (a periodic scan).
+
+    Along each axis, the rms jump across the wrapped edge (last row to first) must not
+    exceed ``1 + tol`` times the largest rms jump between neighbouring interior rows: a
+    periodic surface wraps as smoothly as it runs anywhere inside, whereas a cropped one
+    jumps by about √2 h_rms, far above its interior steps unless it is white noise.
+    """
+    z = np.asarray(topo.heights, dtype=float)
+    if not np.all(np.isfinite(z)) or min(z.shape) < 4:
+        return False
+    for ax in (0, 1):
+        rows = np.sqrt(np.mean(np.diff(z, axis=ax) ** 2, axis=1 - ax))
+        wrap = np.sqrt(np.mean((np.take(z, 0, axis=ax) - np.take(z, -1, axis=ax)) ** 2))
+        if not rows.max() > 0 or wrap > (1.0 + tol) * rows.max():
+            return False
+    return True
+
+
+def _real_space(z: np.ndarray, dx: float, dy: float, periodic: bool
+                ) -> tuple[float, float, float]:
+    z = z - np.nanmean(z)
+    h = float(np.sqrt(np.nanmean(z**2)))
+    if periodic:
+        gx = (np.roll(z, -1, 1) - np.roll(z, 1, 1)) / (2 * dx)
+        gy = (np.roll(z, -1, 0) - np.roll(z, 1, 0)) / (2 * dy)
+        lap = ((np.roll(z, -1, 1) - 2 * z + np.roll(z, 1, 1)) / dx**2
+               + (np.roll(z, -1, 0) - 2 * z + np.roll(z, 1, 0)) / dy**2)
+    else:
+        gx = (z[1:-1, 2:] - z[1:-1, :-2]) / (2 * dx)
+        gy = (z[2:, 1:-1] - z[:-2, 1:-1]) / (2 * dy)
+        c = z[1:-1, 1:-1]
+        lap = ((z[1:-1, 2:] - 2 * c + z[1:-1, :-2]) / dx**2
+               + (z[2:, 1:-1] - 2 * c + z[:-2, 1:-1]) / dy**2)
+    slope = float(np.sqrt(np.nanmean(gx**2 + gy**2)))
+    curv = float(np.sqrt(np.nanmean(lap**2)))
+    return h, slope, curv
+
+
+def _binned(spec: PSD, bins_per_decade: int = 10) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cell-weighted mean PSD in logarithmic bins: (log q, log C, bin upper edges in log q)."""
+    lq = np.log10(spec.q)
+    edges = np.arange(math.floor(lq.min() * bins_per_decade),
+                      math.ceil(lq.max() * bins_per_decade) + 1) / bins_per_decade
+    idx = np.clip(np.searchsorted(edges, lq, side="right") - 1, 0, edges.size - 2)
+    w = spec.weights
+    n = np.bincount(idx, weights=w, minlength=edges.size - 1)
+    ok = n > 0
+    bq = np.bincount(idx, weights=lq * w, minlength=edges.size - 1)[ok] / n[ok]
+    bc = np.bincount(idx, weights=spec.C * w, minlength=edges.size - 1)[ok] / n[ok]
+    return bq, bc, edges[1:][ok]
+
+
+def _cutoffs(spec: PSD, q_min: float = 0.0
+             ) -> tuple[float | None, float | None, tuple[float, float]]:
+    """Roll-off and short cut-off wavevectors and the self-affine band between them.
+
+    ``q_min``: wavevectors below it are left out (a window's main lobe flattens them).
+    """
+    has_power = spec.C > 1e-12 * float(spec.C.max())
+    short = None
+    keep = spec.q >= q_min
+    if not has_power[-1]:
+        # the spectrum carries no power beyond this wavevector: a hard short cut-off
+        short = float(spec.q[np.nonzero(has_power)[0].max()])
+        keep &= spec.q <= short * (1.0 - 1e-9) * 10**-0.1  # drop the bin cut through
+    bq, bc, _ = _binned(PSD(q=spec.q[keep], C=spec.C[keep], kind=spec.kind, dq=spec.dq,
+                            weights=spec.weights[keep]))
+    y = np.log10(bc)
+    x = bq
+    m = x.size
+    lo_q, hi_q = float(10 ** x[0]), float(10 ** x[-1])
+    roll = None
+    if m < 5:
+        return roll, short, (lo_q, hi_q)
+    # knots on a fine grid strictly inside the data (a knot at an end duplicates the
+    # linear term); a continuous knot position follows a bend that a bin average smears.
+    # Models with no knot, a roll-off, a short cut-off or both compete by the Bayesian
+    # information criterion (a knot costs two parameters, its place and its bend), so
+    # that the periodogram's scatter on a single scan does not pass for a cut-off.
+    grid = np.arange(x[2], x[-2] + 1e-9, 0.02)
+    cands: list[tuple[float | None, float | None]] = [(None, None)]
+    cands += [(g, None) for g in grid]
+    if short is None:
+        cands += [(None, g) for g in grid if g >= x[-4]]
+        cands += [(g, h) for k, g in enumerate(grid) for h in grid[k + 10:] if h >= x[-4]]
+    best = (math.inf, None, None, None)
+    for xr, xs in cands:
+        cols = [np.ones(m), x]
+        if xr is not None:
+            cols.append(np.maximum(x - xr, 0.0))
+        if xs is not None:
+            cols.append(np.maximum(x - xs, 0.0))
+        A = np.column_stack(cols)
+        coef, *_ = np.linalg.lstsq(A, y, rcond=None)
+        rss = max(float(np.sum((A @ coef - y) ** 2)), 1e-12 * m)
+        bic = m * math.log(rss / m) + (2 + 2 * (len(cols) - 2)) * math.log(m)
+        if bic < best[0]:
+            best = (bic, xr, xs, coef)
+    _, xr, xs, coef = best
+    k = 2
+    if xr is not None:
+        if coef[k] < -_KNOT_MIN:
+            roll = float(10**xr)
+            lo_q = roll
+        k += 1
+    if xs is not None and coef[k] < -_KNOT_MIN:
+        short = float(10**xs)
+        hi_q = short
+    if short is not None:
+        hi_q = min(hi_q, short)
+    return roll, short, (lo_q, hi_q)
+
+
+def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | None = None,
+             hardness: float | None = None) -> Spectrum:
+    """Describe a scan's spectrum (see the module docstring).
+
+    Parameters
+    ----------
+    topo : Topography
+        Levelled heights, m.
+    periodic : bool, optional
+        None detects periodicity from the edges (:func:`is_periodic`).
+    e_star, hardness : float, optional
+        Composite modulus and the softer body's hardness (Pa) for the plasticity index.
+
+    Raises
+    ------
+    SurfmetInputError
+        Not an areal scan, too small, or a spectrum without a power-law band.
+    """
+    if not isinstance(topo, Topography):
+        raise SurfmetInputError(f"spectrum needs an areal scan, got {type(topo).__name__}")
+    if topo.nx < 16 or topo.ny < 16:
+        raise SurfmetInputError(f"a spectrum needs at least 16 x 16 points, got "
+                                f"{topo.nx} x {topo.ny}")
+    detected = is_periodic(topo)
+    per = detected if periodic is None else bool(periodic)
+    if per and topo.nan_fraction > 0:
+        raise SurfmetInputError("a scan with unmeasured points cannot be taken as periodic; "
+                                "use --periodic no")
+    spec = areal_psd(topo, window="none" if per else "hann").radial()
+    # A Hann window's main lobe spans ±2Δq and flattens the first wavevectors like a
+    # roll-off would: a windowed scan resolves no roll-off below 6Δq (a tested margin).
+    roll, short, band = _cutoffs(spec, 0.0 if per else 6.0 * spec.dq)
+    # keep a margin of one bin off each knot: the transition bends the spectrum there
+    lo = max(band[0] * 10**0.1, spec.q[0] if per else 8.0 * spec.dq)
+    hi = min(band[1] * 10**-0.1, float(spec.q.max()) if per or short else
+             0.5 * float(spec.q.max()))
+    hfit = None
+    whole = (float(spec.q[0]), short if short else float(spec.q.max()))
+    for rng in ((lo, hi), band, whole):
+        try:
+            hfit = fit_hurst(spec, rng)
+            break
+        except SurfmetInputError:
+            continue
+    if hfit is None:
+        raise SurfmetInputError(
+            "the spectrum shows no power-law band between its cut-offs "
+            f"({band[0]:.4g}..{band[1]:.4g} rad/m) to fit a Hurst exponent on"
+        )
+    m0, m2, m4 = isotropic_moments(spec.q, spec.C, spec.weights, spec.dq)
+    try:
+        summits = summit_parameters(m0, m2, m4)
+    except Exception as exc:  # ContactInputError: the spectrum is not Gaussian-like
+        raise SurfmetInputError(f"no summit statistics for this scan: {exc}") from None
+    h_r, s_r, c_r = _real_space(np.asarray(topo.heights, float), topo.dx, topo.dy, per)
+    psi = None
+    if e_star is not None and hardness is not None:
+        psi = plasticity_index(e_star, hardness, summits)
+    settings = {"window": spec.settings.get("window"), "periodic_detected": detected,
+                "dx": topo.dx, "dy": topo.dy, "nx": topo.nx, "ny": topo.ny}
+    return Spectrum(psd=spec, periodic=per, hurst=hfit, roll_off=roll, short_cutoff=short,
+                    h_rms=summits.h_rms, slope_rms=summits.slope_rms,
+                    curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,
+                    curvature_rms_real=c_r, summits=summits, plasticity=psi,
+                    settings=settings)
+
+
+def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography, bool, str]:
+    """Level a scan for spectral or contact analysis: (scan, periodic, levelling).
+
+    A periodic scan (detected on the raw heights, or declared) only loses its mean, since a
+    fitted plane would break its periodicity; any other scan loses its least-squares plane.
+    """
+    if not isinstance(topo, Topography):
+        raise SurfmetInputError(f"an areal scan is needed, got "
+                                f"{getattr(topo, 'kind', type(topo).__name__)}")
+    per = is_periodic(topo) if periodic is None else bool(periodic)
+    if per:
+        z = np.asarray(topo.heights, float)
+        return Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), True, "mean"
+    from surfmet.form import remove_form
+
+    levelled, _ = remove_form(topo, "plane")
+    return levelled, False, "plane"
+
+
+def _qty(v: float | None, unit: str) -> dict[str, Any]:
+    from surfmet.units import quantity
+
+    return quantity(v, unit)
+
+
+def spectrum_record(s: Spectrum) -> dict[str, Any]:
+    """JSON-ready description of a :class:`Spectrum` (every dimensional value with a unit)."""
+    sm = s.summits
+    rec: dict[str, Any] = {
+        "periodic": s.periodic,
+        "periodic_detected": s.settings.get("periodic_detected"),
+        "window": s.settings.get("window"),
+        "hurst": {"value": s.hurst.hurst,
+                  "q_range": [_qty(s.hurst.q_range[0], "rad/m"),
+                              _qty(s.hurst.q_range[1], "rad/m")],
+                  "wavelength_range": [_qty(2 * math.pi / s.hurst.q_range[1], "m"),
+                                       _qty(2 * math.pi / s.hurst.q_range[0], "m")],
+                  "fit_residual_rms_decades": s.hurst.residual_rms},
+        "roll_off": {"q": _qty(s.roll_off, "rad/m"),
+                     "wavelength": _qty(2 * math.pi / s.roll_off if s.roll_off else None,
+                                        "m")},
+        "short_cutoff": {"q": _qty(s.short_cutoff, "rad/m"),
+                         "wavelength": _qty(2 * math.pi / s.short_cutoff
+                                            if s.short_cutoff else None, "m")},
+        "h_rms": {"spectrum": _qty(s.h_rms, "m"), "real_space": _qty(s.h_rms_real, "m")},
+        "slope_rms": {"spectrum": _qty(s.slope_rms, ""),
+                      "real_space": _qty(s.slope_rms_real, "")},
+        "curvature_rms": {"spectrum": _qty(s.curvature_rms, "1/m"),
+                          "real_space": _qty(s.curvature_rms_real, "1/m")},
+        "moments": {"m0": _qty(sm.m0, "m^2"), "m2": _qty(sm.m2, ""), "m4": _qty(sm.m4, "1/m^2")},
+        "nayak_alpha": sm.alpha,
+        "summits": {"density": _qty(sm.density, "1/m^2"), "radius": _qty(sm.radius, "m"),
+                    "sigma_s": _qty(sm.sigma_s, "m"), "mean_height": _qty(sm.mean_height, "m"),
+                    "gw_product": sm.gw_product},
+        "plasticity_index": s.plasticity,
+        "resolution_dependent": list(RESOLUTION_DEPENDENT),
+        "notes": ([] if 0.0 < s.hurst.hurst < 1.0 else
+                  [f"H = {s.hurst.hurst:.3g} lies outside (0, 1): the fitted band is not "
+                   "self-affine (a form, a filter or a single dominant wavelength)"]),
+        "psd": {"q": {"value": s.psd.q.tolist(), "unit": "rad/m"},
+                "C": {"value": s.psd.C.tolist(), "unit": "m^4"}},
+    }
+    return rec
+
+
+def plot_spectrum(s: Spectrum, path: Any = None) -> Any:
+    """PSD, the fitted power law over its band, and the cut-offs (log-log)."""
+    from surfmet.plots._style import finish, new_figure
+
+    fig, ax = new_figure()
+    ok = s.psd.C > 1e-12 * float(s.psd.C.max())  # wavevectors with no power: off the plot
+    ax.loglog(s.psd.q[ok], s.psd.C[ok], ".", ms=2, color="0.5", label="isotropic PSD")
+    lo, hi = s.hurst.q_range
+    qq = np.geomspace(lo, hi, 50)
+    ax.loglog(qq, s.hurst.prefactor * qq**s.hurst.slope, "r-", lw=2,
+              label=f"power law, H = {s.hurst.hurst:.3f}")
+    for q, name, style in ((s.roll_off, "roll-off", "--"), (s.short_cutoff, "short cut-off", ":")):
+        if q:
+            ax.axvline(q, color="k", ls=style, label=f"{name} λ = {2 * math.pi / q:.3g} m")
+    ax.set_xlabel("wavevector q (rad/m)")
+    ax.set_ylabel("C^iso(q) (m⁴)")
+    ax.set_title("periodic, unwindowed" if s.periodic else "Hann-windowed")
+    ax.legend(fontsize=8)
+    return finish(fig, path)

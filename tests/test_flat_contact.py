@@ -1,0 +1,114 @@
+"""Flat contact: the BEM's κ against the published band, the sweep's physics, the CLI."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import surfmet
+from contact.errors import ContactInputError
+from contact.flat import flat_contact
+from surfmet.cli import main
+from surfmet.synth import self_affine
+
+N = 256
+SLOPE = 0.1
+
+
+def _kappa(hurst: float, seed: int) -> float:
+    # Hyun et al. (2004)'s set-up: no roll-off (λ_r = L), a short cut-off of 4 pixels so
+    # that each shortest wavelength is resolved, periodic; A/A0 ≈ 5 %
+    topo = self_affine(N, 1.0, hurst=hurst, slope_rms=SLOPE, short_cutoff=4.0, seed=seed)
+    p = 0.02 * SLOPE
+    r = flat_contact(topo.heights, 1.0, pressures=[p], e_star=1.0, periodic=True)
+    pt = r.points[0]
+    assert pt.converged and 0.02 < pt.area_fraction < 0.08
+    # the perimeter-corrected area (Yastrebov et al. 2015) removes the pixel bias that
+    # inflates the raw cell count by 10-20 % at this resolution
+    assert pt.area_fraction > pt.corrected_area_fraction
+    return pt.corrected_area_fraction / p * SLOPE
+
+
+def test_bem_kappa_lies_in_the_published_band():
+    rng = np.random.default_rng(11)
+    hs = np.sort(rng.uniform(0.3, 0.8, 3))
+    hs[0], hs[-1] = 0.3 + 0.05 * rng.random(), 0.75 + 0.05 * rng.random()
+    ks = [_kappa(h, seed=3) for h in hs]
+    # Prodanov, Dapp & Müser (2014): κ = 2 ± 0.2; Hyun et al. (2004): 2.0-2.2
+    for h, k in zip(hs, ks):
+        assert 1.8 <= k <= 2.25, f"κ = {k:.3f} at H = {h:.2f}"
+    # Hyun et al.: κ decreases with H
+    assert ks[0] > ks[-1]
+
+
+def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
+    topo = self_affine(128, 1e-6, hurst=0.6, slope_rms=0.05, short_cutoff=4e-6, seed=5)
+    e = 10e9
+    p = np.array([2e6, 5e6, 1e7, 1e7 * 1.05])
+    r = flat_contact(topo.heights, 1e-6, pressures=p[::-1], e_star=e, periodic=True)
+    assert np.all(np.diff(r.pressure) > 0)  # returned in increasing order
+    assert np.all(np.diff(r.area_fraction) > 0) and np.all(np.diff(r.mean_gap) < 0)
+    # K = -dp/dū from the step solve against a finite difference over 5 %
+    fd = -(p[3] - p[2]) / (r.mean_gap[3] - r.mean_gap[2])
+    assert r.stiffness[2] == pytest.approx(fd, rel=0.05)
+    # the mean gap stays below the flat's start height above the mean plane
+    assert np.all(r.mean_gap < topo.heights.max() - topo.heights.mean())
+
+
+def test_sweep_rejects_bad_input():
+    z = np.random.default_rng(0).standard_normal((32, 32)) * 1e-7
+    with pytest.raises(ContactInputError):
+        flat_contact(z, 1e-6, pressures=[-1.0], e_star=1e9, periodic=True)
+    with pytest.raises(ContactInputError):
+        flat_contact(np.zeros((32, 32)), 1e-6, pressures=[1e6], e_star=1e9, periodic=True)
+    with pytest.raises(ContactInputError):
+        flat_contact(z, 1e-6, pressures=[2e9], e_star=1e9, periodic=True, hardness=1e9)
+
+
+@pytest.fixture(scope="module")
+def scan(tmp_path_factory):
+    topo = self_affine(64, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
+    return str(surfmet.write(topo, tmp_path_factory.mktemp("fc") / "sa.npz"))
+
+
+def test_cli_json_units_and_errors(scan, tmp_path, capsys):
+    out = tmp_path / "fc.png"
+    assert main(["flat-contact", scan, "--e-star", "10GPa", "--pressures", "1MPa:20MPa:3",
+                 "--json", "--plot", str(out)]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["boundary"] == "periodic" and len(rec["results"]) == 3
+    r0 = rec["results"][0]
+    assert r0["pressure"] == {"value": pytest.approx(1e6), "unit": "Pa"}
+    assert r0["bem"]["mean_gap"]["unit"] == "m" and r0["bem"]["stiffness"]["unit"] == "Pa/m"
+    assert r0["persson"]["mean_gap"]["unit"] == "m" and r0["bgt"]["mean_gap"]["value"] is None
+    for name in ("persson", "gw", "bgt"):
+        err = r0[name]["relative_error"]["area_fraction"]
+        assert err == pytest.approx(r0[name]["area_fraction"] / r0["bem"]["area_fraction"] - 1)
+    assert r0["persson"]["kappa"] == pytest.approx(math.sqrt(8 / math.pi), rel=1e-3)
+    assert out.stat().st_size > 1000
+
+
+def test_cli_free_boundary_and_materials(scan, capsys):
+    assert main(["flat-contact", scan, "--materials", "aluminium", "--pressures", "20MPa",
+                 "--periodic", "no", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["boundary"] == "free" and rec["materials"] == ["aluminium"]
+    # a rigid flat: E* = E/(1-ν²) of aluminium alone (≈ 70 GPa / (1 - 0.33²) ≈ 78 GPa)
+    assert 60e9 < rec["e_star"]["value"] < 90e9
+
+
+@pytest.mark.parametrize("argv", [
+    ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "-3MPa"],
+    ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "5MPa:1MPa:3"],
+    ["flat-contact", "{scan}", "--pressures", "1MPa"],
+    ["flat-contact", "{scan}", "--e-star", "1GPa", "--materials", "steel", "--pressures", "1MPa"],
+    ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "2GPa", "--hardness", "1GPa"],
+    ["flat-contact", "absent.npz", "--e-star", "1GPa", "--pressures", "1MPa"],
+])
+def test_cli_bad_input_exits_1(argv, scan, capsys):
+    assert main([a.format(scan=scan) for a in argv]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "Traceback" not in err[0]
