@@ -85,6 +85,7 @@ __all__ = [
     "analyse_table",
     "analyse_test",
     "crossing_times",
+    "false_alarm_probability",
     "find_misread_rows",
     "fit_all_models",
     "fit_model",
@@ -94,6 +95,7 @@ __all__ = [
     "paper_parabola",
     "quantisation_sigma",
     "select_model",
+    "verdict_evidence",
 ]
 
 FPS = 120.0
@@ -894,11 +896,13 @@ def fit_all_models(
     """Fit models in nesting order, each started from its parents' optima (so a richer model
     does not end worse than a parent it contains). ``models`` defaults to all; their
     ancestors are fitted too but only the requested ones are returned."""
-    wanted = list(models or MODELS)
-    todo = _ancestors(wanted)
-    fits: dict[str, ModelFit] = {}
     t = np.asarray(times, float)
     phi = np.asarray(angles, float)
+    n_used = int(t.size if used is None else np.count_nonzero(used))
+    # by default every model the rows can support (a short column leaves the richest out)
+    wanted = list(models or [m for m in MODELS if n_used > len(MODELS[m].free) + 2])
+    todo = _ancestors(wanted)
+    fits: dict[str, ModelFit] = {}
     for name in ORDER:
         if name not in todo:
             continue
@@ -1071,6 +1075,14 @@ def find_misread_rows(
     max_out = max(int(max_fraction * n), 1)
     flagged = np.zeros(n, bool) if initial is None else np.asarray(initial, bool).copy()
     flagged[first] = False
+    # a short column cannot spare rows for a flexible reference: fall back to a simpler
+    # one, and never flag so many rows that the reference has too few left to be fitted
+    for simpler in ("position", "const"):
+        if n - max_out > len(MODELS[reference].free) + 2:
+            break
+        if reference != simpler and simpler in _ancestors([reference]):
+            reference = simpler
+    max_out = max(min(max_out, n - len(MODELS[reference].free) - 3), 0)
     free = MODELS[reference].free
 
     if start is not None and start.model == reference and np.array_equal(start.used, ~flagged):
@@ -1195,6 +1207,17 @@ class TestReport:
         Each row's leave-one-out error in noise sigmas under the misread search's model.
     omega_first : float
         The selected model's angular speed at the first mark, rad/s (0: starts there).
+    delta_bic : float
+        BIC of the best model nested in the selected one minus the selected model's (the
+        evidence over the next simpler model; NaN for ``rest``, which has none).
+    effect_evidence : float
+        BIC of the best no-effect model minus that of the best effect model.
+    false_alarm : float
+        Calibrated probability that a clean column (no effect) reaches ``effect_evidence``
+        (:func:`false_alarm_probability`).
+    weak_evidence : bool
+        An effect is named but on weak evidence: ``false_alarm`` above 1 % or ``delta_bic``
+        below 10 ("very strong" starts there on Kass & Raftery's scale).
     """
 
     __test__ = False  # not a pytest class
@@ -1216,6 +1239,10 @@ class TestReport:
     omega_first: float
     fps: float
     step: float
+    delta_bic: float = math.nan
+    effect_evidence: float = math.nan
+    false_alarm: float = math.nan
+    weak_evidence: bool = False
 
     @property
     def fit(self) -> ModelFit:
@@ -1224,6 +1251,46 @@ class TestReport:
     @property
     def used(self) -> np.ndarray:
         return self.fit.used
+
+
+_CALIBRATION: dict | None = None
+WEAK_FALSE_ALARM = 0.01
+WEAK_DELTA_BIC = 10.0
+
+
+def false_alarm_probability(delta_bic: float) -> float:
+    """Calibrated probability that a column without any effect shows ``delta_bic`` or more
+    evidence for one (BIC of the best no-effect model minus that of the best effect model).
+
+    From ``contact/rotor_calibration.json``, written by ``benchmarks/rotor_calibration.py``
+    (simulated clean columns over the declared range of frame rate, mark step, rows,
+    eps0, start angle and misread rows); the value at the largest tabulated ``delta_bic``
+    not above the argument (conservative between grid points), 1 below the table.
+    """
+    global _CALIBRATION
+    if _CALIBRATION is None:
+        import json
+        from pathlib import Path
+
+        _CALIBRATION = json.loads(
+            (Path(__file__).resolve().parent / "rotor_calibration.json").read_text())
+    if not math.isfinite(delta_bic):
+        return math.nan
+    d = np.asarray(_CALIBRATION["delta_bic"], float)
+    pfa = np.asarray(_CALIBRATION["false_alarm"], float)
+    i = int(np.searchsorted(d, delta_bic, side="right")) - 1
+    return 1.0 if i < 0 else float(pfa[i])
+
+
+def verdict_evidence(fits: Mapping[str, ModelFit], selected: str) -> tuple[float, float]:
+    """``(delta_bic, effect_evidence)`` of a verdict (see :class:`TestReport`)."""
+    simpler = [fits[m].bic for m in _ancestors([selected]) - {selected}
+               if m in fits and m in SELECTABLE and math.isfinite(fits[m].bic)]
+    delta = min(simpler) - fits[selected].bic if simpler else math.nan
+    none = [fits[m].bic for m in SELECTABLE if m in fits and MODELS[m].effect == "none"]
+    eff = [fits[m].bic for m in SELECTABLE if m in fits and MODELS[m].effect != "none"]
+    evidence = min(none) - min(eff) if none and eff else math.nan
+    return float(delta), float(evidence)
 
 
 def group_of(name: str) -> str:
@@ -1324,6 +1391,10 @@ def analyse_test(
             fit, loo_rms=loo_exact(times, angles, fit, fps=fps, step=step), loo_kind="exact"))
             for m, fit in fits.items()}
     sel = fits[chosen]
+    delta, evidence = verdict_evidence(fits, chosen)
+    pfa = false_alarm_probability(evidence)
+    weak = MODELS[chosen].effect != "none" and (
+        pfa > WEAK_FALSE_ALARM or not delta >= WEAK_DELTA_BIC)
     return TestReport(
         name=name,
         group=group_of(name),
@@ -1342,6 +1413,10 @@ def analyse_test(
         omega_first=_omega_at(sel, float(angles[0])),
         fps=float(fps),
         step=float(step),
+        delta_bic=delta,
+        effect_evidence=evidence,
+        false_alarm=pfa,
+        weak_evidence=bool(weak),
     )
 
 
