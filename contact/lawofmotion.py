@@ -1317,17 +1317,20 @@ def _prepare(name: str, frames: Sequence[float], k: Sequence[int] | None, fps: f
         raise ContactInputError(f"column {name!r}: frames and row numbers differ in length")
     ok = np.isfinite(f)
     f, kk = f[ok], kk[ok].astype(int)
-    if f.size < 10:
+    if f.size < 6:
         raise ContactInputError(
-            f"column {name!r} has {f.size} readings; the law-of-motion analysis needs >= 10"
+            f"column {name!r} has {f.size} readings; the law-of-motion analysis needs >= 6"
         )
     if np.any(np.diff(kk) <= 0):
         raise ContactInputError(f"column {name!r}: row numbers must increase")
     times = (f - f[0]) / fps
     angles = (kk - kk[0]) * step
-    if np.any(times[1:] <= 0):
+    bad = np.flatnonzero(np.diff(f) <= 0)
+    if bad.size:
         raise ContactInputError(
-            f"column {name!r}: a frame index is not after the first row's; times must grow"
+            f"column {name!r}: frame indices must increase down the column, but row "
+            f"{kk[bad[0] + 1]} ({f[bad[0] + 1]:g}) is not after row {kk[bad[0]]} "
+            f"({f[bad[0]]:g})"
         )
     return f, kk, times, angles
 
@@ -1599,7 +1602,9 @@ def analyse_table(
                      threshold=threshold, min_frames=min_frames)
         for name in columns
     )
-    total = {m: float(sum(r.fits[m].bic for r in reports)) for m in SELECTABLE}
+    # short columns leave their richest models out: compare the models every test has
+    common = [m for m in SELECTABLE if all(m in r.fits for r in reports)]
+    total = {m: float(sum(r.fits[m].bic for r in reports)) for m in common}
     study = _select(total, margin)
 
     groups: list[GroupReport] = []
@@ -1614,6 +1619,8 @@ def analyse_table(
             "paper": (float(2 * coef[0]), float(2 * se[0]), (float(2 * coef[0]),))
         }
         for m in MODELS:
+            if not all(m in r.fits for r in members):
+                continue
             vals = [r.fits[m].eps0 for r in members]
             mu, u = _mean_u(vals, [r.fits[m].eps0_stderr for r in members])
             eps[m] = (mu, u, tuple(float(v) for v in vals))
@@ -1633,7 +1640,7 @@ def analyse_table(
             paper_rms=prms,
             eps=eps,
             params=params,
-            loto_rms={m: leave_one_test_out(members, m) for m in SELECTABLE},
+            loto_rms={m: leave_one_test_out(members, m) for m in common},
         ))
 
     from scipy import stats
