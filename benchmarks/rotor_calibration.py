@@ -43,7 +43,7 @@ from scipy.integrate import solve_ivp
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from contact.lawofmotion import MODELS, SELECTABLE, analyse_test  # noqa: E402
+from contact.lawofmotion import analyse_test  # noqa: E402
 
 FPS_CELLS = (30.0, 240.0, 1000.0)
 STEP_CELLS = (15.0, 90.0, 360.0)
@@ -97,10 +97,7 @@ def simulate(rng, *, fps, step_deg, n, eps0, eta=0.0, gamma=0.0, amp=0.0, psi=0.
 
 def evidence(rep) -> float:
     """BIC of the best no-effect model minus that of the best effect model."""
-    fits = rep.fits
-    none = min(fits[m].bic for m in SELECTABLE if MODELS[m].effect == "none")
-    eff = min(fits[m].bic for m in SELECTABLE if MODELS[m].effect != "none")
-    return float(none - eff)
+    return float(rep.effect_evidence)
 
 
 def clean_sweep(rng, per_cell, progress):
