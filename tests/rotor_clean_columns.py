@@ -39,3 +39,45 @@ def clean_column(rng: np.random.Generator, *, fps: float | None = None,
     t = t_r + np.sqrt(2.0 * (x + np.arange(n)) * step / eps0)
     f = np.floor(t * fps) if reading == "floor" else np.floor(t * fps + 0.5)
     return CleanColumn(f, eps0, fps, step, x)
+
+
+def effect_column(rng: np.random.Generator, *, fps: float, step_deg: float, n: int,
+                  kind: str, size: float) -> CleanColumn:
+    """A column with one effect, integrated with ``solve_ivp`` (events at the marks).
+
+    ``kind``: ``position`` (``eps = eps0 - eta (phi - phi0)``) or ``speed`` (``- gamma
+    omega``), ``size`` the fraction of eps0 lost over the run; ``unbalance``: ``A sin(phi +
+    psi)`` with ``A = size eps0`` and a random phase. Release and reading as
+    :func:`clean_column` (``floor``).
+    """
+    from scipy.integrate import solve_ivp
+
+    eps0 = float(rng.uniform(0.5, 5.0))
+    x = float(rng.uniform(0.0, 1.0))
+    step = math.radians(step_deg)
+    phi0 = -x * step
+    phi_end = (n - 1) * step
+    eta = gamma = amp = psi = 0.0
+    if kind == "position":
+        eta = size * eps0 / phi_end
+    elif kind == "speed":
+        gamma = size * eps0 / math.sqrt(2 * eps0 * (1 - size / 2) * phi_end)
+    elif kind == "unbalance":
+        amp, psi = size * eps0, float(rng.uniform(0.0, 2 * math.pi))
+    else:
+        raise ValueError(kind)
+
+    def rhs(_t, y):
+        return [y[1], eps0 - eta * (y[0] - phi0) - gamma * y[1] + amp * math.sin(y[0] + psi)]
+
+    events = []
+    for m in np.arange(n) * step:
+        def ev(_t, y, m=m):
+            return y[0] - m
+        ev.direction = 1.0
+        events.append(ev)
+    t_end = 10.0 * math.sqrt(2.0 * (phi_end + step) / eps0) + 1.0
+    sol = solve_ivp(rhs, (0.0, t_end), [phi0, 0.0], events=events, rtol=1e-10, atol=1e-12,
+                    max_step=t_end / 200)
+    t = np.array([e[0] for e in sol.t_events]) + float(rng.uniform(0.0, 1.0)) / fps
+    return CleanColumn(np.floor(t * fps), eps0, fps, step, x)
