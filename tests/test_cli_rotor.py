@@ -76,6 +76,11 @@ def test_paper_findings(paper_run):
         assert t["models"]["const"]["runs_z"] < -2  # systematic
         assert sel["bic"] < t["models"]["const"]["bic"] - 20
         assert sel["loo_rms"]["value"] < t["models"]["const"]["loo_rms"]["value"]
+        # the decay is far beyond what clean columns reach (calibrated false alarm < 1 %)
+        ev = t["evidence"]
+        assert ev["effect_evidence_delta_bic"] > 20 and ev["false_alarm_probability"] < 0.01
+        # a verdict beyond 'decaying' that rests on less than 10 BIC units is called weak
+        assert ev["weak"] == (ev["delta_bic_to_next_simpler"] < 10)
     assert rec["study_model"] == "position"
     tb = rec["total_bic"]
     assert tb["position"] < tb["speed"] - 50  # the position form is clearly preferred
