@@ -13,8 +13,13 @@ quantity that was measured):
 ``parabola``
     the paper's general parabola ``phi = c2 t^2 + c1 t + c0`` fitted on the angles;
 ``const``
-    constant acceleration from rest at an unknown start time ``t0`` and angle ``phi0``
-    (less than one mark step before the first mark, else that mark would have been read);
+    constant acceleration from rest at an unknown start time ``t0`` and angle ``phi0``.
+    The prior is physical: the start angle lies anywhere in the mark step before the first
+    mark (else that mark would have been read) and the start time follows from it (from
+    rest, up to ``1/(sqrt 2 - 1)`` = 2.41 first-step durations before the first mark). The
+    fit is global over the start state: a closed-form profile over the start angle
+    (:func:`_start_profile`) gives its starting points, and every richer model starts
+    from its parents' optima (the unbalance models also from four phases);
 ``position``, ``speed``, ``position+speed``
     decaying acceleration: ``eps0 - eta (phi - phi0)`` (the driving slope changes along the
     plate) and/or ``eps0 - gamma omega`` (resistance growing with speed);
@@ -31,9 +36,13 @@ parameters on the few slow rows does not also shrink ``sigma_a`` there.
 
 Selection: BIC (``-2 ln L + (p + 2) ln n``) with a margin: a model nested in the minimum-BIC one
 wins unless the richer is better by more than ``margin`` (default 6, "strong" evidence in Kass
-& Raftery's scale; a smaller margin declared effects on plain simulated data a few per cent
-of the time). Leave-one-point-out (approximate, from the leverages, or exact refits) and
-leave-one-test-out prediction errors are reported beside, with a runs test and the lag-1
+& Raftery's scale). The selection is calibrated by simulation over the declared range (frame
+rate 30-1000 fps, mark step 15-360 deg, 10-60 rows, eps0 0.5-5 rad/s², start anywhere in the
+step, 0-2 misread rows): ``benchmarks/rotor_calibration.py`` measures the false-effect rate
+(``docs/rotor_calibration.md``) and writes the false-alarm probability against the evidence
+(``rotor_calibration.json``) that qualifies each verdict (:func:`false_alarm_probability`).
+Leave-one-point-out (approximate, from the leverages, or exact refits) and leave-one-test-out
+prediction errors are reported beside, with a runs test and the lag-1
 autocorrelation of the residuals to tell systematic misfit from noise.
 
 Misread rows (a frame number mistyped or misjudged) are found by a forward-backward search on
@@ -85,6 +94,7 @@ __all__ = [
     "analyse_table",
     "analyse_test",
     "crossing_times",
+    "false_alarm_probability",
     "find_misread_rows",
     "fit_all_models",
     "fit_model",
@@ -94,6 +104,7 @@ __all__ = [
     "paper_parabola",
     "quantisation_sigma",
     "select_model",
+    "verdict_evidence",
 ]
 
 FPS = 120.0
@@ -495,10 +506,14 @@ def _derived(params: dict[str, float]) -> dict[str, float]:
 
 
 def _bounds(t: np.ndarray, phi: np.ndarray, step: float, eps_ref: float) -> dict:
-    """Parameter bounds. The start lies less than one mark step before the first mark (else
-    that earlier mark would have been read) and within the first step's duration of it; the
-    unbalance components stay below the from-rest acceleration (a larger one would stall the
-    rotor at every turn)."""
+    """Parameter bounds from the physical prior. The start angle lies anywhere in the mark
+    step before the first mark (else that earlier mark would have been read); the start
+    time follows from it: released from rest a fraction ``x`` of a step before the first
+    mark, the rotor needs ``sqrt(x)/(sqrt(1 + x) - sqrt(x))`` first-step durations to reach
+    it (2.41 as ``x -> 1``), so the start time is bounded by three first-step durations
+    (plus two frames of reading slack) before the first mark, not one. The unbalance
+    components stay below the from-rest acceleration (a larger one would stall the rotor
+    at every turn)."""
     order = np.argsort(phi)
     t_step = float(t[order[1]] - t[order[0]]) if t.size > 1 else 1.0
     t_first = float(t[order[0]])
@@ -509,9 +524,48 @@ def _bounds(t: np.ndarray, phi: np.ndarray, step: float, eps_ref: float) -> dict
         "gamma": (0.0, 50.0),
         "a_c": (-a_max, a_max),
         "a_s": (-a_max, a_max),
-        "t0": (t_first - t_step, t_first + t_step),
+        "t0": (t_first - 3.0 * t_step - 2.0 * abs(t_step) / max(t.size, 1), t_first + t_step),
         "phi0": (float(phi[order[0]]) - step, float(phi[order[0]])),
     }
+
+
+def _start_profile(t: np.ndarray, phi: np.ndarray, step: float,
+                   n_grid: int = 64, keep: int = 2) -> list[dict[str, float]]:
+    """Global starts for the constant-acceleration fit: a profile over the start angle.
+
+    For a start ``phi0 = phi_first - x step`` the from-rest law ``t = t0 + c sqrt(phi -
+    phi0)`` (``c = sqrt(2/eps0)``) is linear in ``(t0, c)``, so each ``x`` on a grid over
+    [0, 1) gets its least-squares ``(t0, eps0)`` in closed form; the ``keep`` best grid
+    points, each refined by golden-section search on ``x``, are returned as starting points
+    (the fit's cost is multimodal in the start state, so one local start is not enough).
+    """
+    i0 = int(np.argmin(phi))
+    pf = float(phi[i0])
+
+    def sse(x: float) -> tuple[float, float, float]:
+        root = np.sqrt(np.maximum(phi - (pf - x * step), 0.0))
+        a = np.vstack([np.ones_like(root), root]).T
+        coef, *_ = np.linalg.lstsq(a, t, rcond=None)
+        r = a @ coef - t
+        return float(r @ r), float(coef[0]), float(coef[1])
+
+    xs = (np.arange(n_grid) + 0.5) / n_grid
+    costs = np.array([sse(x)[0] for x in xs])
+    out = []
+    for j in np.argsort(costs)[:keep]:
+        lo, hi = max(xs[j] - 1.0 / n_grid, 0.0), min(xs[j] + 1.0 / n_grid, 1.0 - 1e-9)
+        g = (math.sqrt(5.0) - 1.0) / 2.0
+        for _ in range(30):
+            a1, b1 = hi - g * (hi - lo), lo + g * (hi - lo)
+            if sse(a1)[0] < sse(b1)[0]:
+                hi = b1
+            else:
+                lo = a1
+        x = 0.5 * (lo + hi)
+        _, t0, c = sse(x)
+        if c > 0:
+            out.append({"eps0": 2.0 / (c * c), "t0": t0, "phi0": pf - x * step})
+    return out
 
 
 def _interior(x: float, lo: float, hi: float) -> float:
@@ -851,16 +905,21 @@ def fit_all_models(
     """Fit models in nesting order, each started from its parents' optima (so a richer model
     does not end worse than a parent it contains). ``models`` defaults to all; their
     ancestors are fitted too but only the requested ones are returned."""
-    wanted = list(models or MODELS)
-    todo = _ancestors(wanted)
-    fits: dict[str, ModelFit] = {}
     t = np.asarray(times, float)
     phi = np.asarray(angles, float)
+    n_used = int(t.size if used is None else np.count_nonzero(used))
+    # by default every model the rows can support (a short column leaves the richest out)
+    wanted = list(models or [m for m in MODELS if n_used > len(MODELS[m].free) + 2])
+    todo = _ancestors(wanted)
+    fits: dict[str, ModelFit] = {}
     for name in ORDER:
         if name not in todo:
             continue
         spec = MODELS[name]
         inits = _inits_from(fits, spec)
+        if name == "const":
+            u = np.ones(t.shape, bool) if used is None else np.asarray(used, bool)
+            inits.extend(_start_profile(t[u], phi[u], step))
         if name == "const" and "parabola" in fits:
             c2, c1, c0 = (fits["parabola"].params[k] for k in ("c2", "c1", "c0"))
             if c2 > 0:
@@ -1025,6 +1084,14 @@ def find_misread_rows(
     max_out = max(int(max_fraction * n), 1)
     flagged = np.zeros(n, bool) if initial is None else np.asarray(initial, bool).copy()
     flagged[first] = False
+    # a short column cannot spare rows for a flexible reference: fall back to a simpler
+    # one, and never flag so many rows that the reference has too few left to be fitted
+    for simpler in ("position", "const"):
+        if n - max_out > len(MODELS[reference].free) + 2:
+            break
+        if reference != simpler and simpler in _ancestors([reference]):
+            reference = simpler
+    max_out = max(min(max_out, n - len(MODELS[reference].free) - 3), 0)
     free = MODELS[reference].free
 
     if start is not None and start.model == reference and np.array_equal(start.used, ~flagged):
@@ -1149,6 +1216,17 @@ class TestReport:
         Each row's leave-one-out error in noise sigmas under the misread search's model.
     omega_first : float
         The selected model's angular speed at the first mark, rad/s (0: starts there).
+    delta_bic : float
+        BIC of the best model nested in the selected one minus the selected model's (the
+        evidence over the next simpler model; NaN for ``rest``, which has none).
+    effect_evidence : float
+        BIC of the best no-effect model minus that of the best effect model.
+    false_alarm : float
+        Calibrated probability that a clean column (no effect) reaches ``effect_evidence``
+        (:func:`false_alarm_probability`).
+    weak_evidence : bool
+        An effect is named but on weak evidence: ``false_alarm`` above 1 % or ``delta_bic``
+        below 10 ("very strong" starts there on Kass & Raftery's scale).
     """
 
     __test__ = False  # not a pytest class
@@ -1170,6 +1248,10 @@ class TestReport:
     omega_first: float
     fps: float
     step: float
+    delta_bic: float = math.nan
+    effect_evidence: float = math.nan
+    false_alarm: float = math.nan
+    weak_evidence: bool = False
 
     @property
     def fit(self) -> ModelFit:
@@ -1178,6 +1260,46 @@ class TestReport:
     @property
     def used(self) -> np.ndarray:
         return self.fit.used
+
+
+_CALIBRATION: dict | None = None
+WEAK_FALSE_ALARM = 0.01
+WEAK_DELTA_BIC = 10.0
+
+
+def false_alarm_probability(delta_bic: float) -> float:
+    """Calibrated probability that a column without any effect shows ``delta_bic`` or more
+    evidence for one (BIC of the best no-effect model minus that of the best effect model).
+
+    From ``contact/rotor_calibration.json``, written by ``benchmarks/rotor_calibration.py``
+    (simulated clean columns over the declared range of frame rate, mark step, rows,
+    eps0, start angle and misread rows); the value at the largest tabulated ``delta_bic``
+    not above the argument (conservative between grid points), 1 below the table.
+    """
+    global _CALIBRATION
+    if _CALIBRATION is None:
+        import json
+        from pathlib import Path
+
+        _CALIBRATION = json.loads(
+            (Path(__file__).resolve().parent / "rotor_calibration.json").read_text())
+    if not math.isfinite(delta_bic):
+        return math.nan
+    d = np.asarray(_CALIBRATION["delta_bic"], float)
+    pfa = np.asarray(_CALIBRATION["false_alarm"], float)
+    i = int(np.searchsorted(d, delta_bic, side="right")) - 1
+    return 1.0 if i < 0 else float(pfa[i])
+
+
+def verdict_evidence(fits: Mapping[str, ModelFit], selected: str) -> tuple[float, float]:
+    """``(delta_bic, effect_evidence)`` of a verdict (see :class:`TestReport`)."""
+    simpler = [fits[m].bic for m in _ancestors([selected]) - {selected}
+               if m in fits and m in SELECTABLE and math.isfinite(fits[m].bic)]
+    delta = min(simpler) - fits[selected].bic if simpler else math.nan
+    none = [fits[m].bic for m in SELECTABLE if m in fits and MODELS[m].effect == "none"]
+    eff = [fits[m].bic for m in SELECTABLE if m in fits and MODELS[m].effect != "none"]
+    evidence = min(none) - min(eff) if none and eff else math.nan
+    return float(delta), float(evidence)
 
 
 def group_of(name: str) -> str:
@@ -1204,17 +1326,20 @@ def _prepare(name: str, frames: Sequence[float], k: Sequence[int] | None, fps: f
         raise ContactInputError(f"column {name!r}: frames and row numbers differ in length")
     ok = np.isfinite(f)
     f, kk = f[ok], kk[ok].astype(int)
-    if f.size < 10:
+    if f.size < 6:
         raise ContactInputError(
-            f"column {name!r} has {f.size} readings; the law-of-motion analysis needs >= 10"
+            f"column {name!r} has {f.size} readings; the law-of-motion analysis needs >= 6"
         )
     if np.any(np.diff(kk) <= 0):
         raise ContactInputError(f"column {name!r}: row numbers must increase")
     times = (f - f[0]) / fps
     angles = (kk - kk[0]) * step
-    if np.any(times[1:] <= 0):
+    bad = np.flatnonzero(np.diff(f) <= 0)
+    if bad.size:
         raise ContactInputError(
-            f"column {name!r}: a frame index is not after the first row's; times must grow"
+            f"column {name!r}: frame indices must increase down the column, but row "
+            f"{kk[bad[0] + 1]} ({f[bad[0] + 1]:g}) is not after row {kk[bad[0]]} "
+            f"({f[bad[0]]:g})"
         )
     return f, kk, times, angles
 
@@ -1278,6 +1403,10 @@ def analyse_test(
             fit, loo_rms=loo_exact(times, angles, fit, fps=fps, step=step), loo_kind="exact"))
             for m, fit in fits.items()}
     sel = fits[chosen]
+    delta, evidence = verdict_evidence(fits, chosen)
+    pfa = false_alarm_probability(evidence)
+    weak = MODELS[chosen].effect != "none" and (
+        pfa > WEAK_FALSE_ALARM or not delta >= WEAK_DELTA_BIC)
     return TestReport(
         name=name,
         group=group_of(name),
@@ -1296,6 +1425,10 @@ def analyse_test(
         omega_first=_omega_at(sel, float(angles[0])),
         fps=float(fps),
         step=float(step),
+        delta_bic=delta,
+        effect_evidence=evidence,
+        false_alarm=pfa,
+        weak_evidence=bool(weak),
     )
 
 
@@ -1478,7 +1611,9 @@ def analyse_table(
                      threshold=threshold, min_frames=min_frames)
         for name in columns
     )
-    total = {m: float(sum(r.fits[m].bic for r in reports)) for m in SELECTABLE}
+    # short columns leave their richest models out: compare the models every test has
+    common = [m for m in SELECTABLE if all(m in r.fits for r in reports)]
+    total = {m: float(sum(r.fits[m].bic for r in reports)) for m in common}
     study = _select(total, margin)
 
     groups: list[GroupReport] = []
@@ -1493,6 +1628,8 @@ def analyse_table(
             "paper": (float(2 * coef[0]), float(2 * se[0]), (float(2 * coef[0]),))
         }
         for m in MODELS:
+            if not all(m in r.fits for r in members):
+                continue
             vals = [r.fits[m].eps0 for r in members]
             mu, u = _mean_u(vals, [r.fits[m].eps0_stderr for r in members])
             eps[m] = (mu, u, tuple(float(v) for v in vals))
@@ -1512,7 +1649,7 @@ def analyse_table(
             paper_rms=prms,
             eps=eps,
             params=params,
-            loto_rms={m: leave_one_test_out(members, m) for m in SELECTABLE},
+            loto_rms={m: leave_one_test_out(members, m) for m in common},
         ))
 
     from scipy import stats

@@ -76,6 +76,11 @@ def test_paper_findings(paper_run):
         assert t["models"]["const"]["runs_z"] < -2  # systematic
         assert sel["bic"] < t["models"]["const"]["bic"] - 20
         assert sel["loo_rms"]["value"] < t["models"]["const"]["loo_rms"]["value"]
+        # the decay is far beyond what clean columns reach (calibrated false alarm < 1 %)
+        ev = t["evidence"]
+        assert ev["effect_evidence_delta_bic"] > 20 and ev["false_alarm_probability"] < 0.01
+        # a verdict beyond 'decaying' that rests on less than 10 BIC units is called weak
+        assert ev["weak"] == (ev["delta_bic_to_next_simpler"] < 10)
     assert rec["study_model"] == "position"
     tb = rec["total_bic"]
     assert tb["position"] < tb["speed"] - 50  # the position form is clearly preferred
@@ -110,6 +115,9 @@ def test_human_summary(capsys, tmp_path):
         ("k\tx1\n1\t10\n2\tten\n", [], "frame index"),
         ("k\tx1\n1\t10\n2\t20\n3\t25\n", [], "readings"),
         ("k\tx1\n2\t10\n1\t20\n", [], "increase"),
+        ("k\tx1\n" + "".join(f"{k}\t{10 * k}\n" for k in range(1, 6)), [], "needs >= 6"),
+        ("k\tx1\n" + "".join(f"{k}\t{10 * k if k != 5 else 25}\n" for k in range(1, 12)),
+         [], "must increase down the column"),
         ("k\tx1\n1\t10\n2\t20\n", ["--fps", "-5"], "fps"),
     ],
 )
@@ -120,3 +128,31 @@ def test_bad_input_is_a_one_line_user_error(tmp_path, capsys, content, args, nee
     assert main(["rotor", str(path), *args]) == 1
     err = capsys.readouterr().err
     assert "error" in err and needle in err and "Traceback" not in err
+
+
+def test_ragged_table_at_any_frame_rate_and_step(tmp_path, capsys):
+    # columns of different lengths, a NaN and a blank cell; 1000 fps, 15 deg marks
+    import math
+
+    import numpy as np
+    from rotor_clean_columns import clean_column
+
+    rng = np.random.default_rng(11)
+    cols = [clean_column(rng, fps=1000, step_deg=15, n=n, x=0.9).frames for n in (30, 14, 8)]
+    cols[1][5] = math.nan
+    lines = ["k\ta1\ta2\tb1"]
+    for i in range(30):
+        cells = [str(i + 1)] + [("" if i >= c.size else ("nan" if math.isnan(c[i]) else
+                                                          f"{c[i]:.0f}")) for c in cols]
+        lines.append("\t".join(cells).rstrip("\t"))
+    table = tmp_path / "ragged.tsv"
+    table.write_text("\n".join(lines) + "\n")
+    assert main(["rotor", str(table), "--fps", "1000", "--step-deg", "15", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    tests = {t["name"]: t for t in rec["tests"]}
+    assert [len(tests[n]["k"]) for n in ("a1", "a2", "b1")] == [30, 13, 8]
+    for t in tests.values():
+        assert t["effect"] == "none" and t["outliers"] == []
+        ev = t["evidence"]
+        assert ev["weak"] is False and ev["effect_evidence_delta_bic"] < 6
+        assert 0 < ev["false_alarm_probability"] <= 1

@@ -112,6 +112,10 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
             "effect": t.effect,
             "decay_form": t.decay_form,
             "outliers": list(t.outliers),
+            "evidence": {"delta_bic_to_next_simpler": t.delta_bic,
+                         "effect_evidence_delta_bic": t.effect_evidence,
+                         "false_alarm_probability": t.false_alarm,
+                         "weak": t.weak_evidence},
             "eps0": quantity(t.eps0, "rad/s²"),
             "eps0_stderr": quantity(t.eps0_stderr, "rad/s²"),
             "start": {
@@ -199,12 +203,20 @@ def _print_summary(an: Any, source: str) -> None:
               f"{t.eps0:9.3f} ± {t.eps0_stderr:5.3f} {rest.rms * fps:6.2f} "
               f"{const.rms * fps:6.2f} {sel.rms * fps:7.2f}")
     print()
+    print("  evidence: dBIC to the next simpler model; dBIC no-effect - effect and the calibrated"
+          " false-alarm probability at it")
+    for t in an.tests:
+        weak = "   WEAK evidence" if t.weak_evidence else ""
+        print(f"  {t.name:6s} dBIC {t.delta_bic:8.1f}   effect dBIC {t.effect_evidence:8.1f}   "
+              f"P(false alarm) {t.false_alarm:.4f}{weak}")
+    print()
     print("  BIC / leave-one-out rms (frames) per model")
-    names = [m for m in an.tests[0].fits]
+    names = list(dict.fromkeys(m for t in an.tests for m in t.fits))
     print("  " + f"{'test':6s}" + "".join(f"{m[:14]:>15s}" for m in names))
     for t in an.tests:
         print("  " + f"{t.name:6s}" + "".join(
-            f"{t.fits[m].bic:8.1f}/{t.fits[m].loo_rms * fps:5.2f}"[:15].rjust(15) for m in names))
+            (f"{t.fits[m].bic:8.1f}/{t.fits[m].loo_rms * fps:5.2f}"[:15] if m in t.fits
+             else "-").rjust(15) for m in names))
     print()
     print(f"study model (smallest BIC over all tests): {an.study_model}")
     for g in an.groups:
