@@ -76,7 +76,7 @@ def parse_pressures(text: str) -> np.ndarray:
 
 def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
-                 progress: Any = None) -> FlatContactReport:
+                 stiffness: str = "curve", progress: Any = None) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -91,6 +91,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         Cap of the BEM pressure (elastic-perfectly-plastic); the theories stay elastic.
     periodic : bool, optional
         None: detect from the edges.
+    stiffness : {"curve", "solve"}
+        How the BEM stiffness is measured (see :func:`contact.flat.flat_contact`).
 
     Raises
     ------
@@ -113,7 +115,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                     hardness=hardness)
     try:
         bem = bem_sweep(np.asarray(scan.heights), scan.dx, scan.dy, pressures=p,
-                        e_star=e_star, periodic=per, hardness=hardness, progress=progress)
+                        e_star=e_star, periodic=per, hardness=hardness, stiffness=stiffness,
+                        progress=progress)
         ps = spec.psd
         models = {
             "persson": persson(p, e_star, ps.q, ps.C, ps.weights, ps.dq),

@@ -48,14 +48,34 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
     topo = self_affine(128, 1e-6, hurst=0.6, slope_rms=0.05, short_cutoff=4e-6, seed=5)
     e = 10e9
     p = np.array([2e6, 5e6, 1e7, 1e7 * 1.05])
-    r = flat_contact(topo.heights, 1e-6, pressures=p[::-1], e_star=e, periodic=True)
+    r = flat_contact(topo.heights, 1e-6, pressures=p[::-1], e_star=e, periodic=True,
+                     stiffness="solve")
     assert np.all(np.diff(r.pressure) > 0)  # returned in increasing order
     assert np.all(np.diff(r.area_fraction) > 0) and np.all(np.diff(r.mean_gap) < 0)
     # K = -dp/dū from the step solve against a finite difference over 5 %
     fd = -(p[3] - p[2]) / (r.mean_gap[3] - r.mean_gap[2])
     assert r.stiffness[2] == pytest.approx(fd, rel=0.05)
+    # the default reads K off the computed curve (no extra solve): same slope within 5 %
+    rc = flat_contact(topo.heights, 1e-6, pressures=p, e_star=e, periodic=True)
+    np.testing.assert_allclose(rc.mean_gap, r.mean_gap, rtol=1e-9)
+    np.testing.assert_allclose(rc.stiffness[1:], r.stiffness[1:], rtol=0.05)
     # the mean gap stays below the flat's start height above the mean plane
     assert np.all(r.mean_gap < topo.heights.max() - topo.heights.mean())
+
+
+def test_curve_stiffness_is_exact_on_the_exponential_law():
+    from contact.flat import curve_stiffness
+
+    rng = np.random.default_rng()
+    u0, p0 = rng.uniform(0.1e-6, 2e-6), rng.uniform(1e5, 1e7)
+    u = np.sort(rng.uniform(0.0, 5 * u0, rng.integers(2, 7)))[::-1]
+    p = p0 * np.exp(-u / u0)
+    np.testing.assert_allclose(curve_stiffness(p, u), p / u0, rtol=1e-9)
+    # on p = c/ū² (not exponential) the three-point slope is still close where dense
+    u = np.linspace(2e-6, 1e-6, 9)
+    p = 1.0 / u**2
+    k = curve_stiffness(p, u)
+    np.testing.assert_allclose(k[1:-1], 2.0 / u[1:-1] ** 3, rtol=0.01)
 
 
 def test_sweep_rejects_bad_input():

@@ -39,6 +39,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--hardness", type=pressure, metavar="H", default=None,
                    help="cap the BEM pressure at H (elastic-perfectly-plastic)")
     add_periodic_argument(p)
+    p.add_argument("--stiffness", choices=("curve", "solve"), default="curve",
+                   help="BEM stiffness from the slope of the computed ln p(ū) curve (default, "
+                   "no extra solve) or from one more solve at p(1+1%%) per pressure")
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="plot A/A0 and the mean gap against p for all four")
     add_json_flag(p)
@@ -65,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
     bar = progress(range(len(pressures)), total=len(pressures), desc="pressures")
     it = iter(bar)
     rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
-                       periodic=periodic_flag(args.periodic),
+                       periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
                        progress=lambda done, total: next(it, None))
     rec = {"file": args.file, **({"materials": names} if names else {}), **record(rep)}
     if args.plot:
