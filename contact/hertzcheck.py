@@ -660,6 +660,7 @@ def check_sphere(
     max_grid: int | None = 1024,
     on_edge: str = "enlarge",
     tol: float = 1e-6,
+    centre: tuple[float, float] | None = None,
 ) -> SphereCheck:
     """Solve a (rough) ball on a plate elastically and, with a hardness, elastic-plastically,
     and compare with Hertz.
@@ -679,6 +680,8 @@ def check_sphere(
         Hardness of the softer body (Pa); adds the elastic-plastic solve.
     grid, size, max_grid, on_edge, tol
         Passed to :class:`contact.sphere.SphereContact` and its ``solve``.
+    centre : (float, float), optional
+        Scan coordinates of the ball's apex on the roughness map (m); default its middle.
     """
     from contact.geometry import remove_plane
     from contact.sphere import SphereContact
@@ -693,7 +696,7 @@ def check_sphere(
     # memory check: the elastic and the plastic result are kept together, and the
     # plastic solve needs about one result's worth more (contact.memory)
     common = dict(roughness=roughness, roughness_dx=roughness_dx, roughness_dy=roughness_dy,
-                  grid=grid, size=size, max_grid=max_grid,
+                  grid=grid, size=size, max_grid=max_grid, centre=centre,
                   results=1 if hardness is None else 3)
     el_problem = SphereContact(radius, e_star, load, **common)
     elastic = el_problem.solve(load, on_edge=on_edge, tol=tol)

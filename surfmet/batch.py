@@ -94,6 +94,7 @@ def batch_map(
     progress: bool | None = None,
     desc: str = "",
     connect_timeout: float = 10.0,
+    on_result: Callable[[int, Any], Any] | None = None,
 ) -> list[Any]:
     """``[func(item) for item in items]``, in parallel, failures kept in their rows.
 
@@ -117,6 +118,10 @@ def batch_map(
         Label of the progress bar.
     connect_timeout : float
         Seconds to wait for the Dask scheduler before giving up.
+    on_result : callable, optional
+        ``on_result(index, result)`` is called in this process as soon as each item's
+        result (or error row) arrives, in completion order: the hook for writing rows
+        incrementally, so that an interrupted batch keeps what it finished.
 
     Returns
     -------
@@ -134,13 +139,19 @@ def batch_map(
     if not items:
         return []
     func = _SingleThreadedBlas(func)
+    done = on_result if on_result is not None else _ignore
     if scheduler is not None:
-        return _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout)
+        return _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout,
+                         done)
     n = default_workers() if workers is None else int(workers)
     n = min(n, len(items))
     if n == 1:
-        return _serial_map(func, items, on_error, progress, desc)
-    return _process_map(func, items, n, on_error, progress, desc)
+        return _serial_map(func, items, on_error, progress, desc, done)
+    return _process_map(func, items, n, on_error, progress, desc, done)
+
+
+def _ignore(index: int, result: Any) -> None:
+    return None
 
 
 def _call(func: Callable[[Any], Any], item: Any, on_error: Callable[[Any, str], Any]) -> Any:
@@ -150,11 +161,12 @@ def _call(func: Callable[[Any], Any], item: Any, on_error: Callable[[Any, str], 
         return on_error(item, _describe(exc))
 
 
-def _serial_map(func, items, on_error, progress, desc) -> list[Any]:
+def _serial_map(func, items, on_error, progress, desc, done) -> list[Any]:
     out = []
     with _bar(len(items), desc, progress) as bar:
-        for item in items:
+        for k, item in enumerate(items):
             out.append(_call(func, item, on_error))
+            done(k, out[-1])
             bar.update(1)
     return out
 
@@ -166,7 +178,7 @@ def _mp_context() -> Any:
     return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
 
 
-def _process_map(func, items, n, on_error, progress, desc) -> list[Any]:
+def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
     import pickle
     from concurrent.futures import ProcessPoolExecutor, as_completed
     from concurrent.futures.process import BrokenProcessPool
@@ -193,6 +205,7 @@ def _process_map(func, items, n, on_error, progress, desc) -> list[Any]:
                     continue  # re-run below, each alone, to find the culprit
                 except Exception as exc:
                     results[k] = on_error(items[k], _describe(exc))
+                done(k, results[k])
                 bar.update(1)
         except BaseException:
             # Ctrl-C or a bug here: drop the queued items instead of waiting for them all
@@ -211,11 +224,12 @@ def _process_map(func, items, n, on_error, progress, desc) -> list[Any]:
                                           "processing this item (a crash, or out of memory)")
                 except Exception as exc:
                     results[k] = on_error(items[k], _describe(exc))
+            done(k, results[k])
             bar.update(1)
     return results
 
 
-def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout
+def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout, done
               ) -> list[Any]:
     try:
         from distributed import Client, as_completed
@@ -245,6 +259,7 @@ def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout
                 except Exception as exc:
                     results[k] = on_error(items[k], _describe(exc))
                 fut.release()
+                done(k, results[k])
                 bar.update(1)
         return results
     finally:

@@ -281,6 +281,7 @@ def hertz_check(
     grid: int | None = None,
     max_grid: int | None = 1024,
     on_edge: str = "enlarge",
+    offset: tuple[float, float] | None = None,
 ) -> HertzCheck:
     """Does Hertz hold for this plate (and ball) at this load?
 
@@ -307,6 +308,9 @@ def hertz_check(
         runs on the scans' own pixel at any size that fits in memory (native resolution).
     on_edge : {"enlarge", "warn", "raise"}
         Contact reaching the domain edge (see :mod:`contact.sphere`).
+    offset : (float, float), optional
+        Apex position (x, y) relative to the middle of the paired roughness map (m): a
+        track position. Default the middle.
 
     Raises
     ------
@@ -315,6 +319,7 @@ def hertz_check(
     """
     from contact.hertzcheck import check_sphere
     from contact.materials import composite_modulus, contact_hardness
+    from surfmet.pairing import apex_centre
     from surfmet.units import parse_force, parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -339,6 +344,7 @@ def hertz_check(
         roughness_dx=None if pair is None else pair.dx,
         roughness_dy=None if pair is None else pair.dy,
         sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
+        centre=apex_centre(pair, offset),
     )
     notes = [*prep.notes, *check.notes]
     if hardness is None:

@@ -214,3 +214,25 @@ def prepare_pair(
         ball_rms=rms.get("ball"), ball_radius=ball_radius, filled_fraction=filled,
         notes=tuple(notes), fits=fits,
     )
+
+
+def apex_centre(pair: PairedRoughness | None,
+                offset: tuple[float, float] | None) -> tuple[float, float] | None:
+    """Scan coordinates of the ball's apex displaced by ``offset`` (m) from the middle of
+    the paired roughness map (a track position); None keeps the engine's default (the
+    middle).
+
+    Raises
+    ------
+    SurfmetInputError
+        An offset without a scan, or one that is not two finite lengths.
+    """
+    if offset is None:
+        return None
+    if pair is None:
+        raise SurfmetInputError("a track position needs a scan (a smooth pair has no track)")
+    ox, oy = (float(v) for v in offset)
+    if not (math.isfinite(ox) and math.isfinite(oy)):
+        raise SurfmetInputError(f"the track position must be finite, got {offset!r}")
+    ny, nx = pair.roughness.shape
+    return (0.5 * (nx - 1) * pair.dx + ox, 0.5 * (ny - 1) * pair.dy + oy)

@@ -25,6 +25,7 @@ SUBCOMMANDS = (
     "contact",
     "hertz_check",
     "rolling",
+    "sweep",
     "rotor",
     "show",
     "report",
