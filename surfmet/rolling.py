@@ -14,7 +14,7 @@ choice of displacement and the exponent fit are documented in :mod:`contact.roll
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -120,6 +120,7 @@ def rolling_resistance(
     grid: int | None = None,
     max_grid: int | None = 1024,
     centre: tuple[float, float] | None = None,
+    offset: tuple[float, float] | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
 ) -> RollingReport:
     """Rolling-resistance moments over a load sweep and the fitted exponent lambda.
@@ -152,6 +153,9 @@ def rolling_resistance(
         that fits in memory (native resolution).
     centre : (float, float), optional
         Apex position on the paired roughness map (m); default its middle.
+    offset : (float, float), optional
+        Apex position relative to the middle of the paired map (m), a track position
+        (instead of ``centre``).
     progress : callable, optional
         Wraps the iterable of loads (a progress bar).
     """
@@ -182,6 +186,10 @@ def rolling_resistance(
     w = _load_list(loads)
     prep = prepare_scans(plate, ball, spikes=spikes)
     pair = prep.pair
+    if offset is not None:
+        from surfmet.pairing import apex_centre
+
+        centre = apex_centre(pair, offset)
     sweep = sphere_sweep(
         radius, e_star, w, model=model,
         roughness=None if pair is None else pair.roughness,
@@ -193,3 +201,114 @@ def rolling_resistance(
     notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]
     return RollingReport(sweep=sweep, radius=radius, ball_material=ball_m,
                          plate_material=plate_m, scans=prep, notes=tuple(notes))
+
+
+@dataclass(frozen=True)
+class TrackJob:
+    """One track position of :func:`rolling_tracks`: the arguments of
+    :func:`rolling_resistance` (scans as paths, so that the job pickles small)."""
+
+    plate: Any
+    ball: Any
+    offset: tuple[float, float] | None
+    options: tuple[tuple[str, Any], ...]
+
+
+def track_moments(job: TrackJob) -> dict[str, Any]:
+    """Moments of one track position (a top-level function, for worker processes)."""
+    rep = rolling_resistance(job.plate, job.ball, offset=job.offset, **dict(job.options))
+    s = rep.sweep
+    return {"offset": job.offset, "loads": np.asarray(s.loads), "moments": np.asarray(s.moments),
+            "lambda": float(s.lambda_eff) if s.fit is not None else math.nan,
+            "grid": s.settings.get("grid"), "dx": s.settings.get("dx"),
+            "notes": tuple(rep.notes), "error": None}
+
+
+def _track_error(job: TrackJob, message: str) -> dict[str, Any]:
+    return {"offset": job.offset, "error": message}
+
+
+@dataclass(frozen=True, eq=False)
+class TrackReport:
+    """Rolling resistance over several track positions (:func:`rolling_tracks`).
+
+    Attributes
+    ----------
+    tracks : tuple of dict
+        Per position: ``offset`` (m), ``loads`` (N), ``moments`` (N m), ``lambda``, or
+        ``error`` for a position that failed.
+    loads : ndarray
+        The loads (N).
+    mean_moments : ndarray
+        Mean moment over the positions that succeeded (N m), summed in position order.
+    fit : contact.rolling.ExponentFit or None
+        Power law fitted to the mean moments (None with fewer than 3 dissipating loads).
+    """
+
+    tracks: tuple[dict[str, Any], ...]
+    loads: np.ndarray
+    mean_moments: np.ndarray
+    fit: Any
+
+    @property
+    def lambda_eff(self) -> float:
+        return float(self.fit.exponent) if self.fit is not None else math.nan
+
+    def to_json(self) -> dict[str, Any]:
+        from surfmet.units import quantity
+
+        rows = []
+        for t in self.tracks:
+            row: dict[str, Any] = {"offset": quantity(None if t["offset"] is None
+                                                      else list(t["offset"]), "m")}
+            if t.get("error"):
+                row["error"] = t["error"]
+            else:
+                row.update({"moments": quantity(t["moments"], "N m"),
+                            "lambda_eff": quantity(t["lambda"], "")})
+            rows.append(row)
+        return {"lambda_eff": quantity(self.lambda_eff, ""),
+                "lambda_ci": quantity(None if self.fit is None else list(self.fit.ci), ""),
+                "loads": quantity(self.loads, "N"),
+                "mean_moments": quantity(self.mean_moments, "N m"), "tracks": rows}
+
+
+def rolling_tracks(plate: Any = None, ball: Any = None, *,
+                   positions: Sequence[tuple[float, float] | None],
+                   workers: int | None = None, scheduler: Any = None,
+                   progress: bool | None = None, **options: Any) -> TrackReport:
+    """:func:`rolling_resistance` at several track positions, in parallel, and the exponent
+    of the mean moment.
+
+    Each position's warm-started load sweep is one item of :func:`surfmet.batch.batch_map`
+    (local processes by default, a Dask cluster with ``scheduler``), so the moments are
+    bitwise those of the serial run (``workers=1``). A position that fails keeps its error
+    in ``tracks`` and is left out of the mean.
+
+    Raises
+    ------
+    SurfmetInputError
+        No position, or every position failed (the first error is named).
+    """
+    from contact.rolling import fit_exponent
+    from surfmet.batch import batch_map
+
+    if not positions:
+        raise SurfmetInputError("give at least one track position")
+    jobs = [TrackJob(plate=plate, ball=ball, offset=None if pos is None else
+                     (float(pos[0]), float(pos[1])),
+                     options=tuple(sorted(options.items()))) for pos in positions]
+    tracks = batch_map(track_moments, jobs, workers=workers, scheduler=scheduler,
+                       on_error=_track_error, progress=progress, desc="track positions")
+    good = [t for t in tracks if not t.get("error")]
+    if not good:
+        raise SurfmetInputError(f"every track position failed: {tracks[0]['error']}")
+    loads = good[0]["loads"]
+    total = np.zeros_like(loads)
+    for t in good:  # a fixed order: the same sum whatever the engine
+        total = total + t["moments"]
+    mean = total / len(good)
+    dissipating = mean > 0
+    fit = (fit_exponent(loads[dissipating], mean[dissipating])
+           if np.count_nonzero(dissipating) >= 3 else None)
+    return TrackReport(tracks=tuple(tracks), loads=loads, mean_moments=mean, fit=fit)

@@ -142,3 +142,37 @@ def test_killed_sweep_keeps_valid_rows_and_resume_completes(tmp_path):
     by_index = {r["index"][0]: r for r in fresh}
     for r in part:
         assert float(r["max_pressure [Pa]"]) == by_index[int(r["index"])]["max_pressure"][0]
+
+
+def test_rolling_track_positions_identical_in_every_engine(dask_address):
+    from surfmet.rolling import rolling_resistance, rolling_tracks
+
+    opts = dict(radius=0.02, materials="steel,aluminium", loads=(2.0, 5.0, 12.0), grid=64,
+                max_grid=None)
+    pos = [(0.0, 0.0), (-1e-4, 1e-4)]
+    serial = rolling_tracks(PLATE, positions=pos, workers=1, **opts)
+    procs = rolling_tracks(PLATE, positions=pos, workers=2, **opts)
+    dask = rolling_tracks(PLATE, positions=pos, scheduler=dask_address, **opts)
+    assert not any(t.get("error") for t in serial.tracks)
+    for other in (procs, dask):
+        assert np.array_equal(other.mean_moments, serial.mean_moments)
+        for a, b in zip(serial.tracks, other.tracks):
+            assert np.array_equal(a["moments"], b["moments"])
+    # each track is the single-position analysis at that offset; the mean is their mean
+    one = rolling_resistance(PLATE, offset=pos[1], **opts)
+    assert np.array_equal(serial.tracks[1]["moments"], one.sweep.moments)
+    np.testing.assert_allclose(serial.mean_moments,
+                               0.5 * (serial.tracks[0]["moments"] + one.sweep.moments),
+                               rtol=1e-15)
+    assert not np.array_equal(serial.tracks[0]["moments"], serial.tracks[1]["moments"])
+
+
+def test_rolling_cli_positions_json(capsys):
+    code = main(["rolling", "--plate", PLATE, "--radius", "20mm", "--materials",
+                 "steel,aluminium", "--loads", "2N:12N:3", "--grid", "64",
+                 "--positions", "0:0,-0.1mm:0.1mm", "--workers", "1", "--json"])
+    rec = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert len(rec["tracks"]) == 2 and rec["tracks"][1]["offset"]["value"] == [-1e-4, 1e-4]
+    assert rec["mean_moments"]["unit"] == "N m" and rec["loads"]["unit"] == "N"
+    assert np.isfinite(rec["lambda_eff"]["value"])

@@ -66,6 +66,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
                    "quantity per pixel and which converged (surfmet.resolution)")
+    p.add_argument("--positions", default=None, metavar="X:Y,...",
+                   help="track positions: apex offsets from the middle of the scans; the "
+                   "exponent is fitted to the mean moment over them")
+    p.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="local processes over the track positions (default: one per CPU)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run the track positions on a Dask cluster, e.g. tcp://host:8786")
     p.add_argument("--plot", metavar="FILE", help="write M_r(N) and the local exponent")
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -96,6 +103,8 @@ def run(args: argparse.Namespace) -> int:
         from surfmet.resolution import run_cli
 
         return run_cli(args, "rolling")
+    if args.positions is not None or args.workers is not None or args.scheduler is not None:
+        return _run_tracks(args, log_loads(lo, hi, n))
     rep = rolling_resistance(
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
@@ -132,3 +141,46 @@ def run(args: argparse.Namespace) -> int:
     for w, m, lam in zip(s.loads, s.moments, s.local_lambda):
         print(f"{w:12.4g}{m:14.4g}{lam:10.4f}")
     return 0
+
+
+def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
+    """Several track positions through :func:`surfmet.rolling.rolling_tracks`."""
+    from surfmet.cli.sweep import _positions
+    from surfmet.errors import SurfmetInputError
+    from surfmet.rolling import rolling_tracks
+
+    if args.workers is not None and args.workers < 1:
+        raise SurfmetInputError("--workers must be at least 1")
+    try:
+        positions = _positions(args.positions) if args.positions else [None]
+    except argparse.ArgumentTypeError as exc:
+        raise SurfmetInputError(str(exc)) from None
+    if args.plot:
+        raise SurfmetInputError("--plot draws one track; leave out --positions/--workers/"
+                                "--scheduler to use it")
+    rep = rolling_tracks(
+        args.plate, args.ball, positions=positions, workers=args.workers,
+        scheduler=args.scheduler, radius=args.radius, materials=args.materials,
+        loads=tuple(float(w) for w in loads), model=args.model, hardness=args.hardness,
+        alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
+        spikes=not args.keep_spikes, grid=args.grid, max_grid=None)
+    failed = [t for t in rep.tracks if t.get("error")]
+    if args.json:
+        emit_json({**rep.to_json(), "model": args.model})
+        return 1 if failed else 0
+    if rep.fit is not None:
+        lo_ci, hi_ci = rep.fit.ci
+        print(f"lambda_eff     {rep.lambda_eff:.4f}   {100 * rep.fit.confidence:.0f} % CI "
+              f"[{lo_ci:.4f}, {hi_ci:.4f}]  (mean moment over {len(rep.tracks) - len(failed)}"
+              f" track positions)")
+    else:
+        print("lambda_eff     not fitted (fewer than 3 loads dissipate)")
+    for t in rep.tracks:
+        where = "middle" if t["offset"] is None else (
+            f"{t['offset'][0] * 1e6:.1f} µm, {t['offset'][1] * 1e6:.1f} µm")
+        print(f"  track {where:>24}: " + (f"error: {t['error']}" if t.get("error")
+                                          else f"lambda {t['lambda']:.4f}"))
+    print(f"{'load (N)':>12}{'mean M_r (N m)':>16}")
+    for w, m in zip(rep.loads, rep.mean_moments):
+        print(f"{w:12.4g}{m:16.4g}")
+    return 1 if failed else 0

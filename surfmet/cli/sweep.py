@@ -77,7 +77,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on a Dask distributed cluster, e.g. tcp://host:8786")
     p.add_argument("--csv", default=None, metavar="OUT.csv", help="rows as CSV")
-    p.add_argument("--json", default=None, metavar="OUT.jsonl", help="rows as JSON Lines")
+    p.add_argument("--json", nargs="?", const="-", default=None, metavar="OUT.jsonl",
+                   help="rows as JSON Lines in OUT.jsonl, written as they finish; without "
+                   "OUT, one JSON document with all rows on stdout at the end")
     p.add_argument("--resume", action="store_true",
                    help="skip the items already in --csv/--json and append the rest")
     p.set_defaults(func=run)
@@ -89,7 +91,11 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.sweep import RowWriter, done_keys, run_sweep, sweep_items
 
     if args.csv is None and args.json is None:
-        raise SurfmetInputError("give --csv OUT and/or --json OUT for the rows")
+        raise SurfmetInputError("give --csv OUT and/or --json [OUT] for the rows")
+    to_stdout = args.json == "-"
+    json_path = None if to_stdout else args.json
+    if to_stdout and args.resume:
+        raise SurfmetInputError("--resume needs the rows in a file: --json OUT or --csv OUT")
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")
     items = sweep_items(task=args.task, loads=args.loads, radius=args.radius,
@@ -97,14 +103,19 @@ def run(args: argparse.Namespace) -> int:
                         materials=args.materials or ["steel,aluminium"],
                         positions=args.positions or [None], grid=args.grid,
                         hardness=args.hardness)
-    skip = done_keys(args.csv, args.json) if args.resume else set()
-    with RowWriter(args.task, args.csv, args.json, resume=args.resume) as writer:
+    skip = done_keys(args.csv, json_path) if args.resume else set()
+    with RowWriter(args.task, args.csv, json_path, resume=args.resume) as writer:
         todo = sum(1 for it in items if it.key not in skip)
         if skip:
             log(f"resume: {len(items) - todo} of {len(items)} items already written")
         rows = run_sweep(items, workers=args.workers, scheduler=args.scheduler,
                          writer=writer, skip=skip)
     failed = [r for r in rows if r["status"][0] == "error"]
+    if to_stdout:
+        from surfmet.cli._common import emit_json
+        from surfmet.sweep import json_row
+
+        emit_json({"task": args.task, "rows": [json_row(r) for r in rows]})
     log(f"{len(rows)} items run, {len(failed)} failed"
         + (f" (first: {failed[0]['error'][0]})" if failed else ""))
     return 1 if failed else 0
