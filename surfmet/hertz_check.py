@@ -365,19 +365,18 @@ def hertz_check(
 def scan_summits(prep: PreparedScans) -> Any:
     """Combined Greenwood-Williamson summit parameters of the plate and ball residuals.
 
-    Each residual's isotropic PSD (:func:`surfmet.psd.psd`, Hann-windowed) gives its
-    profile moments m0, m2, m4 (:func:`contact.roughcontact.isotropic_moments`); for two
+    Each residual's areal PSD (:func:`surfmet.psd.areal_psd`, Hann-windowed) gives its
+    profile moments m0, m2, m4 (:meth:`surfmet.psd.ArealPSD.profile_moments`); for two
     independent surfaces the moments of the composite (sum) surface add, and Nayak/McCool
     (:func:`contact.roughcontact.summit_parameters`) turn the sums into η, R_s, σ_s.
     None when no scan has roughness. The results depend on the scans' lateral resolution.
     """
-    from contact.roughcontact import isotropic_moments, summit_parameters
-    from surfmet.psd import psd
+    from contact.roughcontact import summit_parameters
+    from surfmet.psd import areal_psd
 
     total = [0.0, 0.0, 0.0]
     for topo in prep.residuals.values():
-        spec = psd(topo)
-        mom = isotropic_moments(spec.q, spec.C, spec.weights, spec.dq)
+        mom = areal_psd(topo).profile_moments()
         total = [a + b for a, b in zip(total, mom, strict=True)]
     if not all(math.isfinite(v) and v > 0 for v in total):
         return None

@@ -148,6 +148,21 @@ class ArealPSD:
         """``(2π)⁻² Σ C Δqx Δqy``: the discrete Parseval sum, m²."""
         return float(np.sum(self.C) * self.dqx * self.dqy / (2.0 * math.pi) ** 2)
 
+    def profile_moments(self) -> tuple[float, float, float]:
+        """Profile spectral moments (m0, m2, m4) of the surface taken as isotropic, summed
+        exactly over the 2D wavevector grid (m², 1, 1/m²).
+
+        ``m0 = <h²>``, ``m2 = ½ <|∇h|²>`` and ``m4 = ⅜ <(∇²h)²>`` (Nayak 1971), each the
+        discrete Parseval sum ``(2π)⁻² Σ f(|q|) C Δqx Δqy`` with ``f = 1, ½|q|², ⅜|q|⁴``.
+        Summing on the grid rather than over the radial bins keeps every cell at its own
+        ``|q|``: a bin's mean ``|q|`` misplaces the power of a narrow-band spectrum.
+        """
+        qy, qx = np.meshgrid(self.qy, self.qx, indexing="ij")
+        q2 = qx**2 + qy**2
+        w = self.C * (self.dqx * self.dqy / (2.0 * math.pi) ** 2)
+        return (float(np.sum(w)), 0.5 * float(np.sum(w * q2)),
+                0.375 * float(np.sum(w * q2 * q2)))
+
     def radial(self, nbins: int | None = None) -> PSD:
         """Radial (isotropic) average ``C^iso(|q|)``.
 

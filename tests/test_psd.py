@@ -164,3 +164,24 @@ def test_nonuniform_profile_and_bare_array():
 def test_errors(call, needle):
     with pytest.raises(SurfmetInputError, match=needle):
         call()
+
+
+def test_profile_moments_of_a_single_wave_are_exact():
+    """h = A cos(q0 x + φ) on a periodic grid: <|∇h|²> = A²q0²/2, <(∇²h)²> = A²q0⁴/2, so
+    m0 = A²/2, m2 = A²q0²/4, m4 = 3A²q0⁴/16, whatever the random A, φ and wavelength."""
+    from surfmet.model import Topography
+    from surfmet.psd import areal_psd
+
+    rng = np.random.default_rng()
+    n, dx = 128, 1e-6
+    k = int(rng.integers(3, 40))
+    amp, phase = rng.uniform(0.1e-6, 2e-6), rng.uniform(0, 2 * np.pi)
+    q0 = 2 * np.pi * k / (n * dx)
+    x = np.arange(n) * dx
+    h = np.tile(amp * np.cos(q0 * x + phase), (n, 1))
+    if rng.random() < 0.5:
+        h = h.T.copy()  # the wave along y
+    m0, m2, m4 = areal_psd(Topography(h, dx, dx), window="none").profile_moments()
+    assert m0 == pytest.approx(amp**2 / 2, rel=1e-9)
+    assert m2 == pytest.approx(amp**2 * q0**2 / 4, rel=1e-9)
+    assert m4 == pytest.approx(3 * amp**2 * q0**4 / 16, rel=1e-9)
