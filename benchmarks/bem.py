@@ -38,8 +38,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.bem import SolverStats, convolution, solve_normal
+from contact.bem import SolverStats, solve_normal
 from contact.geometry import contact_extent, sphere_gap
+from contact.halfspace.convolution import convolution
 from contact.hertz import hertz_sphere
 from contact.materials import composite_modulus, material
 

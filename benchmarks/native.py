@@ -9,7 +9,7 @@ the next:
 
 ``cli``
     The whole command under ``/usr/bin/time -v`` (wall time and peak resident set size),
-    plus the memory model's estimate (:mod:`contact.memory`) for the same grid.
+    plus the memory model's estimate (:mod:`contact.bem.memory`) for the same grid.
 ``iter``
     The same problem's fine-grid solve: time per Polonsky-Keer iteration (from the
     solver's per-iteration callback, first to last call, so the coarse nested levels and
@@ -70,7 +70,8 @@ def iteration_child(n: int, repeats: int) -> dict:
     import numpy as np
 
     import surfmet
-    from contact.bem import SolverStats, convolution
+    from contact.bem import SolverStats
+    from contact.halfspace.convolution import convolution
     from contact.materials import composite_modulus, material
     from contact.sphere import SphereContact
     from surfmet.pairing import prepare_pair
@@ -141,7 +142,7 @@ def main() -> int:
     if args.child:
         print(json.dumps(iteration_child(args.child, args.repeats)))
         return 0
-    from contact.memory import estimate_peak_bytes
+    from contact.bem.memory import estimate_peak_bytes
 
     out: dict = {"cli": [], "iter": [], "native": None}
     for n in (int(v) for v in args.cli.split(",") if v):

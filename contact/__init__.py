@@ -51,7 +51,7 @@ from contact.materials import (
 _LAZY = {
     "solve_normal": "contact.bem",
     "SolverStats": "contact.bem",
-    "ContactResult": "contact.result",
+    "ContactResult": "contact.bem.result",
     "SphereContact": "contact.sphere",
     "solve_sphere": "contact.sphere",
     "auto_domain": "contact.geometry",

@@ -38,4 +38,4 @@ class EdgeContactWarning(UserWarning):
 
 
 class ContactMemoryError(ContactInputError):
-    """The grid asked for would not fit in the available memory (see :mod:`contact.memory`)."""
+    """The grid asked for would not fit in the available memory (see :mod:`contact.bem.memory`)."""

@@ -163,7 +163,7 @@ def auto_domain(
       and at most ``max_grid`` cells per side (coarser than the scan past that);
       ``max_grid=None`` keeps the scan's own pixel at any size (native resolution; the
       side is rounded up to a whole, FFT-friendly number of pixels, and the caller checks
-      the memory, :mod:`contact.memory`), unless the pixel leaves fewer than 16 cells per
+      the memory, :mod:`contact.bem.memory`), unless the pixel leaves fewer than 16 cells per
       Hertz radius;
     - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
     """

@@ -542,9 +542,10 @@ def solve_elastic_plastic(
     import dataclasses
     import warnings
 
-    from contact.bem import convolution, solve_normal
+    from contact.bem import solve_normal
+    from contact.bem.result import build_result
     from contact.errors import ConvergenceError, EdgeContactWarning
-    from contact.result import build_result
+    from contact.halfspace.convolution import convolution
 
     if not (math.isfinite(hardness) and hardness > 0):
         raise ContactInputError(f"the hardness must be a positive pressure, got {hardness!r}")
@@ -694,7 +695,7 @@ def check_sphere(
             z, _ = remove_plane(np.asarray(roughness, dtype=float), dx, roughness_dy or dx)
             sigma = combined_rms(z)
     # memory check: the elastic and the plastic result are kept together, and the
-    # plastic solve needs about one result's worth more (contact.memory)
+    # plastic solve needs about one result's worth more (contact.bem.memory)
     common = dict(roughness=roughness, roughness_dx=roughness_dx, roughness_dy=roughness_dy,
                   grid=grid, size=size, max_grid=max_grid, centre=centre,
                   results=1 if hardness is None else 3)

@@ -24,6 +24,8 @@ import numpy as np
 
 from contact._validate import positive
 from contact.bem import SolverStats, solve_normal
+from contact.bem.memory import check_grid_memory
+from contact.bem.result import ContactResult
 from contact.errors import ContactInputError, EdgeContactError, EdgeContactWarning
 from contact.geometry import (
     Domain,
@@ -38,8 +40,6 @@ from contact.geometry import (
     sphere_gap,
 )
 from contact.hertz import hertz_sphere
-from contact.memory import check_grid_memory
-from contact.result import ContactResult
 
 _ON_EDGE = ("enlarge", "warn", "raise")
 
@@ -80,7 +80,7 @@ class SphereContact:
         any size that fits in memory (native resolution).
     results : int
         Results of this problem kept alive together (for the memory check,
-        :func:`contact.memory.check_grid_memory`).
+        :func:`contact.bem.memory.check_grid_memory`).
     exact_sphere : bool
         Use R - sqrt(R^2 - r^2) instead of the Hertz paraboloid.
     """

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from contact.bem import Convolution
-from contact.influence import love_coefficients, periodic_kernel_real, self_influence
+from contact.halfspace.convolution import Convolution
+from contact.halfspace.influence import love_coefficients, periodic_kernel_real, self_influence
 
 
 def test_self_influence_closed_form():

@@ -29,8 +29,8 @@ from scipy.signal import fftconvolve
 from contact import ConvergenceError, composite_modulus, hertz_sphere, material, solve_sphere
 from contact.bem import SolverStats, solve_normal
 from contact.geometry import sphere_gap
+from contact.halfspace.influence import love_coefficients, self_influence
 from contact.hertzcheck import solve_elastic_plastic
-from contact.influence import love_coefficients, self_influence
 from contact.sphere import SphereContact
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

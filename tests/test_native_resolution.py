@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from contact_synth import rough_surface
 
-import contact.memory as memory
+import contact.bem.memory as memory
 import surfmet
 from contact import ContactMemoryError, composite_modulus, hertz_sphere, material
 from contact.geometry import fast_even
@@ -158,7 +158,7 @@ def test_estimate_is_within_a_factor_of_the_measured_peak_rss():
                          cwd=ROOT, check=True, timeout=300)
     got = json.loads(out.stdout.strip().splitlines()[-1])
     est = memory.estimate_peak_bytes(got["n"])
-    # stated in contact.memory: the estimate is within 1.5x of the measured peak
+    # stated in contact.bem.memory: the estimate is within 1.5x of the measured peak
     assert est / 1.5 <= got["added"] <= 1.5 * est, (got, est)
 
 

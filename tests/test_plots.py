@@ -178,7 +178,7 @@ def _discs(rng, shape, k):
 
 
 def _result(p, periodic=False, dx=2e-6):
-    from contact.result import build_result
+    from contact.bem.result import build_result
 
     ny, nx = p.shape
     z = np.zeros_like(p)
@@ -226,7 +226,7 @@ def test_pressure_map_numbers_every_cluster(tmp_path, seed):
 
 
 def test_cluster_labels_wrap_in_periodic_domains():
-    from contact.result import cluster_labels, count_clusters
+    from contact.bem.result import cluster_labels, count_clusters
 
     c = np.zeros((20, 20), bool)
     c[5:8, 0:3] = True

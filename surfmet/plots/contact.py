@@ -80,7 +80,7 @@ def pressure_map(
                    cmap=cm, vmin=0.0, vmax=vmax / MPA, interpolation="nearest", aspect="equal")
     cb = fig.colorbar(im, ax=ax, shrink=0.9, extend="max" if pmax > vmax else "neither")
     cb.set_label("contact pressure (MPa)")
-    from contact.result import cluster_labels
+    from contact.bem.result import cluster_labels
 
     labels, n = cluster_labels(contact, bool(getattr(result, "periodic", False)))
     if zoom and contact.any():

@@ -11,7 +11,8 @@ with sign + at (x+dx/2, y+dy/2) and (x-dx/2, y-dy/2), - at the other two. This i
 classical form ``x ln(y + r) + y ln(x + r)`` rewritten with asinh: the ``x ln|x|`` parts
 cancel between corners, and asinh avoids the cancellation of ``ln(y + r)`` for y < 0.
 
-Two convolution operators are built from K (both cached by grid, pitch and periodicity):
+Two kernel layouts are built from K here (both cached by grid, pitch and periodicity);
+the convolution operators that apply them are in :mod:`contact.halfspace.convolution`:
 
 - **free boundary** (DC-FFT; Liu, Wang & Liu 2000, Wear 243:101): the kernel is laid out on
   a grid of twice the size with wrap-around offsets, the pressure is zero-padded, and the
@@ -28,7 +29,9 @@ Two convolution operators are built from K (both cached by grid, pitch and perio
   terms alternate in sign, so the truncation error falls fast; the q = 0 term (the mean
   displacement, a rigid-body motion in a periodic problem) is zero.
 
-All kernels here are for E* = 1; divide by E* to get displacements.
+All kernels here are for E* = 1; divide by E* to get displacements. The alias sum is
+compiled with numba (:func:`periodic_love_spectrum`); its plain-numpy twin lives in the
+tests (``tests/kernel_twins.py``).
 """
 
 from __future__ import annotations
@@ -36,6 +39,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+import numba as nb
 import numpy as np
 import scipy.fft as sfft
 
@@ -117,6 +121,48 @@ def free_kernel_spectrum(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
     return out
 
 
+@nb.njit(cache=True)
+def periodic_love_spectrum(ny, nx, dx, dy, n_alias):  # pragma: no cover - compiled
+    """Alias sum of 2/|q'| sinc(qx' dx/2) sinc(qy' dy/2) on the rfft grid (E* = 1)."""
+    nxh = nx // 2 + 1
+    out = np.zeros((ny, nxh))
+    # The sum is even in qy: compute rows 0..ny/2 and mirror the others.
+    for i in range(ny // 2 + 1):
+        ky = i
+        ay = math.pi * ky / ny  # qy dy / 2
+        say = math.sin(ay)
+        for j in range(nxh):
+            if i == 0 and j == 0:
+                continue
+            ax = math.pi * j / nx  # qx dx / 2
+            sax = math.sin(ax)
+            acc = 0.0
+            for m in range(-n_alias, n_alias + 1):
+                zx = ax + math.pi * m
+                if zx == 0.0:
+                    sx = 1.0
+                else:
+                    sx = (sax if m % 2 == 0 else -sax) / zx
+                if sx == 0.0:
+                    continue
+                qx = 2.0 * zx / dx
+                for n in range(-n_alias, n_alias + 1):
+                    zy = ay + math.pi * n
+                    if zy == 0.0:
+                        sy = 1.0
+                    else:
+                        sy = (say if n % 2 == 0 else -say) / zy
+                    if sy == 0.0:
+                        continue
+                    qy = 2.0 * zy / dy
+                    acc += 2.0 / math.sqrt(qx * qx + qy * qy) * sx * sy
+            out[i, j] = acc
+    for i in range(ny // 2 + 1, ny):
+        for j in range(nxh):
+            out[i, j] = out[ny - i, j]
+    return out
+
+
 @lru_cache(maxsize=8)
 def periodic_kernel_spectrum(
     ny: int, nx: int, dx: float, dy: float, n_alias: int = 8
@@ -126,8 +172,6 @@ def periodic_kernel_spectrum(
     ``irfft2(rfft2(p) * spectrum, s=(ny, nx))`` is the displacement of the periodic
     pressure ``p``, up to its mean (the q = 0 coefficient is zero).
     """
-    from contact.kernels import periodic_love_spectrum
-
     spec = periodic_love_spectrum(ny, nx, float(dx), float(dy), int(n_alias))
     spec.setflags(write=False)
     return spec

@@ -13,11 +13,7 @@ from typing import Any
 
 import numpy as np
 
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a)
-    a.setflags(write=False)
-    return a
+from contact._validate import frozen
 
 
 @dataclass(frozen=True, eq=False)
@@ -263,12 +259,12 @@ def build_result(
     if hardness is not None:
         plastic_area = float(np.count_nonzero(pressure >= hardness) * da)
     return ContactResult(
-        pressure=_frozen(pressure),
-        gap=_frozen(gap),
-        displacement=_frozen(displacement),
-        plastic_displacement=_frozen(plastic_displacement),
-        x=_frozen(np.asarray(x, float)),
-        y=_frozen(np.asarray(y, float)),
+        pressure=frozen(pressure),
+        gap=frozen(gap),
+        displacement=frozen(displacement),
+        plastic_displacement=frozen(plastic_displacement),
+        x=frozen(np.asarray(x, float)),
+        y=frozen(np.asarray(y, float)),
         dx=float(dx),
         dy=float(dy),
         e_star=float(e_star),

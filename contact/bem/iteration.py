@@ -1,0 +1,114 @@
+"""The iteration of the normal solver: a feasible start, then steps until converged.
+
+:func:`start` builds the first iterate; :func:`iterate` measures the residual, re-syncs
+the mixed-precision displacement where due, and takes a conjugate-gradient or projected
+gradient step (:mod:`contact.bem.steps`) until the tolerance, ``max_iter`` or a stall.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from contact.bem import kernels
+from contact.bem.state import IterationState, Problem, SolverStats, Workspace
+from contact.bem.steps import (
+    Outcome,
+    conjugate_gradient_step,
+    exact_displacement,
+    measure_residual,
+    projected_gradient_step,
+    resync,
+)
+
+
+def _first_pressure(problem: Problem, initial: np.ndarray | None,
+                    approach: float) -> np.ndarray:
+    """The first pressure before the constraints are imposed (flattened, a new array)."""
+    n = problem.size
+    if initial is not None:
+        return np.ascontiguousarray(initial, dtype=float).ravel().copy()
+    if problem.load_control:
+        return np.full(n, problem.target / n)
+    penetration = np.maximum(approach - problem.gap, 0.0)
+    if not penetration.any():
+        return np.zeros(n)
+    return penetration / (problem.operator.self_influence * math.sqrt(n))
+
+
+def _feasible(problem: Problem, pressure: np.ndarray, work: Workspace) -> None:
+    """Scale ``pressure`` to the load and (elastic-plastic) project it under the cap."""
+    if problem.load_control:
+        total = pressure.sum()
+        pressure *= problem.target / total
+        if problem.plastic:
+            # A feasible start (0 <= p <= H, sum p = target): the projection of p, where
+            # the points out of contact are ranked by their gap; if the loaded points
+            # cannot carry the load at the cap, the pressure goes first to the points
+            # that are closest to touching.
+            gap = problem.gap
+            rank = np.where(pressure > 0, 0.0, gap - gap.min())
+            kernels.projected_gradient(
+                pressure, rank, 1.0 / problem.operator.self_influence, problem.target,
+                problem.cap, True, work.projected_step, work.candidates, problem.nx)
+            pressure += work.projected_step
+            np.clip(pressure, 0.0, problem.cap, out=pressure)
+    elif problem.plastic:
+        np.minimum(pressure, problem.cap, out=pressure)
+
+
+def start(problem: Problem, work: Workspace, stats: SolverStats,
+          initial: np.ndarray | None, approach: float) -> IterationState:
+    """The first iterate: the warm start, a uniform pressure (load control) or the
+    penetration spread over the grid (approach control), made feasible.
+
+    ``approach`` is E* delta in approach control (ignored in load control).
+    """
+    pressure = _first_pressure(problem, initial, approach)
+    _feasible(problem, pressure, work)
+    return IterationState(
+        pressure=pressure,
+        displacement=exact_displacement(problem, stats, pressure),
+        approach=0.0 if problem.load_control else approach,
+        mean_pressure=problem.target / problem.size if problem.load_control else 0.0,
+        # projected-gradient step: a cell's pressure closes its own gap
+        alpha=1.0 / problem.operator.self_influence,
+    )
+
+
+def iterate(problem: Problem, state: IterationState, work: Workspace, stats: SolverStats,
+            callback: Callable[[int, float], Any] | None = None) -> bool:
+    """Step ``state`` until converged (True) or stopped (False: ``max_iter`` or a stall).
+
+    Convergence is declared only on an exactly computed (float64) displacement; in mixed
+    precision u is also recomputed whenever the residual has dropped 100-fold since the
+    last exact evaluation. With a finite cap the projected gradient step is taken where
+    the conjugate gradient cannot move (no free point) or asked for it.
+    """
+    while True:
+        measure_residual(problem, state, work)
+        if state.residual <= problem.tol:
+            if state.synced:
+                return True
+            resync(problem, state, stats)
+            state.residual_at_sync = state.residual
+            continue
+        if (problem.single and not state.synced
+                and state.residual < 1e-2 * state.residual_at_sync):
+            resync(problem, state, stats)
+            state.residual_at_sync = state.residual
+            continue
+        if state.iteration >= problem.max_iter:
+            return False
+        state.iteration += 1
+        if problem.plastic and (state.projected_next or state.n_free == 0):
+            outcome = projected_gradient_step(problem, state, work, stats)
+        else:
+            outcome = conjugate_gradient_step(problem, state, work, stats)
+        if outcome is Outcome.STOP:
+            return False
+        if outcome is Outcome.STEPPED and callback is not None:
+            callback(state.iteration, state.residual)

@@ -1,0 +1,230 @@
+"""The normal-contact solver's entry point: check the input, nest, iterate, assemble.
+
+:func:`solve_normal` is the one normal solver of the package, elastic or (with a
+hardness) elastic-perfectly-plastic; the algorithm and its conventions are described in
+:mod:`contact.bem`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import warnings
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from contact._validate import positive
+from contact.bem.iteration import iterate, start
+from contact.bem.nested import can_nest, coarsen, prolong
+from contact.bem.result import ContactResult, build_result
+from contact.bem.state import IterationState, Problem, SolverStats, workspace
+from contact.errors import ContactInputError, ConvergenceError, EdgeContactWarning
+from contact.halfspace.convolution import convolution
+
+
+def solve_normal(
+    gap0: np.ndarray,
+    dx: float,
+    dy: float | None = None,
+    *,
+    e_star: float,
+    load: float | None = None,
+    approach: float | None = None,
+    periodic: bool = False,
+    hardness: float | None = None,
+    initial: np.ndarray | None = None,
+    tol: float = 1e-6,
+    max_iter: int = 2000,
+    precision: str = "mixed",
+    nested: bool = True,
+    precondition: bool = True,
+    workers: int | None = None,
+    origin: tuple[float, float] = (0.0, 0.0),
+    callback: Callable[[int, float], Any] | None = None,
+    strict: bool = True,
+    edge: str = "warn",
+    stats: SolverStats | None = None,
+) -> ContactResult:
+    """Solve the normal contact of two rough elastic half-spaces on a regular grid.
+
+    Parameters
+    ----------
+    gap0 : ndarray, shape (ny, nx)
+        Initial gap h (m) between the undeformed surfaces (see the module conventions).
+    dx, dy : float
+        Cell pitch (m); ``dy`` defaults to ``dx``.
+    e_star : float
+        Composite modulus E* (Pa).
+    load, approach : float
+        Exactly one: the total normal load W (N) or the rigid-body approach delta (m).
+    periodic : bool
+        Periodic domain (else a free boundary: no pressure outside the grid).
+    hardness : float, optional
+        Pressure cap (Pa) for an elastic-perfectly-plastic contact.
+    initial : ndarray, optional
+        Warm start: a pressure field on the same grid (e.g. the solution at a nearby load);
+        it is rescaled to the load.
+    tol : float
+        Target residual (see :class:`~contact.bem.result.ContactResult`); 1e-6 gives the
+        Hertz maximum pressure to about 1e-6 of discretisation-free accuracy.
+    max_iter : int
+        Iteration limit of the finest grid.
+    precision : {"mixed", "double"}
+        "mixed" runs the search-direction FFT in float32 (see the notes of :mod:`contact.bem`).
+    nested : bool
+        Start from the solution of a twice coarser grid when no warm start is given.
+    precondition : bool
+        Precondition the conjugate gradient with the periodic stiffness |q|/2 (the
+        approximate inverse of the influence operator; Vollebregt 2014, J. Comput. Phys.
+        257:333). Cuts the iterations several-fold for one unpadded FFT pair each.
+    workers : int, optional
+        Threads for scipy.fft (default: all cores).
+    origin : (float, float)
+        Coordinates (x, y) of the centre of cell (0, 0), for the result's coordinates.
+    callback : callable, optional
+        Called as ``callback(iteration, residual)`` after each iteration.
+    strict : bool
+        Raise :class:`~contact.errors.ConvergenceError` if the tolerance is not reached;
+        with ``strict=False`` the result is returned with ``converged=False``.
+    edge : {"warn", "ignore"}
+        A free-boundary solution with pressure on the outermost cells may be cut short by
+        the domain: "warn" issues an :class:`~contact.errors.EdgeContactWarning` and adds a
+        note (the result's ``touches_edge`` is set either way). Higher-level callers that
+        enlarge the domain themselves pass "ignore".
+    stats : SolverStats, optional
+        Filled with counters (iterations, FFTs) for diagnostics.
+
+    Returns
+    -------
+    ContactResult
+        ``iterations`` counts the finest grid; ``extra["levels"]`` lists (ny, nx,
+        iterations) of every grid solved, coarsest first.
+    """
+    dy = dx if dy is None else dy
+    h = _check_inputs(gap0, dx, dy, e_star, load, approach, hardness)
+    if precision not in ("mixed", "double"):
+        raise ContactInputError("precision must be 'mixed' or 'double'")
+    if edge not in ("warn", "ignore"):
+        raise ContactInputError("edge must be 'warn' or 'ignore'")
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    stats = stats if stats is not None else SolverStats()
+    ny, nx = h.shape
+    cap = math.inf if hardness is None else float(hardness)
+
+    if initial is not None:
+        p_init = _warm_start(initial, h.shape, cap)
+    elif nested and can_nest(ny, nx):
+        coarse = solve_normal(
+            coarsen(h), 2 * dx, 2 * dy, e_star=e_star, load=load, approach=approach,
+            periodic=periodic, hardness=hardness, tol=max(tol, 1e-4), max_iter=max_iter,
+            precision=precision, nested=True, precondition=precondition, workers=workers,
+            strict=False, edge="ignore", stats=stats,
+        )
+        p_init = (np.clip(prolong(np.asarray(coarse.pressure)), 0.0, cap)
+                  if coarse.load > 0 else None)
+    else:
+        p_init = None
+
+    operator = convolution(ny, nx, float(dx), float(dy), bool(periodic))
+    problem = Problem(
+        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
+        gap=(h * e_star).ravel(), ny=ny, nx=nx, operator=operator,
+        load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
+        cap=cap, single=precision == "mixed", precondition=precondition, workers=workers,
+        tol=tol, max_iter=max_iter,
+    )
+    try:
+        work = workspace(problem)
+        state = start(problem, work, stats, p_init,
+                      e_star * approach if load is None else 0.0)
+        ok = iterate(problem, state, work, stats, callback)
+    finally:
+        operator.release()
+    it, res = state.iteration, state.residual
+    stats.levels.append((ny, nx, it))
+    stats.iterations = it
+
+    result = _assemble(h, state, e_star, hardness, dx, dy, periodic, origin, ok,
+                       {"levels": list(stats.levels), "tol": tol, "precision": precision})
+    if edge == "warn" and result.touches_edge and not periodic:
+        msg = ("contact pressure reaches the edge of the domain: the free-boundary solution "
+               "is truncated there; enlarge the domain")
+        warnings.warn(msg, EdgeContactWarning, stacklevel=2)
+        result = dataclasses.replace(result, notes=(*result.notes, msg))
+    if not ok and strict:
+        raise ConvergenceError(
+            f"the contact solver stopped after {it} iterations at residual {res:.3g} "
+            f"(tolerance {tol:.3g}); raise max_iter, loosen tol, or refine the grid",
+            residual=res, iterations=it,
+        )
+    return result
+
+
+def _check_inputs(gap0: np.ndarray, dx: float, dy: float, e_star: float,
+                  load: float | None, approach: float | None,
+                  hardness: float | None) -> np.ndarray:
+    """The gap as a C-contiguous float array, after checking every argument."""
+    h = np.asarray(gap0, dtype=float)
+    if h.ndim != 2 or min(h.shape) < 2:
+        raise ContactInputError(f"the gap must be a 2D array of at least 2x2, got shape {h.shape}")
+    if not np.isfinite(h).any():
+        raise ContactInputError("the gap is NaN everywhere: no measured point to put in contact")
+    if not np.isfinite(h).all():
+        raise ContactInputError(
+            "the gap has NaN or infinite points; fill the non-measured points of the scans "
+            "first (surfmet.pairing does)"
+        )
+    for name, value in (("dx", dx), ("dy", dy), ("E*", e_star)):
+        positive(value, name)
+    if (load is None) == (approach is None):
+        raise ContactInputError("give exactly one of load= (load control) or approach=")
+    if load is not None:
+        positive(load, "the load", "N")
+    if approach is not None and not math.isfinite(approach):
+        raise ContactInputError(f"the approach must be finite, got {approach!r}")
+    if hardness is not None:
+        positive(hardness, "the hardness", "Pa")
+        if load is not None and load >= hardness * h.size * dx * dy:
+            raise ContactInputError(
+                f"a load of {load:g} N cannot be carried below the hardness {hardness:g} Pa on "
+                f"this domain ({h.size * dx * dy:.3g} m^2): enlarge the domain"
+            )
+    return np.ascontiguousarray(h)
+
+
+def _warm_start(initial: np.ndarray, shape: tuple[int, ...], cap: float) -> np.ndarray | None:
+    """The warm-start pressure clipped to [0, cap]; None if it carries nothing."""
+    p_init = np.array(initial, dtype=float)
+    if p_init.shape != shape:
+        raise ContactInputError(
+            f"the warm-start pressure has shape {p_init.shape}, the grid {shape}"
+        )
+    p_init = np.clip(np.nan_to_num(p_init), 0.0, cap)
+    return p_init if p_init.any() else None
+
+
+def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: float | None,
+              dx: float, dy: float, periodic: bool, origin: tuple[float, float], ok: bool,
+              extra: dict[str, Any]) -> ContactResult:
+    """The result of a finished iteration, back in SI units."""
+    ny, nx = h.shape
+    p = state.pressure.reshape(ny, nx)
+    u_m = state.displacement.reshape(ny, nx) / e_star
+    delta = state.approach / e_star
+    g = h + u_m - delta
+    if hardness is not None:
+        plastic = np.where(p >= hardness, np.maximum(-g, 0.0), 0.0)
+    else:
+        plastic = np.zeros_like(p)
+    gap = np.maximum(g, 0.0)
+    gap[p > 0] = 0.0
+    x = origin[0] + np.arange(nx) * dx
+    y = origin[1] + np.arange(ny) * dy
+    return build_result(
+        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=x, y=y,
+        dx=dx, dy=dy, e_star=e_star, hardness=hardness, periodic=periodic, approach=delta,
+        iterations=state.iteration, residual=state.residual, converged=ok, extra=extra,
+    )

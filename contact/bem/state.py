@@ -1,0 +1,150 @@
+"""What the normal solver carries from one iteration to the next.
+
+Three small objects, all in units where E* = 1 (gap and approach multiplied by E*,
+displacement u = K * p), on flattened C-contiguous arrays:
+
+- :class:`Problem`: what the solve is asked, fixed during the iteration;
+- :class:`Workspace`: the preallocated work arrays, so that an iteration allocates nothing
+  of the grid's size beyond the FFT's own output;
+- :class:`IterationState`: the iterate (pressure, displacement, approach) and the flags
+  that tell the step functions of :mod:`contact.bem.steps` what to do next.
+
+:class:`SolverStats` counts what a solve did, for benchmarks and diagnostics.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from contact.halfspace.convolution import Convolution
+
+#: Direct summation of a corrected cell costs about 1/SPARSE_FACTOR / log2(4 n) of one
+#: padded FFT convolution of n cells; fewer corrections than the break-even are summed.
+SPARSE_FACTOR = 1.8
+
+
+@dataclass
+class SolverStats:
+    """Counters of one solve, for benchmarks and diagnostics.
+
+    ``projected_steps`` and ``damped_steps`` count the projected gradient steps and the
+    Polonsky-Keer steps cut to the minimiser of the energy (elastic-plastic solves only).
+    """
+
+    iterations: int = 0
+    fft_single: int = 0
+    fft_double: int = 0
+    sparse_corrections: int = 0
+    projected_steps: int = 0
+    damped_steps: int = 0
+    levels: list[tuple[int, int, int]] = field(default_factory=list)
+
+
+@dataclass(frozen=True, eq=False)
+class Problem:
+    """One solve's fixed data, in units where E* = 1.
+
+    ``gap`` is E* h, flattened; ``target`` the prescribed sum of the cell pressures (the
+    load over the cell area) in load control, 0 in approach control; ``cap`` the hardness
+    (``inf`` for an elastic contact); ``single`` runs the search-direction convolutions
+    in float32.
+    """
+
+    gap: np.ndarray
+    ny: int
+    nx: int
+    operator: Convolution
+    load_control: bool
+    target: float
+    cap: float
+    single: bool
+    precondition: bool
+    workers: int
+    tol: float
+    max_iter: int
+
+    @property
+    def size(self) -> int:
+        """Number of cells."""
+        return self.ny * self.nx
+
+    @property
+    def plastic(self) -> bool:
+        """A finite pressure cap: the elastic-perfectly-plastic path."""
+        return math.isfinite(self.cap)
+
+
+@dataclass(eq=False)
+class Workspace:
+    """The work arrays of one solve (see :func:`workspace`)."""
+
+    gap_error: np.ndarray  # d = u + h - delta, the gap residual
+    preconditioned: np.ndarray  # z, the preconditioned residual on the free points
+    direction: np.ndarray  # t, the conjugate search direction
+    direction_fft: np.ndarray  # t in the precision of the FFT (float32 when mixed)
+    correction_index: np.ndarray  # cells the projection changed after a linear step ...
+    correction_value: np.ndarray  # ... and by how much
+    dense: np.ndarray  # (ny, nx) zeros, the corrections scattered for one FFT
+    kernel_real: np.ndarray  # the real-space kernel, for direct summation
+    sparse_limit: int  # up to this many corrections are summed directly
+    projected_step: np.ndarray | None  # elastic-plastic only: P(p - alpha d) - p
+    candidates: np.ndarray | None  # elastic-plastic only: cells that may carry pressure
+    previous_pressure: np.ndarray | None  # elastic-plastic only: p before the CG step
+    previous_displacement: np.ndarray | None  # elastic-plastic only: u before it
+
+
+def workspace(problem: Problem) -> Workspace:
+    """Allocate the work arrays of ``problem``."""
+    n = problem.size
+    plastic = problem.plastic
+    # a capped point may carry two corrections: one from the step, one from the rescaling
+    n_corrections = 2 * n if plastic else n
+    return Workspace(
+        gap_error=np.empty(n),
+        preconditioned=np.zeros(n),
+        direction=np.zeros(n),
+        direction_fft=np.zeros(n, dtype=np.float32 if problem.single else np.float64),
+        correction_index=np.empty(n_corrections, dtype=np.int64),
+        correction_value=np.empty(n_corrections),
+        dense=np.zeros((problem.ny, problem.nx)),
+        kernel_real=np.ascontiguousarray(problem.operator.real),
+        sparse_limit=max(4, int(SPARSE_FACTOR * math.log2(4 * n))),
+        projected_step=np.empty(n) if plastic else None,
+        candidates=np.empty(n, dtype=np.int64) if plastic else None,
+        previous_pressure=np.empty(n) if plastic else None,
+        previous_displacement=np.empty(n) if plastic else None,
+    )
+
+
+@dataclass(eq=False)
+class IterationState:
+    """The iterate and the flags that steer the next step.
+
+    ``pressure`` p and ``displacement`` u = K * p (flattened), ``approach`` E* delta.
+    ``synced``: u was last computed exactly in float64 (not updated by superposition);
+    ``restart``: the next conjugate-gradient step restarts from steepest descent;
+    ``projected_next``: the next elastic-plastic step is a projected gradient step;
+    ``stalls``: consecutive steps that found no descent; ``alpha``: the projected
+    gradient's step (Barzilai-Borwein); ``cg_norm_old``: the previous (preconditioned)
+    residual norm of the conjugate gradient; ``free_gap_norm``, ``n_free``: the squared
+    gap error summed over the free points and their number, from the last residual.
+    """
+
+    pressure: np.ndarray
+    displacement: np.ndarray
+    approach: float
+    mean_pressure: float
+    alpha: float
+    iteration: int = 0
+    residual: float = math.inf
+    residual_at_sync: float = math.inf
+    synced: bool = True
+    restart: bool = True
+    projected_next: bool = False
+    stalls: int = 0
+    cg_norm_old: float = 1.0
+    free_gap_norm: float = 0.0
+    n_free: int = 0
