@@ -67,7 +67,7 @@ class Convolution:
         # one spectral work buffer per thread, kept during a solve (see _buffer)
         self._work = threading.local()
 
-    def _buffer(self, rows: int, cols: int, cdt: type, lo: int, hi: int) -> np.ndarray:
+    def _buffer(self, rows: int, cols: int, complex_type: type, lo: int, hi: int) -> np.ndarray:
         """A (rows, cols) complex work array, zero outside rows [lo, hi).
 
         Fresh arrays of this size come from the kernel as untouched pages: every
@@ -80,7 +80,7 @@ class Convolution:
         raw = getattr(self._work, "raw", None)
         if raw is None or raw.size < nbytes:
             raw = self._work.raw = np.empty(nbytes, dtype=np.uint8)
-        buf = np.ndarray((rows, cols), dtype=cdt, buffer=raw)
+        buf = np.ndarray((rows, cols), dtype=complex_type, buffer=raw)
         buf[:lo] = 0
         buf[hi:] = 0
         return buf
@@ -98,20 +98,43 @@ class Convolution:
             self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
         return self._stiff[single]
 
+    def _cyclic(self, x: np.ndarray, rows: tuple[int, int], multiplier: np.ndarray,
+                single: bool, workers: int) -> np.ndarray:
+        """The unpadded cyclic convolution: irfft2(rfft2(x) * multiplier), pruned to ``rows``."""
+        ny, nx = self.ny, self.nx
+        lo, hi = rows
+        real_type, complex_type = _types(single)
+        if hi <= lo:
+            return np.zeros((ny, nx), dtype=real_type)
+        buf = self._buffer(ny, nx // 2 + 1, complex_type, lo, hi)
+        buf[lo:hi] = sfft.rfft(np.asarray(x[lo:hi], dtype=real_type), axis=1, workers=workers)
+        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
+        buf *= multiplier
+        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
+        return sfft.irfft(buf, n=nx, axis=1, overwrite_x=True, workers=workers)
+
+    def _padded(self, x: np.ndarray, rows: tuple[int, int], single: bool,
+                workers: int) -> np.ndarray:
+        """The free-boundary (DC-FFT) convolution: x zero-padded to (2ny, 2nx)."""
+        ny, nx = self.ny, self.nx
+        lo, hi = rows
+        real_type, complex_type = _types(single)
+        if hi <= lo:
+            return np.zeros((ny, nx), dtype=real_type)
+        buf = self._buffer(2 * ny, nx + 1, complex_type, lo, hi)
+        buf[lo:hi] = sfft.rfft(np.asarray(x[lo:hi], dtype=real_type), n=2 * nx, axis=1,
+                               workers=workers)
+        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
+        buf *= self.spec32 if single else self.spec64
+        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
+        out = sfft.irfft(buf[:ny], n=2 * nx, axis=1, overwrite_x=True, workers=workers)
+        return np.ascontiguousarray(out[:, :nx])
+
     def precondition(self, x: np.ndarray, rows: tuple[int, int], single: bool = False,
                      workers: int = -1) -> np.ndarray:
         """Approximate inverse of K: the periodic stiffness |q|/2 applied by FFT."""
-        ny, nx = self.ny, self.nx
-        lo, hi = int(rows[0]), int(rows[1])
-        rdt, cdt = (np.float32, np.complex64) if single else (np.float64, np.complex128)
-        if hi <= lo:
-            return np.zeros((ny, nx), dtype=rdt)
-        buf = self._buffer(ny, nx // 2 + 1, cdt, lo, hi)
-        buf[lo:hi] = sfft.rfft(np.asarray(x[lo:hi], dtype=rdt), axis=1, workers=workers)
-        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
-        buf *= self.stiffness(single)
-        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
-        return sfft.irfft(buf, n=nx, axis=1, overwrite_x=True, workers=workers)
+        return self._cyclic(x, (int(rows[0]), int(rows[1])), self.stiffness(single), single,
+                            workers)
 
     def __call__(
         self,
@@ -125,28 +148,16 @@ class Convolution:
         ``rows=(lo, hi)`` says that x is zero outside rows [lo, hi) (only those rows are
         transformed). ``single`` computes in float32 and returns float32.
         """
-        ny, nx = self.ny, self.nx
-        lo, hi = (0, ny) if rows is None else (int(rows[0]), int(rows[1]))
-        rdt, cdt = (np.float32, np.complex64) if single else (np.float64, np.complex128)
-        if hi <= lo:
-            return np.zeros((ny, nx), dtype=rdt)
-        block = np.asarray(x[lo:hi], dtype=rdt)
+        span = (0, self.ny) if rows is None else (int(rows[0]), int(rows[1]))
         if self.periodic:
-            spec = self.spec32 if single else self.spec64
-            buf = self._buffer(ny, nx // 2 + 1, cdt, lo, hi)
-            buf[lo:hi] = sfft.rfft(block, axis=1, workers=workers)
-            buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
-            buf *= spec
-            buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
-            return sfft.irfft(buf, n=nx, axis=1, overwrite_x=True, workers=workers)
-        spec = self.spec32 if single else self.spec64
-        buf = self._buffer(2 * ny, nx + 1, cdt, lo, hi)
-        buf[lo:hi] = sfft.rfft(block, n=2 * nx, axis=1, workers=workers)
-        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
-        buf *= spec
-        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
-        out = sfft.irfft(buf[:ny], n=2 * nx, axis=1, overwrite_x=True, workers=workers)
-        return np.ascontiguousarray(out[:, :nx])
+            return self._cyclic(x, span, self.spec32 if single else self.spec64, single,
+                                workers)
+        return self._padded(x, span, single, workers)
+
+
+def _types(single: bool) -> tuple[type, type]:
+    """The real and complex dtypes of a float32 (``single``) or float64 transform."""
+    return (np.float32, np.complex64) if single else (np.float64, np.complex128)
 
 
 @lru_cache(maxsize=6)
