@@ -5,10 +5,10 @@ bytes per cell (free boundary, :func:`contact.bem.solve_normal` with mixed preci
 called through :class:`contact.sphere.SphereContact`):
 
 =========================================================  ==============
-array                                                      bytes per cell
+array (:class:`contact.bem.state.Workspace`)               bytes per cell
 =========================================================  ==============
 gap h, E* h, p, u, d, z, t, the dense correction buffer    8 x 8 = 64
-float32 search direction t32                               4
+float32 search direction (Workspace.direction_fft)         4
 correction index and value (int64 + float64)               16
 kernel spectra on the padded 2n x (n + 1) grid (f64, f32)  16 + 8
 real kernel quadrant, preconditioner stiffness (f32)       8 + 2
