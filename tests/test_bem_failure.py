@@ -94,3 +94,14 @@ def test_partially_measured_roughness_is_filled_and_reported():
     res = solve_sphere(0.02, 10.0, E_STAR, roughness=z, roughness_dx=4e-6, grid=64)
     assert res.converged
     assert any("not measured" in note for note in res.notes)
+
+
+def test_result_fields_are_read_only():
+    # the derived scalars (load, pmax, contact area) were computed from the fields: a
+    # field changed afterwards would silently contradict them
+    h, dx = _gap()
+    res = solve_normal(h, dx, e_star=E_STAR, load=10.0)
+    for name, field in res.arrays().items():
+        assert field.flags.c_contiguous, name
+        with pytest.raises(ValueError, match="read-only"):
+            field[0] = 1.0
