@@ -57,7 +57,7 @@ _LAZY = {
     "auto_domain": "contact.geometry",
     "sphere_gap": "contact.geometry",
     "cylinder_gap": "contact.geometry",
-    "gjm_alpha": "contact.hertzcheck",
+    "gjm_alpha": "contact.roughstats",
     "check_sphere": "contact.hertzcheck",
     "sphere_sweep": "contact.rolling",
     "cylinder_sweep": "contact.rolling",

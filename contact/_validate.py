@@ -1,9 +1,12 @@
-"""Argument checks shared by the contact engine (raising its input-error family)."""
+"""Argument checks shared by the contact engine (raising its input-error family), and the
+one way its results freeze their arrays."""
 
 from __future__ import annotations
 
 import math
 from typing import Any
+
+import numpy as np
 
 from contact.errors import ContactInputError
 
@@ -21,3 +24,15 @@ def positive(value: Any, what: str, unit: str = "") -> float:
     if not (math.isfinite(v) and v > 0):
         raise ContactInputError(f"{what} must be positive and finite{where}, got {value!r}")
     return v
+
+
+def frozen(a: Any, dtype: Any = None) -> np.ndarray:
+    """``a`` as a C-contiguous array (of ``dtype``, default its own) that cannot be written.
+
+    Results are frozen dataclasses; freezing their arrays too keeps a caller from changing
+    a result in place behind the dataclass's back. A copy is made only when ``a`` is not
+    already contiguous (and of ``dtype``).
+    """
+    out = np.ascontiguousarray(a, dtype=dtype)
+    out.setflags(write=False)
+    return out

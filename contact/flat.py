@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
-from contact.resolution import corrected_area
+from contact.fields import corrected_area
 
 #: Relative pressure step of the stiffness solve.
 STIFFNESS_STEP = 0.01

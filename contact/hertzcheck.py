@@ -50,7 +50,15 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.fields import (
+    PROFILE_EXTENT,
+    RadialProfile,
+    effective_radius,
+    profile_deviation,
+    radial_average,
+)
 from contact.hertz import HertzSphere, hertz_sphere
+from contact.roughstats import combined_rms, gjm_alpha
 
 #: GJM (1984): Hertz is accurate to a few percent below this alpha.
 ALPHA_LIMIT = 0.05
@@ -64,170 +72,6 @@ PLASTIC_LIMIT = 0.01
 #: First yield below the surface of a Hertz contact: p0 = 1.60 Y (nu = 0.3, Johnson
 #: sec. 6.2) with Y = H / 2.8 (Tabor): p0 / H = 1.60 / 2.8.
 FIRST_YIELD_P0_OVER_H = 1.60 / 2.8
-#: The profile deviation is measured within this many Hertz radii.
-PROFILE_EXTENT = 1.5
-
-
-def gjm_alpha(sigma: float, radius: float, a0: float) -> float:
-    """The Greenwood-Johnson-Matsubara roughness parameter alpha = sigma R / a0^2.
-
-    Parameters
-    ----------
-    sigma : float
-        Combined rms roughness of the two surfaces (m), sqrt(sigma1^2 + sigma2^2).
-    radius : float
-        Ball radius R (m).
-    a0 : float
-        Hertz contact radius of the smooth surfaces at the same load (m).
-    """
-    for name, v in (("sigma", sigma), ("radius", radius), ("a0", a0)):
-        if not math.isfinite(v) or v < 0 or (name != "sigma" and v == 0):
-            raise ContactInputError(f"{name} must be a finite positive length, got {v!r}")
-    return float(sigma) * float(radius) / float(a0) ** 2
-
-
-def combined_rms(*surfaces: np.ndarray | None) -> float:
-    """Combined rms of independent surfaces, sqrt(sum sigma_i^2), each from its finite points
-    about its own mean (NaN = not measured is ignored; None entries are skipped)."""
-    total = 0.0
-    for z in surfaces:
-        if z is None:
-            continue
-        a = np.asarray(z, dtype=float)
-        v = a[np.isfinite(a)]
-        if v.size == 0:
-            raise ContactInputError("a roughness map has no measured point")
-        total += float(np.mean((v - v.mean()) ** 2))
-    return math.sqrt(total)
-
-
-@dataclass(frozen=True, eq=False)
-class RadialProfile:
-    """Azimuthal average of a pressure field.
-
-    Attributes
-    ----------
-    r : ndarray
-        Bin centres (m): 0, w, 2w, ... (bin k holds the cells with (k - 1/2) w <= r <
-        (k + 1/2) w; bin 0 those with r < w/2).
-    p : ndarray
-        Mean pressure of the cells of each bin (Pa).
-    p_hertz : ndarray or None
-        Mean Hertz pressure over the same cells (Pa), when a Hertz solution was given.
-    count : ndarray
-        Cells per bin.
-    width : float
-        Bin width w (m).
-    centre : (float, float)
-        Centre of the average (m).
-    """
-
-    r: np.ndarray
-    p: np.ndarray
-    p_hertz: np.ndarray | None
-    count: np.ndarray
-    width: float
-    centre: tuple[float, float]
-
-
-def radial_average(
-    pressure: np.ndarray,
-    x: np.ndarray,
-    y: np.ndarray,
-    *,
-    centre: tuple[float, float] = (0.0, 0.0),
-    width: float | None = None,
-    r_max: float | None = None,
-    hertz: HertzSphere | None = None,
-) -> RadialProfile:
-    """Azimuthally averaged pressure about ``centre``.
-
-    Parameters
-    ----------
-    pressure : ndarray, shape (ny, nx)
-        Pressure field (Pa) on cells centred at ``x`` (columns) and ``y`` (rows).
-    x, y : ndarray
-        Cell-centre coordinates (m).
-    centre : (float, float)
-        (x, y) of the centre (m); default the origin (the ball's apex in
-        :mod:`contact.sphere`).
-    width : float, optional
-        Bin width (m); default the larger of the cell pitch and r_max / 60.
-    r_max : float, optional
-        Largest bin centre (m); default the farthest cell that carries pressure.
-    hertz : HertzSphere, optional
-        Also average the Hertz pressure over the same cells.
-
-    Returns
-    -------
-    RadialProfile
-        Bins that hold no cell are dropped.
-    """
-    p = np.asarray(pressure, dtype=float)
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    if p.ndim != 2 or p.shape != (y.size, x.size):
-        raise ContactInputError(
-            f"pressure of shape {p.shape} does not match x ({x.size}) and y ({y.size})"
-        )
-    rr = np.hypot(x[None, :] - centre[0], y[:, None] - centre[1])
-    dx = float(np.min(np.diff(x))) if x.size > 1 else 1.0
-    dy = float(np.min(np.diff(y))) if y.size > 1 else dx
-    if r_max is None:
-        r_max = float(rr[p > 0].max()) if (p > 0).any() else float(rr.max())
-    if not (math.isfinite(r_max) and r_max > 0):
-        raise ContactInputError(f"r_max must be a positive length, got {r_max!r}")
-    if width is None:
-        width = max(dx, dy, r_max / 60.0)
-    if not (math.isfinite(width) and width > 0):
-        raise ContactInputError(f"the bin width must be positive, got {width!r}")
-    k = np.floor(rr / width + 0.5).astype(np.int64).ravel()
-    nb = math.floor(r_max / width + 0.5) + 1
-    keep = k < nb
-    k = k[keep]
-    count = np.bincount(k, minlength=nb)
-    sums = np.bincount(k, weights=p.ravel()[keep], minlength=nb)
-    ok = count > 0
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mean = sums / count
-    ph = None
-    if hertz is not None:
-        hp = hertz.pressure(rr).ravel()[keep]
-        ph = (np.bincount(k, weights=hp, minlength=nb) / np.maximum(count, 1))[ok]
-    return RadialProfile(r=np.arange(nb)[ok] * width, p=mean[ok], p_hertz=ph,
-                         count=count[ok], width=float(width),
-                         centre=(float(centre[0]), float(centre[1])))
-
-
-def effective_radius(pressure: np.ndarray, x: np.ndarray, y: np.ndarray,
-                     centre: tuple[float, float] | None = None) -> float:
-    """Radius a* of the Hertz distribution with the same second moment of pressure.
-
-    a* = sqrt(5/2 <r^2>_p), <r^2>_p = sum p r^2 / sum p about ``centre`` (default: the
-    pressure centroid). Hertz has <r^2>_p = 2 a^2 / 5, so a* = a for a smooth contact.
-    """
-    p = np.asarray(pressure, dtype=float)
-    total = p.sum()
-    if not total > 0:
-        return 0.0
-    xx = np.asarray(x, dtype=float)[None, :]
-    yy = np.asarray(y, dtype=float)[:, None]
-    if centre is None:
-        centre = (float((p * xx).sum() / total), float((p * yy).sum() / total))
-    m2 = float((p * ((xx - centre[0]) ** 2 + (yy - centre[1]) ** 2)).sum() / total)
-    return math.sqrt(2.5 * m2)
-
-
-def profile_deviation(profile: RadialProfile, p0: float, r_limit: float) -> float:
-    """Area-weighted rms of (p - p_hertz) over the bins within ``r_limit``, divided by p0."""
-    if profile.p_hertz is None:
-        raise ContactInputError("the profile carries no Hertz pressure to compare with")
-    sel = profile.r <= r_limit
-    if not sel.any():
-        return math.nan
-    w = profile.count[sel].astype(float)
-    d = profile.p[sel] - profile.p_hertz[sel]
-    return math.sqrt(float((w * d**2).sum() / w.sum())) / p0
 
 
 @dataclass(frozen=True)

@@ -32,14 +32,9 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import frozen
 from contact.errors import ContactInputError, ConvergenceError
 from contact.hertz import hertz_cylinder
-
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def line_influence(n: int, dx: float) -> np.ndarray:
@@ -201,7 +196,8 @@ def solve_line(
             on = np.flatnonzero(p > 0)
             lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
             return LineContactResult(
-                x=_frozen(x), pressure=_frozen(p), displacement=_frozen(u), gap=_frozen(gap),
+                x=frozen(x, float), pressure=frozen(p, float), displacement=frozen(u, float),
+                gap=frozen(gap, float),
                 dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
                 approach=delta, pmax=float(p.max()),
                 half_width=0.5 * (hi - lo + dx) if on.size else 0.0,

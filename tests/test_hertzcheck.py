@@ -12,15 +12,13 @@ from contact_synth import rough_surface
 
 from contact import composite_modulus, hertz_sphere, material
 from contact.errors import ContactError, ContactInputError
+from contact.fields import effective_radius, radial_average
 from contact.hertzcheck import (
     ALPHA_LIMIT,
     check_sphere,
-    combined_rms,
-    effective_radius,
-    gjm_alpha,
-    radial_average,
     solve_elastic_plastic,
 )
+from contact.roughstats import combined_rms, gjm_alpha
 from surfmet.errors import SurfmetInputError
 from surfmet.hertz_check import hertz_check
 from surfmet.model import Profile, Topography

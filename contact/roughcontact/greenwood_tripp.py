@@ -37,7 +37,7 @@ the approach is the apex travel from there, d - d1 (comparable with the boundary
 elements' approach from the first touching point of a finite scan).
 
 Effective radius: a* = sqrt(5/2 <r²>_p), the radius of the Hertz distribution with the
-same second moment of pressure (:func:`contact.hertzcheck.effective_radius`); a* = a for
+same second moment of pressure (:func:`contact.fields.effective_radius`); a* = a for
 Hertz, so a*/a0 is Johnson's Fig. 13.12 ratio measured the same way as the BEM's.
 
 Limits. GT is a statistical model: it holds when many asperities lie under the ball
