@@ -404,13 +404,14 @@ def sphere_study(
     max_grid : int
         Largest native grid accepted (cells per side).
     on_edge, tol
-        Passed to :meth:`contact.sphere.SphereContact.solve`.
+        Passed to :meth:`contact.setups.ball_on_plate.SphereContact.solve`.
     progress : callable, optional
         Called with a short label before each level.
     """
     from contact.geometry import auto_domain
-    from contact.hertzcheck import compare_with_hertz, solve_elastic_plastic
-    from contact.sphere import SphereContact
+    from contact.hertzcheck import compare_with_hertz
+    from contact.setups.ball_on_plate import SphereContact
+    from contact.setups.composite import CompositeRoughness
 
     radius = positive(radius, "the ball radius", "m")
     load = positive(load, "the load", "N")
@@ -430,13 +431,14 @@ def sphere_study(
         zc, (i, j) = centred_blocks(z, k, centre)
         px, py = dx * k, dy * k
         n = n1 // k
-        problem = SphereContact(radius, e_star, load, roughness=zc, roughness_dx=px,
-                                roughness_dy=py, centre=(j * px, i * py), level=False,
-                                grid=n, size=n * px)
+        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py), level=False)
+        problem = SphereContact(radius, e_star, load, roughness=rough, grid=n, size=n * px)
         elastic = problem.solve(load, on_edge=on_edge, tol=tol)
         plastic = None
         if hardness is not None:
-            plastic = solve_elastic_plastic(problem, load, hardness, elastic=elastic, tol=tol)
+            # on the elastic domain, warm-started from the elastic solution
+            plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
+                                    tol=tol)
         comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
                                   hardness=hardness)
         main = plastic if plastic is not None else elastic
@@ -489,6 +491,7 @@ def rolling_study(
     """
     from contact.geometry import auto_domain
     from contact.rolling import sphere_sweep
+    from contact.setups.composite import CompositeRoughness
 
     e_star = positive(e_star, "E*", "Pa")
     loads = np.sort(np.asarray(loads, dtype=float))
@@ -508,9 +511,9 @@ def rolling_study(
         zc, (i, j) = centred_blocks(z, k, centre)
         px, py = dx * k, dy * k
         n = n1 // k
-        sw = sphere_sweep(radius, e_star, loads, roughness=zc, roughness_dx=px,
-                          roughness_dy=py, roughness_rms=sig, centre=(j * px, i * py),
-                          grid=n, size=n * px, **sweep_kwargs)
+        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py))
+        sw = sphere_sweep(radius, e_star, loads, roughness=rough, roughness_rms=sig, grid=n,
+                          size=n * px, **sweep_kwargs)
         lo, hi = sw.lambda_ci
         if sw.fit is None:
             notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")
