@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 
 #: The profile deviation from Hertz is measured within this many Hertz radii.
@@ -103,12 +104,9 @@ def radial_average(
     dy = float(np.min(np.diff(y))) if y.size > 1 else dx
     if r_max is None:
         r_max = float(rr[p > 0].max()) if (p > 0).any() else float(rr.max())
-    if not (math.isfinite(r_max) and r_max > 0):
-        raise ContactInputError(f"r_max must be a positive length, got {r_max!r}")
-    if width is None:
-        width = max(dx, dy, r_max / 60.0)
-    if not (math.isfinite(width) and width > 0):
-        raise ContactInputError(f"the bin width must be positive, got {width!r}")
+    r_max = positive(r_max, "r_max", "m")
+    width = positive(max(dx, dy, r_max / 60.0) if width is None else width,
+                     "the bin width", "m")
     k = np.floor(rr / width + 0.5).astype(np.int64).ravel()
     nb = math.floor(r_max / width + 0.5) + 1
     keep = k < nb

@@ -66,6 +66,7 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.setups.composite import CompositeRoughness
 
@@ -193,10 +194,8 @@ def plastic_work(
     if H is None:
         raise ContactInputError("the plastic model needs an elastic-plastic solution "
                                 "(solve with a hardness)")
-    if not (math.isfinite(radius) and radius > 0):
-        raise ContactInputError(f"the radius must be a positive length, got {radius!r}")
-    if not (math.isfinite(band) and band > 0):
-        raise ContactInputError(f"band must be positive, got {band!r}")
+    positive(radius, "the radius", "m")
+    positive(band, "band")
     axis, _ = _direction(direction)
     upl = np.asarray(result.plastic_displacement, dtype=float)
     depth = float(upl.max()) + max(float(roughness_rms), 0.0)
@@ -443,8 +442,7 @@ def sphere_sweep(
         raise ContactInputError(f"model must be one of {MODELS}, got {model!r}")
     if model == "plastic" and hardness is None:
         raise ContactInputError("the plastic model needs the hardness of the softer body")
-    if not (math.isfinite(alpha_h) and alpha_h > 0):
-        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    positive(alpha_h, "alpha_h")
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
     _check_fraction(share, "the displacement share")
@@ -504,8 +502,7 @@ def cylinder_sweep(
     from contact.hertz import hertz_cylinder
     from contact.setups.line import solve_cylinder
 
-    if not (math.isfinite(alpha_h) and alpha_h > 0):
-        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    positive(alpha_h, "alpha_h")
     w = _loads(loads_per_length)
     side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
     forces = np.zeros(w.size)
