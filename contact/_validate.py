@@ -1,5 +1,4 @@
-"""Argument checks shared by the contact engine (raising its input-error family), and the
-one way its results freeze their arrays."""
+"""Argument checks and array helpers shared by the contact engine (input-error family)."""
 
 from __future__ import annotations
 
@@ -26,13 +25,12 @@ def positive(value: Any, what: str, unit: str = "") -> float:
     return v
 
 
-def frozen(a: Any, dtype: Any = None) -> np.ndarray:
-    """``a`` as a C-contiguous array (of ``dtype``, default its own) that cannot be written.
+def frozen(a: Any) -> np.ndarray:
+    """``a`` as a C-contiguous, read-only array (a copy only where ``a`` is not contiguous).
 
     Results are frozen dataclasses; freezing their arrays too keeps a caller from changing
-    a result in place behind the dataclass's back. A copy is made only when ``a`` is not
-    already contiguous (and of ``dtype``).
+    a field behind the derived scalars' back.
     """
-    out = np.ascontiguousarray(a, dtype=dtype)
+    out = np.ascontiguousarray(a)
     out.setflags(write=False)
     return out

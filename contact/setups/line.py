@@ -194,8 +194,7 @@ def solve_line(
             on = np.flatnonzero(p > 0)
             lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
             return LineContactResult(
-                x=frozen(x, float), pressure=frozen(p, float), displacement=frozen(u, float),
-                gap=frozen(gap, float),
+                x=frozen(x), pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
                 dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
                 approach=delta, pmax=float(p.max()),
                 half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
