@@ -38,7 +38,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -48,6 +48,7 @@ from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.fields import centred_blocks, corrected_area
 from contact.roughstats import rms_slope
+from contact.setups.composite import CompositeRoughness
 
 #: Relative change over the last halving below which a quantity counts as converged.
 CONVERGED = 0.02
@@ -348,6 +349,22 @@ def _level_values(res: Any, comp: Any, pmax_elastic: float, level_z: np.ndarray,
     }
 
 
+def _coarse_maps(z: np.ndarray, dx: float, dy: float, centre: tuple[int, int], n1: int,
+                 factors: Sequence[int], progress: Callable[[str], Any] | None, *,
+                 level: bool) -> Iterator[tuple[int, CompositeRoughness, int, float]]:
+    """Per factor k: the k x k block average of ``z`` around the study's centre pixel as a
+    :class:`CompositeRoughness` (apex on the centre block), the level's grid n1 // k and the
+    time the level started."""
+    for k in factors:
+        if progress is not None:
+            progress(f"pixel x{k}")
+        t0 = time.perf_counter()
+        zc, (i, j) = centred_blocks(z, k, centre)
+        px, py = dx * k, dy * k
+        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py), level=level)
+        yield k, rough, n1 // k, t0
+
+
 def _levels(roughness: np.ndarray, dx: float, dy: float | None, factors: Sequence[int]
             ) -> tuple[np.ndarray, float, tuple[int, int]]:
     from contact.geometry import fill_nan, remove_plane
@@ -411,7 +428,6 @@ def sphere_study(
     from contact.geometry import auto_domain
     from contact.hertzcheck import compare_with_hertz
     from contact.setups.ball_on_plate import SphereContact
-    from contact.setups.composite import CompositeRoughness
 
     radius = positive(radius, "the ball radius", "m")
     load = positive(load, "the load", "N")
@@ -424,14 +440,9 @@ def sphere_study(
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     notes: list[str] = []
     levels = []
-    for k in factors:
-        if progress is not None:
-            progress(f"pixel x{k}")
-        t0 = time.perf_counter()
-        zc, (i, j) = centred_blocks(z, k, centre)
-        px, py = dx * k, dy * k
-        n = n1 // k
-        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py), level=False)
+    for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
+                                        level=False):
+        px = rough.dx
         problem = SphereContact(radius, e_star, load, roughness=rough, grid=n, size=n * px)
         elastic = problem.solve(load, on_edge=on_edge, tol=tol)
         plastic = None
@@ -444,7 +455,7 @@ def sphere_study(
         main = plastic if plastic is not None else elastic
         if problem.domain.n != n:
             notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")
-        vals = _level_values(main, comp, elastic.pmax, zc, px, hardness)
+        vals = _level_values(main, comp, elastic.pmax, rough.heights, px, hardness)
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=problem.domain.n, values=vals,
                                  comparison=comp, result=main,
                                  seconds=time.perf_counter() - t0))
@@ -491,7 +502,6 @@ def rolling_study(
     """
     from contact.geometry import auto_domain
     from contact.rolling import sphere_sweep
-    from contact.setups.composite import CompositeRoughness
 
     e_star = positive(e_star, "E*", "Pa")
     loads = np.sort(np.asarray(loads, dtype=float))
@@ -504,21 +514,16 @@ def rolling_study(
                        grid=16, hardness=sweep_kwargs.get("hardness")).size
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     levels = []
-    for k in factors:
-        if progress is not None:
-            progress(f"pixel x{k}")
-        t0 = time.perf_counter()
-        zc, (i, j) = centred_blocks(z, k, centre)
-        px, py = dx * k, dy * k
-        n = n1 // k
-        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py))
+    for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
+                                        level=True):
+        px = rough.dx
         sw = sphere_sweep(radius, e_star, loads, roughness=rough, roughness_rms=sig, grid=n,
                           size=n * px, **sweep_kwargs)
         lo, hi = sw.lambda_ci
         if sw.fit is None:
             notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")
         vals = {"lambda_eff": float(sw.lambda_eff), "lambda_lo": float(lo),
-                "lambda_hi": float(hi), "rms_slope": rms_slope(zc, px)}
+                "lambda_hi": float(hi), "rms_slope": rms_slope(rough.heights, px)}
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw,
                                  seconds=time.perf_counter() - t0))
     pixels = [lv.pixel for lv in levels]

@@ -19,6 +19,17 @@ from contact._validate import frozen, positive
 from contact.errors import ContactInputError
 
 
+def _two_lengths(value: object, what: str) -> tuple[float, float]:
+    """``value`` as two finite floats (m), else :class:`ContactInputError`."""
+    try:
+        a, b = (float(v) for v in value)  # type: ignore[union-attr]
+    except (TypeError, ValueError):
+        raise ContactInputError(f"{what} must be two lengths in m, got {value!r}") from None
+    if not (math.isfinite(a) and math.isfinite(b)):
+        raise ContactInputError(f"{what} must be finite, got {value!r}")
+    return a, b
+
+
 @dataclass(frozen=True, eq=False)
 class CompositeRoughness:
     """Composite roughness on a regular grid, ready for a ball-on-plate set-up.
@@ -70,17 +81,8 @@ class CompositeRoughness:
             raise ContactInputError("the roughness map is NaN everywhere: nothing measured")
         dx = positive(self.dx, "the roughness pitch dx", "m")
         dy = dx if self.dy is None else positive(self.dy, "the roughness pitch dy", "m")
-        centre = self.centre
-        if centre is not None:
-            try:
-                cx, cy = (float(v) for v in centre)
-            except (TypeError, ValueError):
-                raise ContactInputError(
-                    f"the apex position must be two lengths (X, Y) in m, got {centre!r}"
-                ) from None
-            if not (math.isfinite(cx) and math.isfinite(cy)):
-                raise ContactInputError(f"the apex position must be finite, got {centre!r}")
-            centre = (cx, cy)
+        centre = None if self.centre is None else _two_lengths(self.centre,
+                                                                "the apex position (X, Y)")
         object.__setattr__(self, "heights", frozen(z))
         object.__setattr__(self, "dx", dx)
         object.__setattr__(self, "dy", dy)
@@ -103,11 +105,6 @@ class CompositeRoughness:
         map: a track position. None keeps the apex where it is."""
         if offset is None:
             return self
-        try:
-            ox, oy = (float(v) for v in offset)
-        except (TypeError, ValueError):
-            raise ContactInputError(
-                f"the track position must be two lengths (x, y) in m, got {offset!r}"
-            ) from None
+        ox, oy = _two_lengths(offset, "the track position (x, y)")
         mx, my = self.middle
         return replace(self, centre=(mx + ox, my + oy))
