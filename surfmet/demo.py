@@ -292,15 +292,16 @@ def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
 
     from contact.errors import EdgeContactWarning
     from contact.materials import contact_hardness
-    from contact.sphere import solve_sphere
+    from contact.setups import CompositeRoughness
+    from contact.setups.ball_on_plate import solve_sphere
     from surfmet.records import contact_record
 
     pair = check.scans.pair
     hardness = contact_hardness(check.ball_material, check.plate_material)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", EdgeContactWarning)
-        res = solve_sphere(RADIUS, load, check.e_star, roughness=pair.roughness,
-                           roughness_dx=pair.dx, roughness_dy=pair.dy, hardness=hardness)
+        res = solve_sphere(RADIUS, load, check.e_star, hardness=hardness,
+                           roughness=CompositeRoughness(pair.roughness, pair.dx, pair.dy))
     rec = contact_record(res, check.ball_material, check.plate_material, pair, radius=RADIUS,
                          plate_file="paper_plate.x3p", ball_file="paper_ball.x3p")
     rec["notes"] = [*rec["notes"], *(str(w.message) for w in caught)]

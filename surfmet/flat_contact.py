@@ -2,7 +2,7 @@
 
 :func:`flat_contact` levels the scan (a periodic one keeps its heights, see
 :func:`surfmet.spectrum.prepare`), describes its spectrum (:func:`surfmet.spectrum.spectrum`),
-runs the boundary elements along the nominal pressures (:func:`contact.flat.flat_contact`:
+runs the boundary elements along the nominal pressures (:func:`contact.setups.flat.flat_contact`:
 periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
 the same spectrum:
 
@@ -24,8 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from contact.flat import FlatContact
 from contact.roughcontact import ModelCurve
+from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 from surfmet.spectrum import Spectrum
@@ -92,7 +92,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     periodic : bool, optional
         None: detect from the edges.
     stiffness : {"curve", "solve"}
-        How the BEM stiffness is measured (see :func:`contact.flat.flat_contact`).
+        How the BEM stiffness is measured (see :func:`contact.setups.flat.flat_contact`).
 
     Raises
     ------
@@ -100,8 +100,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         Not an areal scan, bad pressures or moduli, unmeasured points.
     """
     from contact.errors import ContactInputError
-    from contact.flat import flat_contact as bem_sweep
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
+    from contact.setups.flat import flat_contact as bem_sweep
     from surfmet.spectrum import prepare, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(

@@ -12,9 +12,11 @@
    central region the two scans share; non-measured points are filled with the nearest
    measured value (the fraction is reported);
 5. the composite roughness is the sum of the two, each measured outward from its own body,
-   so that it closes the gap: h = r^2/(2R) - z (the convention of :mod:`contact.sphere`).
+   so that it closes the gap: h = r^2/(2R) - z (the convention of
+   :mod:`contact.setups.ball_on_plate`).
 
-The result holds plain arrays and SI floats, ready for :func:`contact.solve_sphere`.
+The result holds plain arrays and SI floats, ready for
+:class:`contact.setups.CompositeRoughness`.
 """
 
 from __future__ import annotations

@@ -140,7 +140,8 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
         })
     else:
         from contact.materials import composite_modulus
-        from contact.sphere import solve_sphere
+        from contact.setups import CompositeRoughness
+        from contact.setups.ball_on_plate import solve_sphere
         from surfmet.materials import parse_materials
         from surfmet.pairing import apex_centre, prepare_pair
 
@@ -148,10 +149,9 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
         pair = prepare_pair(plate, ball) if (plate is not None or ball is not None) else None
         res = solve_sphere(
             item.radius, item.load, composite_modulus(ball_m, plate_m),
-            roughness=None if pair is None else pair.roughness,
-            roughness_dx=None if pair is None else pair.dx,
-            roughness_dy=None if pair is None else pair.dy,
-            centre=apex_centre(pair, item.position), hardness=item.hardness,
+            roughness=None if pair is None else CompositeRoughness(
+                pair.roughness, pair.dx, pair.dy, centre=apex_centre(pair, item.position)),
+            hardness=item.hardness,
             grid=item.grid, max_grid=None)
         row.update({
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),

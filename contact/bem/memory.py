@@ -2,7 +2,7 @@
 
 A solve on an n x n grid holds a fixed number of n^2 arrays at its peak. Counting them in
 bytes per cell (free boundary, :func:`contact.bem.solve_normal` with mixed precision,
-called through :class:`contact.sphere.SphereContact`):
+called through :class:`contact.setups.ball_on_plate.SphereContact`):
 
 =========================================================  ==============
 array (:class:`contact.bem.state.Workspace`)               bytes per cell

@@ -2,7 +2,7 @@
 
 All values SI. Conventions (shared with :mod:`contact.bem`): row ``i`` is at
 ``y[i]``, column ``j`` at ``x[j]`` (cell centres, metres, relative to the solver's
-reference point, the sphere apex for :func:`contact.sphere.solve_sphere`).
+reference point, the sphere apex for :func:`contact.setups.ball_on_plate.solve_sphere`).
 """
 
 from __future__ import annotations

@@ -78,7 +78,8 @@ def run(args: argparse.Namespace) -> int:
     import surfmet
     from contact.errors import EdgeContactWarning
     from contact.materials import composite_modulus, contact_hardness
-    from contact.sphere import solve_sphere
+    from contact.setups import CompositeRoughness
+    from contact.setups.ball_on_plate import solve_sphere
     from surfmet.errors import SurfmetInputError
     from surfmet.materials import parse_materials
     from surfmet.pairing import prepare_pair
@@ -127,9 +128,8 @@ def run(args: argparse.Namespace) -> int:
         try:
             res = solve_sphere(
                 args.radius, args.load, e_star,
-                roughness=None if pair is None else pair.roughness,
-                roughness_dx=None if pair is None else pair.dx,
-                roughness_dy=None if pair is None else pair.dy,
+                roughness=None if pair is None else CompositeRoughness(
+                    pair.roughness, pair.dx, pair.dy),
                 hardness=hardness, periodic=args.periodic, grid=args.grid, size=args.size,
                 max_grid=None,
                 tol=args.tol, max_iter=args.max_iter, callback=callback,
