@@ -270,11 +270,3 @@ def split_profile(
     }
     return ProfileSplit(primary, waviness, roughness, settings)
 
-
-def __getattr__(name: str) -> Any:
-    # iso4288_cutoff lives in profiles.cutoff (it needs this module); expose it here too.
-    if name in ("iso4288_cutoff", "CutoffChoice"):
-        from profiles import cutoff
-
-        return getattr(cutoff, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
