@@ -8,8 +8,8 @@ removed and the Sq/Sa (or Rq/Ra) spike diagnosis.
 
 Order of operations for an areal scan (ISO 25178-2, 3.1.4): optional window →
 optional spike removal (:mod:`surfmet.spikes`, on the raw scan, because spikes would bias
-the least-squares form) → F-operator (:mod:`surfmet.form`) → optional S-filter (λs) →
-optional L-filter (λc) (:mod:`surfmet.filters`) → parameters (:mod:`surfmet.areal`).
+the least-squares form) → F-operator (:mod:`surfmet.areal.form`) → optional S-filter (λs) →
+optional L-filter (λc) (:mod:`surfmet.areal.filters`) → parameters (:mod:`surfmet.areal`).
 Without ``ls``/``lc`` the parameters are those of the S-F surface after the F-operator,
 which is what surfalize and SurfaceTopography report after their plane levelling.
 
@@ -198,8 +198,8 @@ def roughness(
 def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
-    from surfmet.filters import l_filter, s_filter
-    from surfmet.form import remove_form
+    from surfmet.areal.filters import l_filter, s_filter
+    from surfmet.areal.form import remove_form
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "areal", "grid": {"nx": topo.nx, "ny": topo.ny},
