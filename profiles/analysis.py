@@ -41,8 +41,21 @@ from profiles.cutoff import LS_FOR_LC, iso4288_cutoff
 from profiles.errors import ProfileError
 from profiles.filters import ALPHA, gaussian_mean_line, parse_end_treatment, split_profile
 from profiles.form import level_profile, parse_level
-from profiles.parameters import ProfileParameters, evaluation_slice, profile_parameters
+from profiles.parameters import (
+    ProfileParameters,
+    evaluation_slice,
+    parse_standard,
+    profile_parameters,
+)
 from profiles.positions import regularize
+
+_DEFINITIONS = {
+    "iso21920": "ISO 21920-2:2021: Ra, Rq, Rsk, Rku, RΔq, RSm, Rc over the evaluation "
+    "length; Rp, Rv, Rz averaged over the sampling lengths (see profiles.parameters)",
+    "iso4287": "ISO 4287:1997: every parameter defined per sampling length (Ra, Rq, Rsk, "
+    "Rku, RΔq, Rp, Rv, Rz, Rc, RSm) averaged over the sampling lengths; Rt over the "
+    "evaluation length (see profiles.parameters)",
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -285,6 +298,7 @@ def analyze_profile(
     end_treatment: str = "moment",
     truncation: float = 1.0,
     periodic: bool | None = None,
+    standard: str = "iso21920",
 ) -> ProfileAnalysis:
     """Roughness analysis of a line profile.
 
@@ -316,6 +330,9 @@ def analyze_profile(
         Gaussian weighting function half-width, in cut-offs.
     periodic : bool, optional
         For ``lc="auto"``: force the ISO 4288 periodic / non-periodic rule.
+    standard : {"iso21920", "iso4287"}
+        ISO 21920-2 (over the evaluation length) or ISO 4287:1997 (per sampling length,
+        averaged); see :mod:`profiles.parameters`.
 
     Returns
     -------
@@ -328,6 +345,7 @@ def analyze_profile(
         sampling lengths, bad arguments.
     """
     z = as_heights(z)
+    standard = parse_standard(standard)
     end_treatment = parse_end_treatment(end_treatment)
     level_name, _ = parse_level(level)
     lc_req = _parse_lc(lc)
@@ -378,7 +396,7 @@ def analyze_profile(
         settings["parameters_of"] = "levelled primary profile (no λc filter)"
 
     ev = rough[sl]
-    params = profile_parameters(ev, dx, n_sampling=nsec)
+    params = profile_parameters(ev, dx, n_sampling=nsec, standard=standard)
     evaluated = np.zeros(z.size, dtype=bool)
     evaluated[sl] = True
     settings["n_sampling"] = nsec
@@ -387,7 +405,8 @@ def analyze_profile(
     settings["evaluation_range"] = [float(pos[sl.start]), float(pos[sl.stop - 1])]
     settings["points_used"] = int(np.count_nonzero(np.isfinite(ev)))
     settings["points_not_measured"] = int(np.count_nonzero(~np.isfinite(ev)))
-    settings["definitions"] = "ISO 21920-2 / ISO 4287 (see profiles.parameters)"
+    settings["standard"] = standard
+    settings["definitions"] = _DEFINITIONS[standard]
 
     def frozen(a: np.ndarray | None) -> np.ndarray | None:
         if a is None:

@@ -32,6 +32,7 @@ from surfmet.model import Profile, Topography
 from surfmet.units import jsonable, parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
+AREAL_STANDARD = "ISO 25178-2:2012 (areal; --standard applies to profiles)"
 
 
 @dataclass(frozen=True, eq=False)
@@ -139,7 +140,7 @@ def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
 def roughness(
     scan: Topography | Profile | str | os.PathLike,
     *,
-    level: str = "plane",
+    level: str | None = None,
     ls: Any = None,
     lc: Any = None,
     window: Any = None,
@@ -147,19 +148,24 @@ def roughness(
     spikes: bool = False,
     edge: str = "moment",
     which: Any = None,
+    standard: str | None = None,
+    n_sampling: int | None = None,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
 
     Parameters
     ----------
     scan : Topography, Profile or path
-    level : str
+    level : str, optional
         F-operator: ``"none"``, ``"mean"``, ``"plane"``, ``"poly:N"``, ``"sphere"``,
         ``"cylinder"`` (areal); on a profile ``"plane"`` means a least-squares line.
+        Default ``"plane"``, except ``"none"`` for a file holding an instrument's
+        R-profile (already referred to its mean line by the instrument's filter).
     ls, lc : float or str, optional
         Nesting indices of the S- and L-filters (metres, or text with a unit such as
-        ``"2.5um"``). Areal default: none (the S-F surface). Profile default: ``lc="auto"``
-        (ISO 4288 choice by the profile engine), since R-parameters need an L-filter.
+        ``"2.5um"``; ``"none"`` for no filter). Areal default: none (the S-F surface).
+        Profile default: the λc the file states (an instrument's export), else the ISO 4288
+        rule (``"auto"``); ``lc="none"`` evaluates an already filtered profile as it is.
     window : "X0:X1" or (x0, x1), optional
         Restrict the evaluation to this x-range (metres from the scan origin).
     profile : "row:K" or "col:K", optional
@@ -172,6 +178,12 @@ def roughness(
     which : optional
         Areal parameters to compute (symbols or groups, see
         :func:`surfmet.areal.areal_parameters`); default all.
+    standard : {"iso21920", "iso4287"}, optional
+        Profiles: ISO 21920-2 (over the evaluation length) or ISO 4287:1997 (per sampling
+        length, averaged, as most instruments print). Default: what the file states, else
+        ``"iso21920"``.
+    n_sampling : int, optional
+        Profiles: number of sampling lengths. Default: what the file states, else 5.
 
     Returns
     -------
@@ -183,15 +195,19 @@ def roughness(
         Unreadable file, bad option, scan too small for a cut-off, all-NaN data.
     """
     data, source = _read(scan)
+    win = _window(window)
+    if isinstance(data, Profile) or profile is not None:
+        from surfmet.profile_roughness import resolve_conditions
+
+        cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
+                                  n_sampling=n_sampling)
+        return _profile_roughness(data, source, level=level, cond=cond, window=win,
+                                  profile=profile, spikes=spikes)
     ls_v = _length_or_none(ls, "ls")
     lc_v = _length_or_none(lc, "lc")
-    win = _window(window)
     if ls_v is not None and lc_v is not None and not ls_v < lc_v:
         raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
-    if isinstance(data, Profile) or profile is not None:
-        return _profile_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
-                                  profile=profile, spikes=spikes)
-    return _areal_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
+    return _areal_roughness(data, source, level=level or "plane", ls=ls_v, lc=lc_v, window=win,
                             spikes=spikes, edge=edge, which=which)
 
 
@@ -202,7 +218,8 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
     from surfmet.areal.form import remove_form
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
-    settings: dict[str, Any] = {"kind": "areal", "grid": {"nx": topo.nx, "ny": topo.ny},
+    settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
+                                "grid": {"nx": topo.nx, "ny": topo.ny},
                                 "dx": {"value": topo.dx, "unit": "m"},
                                 "dy": {"value": topo.dy, "unit": "m"}}
     if window is not None:
@@ -264,15 +281,16 @@ def _profile_level(level: str) -> str:
     return "line" if text == "plane" else text
 
 
-def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
+def _profile_roughness(data, source, *, level, cond, window, profile, spikes
                        ) -> RoughnessResult:
     import profiles
     from surfmet.extract import extract_profile
+    from surfmet.profile_roughness import conditions_record, engine_cutoffs, with_units
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "profile"}
     report = None
-    lvl = _profile_level(level)
+    lvl = _profile_level(level or ("none" if cond.prefiltered else "plane"))
     if isinstance(data, Topography):
         if profile is None:  # pragma: no cover - guarded by the caller
             raise SurfmetInputError("an areal scan needs profile='row:K' or 'col:K'")
@@ -292,10 +310,13 @@ def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
             settings["spikes"] = report.as_dict()
     if not spikes:
         settings["spikes"] = {"removed": False}
-    lc_arg: Any = "auto" if lc is None else lc
+    lc_arg, ls_arg = engine_cutoffs(cond)
     ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
-                                  ls=ls, lc=lc_arg)
-    settings.update(ap.settings)
+                                  ls=ls_arg, lc=lc_arg, n_sampling=cond.n_sampling,
+                                  standard=cond.standard)
+    stated = dict(prof.metadata.get("evaluation_conditions") or {})
+    settings["conditions"] = conditions_record(cond, ap.settings, stated)
+    settings.update(with_units(ap.settings))
     settings["level"] = lvl
     units = type(ap.parameters).UNITS
     values = ap.parameters.as_dict()
