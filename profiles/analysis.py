@@ -254,6 +254,7 @@ def _filter_with_lc(
     truncation: float,
     windowed: bool,
     settings: dict[str, Any],
+    valley_suppression: bool = False,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, slice, int, float]:
     """λs/λc split and evaluation length: (primary, waviness, roughness, slice, n, lc)."""
     n = primary.size
@@ -270,8 +271,10 @@ def _filter_with_lc(
         )
     split = split_profile(
         primary, dx, lc=lc_value, ls=ls_value, end_treatment=end_treatment,
-        truncation=truncation,
+        truncation=truncation, valley_suppression=valley_suppression,
     )
+    if valley_suppression:
+        settings["filter"] = split.settings["filter"] + "; " + settings["filter"]
     settings["discarded_each_end"] = split.settings["discarded_each_end"]
     # evaluation length: central whole sampling lengths among the kept points
     if end_treatment == "discard":
@@ -299,6 +302,7 @@ def analyze_profile(
     truncation: float = 1.0,
     periodic: bool | None = None,
     standard: str = "iso21920",
+    valley_suppression: bool = False,
 ) -> ProfileAnalysis:
     """Roughness analysis of a line profile.
 
@@ -333,6 +337,9 @@ def analyze_profile(
     standard : {"iso21920", "iso4287"}
         ISO 21920-2 (over the evaluation length) or ISO 4287:1997 (per sampling length,
         averaged); see :mod:`profiles.parameters`.
+    valley_suppression : bool
+        Use the ISO 13565-1 two-stage λc filter (stratified surfaces) instead of the
+        plain Gaussian (:func:`profiles.filters.split_profile`).
 
     Returns
     -------
@@ -380,7 +387,7 @@ def analyze_profile(
     if lc_value is not None:
         primary, waviness, rough, sl, nsec, sampling_length = _filter_with_lc(
             primary, dx, lc_value, ls_value, n_sampling, end_treatment, truncation,
-            window is not None, settings,
+            window is not None, settings, valley_suppression,
         )
     else:
         if ls_value is not None:

@@ -150,6 +150,8 @@ def roughness(
     which: Any = None,
     standard: str | None = None,
     n_sampling: int | None = None,
+    rk_line: str = "secant",
+    valley_suppression: bool = False,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
 
@@ -184,6 +186,11 @@ def roughness(
         ``"iso21920"``.
     n_sampling : int, optional
         Profiles: number of sampling lengths. Default: what the file states, else 5.
+    rk_line : {"secant", "least-squares", "levels"}
+        Profiles: construction of the ISO 13565-2 equivalent straight line
+        (:mod:`profiles.rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
+    valley_suppression : bool
+        Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
 
     Returns
     -------
@@ -202,7 +209,9 @@ def roughness(
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
                                   n_sampling=n_sampling)
         return _profile_roughness(data, source, level=level, cond=cond, window=win,
-                                  profile=profile, spikes=spikes)
+                                  profile=profile, spikes=spikes,
+                                  extra={"rk_line": rk_line,
+                                         "valley_suppression": bool(valley_suppression)})
     ls_v = _length_or_none(ls, "ls")
     lc_v = _length_or_none(lc, "lc")
     if ls_v is not None and lc_v is not None and not ls_v < lc_v:
@@ -281,11 +290,16 @@ def _profile_level(level: str) -> str:
     return "line" if text == "plane" else text
 
 
-def _profile_roughness(data, source, *, level, cond, window, profile, spikes
+def _profile_roughness(data, source, *, level, cond, window, profile, spikes, extra
                        ) -> RoughnessResult:
     import profiles
     from surfmet.extract import extract_profile
-    from surfmet.profile_roughness import conditions_record, engine_cutoffs, with_units
+    from surfmet.profile_roughness import (
+        conditions_record,
+        engine_cutoffs,
+        stratified_parameters,
+        with_units,
+    )
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "profile"}
@@ -313,7 +327,8 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes
     lc_arg, ls_arg = engine_cutoffs(cond)
     ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
                                   ls=ls_arg, lc=lc_arg, n_sampling=cond.n_sampling,
-                                  standard=cond.standard)
+                                  standard=cond.standard,
+                                  valley_suppression=extra["valley_suppression"])
     stated = dict(prof.metadata.get("evaluation_conditions") or {})
     settings["conditions"] = conditions_record(cond, ap.settings, stated)
     settings.update(with_units(ap.settings))
@@ -321,11 +336,17 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes
     units = type(ap.parameters).UNITS
     values = ap.parameters.as_dict()
     rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
+    parameters = {k: (v, units.get(k, "")) for k, v in values.items()}
+    more, notes = stratified_parameters(rough, extra["rk_line"])
+    parameters.update(more)
+    settings["rk_line"] = extra["rk_line"]
+    if notes:
+        settings["notes"] = notes
     diag = spike_diagnosis(rough, prefix="R")
     settings["spike_diagnosis"] = diag.as_dict()
     return RoughnessResult(
         kind="profile",
-        parameters={k: (v, units.get(k, "")) for k, v in values.items()},
+        parameters=parameters,
         settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
         analysis=ap,
     )

@@ -60,6 +60,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="profiles: iso21920 (ISO 21920-2, over the evaluation length; the "
                    "default unless the file states another) or iso4287 (ISO 4287:1997, "
                    "per sampling length, averaged)")
+    p.add_argument("--rk-line", choices=("secant", "least-squares", "levels"),
+                   default="secant",
+                   help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
+                   "40%% secant (default), its least-squares fit, or 'levels' (the curve "
+                   "tabulated at 1%% of Rt, as a Mitutoyo SurfTest prints)")
+    p.add_argument("--valley-suppression", action="store_true",
+                   help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
     p.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
                    help="profiles: number of sampling lengths (default: the file's, else 5)")
     p.add_argument("--window", default=None, metavar="X0:X1",
@@ -99,7 +106,8 @@ def _cutoff(text: str) -> str | float:
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
             "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
-            "n_sampling": args.n_sampling}
+            "n_sampling": args.n_sampling, "rk_line": args.rk_line,
+            "valley_suppression": args.valley_suppression}
 
 
 def _display(value: Any, unit: str) -> str:
@@ -109,6 +117,8 @@ def _display(value: Any, unit: str) -> str:
         return "n/a"
     if unit == "m":
         return format_length(value)
+    if unit == "m·%":
+        return format_length(value) + "·%"
     if unit == "1/m²":
         return f"{value * 1e-6:.5g} 1/mm²"
     if unit == "1/m":
