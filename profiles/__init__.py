@@ -11,6 +11,7 @@ iso4288_cutoff       automatic λc per ISO 4288
 fit_circle           radius of a ball or roller from a profile
 material_ratio, material_ratio_curve   Abbott-Firestone curve, Rmr(c)
 rk_parameters, probability_parameters   ISO 13565-2 Rk family, ISO 13565-3 Rpq, Rvq, Rmq
+feature_parameters   ISO 21920-2 Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z (Wolf pruning)
 remove_form          least-squares line / polynomial removal
 """
 
@@ -18,6 +19,7 @@ from profiles.analysis import ProfileAnalysis, analyze_profile
 from profiles.circle import CircleFit, fit_circle
 from profiles.cutoff import CutoffChoice, iso4288_cutoff
 from profiles.errors import ProfileError
+from profiles.features import FeatureParameters, feature_parameters
 from profiles.filters import (
     ALPHA,
     ProfileSplit,
@@ -45,6 +47,7 @@ __all__ = [
     "ALPHA",
     "CircleFit",
     "CutoffChoice",
+    "FeatureParameters",
     "FormFit",
     "ProbabilityParameters",
     "ProfileAnalysis",
@@ -54,6 +57,7 @@ __all__ = [
     "RegularProfile",
     "RkParameters",
     "analyze_profile",
+    "feature_parameters",
     "fit_circle",
     "gaussian_mean_line",
     "gaussian_transmission",

@@ -221,3 +221,22 @@ def stratified_parameters(rough: Any, rk_line: str
             raise SurfmetInputError(str(exc)) from None
         notes.append(f"ISO 13565 parameters not computed: {exc}")
     return out, notes
+
+
+def feature_values(rough: Any, dx: float, rz: float
+                   ) -> tuple[dict[str, tuple[float, str]], list[str]]:
+    """ISO 21920-2 feature parameters (Wolf pruning at 5 % of ``rz``), with units."""
+    import numpy as np
+
+    from profiles.errors import ProfileError
+    from profiles.features import feature_parameters
+
+    rough = np.asarray(rough, dtype=float)
+    if not np.isfinite(rough).all():
+        return {}, ["feature parameters not computed: the evaluated profile has "
+                    "non-measured points (the segmentation needs a continuous profile)"]
+    try:
+        fp = feature_parameters(rough, dx, rz=rz)
+    except ProfileError as exc:
+        return {}, [f"feature parameters not computed: {exc}"]
+    return {k: (v, fp.UNITS[k]) for k, v in fp.as_dict().items()}, []

@@ -297,6 +297,7 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     from surfmet.profile_roughness import (
         conditions_record,
         engine_cutoffs,
+        feature_values,
         stratified_parameters,
         with_units,
     )
@@ -339,6 +340,9 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     parameters = {k: (v, units.get(k, "")) for k, v in values.items()}
     more, notes = stratified_parameters(rough, extra["rk_line"])
     parameters.update(more)
+    feats, feature_notes = feature_values(rough, ap.settings["dx"], ap.parameters.Rz)
+    parameters.update(feats)
+    notes += feature_notes
     settings["rk_line"] = extra["rk_line"]
     if notes:
         settings["notes"] = notes
