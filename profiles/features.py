@@ -139,23 +139,23 @@ def _wolf_prune(w: np.ndarray, pit: np.ndarray, low: np.ndarray, high: np.ndarra
                 threshold: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Merge motifs smaller than ``threshold`` into the neighbour across their lower rim."""
     n = pit.size
-    zi = lambda i: w[int(i)]  # noqa: E731 - value at a (half-)index: floor is on the plateau
+    # heights at the (half-)indices: the floor lies on the plateau
+    pit_z = w[pit.astype(int)].tolist()
+    low_z = w[low.astype(int)].tolist()
+    high_z = w[high.astype(int)].tolist()
     pit_l, low_l, high_l = pit.tolist(), low.tolist(), high.tolist()
-    height = [zi(low_l[k]) - zi(pit_l[k]) for k in range(n)]
+    height = [a - b for a, b in zip(low_z, pit_z, strict=True)]
     prev = list(range(-1, n - 1))
     nxt = list(range(1, n + 1))
     nxt[-1] = -1
     alive = [True] * n
-    heap = [(height[k], k) for k in range(n)]
+    heap = [(h, k) for k, h in enumerate(height) if h < threshold]
     heapq.heapify(heap)
+    pop, push = heapq.heappop, heapq.heappush
     while heap:
-        h, k = heap[0]
+        h, k = pop(heap)
         if not alive[k] or h != height[k]:
-            heapq.heappop(heap)
-            continue
-        if h >= threshold:
-            break
-        heapq.heappop(heap)
+            continue  # a stale entry: the motif was merged or its height changed
         alive[k] = False
         p, q = prev[k], nxt[k]
         if p >= 0:
@@ -168,12 +168,16 @@ def _wolf_prune(w: np.ndarray, pit: np.ndarray, low: np.ndarray, high: np.ndarra
         if low_l[u] == low_l[k]:
             # the shared rim was the neighbour's lower rim too: its new rims are its high
             # rim and the removed motif's high rim
-            a, b = high_l[u], high_l[k]
-            low_l[u], high_l[u] = (a, b) if zi(a) <= zi(b) else (b, a)
-            height[u] = zi(low_l[u]) - zi(pit_l[u])
-            heapq.heappush(heap, (height[u], u))
+            if high_z[u] <= high_z[k]:
+                low_l[u], low_z[u] = high_l[u], high_z[u]
+                high_l[u], high_z[u] = high_l[k], high_z[k]
+            else:
+                low_l[u], low_z[u] = high_l[k], high_z[k]
+            height[u] = low_z[u] - pit_z[u]
+            if height[u] < threshold:
+                push(heap, (height[u], u))
         else:
-            high_l[u] = high_l[k]
+            high_l[u], high_z[u] = high_l[k], high_z[k]
     keep = [k for k in range(n) if alive[k]]
     return (np.array([pit_l[k] for k in keep]), np.array([low_l[k] for k in keep]),
             np.array([high_l[k] for k in keep]))
@@ -198,22 +202,28 @@ def _crossings(w: np.ndarray, low: float, high: float) -> np.ndarray:
     return j + step * frac
 
 
-def _derivatives(z: np.ndarray, i: int, dx: float) -> tuple[float, float]:
-    if 3 <= i <= z.size - 4:
-        seg = z[i - 3 : i + 4]
-        return float(seg @ _D1) / dx, float(seg @ _D2) / dx**2
-    # near an end: three-point central differences
-    i = min(max(i, 1), z.size - 2)
-    return (z[i + 1] - z[i - 1]) / (2 * dx), (z[i + 1] - 2 * z[i] + z[i - 1]) / dx**2
+def _curvature_at(z: np.ndarray, at: np.ndarray, dx: float) -> np.ndarray:
+    """Signed curvature z'' / (1 + z'²)^1.5 at (half-)indices ``at``.
 
-
-def _curvature(z: np.ndarray, at: float, dx: float) -> float:
-    """Signed curvature z'' / (1 + z'²)^1.5 (mean of both points of a two-point plateau)."""
-    vals = []
-    for i in sorted({math.floor(at), math.ceil(at)}):
-        d1, d2 = _derivatives(z, i, dx)
-        vals.append(d2 / (1.0 + d1 * d1) ** 1.5)
-    return float(np.mean(vals))
+    Seven-point derivatives inside, three-point central differences within three points of
+    an end; a two-point plateau (half-integer index) gets the mean of its two points.
+    """
+    n = z.size
+    idx = np.concatenate((np.floor(at), np.ceil(at))).astype(int)
+    inner = (idx >= 3) & (idx <= n - 4)
+    d1 = np.empty(idx.size)
+    d2 = np.empty(idx.size)
+    if inner.any():
+        win = np.lib.stride_tricks.sliding_window_view(z, 7)[idx[inner] - 3]
+        d1[inner] = win @ _D1 / dx
+        d2[inner] = win @ _D2 / dx**2
+    if (~inner).any():
+        j = np.clip(idx[~inner], 1, n - 2)
+        d1[~inner] = (z[j + 1] - z[j - 1]) / (2 * dx)
+        d2[~inner] = (z[j + 1] - 2 * z[j] + z[j - 1]) / dx**2
+    k = d2 / (1.0 + d1 * d1) ** 1.5
+    half = at.size
+    return 0.5 * (k[:half] + k[half:])
 
 
 def attribute(m: Motifs, dx: float, name: str) -> np.ndarray:
@@ -228,7 +238,7 @@ def attribute(m: Motifs, dx: float, name: str) -> np.ndarray:
         return -w[m.pit.astype(int)]
     if name == "curvature":
         # on the segmented profile (-z for hills): positive at pits and at peaks
-        return np.array([_curvature(w, p, dx) for p in m.pit])
+        return _curvature_at(w, m.pit, dx)
     out = np.empty(n)
     length = w.size * dx
     for k in range(n):
