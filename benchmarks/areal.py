@@ -16,9 +16,10 @@ import time
 
 import numpy as np
 
-from surfmet.areal import gradient_parameters, height_parameters
-from surfmet.filters import l_filter
-from surfmet.form import remove_form
+from surfmet.areal.filters import l_filter
+from surfmet.areal.form import remove_form
+from surfmet.areal.height import height_parameters
+from surfmet.areal.hybrid import gradient_parameters
 from surfmet.model import Topography
 
 N = 2048

@@ -9,7 +9,9 @@ profile_parameters   Ra, Rq, Rp, Rv, Rz, Rt, Rsk, Rku, Rsm, Rdq of a profile
 split_profile        primary / waviness / roughness by the ISO 16610-21 Gaussian filter
 iso4288_cutoff       automatic λc per ISO 4288
 fit_circle           radius of a ball or roller from a profile
-material_ratio, material_ratio_curve, rk_parameters   Abbott-Firestone curve, Rmr(c), Rk
+material_ratio, material_ratio_curve   Abbott-Firestone curve, Rmr(c)
+rk_parameters, probability_parameters   ISO 13565-2 Rk family, ISO 13565-3 Rpq, Rvq, Rmq
+feature_parameters   ISO 21920-2 Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z (Wolf pruning)
 remove_form          least-squares line / polynomial removal
 """
 
@@ -17,6 +19,7 @@ from profiles.analysis import ProfileAnalysis, analyze_profile
 from profiles.circle import CircleFit, fit_circle
 from profiles.cutoff import CutoffChoice, iso4288_cutoff
 from profiles.errors import ProfileError
+from profiles.features import FeatureParameters, feature_parameters
 from profiles.filters import (
     ALPHA,
     ProfileSplit,
@@ -26,21 +29,27 @@ from profiles.filters import (
 )
 from profiles.form import FormFit, level_profile, remove_form
 from profiles.material_ratio import (
-    RkParameters,
     height_at_ratio,
     material_ratio,
     material_ratio_curve,
-    rk_parameters,
     section_height_difference,
 )
 from profiles.parameters import ProfileParameters, profile_parameters
 from profiles.positions import RegularProfile, regularize
+from profiles.rk import (
+    ProbabilityParameters,
+    RkParameters,
+    probability_parameters,
+    rk_parameters,
+)
 
 __all__ = [
     "ALPHA",
     "CircleFit",
     "CutoffChoice",
+    "FeatureParameters",
     "FormFit",
+    "ProbabilityParameters",
     "ProfileAnalysis",
     "ProfileError",
     "ProfileParameters",
@@ -48,6 +57,7 @@ __all__ = [
     "RegularProfile",
     "RkParameters",
     "analyze_profile",
+    "feature_parameters",
     "fit_circle",
     "gaussian_mean_line",
     "gaussian_transmission",
@@ -56,6 +66,7 @@ __all__ = [
     "level_profile",
     "material_ratio",
     "material_ratio_curve",
+    "probability_parameters",
     "profile_parameters",
     "regularize",
     "remove_form",

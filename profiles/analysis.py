@@ -41,8 +41,21 @@ from profiles.cutoff import LS_FOR_LC, iso4288_cutoff
 from profiles.errors import ProfileError
 from profiles.filters import ALPHA, gaussian_mean_line, parse_end_treatment, split_profile
 from profiles.form import level_profile, parse_level
-from profiles.parameters import ProfileParameters, evaluation_slice, profile_parameters
+from profiles.parameters import (
+    ProfileParameters,
+    evaluation_slice,
+    parse_standard,
+    profile_parameters,
+)
 from profiles.positions import regularize
+
+_DEFINITIONS = {
+    "iso21920": "ISO 21920-2:2021: Ra, Rq, Rsk, Rku, RΔq, RSm, Rc over the evaluation "
+    "length; Rp, Rv, Rz averaged over the sampling lengths (see profiles.parameters)",
+    "iso4287": "ISO 4287:1997: every parameter defined per sampling length (Ra, Rq, Rsk, "
+    "Rku, RΔq, Rp, Rv, Rz, Rc, RSm) averaged over the sampling lengths; Rt over the "
+    "evaluation length (see profiles.parameters)",
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,6 +155,139 @@ def _parse_ls(ls: Any) -> float | str | None:
     return as_step(ls, "ls")
 
 
+def _uniform_window(
+    z: np.ndarray, dx: Any, x: Any, window: Any, settings: dict[str, Any]
+) -> tuple[np.ndarray, np.ndarray, float]:
+    """Positions, window and uniform resampling: (z, positions, step); records settings."""
+    if x is None:
+        dx = as_step(dx)
+        pos = np.arange(z.size) * dx
+    else:
+        pos = as_positions(x, z.size)
+
+    # window (on the positions as given, i.e. as the instrument displays them)
+    if window is not None:
+        sl, (a, b) = _window(pos, window)
+        z, pos = z[sl], pos[sl]
+        settings["window"] = [a, b]
+        settings["window_points"] = [int(sl.start), int(sl.stop - 1)]
+        settings["window_extent"] = [float(pos[0]), float(pos[-1])]
+    else:
+        settings["window"] = None
+
+    # uniform sampling
+    if x is not None and z.size >= 3:
+        reg = regularize(z, pos)
+        z, pos, dx = reg.z, reg.x, reg.dx
+        settings["positions"] = {"method": reg.method, **reg.info}
+    else:
+        if x is not None:  # 1-2 points: nothing to regularise
+            dx = float(pos[-1] - pos[0]) if z.size == 2 else as_step(dx)
+        settings["positions"] = {"method": "uniform"}
+    settings["dx"] = float(dx)
+    return z, pos, float(dx)
+
+
+def _choose_lc(
+    primary: np.ndarray,
+    dx: float,
+    lc_req: float | str | None,
+    n_sampling: int | None,
+    end_treatment: str,
+    periodic: bool | None,
+    settings: dict[str, Any],
+) -> float | None:
+    """The λc to apply (None: no λc filter); records how it was chosen."""
+    length = primary.size * dx
+    if lc_req == "auto":
+        choice = iso4288_cutoff(primary, dx, periodic=periodic)
+        settings["lc_mode"] = "auto (ISO 4288)"
+        settings["lc_iso4288"] = choice.as_dict()
+        nsec = 5 if n_sampling is None else int(n_sampling)
+        need = nsec * choice.lc + (choice.lc if end_treatment == "discard" else 0.0)
+        if length < need * (1 - 1e-9) - dx:
+            settings["lc_note"] = (
+                f"ISO 4288 gives λc = {choice.lc * 1e3:.4g} mm "
+                f"({choice.parameter} = {choice.value:.4g} m), whose evaluation length "
+                f"({need * 1e3:.4g} mm) is longer than the profile ({length * 1e3:.4g} mm): "
+                f"no λc filter applied; parameters are of the levelled primary profile "
+                f"over {nsec} equal parts (as a profilometer reports between its cursors)"
+            )
+            return None
+        return choice.lc
+    if lc_req is None:
+        settings["lc_mode"] = "none"
+        return None
+    settings["lc_mode"] = "given"
+    return float(lc_req)
+
+
+def _choose_ls(
+    ls_req: float | str | None, lc_value: float | None, dx: float, settings: dict[str, Any]
+) -> float | None:
+    """The λs to apply (None: no λs filter); ``"auto"`` follows ISO 3274's pairing."""
+    if ls_req == "auto":
+        if lc_value is None:
+            settings["ls_note"] = "ls='auto' needs a λc; no λs filter applied"
+            return None
+        nearest = min(LS_FOR_LC, key=lambda c: abs(math.log(c / lc_value)))
+        cand = LS_FOR_LC[nearest]
+        if dx <= cand / 5 * (1 + 1e-9):
+            return cand
+        settings["ls_note"] = (
+            f"ISO 3274 pairs λc = {lc_value * 1e3:.4g} mm with λs = {cand * 1e6:.4g} µm,"
+            f" but the step ({dx * 1e6:.4g} µm) is coarser than λs/5: no λs filter"
+        )
+        return None
+    if ls_req is not None:
+        return float(ls_req)
+    return None
+
+
+def _filter_with_lc(
+    primary: np.ndarray,
+    dx: float,
+    lc_value: float,
+    ls_value: float | None,
+    n_sampling: int | None,
+    end_treatment: str,
+    truncation: float,
+    windowed: bool,
+    settings: dict[str, Any],
+    valley_suppression: bool = False,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, slice, int, float]:
+    """λs/λc split and evaluation length: (primary, waviness, roughness, slice, n, lc)."""
+    n = primary.size
+    length = n * dx
+    nsec = 5 if n_sampling is None else int(n_sampling)
+    need = nsec * lc_value + (lc_value if end_treatment == "discard" else 0.0)
+    if n_sampling is not None and length < need * (1 - 1e-9) - dx:
+        extra = " plus half a cut-off run-up and run-out" if end_treatment == "discard" else ""
+        raise ProfileError(
+            f"profile{' window' if windowed else ''} is {length * 1e3:.4g} mm "
+            f"long, too short for λc = {lc_value * 1e3:.4g} mm: {nsec} sampling lengths"
+            f"{extra} need {need * 1e3:.4g} mm. Use a shorter cut-off, fewer sampling "
+            f"lengths (n_sampling), a longer profile, or no λc filter (lc=None)"
+        )
+    split = split_profile(
+        primary, dx, lc=lc_value, ls=ls_value, end_treatment=end_treatment,
+        truncation=truncation, valley_suppression=valley_suppression,
+    )
+    if valley_suppression:
+        settings["filter"] = split.settings["filter"] + "; " + settings["filter"]
+    settings["discarded_each_end"] = split.settings["discarded_each_end"]
+    # evaluation length: central whole sampling lengths among the kept points
+    if end_treatment == "discard":
+        cut = round(split.settings["discarded_each_end"] / dx)
+        lo, hi = cut, n - cut
+    else:
+        lo, hi = 0, n
+    sl, nsec = evaluation_slice(hi - lo, dx, lc_value, n_sampling)
+    sl = slice(lo + sl.start, lo + sl.stop)
+    settings["parameters_of"] = "roughness profile"
+    return split.primary, split.waviness, split.roughness, sl, nsec, lc_value
+
+
 def analyze_profile(
     z: Any,
     dx: float,
@@ -155,6 +301,8 @@ def analyze_profile(
     end_treatment: str = "moment",
     truncation: float = 1.0,
     periodic: bool | None = None,
+    standard: str = "iso21920",
+    valley_suppression: bool = False,
 ) -> ProfileAnalysis:
     """Roughness analysis of a line profile.
 
@@ -186,6 +334,12 @@ def analyze_profile(
         Gaussian weighting function half-width, in cut-offs.
     periodic : bool, optional
         For ``lc="auto"``: force the ISO 4288 periodic / non-periodic rule.
+    standard : {"iso21920", "iso4287"}
+        ISO 21920-2 (over the evaluation length) or ISO 4287:1997 (per sampling length,
+        averaged); see :mod:`profiles.parameters`.
+    valley_suppression : bool
+        Use the ISO 13565-1 two-stage λc filter (stratified surfaces) instead of the
+        plain Gaussian (:func:`profiles.filters.split_profile`).
 
     Returns
     -------
@@ -198,6 +352,7 @@ def analyze_profile(
         sampling lengths, bad arguments.
     """
     z = as_heights(z)
+    standard = parse_standard(standard)
     end_treatment = parse_end_treatment(end_treatment)
     level_name, _ = parse_level(level)
     lc_req = _parse_lc(lc)
@@ -206,33 +361,7 @@ def analyze_profile(
         raise ProfileError(f"n_sampling must be >= 1, got {n_sampling}")
     settings: dict[str, Any] = {"points_input": int(z.size)}
 
-    # positions
-    if x is None:
-        dx = as_step(dx)
-        pos = np.arange(z.size) * dx
-    else:
-        pos = as_positions(x, z.size)
-
-    # window (on the positions as given, i.e. as the instrument displays them)
-    if window is not None:
-        sl, (a, b) = _window(pos, window)
-        z, pos = z[sl], pos[sl]
-        settings["window"] = [a, b]
-        settings["window_points"] = [int(sl.start), int(sl.stop - 1)]
-        settings["window_extent"] = [float(pos[0]), float(pos[-1])]
-    else:
-        settings["window"] = None
-
-    # uniform sampling
-    if x is not None and z.size >= 3:
-        reg = regularize(z, pos)
-        z, pos, dx = reg.z, reg.x, reg.dx
-        settings["positions"] = {"method": reg.method, **reg.info}
-    else:
-        if x is not None:  # 1-2 points: nothing to regularise
-            dx = float(pos[-1] - pos[0]) if z.size == 2 else as_step(dx)
-        settings["positions"] = {"method": "uniform"}
-    settings["dx"] = float(dx)
+    z, pos, dx = _uniform_window(z, dx, x, window, settings)
     require_valid(z, 3, "roughness analysis")
 
     # form removal
@@ -240,53 +369,10 @@ def analyze_profile(
     settings["level"] = level_name
     settings["level_coefficients"] = list(fit.coefficients)
     primary = fit.residuals
-    length = z.size * dx
-    settings["profile_length"] = length
+    settings["profile_length"] = z.size * dx
 
-    # cut-off choice
-    lc_value: float | None
-    if lc_req == "auto":
-        choice = iso4288_cutoff(primary, dx, periodic=periodic)
-        settings["lc_mode"] = "auto (ISO 4288)"
-        settings["lc_iso4288"] = choice.as_dict()
-        nsec = 5 if n_sampling is None else int(n_sampling)
-        need = nsec * choice.lc + (choice.lc if end_treatment == "discard" else 0.0)
-        if length < need * (1 - 1e-9) - dx:
-            lc_value = None
-            settings["lc_note"] = (
-                f"ISO 4288 gives λc = {choice.lc * 1e3:.4g} mm "
-                f"({choice.parameter} = {choice.value:.4g} m), whose evaluation length "
-                f"({need * 1e3:.4g} mm) is longer than the profile ({length * 1e3:.4g} mm): "
-                f"no λc filter applied; parameters are of the levelled primary profile "
-                f"over {nsec} equal parts (as a profilometer reports between its cursors)"
-            )
-        else:
-            lc_value = choice.lc
-    elif lc_req is None:
-        lc_value = None
-        settings["lc_mode"] = "none"
-    else:
-        lc_value = float(lc_req)
-        settings["lc_mode"] = "given"
-
-    # short-wave cut-off
-    ls_value: float | None = None
-    if ls_req == "auto":
-        if lc_value is None:
-            settings["ls_note"] = "ls='auto' needs a λc; no λs filter applied"
-        else:
-            nearest = min(LS_FOR_LC, key=lambda c: abs(math.log(c / lc_value)))
-            cand = LS_FOR_LC[nearest]
-            if dx <= cand / 5 * (1 + 1e-9):
-                ls_value = cand
-            else:
-                settings["ls_note"] = (
-                    f"ISO 3274 pairs λc = {lc_value * 1e3:.4g} mm with λs = {cand * 1e6:.4g} µm,"
-                    f" but the step ({dx * 1e6:.4g} µm) is coarser than λs/5: no λs filter"
-                )
-    elif ls_req is not None:
-        ls_value = float(ls_req)
-
+    lc_value = _choose_lc(primary, dx, lc_req, n_sampling, end_treatment, periodic, settings)
+    ls_value = _choose_ls(ls_req, lc_value, dx, settings)
     settings["ls"] = ls_value
     settings["lc"] = lc_value
     settings["end_treatment"] = end_treatment if (lc_value or ls_value) else None
@@ -299,36 +385,10 @@ def analyze_profile(
 
     waviness: np.ndarray | None = None
     if lc_value is not None:
-        nsec = 5 if n_sampling is None else int(n_sampling)
-        need = nsec * lc_value + (lc_value if end_treatment == "discard" else 0.0)
-        if n_sampling is not None and length < need * (1 - 1e-9) - dx:
-            extra = (
-                " plus half a cut-off run-up and run-out"
-                if end_treatment == "discard"
-                else ""
-            )
-            raise ProfileError(
-                f"profile{' window' if window is not None else ''} is {length * 1e3:.4g} mm "
-                f"long, too short for λc = {lc_value * 1e3:.4g} mm: {nsec} sampling lengths"
-                f"{extra} need {need * 1e3:.4g} mm. Use a shorter cut-off, fewer sampling "
-                f"lengths (n_sampling), a longer profile, or no λc filter (lc=None)"
-            )
-        split = split_profile(
-            primary, dx, lc=lc_value, ls=ls_value, end_treatment=end_treatment,
-            truncation=truncation,
+        primary, waviness, rough, sl, nsec, sampling_length = _filter_with_lc(
+            primary, dx, lc_value, ls_value, n_sampling, end_treatment, truncation,
+            window is not None, settings, valley_suppression,
         )
-        primary, waviness, rough = split.primary, split.waviness, split.roughness
-        settings["discarded_each_end"] = split.settings["discarded_each_end"]
-        # evaluation length: central whole sampling lengths among the kept points
-        if end_treatment == "discard":
-            cut = round(split.settings["discarded_each_end"] / dx)
-            lo, hi = cut, z.size - cut
-        else:
-            lo, hi = 0, z.size
-        sl, nsec = evaluation_slice(hi - lo, dx, lc_value, n_sampling)
-        sl = slice(lo + sl.start, lo + sl.stop)
-        sampling_length = lc_value
-        settings["parameters_of"] = "roughness profile"
     else:
         if ls_value is not None:
             primary = gaussian_mean_line(
@@ -343,7 +403,7 @@ def analyze_profile(
         settings["parameters_of"] = "levelled primary profile (no λc filter)"
 
     ev = rough[sl]
-    params = profile_parameters(ev, dx, n_sampling=nsec)
+    params = profile_parameters(ev, dx, n_sampling=nsec, standard=standard)
     evaluated = np.zeros(z.size, dtype=bool)
     evaluated[sl] = True
     settings["n_sampling"] = nsec
@@ -352,7 +412,8 @@ def analyze_profile(
     settings["evaluation_range"] = [float(pos[sl.start]), float(pos[sl.stop - 1])]
     settings["points_used"] = int(np.count_nonzero(np.isfinite(ev)))
     settings["points_not_measured"] = int(np.count_nonzero(~np.isfinite(ev)))
-    settings["definitions"] = "ISO 21920-2 / ISO 4287 (see profiles.parameters)"
+    settings["standard"] = standard
+    settings["definitions"] = _DEFINITIONS[standard]
 
     def frozen(a: np.ndarray | None) -> np.ndarray | None:
         if a is None:

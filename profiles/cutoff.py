@@ -160,6 +160,20 @@ def _measure(z: np.ndarray, dx: float, lc: float, parameter: str) -> float:
     return {"Ra": p.Ra, "Rz": p.Rz, "Rsm": p.Rsm}[parameter]
 
 
+def _periodic_without_rsm(z: np.ndarray, dx: float, score: float) -> CutoffChoice | None:
+    """The non-periodic choice for a profile that looks periodic but has no RSm element.
+
+    Such a profile (e.g. a single long wave) cannot enter Table 3; None when it has one.
+    """
+    if math.isfinite(_measure(z, dx, CUTOFFS[_START], "Rsm")):
+        return None
+    choice = iso4288_cutoff(z, dx, periodic=False, parameter="Ra")
+    notes = ("looks periodic but has no RSm element: Ra table used", choice.note)
+    return dataclasses.replace(
+        choice, periodicity=score, note="; ".join(n for n in notes if n)
+    )
+
+
 def iso4288_cutoff(
     z: Any,
     dx: float,
@@ -210,19 +224,9 @@ def iso4288_cutoff(
         raise ProfileError(f"unknown ISO 4288 parameter {parameter!r}: use Ra, Rz or Rsm")
 
     if key == "Rsm" and str(parameter).strip().lower() == "auto":
-        # a profile that looks periodic but has no complete RSm element (e.g. a single
-        # long wave) cannot enter Table 3: fall back to the non-periodic rule
-        probe = _measure(z, dx, CUTOFFS[_START], "Rsm")
-        if not math.isfinite(probe):
-            choice = iso4288_cutoff(z, dx, periodic=False, parameter="Ra")
-            return dataclasses.replace(
-                choice,
-                periodicity=score,
-                note="; ".join(
-                    n for n in ("looks periodic but has no RSm element: Ra table used",
-                                choice.note) if n
-                ),
-            )
+        fallback = _periodic_without_rsm(z, dx, score)
+        if fallback is not None:
+            return fallback
 
     length = z.size * dx
     # a cut-off must span a few samples to be realised as a Gaussian filter

@@ -200,6 +200,7 @@ def split_profile(
     ls: float | None = None,
     end_treatment: str = "moment",
     truncation: float = 1.0,
+    valley_suppression: bool = False,
 ) -> ProfileSplit:
     """Split a levelled, uniformly sampled profile into primary, waviness and roughness.
 
@@ -215,6 +216,11 @@ def split_profile(
         Short-wave cut-off λs in metres (ISO 3274); None = no λs filter.
     end_treatment, truncation
         See :func:`gaussian_mean_line`.
+    valley_suppression : bool
+        ISO 13565-1:1996 two-stage mean line for stratified (plateau) surfaces: the deep
+        valleys below the first Gaussian mean line are replaced by that line, and the
+        profile so truncated is filtered again; its mean line is the waviness. The
+        plateau's roughness is then no longer pulled down by the valleys.
 
     Raises
     ------
@@ -258,10 +264,16 @@ def split_profile(
     waviness = gaussian_mean_line(
         primary, dx, lc, end_treatment=end_treatment, truncation=truncation
     )
+    if valley_suppression:
+        truncated = np.where(primary < waviness, waviness, primary)
+        waviness = gaussian_mean_line(
+            truncated, dx, lc, end_treatment=end_treatment, truncation=truncation
+        )
     roughness = primary - waviness
     discarded = math.ceil(0.5 * lc / dx - 1e-9) * dx if end_treatment == "discard" else 0.0
     settings = {
-        "filter": "Gaussian, ISO 16610-21",
+        "filter": ("ISO 13565-1 valley suppression (two Gaussian stages)"
+                   if valley_suppression else "Gaussian, ISO 16610-21"),
         "lc": lc,
         "ls": ls,
         "end_treatment": end_treatment,
@@ -270,11 +282,3 @@ def split_profile(
     }
     return ProfileSplit(primary, waviness, roughness, settings)
 
-
-def __getattr__(name: str) -> Any:
-    # iso4288_cutoff lives in profiles.cutoff (it needs this module); expose it here too.
-    if name in ("iso4288_cutoff", "CutoffChoice"):
-        from profiles import cutoff
-
-        return getattr(cutoff, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,7 +1,7 @@
 """Material ratio: Rmr(c), the Abbott-Firestone curve and the Rk family.
 
-Definitions: ISO 4287:1997 (Rmr(c), material ratio curve, Rδc) and
-ISO 13565-2:1996 (Rk, Rpk, Rvk, Mr1, Mr2). Ratios are fractions in [0, 1] (not %),
+Definitions: ISO 4287:1997 (Rmr(c), material ratio curve, Rδc); the ISO 13565 parameters
+that build on the curve are in :mod:`profiles.rk`. Ratios are fractions in [0, 1] (not %),
 heights in metres. Computed from the measured points only (NaN = not measured); for a
 uniformly sampled profile the fraction of points at or above a level is the fraction of
 the evaluation length.
@@ -9,11 +9,7 @@ the evaluation length.
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
-from dataclasses import dataclass
-from types import MappingProxyType
-from typing import Any, ClassVar
+from typing import Any
 
 import numpy as np
 
@@ -91,58 +87,3 @@ def height_at_ratio(z: Any, mr: Any) -> float | np.ndarray:
 def section_height_difference(z: Any, mr1: float, mr2: float) -> float:
     """Rδc: height difference between the levels of material ratios ``mr1 < mr2``."""
     return float(height_at_ratio(z, mr1) - height_at_ratio(z, mr2))
-
-
-@dataclass(frozen=True)
-class RkParameters:
-    """ISO 13565-2 parameters (heights in metres, Mr1/Mr2 as fractions)."""
-
-    Rk: float
-    Rpk: float
-    Rvk: float
-    Mr1: float
-    Mr2: float
-
-    UNITS: ClassVar[Mapping[str, str]] = MappingProxyType(
-        {"Rk": "m", "Rpk": "m", "Rvk": "m", "Mr1": "", "Mr2": ""}
-    )
-
-    def as_dict(self) -> dict[str, float]:
-        """``{symbol: value}``."""
-        return {k: float(getattr(self, k)) for k in self.UNITS}
-
-
-def rk_parameters(z: Any, *, samples: int = 4001) -> RkParameters:
-    """Core roughness depth and reduced peak/valley heights (ISO 13565-2).
-
-    The material ratio curve is sampled at ``samples`` evenly spaced ratios; the 40 %
-    secant with the smallest slope defines the equivalent straight line; its heights at
-    0 % and 100 % bound the core (``Rk``); ``Mr1``/``Mr2`` are the ratios where the curve
-    crosses these bounds; ``Rpk``/``Rvk`` are the heights of the triangles with the same
-    area as the peak/valley regions beyond the core.
-    """
-    zv = _heights(z, 10)
-    grid = np.linspace(0.0, 1.0, samples)
-    h = np.asarray(height_at_ratio(zv, grid))
-    w = round(0.4 * (samples - 1))
-    slopes = (h[w:] - h[:-w]) / 0.4
-    i = int(np.argmin(np.abs(slopes)))  # first of equally flat secants
-    slope = slopes[i]
-    top = h[i] - slope * grid[i]  # line value at mr = 0
-    bottom = top + slope  # at mr = 1
-    Rk = float(top - bottom)
-    Mr1 = float(material_ratio(zv, top))
-    Mr2 = float(material_ratio(zv, bottom))
-
-    def area(lo: float, hi: float, level: float, sign: float) -> float:
-        m = np.linspace(lo, hi, 2001)
-        excess = np.clip(sign * (np.asarray(height_at_ratio(zv, m)) - level), 0.0, None)
-        return float(np.trapezoid(excess, m)) if hasattr(np, "trapezoid") else float(
-            np.trapz(excess, m)  # noqa: NPY201 - numpy < 2
-        )
-
-    Rpk = 2.0 * area(0.0, Mr1, top, 1.0) / Mr1 if Mr1 > 0 else 0.0
-    Rvk = 2.0 * area(Mr2, 1.0, bottom, -1.0) / (1.0 - Mr2) if Mr2 < 1 else 0.0
-    if not math.isfinite(Rk):
-        raise ProfileError("material ratio curve is degenerate (flat profile)")
-    return RkParameters(Rk=Rk, Rpk=Rpk, Rvk=Rvk, Mr1=Mr1, Mr2=Mr2)

@@ -6,10 +6,20 @@ factors dimensionless) and come from measured points only (NaN = not measured).
 
 Definitions used (``ln`` evaluation length, ``lr`` sampling length, ``z`` heights):
 
-``Ra``   arithmetic mean of ``|z|`` over ``ln``.
-``Rq``   root mean square of ``z`` over ``ln`` (ISO 21920-2; ISO 4287 defines it per
-         ``lr`` and averages, which differs only for non-stationary profiles).
-``Rsk``  ``mean(z**3) / Rq**3`` over ``ln``.  ``Rku``  ``mean(z**4) / Rq**4``.
+Two standards, chosen with ``standard``:
+
+``"iso21920"`` (default, ISO 21920-2:2021)
+    Ra, Rq, Rsk, Rku, Rdq, Rsm and Rc are evaluated once over the evaluation length ``ln``;
+    Rp, Rv, Rz are means over the sampling lengths.
+``"iso4287"`` (ISO 4287:1997, what most instruments print by default)
+    Every parameter the standard defines per sampling length (Ra, Rq, Rsk, Rku, Rdq, Rp,
+    Rv, Rz, Rc, Rsm) is evaluated in each sampling length and the values are averaged
+    (ISO 4288:1996, 4.1); the height discrimination of Rsm and Rc is 10 % of the Rz of
+    that sampling length. Rt stays an evaluation-length parameter.
+
+``Ra``   arithmetic mean of ``|z|``.
+``Rq``   root mean square of ``z``.
+``Rsk``  ``mean(z**3) / Rq**3``.  ``Rku``  ``mean(z**4) / Rq**4``.
 ``Rp``   mean over the sampling lengths of the highest peak ``max(z)`` in each.
 ``Rv``   mean over the sampling lengths of the deepest valley ``-min(z)`` in each
          (a positive number).
@@ -21,7 +31,9 @@ Definitions used (``ln`` evaluation length, ``lr`` sampling length, ``z`` height
          height discrimination (10 % of Rz) or narrower than the width discrimination
          (1 % of ``lr``) are not counted as such but merged into their neighbours
          (ISO 4287 height/spacing discrimination). Widths are measured between
-         successive up-crossings of the mean line, located by linear interpolation.
+         successive up-crossings of the mean line, located by linear interpolation
+         (:mod:`profiles.elements`).
+``Rc``   mean height of the same profile elements (peak height plus valley depth).
 ``Rdq``  root mean square of the local slope ``dz/dx``, with the seven-point derivative of
          ISO 4287:1997 (note to the local slope), ``(z[i+3] - 9 z[i+2] + 45 z[i+1] - 45 z[i-1]
          + 9 z[i-2] - z[i-3]) / (60 dx)``, evaluated where all seven points are measured.
@@ -36,6 +48,7 @@ central evaluation length.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import asdict, dataclass
@@ -45,7 +58,11 @@ from typing import Any, ClassVar
 import numpy as np
 
 from profiles._arrays import as_heights, as_positions, as_step, cell_widths, require_valid
+from profiles.elements import profile_elements
 from profiles.errors import ProfileError
+
+#: The two ways of evaluating per-sampling-length parameters (see module docstring).
+STANDARDS = ("iso21920", "iso4287")
 
 # ISO 4287:1997, note to the local slope dZ/dX: seven-point first derivative.
 _SLOPE7 = np.array([-1.0, 9.0, -45.0, 0.0, 45.0, -9.0, 1.0]) / 60.0
@@ -69,6 +86,7 @@ class ProfileParameters:
     Rku: float
     Rsm: float
     Rdq: float
+    Rc: float = math.nan
 
     UNITS: ClassVar[Mapping[str, str]] = MappingProxyType(
         {
@@ -82,6 +100,7 @@ class ProfileParameters:
             "Rku": "",
             "Rsm": "m",
             "Rdq": "",
+            "Rc": "m",
         }
     )
 
@@ -146,55 +165,6 @@ def _local_slope(z: np.ndarray, pos: np.ndarray, uniform: bool, dx: float) -> np
     return slope[np.isfinite(slope)]
 
 
-def _upcrossing_widths(
-    z: np.ndarray, pos: np.ndarray, height: float, width: float
-) -> np.ndarray:
-    """Widths of the profile elements (ISO 4287, with height/spacing discrimination).
-
-    The profile is cut into runs of constant sign (z >= 0 is "peak" side); a run of
-    non-measured points breaks the chain of elements. A run is significant if its extreme
-    reaches ``height`` and its width (between its interpolated mean-line crossings) reaches
-    ``width``; a run cut by the profile end or a gap is judged on what is visible.
-    Insignificant runs are absorbed by their neighbours, so significant peaks separated
-    only by insignificant valleys form one peak. An element starts at the up-crossing that
-    opens a significant peak whose preceding significant run (with no gap between) is a
-    valley; element widths are the distances between successive such up-crossings.
-    """
-    n = z.size
-    valid = np.isfinite(z)
-    sign = np.where(valid, np.where(z >= 0, 1, -1), 0)
-    change = np.flatnonzero(sign[1:] != sign[:-1]) + 1
-    starts = np.concatenate(([0], change))
-    ends = np.concatenate((change, [n])) - 1
-    s = sign[starts]
-    extreme = np.maximum.reduceat(np.where(valid, z * sign, -np.inf), starts)
-
-    prev_sign = np.concatenate(([0], sign[starts[1:] - 1]))
-    next_sign = np.concatenate((sign[ends[:-1] + 1], [0]))
-    open_start = prev_sign != -s
-    open_end = next_sign != -s
-
-    def crossing(i: np.ndarray) -> np.ndarray:
-        # mean-line crossing between points i-1 and i (linear interpolation)
-        i = np.clip(i, 1, n - 1)
-        z0, z1 = z[i - 1], z[i]
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return pos[i - 1] + (pos[i] - pos[i - 1]) * z0 / (z0 - z1)
-
-    x_start = np.where(open_start, pos[starts], crossing(starts))
-    x_end = np.where(open_end, pos[ends], crossing(ends + 1))
-    significant = (s != 0) & (extreme >= height) & (x_end - x_start >= width)
-
-    events = np.flatnonzero(significant | (s == 0))
-    ev_sign = s[events]
-    prev_ev = np.concatenate(([0], ev_sign[:-1]))
-    is_up = (ev_sign > 0) & (prev_ev < 0)
-    chain = np.cumsum(ev_sign == 0)
-    up_x = x_start[events][is_up]
-    up_chain = chain[is_up]
-    return np.diff(up_x)[np.diff(up_chain) == 0]
-
-
 def profile_parameters(
     z: Any,
     dx: float,
@@ -202,6 +172,7 @@ def profile_parameters(
     x: Any = None,
     sampling_length: float | None = None,
     n_sampling: int | None = 5,
+    standard: str = "iso21920",
     height_discrimination: float = 0.10,
     width_discrimination: float = 0.01,
 ) -> ProfileParameters:
@@ -223,9 +194,12 @@ def profile_parameters(
     n_sampling : int or None
         Number of sampling lengths (default 5, ISO 4288). With ``sampling_length`` given,
         ``None`` takes all whole sampling lengths that fit.
+    standard : {"iso21920", "iso4287"}
+        Evaluate over the evaluation length (ISO 21920-2) or per sampling length and
+        average (ISO 4287:1997); see the module docstring.
     height_discrimination, width_discrimination : float
-        For ``Rsm``: fraction of ``Rz`` and of ``lr`` below which peaks/valleys are not
-        counted (ISO 4287 defaults 10 % and 1 %).
+        For ``Rsm`` and ``Rc``: fraction of ``Rz`` and of ``lr`` below which peaks/valleys
+        are not counted (ISO 4287 defaults 10 % and 1 %).
 
     Returns
     -------
@@ -274,9 +248,58 @@ def profile_parameters(
     widths = np.full(z.size, dx) if uniform else cell_widths(pos)
     lr = float(np.sum(widths)) / n_sections
     valid = require_valid(z, 1, "profile parameters")
+    zv = z[valid]
+    Rt = float(zv.max() - zv.min())
+
+    # sections are contiguous runs of points: reduce each with reduceat
+    sec = _sections(pos, widths, n_sections)
+    first = np.concatenate(([0], np.flatnonzero(np.diff(sec[valid])) + 1))
+    top = np.maximum.reduceat(zv, first)
+    bottom = np.minimum.reduceat(zv, first)
+    Rp = float(np.mean(top))
+    Rv = float(np.mean(-bottom))
+    Rz = float(np.mean(top - bottom))
+
+    if parse_standard(standard) == "iso21920":
+        values = _stretch_values(z, pos, widths, uniform, dx,
+                                 height_discrimination * Rz, width_discrimination * lr)
+    else:
+        bounds = np.searchsorted(sec, np.arange(n_sections + 1))
+        per = []
+        for a, b in itertools.pairwise(bounds):
+            zs = z[a:b]
+            if not np.isfinite(zs).any():
+                continue
+            rz = float(np.nanmax(zs) - np.nanmin(zs))
+            per.append(_stretch_values(zs, pos[a:b], widths[a:b], uniform, dx,
+                                       height_discrimination * rz, width_discrimination * lr))
+        values = {k: _mean_defined([p[k] for p in per]) for k in per[0]}
+    return ProfileParameters(Rp=Rp, Rv=Rv, Rz=Rz, Rt=Rt, **values)
+
+
+def parse_standard(standard: Any) -> str:
+    """Validate a standard name: ``"iso21920"`` or ``"iso4287"`` (spellings tolerated)."""
+    text = str(standard).strip().lower().replace(" ", "").replace("-", "").replace("_", "")
+    text = {"iso219202": "iso21920", "21920": "iso21920", "4287": "iso4287",
+            "iso4287:1997": "iso4287", "iso42871997": "iso4287"}.get(text, text)
+    if text not in STANDARDS:
+        raise ProfileError(f"unknown standard {standard!r}: use iso21920 or iso4287")
+    return text
+
+
+def _mean_defined(values: list[float]) -> float:
+    """Mean of the finite values (a sampling length without elements has no Rsm)."""
+    v = np.asarray(values, dtype=float)
+    v = v[np.isfinite(v)]
+    return float(v.mean()) if v.size else math.nan
+
+
+def _stretch_values(z: np.ndarray, pos: np.ndarray, widths: np.ndarray, uniform: bool,
+                    dx: float, height: float, width: float) -> dict[str, float]:
+    """Ra, Rq, Rsk, Rku, Rsm, Rdq, Rc of one stretch (evaluation or sampling length)."""
+    valid = np.isfinite(z)
     zv, wv = z[valid], widths[valid]
     wsum = float(np.sum(wv))
-
     Ra = float(np.sum(wv * np.abs(zv)) / wsum)
     Rq = float(math.sqrt(np.sum(wv * zv * zv) / wsum))
     if Rq > 0:
@@ -284,23 +307,9 @@ def profile_parameters(
         Rku = float(np.sum(wv * zv**4) / wsum / Rq**4)
     else:
         Rsk = Rku = math.nan
-    Rt = float(zv.max() - zv.min())
-
-    # sections are contiguous runs of points: reduce each with reduceat
-    sec = _sections(pos, widths, n_sections)[valid]
-    first = np.concatenate(([0], np.flatnonzero(np.diff(sec)) + 1))
-    top = np.maximum.reduceat(zv, first)
-    bottom = np.minimum.reduceat(zv, first)
-    Rp = float(np.mean(top))
-    Rv = float(np.mean(-bottom))
-    Rz = float(np.mean(top - bottom))
-
-    elements = _upcrossing_widths(z, pos, height_discrimination * Rz, width_discrimination * lr)
-    Rsm = float(np.mean(elements)) if elements.size else math.nan
-
+    elements = profile_elements(z, pos, height, width)
+    Rsm = float(np.mean(elements.widths)) if elements.widths.size else math.nan
+    Rc = float(np.mean(elements.heights)) if elements.heights.size else math.nan
     slope = _local_slope(z, pos, uniform, dx)
     Rdq = float(math.sqrt(np.mean(slope * slope))) if slope.size else math.nan
-
-    return ProfileParameters(
-        Ra=Ra, Rq=Rq, Rp=Rp, Rv=Rv, Rz=Rz, Rt=Rt, Rsk=Rsk, Rku=Rku, Rsm=Rsm, Rdq=Rdq
-    )
+    return {"Ra": Ra, "Rq": Rq, "Rsk": Rsk, "Rku": Rku, "Rsm": Rsm, "Rdq": Rdq, "Rc": Rc}

@@ -6,7 +6,7 @@ Reading scans::
     topo = surfmet.read("scan.nms")        # Topography or Profile, heights in metres
     surfmet.write(topo, "copy.x3p")
 
-Analysis lives in submodules (``surfmet.areal``, ``surfmet.filters``...) and in the two
+Analysis lives in submodules (``surfmet.areal``, ``surfmet.areal.filters``...) and in the two
 array-level engines ``profiles`` and ``contact``; they are imported on first use so that
 ``import surfmet`` stays fast.
 """

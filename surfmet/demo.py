@@ -250,7 +250,7 @@ def ball_form(ball: Any) -> tuple[dict[str, Any], Any]:
     # The sphere residual is roughness, outliers and the form error; a quadratic fitted to
     # it keeps the form (the astigmatism of a cap that is not a sphere) and its PV is the
     # form deviation that roughness and outliers do not inflate.
-    from surfmet.form import remove_form
+    from surfmet.areal.form import remove_form
 
     rough, _ = remove_form(residual, "poly:2")
     form = np.asarray(residual.heights) - np.asarray(rough.heights)

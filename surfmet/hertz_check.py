@@ -114,7 +114,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -
         plate, ball = cleaned
     pair = prepare_pair(plate, ball)
     notes.extend(pair.notes)
-    from surfmet.form import remove_form
+    from surfmet.areal.form import remove_form
 
     # each surface's own residual, for its spectrum (summit parameters)
     residuals = {name: remove_form(scan, form)[0]

@@ -4,7 +4,7 @@
 
 1. the plate is levelled (least-squares plane removed: a tilt of the specimen under the
    profilometer is not roughness);
-2. the ball's best-fit sphere is removed (:func:`surfmet.form.remove_form` with
+2. the ball's best-fit sphere is removed (:func:`surfmet.areal.form.remove_form` with
    ``"sphere"``); what remains is its roughness and form error, positive outward;
 3. the ball residual is mirrored (x -> -x): the ball was scanned from above and is turned
    over onto the plate, which reverses one in-plane axis;
@@ -143,7 +143,7 @@ def prepare_pair(
         No scan, a profile instead of an areal scan, an all-NaN scan, too few measured
         points, a bad pitch, or pixels differing by more than :data:`MAX_PITCH_RATIO`.
     """
-    from surfmet.form import remove_form
+    from surfmet.areal.form import remove_form
 
     if plate is None and ball is None:
         raise SurfmetInputError("give a plate scan, a ball scan, or both")

@@ -8,8 +8,8 @@ removed and the Sq/Sa (or Rq/Ra) spike diagnosis.
 
 Order of operations for an areal scan (ISO 25178-2, 3.1.4): optional window →
 optional spike removal (:mod:`surfmet.spikes`, on the raw scan, because spikes would bias
-the least-squares form) → F-operator (:mod:`surfmet.form`) → optional S-filter (λs) →
-optional L-filter (λc) (:mod:`surfmet.filters`) → parameters (:mod:`surfmet.areal`).
+the least-squares form) → F-operator (:mod:`surfmet.areal.form`) → optional S-filter (λs) →
+optional L-filter (λc) (:mod:`surfmet.areal.filters`) → parameters (:mod:`surfmet.areal`).
 Without ``ls``/``lc`` the parameters are those of the S-F surface after the F-operator,
 which is what surfalize and SurfaceTopography report after their plane levelling.
 
@@ -32,6 +32,7 @@ from surfmet.model import Profile, Topography
 from surfmet.units import jsonable, parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
+AREAL_STANDARD = "ISO 25178-2:2012 (areal; --standard applies to profiles)"
 
 
 @dataclass(frozen=True, eq=False)
@@ -139,7 +140,7 @@ def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
 def roughness(
     scan: Topography | Profile | str | os.PathLike,
     *,
-    level: str = "plane",
+    level: str | None = None,
     ls: Any = None,
     lc: Any = None,
     window: Any = None,
@@ -147,19 +148,26 @@ def roughness(
     spikes: bool = False,
     edge: str = "moment",
     which: Any = None,
+    standard: str | None = None,
+    n_sampling: int | None = None,
+    rk_line: str = "secant",
+    valley_suppression: bool = False,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
 
     Parameters
     ----------
     scan : Topography, Profile or path
-    level : str
+    level : str, optional
         F-operator: ``"none"``, ``"mean"``, ``"plane"``, ``"poly:N"``, ``"sphere"``,
         ``"cylinder"`` (areal); on a profile ``"plane"`` means a least-squares line.
+        Default ``"plane"``, except ``"none"`` for a file holding an instrument's
+        R-profile (already referred to its mean line by the instrument's filter).
     ls, lc : float or str, optional
         Nesting indices of the S- and L-filters (metres, or text with a unit such as
-        ``"2.5um"``). Areal default: none (the S-F surface). Profile default: ``lc="auto"``
-        (ISO 4288 choice by the profile engine), since R-parameters need an L-filter.
+        ``"2.5um"``; ``"none"`` for no filter). Areal default: none (the S-F surface).
+        Profile default: the λc the file states (an instrument's export), else the ISO 4288
+        rule (``"auto"``); ``lc="none"`` evaluates an already filtered profile as it is.
     window : "X0:X1" or (x0, x1), optional
         Restrict the evaluation to this x-range (metres from the scan origin).
     profile : "row:K" or "col:K", optional
@@ -172,6 +180,17 @@ def roughness(
     which : optional
         Areal parameters to compute (symbols or groups, see
         :func:`surfmet.areal.areal_parameters`); default all.
+    standard : {"iso21920", "iso4287"}, optional
+        Profiles: ISO 21920-2 (over the evaluation length) or ISO 4287:1997 (per sampling
+        length, averaged, as most instruments print). Default: what the file states, else
+        ``"iso21920"``.
+    n_sampling : int, optional
+        Profiles: number of sampling lengths. Default: what the file states, else 5.
+    rk_line : {"secant", "least-squares", "levels"}
+        Profiles: construction of the ISO 13565-2 equivalent straight line
+        (:mod:`profiles.rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
+    valley_suppression : bool
+        Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
 
     Returns
     -------
@@ -183,26 +202,33 @@ def roughness(
         Unreadable file, bad option, scan too small for a cut-off, all-NaN data.
     """
     data, source = _read(scan)
+    win = _window(window)
+    if isinstance(data, Profile) or profile is not None:
+        from surfmet.profile_roughness import resolve_conditions
+
+        cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
+                                  n_sampling=n_sampling)
+        return _profile_roughness(data, source, level=level, cond=cond, window=win,
+                                  profile=profile, spikes=spikes,
+                                  extra={"rk_line": rk_line,
+                                         "valley_suppression": bool(valley_suppression)})
     ls_v = _length_or_none(ls, "ls")
     lc_v = _length_or_none(lc, "lc")
-    win = _window(window)
     if ls_v is not None and lc_v is not None and not ls_v < lc_v:
         raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
-    if isinstance(data, Profile) or profile is not None:
-        return _profile_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
-                                  profile=profile, spikes=spikes)
-    return _areal_roughness(data, source, level=level, ls=ls_v, lc=lc_v, window=win,
+    return _areal_roughness(data, source, level=level or "plane", ls=ls_v, lc=lc_v, window=win,
                             spikes=spikes, edge=edge, which=which)
 
 
 def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
-    from surfmet.filters import l_filter, s_filter
-    from surfmet.form import remove_form
+    from surfmet.areal.filters import l_filter, s_filter
+    from surfmet.areal.form import remove_form
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
-    settings: dict[str, Any] = {"kind": "areal", "grid": {"nx": topo.nx, "ny": topo.ny},
+    settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
+                                "grid": {"nx": topo.nx, "ny": topo.ny},
                                 "dx": {"value": topo.dx, "unit": "m"},
                                 "dy": {"value": topo.dy, "unit": "m"}}
     if window is not None:
@@ -264,15 +290,22 @@ def _profile_level(level: str) -> str:
     return "line" if text == "plane" else text
 
 
-def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
+def _profile_roughness(data, source, *, level, cond, window, profile, spikes, extra
                        ) -> RoughnessResult:
     import profiles
     from surfmet.extract import extract_profile
+    from surfmet.profile_roughness import (
+        conditions_record,
+        engine_cutoffs,
+        feature_values,
+        stratified_parameters,
+        with_units,
+    )
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "profile"}
     report = None
-    lvl = _profile_level(level)
+    lvl = _profile_level(level or ("none" if cond.prefiltered else "plane"))
     if isinstance(data, Topography):
         if profile is None:  # pragma: no cover - guarded by the caller
             raise SurfmetInputError("an areal scan needs profile='row:K' or 'col:K'")
@@ -292,19 +325,32 @@ def _profile_roughness(data, source, *, level, ls, lc, window, profile, spikes
             settings["spikes"] = report.as_dict()
     if not spikes:
         settings["spikes"] = {"removed": False}
-    lc_arg: Any = "auto" if lc is None else lc
+    lc_arg, ls_arg = engine_cutoffs(cond)
     ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
-                                  ls=ls, lc=lc_arg)
-    settings.update(ap.settings)
+                                  ls=ls_arg, lc=lc_arg, n_sampling=cond.n_sampling,
+                                  standard=cond.standard,
+                                  valley_suppression=extra["valley_suppression"])
+    stated = dict(prof.metadata.get("evaluation_conditions") or {})
+    settings["conditions"] = conditions_record(cond, ap.settings, stated)
+    settings.update(with_units(ap.settings))
     settings["level"] = lvl
     units = type(ap.parameters).UNITS
     values = ap.parameters.as_dict()
     rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
+    parameters = {k: (v, units.get(k, "")) for k, v in values.items()}
+    more, notes = stratified_parameters(rough, extra["rk_line"])
+    parameters.update(more)
+    feats, feature_notes = feature_values(rough, ap.settings["dx"], ap.parameters.Rz)
+    parameters.update(feats)
+    notes += feature_notes
+    settings["rk_line"] = extra["rk_line"]
+    if notes:
+        settings["notes"] = notes
     diag = spike_diagnosis(rough, prefix="R")
     settings["spike_diagnosis"] = diag.as_dict()
     return RoughnessResult(
         kind="profile",
-        parameters={k: (v, units.get(k, "")) for k, v in values.items()},
+        parameters=parameters,
         settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
         analysis=ap,
     )

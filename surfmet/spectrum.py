@@ -284,7 +284,7 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     if per:
         z = np.asarray(topo.heights, float)
         return Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), True, "mean"
-    from surfmet.form import remove_form
+    from surfmet.areal.form import remove_form
 
     levelled, _ = remove_form(topo, "plane")
     return levelled, False, "plane"

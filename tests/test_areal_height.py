@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.areal import PARAMETER_UNITS, areal_parameters, height_parameters
+from surfmet.areal import PARAMETER_UNITS, areal_parameters
+from surfmet.areal.form import remove_form
+from surfmet.areal.height import height_parameters
 from surfmet.errors import SurfmetInputError
-from surfmet.form import remove_form
 from surfmet.model import Topography
 from surfmet.roughness import roughness
 

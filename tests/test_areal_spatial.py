@@ -8,17 +8,15 @@ import numpy as np
 import pytest
 from areal_synth import gaussian_surface
 
-from surfmet.areal import (
-    areal_parameters,
-    feature_parameters,
+from surfmet.areal import areal_parameters
+from surfmet.areal.features import feature_parameters, significant_hills
+from surfmet.areal.hybrid import gradient_parameters
+from surfmet.areal.material_ratio import (
     functional_parameters,
-    gradient_parameters,
     inverse_material_ratio,
     material_ratio,
-    significant_hills,
-    spatial_parameters,
-    texture_direction,
 )
+from surfmet.areal.spatial import spatial_parameters, texture_direction
 from surfmet.model import Topography
 
 

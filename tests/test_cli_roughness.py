@@ -53,7 +53,14 @@ def test_one_file_json_shape(capsys, scan):
         assert set(q) == {"value", "unit"}
         assert q["unit"] == PARAMETER_UNITS[sym]
     assert rec["parameters"]["Sa"]["unit"] == "m"
-    assert rec["parameters"]["Ssk"] == {"value": rec["parameters"]["Ssk"]["value"], "unit": ""}
+    # Ssk against numpy on the same seeded field with its own least-squares plane removed
+    z = surfmet.read(scan).heights
+    j, i = np.mgrid[: z.shape[0], : z.shape[1]]
+    a = np.column_stack([np.ones(z.size), i.ravel(), j.ravel()])
+    d = z.ravel() - a @ np.linalg.lstsq(a, z.ravel(), rcond=None)[0]
+    ssk = np.mean(d**3) / np.mean(d**2) ** 1.5
+    assert rec["parameters"]["Ssk"]["unit"] == ""
+    assert rec["parameters"]["Ssk"]["value"] == pytest.approx(ssk, rel=1e-6, abs=1e-9)
     s = rec["settings"]
     assert s["level"] == "plane" and s["ls"] is None and s["lc"] is None
     assert s["filters"] == [] and s["spikes"] == {"removed": False}
@@ -90,7 +97,9 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     assert rc == 1
     assert rows[0]["status"] == "ok" and float(rows[0]["Sa_m"]) > 0
     assert rows[1]["status"] == "error" and rows[1]["error"]
-    assert list(rows[0])[:5] == ["file", "status", "error", "Sa_m", "Sq_m"]
+    assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc_m", "ls_m",
+                                  "n_sampling", "conditions", "Sa_m", "Sq_m"]
+    assert rows[0]["standard"].startswith("ISO 25178-2")
     assert "Ssk" in rows[0] and "Spd_1/m²" in rows[0]
 
 

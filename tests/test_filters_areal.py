@@ -7,8 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
-from surfmet.filters import (
+from surfmet.areal.filters import (
     ALPHA,
     _correlate_axis,
     gaussian_weights,
@@ -17,6 +16,7 @@ from surfmet.filters import (
     s_filter,
     transmission,
 )
+from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
 
@@ -136,7 +136,7 @@ def test_too_small_scan_and_bad_cutoffs_raise():
 def test_separable_moment_path_equals_the_general_3x3_solution():
     # Complete grids use separable weight moments; scans with holes solve the local 3 x 3
     # normal equations. On a complete grid both must give the same filter.
-    from surfmet.filters import _moment_full, _moment_masked
+    from surfmet.areal.filters import _moment_full, _moment_masked
 
     rng = np.random.default_rng(4)
     z = rng.standard_normal((150, 260))

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from surfmet.areal.form import parse_method, remove_form
 from surfmet.errors import SurfmetInputError
-from surfmet.form import parse_method, remove_form
 from surfmet.model import Topography
 
 

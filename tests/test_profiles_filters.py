@@ -159,3 +159,21 @@ def test_filter_errors():
 def test_cutoff_shorter_than_two_steps_is_refused():
     with pytest.raises(ProfileError, match="two sampling steps"):
         gaussian_mean_line(np.zeros(100), 2e-6, 2.5e-6)
+
+
+def test_iso13565_1_valley_suppression_keeps_the_plateau():
+    # plateau at 0 with rectangular grooves (depth d, width w, period P << λc): the plain
+    # Gaussian mean line is the average -d w/P; ISO 13565-1 replaces the grooves by that
+    # line and filters again, whose mean is -d (w/P)² (closed forms, away from the ends)
+    from profiles import split_profile
+
+    dx, lc, period, width, depth = 1e-6, 0.8e-3, 80e-6, 16e-6, 5e-6
+    x = np.arange(8000) * dx
+    z = np.where(np.mod(x, period) < width, -depth, 0.0)
+    frac = width / period
+    inner = slice(1000, 7000)
+    plain = split_profile(z, dx, lc=lc)
+    assert np.allclose(plain.waviness[inner], -depth * frac, atol=1e-3 * depth)
+    iso = split_profile(z, dx, lc=lc, valley_suppression=True)
+    assert np.allclose(iso.waviness[inner], -depth * frac**2, atol=1e-3 * depth)
+    assert "13565-1" in iso.settings["filter"]

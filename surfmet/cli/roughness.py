@@ -15,13 +15,20 @@ EPILOG = """examples:
   surfmet roughness plate.x3p --lc 0.8mm --ls 2.5um --spikes
   surfmet roughness ball.nms --level sphere
   surfmet roughness plate.x3p --profile row:100 --lc 0.25mm
+  surfmet roughness trace.csv --standard iso4287 --lc 2.5mm --n-sampling 4
+  surfmet roughness r_profile.csv --lc none --standard iso4287
   surfmet roughness scans/*.x3p --csv table.csv
   surfmet roughness scans/*.x3p --workers 8 --json > table.json
   surfmet roughness scans/*.x3p --scheduler tcp://10.0.0.5:8786 --csv table.csv
 
 Without --ls/--lc an areal scan is evaluated after the form removal only (the S-F
-surface); a profile gets an automatic ISO 4288 cut-off. --spikes removes spikes (reported)
-before levelling; every result carries an Sq/Sa spike diagnosis.
+surface); a profile gets the λc, λs, number of sampling lengths and standard its file states
+(an instrument's export), else an automatic ISO 4288 cut-off, 5 sampling lengths and
+ISO 21920-2. --standard iso4287 averages every per-sampling-length parameter over the
+sampling lengths as ISO 4287:1997 (and most instruments' printouts) do; --lc none evaluates
+an already filtered profile as it is. Every output states the standard, λc, λs and the
+number of sampling lengths used, and why. --spikes removes spikes (reported) before
+levelling; every result carries an Sq/Sa spike diagnosis.
 
 Several files run in parallel over local processes (--workers, default: one per CPU), or
 on a Dask distributed cluster (--scheduler; the workers must see the same paths). A file
@@ -39,13 +46,29 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
-    p.add_argument("--level", default="plane",
+    p.add_argument("--level", default=None,
                    help="form removal: none, mean, plane, poly:N, sphere, cylinder "
-                   "(default plane; a line on profiles)")
-    p.add_argument("--ls", type=positive_length, default=None,
-                   help="S-filter nesting index λs (e.g. 2.5um)")
-    p.add_argument("--lc", type=positive_length, default=None,
-                   help="L-filter nesting index / cut-off λc (e.g. 0.8mm)")
+                   "(default plane, a line on profiles; none for a file holding an "
+                   "instrument's R-profile)")
+    p.add_argument("--ls", type=_cutoff, default=None,
+                   help="S-filter nesting index λs (e.g. 2.5um), or none")
+    p.add_argument("--lc", type=_cutoff, default=None,
+                   help="L-filter nesting index / cut-off λc (e.g. 0.8mm); profiles: none "
+                   "for an already filtered profile, auto for the ISO 4288 rule (default: "
+                   "the file's stated λc, else auto)")
+    p.add_argument("--standard", choices=("iso21920", "iso4287"), default=None,
+                   help="profiles: iso21920 (ISO 21920-2, over the evaluation length; the "
+                   "default unless the file states another) or iso4287 (ISO 4287:1997, "
+                   "per sampling length, averaged)")
+    p.add_argument("--rk-line", choices=("secant", "least-squares", "levels"),
+                   default="secant",
+                   help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
+                   "40%% secant (default), its least-squares fit, or 'levels' (the curve "
+                   "tabulated at 1%% of Rt, as a Mitutoyo SurfTest prints)")
+    p.add_argument("--valley-suppression", action="store_true",
+                   help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
+    p.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
+                   help="profiles: number of sampling lengths (default: the file's, else 5)")
     p.add_argument("--window", default=None, metavar="X0:X1",
                    help="evaluate only x in X0..X1 (e.g. 468um:733um)")
     p.add_argument("--profile", default=None, metavar="row:K|col:K",
@@ -74,9 +97,17 @@ def _positive_int(text: str) -> int:
     return n
 
 
+def _cutoff(text: str) -> str | float:
+    if text.strip().lower() in ("none", "off", "auto"):
+        return text.strip().lower()
+    return positive_length(text)
+
+
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
-            "profile": args.profile, "spikes": args.spikes}
+            "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
+            "n_sampling": args.n_sampling, "rk_line": args.rk_line,
+            "valley_suppression": args.valley_suppression}
 
 
 def _display(value: Any, unit: str) -> str:
@@ -86,6 +117,8 @@ def _display(value: Any, unit: str) -> str:
         return "n/a"
     if unit == "m":
         return format_length(value)
+    if unit == "m·%":
+        return format_length(value) + "·%"
     if unit == "1/m²":
         return f"{value * 1e-6:.5g} 1/mm²"
     if unit == "1/m":
@@ -100,6 +133,11 @@ def _print_table(rec: dict[str, Any]) -> None:
                         for f in s.get("filters", []) or [])
     print(f"  kind {s.get('kind')}, level {s.get('level')}"
           + (f", {filters}" if filters else ""))
+    cond = s.get("conditions")
+    if cond:
+        print("  " + _conditions_line(cond))
+    elif s.get("standard"):
+        print(f"  standard {s['standard']}")
     for sym, q in rec["parameters"].items():
         print(f"  {sym:<6} {_display(q['value'], q['unit'])}")
     sp = s.get("spikes", {})
@@ -113,6 +151,36 @@ def _print_table(rec: dict[str, Any]) -> None:
         print(f"  note: {note}")
 
 
+def _conditions_line(cond: dict[str, Any]) -> str:
+    from surfmet.units import format_length
+
+    def length(block: dict[str, Any]) -> str:
+        v = block.get("value")
+        text = "none" if v is None else format_length(v)
+        if block.get("applied") is False:
+            text += " (already applied)"
+        return f"{text} ({block['why']})"
+
+    std = cond["standard"]
+    n = cond["n_sampling"]
+    return (f"standard {std['name']} ({std['why']}); λc {length(cond['lc'])}; "
+            f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})")
+
+
+def _condition_cells(rec: dict[str, Any]) -> list[str]:
+    cond = rec.get("settings", {}).get("conditions")
+    if not cond:
+        std = rec.get("settings", {}).get("standard", "")
+        return [std, "", "", "", ""]
+
+    def num(v: Any) -> str:
+        return "" if v is None else repr(float(v))
+
+    why = "; ".join(f"{k}: {cond[k]['why']}" for k in ("standard", "lc", "ls", "n_sampling"))
+    return [cond["standard"]["value"], num(cond["lc"]["value"]), num(cond["ls"]["value"]),
+            str(cond["n_sampling"]["value"]), why]
+
+
 def _write_csv(records: list[dict[str, Any]], out: str) -> None:
     symbols: list[str] = []
     units: dict[str, str] = {}
@@ -121,14 +189,15 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             if sym not in units:
                 symbols.append(sym)
                 units[sym] = q["unit"]
-    cols = ["file", "status", "error"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols]
+    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions"]
+            + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
     fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
     try:
         w = csv.writer(fh)
         w.writerow(cols)
         for rec in records:
             params = rec.get("parameters", {})
-            row = [rec["file"], rec["status"], rec.get("error", "")]
+            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec)]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))

@@ -89,7 +89,7 @@ def run(args: argparse.Namespace) -> int:
         close(fig)
         rec.update(view="profile", lc={"value": ap.settings.get("lc"), "unit": "m"})
     else:
-        from surfmet.form import remove_form
+        from surfmet.areal.form import remove_form
 
         levelled, _ = remove_form(scan, args.level)
         if args.two_d:

@@ -1,0 +1,242 @@
+"""Profile roughness in the facade: evaluation conditions, their reasons, JSON units.
+
+A profile's R-parameters depend on four choices that a user comparing with an instrument
+must see: the standard (ISO 21920-2 over the evaluation length, or ISO 4287:1997 per
+sampling length), λc, λs and the number of sampling lengths. Each is taken, in this order,
+from the user, from the file's own statement of its evaluation conditions (a reader puts
+them in ``metadata["evaluation_conditions"]``, e.g. a Mitutoyo SurfTest export), or from the
+ISO 4288 rule / the default; :func:`resolve_conditions` records which, and the result's
+``settings["conditions"]`` says it.
+
+An exported R-profile (``evaluation_conditions["profile"] == "R"``) has already been
+filtered by the instrument: its λc then sets the sampling length only, and no λc filter is
+applied again.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.units import parse_length
+
+DEFAULT_STANDARD = "iso21920"
+"""Standard used for profiles when neither the user nor the file states one."""
+
+STANDARD_NAMES = {"iso21920": "ISO 21920-2:2021", "iso4287": "ISO 4287:1997"}
+
+FROM_USER = "given by the user"
+FROM_FILE = "stated in the file (instrument's evaluation conditions)"
+FROM_RULE = "ISO 4288 rule"
+FROM_DEFAULT = "default"
+
+_UNSET = object()
+
+
+@dataclass(frozen=True)
+class Conditions:
+    """Resolved evaluation conditions of a profile, each with the reason it was chosen.
+
+    ``lc`` is ``"auto"`` (ISO 4288 rule), None (no λc filter) or metres; ``prefiltered``
+    is True for a file that holds an already λc-filtered R-profile.
+    """
+
+    standard: str
+    lc: Any
+    ls: float | None
+    n_sampling: int
+    prefiltered: bool
+    why: dict[str, str]
+
+
+def parse_cutoff(value: Any, what: str) -> Any:
+    """User value of a cut-off: the unset marker, None ("none"/"off") or a length (m)."""
+    if value is None:
+        return _UNSET
+    if isinstance(value, str) and value.strip().lower() in ("none", "off", "no"):
+        return None
+    if isinstance(value, str) and value.strip().lower() == "auto" and what == "lc":
+        return "auto"
+    v = parse_length(value)
+    if not v > 0:
+        raise SurfmetInputError(f"{what} must be a positive length, got {value!r}")
+    return v
+
+
+def _standard(value: Any) -> str:
+    from profiles.errors import ProfileError
+    from profiles.parameters import parse_standard
+
+    try:
+        return parse_standard(value)
+    except ProfileError as exc:
+        raise SurfmetInputError(str(exc)) from None
+
+
+def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: Any,
+                       n_sampling: Any) -> Conditions:
+    """User choices first, then the file's stated conditions, then the rule or default."""
+    stated = metadata.get("evaluation_conditions") or {}
+    why: dict[str, str] = {}
+    if standard is not None:
+        std, why["standard"] = _standard(standard), FROM_USER
+    elif stated.get("standard"):
+        std, why["standard"] = _standard(stated["standard"]), FROM_FILE
+    else:
+        std, why["standard"] = DEFAULT_STANDARD, FROM_DEFAULT
+    prefiltered = str(stated.get("profile", "")).strip().upper() == "R"
+    lc_user = parse_cutoff(lc, "lc")
+    if lc_user is not _UNSET:
+        lc_v, why["lc"] = lc_user, FROM_USER
+        prefiltered = prefiltered and lc_user is None
+    elif stated.get("lc"):
+        lc_v, why["lc"] = float(stated["lc"]), FROM_FILE
+    else:
+        lc_v, why["lc"] = "auto", FROM_RULE
+    ls_user = parse_cutoff(ls, "ls")
+    if ls_user is not _UNSET:
+        ls_v, why["ls"] = ls_user, FROM_USER
+    elif stated.get("ls") and not prefiltered:
+        ls_v, why["ls"] = float(stated["ls"]), FROM_FILE
+    else:
+        ls_v = None
+        why["ls"] = (FROM_FILE + ": already applied by the instrument" if prefiltered
+                     and stated.get("ls") else "default: no λs filter")
+    if n_sampling is not None:
+        n, why["n_sampling"] = _count(n_sampling), FROM_USER
+    elif stated.get("n_sampling"):
+        n, why["n_sampling"] = _count(stated["n_sampling"]), FROM_FILE
+    else:
+        n, why["n_sampling"] = 5, "ISO 4288 default (5)"
+    if ls_v is not None and isinstance(lc_v, float) and not ls_v < lc_v:
+        raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
+    return Conditions(std, lc_v, ls_v, n, prefiltered, why)
+
+
+def _count(value: Any) -> int:
+    try:
+        n = int(value)
+    except (TypeError, ValueError):
+        raise SurfmetInputError(f"the number of sampling lengths must be an integer, "
+                                f"got {value!r}") from None
+    if n < 1:
+        raise SurfmetInputError(f"the number of sampling lengths must be at least 1, got {n}")
+    return n
+
+
+def engine_cutoffs(cond: Conditions) -> tuple[Any, Any]:
+    """(lc, ls) to hand to :func:`profiles.analyze_profile` for these conditions."""
+    if cond.prefiltered:
+        return None, cond.ls
+    return cond.lc, cond.ls
+
+
+def conditions_record(cond: Conditions, settings: dict[str, Any],
+                      stated: dict[str, Any]) -> dict[str, Any]:
+    """The ``settings["conditions"]`` block: what was used and why, with units."""
+    lc_used = settings.get("lc")
+    lc_block: dict[str, Any] = {"value": lc_used, "unit": "m", "why": cond.why["lc"]}
+    if cond.prefiltered:
+        lc_block = {"value": stated.get("lc"), "unit": "m", "why": cond.why["lc"],
+                    "applied": False,
+                    "note": "the file holds the instrument's R-profile, already filtered "
+                    "with this λc; it is not filtered again and sets the sampling length"}
+    elif cond.lc == "auto" and lc_used is None:
+        lc_block["note"] = settings.get("lc_note", "")
+    ls_block: dict[str, Any] = {"value": settings.get("ls"), "unit": "m", "why": cond.why["ls"]}
+    if cond.prefiltered and stated.get("ls"):
+        ls_block = {"value": stated["ls"], "unit": "m", "why": cond.why["ls"], "applied": False}
+    return {
+        "standard": {"value": cond.standard, "name": STANDARD_NAMES[cond.standard],
+                     "why": cond.why["standard"]},
+        "lc": lc_block,
+        "ls": ls_block,
+        "n_sampling": {"value": settings.get("n_sampling"), "why": cond.why["n_sampling"]},
+    }
+
+
+_LENGTH_KEYS = ("dx", "profile_length", "lc", "ls", "discarded_each_end", "sampling_length",
+                "evaluation_length", "evaluation_range", "window", "window_extent")
+
+_POSITION_LENGTHS = ("position_resolution", "max_position_deviation", "min_step", "max_step")
+
+
+def with_units(settings: dict[str, Any]) -> dict[str, Any]:
+    """Profile engine settings (SI floats) as JSON with ``{value, unit}`` for every length."""
+    out: dict[str, Any] = {}
+    for key, value in settings.items():
+        if key in _LENGTH_KEYS and value is not None:
+            out[key] = {"value": value, "unit": "m"}
+        elif key == "level_coefficients":
+            out[key] = {"value": value,
+                        "unit": [_power_unit(1 - k) for k in range(len(value))],
+                        "meaning": "ascending powers of x (m) of the removed form"}
+        elif key == "lc_iso4288" and isinstance(value, dict):
+            out[key] = _iso4288_units(value)
+        elif key == "positions" and isinstance(value, dict):
+            out[key] = {k: ({"value": v, "unit": "m"} if k in _POSITION_LENGTHS else v)
+                        for k, v in value.items()}
+        else:
+            out[key] = value
+    return out
+
+
+def _power_unit(p: int) -> str:
+    return {1: "m", 0: "", -1: "1/m"}.get(p, f"m^{p}")
+
+
+def _iso4288_units(choice: dict[str, Any]) -> dict[str, Any]:
+    unit = "m"
+    out = dict(choice)
+    for key in ("lc", "ls", "evaluation_length"):
+        out[key] = {"value": choice[key], "unit": "m"}
+    out["value"] = {"value": choice["value"], "unit": unit}
+    out["history"] = {"value": choice["history"], "unit": "m",
+                      "meaning": "[λc tried, parameter measured with it]"}
+    return out
+
+
+def stratified_parameters(rough: Any, rk_line: str
+                          ) -> tuple[dict[str, tuple[float, str]], list[str]]:
+    """ISO 13565-2 and -3 parameters of the evaluated roughness profile, with units.
+
+    Ratios in %, the areas A1, A2 in m·% (a printout's µm·% times 1e-6). A profile on which
+    they are undefined (flat, too few points) gets a note instead of the values.
+    """
+    import profiles
+    from profiles.errors import ProfileError
+
+    out: dict[str, tuple[float, str]] = {}
+    notes: list[str] = []
+    try:
+        rk = profiles.rk_parameters(rough, construction=rk_line)
+        out.update({"Rk": (rk.Rk, "m"), "Rpk": (rk.Rpk, "m"), "Rvk": (rk.Rvk, "m"),
+                    "Mr1": (100 * rk.Mr1, "%"), "Mr2": (100 * rk.Mr2, "%"),
+                    "A1": (100 * rk.A1, "m·%"), "A2": (100 * rk.A2, "m·%")})
+        pq = profiles.probability_parameters(rough)
+        out.update({"Rpq": (pq.Rpq, "m"), "Rvq": (pq.Rvq, "m"), "Rmq": (100 * pq.Rmq, "%")})
+    except ProfileError as exc:
+        if "unknown Rk construction" in str(exc):
+            raise SurfmetInputError(str(exc)) from None
+        notes.append(f"ISO 13565 parameters not computed: {exc}")
+    return out, notes
+
+
+def feature_values(rough: Any, dx: float, rz: float
+                   ) -> tuple[dict[str, tuple[float, str]], list[str]]:
+    """ISO 21920-2 feature parameters (Wolf pruning at 5 % of ``rz``), with units."""
+    import numpy as np
+
+    from profiles.errors import ProfileError
+    from profiles.features import feature_parameters
+
+    rough = np.asarray(rough, dtype=float)
+    if not np.isfinite(rough).all():
+        return {}, ["feature parameters not computed: the evaluated profile has "
+                    "non-measured points (the segmentation needs a continuous profile)"]
+    try:
+        fp = feature_parameters(rough, dx, rz=rz)
+    except ProfileError as exc:
+        return {}, [f"feature parameters not computed: {exc}"]
+    return {k: (v, fp.UNITS[k]) for k, v in fp.as_dict().items()}, []
