@@ -25,6 +25,7 @@ from surfmet.io.registry import (
 # magic detection ties, which ``priority`` settles.
 FORMAT_MODULES = (
     "x3p",
+    "x3p_writer",
     "sur",
     "plu",
     "opd",
