@@ -26,6 +26,7 @@ from surfmet.io.registry import (
 FORMAT_MODULES = (
     "x3p",
     "x3p_writer",
+    "mitutoyo",
     "sur",
     "plu",
     "opd",
