@@ -66,6 +66,8 @@ FILES = {
     "KautschukInfiniteFocus.x3p": ("x3p", 100),
     "synthetic-grid.xyz": ("xyz", 300),
     "mitutoyo_2_mock.xlsx": ("mitutoyo", 60),
+    "di-1.di": ("di", 200),
+    "di-2.di": ("di", 120),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

@@ -27,6 +27,7 @@ FORMAT_MODULES = (
     "x3p",
     "x3p_writer",
     "mitutoyo",
+    "di",
     "sur",
     "plu",
     "opd",
