@@ -68,6 +68,8 @@ FILES = {
     "mitutoyo_2_mock.xlsx": ("mitutoyo", 60),
     "di-1.di": ("di", 200),
     "di-2.di": ("di", 120),
+    "spot_1-1000nm.ibw": ("ibw", 120),
+    "10x10-one_channel_without_name.ibw": ("ibw", 300),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

@@ -28,6 +28,7 @@ FORMAT_MODULES = (
     "x3p_writer",
     "mitutoyo",
     "di",
+    "ibw",
     "sur",
     "plu",
     "opd",
