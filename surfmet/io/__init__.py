@@ -29,6 +29,7 @@ FORMAT_MODULES = (
     "mitutoyo",
     "di",
     "ibw",
+    "nid",
     "sur",
     "plu",
     "opd",
