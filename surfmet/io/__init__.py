@@ -30,6 +30,7 @@ FORMAT_MODULES = (
     "di",
     "ibw",
     "nid",
+    "mi",
     "sur",
     "plu",
     "opd",
