@@ -55,7 +55,7 @@ def test_hand_built_files_scale_and_voids(unicode):
     assert t.dx == pytest.approx(7.5e-6) and t.dy == pytest.approx(20e-6 / 3)
     assert np.isnan(t.heights[1, 2]) and np.isnan(t.heights).sum() == 1
     ok = ~np.isnan(t.heights)
-    np.testing.assert_allclose(t.heights[ok], v[ok] * 2e-9, rtol=1e-12)
+    np.testing.assert_allclose(t.heights[ok], v[ok].astype(np.float64) * 2e-9, rtol=1e-12)
 
 
 def test_truncated_and_broken_header_fail_in_one_line():
