@@ -25,6 +25,16 @@ from surfmet.io.registry import (
 # magic detection ties, which ``priority`` settles.
 FORMAT_MODULES = (
     "x3p",
+    "x3p_writer",
+    "mitutoyo",
+    "di",
+    "ibw",
+    "nid",
+    "mi",
+    "bcr",
+    "tmd",
+    "wsxm",
+    "netcdf",
     "sur",
     "plu",
     "opd",

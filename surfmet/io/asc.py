@@ -134,81 +134,62 @@ def _length(text: str, name: str, what: str) -> float:
         raise _fail(name, f"{what} {text!r} has an unknown unit") from None
 
 
-@register_reader(FORMAT, extensions=("asc", "txt", "mat"), description="text height matrix",
-                 magic=_is_asc, priority=70)
-def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = None,
-           height_unit: str | None = None) -> Topography:
-    """Read a text height matrix (see the module docstring for the flavours)."""
-    lines = decode_text(buf).splitlines()
-    header: dict[str, Any] = {}
-    first = 0
-    while first < len(lines) and not lines[first].strip():
-        first += 1
-    nrows = ncols = None
-    step = None
-    zfactor = None
+def _matrix_header(lines: list[str], first: int, name: str
+                   ) -> tuple[int, dict[str, Any], float | None, float | None, str | None]:
+    """Parse the ``h = .. w = ..`` header; return (first data line, header, step, z factor,
+    z unit text)."""
+    step = zfactor = None
     zunit_text = None
-    flavour = "bare"
-    start = first
-    if first < len(lines) and _SIZE_RE.match(lines[first]):
-        flavour = "matrix"
-        m = _SIZE_RE.match(lines[first])
-        nrows, ncols = int(m.group(1)), int(m.group(2))
-        header["h"], header["w"] = nrows, ncols
-        start = first + 1
-        while start < len(lines) and _numeric_row(lines[start]) is None:
-            line = lines[start].strip()
-            if (pm := _PIXEL_RE.match(line)) is not None:
-                unit = pm.group(2) or "m"
-                try:
-                    step = float(pm.group(1)) * length_factor(unit)
-                except SurfmetInputError:
-                    raise _fail(name, f"pixel size unit {unit!r} is not a length") from None
-                header["pixel_size"] = line.split("=", 1)[1].strip()
-                header["lateral_unit"] = unit
-            elif (um := _DATA_UNIT_RE.match(line)) is not None:
-                header["data_unit"] = um.group(1)
-            elif (fm := _FACTOR_RE.match(line)) is not None:
-                zunit_text = fm.group(1)
-                try:
-                    zfactor = float(fm.group(2)) * length_factor(zunit_text)
-                except SurfmetInputError:
-                    raise _fail(name, f"height conversion unit {zunit_text!r} is not a "
-                                      "length") from None
-                header["height_conversion_factor"] = float(fm.group(2))
-                header["height_conversion_unit"] = zunit_text
-            elif line and "=" in line:
-                key, value = line.split("=", 1)
-                header[key.strip()] = value.strip()
-            elif line:
-                raise _fail(name, f"cannot read header line {line[:60]!r}")
+    m = _SIZE_RE.match(lines[first])
+    header: dict[str, Any] = {"h": int(m.group(1)), "w": int(m.group(2))}
+    start = first + 1
+    while start < len(lines) and _numeric_row(lines[start]) is None:
+        line = lines[start].strip()
+        if (pm := _PIXEL_RE.match(line)) is not None:
+            unit = pm.group(2) or "m"
+            try:
+                step = float(pm.group(1)) * length_factor(unit)
+            except SurfmetInputError:
+                raise _fail(name, f"pixel size unit {unit!r} is not a length") from None
+            header["pixel_size"] = line.split("=", 1)[1].strip()
+            header["lateral_unit"] = unit
+        elif (um := _DATA_UNIT_RE.match(line)) is not None:
+            header["data_unit"] = um.group(1)
+        elif (fm := _FACTOR_RE.match(line)) is not None:
+            zunit_text = fm.group(1)
+            try:
+                zfactor = float(fm.group(2)) * length_factor(zunit_text)
+            except SurfmetInputError:
+                raise _fail(name, f"height conversion unit {zunit_text!r} is not a "
+                                  "length") from None
+            header["height_conversion_factor"] = float(fm.group(2))
+            header["height_conversion_unit"] = zunit_text
+        elif line and "=" in line:
+            key, value = line.split("=", 1)
+            header[key.strip()] = value.strip()
+        elif line:
+            raise _fail(name, f"cannot read header line {line[:60]!r}")
+        start += 1
+    return start, header, step, zfactor, zunit_text
+
+
+def _gwyddion_header(lines: list[str], start: int) -> tuple[int, dict[str, str]]:
+    """Skip comment lines; collect Gwyddion's ``# Key: value`` entries."""
+    gwy: dict[str, str] = {}
+    while start < len(lines):
+        line = lines[start].strip()
+        if line.startswith("#") or not line:
+            if (gm := _GWY_RE.match(line)) is not None:
+                gwy[gm.group(1).lower()] = gm.group(2)
             start += 1
-    else:
-        gwy: dict[str, str] = {}
-        while start < len(lines):
-            line = lines[start].strip()
-            if line.startswith("#") or not line:
-                if (gm := _GWY_RE.match(line)) is not None:
-                    gwy[gm.group(1).lower()] = gm.group(2)
-                start += 1
-                continue
-            break
-        if gwy:
-            flavour = "gwyddion"
-            header.update(gwy)
+            continue
+        break
+    return start, gwy
 
-    data = _parse_matrix(lines, start, name)
-    ny, nx = data.shape
-    check_grid(nx, ny, name, FORMAT)
-    if nrows is not None and (nrows, ncols) != (ny, nx):
-        raise _fail(name, f"the header announces h={nrows} rows of w={ncols} values but the "
-                          f"file holds {ny} rows of {nx} (truncated?)")
-    if nx * ny > MAX_POINTS:  # pragma: no cover - bounded by the file size anyway
-        raise _fail(name, "absurd grid")
 
-    metadata: dict[str, Any] = {"layout": flavour}
-    if header:
-        metadata["header"] = header
+def _pixel_sizes(flavour: str, header: dict[str, Any], step: float | None, nx: int, ny: int,
+                 dx: float | None, dy: float | None, name: str) -> tuple[float, float, bool]:
+    """Pixel sizes from the user, else the header, else 1 m; and whether they are known."""
     sx = sy = None
     if flavour == "gwyddion":
         if "width" in header:
@@ -228,29 +209,68 @@ def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = No
         sy = sx
     sx = check_step(sx, name, FORMAT, "x pixel size")
     sy = check_step(sy, name, FORMAT, "y pixel size")
+    return sx, sy, lateral_calibrated
 
+
+def _height_factor(flavour: str, header: dict[str, Any], zfactor: float | None,
+                   zunit_text: str | None, height_unit: str | None, name: str
+                   ) -> tuple[float, str]:
+    """Factor from file values to metres, and the unit it came from."""
     if height_unit is not None:
-        factor = length_factor(height_unit)
-        unit_name = height_unit
-    elif zfactor is not None:
-        factor = zfactor
-        unit_name = zunit_text or "m"
-    elif flavour == "matrix" and "data_unit" in header:
+        return length_factor(height_unit), height_unit
+    if zfactor is not None:
+        return zfactor, zunit_text or "m"
+    if flavour == "matrix" and "data_unit" in header:
         unit_name = str(header["data_unit"])
         try:
-            factor = length_factor(unit_name)
+            return length_factor(unit_name), unit_name
         except SurfmetInputError:
             raise _fail(name, f"data unit {unit_name!r} is not a length and the header gives no "
                               "height conversion factor; pass height_unit=") from None
-    elif flavour == "gwyddion" and "value units" in header:
+    if flavour == "gwyddion" and "value units" in header:
         unit_name = header["value units"]
         try:
-            factor = length_factor(unit_name)
+            return length_factor(unit_name), unit_name
         except SurfmetInputError:
             raise _fail(name, f"value unit {unit_name!r} is not a length; pass "
                               "height_unit=") from None
+    return 1.0, "m"
+
+
+@register_reader(FORMAT, extensions=("asc", "txt", "mat"), description="text height matrix",
+                 magic=_is_asc, priority=70)
+def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = None,
+           height_unit: str | None = None) -> Topography:
+    """Read a text height matrix (see the module docstring for the flavours)."""
+    lines = decode_text(buf).splitlines()
+    header: dict[str, Any] = {}
+    first = 0
+    while first < len(lines) and not lines[first].strip():
+        first += 1
+    step = zfactor = None
+    zunit_text = None
+    if first < len(lines) and _SIZE_RE.match(lines[first]):
+        flavour = "matrix"
+        start, header, step, zfactor, zunit_text = _matrix_header(lines, first, name)
     else:
-        factor, unit_name = 1.0, "m"
+        start, gwy = _gwyddion_header(lines, first)
+        flavour = "gwyddion" if gwy else "bare"
+        header.update(gwy)
+
+    data = _parse_matrix(lines, start, name)
+    ny, nx = data.shape
+    check_grid(nx, ny, name, FORMAT)
+    if flavour == "matrix" and (header["h"], header["w"]) != (ny, nx):
+        raise _fail(name, f"the header announces h={header['h']} rows of w={header['w']} "
+                          f"values but the file holds {ny} rows of {nx} (truncated?)")
+    if nx * ny > MAX_POINTS:  # pragma: no cover - bounded by the file size anyway
+        raise _fail(name, "absurd grid")
+
+    metadata: dict[str, Any] = {"layout": flavour}
+    if header:
+        metadata["header"] = header
+    sx, sy, lateral_calibrated = _pixel_sizes(flavour, header, step, nx, ny, dx, dy, name)
+    factor, unit_name = _height_factor(flavour, header, zfactor, zunit_text, height_unit, name)
     metadata.update({
         "height_unit": unit_name,
         "lateral_unit": header.get("lateral_unit", "m") if flavour == "matrix" else "m",
@@ -259,6 +279,5 @@ def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = No
     if flavour == "matrix" and "data_unit" in header:
         metadata["data_unit"] = header["data_unit"]
     return Topography(data * factor, sx, sy, metadata)
-
 
 __all__ = ["decode"]

@@ -210,11 +210,8 @@ def _results(md: dict[str, Any], rows: list[list[str]]) -> None:
                                           "end": quantity(max(start, end), "m")}
 
 
-@register_reader(FORMAT, extensions=("csv",), description="Dektak profilometer CSV export",
-                 magic=_is_dektak, priority=40)
-def decode(buf: bytes, name: str) -> Profile:
-    """Read a Dektak CSV export into a :class:`~surfmet.model.Profile`."""
-    lines = decode_text(buf).splitlines()
+def _sections(lines: list[str]) -> tuple[dict[str, str], list[list[str]], int | None]:
+    """Scan parameters, analytical-result rows and the first line after 'Scan Data'."""
     section = ""
     params: dict[str, str] = {}
     result_rows: list[list[str]] = []
@@ -235,6 +232,39 @@ def decode(buf: bytes, name: str) -> Profile:
                 params[key.strip()] = value.strip()
         elif section == "analytical results":
             result_rows.append(line.split(","))
+    return params, result_rows, data_start
+
+
+def _columns(lines: list[str], first: int, xu: tuple[str, float], zu: tuple[str, float],
+             name: str) -> tuple[np.ndarray, np.ndarray]:
+    """The x and z columns from line ``first`` on, in metres."""
+    xs: list[str] = []
+    zs: list[str] = []
+    for j in range(first, len(lines)):
+        line = lines[j].strip()
+        if not line:
+            continue
+        cells = line.split(",")
+        if len(cells) < 2:
+            raise _fail(name, f"data line {j + 1} ({line[:40]!r}) has fewer than two columns")
+        xs.append(cells[0].strip())
+        zs.append(cells[1].strip() or "nan")
+    if not xs:
+        raise _fail(name, "the 'Scan Data' section holds no points")
+    try:
+        x = np.array(xs, dtype=np.float64) * xu[1]
+        z = np.array(zs, dtype=np.float64) * zu[1]
+    except ValueError:
+        raise _fail(name, "a data value is not a number (damaged file?)") from None
+    return x, z
+
+
+@register_reader(FORMAT, extensions=("csv",), description="Dektak profilometer CSV export",
+                 magic=_is_dektak, priority=40)
+def decode(buf: bytes, name: str) -> Profile:
+    """Read a Dektak CSV export into a :class:`~surfmet.model.Profile`."""
+    lines = decode_text(buf).splitlines()
+    params, result_rows, data_start = _sections(lines)
     if data_start is None:
         raise _fail(name, "no 'Scan Data' section (truncated file?)")
 
@@ -251,24 +281,7 @@ def decode(buf: bytes, name: str) -> Profile:
     zu = _column_unit(titles[1])
     if xu is None or zu is None:
         raise _fail(name, f"no length units in the column titles {titles[:2]!r}")
-    xs: list[str] = []
-    zs: list[str] = []
-    for j in range(k + 1, len(lines)):
-        line = lines[j].strip()
-        if not line:
-            continue
-        cells = line.split(",")
-        if len(cells) < 2:
-            raise _fail(name, f"data line {j + 1} ({line[:40]!r}) has fewer than two columns")
-        xs.append(cells[0].strip())
-        zs.append(cells[1].strip() or "nan")
-    if not xs:
-        raise _fail(name, "the 'Scan Data' section holds no points")
-    try:
-        x = np.array(xs, dtype=np.float64) * xu[1]
-        z = np.array(zs, dtype=np.float64) * zu[1]
-    except ValueError:
-        raise _fail(name, "a data value is not a number (damaged file?)") from None
+    x, z = _columns(lines, k + 1, xu, zu, name)
     if not np.all(np.isfinite(x)):
         raise _fail(name, "a lateral position is not finite")
     z[~np.isfinite(z)] = np.nan

@@ -140,25 +140,10 @@ def _type_name(datatype: int) -> str:
     return _TYPE_NAMES.get(datatype & _TYPE_MASK & 0x3FFF, f"type 0x{datatype:08x}")
 
 
-@register_reader(FORMAT, extensions=("frt",), description="FRT MicroProf",
-                 magic=_is_frt, priority=10)
-def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
-    """Read a MicroProf ``.frt`` file into a :class:`~surfmet.model.Topography`.
-
-    Parameters
-    ----------
-    channel : int, optional
-        Index of an image of the multi-image buffer (block 0x007d). Default: the first
-        topography image, else the single image of block 0x000b.
-    """
-    version, blocks = read_blocks(buf, name)
-    r = ByteReader(buf, name, FORMAT)
-    xrange_, yrange_ = _block(r, blocks, 0x0067, "<dd", "scan size")
-    (_, zscale) = _block(r, blocks, 0x006C, "<Id", "z scale")
-    if not (np.isfinite(zscale) and zscale != 0):
-        r.fail(f"z scale {zscale!r} (block 0x006c) is not a usable number")
-
-    images = _images(r, blocks)
+def _pick_image(r: ByteReader, blocks: dict[int, tuple[int, int]],
+                images: list[dict[str, Any]], channel: int | None, name: str
+                ) -> dict[str, Any]:
+    """The requested image, else the first topography image, else block 0x000b's image."""
     if channel is not None:
         try:
             index = int(channel)
@@ -184,6 +169,28 @@ def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
                      "offset": offset}
         else:
             r.fail("the file holds no topography image")
+    return image
+
+
+@register_reader(FORMAT, extensions=("frt",), description="FRT MicroProf",
+                 magic=_is_frt, priority=10)
+def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
+    """Read a MicroProf ``.frt`` file into a :class:`~surfmet.model.Topography`.
+
+    Parameters
+    ----------
+    channel : int, optional
+        Index of an image of the multi-image buffer (block 0x007d). Default: the first
+        topography image, else the single image of block 0x000b.
+    """
+    version, blocks = read_blocks(buf, name)
+    r = ByteReader(buf, name, FORMAT)
+    xrange_, yrange_ = _block(r, blocks, 0x0067, "<dd", "scan size")
+    (_, zscale) = _block(r, blocks, 0x006C, "<Id", "z scale")
+    if not (np.isfinite(zscale) and zscale != 0):
+        r.fail(f"z scale {zscale!r} (block 0x006c) is not a usable number")
+
+    image = _pick_image(r, blocks, _images(r, blocks), channel, name)
     if not image["datatype"] & _TYPE_MASK & _HEIGHT_TYPES:
         r.fail(f"image {channel} is a {_type_name(image['datatype'])} channel, not heights")
 

@@ -75,12 +75,8 @@ def _s(raw: bytes) -> str:
     return raw.split(b"\0", 1)[0].decode("latin-1").strip()
 
 
-@register_reader(FORMAT, extensions=("dat",),
-                 description="Zygo MetroPro DAT (interferometer phase map)",
-                 magic=_is_metropro, priority=10)
-def decode(buf: bytes, name: str) -> Topography:
-    """Read the phase map of a MetroPro file as heights in metres."""
-    r = ByteReader(buf, name, FORMAT)
+def _header(r: ByteReader, buf: bytes) -> dict[str, Any]:
+    """The header fields surfmet uses, by their MetroPro names (big endian)."""
     if buf[:4] not in MAGICS:
         r.fail("missing the MetroPro magic number 0x881B036F/0370/0371")
     fmt_by_magic = MAGICS[buf[:4]]
@@ -96,98 +92,121 @@ def decode(buf: bytes, name: str) -> Topography:
     def u(fmt: str, off: int) -> tuple[Any, ...]:
         return r.unpack_at(off, ">" + fmt, "header")
 
-    (sw_type,) = u("h", 10)
-    sw_date = _s(buf[12:42])
-    vmaj, vmin, vbug = u("3h", 42)
-    _, _, ac_w, ac_h, ac_buckets, ac_range, ac_bytes = u("hhHHHhI", 48)
-    _, _, cn_w, cn_h, cn_bytes = u("hhHHI", 64)
-    (timestamp,) = u("i", 76)
-    comment = _s(buf[80:162])
-    (source,) = u("h", 162)
-    scale, wavelength, na, obliquity, magnification, lateral = u("6f", 164)
-    (acq_type,) = u("h", 188)
-    (phase_res,) = u("h", 218)
-    (sign,) = u("h", 232)
-    cam_w, cam_h, sys_type, sys_board, sys_serial, inst_id = u("hhhhHh", 234)
-    objective = _s(buf[246:258])
-    part = _s(buf[258:298])
-    part_serial = _s(buf[320:360])
-    scan_descr = _s(buf[408:428])
+    h: dict[str, Any] = {"header_format": header_format, "header_size": header_size}
+    (h["sw_type"],) = u("h", 10)
+    h["sw_date"] = _s(buf[12:42])
+    h["version"] = u("3h", 42)
+    _, _, h["ac_w"], h["ac_h"], h["ac_buckets"], h["ac_range"], h["ac_bytes"] = u(
+        "hhHHHhI", 48)
+    _, _, h["cn_w"], h["cn_h"], h["cn_bytes"] = u("hhHHI", 64)
+    (h["timestamp"],) = u("i", 76)
+    h["comment"] = _s(buf[80:162])
+    (h["source"],) = u("h", 162)
+    (h["scale"], h["wavelength"], h["na"], h["obliquity"], h["magnification"],
+     h["lateral"]) = u("6f", 164)
+    (h["acq_type"],) = u("h", 188)
+    (h["phase_res"],) = u("h", 218)
+    (h["sign"],) = u("h", 232)
+    (h["cam_w"], h["cam_h"], h["sys_type"], h["sys_board"], h["sys_serial"],
+     h["inst_id"]) = u("hhhhHh", 234)
+    h["objective"] = _s(buf[246:258])
+    h["part"] = _s(buf[258:298])
+    h["part_serial"] = _s(buf[320:360])
+    h["scan_descr"] = _s(buf[408:428])
+    return h
 
-    if ac_bytes != 2 * ac_w * ac_h * ac_buckets:
-        r.fail(f"intensity size {ac_bytes} bytes does not match {ac_buckets} buckets of "
-               f"{ac_w} x {ac_h} points")
-    if cn_w == 0 or cn_h == 0:
+
+def _check_header(r: ByteReader, h: dict[str, Any]) -> None:
+    if h["ac_bytes"] != 2 * h["ac_w"] * h["ac_h"] * h["ac_buckets"]:
+        r.fail(f"intensity size {h['ac_bytes']} bytes does not match {h['ac_buckets']} "
+               f"buckets of {h['ac_w']} x {h['ac_h']} points")
+    if h["cn_w"] == 0 or h["cn_h"] == 0:
         r.fail("the file holds no phase data (phase map of zero size)")
-    if cn_bytes != 4 * cn_w * cn_h:
-        r.fail(f"phase size {cn_bytes} bytes does not match {cn_w} x {cn_h} points")
-    if phase_res not in PHASE_RESOLUTION:
-        r.fail(f"phase_res {phase_res} is not 0, 1 or 2")
-    for value, what in ((scale, "interferometric scale factor"), (wavelength, "wavelength"),
-                        (obliquity, "obliquity factor")):
+    if h["cn_bytes"] != 4 * h["cn_w"] * h["cn_h"]:
+        r.fail(f"phase size {h['cn_bytes']} bytes does not match {h['cn_w']} x {h['cn_h']} "
+               "points")
+    if h["phase_res"] not in PHASE_RESOLUTION:
+        r.fail(f"phase_res {h['phase_res']} is not 0, 1 or 2")
+    for key, what in (("scale", "interferometric scale factor"), ("wavelength", "wavelength"),
+                      ("obliquity", "obliquity factor")):
+        value = h[key]
         if not (np.isfinite(value) and value > 0):
             r.fail(f"{what} {value!r} is not a positive number")
-    nx, ny = check_grid(cn_w, cn_h, name, FORMAT)
-    r.seek(header_size + ac_bytes, "phase data")
+
+
+def _metadata(h: dict[str, Any], factor: float, calibrated: bool) -> dict[str, Any]:
+    vmaj, vmin, vbug = h["version"]
+    md: dict[str, Any] = {
+        "format": FORMAT,
+        "vendor": "Zygo",
+        "software": SOFTWARE.get(h["sw_type"], f"type {h['sw_type']}"),
+        "software_version": f"{vmaj}.{vmin}.{vbug}",
+        "header_format": h["header_format"],
+        "height_unit": "m",
+        "lateral_unit": "m",
+        "lateral_calibrated": calibrated,
+        "wavelength": float(h["wavelength"]),
+        "interferometric_scale_factor": float(h["scale"]),
+        "obliquity_factor": float(h["obliquity"]),
+        "phase_res": h["phase_res"],
+        "phase_resolution": PHASE_RESOLUTION[h["phase_res"]],
+        "height_scale_factor": factor,
+        "sign": h["sign"],
+        "intensity_buckets": h["ac_buckets"],
+        "intensity_range": h["ac_range"],
+        "camera_size": (h["cam_w"], h["cam_h"]),
+        "system_board": h["sys_board"],
+        "instrument_serial": str(h["sys_serial"]),
+        "instrument_id": h["inst_id"],
+        "acquisition_type": h["acq_type"],
+        "source_type": "instrument" if h["source"] == 0 else "generated",
+    }
+    if h["sys_type"] in SYSTEM_TYPES:
+        md["instrument"] = SYSTEM_TYPES[h["sys_type"]]
+    else:
+        md["system_type"] = h["sys_type"]
+    if h["na"] > 0:
+        md["numerical_aperture"] = float(h["na"])
+    if h["magnification"] > 0:
+        md["magnification"] = float(h["magnification"])
+    if 0 < h["timestamp"]:
+        md["date"] = _dt.datetime.fromtimestamp(h["timestamp"], _dt.timezone.utc).isoformat()
+    for key, value in (("software_date", h["sw_date"]), ("comment", h["comment"]),
+                       ("objective", h["objective"]), ("part", h["part"]),
+                       ("part_serial", h["part_serial"]),
+                       ("scan_description", h["scan_descr"])):
+        if value:
+            md[key] = value
+    return md
+
+@register_reader(FORMAT, extensions=("dat",),
+                 description="Zygo MetroPro DAT (interferometer phase map)",
+                 magic=_is_metropro, priority=10)
+def decode(buf: bytes, name: str) -> Topography:
+    """Read the phase map of a MetroPro file as heights in metres."""
+    r = ByteReader(buf, name, FORMAT)
+    h = _header(r, buf)
+    _check_header(r, h)
+    nx, ny = check_grid(h["cn_w"], h["cn_h"], name, FORMAT)
+    r.seek(h["header_size"] + h["ac_bytes"], "phase data")
     phase = r.array(">i4", nx * ny, "phase data")
 
-    resolution = PHASE_RESOLUTION[phase_res]
-    factor = float(scale) * float(obliquity) * float(wavelength) / resolution
-    if sign:
+    resolution = PHASE_RESOLUTION[h["phase_res"]]
+    factor = float(h["scale"]) * float(h["obliquity"]) * float(h["wavelength"]) / resolution
+    if h["sign"]:
         factor = -factor
     with np.errstate(over="ignore", invalid="ignore"):
         z = phase.astype(np.float64) * factor
     if not np.isfinite(factor) or np.isinf(z).any():
         r.fail("scale factor x obliquity x wavelength overflows")
     z[phase >= INVALID_PHASE] = np.nan
+    lateral = h["lateral"]
     if lateral > 0 and np.isfinite(lateral):
         dx = check_step(float(lateral), name, FORMAT, "lateral resolution")
         calibrated = True
     else:
         # Without a lateral calibration the pixel is the only unit there is.
         dx, calibrated = 1.0, False
-
-    md: dict[str, Any] = {
-        "format": FORMAT,
-        "vendor": "Zygo",
-        "software": SOFTWARE.get(sw_type, f"type {sw_type}"),
-        "software_version": f"{vmaj}.{vmin}.{vbug}",
-        "header_format": header_format,
-        "height_unit": "m",
-        "lateral_unit": "m",
-        "lateral_calibrated": calibrated,
-        "wavelength": float(wavelength),
-        "interferometric_scale_factor": float(scale),
-        "obliquity_factor": float(obliquity),
-        "phase_res": phase_res,
-        "phase_resolution": resolution,
-        "height_scale_factor": factor,
-        "sign": sign,
-        "intensity_buckets": ac_buckets,
-        "intensity_range": ac_range,
-        "camera_size": (cam_w, cam_h),
-        "system_board": sys_board,
-        "instrument_serial": str(sys_serial),
-        "instrument_id": inst_id,
-        "acquisition_type": acq_type,
-        "source_type": "instrument" if source == 0 else "generated",
-    }
-    if sys_type in SYSTEM_TYPES:
-        md["instrument"] = SYSTEM_TYPES[sys_type]
-    else:
-        md["system_type"] = sys_type
-    if na > 0:
-        md["numerical_aperture"] = float(na)
-    if magnification > 0:
-        md["magnification"] = float(magnification)
-    if 0 < timestamp:
-        md["date"] = _dt.datetime.fromtimestamp(timestamp, _dt.timezone.utc).isoformat()
-    for key, value in (("software_date", sw_date), ("comment", comment),
-                       ("objective", objective), ("part", part),
-                       ("part_serial", part_serial), ("scan_description", scan_descr)):
-        if value:
-            md[key] = value
-    return Topography(z.reshape(ny, nx), dx, dx, md)
-
+    return Topography(z.reshape(ny, nx), dx, dx, _metadata(h, factor, calibrated))
 
 __all__ = ["decode"]

@@ -117,20 +117,10 @@ def _date(date: Any, time: Any) -> str | None:
     return None
 
 
-@register_reader(FORMAT, extensions=("opd",),
-                 description="Wyko / Bruker Vision OPD (interferometer)",
-                 magic=_is_opd, priority=10)
-def decode(buf: bytes, name: str) -> Topography:
-    """Read the primary height array of an OPD file (heights in metres)."""
-    r = ByteReader(buf, name, FORMAT)
-    if not _is_opd(buf):
-        r.fail("missing the '\\x01\\x00Directory' signature")
-    blocks = _directory(r)
-    by_name: dict[str, dict[str, Any]] = {}
-    for b in blocks:
-        by_name.setdefault(b["name"], b)
-    values = {b["name"]: _value(buf, b) for b in blocks}
-
+def _height_array(r: ByteReader, by_name: dict[str, dict[str, Any]],
+                  values: dict[str, Any], name: str
+                  ) -> tuple[dict[str, Any], np.ndarray, int, int, int, np.dtype]:
+    """The primary height array: its block, raw values, nx, ny, element size, dtype."""
     primary = values.get("PrimaryData2D")
     candidates = ([primary] if isinstance(primary, str) else []) + list(DATA_NAMES)
     data_block = None
@@ -152,6 +142,42 @@ def decode(buf: bytes, name: str) -> Topography:
     nx, ny = check_grid(ncols, nrows, name, FORMAT, available=data_block["size"] - 6,
                         itemsize=elsize)
     raw = r.array(dtype, nx * ny, f"array {data_block['name']!r}")
+
+    return data_block, raw, nx, ny, elsize, dtype
+
+
+def _add_optional_metadata(md: dict[str, Any], values: dict[str, Any],
+                           blocks: list[dict[str, Any]]) -> None:
+    date = _date(values.get("Date"), values.get("Time"))
+    if date:
+        md["date"] = date
+    for key, label in (("Magnification", "magnification"), ("DataSetName", "title"),
+                       ("Title", "title"), ("MeasMode", "measurement_mode"),
+                       ("DataKind", "data_kind"), ("DataFormat", "data_format")):
+        v = values.get(key)
+        if v not in (None, "") and label not in md:
+            md[label] = v
+    unknown = sorted({b["type"] for b in blocks} - set(BLOCK_TYPES) - {15})
+    md["block_types"] = sorted({b["type"] for b in blocks})
+    if unknown:
+        md["unknown_block_types"] = unknown
+
+
+@register_reader(FORMAT, extensions=("opd",),
+                 description="Wyko / Bruker Vision OPD (interferometer)",
+                 magic=_is_opd, priority=10)
+def decode(buf: bytes, name: str) -> Topography:
+    """Read the primary height array of an OPD file (heights in metres)."""
+    r = ByteReader(buf, name, FORMAT)
+    if not _is_opd(buf):
+        r.fail("missing the '\\x01\\x00Directory' signature")
+    blocks = _directory(r)
+    by_name: dict[str, dict[str, Any]] = {}
+    for b in blocks:
+        by_name.setdefault(b["name"], b)
+    values = {b["name"]: _value(buf, b) for b in blocks}
+
+    data_block, raw, nx, ny, elsize, dtype = _height_array(r, by_name, values, name)
 
     wavelength = values.get("Wavelength")
     if not isinstance(wavelength, (int, float)) or not np.isfinite(wavelength) \
@@ -200,19 +226,7 @@ def decode(buf: bytes, name: str) -> Topography:
         "data_block": data_block["name"],
         "data_type": str(dtype),
     }
-    date = _date(values.get("Date"), values.get("Time"))
-    if date:
-        md["date"] = date
-    for key, label in (("Magnification", "magnification"), ("DataSetName", "title"),
-                       ("Title", "title"), ("MeasMode", "measurement_mode"),
-                       ("DataKind", "data_kind"), ("DataFormat", "data_format")):
-        v = values.get(key)
-        if v not in (None, "") and label not in md:
-            md[label] = v
-    unknown = sorted({b["type"] for b in blocks} - set(BLOCK_TYPES) - {15})
-    md["block_types"] = sorted({b["type"] for b in blocks})
-    if unknown:
-        md["unknown_block_types"] = unknown
+    _add_optional_metadata(md, values, blocks)
     return Topography(heights, dx, dy, md)
 
 

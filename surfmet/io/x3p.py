@@ -1,4 +1,4 @@
-"""ISO 25178-72 / ISO 5436-2 XML ``.x3p`` files: reader and writer.
+"""ISO 25178-72 / ISO 5436-2 XML ``.x3p`` files: the reader.
 
 An X3P file is a zip archive holding (schema ``iso5436_2.xsd`` of the openGPS project,
 http://www.opengps.eu/2008/ISO5436_2):
@@ -32,14 +32,11 @@ differs from what the header implies, or whose declared size is more than a defl
 can expand to, is refused before anything is allocated (no zip bombs); MD5 checksums are
 verified (``verify_checksum=False`` skips that).
 
-The writer stores SUR or PRF data as float64 (``D``), NaN for non-measured points plus a
-valid-points file when there are any, and writes both MD5 checksums; reading its output
-returns bit-identical heights, the same NaN positions, dx, dy and units.
+The writer lives in :mod:`surfmet.io.x3p_writer`.
 """
 
 from __future__ import annotations
 
-import datetime as _dt
 import hashlib
 import io
 import math
@@ -48,19 +45,15 @@ import zipfile
 import zlib
 from typing import Any
 from xml.etree import ElementTree as ET
-from xml.sax.saxutils import escape
 
 import numpy as np
 
-from surfmet._version import __version__
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet.errors import SurfmetFormatError
 from surfmet.io._binary import MAX_POINTS, check_grid, check_step
-from surfmet.io.registry import register_reader, register_writer
+from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
 FORMAT = "x3p"
-NAMESPACE = "http://www.opengps.eu/2008/ISO5436_2"
-REVISION = "ISO5436 - 2000"
 _ZIP_MAGIC = b"PK\x03\x04"
 # main.xml of a real file is a few kB; 16 MB of XML is never a header.
 MAX_XML_BYTES = 16 * 2**20
@@ -75,8 +68,6 @@ DTYPES: dict[str, np.dtype] = {
     "F": np.dtype("<f4"),
     "D": np.dtype("<f8"),
 }
-_PROBING_TYPES = ("Contacting", "NonContacting", "Software")
-_DATE_RE = re.compile(r"^\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}(\.\d+)?(Z|[+-]\d{2}:\d{2})?$")
 
 
 def _is_x3p(buf: bytes) -> bool:
@@ -240,6 +231,130 @@ def _record2(root: ET.Element) -> dict[str, Any]:
     return md
 
 
+def _open_header(zf: zipfile.ZipFile, name: str
+                 ) -> tuple[bytes, ET.Element, ET.Element, ET.Element]:
+    """``main.xml`` raw and parsed, with its Record1 and Record3."""
+    if "main.xml" not in zf.namelist():
+        raise _fail(name, "the zip archive has no main.xml (not an X3P file)")
+    raw_xml = _read_member(zf, "main.xml", name, None, MAX_XML_BYTES, "header")
+    root = _parse_xml(raw_xml, name)
+    if _local(root.tag) != "ISO5436_2":
+        raise _fail(name, f"main.xml root element is {_local(root.tag)!r}, not ISO5436_2")
+    r1 = _child(root, "Record1")
+    r3 = _child(root, "Record3")
+    if r1 is None or r3 is None:
+        raise _fail(name, "main.xml lacks Record1 or Record3")
+    return raw_xml, root, r1, r3
+
+
+def _feature_type(r1: ET.Element, name: str) -> str:
+    feature = (_text(r1, "FeatureType") or "").upper()
+    if feature == "PCL":
+        raise _fail(
+            name,
+            "FeatureType PCL (unordered point cloud) is not supported: surfmet reads "
+            "gridded areal (SUR) and profile (PRF) data only",
+        )
+    if feature not in ("SUR", "PRF"):
+        raise _fail(name, f"unknown FeatureType {feature!r} (expected SUR, PRF or PCL)")
+    return feature
+
+
+def _axes(r1: ET.Element, name: str) -> tuple[dict[str, Any], dict[str, Any], dict[str, Any]]:
+    """The CX, CY, CZ axes, checked to describe gridded data with a known z type."""
+    axes = _child(r1, "Axes")
+    cx, cy, cz = (_axis(axes, t, name) for t in ("CX", "CY", "CZ"))
+    for tag, ax in (("CX", cx), ("CY", cy)):
+        if ax["type"] != "I":
+            raise _fail(
+                name,
+                f"{tag} AxisType is {ax['type']!r}: only incremental (I) x/y axes, i.e. "
+                "gridded data, are supported",
+            )
+    if cz["type"] != "A":
+        raise _fail(name, f"CZ AxisType must be 'A' (absolute), got {cz['type']!r}")
+    if cz["dtype"] not in DTYPES:
+        raise _fail(name, f"CZ DataType {cz['dtype']!r} is not one of I, L, F, D")
+    return cx, cy, cz
+
+
+def _matrix_size(r3: ET.Element, feature: str, name: str) -> tuple[int, int]:
+    mdim = _child(r3, "MatrixDimension")
+    if mdim is None:
+        if _child(r3, "ListDimension") is not None:
+            raise _fail(name, "Record3 holds an unordered list (ListDimension); only "
+                              "matrix (gridded) data are supported")
+        raise _fail(name, "Record3/MatrixDimension is missing")
+    nx = _int(mdim, "SizeX", name, "Record3/MatrixDimension")
+    ny = _int(mdim, "SizeY", name, "Record3/MatrixDimension")
+    nz = _int(mdim, "SizeZ", name, "Record3/MatrixDimension")
+    if nz != 1:
+        raise _fail(name, f"SizeZ is {nz}: multi-layer matrices are not supported")
+    nx, ny = check_grid(nx, ny, name, FORMAT)
+    if feature == "PRF" and ny != 1:
+        raise _fail(name, f"a PRF feature must have SizeY = 1, got {ny}")
+    return nx, ny
+
+
+def _point_data(zf: zipfile.ZipFile, r3: ET.Element, n: int, dtype: np.dtype, name: str,
+                verify_checksum: bool, md: dict[str, Any]
+                ) -> tuple[np.ndarray, np.ndarray | None]:
+    """The raw point values and the valid-point mask (None: all valid), linked or inline."""
+    link = _child(r3, "DataLink")
+    if link is None:
+        dlist = _child(r3, "DataList")
+        if dlist is None:
+            raise _fail(name, "Record3 has neither DataLink nor DataList")
+        return _datalist(dlist, n, dtype, name)
+    member = _text(link, "PointDataLink")
+    if not member:
+        raise _fail(name, "Record3/DataLink/PointDataLink is empty")
+    data = _read_member(zf, member, name, n * dtype.itemsize, MAX_POINTS * 8, "point data")
+    if verify_checksum:
+        _check_md5(data, _text(link, "MD5ChecksumPointData"), name, member)
+    raw = np.frombuffer(data, dtype=dtype, count=n)
+    vlink = _text(link, "ValidPointsLink")
+    if not vlink:
+        return raw, None
+    vdata = _read_member(zf, vlink, name, (n + 7) // 8, MAX_POINTS // 8 + 1,
+                         "valid-points file")
+    if verify_checksum:
+        _check_md5(vdata, _text(link, "MD5ChecksumValidPoints"), name, vlink)
+    bits = np.unpackbits(np.frombuffer(vdata, np.uint8), bitorder="little")
+    md["valid_points_file"] = vlink
+    return raw, bits[:n].astype(bool)
+
+
+def _heights(raw: np.ndarray, valid: np.ndarray | None, cz: dict[str, Any]) -> np.ndarray:
+    """``offset + value * increment`` in float64, NaN where invalid or not finite."""
+    inc = cz["increment"]
+    off = cz["offset"]
+    with np.errstate(invalid="ignore", over="ignore"):  # signalling NaNs, overflow
+        z = raw.astype(np.float64)
+        if inc is not None and inc != 1.0:
+            z = z * inc
+        if off is not None and off != 0.0:
+            z = z + off
+    bad = ~np.isfinite(z)
+    if valid is not None:
+        bad |= ~valid
+    if bad.any():
+        z[bad] = np.nan
+    return z
+
+
+def _axes_metadata(cx: dict[str, Any], cy: dict[str, Any], cz: dict[str, Any]
+                   ) -> dict[str, Any]:
+    md: dict[str, Any] = dict(height_unit="m", lateral_unit="m", lateral_calibrated=True,
+                              data_type=cz["dtype"])
+    if cz["dtype"] in ("I", "L"):
+        md["z_increment"] = 1.0 if cz["increment"] is None else cz["increment"]
+    for key, ax in (("x_offset", cx), ("y_offset", cy), ("z_offset", cz)):
+        if ax["offset"] is not None:
+            md[key] = ax["offset"]
+    return md
+
+
 @register_reader(FORMAT, extensions=("x3p",),
                  description="ISO 25178-72 XML 3D surface profile (X3P, zip + XML)",
                  magic=_is_x3p, priority=20)
@@ -264,115 +379,25 @@ def decode(buf: bytes, name: str, verify_checksum: bool = True) -> Topography | 
     except (zipfile.BadZipFile, OSError, ValueError, EOFError) as exc:
         raise _fail(name, f"not a readable zip archive: truncated or corrupted ({exc})") from None
     with zf:
-        names = zf.namelist()
-        if "main.xml" not in names:
-            raise _fail(name, "the zip archive has no main.xml (not an X3P file)")
-        raw_xml = _read_member(zf, "main.xml", name, None, MAX_XML_BYTES, "header")
-        root = _parse_xml(raw_xml, name)
-        if _local(root.tag) != "ISO5436_2":
-            raise _fail(name, f"main.xml root element is {_local(root.tag)!r}, not ISO5436_2")
-        r1 = _child(root, "Record1")
-        r3 = _child(root, "Record3")
-        if r1 is None or r3 is None:
-            raise _fail(name, "main.xml lacks Record1 or Record3")
+        raw_xml, root, r1, r3 = _open_header(zf, name)
         md: dict[str, Any] = {"format": FORMAT}
         revision = _text(r1, "Revision")
         if revision:
             md["revision"] = revision
-        feature = (_text(r1, "FeatureType") or "").upper()
-        if feature == "PCL":
-            raise _fail(
-                name,
-                "FeatureType PCL (unordered point cloud) is not supported: surfmet reads "
-                "gridded areal (SUR) and profile (PRF) data only",
-            )
-        if feature not in ("SUR", "PRF"):
-            raise _fail(name, f"unknown FeatureType {feature!r} (expected SUR, PRF or PCL)")
+        feature = _feature_type(r1, name)
         md["feature_type"] = feature
-        axes = _child(r1, "Axes")
-        cx, cy, cz = (_axis(axes, t, name) for t in ("CX", "CY", "CZ"))
-        for tag, ax in (("CX", cx), ("CY", cy)):
-            if ax["type"] != "I":
-                raise _fail(
-                    name,
-                    f"{tag} AxisType is {ax['type']!r}: only incremental (I) x/y axes, i.e. "
-                    "gridded data, are supported",
-                )
-        if cz["type"] != "A":
-            raise _fail(name, f"CZ AxisType must be 'A' (absolute), got {cz['type']!r}")
-        if cz["dtype"] not in DTYPES:
-            raise _fail(name, f"CZ DataType {cz['dtype']!r} is not one of I, L, F, D")
-        dtype = DTYPES[cz["dtype"]]
-
-        mdim = _child(r3, "MatrixDimension")
-        if mdim is None:
-            if _child(r3, "ListDimension") is not None:
-                raise _fail(name, "Record3 holds an unordered list (ListDimension); only "
-                                  "matrix (gridded) data are supported")
-            raise _fail(name, "Record3/MatrixDimension is missing")
-        nx = _int(mdim, "SizeX", name, "Record3/MatrixDimension")
-        ny = _int(mdim, "SizeY", name, "Record3/MatrixDimension")
-        nz = _int(mdim, "SizeZ", name, "Record3/MatrixDimension")
-        if nz != 1:
-            raise _fail(name, f"SizeZ is {nz}: multi-layer matrices are not supported")
-        nx, ny = check_grid(nx, ny, name, FORMAT)
-        if feature == "PRF" and ny != 1:
-            raise _fail(name, f"a PRF feature must have SizeY = 1, got {ny}")
-        n = nx * ny
-
-        link = _child(r3, "DataLink")
-        valid: np.ndarray | None = None
-        if link is not None:
-            member = _text(link, "PointDataLink")
-            if not member:
-                raise _fail(name, "Record3/DataLink/PointDataLink is empty")
-            data = _read_member(zf, member, name, n * dtype.itemsize,
-                                MAX_POINTS * 8, "point data")
-            if verify_checksum:
-                _check_md5(data, _text(link, "MD5ChecksumPointData"), name, member)
-            raw = np.frombuffer(data, dtype=dtype, count=n)
-            vlink = _text(link, "ValidPointsLink")
-            if vlink:
-                vdata = _read_member(zf, vlink, name, (n + 7) // 8, MAX_POINTS // 8 + 1,
-                                     "valid-points file")
-                if verify_checksum:
-                    _check_md5(vdata, _text(link, "MD5ChecksumValidPoints"), name, vlink)
-                bits = np.unpackbits(np.frombuffer(vdata, np.uint8), bitorder="little")
-                valid = bits[:n].astype(bool)
-                md["valid_points_file"] = vlink
-        else:
-            dlist = _child(r3, "DataList")
-            if dlist is None:
-                raise _fail(name, "Record3 has neither DataLink nor DataList")
-            raw, valid = _datalist(dlist, n, dtype, name)
-
+        cx, cy, cz = _axes(r1, name)
+        nx, ny = _matrix_size(r3, feature, name)
+        raw, valid = _point_data(zf, r3, nx * ny, DTYPES[cz["dtype"]], name,
+                                 verify_checksum, md)
         if verify_checksum:
             _check_xml_checksum(zf, root, raw_xml, name)
-
-        inc = cz["increment"]
-        off = cz["offset"]
-        with np.errstate(invalid="ignore", over="ignore"):  # signalling NaNs, overflow
-            z = raw.astype(np.float64)
-            if inc is not None and inc != 1.0:
-                z = z * inc
-            if off is not None and off != 0.0:
-                z = z + off
-        bad = ~np.isfinite(z)
-        if valid is not None:
-            bad |= ~valid
-        if bad.any():
-            z[bad] = np.nan
+        z = _heights(raw, valid, cz)
         if cx["increment"] is None:
             raise _fail(name, "CX has no Increment (pixel size)")
         dx = check_step(cx["increment"], name, FORMAT, "x increment (pixel size)")
         md.update(_record2(root))
-        md.update(height_unit="m", lateral_unit="m", lateral_calibrated=True,
-                  data_type=cz["dtype"])
-        if cz["dtype"] in ("I", "L"):
-            md["z_increment"] = 1.0 if inc is None else inc
-        for key, ax in (("x_offset", cx), ("y_offset", cy), ("z_offset", cz)):
-            if ax["offset"] is not None:
-                md[key] = ax["offset"]
+        md.update(_axes_metadata(cx, cy, cz))
         if feature == "PRF":
             if cy["increment"] is not None:
                 md["y_increment"] = cy["increment"]
@@ -433,185 +458,4 @@ def _check_xml_checksum(zf: zipfile.ZipFile, root: ET.Element, raw_xml: bytes,
     _check_md5(raw_xml, m.group(1).decode("ascii"), name, "main.xml")
 
 
-# ---------------------------------------------------------------------------- writer
-
-
-def _xml_date(value: Any) -> str:
-    """An xsd:dateTime for Record2: the scan's own date when it is one, else now (UTC)."""
-    if isinstance(value, str):
-        text = value.strip()
-        if _DATE_RE.match(text):
-            return text
-        try:
-            return _dt.datetime.fromisoformat(text).replace(microsecond=0).isoformat()
-        except ValueError:
-            pass
-    return _dt.datetime.now(_dt.timezone.utc).replace(microsecond=0).isoformat()
-
-
-def _token(value: Any, default: str) -> str:
-    text = " ".join(str(value).split()) if value not in (None, "") else default
-    return escape(text)
-
-
-@register_writer(FORMAT)
-def encode(scan: Topography | Profile, **options: Any) -> bytes:
-    """Encode a scan as X3P (float ``D`` or ``F`` data, SUR for areal, PRF for profiles).
-
-    Parameters
-    ----------
-    scan : Topography or Profile
-        A uniformly sampled scan (non-uniform profiles have no X3P incremental axis).
-    **options
-        ``date`` (ISO 8601 text for Record2, default the scan's ``date`` metadata or now),
-        ``comment`` (default built from the metadata), ``dtype`` (``"D"``, float64, the
-        default; or ``"F"``, float32, half the size, accepted only when every height is
-        exactly representable in float32, so that the round trip stays exact).
-
-    Returns
-    -------
-    bytes
-        The zip archive.
-    """
-    unknown = set(options) - {"date", "comment", "dtype"}
-    if unknown:
-        raise SurfmetInputError(f"x3p writer: unknown option(s) {sorted(unknown)}")
-    md = dict(scan.metadata)
-    if isinstance(scan, Topography):
-        feature, ny, nx = "SUR", scan.ny, scan.nx
-        z = scan.heights
-        dy = scan.dy
-    elif isinstance(scan, Profile):
-        if not scan.is_uniform:
-            raise SurfmetInputError(
-                "x3p writer: a non-uniformly sampled profile cannot be written with an "
-                "incremental x axis; resample it first"
-            )
-        feature, ny, nx = "PRF", 1, scan.n
-        z = scan.z
-        dy = scan.dx
-    else:
-        raise SurfmetInputError("x3p writer needs a Topography or a Profile")
-    ztype = str(options.get("dtype", "D")).upper()
-    if ztype not in ("D", "F"):
-        raise SurfmetInputError(f"x3p writer: dtype must be 'D' or 'F', not {ztype!r}")
-    zarr = np.ascontiguousarray(z, dtype="<f8" if ztype == "D" else "<f4")
-    if ztype == "F":
-        back = zarr.astype(np.float64)
-        same = (back == np.asarray(z)) | (np.isnan(back) & np.isnan(np.asarray(z)))
-        if not same.all():
-            raise SurfmetInputError(
-                "x3p writer: dtype='F' would round heights that are not float32 values; "
-                "round them first (np.float32) or keep dtype='D'"
-            )
-    data = zarr.tobytes()
-    data_md5 = hashlib.md5(data).hexdigest()
-    invalid = np.isnan(np.asarray(z)).ravel()
-    valid_bin = None
-    if invalid.any():
-        valid_bin = np.packbits(~invalid, bitorder="little").tobytes()
-
-    date = _xml_date(options.get("date", md.get("date")))
-    comment = options.get("comment")
-    if comment is None:
-        parts = [str(md[k]) for k in ("comment",) if md.get(k)]
-        if md.get("format") and md.get("format") != FORMAT:
-            parts.append(f"converted by surfmet {__version__} from {md['format']}")
-        if md.get("source"):
-            # The file name only: a full path would leak the writer's directory layout.
-            parts.append(f"source: {str(md['source']).replace(chr(92), '/').rsplit('/', 1)[-1]}")
-        comment = "; ".join(parts)
-    probing = md.get("probing_system_type")
-    if probing not in _PROBING_TYPES:
-        probing = "Software"
-    lines = [
-        '<?xml version="1.0" encoding="UTF-8" standalone="no" ?>',
-        f'<p:ISO5436_2 xmlns:p="{NAMESPACE}" '
-        'xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
-        f'xsi:schemaLocation="{NAMESPACE} {NAMESPACE}/ISO5436_2.xsd">',
-        "  <Record1>",
-        f"    <Revision>{REVISION}</Revision>",
-        f"    <FeatureType>{feature}</FeatureType>",
-        "    <Axes>",
-        "      <CX>",
-        "        <AxisType>I</AxisType>",
-        "        <DataType>D</DataType>",
-        f"        <Increment>{float(scan.dx)!r}</Increment>",
-        "        <Offset>0</Offset>",
-        "      </CX>",
-        "      <CY>",
-        "        <AxisType>I</AxisType>",
-        "        <DataType>D</DataType>",
-        f"        <Increment>{float(dy)!r}</Increment>",
-        "        <Offset>0</Offset>",
-        "      </CY>",
-        "      <CZ>",
-        "        <AxisType>A</AxisType>",
-        f"        <DataType>{ztype}</DataType>",
-        "      </CZ>",
-        "    </Axes>",
-        "  </Record1>",
-        "  <Record2>",
-        f"    <Date>{escape(date)}</Date>",
-    ]
-    if md.get("creator"):
-        lines.append(f"    <Creator>{_token(md['creator'], '')}</Creator>")
-    lines += [
-        "    <Instrument>",
-        f"      <Manufacturer>{_token(md.get('vendor'), 'unknown')}</Manufacturer>",
-        f"      <Model>{_token(md.get('instrument'), 'unknown')}</Model>",
-        f"      <Serial>{_token(md.get('instrument_serial'), 'not available')}</Serial>",
-        f"      <Version>{_token(md.get('instrument_version'), f'surfmet {__version__}')}"
-        "</Version>",
-        "    </Instrument>",
-        f"    <CalibrationDate>{escape(_xml_date(md.get('calibration_date', date)))}"
-        "</CalibrationDate>",
-        "    <ProbingSystem>",
-        f"      <Type>{probing}</Type>",
-        f"      <Identification>{_token(md.get('probing_system'), 'surfmet')}"
-        "</Identification>",
-        "    </ProbingSystem>",
-        f"    <Comment>{escape(str(comment))}</Comment>",
-        "  </Record2>",
-        "  <Record3>",
-        "    <MatrixDimension>",
-        f"      <SizeX>{nx}</SizeX>",
-        f"      <SizeY>{ny}</SizeY>",
-        "      <SizeZ>1</SizeZ>",
-        "    </MatrixDimension>",
-        "    <DataLink>",
-        "      <PointDataLink>bindata/data.bin</PointDataLink>",
-        f"      <MD5ChecksumPointData>{data_md5.upper()}</MD5ChecksumPointData>",
-    ]
-    if valid_bin is not None:
-        lines += [
-            "      <ValidPointsLink>bindata/valid.bin</ValidPointsLink>",
-            "      <MD5ChecksumValidPoints>"
-            f"{hashlib.md5(valid_bin).hexdigest().upper()}</MD5ChecksumValidPoints>",
-        ]
-    lines += [
-        "    </DataLink>",
-        "  </Record3>",
-        "  <Record4>",
-        "    <ChecksumFile>md5checksum.hex</ChecksumFile>",
-        "  </Record4>",
-        "</p:ISO5436_2>",
-        "",
-    ]
-    xml = "\n".join(lines).encode("utf-8")
-    out = io.BytesIO()
-    stamp = (1980, 1, 1, 0, 0, 0)
-    with zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED) as zf:
-        # main.xml first, so that magic detection finds it in the first local header.
-        zf.writestr(zipfile.ZipInfo("main.xml", stamp), xml, zipfile.ZIP_DEFLATED)
-        zf.writestr(zipfile.ZipInfo("bindata/data.bin", stamp), data, zipfile.ZIP_DEFLATED)
-        if valid_bin is not None:
-            zf.writestr(zipfile.ZipInfo("bindata/valid.bin", stamp), valid_bin,
-                        zipfile.ZIP_DEFLATED)
-        zf.writestr(zipfile.ZipInfo("md5checksum.hex", stamp),
-                    f"{hashlib.md5(xml).hexdigest()} *main.xml\n".encode("ascii"),
-                    zipfile.ZIP_DEFLATED)
-    return out.getvalue()
-
-
-__all__ = ["DTYPES", "MAX_XML_BYTES", "decode", "encode"]
+__all__ = ["DTYPES", "MAX_XML_BYTES", "decode"]
