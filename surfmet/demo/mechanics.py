@@ -1,0 +1,68 @@
+"""The demo's mechanics steps: the Hertz check, the rotor's loads, a contact solve and a
+rolling-resistance sweep on the shipped scans."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from surfmet.demo.settings import CHECK_LOAD, MATERIALS, PAPER_HERTZ, RADIUS
+from surfmet.units import quantity
+
+
+def hertz_step(plate: Any, ball: Any, load: float = CHECK_LOAD) -> tuple[dict[str, Any], Any]:
+    """The Hertz check of the ball on the plate at ``load`` (both scans, spikes removed)."""
+    from surfmet.hertz_check import hertz_check
+
+    check = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS)
+    rec = check.to_json()
+    details = check.details()
+    # each criterion's number as a dimensionless quantity (a ratio or a fraction)
+    details["criteria"] = [
+        {"name": c["name"], "measured": quantity(c["value"], ""),
+         "limit": quantity(c["limit"], ""), "passed": c["passed"], "decisive": c["decisive"]}
+        for c in details["criteria"]
+    ]
+    rec["details"] = details
+    rec["paper"] = {"delta": quantity(PAPER_HERTZ["delta"], "m"),
+                    "a": quantity(PAPER_HERTZ["a"], "m")}
+    return rec, check
+
+
+def rotor_loads() -> dict[str, float]:
+    """Normal load per ball of the paper's rotor on a level plate (Eqs. 41-42, 50-51), N."""
+    from contact.rotor import mass_properties, normal_reactions, paper_rotor
+
+    sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
+    asym = normal_reactions(mass_properties(paper_rotor(), "end"))
+    return {"symmetric": sym[0], "asymmetric_ball1": asym[0], "asymmetric_ball2": asym[1]}
+
+
+def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
+    """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness."""
+    import warnings
+
+    from contact.errors import EdgeContactWarning
+    from contact.materials import contact_hardness
+    from contact.sphere import solve_sphere
+    from surfmet.records import contact_record
+
+    pair = check.scans.pair
+    hardness = contact_hardness(check.ball_material, check.plate_material)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", EdgeContactWarning)
+        res = solve_sphere(RADIUS, load, check.e_star, roughness=pair.roughness,
+                           roughness_dx=pair.dx, roughness_dy=pair.dy, hardness=hardness)
+    rec = contact_record(res, check.ball_material, check.plate_material, pair, radius=RADIUS,
+                         plate_file="paper_plate.x3p", ball_file="paper_ball.x3p")
+    rec["notes"] = [*rec["notes"], *(str(w.message) for w in caught)]
+    return rec, res
+
+
+def rolling_step(plate: Any, ball: Any, loads: str) -> tuple[dict[str, Any], Any]:
+    """The hysteresis rolling-resistance sweep over ``loads`` ("F1:F2:N")."""
+    from surfmet.rolling import rolling_resistance
+
+    rep = rolling_resistance(plate, ball, radius=RADIUS, materials=MATERIALS, loads=loads,
+                             model="hysteresis")
+    return rep.to_json(), rep
+
