@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     positive_length,
     pressure,
 )
+from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
 EPILOG = """examples:
   surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -49,9 +50,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")
     plast.add_argument("--plastic", action="store_true",
                        help="cap the pressure at the softer material's table hardness")
-    p.add_argument("--grid", type=int, metavar="N",
-                   help="cells per side (default: the scans' own pixel, native resolution, "
-                   "when it fits in memory; 256 for a smooth ball)")
+    add_grid_argument(p, "cells per side (default: the scans' own pixel, native resolution, "
+                      "when it fits in memory; 256 for a smooth ball)")
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the roughness)")
     p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
@@ -85,9 +85,9 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.units import format_length, jsonable
 
     if args.resolution_study:
-        from surfmet.resolution import run_cli
+        from surfmet.cli._resolution_study import run_study
 
-        return run_cli(args, "contact")
+        return run_study(args, "contact")
     ball_m, plate_m = parse_materials(args.materials)
     e_star = composite_modulus(ball_m, plate_m)
     hardness = args.hardness
@@ -95,8 +95,7 @@ def run(args: argparse.Namespace) -> int:
         hardness = contact_hardness(ball_m, plate_m)
         if hardness is None:
             raise SurfmetInputError("--plastic: neither material has a hardness; give --hardness")
-    if args.grid is not None and args.grid < 8:
-        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    check_grid(args.grid)
     if not (args.tol > 0):
         raise SurfmetInputError("--tol must be positive")
 
@@ -178,14 +177,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"fields saved   {args.out}")
     return 0
 
-
-def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
-    """Where the contact grid's pixel came from, for the output (shared by the contact
-    commands)."""
-    if grid is not None:
-        return f"--grid {grid}"
-    if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
-        return "the scans' own pixel"
-    if pair is not None:
-        return "finer than the scans' pixel: 16 cells per Hertz radius"
-    return "automatic, smooth ball"
