@@ -5,7 +5,8 @@ The scans are prepared as for the ordinary commands (spikes removed, plate level
 ball's sphere removed, both paired on the finer pitch by :func:`surfmet.pairing.prepare_pair`),
 then :mod:`contact.resolution` solves the contact on the composite roughness block-averaged
 8x, 4x, 2x and at the native pixel, and fits the trend of each quantity against the pixel.
-This module turns the study into JSON (values with units) and a table; the command line's
+This module prints the study as a table (its JSON record is
+:func:`surfmet.records.resolution.study_record`); the command line's
 ``--resolution-study`` is :mod:`surfmet.cli._resolution_study`.
 """
 
@@ -16,8 +17,8 @@ from typing import Any
 
 from surfmet.errors import SurfmetInputError
 
-#: Display of each quantity: label, JSON unit, scale to the text unit, text unit.
-_SHOW = {
+#: Each quantity of a study: label, JSON unit, scale to the text unit, text unit.
+QUANTITIES = {
     "a_star": ("a*", "m", 1e6, "µm"),
     "approach": ("approach", "m", 1e6, "µm"),
     "area": ("real area", "m^2", 1e12, "µm²"),
@@ -114,50 +115,13 @@ def rolling_study(
     return study, prep
 
 
-def study_json(study: Any) -> dict[str, Any]:
-    """The study as JSON: per level the pixel, grid and quantities with units; per quantity
-    its trend and whether it converged; the verdict from converged quantities only."""
-    from surfmet.units import quantity
-
-    def q(name: str, v: float) -> Any:
-        unit = _SHOW.get(name, (name, "1"))[1]
-        return quantity(v, unit) if unit != "1" else v
-
-    levels = []
-    for lv in study.levels:
-        levels.append({"factor": lv.factor, "pixel": quantity(lv.pixel, "m"), "grid": lv.grid,
-                       **{k: q(k, v) for k, v in lv.values.items()}})
-    trends = {}
-    for name, t in study.trends.items():
-        trends[name] = {
-            "converged": t.converged, "status": t.status,
-            "last_change": t.last_change, "exponent": t.exponent, "order": t.order,
-            "extrapolated": q(name, t.extrapolated), "expected": t.expected,
-            "values": [q(name, v) for v in t.values],
-        }
-    out: dict[str, Any] = {
-        "criterion": "converged: relative change below 2 % over the last halving of the "
-                     "pixel",
-        "side": quantity(study.side, "m"),
-        "pixels": [quantity(p, "m") for p in study.pixels],
-        "levels": levels, "trends": trends,
-        "converged": list(study.converged), "keeps_moving": list(study.moving),
-        "notes": list(study.notes),
-    }
-    holds, reasons, left = study.verdict()
-    if study.finest.comparison is not None:
-        out["verdict"] = {"hertz_holds": holds, "decided": holds is not None,
-                          "reasons": list(reasons), "not_used": list(left)}
-    return out
-
-
 def study_lines(study: Any) -> list[str]:
     """A table (one row per quantity, one column per pixel) and the trend sentences."""
     head = f"{'':18}" + "".join(f"{p * 1e6:>10.4g} µm" for p in study.pixels) + "   status"
     lines = [f"resolution study: same {study.side * 1e3:.4g} mm domain, pixel coarsened "
              + ", ".join(f"{lv.factor}x" for lv in study.levels), head]
     for name, t in study.trends.items():
-        label, _, scale, unit = _SHOW.get(name, (name, "1", 1.0, ""))
+        label, _, scale, unit = QUANTITIES.get(name, (name, "1", 1.0, ""))
         label = f"{label} ({unit})" if unit else label
         cells = "".join(f"{v * scale:>13.5g}" for v in t.values)
         pct = f"{100 * t.last_change:.3g} %" if math.isfinite(t.last_change) else "from 0"

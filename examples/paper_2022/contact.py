@@ -132,7 +132,8 @@ def main(argv: list[str]) -> int:
     close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
 
     heading("Which of these survive refinement? (resolution study: pixel 40, 20, 10, 5 µm)")
-    from surfmet.resolution import contact_study, study_json, study_lines
+    from surfmet.records import study_record
+    from surfmet.resolution import contact_study, study_lines
 
     findings["resolution_study"] = {}
     for label, chk in checks.items():
@@ -142,7 +143,7 @@ def main(argv: list[str]) -> int:
         for line in study_lines(study):
             if not line.startswith("- "):  # the table and the verdict; the trends go to JSON
                 print(f"  {line}")
-        findings["resolution_study"][label] = study_json(study)
+        findings["resolution_study"][label] = study_record(study)
 
     heading("Do the asperities yield at the experiment's loads? (Fig. 17)")
     for label, chk in checks.items():

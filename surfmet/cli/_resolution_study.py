@@ -15,7 +15,8 @@ def run_study(args: argparse.Namespace, command: str) -> int:
     """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
     from contact.materials import contact_hardness
     from surfmet.materials import parse_materials
-    from surfmet.resolution import contact_study, rolling_study, study_json, study_lines
+    from surfmet.records import study_record
+    from surfmet.resolution import contact_study, rolling_study, study_lines
 
     def progress(label: str) -> None:
         log(f"resolution study: solving at {label}")
@@ -61,7 +62,7 @@ def run_study(args: argparse.Namespace, command: str) -> int:
                                  spikes=not getattr(args, "keep_spikes", False),
                                  progress=progress)
     if args.json:
-        emit_json({"command": command, "resolution_study": study_json(study)})
+        emit_json({"command": command, "resolution_study": study_record(study)})
         return 0
     for line in study_lines(study):
         print(line)

@@ -92,12 +92,10 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        from surfmet.units import quantity
+        from surfmet.records import grid_record
 
         # the issue's keys, and the grid the answer was computed on (issue 12)
-        out = {**check.to_json(), "grid": {
-            "nx": res.shape[1], "ny": res.shape[0], "dx": quantity(res.dx, "m"),
-            "pixel_source": source}}
+        out = {**check.to_json(), "grid": grid_record(res.shape, res.dx, source)}
         emit_json(out)
         return 0
     c = check.comparison

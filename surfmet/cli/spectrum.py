@@ -71,7 +71,8 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
 
 def run(args: argparse.Namespace) -> int:
     import surfmet
-    from surfmet.spectrum import plot_spectrum, prepare, spectrum, spectrum_record
+    from surfmet.records import spectrum_record
+    from surfmet.spectrum import plot_spectrum, prepare, spectrum
 
     topo = surfmet.read(args.file)
     scan, per, level = prepare(topo, periodic_flag(args.periodic))
