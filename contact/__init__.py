@@ -63,8 +63,8 @@ _LAZY = {
     "cylinder_sweep": "contact.rolling",
     "fit_exponent": "contact.rolling",
     "solve_cylinder": "contact.line",
-    "mass_properties": "contact.rotor",
-    "angular_acceleration": "contact.rotor",
+    "mass_properties": "contact.rotor.mechanics",
+    "angular_acceleration": "contact.rotor.mechanics",
     "analyse_test": "contact.lawofmotion",
     "analyse_table": "contact.lawofmotion",
 }

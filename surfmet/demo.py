@@ -19,7 +19,7 @@ statistics of the paper's Table 2, written by surfmet's own X3P writer; see
 5. a short rolling-resistance sweep (:func:`surfmet.rolling.rolling_resistance`);
 6. the law-of-motion analysis of Table 3 (:func:`contact.lawofmotion.analyse_table`) on
    ``surfmet/data/table3_frames.tsv``, the paper's table re-typed and split
-   (:mod:`contact.table3`), with the paper's parabolas reproduced.
+   (:mod:`contact.rotor.frames`), with the paper's parabolas reproduced.
 
 Figures and ``summary.json`` (every dimensional value ``{"value": v, "unit": "..."}``)
 go to the output folder; :func:`story` turns the summary into the text ``surfmet demo``
@@ -279,7 +279,7 @@ def hertz_step(plate: Any, ball: Any, load: float = CHECK_LOAD) -> tuple[dict[st
 
 def rotor_loads() -> dict[str, float]:
     """Normal load per ball of the paper's rotor on a level plate (Eqs. 41-42, 50-51), N."""
-    from contact.rotor import mass_properties, normal_reactions, paper_rotor
+    from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor
 
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
     asym = normal_reactions(mass_properties(paper_rotor(), "end"))
@@ -324,7 +324,7 @@ def _parabola(coef: Any) -> dict[str, Any]:
 def rotor_step() -> tuple[dict[str, Any], Any]:
     """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas."""
     from contact.lawofmotion import analyse_table
-    from contact.table3 import table3_tsv
+    from contact.rotor.frames import table3_tsv
     from surfmet.frames import read_frames_table
 
     path = data_file("table3_frames.tsv")

@@ -22,7 +22,7 @@ from contact.lawofmotion import (
     quantisation_sigma,
     select_model,
 )
-from contact.table3 import table3
+from contact.rotor.frames import table3
 
 PHI = np.arange(25) * math.pi / 2
 

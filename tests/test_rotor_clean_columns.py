@@ -1,4 +1,4 @@
-"""Clean columns made independently of :mod:`contact.rotor_sim` (issue 10): released anywhere
+"""Clean columns made independently of :mod:`contact.rotor.simulator` (issue 10): released anywhere
 in the step before the first mark, any frame rate 30-1000 fps, any mark step 15-360 deg,
 10-60 rows. The analysis must name no effect, flag no row and recover eps0.
 

@@ -10,7 +10,7 @@ import pytest
 
 from contact.errors import ContactInputError
 from contact.lawofmotion import crossing_times
-from contact.rotor_sim import (
+from contact.rotor.simulator import (
     EFFECTS,
     effect_signature,
     random_hidden_effects,

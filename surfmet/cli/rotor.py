@@ -98,7 +98,7 @@ def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
 
 def analysis_record(an: Any, source: str) -> dict[str, Any]:
     """The JSON record of a :class:`contact.lawofmotion.LawOfMotionAnalysis`."""
-    from contact.rotor import mass_properties
+    from contact.rotor.mechanics import mass_properties
 
     sym = mass_properties(collar_offset="symmetric")
     fps = an.fps

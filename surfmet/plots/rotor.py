@@ -133,7 +133,7 @@ def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -
 def rolling_law_figure(inference: Any, path: str | Path | None = None,
                        label: str = "") -> Any:
     """``lambda`` implied by the two groups' accelerations against the assumed equivalent
-    slope (:func:`contact.rotor.infer_rolling_law`), with its 16-84 % band."""
+    slope (:func:`contact.rotor.inference.infer_rolling_law`), with its 16-84 % band."""
     infs = inference if isinstance(inference, (list, tuple)) else [(label, inference)]
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     for lab, inf in infs:

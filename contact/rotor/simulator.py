@@ -1,8 +1,9 @@
 """Simulator of the paper's rotor experiment, with hidden effects, producing a Table-3 column.
 
-The rotor (mass properties from :mod:`contact.rotor`) rolls without sliding on a plate whose
-equivalent slope may change along the path, braked by a constant rolling-friction torque and
-optionally by a torque growing with speed, with its centre of mass optionally off the axis.
+The rotor (mass properties from :mod:`contact.rotor.mechanics`) rolls without sliding on a
+plate whose equivalent slope may change along the path, braked by a constant rolling-friction
+torque and optionally by a torque growing with speed, with its centre of mass optionally off
+the axis.
 The equation of motion is the exact Lagrangian of an eccentric rolling body (not the reduced
 form the analysis fits): with ``e`` the offset of ``G`` from the axis, ``chi = phi - psi_G``,
 
@@ -32,7 +33,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from contact.errors import ContactInputError
-from contact.rotor import (
+from contact.rotor.mechanics import (
     G_STANDARD,
     MassProperties,
     mass_properties,
