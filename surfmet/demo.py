@@ -17,7 +17,7 @@ statistics of the paper's Table 2, written by surfmet's own X3P writer; see
 4. a contact solve at the rotor's load per ball (elastic-perfectly-plastic, on the same
    paired roughness);
 5. a short rolling-resistance sweep (:func:`surfmet.rolling.rolling_resistance`);
-6. the law-of-motion analysis of Table 3 (:func:`contact.lawofmotion.analyse_table`) on
+6. the law-of-motion analysis of Table 3 (:func:`contact.rotor.groups.analyse_table`) on
    ``surfmet/data/table3_frames.tsv``, the paper's table re-typed and split
    (:mod:`contact.rotor.frames`), with the paper's parabolas reproduced.
 
@@ -323,7 +323,7 @@ def _parabola(coef: Any) -> dict[str, Any]:
 
 def rotor_step() -> tuple[dict[str, Any], Any]:
     """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas."""
-    from contact.lawofmotion import analyse_table
+    from contact.rotor.groups import analyse_table
     from contact.rotor.frames import table3_tsv
     from surfmet.frames import read_frames_table
 

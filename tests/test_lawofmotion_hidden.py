@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import pytest
 
-from contact.lawofmotion import analyse_test
+from contact.rotor.analysis import analyse_test
 from contact.rotor.simulator import simulate_random_run
 
 CLEAN_SEEDS = [40, 41, 42]

@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from rotor_clean_columns import clean_column, effect_column
 
-from contact.lawofmotion import analyse_test
+from contact.rotor.analysis import analyse_test
 
 
 @pytest.mark.parametrize("x", [0.5, 0.75, 0.95])
