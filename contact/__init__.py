@@ -14,7 +14,7 @@ Main entry points::
     results = prob.sweep([1, 3, 10, 30, 100])   # warm-started load sweep
     check_sphere(...)                      # BEM against Hertz, with a verdict (hertzcheck)
     sphere_sweep(...); fit_exponent(...)   # rolling-resistance exponent (rolling)
-    analyse_table(columns)                 # rotor law of motion (lawofmotion)
+    analyse_table(columns)                 # rotor law of motion (rotor.groups)
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
@@ -63,10 +63,10 @@ _LAZY = {
     "cylinder_sweep": "contact.rolling",
     "fit_exponent": "contact.rolling",
     "solve_cylinder": "contact.line",
-    "mass_properties": "contact.rotor",
-    "angular_acceleration": "contact.rotor",
-    "analyse_test": "contact.lawofmotion",
-    "analyse_table": "contact.lawofmotion",
+    "mass_properties": "contact.rotor.mechanics",
+    "angular_acceleration": "contact.rotor.mechanics",
+    "analyse_test": "contact.rotor.analysis",
+    "analyse_table": "contact.rotor.groups",
 }
 
 

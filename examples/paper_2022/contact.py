@@ -36,7 +36,8 @@ from contact.rolling import (  # noqa: E402
     log_loads,
     sphere_sweep,
 )
-from contact.rotor import mass_properties, normal_reactions, paper_rotor  # noqa: E402
+from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
+from contact.rotor.paper import BALL_RADIUS as RADIUS  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
 from surfmet.hertz_check import hertz_check, prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
@@ -44,7 +45,6 @@ from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 from surfmet.units import jsonable  # noqa: E402
 
-RADIUS = 0.02  # m, the balls of the rotor
 MATERIALS = "steel,aluminium"
 
 
@@ -101,7 +101,7 @@ def main(argv: list[str]) -> int:
     heading("The synthetic scans against Table 2 (median of the rows, lc = 0.8 mm)")
     findings["table2"] = table2_check(plate, ball)
 
-    heading("Loads of the experiment (contact/rotor.py, Eqs. 41-42, level plate)")
+    heading("Loads of the experiment (contact/rotor/mechanics.py, Eqs. 41-42, level plate)")
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
     asym = normal_reactions(mass_properties(paper_rotor(), "end"))
     print(f"symmetric rotor : N1 = N2 = {sym[0]:.3f} N")

@@ -3,13 +3,12 @@ paper's parabolas."""
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
 
+from contact.rotor.paper import FPS, MARK_STEP, PARABOLAS, TABLE3_FILENAME
 from surfmet.demo.outputs import data_file
-from surfmet.demo.settings import PAPER_PARABOLAS
 from surfmet.units import quantity
 
 
@@ -20,13 +19,13 @@ def _parabola(coef: Any) -> dict[str, Any]:
 
 def rotor_step() -> tuple[dict[str, Any], Any]:
     """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas."""
-    from contact.lawofmotion import analyse_table
-    from contact.table3 import table3_tsv
+    from contact.rotor.frames import table3_tsv
+    from contact.rotor.groups import analyse_table
     from surfmet.frames import read_frames_table
 
-    path = data_file("table3_frames.tsv")
+    path = data_file(TABLE3_FILENAME)
     ks, cols = read_frames_table(path)
-    an = analyse_table(cols, ks, fps=120.0, step=math.pi / 2, cv="approx")
+    an = analyse_table(cols, ks, fps=FPS, step=MARK_STEP, cv="approx")
     fps = an.fps
     tests = []
     for t in an.tests:
@@ -49,7 +48,7 @@ def rotor_step() -> tuple[dict[str, Any], Any]:
         })
     # which group's parabola is each of the paper's (to the three decimals it prints)?
     match = {}
-    for label, ref in PAPER_PARABOLAS.items():
+    for label, ref in PARABOLAS.items():
         for g in an.groups:
             if np.allclose(np.round(g.paper_parabola, 3), np.round(ref, 3), atol=1e-9):
                 match[label] = g.name
@@ -66,7 +65,7 @@ def rotor_step() -> tuple[dict[str, Any], Any]:
         "study_model": an.study_model,
         "tests": tests,
         "groups": groups,
-        "paper_reported": {k: _parabola(v) for k, v in PAPER_PARABOLAS.items()},
+        "paper_reported": {k: _parabola(v) for k, v in PARABOLAS.items()},
         "paper_label_match": match,
         "comparisons": comps,
     }

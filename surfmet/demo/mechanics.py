@@ -5,11 +5,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from surfmet.demo.settings import CHECK_LOAD, MATERIALS, PAPER_HERTZ, RADIUS
+from contact.rotor.paper import BALL_RADIUS as RADIUS
+from contact.rotor.paper import HERTZ_CHECK, HERTZ_CHECK_LOAD
+from surfmet.demo.settings import MATERIALS
 from surfmet.units import quantity
 
 
-def hertz_step(plate: Any, ball: Any, load: float = CHECK_LOAD) -> tuple[dict[str, Any], Any]:
+def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[dict[str, Any], Any]:
     """The Hertz check of the ball on the plate at ``load`` (both scans, spikes removed)."""
     from surfmet.hertz_check import hertz_check
 
@@ -23,18 +25,16 @@ def hertz_step(plate: Any, ball: Any, load: float = CHECK_LOAD) -> tuple[dict[st
         for c in details["criteria"]
     ]
     rec["details"] = details
-    rec["paper"] = {"delta": quantity(PAPER_HERTZ["delta"], "m"),
-                    "a": quantity(PAPER_HERTZ["a"], "m")}
+    rec["paper"] = {"delta": quantity(HERTZ_CHECK["delta"], "m"),
+                    "a": quantity(HERTZ_CHECK["a"], "m")}
     return rec, check
 
 
 def rotor_loads() -> dict[str, float]:
     """Normal load per ball of the paper's rotor on a level plate (Eqs. 41-42, 50-51), N."""
-    from contact.rotor import mass_properties, normal_reactions, paper_rotor
+    from contact.rotor.mechanics import paper_ball_loads
 
-    sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
-    asym = normal_reactions(mass_properties(paper_rotor(), "end"))
-    return {"symmetric": sym[0], "asymmetric_ball1": asym[0], "asymmetric_ball2": asym[1]}
+    return paper_ball_loads()
 
 
 def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:

@@ -10,11 +10,12 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from contact.rotor.paper import HERTZ_CHECK_LOAD
 from surfmet.demo import figures as fig
 from surfmet.demo.lawofmotion import rotor_step
 from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads
 from surfmet.demo.outputs import GENERATOR, SUMMARY, prepare_output, write_json
-from surfmet.demo.settings import BALL_LEVEL, CHECK_LOAD, PAPER_TABLE2_MEAN_UM, PLATE_LEVEL
+from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN_UM, PLATE_LEVEL
 from surfmet.demo.surfaces import ball_form, load_scans, plate_areal, row_statistics
 from surfmet.units import quantity
 
@@ -89,7 +90,7 @@ def _surfaces(st: _Steps, summary: dict[str, Any], quick: bool) -> tuple[Any, An
 
 def _mechanics(st: _Steps, summary: dict[str, Any], plate: Any, ball: Any,
                quick: bool) -> None:
-    st.start("hertz", f"Hertz check at {CHECK_LOAD:g} N (boundary elements on both scans)")
+    st.start("hertz", f"Hertz check at {HERTZ_CHECK_LOAD:g} N (boundary elements on both scans)")
     summary["hertz_check"], check = hertz_step(plate, ball)
     st.figure("hertz_check", check.figure)
     st.done()
