@@ -73,7 +73,7 @@ def iteration_child(n: int, repeats: int) -> dict:
     from contact.bem import SolverStats, convolution
     from contact.materials import composite_modulus, material
     from contact.sphere import SphereContact
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.pairing import prepare_pair
 
     pair = prepare_pair(surfmet.read(DATA / "paper_plate.x3p"),
                         surfmet.read(DATA / "paper_ball.x3p"))

@@ -122,7 +122,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     plate = surfmet.read(item.plate) if item.plate else None
     ball = surfmet.read(item.ball) if item.ball else None
     if item.task == "hertz-check":
-        from surfmet.hertz_check import hertz_check
+        from surfmet.mechanics.hertz_check import hertz_check
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
@@ -141,8 +141,8 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     else:
         from contact.materials import composite_modulus
         from contact.sphere import solve_sphere
-        from surfmet.materials import parse_materials
-        from surfmet.pairing import apex_centre, prepare_pair
+        from surfmet.mechanics.material_spec import parse_materials
+        from surfmet.mechanics.pairing import apex_centre, prepare_pair
 
         ball_m, plate_m = parse_materials(item.materials)
         pair = prepare_pair(plate, ball) if (plate is not None or ball is not None) else None

@@ -22,7 +22,7 @@ from contact.hertzcheck import (
     solve_elastic_plastic,
 )
 from surfmet.errors import SurfmetInputError
-from surfmet.hertz_check import hertz_check
+from surfmet.mechanics.hertz_check import hertz_check
 from surfmet.model import Profile, Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

@@ -39,7 +39,7 @@ from contact.rolling import (  # noqa: E402
 from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
 from contact.rotor.paper import BALL_RADIUS as RADIUS  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
-from surfmet.hertz_check import hertz_check, prepare_scans  # noqa: E402
+from surfmet.mechanics.hertz_check import hertz_check, prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
@@ -132,8 +132,8 @@ def main(argv: list[str]) -> int:
     close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
 
     heading("Which of these survive refinement? (resolution study: pixel 40, 20, 10, 5 µm)")
+    from surfmet.mechanics.resolution_study import contact_study, study_lines
     from surfmet.records import study_record
-    from surfmet.resolution import contact_study, study_lines
 
     findings["resolution_study"] = {}
     for label, chk in checks.items():

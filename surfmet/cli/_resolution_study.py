@@ -1,6 +1,7 @@
 """``--resolution-study`` of ``contact``, ``hertz-check`` and ``rolling``: the command-line
-options turned into a call of :func:`surfmet.resolution.contact_study` or
-:func:`surfmet.resolution.rolling_study`, and the study printed as a table or JSON."""
+options turned into a call of :func:`surfmet.mechanics.resolution_study.contact_study` or
+:func:`surfmet.mechanics.resolution_study.rolling_study`, and the study printed as a table
+or JSON."""
 
 from __future__ import annotations
 
@@ -14,9 +15,9 @@ from surfmet.errors import SurfmetInputError
 def run_study(args: argparse.Namespace, command: str) -> int:
     """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
     from contact.materials import contact_hardness
-    from surfmet.materials import parse_materials
+    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.resolution_study import contact_study, rolling_study, study_lines
     from surfmet.records import study_record
-    from surfmet.resolution import contact_study, rolling_study, study_lines
 
     def progress(label: str) -> None:
         log(f"resolution study: solving at {label}")
@@ -31,7 +32,7 @@ def run_study(args: argparse.Namespace, command: str) -> int:
 
     if command == "rolling":
         from contact.rolling import log_loads
-        from surfmet.materials import parse_materials as pm
+        from surfmet.mechanics.material_spec import parse_materials as pm
 
         lo, hi, n = args.loads
         from contact.materials import displacement_shares

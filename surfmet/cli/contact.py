@@ -62,7 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--max-iter", type=int, default=2000, help="iteration limit (default 2000)")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -80,8 +80,8 @@ def run(args: argparse.Namespace) -> int:
     from contact.materials import composite_modulus, contact_hardness
     from contact.sphere import solve_sphere
     from surfmet.errors import SurfmetInputError
-    from surfmet.materials import parse_materials
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.pairing import prepare_pair
     from surfmet.units import format_length, jsonable
 
     if args.resolution_study:

@@ -53,7 +53,7 @@ def run(args: argparse.Namespace) -> int:
     import surfmet
     from surfmet.cli._common import progress
     from surfmet.errors import SurfmetInputError
-    from surfmet.flat_contact import flat_contact, parse_pressures, plot
+    from surfmet.mechanics.flat_contact import flat_contact, parse_pressures, plot
     from surfmet.records import flat_contact_record
 
     pressures = parse_pressures(args.pressures)

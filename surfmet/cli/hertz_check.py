@@ -61,7 +61,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="contact reaching the domain edge: enlarge (default), warn, fail")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)
@@ -71,7 +71,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
-    from surfmet.hertz_check import hertz_check
+    from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length
 
     check_grid(args.grid)

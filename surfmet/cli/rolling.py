@@ -65,7 +65,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                       "native resolution, when it fits in memory)")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--positions", default=None, metavar="X:Y,...",
                    help="track positions: apex offsets from the middle of the scans; the "
                    "exponent is fitted to the mean moment over them")
@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
 
     from contact.rolling import log_loads
     from surfmet.errors import SurfmetInputError
-    from surfmet.rolling import rolling_resistance
+    from surfmet.mechanics.rolling_resistance import rolling_resistance
     from surfmet.units import format_length
 
     lo, hi, n = args.loads
@@ -142,10 +142,11 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
-    """Several track positions through :func:`surfmet.rolling.rolling_tracks`."""
+    """Several track positions through
+    :func:`surfmet.mechanics.rolling_resistance.rolling_tracks`."""
     from surfmet.cli.sweep import _positions
     from surfmet.errors import SurfmetInputError
-    from surfmet.rolling import rolling_tracks
+    from surfmet.mechanics.rolling_resistance import rolling_tracks
 
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")

@@ -12,11 +12,12 @@ statistics of the paper's Table 2, written by surfmet's own X3P writer; see
 2. the ball's radius: least-squares sphere with its standard uncertainty, against the
    nominal 20 mm, and circle fits of the row and the column through the apex (the form
    deviation the paper's Fig. 16 shows);
-3. the Hertz check at the paper's 10 N (:func:`surfmet.hertz_check.hertz_check`): verdict
+3. the Hertz check at the paper's 10 N (:func:`surfmet.mechanics.hertz_check.hertz_check`): verdict
    and reasons;
 4. a contact solve at the rotor's load per ball (elastic-perfectly-plastic, on the same
    paired roughness);
-5. a short rolling-resistance sweep (:func:`surfmet.rolling.rolling_resistance`);
+5. a short rolling-resistance sweep
+   (:func:`surfmet.mechanics.rolling_resistance.rolling_resistance`);
 6. the law-of-motion analysis of Table 3 (:func:`contact.rotor.groups.analyse_table`) on
    ``surfmet/data/table3_frames.tsv``, the paper's table re-typed and split
    (:mod:`contact.rotor.frames`), with the paper's parabolas reproduced.

@@ -13,7 +13,7 @@ from surfmet.units import quantity
 
 def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[dict[str, Any], Any]:
     """The Hertz check of the ball on the plate at ``load`` (both scans, spikes removed)."""
-    from surfmet.hertz_check import hertz_check
+    from surfmet.mechanics.hertz_check import hertz_check
 
     check = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS)
     rec = check.to_json()
@@ -60,7 +60,7 @@ def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
 
 def rolling_step(plate: Any, ball: Any, loads: str) -> tuple[dict[str, Any], Any]:
     """The hysteresis rolling-resistance sweep over ``loads`` ("F1:F2:N")."""
-    from surfmet.rolling import rolling_resistance
+    from surfmet.mechanics.rolling_resistance import rolling_resistance
 
     rep = rolling_resistance(plate, ball, radius=RADIUS, materials=MATERIALS, loads=loads,
                              model="hysteresis")

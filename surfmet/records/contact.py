@@ -21,7 +21,7 @@ def contact_record(res: Any, ball: Any, plate: Any, pair: Any, *, radius: float,
     ----------
     res : contact.ContactResult
     ball, plate : contact.materials.Material
-    pair : surfmet.pairing.PairedRoughness or None
+    pair : surfmet.mechanics.pairing.PairedRoughness or None
         The paired scans, when the solve used them.
     radius : float
         Ball radius (m).

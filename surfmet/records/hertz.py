@@ -10,7 +10,7 @@ from surfmet.units import quantity as _q
 
 def hertz_check_record(check: Any) -> dict[str, Any]:
     """The ``hertz-check`` record with exactly the issue's keys (see
-    :mod:`surfmet.hertz_check`)."""
+    :mod:`surfmet.mechanics.hertz_check`)."""
     c = check.comparison
     hz = c.hertz
     prof = c.profile

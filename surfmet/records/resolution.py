@@ -11,7 +11,7 @@ from surfmet.units import quantity
 def study_record(study: Any) -> dict[str, Any]:
     """The study as JSON: per level the pixel, grid and quantities with units; per quantity
     its trend and whether it converged; the verdict from converged quantities only."""
-    from surfmet.resolution import QUANTITIES
+    from surfmet.mechanics.resolution_study import QUANTITIES
 
     def q(name: str, v: float) -> Any:
         unit = QUANTITIES.get(name, (name, "1"))[1]

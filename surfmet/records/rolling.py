@@ -9,7 +9,7 @@ from surfmet.units import quantity
 
 
 def rolling_record(rep: Any) -> dict[str, Any]:
-    """The ``rolling`` record of a :class:`surfmet.rolling.RollingReport`."""
+    """The ``rolling`` record of a :class:`surfmet.mechanics.rolling_resistance.RollingReport`."""
     s = rep.sweep
     st = dict(s.settings)
     settings = {
@@ -40,7 +40,8 @@ def rolling_record(rep: Any) -> dict[str, Any]:
 
 
 def tracks_record(rep: Any) -> dict[str, Any]:
-    """The ``rolling --positions`` record of a :class:`surfmet.rolling.TrackReport`."""
+    """The ``rolling --positions`` record of a
+    :class:`surfmet.mechanics.rolling_resistance.TrackReport`."""
     rows = []
     for t in rep.tracks:
         row: dict[str, Any] = {"offset": quantity(None if t["offset"] is None

@@ -10,9 +10,9 @@ from surfmet.units import quantity as _q
 
 
 def spectrum_record(s: Any) -> dict[str, Any]:
-    """JSON-ready description of a :class:`surfmet.spectrum.Spectrum` (every dimensional
+    """JSON-ready description of a :class:`surfmet.mechanics.spectrum.Spectrum` (every dimensional
     value with a unit)."""
-    from surfmet.spectrum import RESOLUTION_DEPENDENT
+    from surfmet.mechanics.spectrum import RESOLUTION_DEPENDENT
 
     sm = s.summits
     rec: dict[str, Any] = {

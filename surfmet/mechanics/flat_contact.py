@@ -1,7 +1,8 @@
 """Which model holds for this scan? A rough scan on a flat: BEM against Persson, GW and BGT.
 
 :func:`flat_contact` levels the scan (a periodic one keeps its heights, see
-:func:`surfmet.spectrum.prepare`), describes its spectrum (:func:`surfmet.spectrum.spectrum`),
+:func:`surfmet.mechanics.spectrum.prepare`), describes its spectrum
+(:func:`surfmet.mechanics.spectrum.spectrum`),
 runs the boundary elements along the nominal pressures (:func:`contact.flat.flat_contact`:
 periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
 the same spectrum:
@@ -27,8 +28,8 @@ import numpy as np
 from contact.flat import FlatContact
 from contact.roughcontact import ModelCurve
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
-from surfmet.spectrum import Spectrum
 
 
 @dataclass(frozen=True, eq=False)
@@ -102,7 +103,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     from contact.errors import ContactInputError
     from contact.flat import flat_contact as bem_sweep
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
-    from surfmet.spectrum import prepare, spectrum
+    from surfmet.mechanics.spectrum import prepare, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))

@@ -1,7 +1,7 @@
 """Scan-level rolling resistance: the effective exponent lambda of M_r = s_r N^lambda for a
 ball rolling on a scanned plate (and a scanned ball).
 
-The scans are prepared as for the Hertz check (:func:`surfmet.hertz_check.prepare_scans`:
+The scans are prepared as for the Hertz check (:func:`surfmet.mechanics.hertz_check.prepare_scans`:
 spikes removed, plate levelled, ball sphere removed, both paired on one grid) and the load
 sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
 choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
@@ -34,7 +34,7 @@ class RollingReport:
     sweep : contact.rolling.RollingSweep
     radius : float
     ball_material, plate_material : contact.materials.Material
-    scans : surfmet.hertz_check.PreparedScans
+    scans : surfmet.mechanics.hertz_check.PreparedScans
     notes : tuple of str
     """
 
@@ -136,8 +136,8 @@ def rolling_resistance(
     """
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
-    from surfmet.hertz_check import prepare_scans
-    from surfmet.materials import parse_materials
+    from surfmet.mechanics.hertz_check import prepare_scans
+    from surfmet.mechanics.material_spec import parse_materials
     from surfmet.units import parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -162,7 +162,7 @@ def rolling_resistance(
     prep = prepare_scans(plate, ball, spikes=spikes)
     pair = prep.pair
     if offset is not None:
-        from surfmet.pairing import apex_centre
+        from surfmet.mechanics.pairing import apex_centre
 
         centre = apex_centre(pair, offset)
     sweep = sphere_sweep(

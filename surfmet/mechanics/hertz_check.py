@@ -3,7 +3,7 @@
 :func:`hertz_check` takes the plate scan (and optionally the ball scan), removes spikes
 (optical outliers are not asperities: a single 50 µm spike would carry newtons in an
 elastic solution), levels the plate, removes the ball's sphere, pairs the two on one grid
-(:func:`surfmet.pairing.prepare_pair`), solves the contact elastically and with the softer
+(:func:`surfmet.mechanics.pairing.prepare_pair`), solves the contact elastically and with the softer
 body's hardness (:func:`contact.hertzcheck.check_sphere`) and compares with Hertz
 (criteria and verdict in :mod:`contact.hertzcheck`).
 
@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
-from surfmet.materials import parse_materials
+from surfmet.mechanics.material_spec import parse_materials
 from surfmet.model import Topography
 
 
@@ -89,7 +89,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -
         Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first; they
         become non-measured points.
     """
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.pairing import prepare_pair
 
     plate = _scan(plate, "plate")
     ball = _scan(ball, "ball")
@@ -259,7 +259,7 @@ def hertz_check(
     """
     from contact.hertzcheck import check_sphere
     from contact.materials import composite_modulus, contact_hardness
-    from surfmet.pairing import apex_centre
+    from surfmet.mechanics.pairing import apex_centre
     from surfmet.units import parse_force, parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)

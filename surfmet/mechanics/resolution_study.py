@@ -2,7 +2,8 @@
 ``rolling``.
 
 The scans are prepared as for the ordinary commands (spikes removed, plate levelled, the
-ball's sphere removed, both paired on the finer pitch by :func:`surfmet.pairing.prepare_pair`),
+ball's sphere removed, both paired on the finer pitch by
+:func:`surfmet.mechanics.pairing.prepare_pair`),
 then :mod:`contact.resolution` solves the contact on the composite roughness block-averaged
 8x, 4x, 2x and at the native pixel, and fits the trend of each quantity against the pixel.
 This module prints the study as a table (its JSON record is
@@ -34,7 +35,7 @@ QUANTITIES = {
 
 
 def _prepared(plate: Any, ball: Any, spikes: bool) -> Any:
-    from surfmet.hertz_check import prepare_scans
+    from surfmet.mechanics.hertz_check import prepare_scans
 
     if plate is None and ball is None:
         raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
@@ -74,11 +75,11 @@ def contact_study(
 
     Returns
     -------
-    (contact.resolution.ResolutionStudy, surfmet.hertz_check.PreparedScans)
+    (contact.resolution.ResolutionStudy, surfmet.mechanics.hertz_check.PreparedScans)
     """
     from contact.materials import composite_modulus
     from contact.resolution import sphere_study
-    from surfmet.materials import parse_materials
+    from surfmet.mechanics.material_spec import parse_materials
 
     ball_m, plate_m = parse_materials(materials)
     prep = _prepared(plate, ball, spikes)
@@ -105,7 +106,7 @@ def rolling_study(
     ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`."""
     from contact.materials import composite_modulus
     from contact.resolution import rolling_study as engine
-    from surfmet.materials import parse_materials
+    from surfmet.mechanics.material_spec import parse_materials
 
     ball_m, plate_m = parse_materials(materials)
     prep = _prepared(plate, ball, spikes)
