@@ -71,45 +71,19 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     import json
-    import warnings
 
     import numpy as np
 
-    import surfmet
-    from contact.errors import EdgeContactWarning
-    from contact.materials import composite_modulus, contact_hardness
-    from contact.sphere import solve_sphere
-    from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.material_spec import parse_materials
-    from surfmet.mechanics.pairing import prepare_pair
+    from surfmet.mechanics.ball_contact import ball_contact
     from surfmet.units import format_length, jsonable
 
     if args.resolution_study:
         from surfmet.cli._resolution_study import run_study
 
         return run_study(args, "contact")
-    ball_m, plate_m = parse_materials(args.materials)
-    e_star = composite_modulus(ball_m, plate_m)
-    hardness = args.hardness
-    if args.plastic:
-        hardness = contact_hardness(ball_m, plate_m)
-        if hardness is None:
-            raise SurfmetInputError("--plastic: neither material has a hardness; give --hardness")
     check_grid(args.grid)
-    if not (args.tol > 0):
-        raise SurfmetInputError("--tol must be positive")
-
-    pair = None
-    if args.plate or args.ball:
-        plate = surfmet.read(args.plate) if args.plate else None
-        ball = surfmet.read(args.ball) if args.ball else None
-        pair = prepare_pair(plate, ball)
-        if not args.json:
-            for note in pair.notes:
-                log(f"note: {note}")
-
     bar = None
-    big = (args.grid or 0) >= 512 or pair is not None
+    big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
 
     def callback(it: int, residual: float) -> None:
         nonlocal bar
@@ -121,30 +95,24 @@ def run(args: argparse.Namespace) -> int:
         bar.update(1)
         bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
 
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", EdgeContactWarning)
-        try:
-            res = solve_sphere(
-                args.radius, args.load, e_star,
-                roughness=None if pair is None else pair.roughness,
-                roughness_dx=None if pair is None else pair.dx,
-                roughness_dy=None if pair is None else pair.dy,
-                hardness=hardness, periodic=args.periodic, grid=args.grid, size=args.size,
-                max_grid=None,
-                tol=args.tol, max_iter=args.max_iter, callback=callback,
-                on_edge=args.on_edge,
-            )
-        finally:
-            if bar is not None:
-                bar.close()
-    for w in caught:
-        if issubclass(w.category, EdgeContactWarning):
-            log(f"warning: {w.message}")
+    try:
+        sol = ball_contact(
+            args.plate, args.ball, radius=args.radius, load=args.load,
+            materials=args.materials, hardness=args.hardness, plastic=args.plastic,
+            grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
+            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback)
+    finally:
+        if bar is not None:
+            bar.close()
+    res, pair = sol.result, sol.pair
+    ball_m, plate_m = sol.ball_material, sol.plate_material
+    if pair is not None and not args.json:
+        for note in pair.notes:
+            log(f"note: {note}")
+    for w in sol.warnings:
+        log(f"warning: {w}")
 
-    from surfmet.records import contact_record
-
-    rec = contact_record(res, ball_m, plate_m, pair, radius=args.radius,
-                         plate_file=args.plate, ball_file=args.ball)
+    rec = sol.to_json()
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
         np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,

@@ -38,23 +38,20 @@ def rotor_loads() -> dict[str, float]:
 
 
 def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
-    """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness."""
-    import warnings
-
-    from contact.errors import EdgeContactWarning
+    """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness
+    (:mod:`surfmet.mechanics.ball_contact`)."""
     from contact.materials import contact_hardness
-    from contact.sphere import solve_sphere
-    from surfmet.records import contact_record
+    from surfmet.mechanics.ball_contact import BallContact, solve_on_pair
 
     pair = check.scans.pair
     hardness = contact_hardness(check.ball_material, check.plate_material)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", EdgeContactWarning)
-        res = solve_sphere(RADIUS, load, check.e_star, roughness=pair.roughness,
-                           roughness_dx=pair.dx, roughness_dy=pair.dy, hardness=hardness)
-    rec = contact_record(res, check.ball_material, check.plate_material, pair, radius=RADIUS,
-                         plate_file="paper_plate.x3p", ball_file="paper_ball.x3p")
-    rec["notes"] = [*rec["notes"], *(str(w.message) for w in caught)]
+    res, found = solve_on_pair(pair, radius=RADIUS, load=load, e_star=check.e_star,
+                               hardness=hardness)
+    sol = BallContact(result=res, ball_material=check.ball_material,
+                      plate_material=check.plate_material, pair=pair, radius=RADIUS,
+                      plate_file="paper_plate.x3p", ball_file="paper_ball.x3p", warnings=found)
+    rec = sol.to_json()
+    rec["notes"] = [*rec["notes"], *found]
     return rec, res
 
 
