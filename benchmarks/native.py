@@ -72,14 +72,15 @@ def iteration_child(n: int, repeats: int) -> dict:
     import surfmet
     from contact.bem import SolverStats, convolution
     from contact.materials import composite_modulus, material
-    from contact.sphere import SphereContact
+    from contact.setups import CompositeRoughness
+    from contact.setups.ball_on_plate import SphereContact
     from surfmet.mechanics.pairing import prepare_pair
 
     pair = prepare_pair(surfmet.read(DATA / "paper_plate.x3p"),
                         surfmet.read(DATA / "paper_ball.x3p"))
     e_star = composite_modulus(material("steel"), material("aluminium"))
-    prob = SphereContact(0.02, e_star, 10.0, roughness=pair.roughness, roughness_dx=pair.dx,
-                         roughness_dy=pair.dy, grid=n)
+    rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy)
+    prob = SphereContact(0.02, e_star, 10.0, roughness=rough, grid=n)
     stamps: list[float] = []
     stats = SolverStats()
     t0 = time.perf_counter()

@@ -9,10 +9,16 @@ Main entry points::
     E = composite_modulus(material("steel"), material("aluminium"))
     hertz_sphere(0.02, 10.0, E)            # a, delta, p0 of the paper's ball
     res = solve_sphere(0.02, 10.0, E)      # FFT-BEM, smooth ball: ContactResult
-    res = solve_sphere(0.02, 10.0, E, roughness=z, roughness_dx=5e-6)   # rough
-    prob = SphereContact(0.02, E, 100.0, roughness=z, roughness_dx=5e-6)
+    rough = CompositeRoughness(z, 5e-6)    # composite roughness, pitch, apex position
+    res = solve_sphere(0.02, 10.0, E, roughness=rough)                  # rough
+    prob = SphereContact(0.02, E, 100.0, roughness=rough)
     results = prob.sweep([1, 3, 10, 30, 100])   # warm-started load sweep
     check_sphere(...)                      # BEM against Hertz, with a verdict (hertzcheck)
+
+Rooms: set-ups (``contact.setups``: ball on plate, line, flat, the composite roughness),
+field post-processing (``contact.fields``), roughness statistics (``contact.roughstats``),
+theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hertzcheck``,
+``contact.resolution``), rolling resistance (``contact.rolling``).
     sphere_sweep(...); fit_exponent(...)   # rolling-resistance exponent (rolling)
     analyse_table(columns)                 # rotor law of motion (rotor.groups)
 
@@ -49,20 +55,22 @@ from contact.materials import (
 )
 
 _LAZY = {
+    "CompositeRoughness": "contact.setups.composite",
+    "flat_contact": "contact.setups.flat",
     "solve_normal": "contact.bem",
     "SolverStats": "contact.bem",
     "ContactResult": "contact.result",
-    "SphereContact": "contact.sphere",
-    "solve_sphere": "contact.sphere",
+    "SphereContact": "contact.setups.ball_on_plate",
+    "solve_sphere": "contact.setups.ball_on_plate",
     "auto_domain": "contact.geometry",
     "sphere_gap": "contact.geometry",
     "cylinder_gap": "contact.geometry",
-    "gjm_alpha": "contact.hertzcheck",
+    "gjm_alpha": "contact.roughstats",
     "check_sphere": "contact.hertzcheck",
     "sphere_sweep": "contact.rolling",
     "cylinder_sweep": "contact.rolling",
     "fit_exponent": "contact.rolling",
-    "solve_cylinder": "contact.line",
+    "solve_cylinder": "contact.setups.line",
     "mass_properties": "contact.rotor.mechanics",
     "angular_acceleration": "contact.rotor.mechanics",
     "analyse_test": "contact.rotor.analysis",
@@ -80,6 +88,7 @@ def __getattr__(name: str) -> Any:
 
 __all__ = [
     "MATERIALS",
+    "CompositeRoughness",
     "ContactError",
     "ContactInputError",
     "ContactMemoryError",
@@ -104,6 +113,7 @@ __all__ = [
     "cylinder_sweep",
     "displacement_shares",
     "fit_exponent",
+    "flat_contact",
     "gjm_alpha",
     "hertz_cylinder",
     "hertz_sphere",

@@ -1,9 +1,11 @@
-"""Argument checks shared by the contact engine (raising its input-error family)."""
+"""Argument checks and array helpers shared by the contact engine (input-error family)."""
 
 from __future__ import annotations
 
 import math
 from typing import Any
+
+import numpy as np
 
 from contact.errors import ContactInputError
 
@@ -21,3 +23,14 @@ def positive(value: Any, what: str, unit: str = "") -> float:
     if not (math.isfinite(v) and v > 0):
         raise ContactInputError(f"{what} must be positive and finite{where}, got {value!r}")
     return v
+
+
+def frozen(a: Any) -> np.ndarray:
+    """``a`` as a C-contiguous, read-only array (a copy only where ``a`` is not contiguous).
+
+    Results are frozen dataclasses; freezing their arrays too keeps a caller from changing
+    a field behind the derived scalars' back.
+    """
+    out = np.ascontiguousarray(a)
+    out.setflags(write=False)
+    return out

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.fft as sfft
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.hertz import hertz_sphere
 
@@ -34,8 +35,7 @@ def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
     R - sqrt(R^2 - r^2) (it differs by r^4/(8R^3), a relative 1e-5 at r = a for the
     paper's ball).
     """
-    if not (radius > 0 and math.isfinite(radius)):
-        raise ContactInputError(f"the sphere radius must be positive, got {radius!r}")
+    radius = positive(radius, "the sphere radius", "m")
     ny = n if ny is None else ny
     dy = dx if dy is None else dy
     r2 = centred_coordinates(n, dx)[None, :] ** 2 + centred_coordinates(ny, dy)[:, None] ** 2
@@ -48,8 +48,7 @@ def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
 
 def cylinder_gap(n: int, dx: float, radius: float, *, ny: int | None = None) -> np.ndarray:
     """Initial gap x^2/(2R) of a cylinder with its axis along y, shape (ny, n)."""
-    if not (radius > 0 and math.isfinite(radius)):
-        raise ContactInputError(f"the cylinder radius must be positive, got {radius!r}")
+    radius = positive(radius, "the cylinder radius", "m")
     ny = n if ny is None else ny
     x = centred_coordinates(n, dx)
     return np.broadcast_to(x[None, :] ** 2 / (2.0 * radius), (ny, n)).copy()
@@ -168,8 +167,8 @@ def auto_domain(
     - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
     """
     a = hertz_sphere(radius, load, e_star).a
-    if size is not None and not (size > 0 and math.isfinite(size)):
-        raise ContactInputError(f"the domain size must be positive, got {size!r}")
+    if size is not None:
+        size = positive(size, "the domain size", "m")
     if grid is not None and int(grid) < 8:
         raise ContactInputError(f"the grid needs at least 8 cells per side, got {grid!r}")
     rough = roughness_rms > 0 and roughness_dx is not None

@@ -41,7 +41,6 @@ asperities and are stable under refinement.
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -50,7 +49,16 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.fields import (
+    PROFILE_EXTENT,
+    RadialProfile,
+    effective_radius,
+    profile_deviation,
+    radial_average,
+)
 from contact.hertz import HertzSphere, hertz_sphere
+from contact.roughstats import combined_rms, gjm_alpha
+from contact.setups.composite import CompositeRoughness
 
 #: GJM (1984): Hertz is accurate to a few percent below this alpha.
 ALPHA_LIMIT = 0.05
@@ -64,170 +72,6 @@ PLASTIC_LIMIT = 0.01
 #: First yield below the surface of a Hertz contact: p0 = 1.60 Y (nu = 0.3, Johnson
 #: sec. 6.2) with Y = H / 2.8 (Tabor): p0 / H = 1.60 / 2.8.
 FIRST_YIELD_P0_OVER_H = 1.60 / 2.8
-#: The profile deviation is measured within this many Hertz radii.
-PROFILE_EXTENT = 1.5
-
-
-def gjm_alpha(sigma: float, radius: float, a0: float) -> float:
-    """The Greenwood-Johnson-Matsubara roughness parameter alpha = sigma R / a0^2.
-
-    Parameters
-    ----------
-    sigma : float
-        Combined rms roughness of the two surfaces (m), sqrt(sigma1^2 + sigma2^2).
-    radius : float
-        Ball radius R (m).
-    a0 : float
-        Hertz contact radius of the smooth surfaces at the same load (m).
-    """
-    for name, v in (("sigma", sigma), ("radius", radius), ("a0", a0)):
-        if not math.isfinite(v) or v < 0 or (name != "sigma" and v == 0):
-            raise ContactInputError(f"{name} must be a finite positive length, got {v!r}")
-    return float(sigma) * float(radius) / float(a0) ** 2
-
-
-def combined_rms(*surfaces: np.ndarray | None) -> float:
-    """Combined rms of independent surfaces, sqrt(sum sigma_i^2), each from its finite points
-    about its own mean (NaN = not measured is ignored; None entries are skipped)."""
-    total = 0.0
-    for z in surfaces:
-        if z is None:
-            continue
-        a = np.asarray(z, dtype=float)
-        v = a[np.isfinite(a)]
-        if v.size == 0:
-            raise ContactInputError("a roughness map has no measured point")
-        total += float(np.mean((v - v.mean()) ** 2))
-    return math.sqrt(total)
-
-
-@dataclass(frozen=True, eq=False)
-class RadialProfile:
-    """Azimuthal average of a pressure field.
-
-    Attributes
-    ----------
-    r : ndarray
-        Bin centres (m): 0, w, 2w, ... (bin k holds the cells with (k - 1/2) w <= r <
-        (k + 1/2) w; bin 0 those with r < w/2).
-    p : ndarray
-        Mean pressure of the cells of each bin (Pa).
-    p_hertz : ndarray or None
-        Mean Hertz pressure over the same cells (Pa), when a Hertz solution was given.
-    count : ndarray
-        Cells per bin.
-    width : float
-        Bin width w (m).
-    centre : (float, float)
-        Centre of the average (m).
-    """
-
-    r: np.ndarray
-    p: np.ndarray
-    p_hertz: np.ndarray | None
-    count: np.ndarray
-    width: float
-    centre: tuple[float, float]
-
-
-def radial_average(
-    pressure: np.ndarray,
-    x: np.ndarray,
-    y: np.ndarray,
-    *,
-    centre: tuple[float, float] = (0.0, 0.0),
-    width: float | None = None,
-    r_max: float | None = None,
-    hertz: HertzSphere | None = None,
-) -> RadialProfile:
-    """Azimuthally averaged pressure about ``centre``.
-
-    Parameters
-    ----------
-    pressure : ndarray, shape (ny, nx)
-        Pressure field (Pa) on cells centred at ``x`` (columns) and ``y`` (rows).
-    x, y : ndarray
-        Cell-centre coordinates (m).
-    centre : (float, float)
-        (x, y) of the centre (m); default the origin (the ball's apex in
-        :mod:`contact.sphere`).
-    width : float, optional
-        Bin width (m); default the larger of the cell pitch and r_max / 60.
-    r_max : float, optional
-        Largest bin centre (m); default the farthest cell that carries pressure.
-    hertz : HertzSphere, optional
-        Also average the Hertz pressure over the same cells.
-
-    Returns
-    -------
-    RadialProfile
-        Bins that hold no cell are dropped.
-    """
-    p = np.asarray(pressure, dtype=float)
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    if p.ndim != 2 or p.shape != (y.size, x.size):
-        raise ContactInputError(
-            f"pressure of shape {p.shape} does not match x ({x.size}) and y ({y.size})"
-        )
-    rr = np.hypot(x[None, :] - centre[0], y[:, None] - centre[1])
-    dx = float(np.min(np.diff(x))) if x.size > 1 else 1.0
-    dy = float(np.min(np.diff(y))) if y.size > 1 else dx
-    if r_max is None:
-        r_max = float(rr[p > 0].max()) if (p > 0).any() else float(rr.max())
-    if not (math.isfinite(r_max) and r_max > 0):
-        raise ContactInputError(f"r_max must be a positive length, got {r_max!r}")
-    if width is None:
-        width = max(dx, dy, r_max / 60.0)
-    if not (math.isfinite(width) and width > 0):
-        raise ContactInputError(f"the bin width must be positive, got {width!r}")
-    k = np.floor(rr / width + 0.5).astype(np.int64).ravel()
-    nb = math.floor(r_max / width + 0.5) + 1
-    keep = k < nb
-    k = k[keep]
-    count = np.bincount(k, minlength=nb)
-    sums = np.bincount(k, weights=p.ravel()[keep], minlength=nb)
-    ok = count > 0
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mean = sums / count
-    ph = None
-    if hertz is not None:
-        hp = hertz.pressure(rr).ravel()[keep]
-        ph = (np.bincount(k, weights=hp, minlength=nb) / np.maximum(count, 1))[ok]
-    return RadialProfile(r=np.arange(nb)[ok] * width, p=mean[ok], p_hertz=ph,
-                         count=count[ok], width=float(width),
-                         centre=(float(centre[0]), float(centre[1])))
-
-
-def effective_radius(pressure: np.ndarray, x: np.ndarray, y: np.ndarray,
-                     centre: tuple[float, float] | None = None) -> float:
-    """Radius a* of the Hertz distribution with the same second moment of pressure.
-
-    a* = sqrt(5/2 <r^2>_p), <r^2>_p = sum p r^2 / sum p about ``centre`` (default: the
-    pressure centroid). Hertz has <r^2>_p = 2 a^2 / 5, so a* = a for a smooth contact.
-    """
-    p = np.asarray(pressure, dtype=float)
-    total = p.sum()
-    if not total > 0:
-        return 0.0
-    xx = np.asarray(x, dtype=float)[None, :]
-    yy = np.asarray(y, dtype=float)[:, None]
-    if centre is None:
-        centre = (float((p * xx).sum() / total), float((p * yy).sum() / total))
-    m2 = float((p * ((xx - centre[0]) ** 2 + (yy - centre[1]) ** 2)).sum() / total)
-    return math.sqrt(2.5 * m2)
-
-
-def profile_deviation(profile: RadialProfile, p0: float, r_limit: float) -> float:
-    """Area-weighted rms of (p - p_hertz) over the bins within ``r_limit``, divided by p0."""
-    if profile.p_hertz is None:
-        raise ContactInputError("the profile carries no Hertz pressure to compare with")
-    sel = profile.r <= r_limit
-    if not sel.any():
-        return math.nan
-    w = profile.count[sel].astype(float)
-    d = profile.p[sel] - profile.p_hertz[sel]
-    return math.sqrt(float((w * d**2).sum() / w.sum())) / p0
 
 
 @dataclass(frozen=True)
@@ -329,7 +173,7 @@ def compare_with_hertz(
     Parameters
     ----------
     result : contact.ContactResult
-        Elastic solution on the grid of :mod:`contact.sphere` (apex at the origin).
+        Elastic solution on the grid of :mod:`contact.setups.ball_on_plate` (apex at the origin).
     radius : float
         Ball radius R (m).
     sigma : float
@@ -458,201 +302,12 @@ class SphereCheck:
     notes: tuple[str, ...]
 
 
-def solve_elastic_plastic(
-    problem: Any,
-    load: float,
-    hardness: float,
-    *,
-    elastic: Any = None,
-    plastic_start: np.ndarray | None = None,
-    pressure_start: np.ndarray | None = None,
-    tol: float = 1e-6,
-    method: str = "auto",
-    yield_tol: float = 1e-3,
-    relax: float = 0.7,
-    anderson: int = 6,
-    max_outer: int = 300,
-    engine_iterations: int = 2000,
-) -> Any:
-    """Elastic-perfectly-plastic solution of a ball on a plate.
-
-    Two independent algorithms solve the same conditions (p <= H everywhere, p = H
-    wherever the plastic displacement u_pl > 0, elastic complementarity elsewhere, load
-    balance):
-
-    - ``"capped"``: the solver's own capped Polonsky-Keer iteration
-      (:func:`contact.bem.solve_normal` with ``hardness``; the plastic cells are a second
-      active set, see the notes of :mod:`contact.bem`), warm-started from the elastic
-      solution clipped at H. Exact to the solver tolerance and robust from elastic to
-      fully plastic contacts; the default.
-    - ``"fixed-point"``: a plastic-displacement iteration built on elastic solves only:
-      solve the elastic contact of the gap h + u_pl, take the pressure above the hardness
-      on the yielded set, and deepen u_pl there by the displacement that excess pressure
-      makes (one convolution); where u_pl > 0 and p < H the indentation shrinks. The load
-      constraint pushes part of the removed load back onto the yielded cells, a slow mode
-      of the plain iteration when most of the contact yields; Anderson mixing (Walker & Ni
-      2011, SIAM J. Numer. Anal. 49:1715) over the last ``anderson`` steps removes it.
-      Every elastic solve is warm-started. It shares nothing with the capped iteration
-      but the elastic solver, which makes it a cross-check; deeply plastic contacts (Hertz
-      p0 tens of times H) converge slowly and may raise
-      :class:`~contact.errors.ConvergenceError`.
-    - ``"auto"``: ``"capped"``.
-
-    Parameters
-    ----------
-    problem : contact.sphere.SphereContact
-        The *elastic* problem (no hardness), on the domain to use.
-    load : float
-        Normal load (N).
-    hardness : float
-        Pressure cap H (Pa).
-    elastic : ContactResult, optional
-        Elastic solution of ``problem`` at ``load`` (solved here if absent).
-    plastic_start, pressure_start : ndarray, optional
-        Warm start of the plastic displacement (fixed-point iteration) and of the
-        pressure (e.g. from a lower load of a sweep; plastic displacement only grows with
-        the load).
-    tol : float
-        Tolerance of the solves (:func:`contact.bem.solve_normal`).
-    method : {"auto", "capped", "fixed-point"}
-        The algorithm (see above).
-    yield_tol : float
-        Fixed point: stop when the pressure exceeds H by at most this fraction of H.
-    relax : float
-        Fixed point: mixing parameter of the plastic-displacement update (0 < relax <= 1).
-    anderson : int
-        Fixed point: depth of the Anderson mixing history.
-    max_outer : int
-        Fixed point: outer-iteration limit.
-    engine_iterations : int
-        Capped solver: iteration limit.
-
-    Returns
-    -------
-    ContactResult
-        ``hardness`` set, the pressure at H on the yielded cells, ``plastic_displacement``
-        the permanent (combined) indentation; ``extra["plastic_method"]`` says which
-        method produced it.
-
-    Raises
-    ------
-    ConvergenceError
-        The chosen method did not converge.
-    """
-    import dataclasses
-    import warnings
-
-    from contact.bem import convolution, solve_normal
-    from contact.errors import ConvergenceError, EdgeContactWarning
-    from contact.result import build_result
-
-    if not (math.isfinite(hardness) and hardness > 0):
-        raise ContactInputError(f"the hardness must be a positive pressure, got {hardness!r}")
-    if method not in ("auto", "capped", "fixed-point"):
-        raise ContactInputError(
-            f"method must be 'auto', 'capped' or 'fixed-point', got {method!r}")
-    if getattr(problem, "hardness", None) is not None:
-        raise ContactInputError("give the elastic problem (built without a hardness)")
-    if method == "auto":
-        method = "capped"
-    n, dx = problem.domain.n, problem.domain.dx
-    e_star = problem.e_star
-    origin = (-(n // 2) * dx, -(n // 2) * dx)
-    h = problem.gap0
-    hz = hertz_sphere(problem.radius, load, e_star)
-    if elastic is None and pressure_start is None:
-        elastic = problem.solve(load, tol=tol, on_edge="warn")
-    start = pressure_start if pressure_start is not None else np.asarray(elastic.pressure)
-    if start.shape != h.shape:
-        raise ContactInputError("the warm start does not match the problem's grid")
-
-    def finish(res: Any, method: str, extra: dict[str, Any]) -> Any:
-        notes = list(getattr(problem, "notes", []))
-        if res.touches_edge:
-            msg = ("contact pressure reaches the edge of the domain in the elastic-plastic "
-                   "solution: the result is truncated")
-            warnings.warn(msg, EdgeContactWarning, stacklevel=3)
-            notes.append(msg)
-        return dataclasses.replace(res, hertz=hz, notes=tuple(notes),
-                                   extra={**res.extra, "plastic_method": method, **extra})
-
-    if method == "capped":
-        res = solve_normal(h, dx, e_star=e_star, load=load, hardness=hardness,
-                           initial=np.minimum(start, hardness), tol=tol,
-                           max_iter=engine_iterations, origin=origin, edge="ignore",
-                           strict=True)
-        return finish(res, "capped conjugate gradient (contact.bem)", {})
-
-    conv = convolution(n, n, float(dx), float(dx), False)
-    upl = (np.zeros_like(h) if plastic_start is None
-           else np.maximum(np.asarray(plastic_start, dtype=float), 0.0))
-    if upl.shape != h.shape:
-        raise ContactInputError("the plastic warm start does not match the problem's grid")
-    p = start
-    its = 0
-    hist_u: list[np.ndarray] = []
-    hist_g: list[np.ndarray] = []
-    best = math.inf
-    res = None
-    worst = math.inf
-    n_outer = 0
-    for n_outer in range(1, max_outer + 1):  # noqa: B007 (reported after the loop)
-        res = solve_normal(h + upl, dx, e_star=e_star, load=load, initial=p, tol=tol,
-                           origin=origin, edge="ignore")
-        its += res.iterations
-        p = np.asarray(res.pressure)
-        excess = p - hardness
-        active = (excess > 0) | (upl > 0)
-        step = np.where(active, excess, 0.0)
-        worst = float(np.abs(step).max()) / hardness
-        if worst <= yield_tol:
-            break
-        # the fixed-point map u -> u + K*(excess)/E*; its slow mode (load pushed back onto
-        # the yielded cells by the load constraint) is what Anderson mixing removes
-        g = np.where(active, conv(step) / e_star, 0.0).ravel()
-        if worst > 4.0 * best:  # a bad extrapolation: forget the history
-            hist_u.clear()
-            hist_g.clear()
-        best = min(best, worst)
-        hist_u.append(upl.ravel().copy())
-        hist_g.append(g)
-        if len(hist_u) > anderson + 1:
-            hist_u.pop(0)
-            hist_g.pop(0)
-        new = hist_u[-1] + relax * hist_g[-1]
-        if len(hist_u) >= 2:
-            d_g = np.stack([b - a for a, b in itertools.pairwise(hist_g)], axis=1)
-            d_u = np.stack([b - a for a, b in itertools.pairwise(hist_u)], axis=1)
-            gamma, *_ = np.linalg.lstsq(d_g, hist_g[-1], rcond=None)
-            new = new - (d_u + relax * d_g) @ gamma
-        upl = np.maximum(new.reshape(h.shape), 0.0)
-    else:
-        raise ConvergenceError(
-            f"the elastic-plastic iteration stopped after {max_outer} steps with the "
-            f"pressure {100 * worst:.3g} % above the hardness (deeply plastic contacts, "
-            "Hertz p0 many times the hardness, converge slowly); raise max_outer or use "
-            "the rigid-plastic estimate", residual=worst, iterations=its,
-        )
-    pressure = np.where(upl > 0, hardness, np.minimum(p, hardness))
-    x = origin[0] + np.arange(n) * dx
-    out = build_result(
-        pressure=pressure, gap=np.asarray(res.gap), displacement=np.asarray(res.displacement),
-        plastic_displacement=upl, x=x, y=x.copy(), dx=dx, dy=dx, e_star=e_star,
-        hardness=hardness, periodic=False, approach=res.approach, iterations=its,
-        residual=res.residual, converged=True,
-    )
-    return finish(out, "plastic-displacement iteration on elastic solves",
-                  {"outer_iterations": n_outer, "yield_excess": worst})
-
-
 def check_sphere(
     radius: float,
     load: float,
     e_star: float,
     *,
-    roughness: np.ndarray | None = None,
-    roughness_dx: float | None = None,
-    roughness_dy: float | None = None,
+    roughness: CompositeRoughness | None = None,
     sigma: float | None = None,
     hardness: float | None = None,
     grid: int | None = None,
@@ -660,7 +315,6 @@ def check_sphere(
     max_grid: int | None = 1024,
     on_edge: str = "enlarge",
     tol: float = 1e-6,
-    centre: tuple[float, float] | None = None,
 ) -> SphereCheck:
     """Solve a (rough) ball on a plate elastically and, with a hardness, elastic-plastically,
     and compare with Hertz.
@@ -669,42 +323,40 @@ def check_sphere(
     ----------
     radius, load, e_star : float
         R (m), W (N), E* (Pa).
-    roughness : ndarray, optional
-        Composite roughness (m), NaN where not measured (see :mod:`contact.sphere`).
-    roughness_dx, roughness_dy : float, optional
-        Its pitch (m).
+    roughness : CompositeRoughness, optional
+        Composite roughness under the ball, with its pitch and the apex position
+        (:class:`contact.setups.CompositeRoughness`); None for smooth surfaces.
     sigma : float, optional
-        Combined rms roughness for alpha (m); default the rms of the finite points of
-        ``roughness`` after removing its least-squares plane (0 without roughness).
+        Combined rms roughness for alpha (m); default the rms of the finite points of the
+        roughness after removing its least-squares plane (0 without roughness).
     hardness : float, optional
-        Hardness of the softer body (Pa); adds the elastic-plastic solve.
+        Hardness of the softer body (Pa); adds the elastic-plastic solve, on the domain the
+        elastic solve ended with, warm-started from it
+        (:meth:`contact.setups.ball_on_plate.SphereContact.solve` with ``hardness``).
     grid, size, max_grid, on_edge, tol
-        Passed to :class:`contact.sphere.SphereContact` and its ``solve``.
-    centre : (float, float), optional
-        Scan coordinates of the ball's apex on the roughness map (m); default its middle.
+        Passed to :class:`contact.setups.ball_on_plate.SphereContact` and its ``solve``.
     """
     from contact.geometry import remove_plane
-    from contact.sphere import SphereContact
+    from contact.setups.ball_on_plate import SphereContact
 
     if sigma is None:
         if roughness is None:
             sigma = 0.0
         else:
-            dx = roughness_dx if roughness_dx else 1.0
-            z, _ = remove_plane(np.asarray(roughness, dtype=float), dx, roughness_dy or dx)
+            z, _ = remove_plane(np.asarray(roughness.heights), roughness.dx, roughness.dy)
             sigma = combined_rms(z)
     # memory check: the elastic and the plastic result are kept together, and the
     # plastic solve needs about one result's worth more (contact.memory)
-    common = dict(roughness=roughness, roughness_dx=roughness_dx, roughness_dy=roughness_dy,
-                  grid=grid, size=size, max_grid=max_grid, centre=centre,
-                  results=1 if hardness is None else 3)
-    el_problem = SphereContact(radius, e_star, load, **common)
-    elastic = el_problem.solve(load, on_edge=on_edge, tol=tol)
+    problem = SphereContact(radius, e_star, load, roughness=roughness, grid=grid, size=size,
+                            max_grid=max_grid, results=1 if hardness is None else 3)
+    elastic = problem.solve(load, on_edge=on_edge, tol=tol)
     notes = list(elastic.notes)
     plastic = None
     if hardness is not None:
-        # on the domain the elastic solve ended with (it may have been enlarged)
-        plastic = solve_elastic_plastic(el_problem, load, hardness, elastic=elastic, tol=tol)
+        # the domain is the elastic one (never enlarged again): a plastic contact that
+        # reaches its edge is reported as truncated
+        plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
+                                tol=tol)
         notes += [n for n in plastic.notes if n not in notes]
     comp = compare_with_hertz(elastic, radius=radius, sigma=float(sigma), plastic=plastic,
                               hardness=hardness)

@@ -7,11 +7,12 @@ asperity-scale quantities (real area, peak pressure, yielded area) do not conver
 self-affine surface, because every halving of the pixel adds slopes and curvatures that
 were averaged away before.
 
-Coarsening is a block average of the heights (:func:`block_average`): the mean of each
-``k x k`` block of native pixels, an honest low-pass that a coarser instrument (a larger
-spot or stylus) would also apply. Every level is solved on the same physical domain,
-centred on the same point of the scan (to within half a native pixel), with the contact
-grid's pitch equal to the level's pixel, so that no interpolation adds a second filter.
+Coarsening is a block average of the heights (:func:`contact.fields.block_average`): the
+mean of each ``k x k`` block of native pixels, an honest low-pass that a coarser
+instrument (a larger spot or stylus) would also apply. Every level is solved on the same
+physical domain, centred on the same point of the scan (to within half a native pixel),
+with the contact grid's pitch equal to the level's pixel, so that no interpolation adds a
+second filter.
 
 Per level the study reports a*, the approach, the real area, the perimeter-corrected area,
 the yielded fraction, pmax, the combined rms slope (and, from :func:`rolling_study`,
@@ -27,12 +28,9 @@ self-affine surface with Hurst exponent H, h'_rms ~ dx^(H-1), so A ~ dx^(1-H): t
 cut-off is resolved; the elastic peak pressure grows like h'_rms. The study measures the
 rms slope of each level and gives the predicted area exponent from it.
 
-The perimeter correction follows Yastrebov, Anciaux & Molinari (2015), "From infinitesimal
-to full contact between rough surfaces: evolution of the contact area", Int. J. Solids
-Struct. 52:83-102 (also used in their 2017 J. Mech. Phys. Solids 107:469): counting the
-cells in contact over-estimates the area of a digitised contact by a term proportional to
-its perimeter, A_c = A - (pi - 1 + ln 2)/24 * P dx, with P the number of contact /
-no-contact switches between neighbouring cells times dx.
+The perimeter-corrected area is :func:`contact.fields.corrected_area` (Yastrebov, Anciaux &
+Molinari 2015, Int. J. Solids Struct. 52:83; also used in their 2017 J. Mech. Phys. Solids
+107:469).
 """
 
 from __future__ import annotations
@@ -40,7 +38,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -48,83 +46,14 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
+from contact.fields import centred_blocks, corrected_area
+from contact.roughstats import rms_slope
+from contact.setups.composite import CompositeRoughness
 
 #: Relative change over the last halving below which a quantity counts as converged.
 CONVERGED = 0.02
-#: Yastrebov et al. (2015) perimeter coefficient (pi - 1 + ln 2) / 24.
-PERIMETER_COEFFICIENT = (math.pi - 1.0 + math.log(2.0)) / 24.0
 #: The coarsening factors of the study, coarsest first.
 FACTORS = (8, 4, 2, 1)
-
-
-def block_average(z: np.ndarray, factor: int) -> np.ndarray:
-    """Mean of each ``factor x factor`` block (rows and columns past a whole block dropped).
-
-    Parameters
-    ----------
-    z : ndarray (ny, nx)
-        Heights (finite).
-    factor : int
-        Block side in pixels (1 returns a copy).
-
-    Returns
-    -------
-    ndarray (ny // factor, nx // factor)
-    """
-    z = np.asarray(z, dtype=float)
-    k = int(factor)
-    if k < 1 or k != factor:
-        raise ContactInputError(f"the coarsening factor must be a positive integer, got {factor!r}")
-    if z.ndim != 2:
-        raise ContactInputError(f"the heights must be a 2D map, got shape {z.shape}")
-    ny, nx = z.shape[0] // k, z.shape[1] // k
-    if ny < 1 or nx < 1:
-        raise ContactInputError(f"a {z.shape} map is smaller than one {k} x {k} block")
-    return z[:ny * k, :nx * k].reshape(ny, k, nx, k).mean(axis=(1, 3))
-
-
-def centred_blocks(z: np.ndarray, factor: int, centre: tuple[int, int]
-                   ) -> tuple[np.ndarray, tuple[int, int]]:
-    """Block-average ``z`` with one block on the native pixel ``centre`` (row, column) and as
-    many whole blocks on either side as fit symmetrically.
-
-    Returns the coarse map and the (row, column) of the centre block in it. For an even
-    factor the centre block's middle lies half a native pixel before ``centre``.
-    """
-    k = int(factor)
-    out_slices = []
-    index = []
-    for c, n in zip(centre, z.shape):
-        start = c - k // 2
-        m = min(start // k, (n - start - k) // k)
-        if start < 0 or m < 0:
-            raise ContactInputError("the scan is too small around its centre for a "
-                                    f"{k} x {k} block")
-        out_slices.append(slice(start - m * k, start + (m + 1) * k))
-        index.append(m)
-    return block_average(z[tuple(out_slices)], k), (index[0], index[1])
-
-
-def rms_slope(z: np.ndarray, dx: float, dy: float | None = None) -> float:
-    """Rms gradient sqrt(<(dz/dx)^2 + (dz/dy)^2>) by forward differences (dimensionless)."""
-    z = np.asarray(z, dtype=float)
-    dy = dx if dy is None else dy
-    gx = np.diff(z, axis=1) / dx
-    gy = np.diff(z, axis=0) / dy
-    return float(math.sqrt(np.mean(gx**2) + np.mean(gy**2)))
-
-
-def corrected_area(contact: np.ndarray, dx: float, dy: float | None = None) -> float:
-    """Real contact area with the Yastrebov-Anciaux-Molinari (2015) perimeter correction.
-
-    A_c = n_contact dx dy - (pi - 1 + ln 2)/24 * (switches along x + switches along y) dx dy,
-    where a switch is a pair of neighbouring cells of which one is in contact.
-    """
-    c = np.asarray(contact, dtype=bool)
-    dy = dx if dy is None else dy
-    switches = int(np.count_nonzero(c[:, 1:] != c[:, :-1])
-                   + np.count_nonzero(c[1:, :] != c[:-1, :]))
-    return float((np.count_nonzero(c) - PERIMETER_COEFFICIENT * switches) * dx * dy)
 
 
 # -- trends ---------------------------------------------------------------------------------
@@ -420,6 +349,22 @@ def _level_values(res: Any, comp: Any, pmax_elastic: float, level_z: np.ndarray,
     }
 
 
+def _coarse_maps(z: np.ndarray, dx: float, dy: float, centre: tuple[int, int], n1: int,
+                 factors: Sequence[int], progress: Callable[[str], Any] | None, *,
+                 level: bool) -> Iterator[tuple[int, CompositeRoughness, int, float]]:
+    """Per factor k: the k x k block average of ``z`` around the study's centre pixel as a
+    :class:`CompositeRoughness` (apex on the centre block), the level's grid n1 // k and the
+    time the level started."""
+    for k in factors:
+        if progress is not None:
+            progress(f"pixel x{k}")
+        t0 = time.perf_counter()
+        zc, (i, j) = centred_blocks(z, k, centre)
+        px, py = dx * k, dy * k
+        rough = CompositeRoughness(zc, px, py, centre=(j * px, i * py), level=level)
+        yield k, rough, n1 // k, t0
+
+
 def _levels(roughness: np.ndarray, dx: float, dy: float | None, factors: Sequence[int]
             ) -> tuple[np.ndarray, float, tuple[int, int]]:
     from contact.geometry import fill_nan, remove_plane
@@ -476,13 +421,13 @@ def sphere_study(
     max_grid : int
         Largest native grid accepted (cells per side).
     on_edge, tol
-        Passed to :meth:`contact.sphere.SphereContact.solve`.
+        Passed to :meth:`contact.setups.ball_on_plate.SphereContact.solve`.
     progress : callable, optional
         Called with a short label before each level.
     """
     from contact.geometry import auto_domain
-    from contact.hertzcheck import compare_with_hertz, solve_elastic_plastic
-    from contact.sphere import SphereContact
+    from contact.hertzcheck import compare_with_hertz
+    from contact.setups.ball_on_plate import SphereContact
 
     radius = positive(radius, "the ball radius", "m")
     load = positive(load, "the load", "N")
@@ -495,26 +440,22 @@ def sphere_study(
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     notes: list[str] = []
     levels = []
-    for k in factors:
-        if progress is not None:
-            progress(f"pixel x{k}")
-        t0 = time.perf_counter()
-        zc, (i, j) = centred_blocks(z, k, centre)
-        px, py = dx * k, dy * k
-        n = n1 // k
-        problem = SphereContact(radius, e_star, load, roughness=zc, roughness_dx=px,
-                                roughness_dy=py, centre=(j * px, i * py), level=False,
-                                grid=n, size=n * px)
+    for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
+                                        level=False):
+        px = rough.dx
+        problem = SphereContact(radius, e_star, load, roughness=rough, grid=n, size=n * px)
         elastic = problem.solve(load, on_edge=on_edge, tol=tol)
         plastic = None
         if hardness is not None:
-            plastic = solve_elastic_plastic(problem, load, hardness, elastic=elastic, tol=tol)
+            # on the elastic domain, warm-started from the elastic solution
+            plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
+                                    tol=tol)
         comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
                                   hardness=hardness)
         main = plastic if plastic is not None else elastic
         if problem.domain.n != n:
             notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")
-        vals = _level_values(main, comp, elastic.pmax, zc, px, hardness)
+        vals = _level_values(main, comp, elastic.pmax, rough.heights, px, hardness)
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=problem.domain.n, values=vals,
                                  comparison=comp, result=main,
                                  seconds=time.perf_counter() - t0))
@@ -573,21 +514,16 @@ def rolling_study(
                        grid=16, hardness=sweep_kwargs.get("hardness")).size
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     levels = []
-    for k in factors:
-        if progress is not None:
-            progress(f"pixel x{k}")
-        t0 = time.perf_counter()
-        zc, (i, j) = centred_blocks(z, k, centre)
-        px, py = dx * k, dy * k
-        n = n1 // k
-        sw = sphere_sweep(radius, e_star, loads, roughness=zc, roughness_dx=px,
-                          roughness_dy=py, roughness_rms=sig, centre=(j * px, i * py),
-                          grid=n, size=n * px, **sweep_kwargs)
+    for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
+                                        level=True):
+        px = rough.dx
+        sw = sphere_sweep(radius, e_star, loads, roughness=rough, roughness_rms=sig, grid=n,
+                          size=n * px, **sweep_kwargs)
         lo, hi = sw.lambda_ci
         if sw.fit is None:
             notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")
         vals = {"lambda_eff": float(sw.lambda_eff), "lambda_lo": float(lo),
-                "lambda_hi": float(hi), "rms_slope": rms_slope(zc, px)}
+                "lambda_hi": float(hi), "rms_slope": rms_slope(rough.heights, px)}
         levels.append(StudyLevel(factor=int(k), pixel=px, grid=n, values=vals, sweep=sw,
                                  seconds=time.perf_counter() - t0))
     pixels = [lv.pixel for lv in levels]

@@ -66,7 +66,9 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
+from contact.setups.composite import CompositeRoughness
 
 KINEMATICS = ("rolling", "frozen")
 MODELS = ("hysteresis", "plastic")
@@ -113,7 +115,7 @@ def hysteresis_work(
 
     Parameters
     ----------
-    result : contact.ContactResult or contact.line.LineContactResult
+    result : contact.ContactResult or contact.setups.line.LineContactResult
         Contact solution (for a line contact, per unit length along the line: N/m).
     radius : float
         Radius R of the ball or cylinder (m); needed by ``kinematics="rolling"``.
@@ -129,7 +131,7 @@ def hysteresis_work(
         (``contact.materials.displacement_shares``); 1 = the combined displacement.
     apex : (float, float)
         Coordinates of the ball's apex on the grid (m); the origin in
-        :mod:`contact.sphere`.
+        :mod:`contact.setups.ball_on_plate`.
 
     Returns
     -------
@@ -192,10 +194,8 @@ def plastic_work(
     if H is None:
         raise ContactInputError("the plastic model needs an elastic-plastic solution "
                                 "(solve with a hardness)")
-    if not (math.isfinite(radius) and radius > 0):
-        raise ContactInputError(f"the radius must be a positive length, got {radius!r}")
-    if not (math.isfinite(band) and band > 0):
-        raise ContactInputError(f"band must be positive, got {band!r}")
+    positive(radius, "the radius", "m")
+    positive(band, "band")
     axis, _ = _direction(direction)
     upl = np.asarray(result.plastic_displacement, dtype=float)
     depth = float(upl.max()) + max(float(roughness_rms), 0.0)
@@ -387,11 +387,8 @@ def sphere_sweep(
     loads: Iterable[float],
     *,
     model: str = "hysteresis",
-    roughness: np.ndarray | None = None,
-    roughness_dx: float | None = None,
-    roughness_dy: float | None = None,
+    roughness: CompositeRoughness | None = None,
     roughness_rms: float | None = None,
-    centre: tuple[float, float] | None = None,
     hardness: float | None = None,
     alpha_h: float = 1.0,
     share: float = 1.0,
@@ -417,13 +414,11 @@ def sphere_sweep(
         Normal loads (N); see :func:`log_loads`.
     model : {"hysteresis", "plastic"}
         Dissipation model (module notes). "plastic" needs ``hardness``.
-    roughness, roughness_dx, roughness_dy : optional
-        Composite roughness (m) and pitch, as for :class:`contact.sphere.SphereContact`.
+    roughness : CompositeRoughness, optional
+        Composite roughness with its pitch and the apex position (a track position), as
+        for :class:`contact.setups.ball_on_plate.SphereContact`.
     roughness_rms : float, optional
         Rms roughness for the plastic band width (default: from ``roughness``).
-    centre : (float, float), optional
-        Where the ball's apex sits on the roughness map (X, Y in m from its first point);
-        default the middle of the map.
     hardness : float, optional
         Flow pressure of the softer body (Pa).
     alpha_h : float
@@ -435,29 +430,25 @@ def sphere_sweep(
     band : float
         See :func:`plastic_work`.
     grid, size, max_grid, tol
-        Domain and solver settings (:class:`contact.sphere.SphereContact`).
+        Domain and solver settings (:class:`contact.setups.ball_on_plate.SphereContact`).
     confidence : float
         Level of the exponent's confidence interval.
     progress : callable, optional
         Wraps the iterable of loads (e.g. a progress bar).
     """
-    from contact.hertzcheck import solve_elastic_plastic
-    from contact.sphere import SphereContact
+    from contact.setups.ball_on_plate import SphereContact
 
     if model not in MODELS:
         raise ContactInputError(f"model must be one of {MODELS}, got {model!r}")
     if model == "plastic" and hardness is None:
         raise ContactInputError("the plastic model needs the hardness of the softer body")
-    if not (math.isfinite(alpha_h) and alpha_h > 0):
-        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    positive(alpha_h, "alpha_h")
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
     _check_fraction(share, "the displacement share")
     w = _loads(loads)
-    problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness,
-                            roughness_dx=roughness_dx, roughness_dy=roughness_dy,
-                            centre=centre, grid=grid, size=size, max_grid=max_grid,
-                            results=w.size + 1)
+    problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness, grid=grid,
+                            size=size, max_grid=max_grid, results=w.size + 1)
     rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
     forces = np.zeros(w.size)
     results: list[Any] = []
@@ -472,8 +463,9 @@ def sphere_sweep(
             forces[k] = alpha_h * hysteresis_work(el, radius, kinematics=kinematics,
                                                   share=share)
         else:
-            res = solve_elastic_plastic(problem, float(w[k]), float(hardness), elastic=el,
-                                        tol=tol)
+            # capped on the elastic domain, warm-started from the elastic solution
+            res = problem.solve(float(w[k]), hardness=float(hardness), initial=el,
+                                on_edge="warn", tol=tol)
             forces[k] = plastic_work(res, radius, band=band, roughness_rms=rms)
         results.append(res)
     for r in results:
@@ -508,10 +500,9 @@ def cylinder_sweep(
     domain, 2.5 contact widths of the largest load (unless ``size``), serves every load.
     """
     from contact.hertz import hertz_cylinder
-    from contact.line import solve_cylinder
+    from contact.setups.line import solve_cylinder
 
-    if not (math.isfinite(alpha_h) and alpha_h > 0):
-        raise ContactInputError(f"alpha_h must be positive, got {alpha_h!r}")
+    positive(alpha_h, "alpha_h")
     w = _loads(loads_per_length)
     side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
     forces = np.zeros(w.size)

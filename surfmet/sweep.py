@@ -140,18 +140,16 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
         })
     else:
         from contact.materials import composite_modulus
-        from contact.sphere import solve_sphere
+        from contact.setups.ball_on_plate import solve_sphere
         from surfmet.mechanics.material_spec import parse_materials
-        from surfmet.mechanics.pairing import apex_centre, prepare_pair
+        from surfmet.mechanics.pairing import prepare_pair
 
         ball_m, plate_m = parse_materials(item.materials)
         pair = prepare_pair(plate, ball) if (plate is not None or ball is not None) else None
         res = solve_sphere(
             item.radius, item.load, composite_modulus(ball_m, plate_m),
-            roughness=None if pair is None else pair.roughness,
-            roughness_dx=None if pair is None else pair.dx,
-            roughness_dy=None if pair is None else pair.dy,
-            centre=apex_centre(pair, item.position), hardness=item.hardness,
+            roughness=None if pair is None else pair.composite(item.position),
+            hardness=item.hardness,
             grid=item.grid, max_grid=None)
         row.update({
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),

@@ -17,6 +17,7 @@ from contact import (
 )
 from contact.bem import solve_normal
 from contact.geometry import sphere_gap
+from contact.setups import CompositeRoughness
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 
@@ -77,20 +78,28 @@ def test_bad_gap_arrays():
 @pytest.mark.parametrize(("args", "kwargs", "match"), [
     ((0.0, 10.0), {}, "radius"),
     ((0.02, -5.0), {}, "load"),
-    ((0.02, 10.0), {"roughness": np.full((32, 32), np.nan), "roughness_dx": 1e-6},
-     "NaN everywhere"),
-    ((0.02, 10.0), {"roughness": np.zeros((32, 32))}, "pitch"),
+    ((0.02, 10.0), {"roughness": (np.full((32, 32), np.nan), 1e-6)}, "NaN everywhere"),
+    ((0.02, 10.0), {"roughness": (np.zeros((32, 32)), None)}, "pitch"),
+    ((0.02, 10.0), {"roughness": (np.zeros(32), 1e-6)}, "2D map"),
+    ((0.02, 10.0), {"roughness": (np.zeros((32, 32)), 1e-6, None, (0.0, np.inf))}, "finite"),
     ((0.02, 10.0), {"on_edge": "ignore"}, "on_edge"),
 ])
 def test_bad_sphere_input(args, kwargs, match):
     with pytest.raises(ContactInputError, match=match):
+        if "roughness" in kwargs:
+            kwargs = {**kwargs, "roughness": CompositeRoughness(*kwargs["roughness"])}
         solve_sphere(args[0], args[1], E_STAR, **kwargs)
+
+
+def test_roughness_must_come_as_the_value_object():
+    with pytest.raises(ContactInputError, match="CompositeRoughness"):
+        solve_sphere(0.02, 10.0, E_STAR, roughness=np.zeros((32, 32)))
 
 
 def test_partially_measured_roughness_is_filled_and_reported():
     rng = np.random.default_rng(2)
     z = rng.normal(scale=1e-8, size=(200, 200))
     z[rng.random(z.shape) < 0.1] = np.nan
-    res = solve_sphere(0.02, 10.0, E_STAR, roughness=z, roughness_dx=4e-6, grid=64)
+    res = solve_sphere(0.02, 10.0, E_STAR, roughness=CompositeRoughness(z, 4e-6), grid=64)
     assert res.converged
     assert any("not measured" in note for note in res.notes)

@@ -8,8 +8,8 @@ Truths used here, none of them the solver checking itself:
   its load must be the solver's;
 - the contact conditions, with the displacement recomputed by a plain linear convolution
   of the pressure with the Love kernel (scipy.signal, not the solver's DC-FFT);
-- the plastic-displacement fixed point of :func:`contact.hertzcheck.solve_elastic_plastic`,
-  an independent algorithm built on elastic solves only;
+- the plastic-displacement fixed point of ``tests/plastic_reference.py``, an independent
+  algorithm built on elastic solves only;
 - the fully plastic limit: as p0/H grows the whole contact carries H, so its radius tends
   to sqrt(W / (pi H)).
 """
@@ -22,6 +22,7 @@ import math
 import numpy as np
 import pytest
 from contact_synth import rough_surface
+from plastic_reference import fixed_point_plastic
 from scipy.linalg import cholesky, solve_triangular
 from scipy.optimize import lsq_linear
 from scipy.signal import fftconvolve
@@ -29,9 +30,9 @@ from scipy.signal import fftconvolve
 from contact import ConvergenceError, composite_modulus, hertz_sphere, material, solve_sphere
 from contact.bem import SolverStats, solve_normal
 from contact.geometry import sphere_gap
-from contact.hertzcheck import solve_elastic_plastic
 from contact.influence import love_coefficients, self_influence
-from contact.sphere import SphereContact
+from contact.setups import CompositeRoughness
+from contact.setups.ball_on_plate import SphereContact
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 H_AL = material("aluminium").hardness
@@ -136,11 +137,8 @@ def test_capped_solver_agrees_with_the_plastic_displacement_fixed_point(ratio):
     H = HZ.p0 / ratio
     prob = SphereContact(R, E_STAR, W, grid=64, size=2.6 * max(_plastic_radius(H), HZ.a))
     el = prob.solve(W)
-    capped = solve_elastic_plastic(prob, W, H, elastic=el, tol=1e-10)
-    assert capped.extra["plastic_method"].startswith("capped")
-    fixed = solve_elastic_plastic(prob, W, H, elastic=el, method="fixed-point", tol=1e-10,
-                                  yield_tol=1e-6)
-    assert fixed.extra["plastic_method"].startswith("plastic-displacement")
+    capped = prob.solve(W, hardness=H, initial=el, on_edge="warn", tol=1e-10)
+    fixed = fixed_point_plastic(prob, W, H, el, tol=1e-10, yield_tol=1e-6)
     # stated tolerance: the fixed point stops at p <= H (1 + 1e-6) on the yielded cells
     assert np.abs(np.asarray(fixed.pressure) - capped.pressure).max() < 1e-5 * H
     upl = np.asarray(capped.plastic_displacement)
@@ -211,8 +209,8 @@ def test_paper_pair_converges_plastic_at_the_asperity_scale():
 
     data = resources.files("surfmet").joinpath("data")
     prep = hc.prepare_scans(str(data / "paper_plate.x3p"), str(data / "paper_ball.x3p"))
-    prob = SphereContact(R, E_STAR, W, roughness=prep.pair.roughness,
-                         roughness_dx=prep.pair.dx, hardness=H_AL)
+    rough = CompositeRoughness(prep.pair.roughness, prep.pair.dx)
+    prob = SphereContact(R, E_STAR, W, roughness=rough, hardness=H_AL)
     res = prob.solve(W, tol=1e-8)
     assert res.converged and not res.touches_edge
     _check_contact_conditions(res, prob.gap0, H_AL, W)
@@ -229,7 +227,7 @@ def test_rough_ball_on_cold_and_warm_starts(seed):
     # left to step on); from no start the nested coarse grids lead the way
     zdx = 4e-6
     z = rough_surface(256, zdx, 1.5e-6, seed=seed, corr=12e-6)
-    prob = SphereContact(R, E_STAR, 1.0, roughness=z, roughness_dx=zdx, grid=160)
+    prob = SphereContact(R, E_STAR, 1.0, roughness=CompositeRoughness(z, zdx), grid=160)
     el = prob.solve(1.0)
     dx = prob.domain.dx
     start = np.minimum(el.pressure, H_AL)
@@ -247,7 +245,8 @@ def test_plastic_at_asperity_scale_but_elastic_at_hertz_scale():
     assert HZ.p0 < H_AL  # the smooth ball would stay elastic
     zdx = 5e-6
     z = rough_surface(256, zdx, 0.5e-6, seed=3)
-    res = solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=zdx, hardness=H_AL, grid=128)
+    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx), hardness=H_AL,
+                       grid=128)
     assert res.converged and not res.touches_edge
     assert res.pmax <= H_AL
     assert res.load == pytest.approx(W, rel=1e-10)

@@ -16,6 +16,7 @@ from contact import (
     material,
     solve_sphere,
 )
+from contact.setups import CompositeRoughness
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R, W = 0.02, 10.0
@@ -25,7 +26,7 @@ ZDX = 5e-6
 @pytest.fixture(scope="module")
 def base():
     z = rough_surface(256, ZDX, 0.5e-6, seed=11)
-    return z, solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=ZDX, grid=128)
+    return z, solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), grid=128)
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -36,7 +37,7 @@ def test_hidden_tilt_and_offset_do_not_change_the_result(base, seed):
     offset = rng.uniform(-50e-6, 50e-6)
     yy, xx = np.indices(z.shape)
     tilted = z + offset + sx * xx * ZDX + sy * yy * ZDX
-    res = solve_sphere(R, W, E_STAR, roughness=tilted, roughness_dx=ZDX, grid=128)
+    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(tilted, ZDX), grid=128)
     for name in ("pmax", "contact_area", "load", "approach", "radius_95"):
         assert getattr(res, name) == pytest.approx(getattr(clean, name), rel=1e-8), name
     assert res.n_clusters == clean.n_clusters
@@ -65,12 +66,12 @@ def test_tilt_without_levelling_moves_the_contact_by_r_times_slope():
     slope = 4e-3  # apex shifts by R * slope = 80 um
     _yy, xx = np.indices((n, n))
     plane = -slope * xx * zdx  # plate falls away towards +x: contact moves to +x
-    res = solve_sphere(R, W, E_STAR, roughness=plane, roughness_dx=zdx, level=False,
+    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(plane, zdx, level=False),
                        size=5 * hz.a, grid=128)
     assert res.centroid[0] == pytest.approx(-R * slope, abs=res.dx)
     assert abs(res.centroid[1]) < res.dx
     assert res.pmax == pytest.approx(hz.p0, rel=2e-3)
-    lev = solve_sphere(R, W, E_STAR, roughness=plane, roughness_dx=zdx, level=True,
+    lev = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(plane, zdx, level=True),
                        size=5 * hz.a, grid=128)
     assert abs(lev.centroid[0]) < 1e-3 * res.dx
 
@@ -81,13 +82,13 @@ def test_scan_too_small_raises_or_warns_never_silently_truncates():
     n = int(1.4 * hz.a / zdx)  # the scan is narrower than the contact diameter
     z = rough_surface(n, zdx, 0.05e-6, seed=5)
     with pytest.raises(EdgeContactError, match="roughness data end"):
-        solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=zdx)
+        solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx))
     with pytest.warns(EdgeContactWarning, match="truncated"):
-        res = solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=zdx, on_edge="warn")
+        res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx), on_edge="warn")
     assert res.touches_edge
     assert any("truncated" in note for note in res.notes)
     with pytest.raises(EdgeContactError):
-        solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=zdx, on_edge="raise")
+        solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx), on_edge="raise")
 
 
 def test_too_small_domain_is_enlarged_and_says_so():
@@ -103,12 +104,12 @@ def test_too_small_domain_is_enlarged_and_says_so():
 def test_enlarged_rough_domain_matches_a_large_one():
     z = rough_surface(400, ZDX, 0.3e-6, seed=21)
     with pytest.warns(EdgeContactWarning):
-        small = solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=ZDX, size=40 * ZDX,
+        small = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), size=40 * ZDX,
                              tol=1e-8)
     with warnings.catch_warnings():
         warnings.simplefilter("error", EdgeContactWarning)
         m = small.shape[0] + 40
-        big = solve_sphere(R, W, E_STAR, roughness=z, roughness_dx=ZDX, size=m * small.dx,
+        big = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), size=m * small.dx,
                            grid=m, tol=1e-8)
     assert small.dx == big.dx
     assert small.pmax == pytest.approx(big.pmax, rel=1e-5)

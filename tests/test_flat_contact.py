@@ -10,7 +10,7 @@ import pytest
 
 import surfmet
 from contact.errors import ContactInputError
-from contact.flat import flat_contact
+from contact.setups.flat import flat_contact
 from surfmet.cli import main
 from surfmet.synth import self_affine
 
@@ -64,7 +64,7 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
 
 
 def test_curve_stiffness_is_exact_on_the_exponential_law():
-    from contact.flat import curve_stiffness
+    from contact.setups.flat import curve_stiffness
 
     rng = np.random.default_rng()
     u0, p0 = rng.uniform(0.1e-6, 2e-6), rng.uniform(1e5, 1e7)

@@ -12,15 +12,9 @@ import pytest
 
 from contact import hertz_sphere
 from contact.errors import ContactInputError
-from contact.resolution import (
-    CRITERION_QUANTITY,
-    PERIMETER_COEFFICIENT,
-    block_average,
-    corrected_area,
-    rms_slope,
-    sphere_study,
-    trend,
-)
+from contact.fields import PERIMETER_COEFFICIENT, block_average, corrected_area
+from contact.resolution import CRITERION_QUANTITY, sphere_study, trend
+from contact.roughstats import rms_slope
 from surfmet.cli import main
 
 E_STAR, RADIUS, LOAD = 70e9, 0.01, 2.0

@@ -13,7 +13,6 @@ from contact_synth import rough_surface
 
 from contact import composite_modulus, hertz_cylinder, hertz_sphere, material, solve_sphere
 from contact.errors import ContactInputError
-from contact.line import solve_cylinder
 from contact.rolling import (
     cylinder_sweep,
     fit_exponent,
@@ -23,6 +22,8 @@ from contact.rolling import (
     plastic_work,
     sphere_sweep,
 )
+from contact.setups import CompositeRoughness
+from contact.setups.line import solve_cylinder
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R = 0.02
@@ -129,7 +130,7 @@ def test_rough_contact_exponent_lies_between_one_and_hertz():
     hz1 = hertz_sphere(5e-3, 0.2, E_STAR)
     z = rough_surface(512, 1e-6, 2 * hz1.delta, seed=8, corr=6e-6)
     loads = log_loads(0.2, 20.0, 5)
-    s = sphere_sweep(5e-3, E_STAR, loads, roughness=z, roughness_dx=1e-6, grid=128)
+    s = sphere_sweep(5e-3, E_STAR, loads, roughness=CompositeRoughness(z, 1e-6), grid=128)
     smooth = sphere_sweep(5e-3, E_STAR, loads, grid=96)
     assert 0.9 < s.lambda_eff < 4.0 / 3.0 - 0.05
     assert s.local_lambda[-1] > s.local_lambda[1]  # drifting back towards 4/3

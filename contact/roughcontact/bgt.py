@@ -17,7 +17,8 @@ import math
 
 import numpy as np
 
-from contact.roughcontact.persson import ModelCurve, _check_positive, check_pressures
+from contact._validate import positive
+from contact.roughcontact.persson import ModelCurve, check_pressures
 
 #: BGT's low-pressure area-load proportionality.
 KAPPA_BGT = math.sqrt(2.0 * math.pi)
@@ -27,6 +28,7 @@ def bush_gibson_thomas(pressure: np.ndarray | float, e_star: float,
                        slope_rms: float) -> ModelCurve:
     """BGT's linear area-load law ``A/A0 = √(2π) p/(E* h'_rms)``, capped at 1."""
     p = check_pressures(pressure)
-    _check_positive(e_star=e_star, slope_rms=slope_rms)
+    positive(e_star, "e_star", "Pa")
+    positive(slope_rms, "slope_rms")
     return ModelCurve("bgt", p, np.minimum(KAPPA_BGT * p / (e_star * slope_rms), 1.0),
                       None, None)

@@ -37,7 +37,7 @@ the approach is the apex travel from there, d - d1 (comparable with the boundary
 elements' approach from the first touching point of a finite scan).
 
 Effective radius: a* = sqrt(5/2 <r²>_p), the radius of the Hertz distribution with the
-same second moment of pressure (:func:`contact.hertzcheck.effective_radius`); a* = a for
+same second moment of pressure (:func:`contact.fields.effective_radius`); a* = a for
 Hertz, so a*/a0 is Johnson's Fig. 13.12 ratio measured the same way as the BEM's.
 
 Limits. GT is a statistical model: it holds when many asperities lie under the ball
@@ -66,6 +66,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import ellipe, ellipk, erfc
 
+from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
 from contact.hertz import hertz_sphere
 
@@ -303,13 +304,12 @@ def greenwood_tripp(
     ConvergenceError
         Newton's method did not converge.
     """
-    for name, v in (("load", load), ("radius", radius), ("e_star", e_star),
-                    ("sigma_s", sigma_s), ("density", density),
-                    ("summit_radius", summit_radius)):
-        if not (math.isfinite(v) and v > 0):
-            raise ContactInputError(f"{name} must be positive and finite, got {v!r}")
-    if hardness is not None and not (math.isfinite(hardness) and hardness > 0):
-        raise ContactInputError(f"the hardness must be a positive pressure, got {hardness!r}")
+    for name, v, unit in (("load", load, "N"), ("radius", radius, "m"),
+                          ("e_star", e_star, "Pa"), ("sigma_s", sigma_s, "m"),
+                          ("density", density, "1/m^2"), ("summit_radius", summit_radius, "m")):
+        positive(v, name, unit)
+    if hardness is not None:
+        positive(hardness, "the hardness", "Pa")
     if plastic not in PLASTIC_MODELS:
         raise ContactInputError(f"plastic must be one of {PLASTIC_MODELS}, got {plastic!r}")
     if rings < 16:

@@ -1,10 +1,10 @@
 """Which model holds? Hertz, Greenwood-Tripp and its elastic-plastic variant against the BEM.
 
 Each model's prediction is measured against the boundary-element solution (the reference)
-with the metrics of :mod:`contact.hertzcheck`:
+with the metrics of :mod:`contact.fields`:
 
 - ``radius_error``: a*_model / a*_BEM - 1, with a* the second-moment radius
-  sqrt(5/2 <r²>_p) (:func:`contact.hertzcheck.effective_radius`);
+  sqrt(5/2 <r²>_p) (:func:`contact.fields.effective_radius`);
 - ``profile_error``: the area-weighted rms, over the BEM's radial bins within 1.5 a0, of
   the azimuthally averaged BEM pressure minus the model's pressure averaged over the same
   cells, in units of the Hertz p0 (for Hertz this is the existing ``profile_deviation``).
@@ -12,26 +12,23 @@ with the metrics of :mod:`contact.hertzcheck`:
 The verdict names the simplest model within tolerance, in the order hertz <
 greenwood_tripp < greenwood_tripp_plastic < bem: Hertz when :mod:`contact.hertzcheck`'s
 verdict holds, otherwise the first extended model whose radius and profile errors are both
-within :data:`contact.hertzcheck.RADIUS_TOLERANCE` and ``PROFILE_TOLERANCE``, otherwise
-the BEM itself.
+within the limits that verdict used (its ``radius`` and ``profile`` criteria, i.e.
+:data:`contact.hertzcheck.RADIUS_TOLERANCE` and ``PROFILE_TOLERANCE``), otherwise the BEM
+itself.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from contact.hertzcheck import (
-    PROFILE_EXTENT,
-    PROFILE_TOLERANCE,
-    RADIUS_TOLERANCE,
-    HertzComparison,
-    profile_deviation,
-    radial_average,
-)
+from contact.fields import PROFILE_EXTENT, profile_deviation, radial_average
+
+if TYPE_CHECKING:
+    from contact.hertzcheck import HertzComparison
 
 #: The hierarchy, simplest first.
 ORDER = ("hertz", "greenwood_tripp", "greenwood_tripp_plastic", "bem")
@@ -42,7 +39,8 @@ class ModelPrediction:
     """One model's prediction and its errors against the BEM.
 
     ``r``, ``p``: its radial pressure profile (m, Pa); ``radius_error`` and
-    ``profile_error`` are 0 for the BEM itself.
+    ``profile_error`` are 0 for the BEM itself; ``radius_limit`` and ``profile_limit`` are
+    the Hertz verdict's limits on them.
     """
 
     name: str
@@ -53,11 +51,13 @@ class ModelPrediction:
     p: np.ndarray
     radius_error: float
     profile_error: float
+    radius_limit: float
+    profile_limit: float
 
     @property
     def within_tolerance(self) -> bool:
-        return (abs(self.radius_error) <= RADIUS_TOLERANCE
-                and self.profile_error <= PROFILE_TOLERANCE)
+        return (abs(self.radius_error) <= self.radius_limit
+                and self.profile_error <= self.profile_limit)
 
 
 @dataclass(frozen=True, eq=False)
@@ -83,6 +83,12 @@ class _Tabulated:
         self.pressure = pressure
 
 
+def _limits(comp: HertzComparison) -> dict[str, float]:
+    """The Hertz verdict's limits on the radius and profile errors."""
+    return {"radius_limit": comp.criterion("radius").limit,
+            "profile_limit": comp.criterion("profile").limit}
+
+
 def _measure(name: str, comp: HertzComparison, ref: Any, model_pressure: Any, a_star: float,
              approach: float, peak: float, r: np.ndarray, p: np.ndarray) -> ModelPrediction:
     hz = comp.hertz
@@ -94,7 +100,7 @@ def _measure(name: str, comp: HertzComparison, ref: Any, model_pressure: Any, a_
     return ModelPrediction(name=name, a_star=float(a_star), approach=float(approach),
                            peak=float(peak), r=np.asarray(r, float), p=np.asarray(p, float),
                            radius_error=float(a_star / comp.contact_radius - 1.0),
-                           profile_error=float(err))
+                           profile_error=float(err), **_limits(comp))
 
 
 def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, Any]
@@ -124,7 +130,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
                                     sol.approach, sol.peak, sol.r, sol.p)
     models["bem"] = ModelPrediction(
         name="bem", a_star=comp.contact_radius, approach=comp.approach, peak=comp.pmax,
-        r=prof.r, p=prof.p, radius_error=0.0, profile_error=0.0)
+        r=prof.r, p=prof.p, radius_error=0.0, profile_error=0.0, **_limits(comp))
     if comp.hertz_holds:
         verdict = "hertz"
     else:
@@ -132,6 +138,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
                        "bem")
     reasons = []
     h = models["hertz"]
+    lim = _limits(comp)
     for name, m in models.items():
         if name == "bem":
             continue
@@ -139,8 +146,8 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
         text = (f"{name}: a* = {m.a_star * 1e6:.4g} µm against the BEM's "
                 f"{comp.contact_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
                 f"profile off the BEM by {100 * m.profile_error:.3g} % of p0 "
-                f"({'within' if ok else 'beyond'} {100 * RADIUS_TOLERANCE:g} % / "
-                f"{100 * PROFILE_TOLERANCE:g} %)")
+                f"({'within' if ok else 'beyond'} {100 * lim['radius_limit']:g} % / "
+                f"{100 * lim['profile_limit']:g} %)")
         if name != "hertz" and (h.radius_error or h.profile_error):
             hyp = models[name]
             g_r = 1 - abs(hyp.radius_error) / abs(h.radius_error) if h.radius_error else 0.0

@@ -36,6 +36,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.special import erf
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 
 #: Yang & Persson (2008) correction factor for the elastic energy of the non-contact area.
@@ -84,16 +85,11 @@ def check_pressures(pressure: np.ndarray | float) -> np.ndarray:
     return p
 
 
-def _check_positive(**kw: float) -> None:
-    for name, v in kw.items():
-        if not (isinstance(v, (int, float, np.floating)) and math.isfinite(v) and v > 0):
-            raise ContactInputError(f"{name} must be positive and finite, got {v!r}")
-
-
 def area_fraction(pressure: np.ndarray | float, e_star: float, slope_rms: float) -> np.ndarray:
     """Persson's ``A/A0 = erf(√2 p / (E* h'_rms))``."""
     p = check_pressures(pressure)
-    _check_positive(e_star=e_star, slope_rms=slope_rms)
+    positive(e_star, "e_star", "Pa")
+    positive(slope_rms, "slope_rms")
     return erf(math.sqrt(2.0) * p / (e_star * slope_rms))
 
 
@@ -143,7 +139,8 @@ def persson(pressure: np.ndarray | float, e_star: float, q: np.ndarray, C: np.nd
         Yang & Persson's γ.
     """
     p = check_pressures(pressure)
-    _check_positive(e_star=e_star, dq=dq)
+    positive(e_star, "e_star", "Pa")
+    positive(dq, "dq", "1/m")
     q = np.asarray(q, float)
     base = np.asarray(C, float) * np.asarray(weights, float) * dq**2 / (2.0 * math.pi) ** 2
     if q.shape != base.shape or q.ndim != 1 or not np.all(base >= 0) or not np.any(base > 0):

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import trapezoid
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 
 #: McCool's (1986) constant in σ_s² = (1 − 0.8968/α) m0.
@@ -99,9 +100,7 @@ def summit_parameters(m0: float, m2: float, m4: float) -> SummitParameters:
         the moments are inconsistent, e.g. taken from different bands).
     """
     for name, v in (("m0", m0), ("m2", m2), ("m4", m4)):
-        if not (math.isfinite(v) and v > 0.0):
-            raise ContactInputError(f"spectral moment {name} must be positive and finite, "
-                                    f"got {v!r}")
+        positive(v, f"spectral moment {name}")
     alpha = m0 * m4 / m2**2
     if alpha < 1.5 * (1.0 - 1e-9):
         raise ContactInputError(
@@ -157,6 +156,6 @@ def plasticity_index(e_star: float, hardness: float, summits: SummitParameters) 
     ψ < 0.6: asperities deform elastically at any practical load; ψ > 1: most yield
     (Greenwood & Williamson 1966).
     """
-    if not (e_star > 0 and hardness > 0):
-        raise ContactInputError("E* and the hardness must be positive")
+    positive(e_star, "E*", "Pa")
+    positive(hardness, "the hardness", "Pa")
     return float(e_star / hardness * math.sqrt(summits.sigma_s / summits.radius))

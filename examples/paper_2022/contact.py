@@ -38,6 +38,7 @@ from contact.rolling import (  # noqa: E402
 )
 from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
 from contact.rotor.paper import BALL_RADIUS as RADIUS  # noqa: E402
+from contact.setups import CompositeRoughness  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
 from surfmet.mechanics.hertz_check import hertz_check, prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
@@ -210,8 +211,8 @@ def main(argv: list[str]) -> int:
     first = {}
     t0 = time.time()
     for centre in progress(centres, total=len(centres), desc="track positions"):
-        common = dict(roughness=pair.roughness, roughness_dx=pair.dx, roughness_rms=prep.sigma,
-                      centre=centre)
+        rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy, centre=centre)
+        common = dict(roughness=rough, roughness_rms=prep.sigma)
         hy = sphere_sweep(RADIUS, e_star, loads, model="hysteresis", **common)
         frozen_f = np.array([hysteresis_work(r, RADIUS, kinematics="frozen")
                              for r in hy.results])

@@ -95,15 +95,13 @@ def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
     the warnings of the solve as text (a contact reaching the domain's edge).
     """
     from contact.errors import EdgeContactWarning
-    from contact.sphere import solve_sphere
+    from contact.setups.ball_on_plate import solve_sphere
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", EdgeContactWarning)
         res = solve_sphere(
             radius, load, e_star,
-            roughness=None if pair is None else pair.roughness,
-            roughness_dx=None if pair is None else pair.dx,
-            roughness_dy=None if pair is None else pair.dy,
+            roughness=None if pair is None else pair.composite(),
             hardness=hardness, **options,
         )
     found = tuple(str(w.message) for w in caught if issubclass(w.category, EdgeContactWarning))
@@ -145,8 +143,8 @@ def ball_contact(
     plastic : bool
         Cap the pressure at the softer material's table hardness.
     grid, size, periodic, on_edge, tol, max_iter, max_grid, callback
-        The set-up and the solver (:func:`contact.solve_sphere`); ``max_grid=None`` lets
-        the scans' own pixel through whatever the grid.
+        The set-up and the solver (:func:`contact.setups.ball_on_plate.solve_sphere`);
+        ``max_grid=None`` lets the scans' own pixel through whatever the grid.
 
     Returns
     -------

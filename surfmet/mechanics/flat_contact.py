@@ -3,7 +3,7 @@
 :func:`flat_contact` levels the scan (a periodic one keeps its heights, see
 :func:`surfmet.mechanics.spectrum.prepare`), describes its spectrum
 (:func:`surfmet.mechanics.spectrum.spectrum`),
-runs the boundary elements along the nominal pressures (:func:`contact.flat.flat_contact`:
+runs the boundary elements along the nominal pressures (:func:`contact.setups.flat.flat_contact`:
 periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
 the same spectrum:
 
@@ -25,8 +25,8 @@ from typing import Any
 
 import numpy as np
 
-from contact.flat import FlatContact
 from contact.roughcontact import ModelCurve
+from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
@@ -93,7 +93,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     periodic : bool, optional
         None: detect from the edges.
     stiffness : {"curve", "solve"}
-        How the BEM stiffness is measured (see :func:`contact.flat.flat_contact`).
+        How the BEM stiffness is measured (see :func:`contact.setups.flat.flat_contact`).
 
     Raises
     ------
@@ -101,8 +101,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         Not an areal scan, bad pressures or moduli, unmeasured points.
     """
     from contact.errors import ContactInputError
-    from contact.flat import flat_contact as bem_sweep
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
+    from contact.setups.flat import flat_contact as bem_sweep
     from surfmet.mechanics.spectrum import prepare, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(

@@ -247,7 +247,7 @@ def hertz_check(
         Contact grid (cells per side) and the largest automatic grid; ``max_grid=None``
         runs on the scans' own pixel at any size that fits in memory (native resolution).
     on_edge : {"enlarge", "warn", "raise"}
-        Contact reaching the domain edge (see :mod:`contact.sphere`).
+        Contact reaching the domain edge (see :mod:`contact.setups.ball_on_plate`).
     offset : (float, float), optional
         Apex position (x, y) relative to the middle of the paired roughness map (m): a
         track position. Default the middle.
@@ -259,7 +259,6 @@ def hertz_check(
     """
     from contact.hertzcheck import check_sphere
     from contact.materials import composite_modulus, contact_hardness
-    from surfmet.mechanics.pairing import apex_centre
     from surfmet.units import parse_force, parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -280,11 +279,8 @@ def hertz_check(
     pair = prep.pair
     check = check_sphere(
         radius, load, e_star,
-        roughness=None if pair is None else pair.roughness,
-        roughness_dx=None if pair is None else pair.dx,
-        roughness_dy=None if pair is None else pair.dy,
+        roughness=None if pair is None else pair.composite(offset),
         sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
-        centre=apex_centre(pair, offset),
     )
     notes = [*prep.notes, *check.notes]
     if hardness is None:

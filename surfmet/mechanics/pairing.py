@@ -12,9 +12,11 @@
    central region the two scans share; non-measured points are filled with the nearest
    measured value (the fraction is reported);
 5. the composite roughness is the sum of the two, each measured outward from its own body,
-   so that it closes the gap: h = r^2/(2R) - z (the convention of :mod:`contact.sphere`).
+   so that it closes the gap: h = r^2/(2R) - z (the convention of
+   :mod:`contact.setups.ball_on_plate`).
 
-The result holds plain arrays and SI floats, ready for :func:`contact.solve_sphere`.
+The result holds plain arrays and SI floats, ready for
+:class:`contact.setups.CompositeRoughness`.
 """
 
 from __future__ import annotations
@@ -68,6 +70,15 @@ class PairedRoughness:
         """Rms of the composite roughness (m)."""
         z = self.roughness
         return float(np.sqrt(np.mean((z - z.mean()) ** 2)))
+
+    def composite(self, offset: tuple[float, float] | None = None) -> Any:
+        """The pair as the engine's :class:`contact.setups.CompositeRoughness`, with the
+        ball's apex ``offset`` (m) from the middle of the map (a track position; None: the
+        middle)."""
+        from contact.setups import CompositeRoughness
+
+        return CompositeRoughness(self.roughness, self.dx, self.dy,
+                                  centre=apex_centre(self, offset))
 
 
 def _areal(scan: Any, what: str) -> Topography:

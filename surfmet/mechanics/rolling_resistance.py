@@ -136,6 +136,7 @@ def rolling_resistance(
     """
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
+    from contact.setups import CompositeRoughness
     from surfmet.mechanics.hertz_check import prepare_scans
     from surfmet.mechanics.material_spec import parse_materials
     from surfmet.units import parse_length
@@ -167,10 +168,9 @@ def rolling_resistance(
         centre = apex_centre(pair, offset)
     sweep = sphere_sweep(
         radius, e_star, w, model=model,
-        roughness=None if pair is None else pair.roughness,
-        roughness_dx=None if pair is None else pair.dx,
-        roughness_dy=None if pair is None else pair.dy,
-        roughness_rms=prep.sigma, centre=centre, hardness=hardness, alpha_h=alpha_h,
+        roughness=None if pair is None else CompositeRoughness(
+            pair.roughness, pair.dx, pair.dy, centre=centre),
+        roughness_rms=prep.sigma, hardness=hardness, alpha_h=alpha_h,
         share=share, kinematics=kinematics, grid=grid, max_grid=max_grid, progress=progress,
     )
     notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]

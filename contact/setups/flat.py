@@ -32,8 +32,9 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
-from contact.resolution import corrected_area
+from contact.fields import corrected_area
 
 #: Relative pressure step of the stiffness solve.
 STIFFNESS_STEP = 0.01
@@ -166,8 +167,7 @@ def flat_contact(
     p = np.sort(np.atleast_1d(np.asarray(pressures, dtype=float)))
     if p.size == 0 or not np.all(np.isfinite(p)) or np.any(p <= 0):
         raise ContactInputError("nominal pressures must be finite and positive")
-    if not (math.isfinite(e_star) and e_star > 0):
-        raise ContactInputError(f"E* must be positive, got {e_star!r}")
+    positive(e_star, "E*", "Pa")
     if hardness is not None and p[-1] >= hardness:
         raise ContactInputError(
             f"the nominal pressure {p[-1]:.4g} Pa reaches the hardness {hardness:.4g} Pa: "

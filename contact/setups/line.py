@@ -32,14 +32,9 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import frozen, positive
 from contact.errors import ContactInputError, ConvergenceError
 from contact.hertz import hertz_cylinder
-
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def line_influence(n: int, dx: float) -> np.ndarray:
@@ -157,11 +152,9 @@ def solve_line(
     h = np.asarray(gap0, dtype=float)
     if h.ndim != 1 or h.size < 2 or not np.isfinite(h).all():
         raise ContactInputError("the line gap must be a finite 1D array of at least 2 cells")
-    for name, v in (("dx", dx), ("E*", e_star)):
-        if not (math.isfinite(v) and v > 0):
-            raise ContactInputError(f"{name} must be positive and finite, got {v!r}")
-    if not (math.isfinite(load) and load > 0):
-        raise ContactInputError(f"the load per length must be positive (N/m), got {load!r}")
+    dx = positive(dx, "dx", "m")
+    e_star = positive(e_star, "E*", "Pa")
+    load = positive(load, "the load per length", "N/m")
     n = h.size
     K = line_influence(n, dx) / e_star
     target = load / dx
@@ -201,7 +194,7 @@ def solve_line(
             on = np.flatnonzero(p > 0)
             lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
             return LineContactResult(
-                x=_frozen(x), pressure=_frozen(p), displacement=_frozen(u), gap=_frozen(gap),
+                x=frozen(x), pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
                 dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
                 approach=delta, pmax=float(p.max()),
                 half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
@@ -244,15 +237,13 @@ def solve_cylinder(
     roughness_dx : float, optional
         Pitch of the roughness profile (m).
     """
-    for name, v in (("radius", radius), ("load", load), ("E*", e_star)):
-        if not (math.isfinite(float(v)) and float(v) > 0):
-            raise ContactInputError(f"the cylinder's {name} must be positive, got {v!r}")
+    radius = positive(radius, "the cylinder's radius", "m")
+    load = positive(load, "the cylinder's load", "N/m")
+    e_star = positive(e_star, "the cylinder's E*", "Pa")
     if int(n) < 8:
         raise ContactInputError("the line grid needs at least 8 cells")
     hz = hertz_cylinder(radius, load, e_star)
-    side = 5.0 * hz.a if size is None else float(size)
-    if not (math.isfinite(side) and side > 0):
-        raise ContactInputError(f"the domain size must be positive, got {size!r}")
+    side = 5.0 * hz.a if size is None else positive(size, "the domain size", "m")
     n = int(n)
     dx = side / n
     x = (np.arange(n) - n // 2) * dx

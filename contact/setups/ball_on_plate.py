@@ -1,4 +1,5 @@
-"""A (rough) ball on a (rough) plate: grid set-up, edge detection and enlargement, sweeps.
+"""The ball-on-plate set-up: a (rough) ball on a (rough) plate on the grid, edge detection
+and enlargement, load sweeps, elastic and elastic-perfectly-plastic solves.
 
 :class:`SphereContact` prepares the geometry once (levelled roughness, domain, gap) and
 solves it for any number of loads, warm-starting each from the previous pressure field.
@@ -11,6 +12,14 @@ pitch, 1.5 times the side) and the solve repeated, with an
 :class:`~contact.errors.EdgeContactWarning` that says so. When the roughness data do not
 extend far enough, an :class:`~contact.errors.EdgeContactError` is raised instead
 (``on_edge="warn"`` returns the flagged, truncated result with the warning).
+
+Elastic-plastic contact has this one entry point: ``SphereContact(hardness=H)`` sizes the
+domain for the plastic contact and caps every solve at H; ``solve(load, hardness=H,
+initial=elastic)`` solves the capped contact on an elastic problem's domain, warm-started
+from the elastic solution, which is how the verdicts (:mod:`contact.hertzcheck`,
+:mod:`contact.resolution`) and the plastic rolling model compare the two at one load. Both
+run the capped Polonsky-Keer iteration of :func:`contact.bem.solve_normal`; an independent
+plastic-displacement fixed point on elastic solves cross-checks it in the tests.
 """
 
 from __future__ import annotations
@@ -40,6 +49,7 @@ from contact.geometry import (
 from contact.hertz import hertz_sphere
 from contact.memory import check_grid_memory
 from contact.result import ContactResult
+from contact.setups.composite import CompositeRoughness
 
 _ON_EDGE = ("enlarge", "warn", "raise")
 
@@ -55,21 +65,14 @@ class SphereContact:
         Composite modulus E* (Pa).
     load : float
         The (largest) load the domain is sized for (N).
-    roughness : ndarray, optional
-        Composite roughness z (m), shape (ny, nx), NaN where not measured: the sum of the
-        two surfaces' heights measured outward from their own bodies (it closes the gap,
-        h = r^2/(2R) - z). Non-measured points are filled with the nearest measured value.
-    roughness_dx, roughness_dy : float, optional
-        Pitch of the roughness data (m); ``roughness_dy`` defaults to ``roughness_dx``.
-    centre : (float, float), optional
-        Scan coordinates (X, Y) of the ball's apex; default the centre of the data.
-    level : bool
-        Remove the least-squares plane of the whole roughness map first. A tilt between
-        ball and plate is a rigid-body rotation: it only moves the contact sideways, and a
-        height offset only shifts the approach. Levelling makes the result independent of
-        both (the removed plane is kept in ``extra["removed_plane"]``).
+    roughness : CompositeRoughness, optional
+        The composite roughness under the ball, its pitch, the apex position and whether
+        it is levelled first (:class:`contact.setups.composite.CompositeRoughness`). The
+        removed plane is kept in ``extra["removed_plane"]``; non-measured points are filled
+        with the nearest measured value.
     hardness : float, optional
-        Pressure cap (Pa) for an elastic-perfectly-plastic contact.
+        Pressure cap (Pa) for an elastic-perfectly-plastic contact (the domain is sized for
+        it). :meth:`solve` also takes a hardness for one solve on the domain at hand.
     periodic : bool
         Periodic domain (the ball then has periodic images; meant for comparisons).
     grid, size : optional
@@ -91,11 +94,7 @@ class SphereContact:
         e_star: float,
         load: float,
         *,
-        roughness: np.ndarray | None = None,
-        roughness_dx: float | None = None,
-        roughness_dy: float | None = None,
-        centre: tuple[float, float] | None = None,
-        level: bool = True,
+        roughness: CompositeRoughness | None = None,
         hardness: float | None = None,
         periodic: bool = False,
         grid: int | None = None,
@@ -117,15 +116,13 @@ class SphereContact:
         self._uncovered: str | None = None
         rms = 0.0
         if roughness is not None:
-            z = np.array(roughness, dtype=float)
-            if z.ndim != 2 or min(z.shape) < 2:
-                raise ContactInputError(f"the roughness must be a 2D map, got shape {z.shape}")
-            if not np.isfinite(z).any():
-                raise ContactInputError("the roughness map is NaN everywhere: nothing measured")
-            self.zdx = positive(roughness_dx, "the roughness pitch dx", "m")
-            self.zdy = self.zdx if roughness_dy is None else positive(
-                roughness_dy, "the roughness pitch dy", "m")
-            if level:
+            if not isinstance(roughness, CompositeRoughness):
+                raise ContactInputError(
+                    "give the roughness as a contact.setups.CompositeRoughness (heights, "
+                    f"pitch, apex position), got {type(roughness).__name__}")
+            z = np.array(roughness.heights)
+            self.zdx, self.zdy = roughness.dx, roughness.dy
+            if roughness.level:
                 z, plane = remove_plane(z, self.zdx, self.zdy)
                 self.extra["removed_plane"] = {"offset": plane[0], "slope_x": plane[1],
                                                "slope_y": plane[2]}
@@ -135,9 +132,7 @@ class SphereContact:
                                   "measured and was filled with the nearest measured value")
             self._z = z
             rms = float(np.sqrt(np.mean((z - z.mean()) ** 2)))
-            ny_r, nx_r = z.shape
-            self.centre = centre if centre is not None else (
-                0.5 * (nx_r - 1) * self.zdx, 0.5 * (ny_r - 1) * self.zdy)
+            self.centre = roughness.apex
         self.roughness_rms = rms
         dom = auto_domain(self.radius, self.design_load, self.e_star, roughness_rms=rms,
                           roughness_dx=self.zdx if self._z is not None else None,
@@ -208,6 +203,7 @@ class SphereContact:
         *,
         approach: float | None = None,
         initial: ContactResult | np.ndarray | None = None,
+        hardness: float | None = None,
         on_edge: str = "enlarge",
         max_enlarge: int = 4,
         tol: float = 1e-6,
@@ -227,7 +223,16 @@ class SphereContact:
         approach : float, optional
             Prescribed approach from first touch (m), instead of a load.
         initial : ContactResult or ndarray, optional
-            Warm start (the solution at a nearby load); resized if the grid changed.
+            Warm start (the solution at a nearby load, or the elastic solution at this load
+            for an elastic-plastic solve: it is clipped at the hardness); resized if the
+            grid changed.
+        hardness : float, optional
+            Pressure cap (Pa) of this solve, on the domain at hand: the elastic-perfectly-
+            plastic contact of the capped Polonsky-Keer iteration
+            (:func:`contact.bem.solve_normal`; ``plastic_displacement`` is the permanent
+            indentation). Default the problem's own hardness. The notes on where the
+            contact yields (asperity or Hertz scale) are given only for the problem's own
+            hardness; with a per-solve hardness the caller compares the two solutions.
         on_edge : {"enlarge", "warn", "raise"}
             What to do when pressure reaches the domain edge (see the module notes).
         max_enlarge : int
@@ -239,6 +244,7 @@ class SphereContact:
             raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
         if self._uncovered is not None and on_edge != "warn":
             raise EdgeContactError(self._uncovered)
+        cap = self.hardness if hardness is None else positive(hardness, "the hardness", "Pa")
         if approach is None:
             load = self.design_load if load is None else positive(load, "the load", "N")
         elif load is not None:
@@ -254,7 +260,7 @@ class SphereContact:
             origin = (-(n // 2) * dx, -(n // 2) * dx)
             res = solve_normal(
                 self.gap0, dx, e_star=self.e_star, load=load, approach=approach,
-                periodic=self.periodic, hardness=self.hardness, initial=p0, tol=tol,
+                periodic=self.periodic, hardness=cap, initial=p0, tol=tol,
                 max_iter=max_iter, precision=precision, workers=workers, origin=origin,
                 callback=callback, strict=strict, edge="ignore", stats=stats,
             )
@@ -289,7 +295,8 @@ class SphereContact:
             p0 = self._embed(np.asarray(res.pressure), n_new)
         W = res.load
         hz = hertz_sphere(self.radius, W, self.e_star) if W > 0 else None
-        if self.hardness is not None and res.plastic_area > 0 and hz is not None:
+        own_cap = hardness is None and self.hardness is not None
+        if own_cap and res.plastic_area > 0 and hz is not None:
             frac = res.plastic_area / res.contact_area
             if hz.p0 < self.hardness:
                 notes.append(
@@ -325,11 +332,7 @@ def solve_sphere(
     load: float,
     e_star: float,
     *,
-    roughness: np.ndarray | None = None,
-    roughness_dx: float | None = None,
-    roughness_dy: float | None = None,
-    centre: tuple[float, float] | None = None,
-    level: bool = True,
+    roughness: CompositeRoughness | None = None,
     hardness: float | None = None,
     periodic: bool = False,
     grid: int | None = None,
@@ -350,10 +353,15 @@ def solve_sphere(
     >>> res = solve_sphere(0.02, 10.0, E)
     >>> abs(res.pmax / res.hertz.p0 - 1) < 1e-4
     True
+
+    On measured roughness (``z`` the composite height map, 5 µm pitch), the apex 0.1 mm
+    to the right of the map's middle::
+
+        rough = CompositeRoughness(z, 5e-6).shifted((1e-4, 0.0))
+        res = solve_sphere(0.02, 10.0, E, roughness=rough, hardness=0.9e9)
     """
     problem = SphereContact(
-        radius, e_star, load, roughness=roughness, roughness_dx=roughness_dx,
-        roughness_dy=roughness_dy, centre=centre, level=level, hardness=hardness,
-        periodic=periodic, grid=grid, size=size, max_grid=max_grid, exact_sphere=exact_sphere,
+        radius, e_star, load, roughness=roughness, hardness=hardness, periodic=periodic,
+        grid=grid, size=size, max_grid=max_grid, exact_sphere=exact_sphere,
     )
     return problem.solve(load, **solve_kwargs)
