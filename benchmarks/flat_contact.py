@@ -3,7 +3,8 @@
 Run ``python benchmarks/flat_contact.py [--repeats N] [--n 1024]``. A periodic random-phase
 self-affine surface (H = 0.7, roll-off L/4, short cut-off 8 pixels, h'_rms = 0.1) is pressed
 on a rigid flat at 5 log-spaced pressures giving A/A0 ≈ 2-15 %; the whole
-:func:`surfmet.flat_contact.flat_contact` is timed (spectrum, 5 warm-started BEM solves with
+:func:`surfmet.mechanics.flat_contact.flat_contact` is timed
+(spectrum, 5 warm-started BEM solves with
 the stiffness read off the computed curve, the three theories; ``--stiffness solve`` adds
 one solve per pressure). The machine is shared: times are the minimum of
 the repeats and noisy. The per-pressure iterations and the κ values are printed too.
@@ -17,7 +18,7 @@ import time
 
 import numpy as np
 
-from surfmet.flat_contact import flat_contact
+from surfmet.mechanics.flat_contact import flat_contact
 from surfmet.synth import self_affine
 
 

@@ -75,7 +75,7 @@ def iteration_child(n: int, repeats: int) -> dict:
     from contact.materials import composite_modulus, material
     from contact.setups import CompositeRoughness
     from contact.setups.ball_on_plate import SphereContact
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.pairing import prepare_pair
 
     pair = prepare_pair(surfmet.read(DATA / "paper_plate.x3p"),
                         surfmet.read(DATA / "paper_ball.x3p"))

@@ -20,7 +20,7 @@ field post-processing (``contact.fields``), roughness statistics (``contact.roug
 theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hertzcheck``,
 ``contact.resolution``), rolling resistance (``contact.rolling``).
     sphere_sweep(...); fit_exponent(...)   # rolling-resistance exponent (rolling)
-    analyse_table(columns)                 # rotor law of motion (lawofmotion)
+    analyse_table(columns)                 # rotor law of motion (rotor.groups)
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
@@ -71,10 +71,10 @@ _LAZY = {
     "cylinder_sweep": "contact.rolling",
     "fit_exponent": "contact.rolling",
     "solve_cylinder": "contact.setups.line",
-    "mass_properties": "contact.rotor",
-    "angular_acceleration": "contact.rotor",
-    "analyse_test": "contact.lawofmotion",
-    "analyse_table": "contact.lawofmotion",
+    "mass_properties": "contact.rotor.mechanics",
+    "angular_acceleration": "contact.rotor.mechanics",
+    "analyse_test": "contact.rotor.analysis",
+    "analyse_table": "contact.rotor.groups",
 }
 
 

@@ -16,7 +16,7 @@ For each scan the report holds:
   Abbott–Firestone curve with the Sk construction, the PSD with its Hurst fit; for a
   profile, the primary / waviness / roughness figure instead of the two maps;
 * when a ball radius, a load and the materials are given, the Hertz-check section
-  (:mod:`surfmet.hertz_check`): verdict, reasons, Hertz against boundary elements and the
+  (:mod:`surfmet.mechanics.hertz_check`): verdict, reasons, Hertz against boundary elements and the
   radial pressure profile.
 
 A scan that cannot be read or evaluated gets a section with its error; the others go on.
@@ -198,22 +198,22 @@ def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
 
 
 def hertz_check_available() -> bool:
-    """True when :mod:`surfmet.hertz_check` can be imported."""
+    """True when :mod:`surfmet.mechanics.hertz_check` can be imported."""
     import importlib.util
 
-    return importlib.util.find_spec("surfmet.hertz_check") is not None
+    return importlib.util.find_spec("surfmet.mechanics.hertz_check") is not None
 
 
 def _run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
-    """Call :func:`surfmet.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
+    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
 
     This is the one place the report touches the Hertz-check module.
     """
     try:
-        from surfmet.hertz_check import hertz_check
+        from surfmet.mechanics.hertz_check import hertz_check
     except ImportError:
         raise SurfmetInputError(
-            "the Hertz check is not available in this installation (surfmet.hertz_check "
+            "the Hertz check is not available in this installation (surfmet.mechanics.hertz_check "
             "is missing); run the report without --radius/--load/--materials"
         ) from None
     import surfmet

@@ -122,7 +122,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     plate = surfmet.read(item.plate) if item.plate else None
     ball = surfmet.read(item.ball) if item.ball else None
     if item.task == "hertz-check":
-        from surfmet.hertz_check import hertz_check
+        from surfmet.mechanics.hertz_check import hertz_check
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
@@ -140,17 +140,15 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
         })
     else:
         from contact.materials import composite_modulus
-        from contact.setups import CompositeRoughness
         from contact.setups.ball_on_plate import solve_sphere
-        from surfmet.materials import parse_materials
-        from surfmet.pairing import apex_centre, prepare_pair
+        from surfmet.mechanics.material_spec import parse_materials
+        from surfmet.mechanics.pairing import prepare_pair
 
         ball_m, plate_m = parse_materials(item.materials)
         pair = prepare_pair(plate, ball) if (plate is not None or ball is not None) else None
         res = solve_sphere(
             item.radius, item.load, composite_modulus(ball_m, plate_m),
-            roughness=None if pair is None else CompositeRoughness(
-                pair.roughness, pair.dx, pair.dy, centre=apex_centre(pair, item.position)),
+            roughness=None if pair is None else pair.composite(item.position),
             hardness=item.hardness,
             grid=item.grid, max_grid=None)
         row.update({

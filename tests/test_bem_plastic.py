@@ -205,7 +205,7 @@ def test_paper_pair_converges_plastic_at_the_asperity_scale():
     # few iterations with every loaded cell at the cap
     from importlib import resources
 
-    import surfmet.hertz_check as hc
+    import surfmet.mechanics.hertz_check as hc
 
     data = resources.files("surfmet").joinpath("data")
     prep = hc.prepare_scans(str(data / "paper_plate.x3p"), str(data / "paper_ball.x3p"))

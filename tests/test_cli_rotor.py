@@ -95,7 +95,7 @@ def test_paper_findings(paper_run):
 
 def test_human_summary(capsys, tmp_path):
     table = tmp_path / "t.tsv"
-    from contact.rotor_sim import simulate_random_run
+    from contact.rotor.simulator import simulate_random_run
 
     a = simulate_random_run(40, "none", n_misread=0).frames
     b = simulate_random_run(41, "none", n_misread=0).frames

@@ -20,7 +20,7 @@ from contact.roughcontact.greenwood_tripp import (
     greenwood_tripp,
     ring_influence,
 )
-from surfmet.hertz_check import hertz_check
+from surfmet.mechanics.hertz_check import hertz_check
 from surfmet.model import Topography
 
 E, R, N = 70e9, 0.01, 2.0

@@ -18,7 +18,7 @@ from contact.hertzcheck import ALPHA_LIMIT, check_sphere
 from contact.roughstats import combined_rms, gjm_alpha
 from contact.setups import CompositeRoughness
 from surfmet.errors import SurfmetInputError
-from surfmet.hertz_check import hertz_check
+from surfmet.mechanics.hertz_check import hertz_check
 from surfmet.model import Profile, Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

@@ -174,7 +174,7 @@ def test_pixel_mismatch_above_ten_times_exits_1(command, scans, capsys):
 
 
 def test_pixel_ratio_up_to_ten_is_accepted(scans):
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.pairing import prepare_pair
 
     plate = surfmet.read(scans["plate"])
     z = rough_surface(64, 10 * scans["dx"], 1e-9, seed=7)

@@ -7,7 +7,7 @@ import pytest
 from contact_synth import rough_surface
 
 from surfmet import Profile, SurfmetInputError, Topography
-from surfmet.pairing import prepare_pair
+from surfmet.mechanics.pairing import prepare_pair
 
 
 def _plate(seed, n=160, dx=5e-6, rms=1e-6, tilt=True):

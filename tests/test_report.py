@@ -175,7 +175,7 @@ def test_real_files_and_a_broken_one(tmp_path, realdata):
 
 
 def test_hertz_section_rendering(tmp_path, evil_scan):
-    # The renderer of the Hertz-check section, fed the contract of surfmet.hertz_check's
+    # The renderer of the Hertz-check section, fed the contract of surfmet.mechanics.hertz_check's
     # to_json() (values from Hertz's formulas; the BEM curve carries a hidden dip).
     from contact.hertz import hertz_sphere
     from contact.materials import composite_modulus, material

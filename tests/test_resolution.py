@@ -1,4 +1,5 @@
-"""Resolution study (contact/resolution.py, surfmet/resolution.py, --resolution-study)."""
+"""Resolution study (contact/resolution.py, surfmet/mechanics/resolution_study.py,
+--resolution-study)."""
 
 from __future__ import annotations
 

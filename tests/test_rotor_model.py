@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.rotor import (
+from contact.rotor.inference import infer_rolling_law
+from contact.rotor.mechanics import (
     G_STANDARD,
     MassProperties,
     RotorGeometry,
@@ -17,7 +18,6 @@ from contact.rotor import (
     angular_acceleration_linear,
     collar_com_offset,
     driving_slope_for,
-    infer_rolling_law,
     mass_properties,
     normal_reactions,
     optimal_collar_length,

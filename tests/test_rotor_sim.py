@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.lawofmotion import crossing_times
-from contact.rotor_sim import (
+from contact.rotor.forward import crossing_times
+from contact.rotor.simulator import (
     EFFECTS,
     effect_signature,
     random_hidden_effects,

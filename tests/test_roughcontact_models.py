@@ -19,7 +19,7 @@ from contact.roughcontact import (
     persson,
     summit_parameters,
 )
-from surfmet.spectrum import spectrum
+from surfmet.mechanics.spectrum import spectrum
 from surfmet.synth import self_affine
 
 E = 100e9

@@ -1,4 +1,4 @@
-"""surfmet.synth and surfmet.spectrum: the spectrum recovers what the generator hid."""
+"""surfmet.synth and surfmet.mechanics.spectrum: the spectrum recovers what the generator hid."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.spectrum import is_periodic, spectrum
 from surfmet.model import Topography
-from surfmet.spectrum import is_periodic, spectrum
 from surfmet.synth import self_affine
 
 PX = 1e-6

@@ -145,7 +145,7 @@ def test_killed_sweep_keeps_valid_rows_and_resume_completes(tmp_path):
 
 
 def test_rolling_track_positions_identical_in_every_engine(dask_address):
-    from surfmet.rolling import rolling_resistance, rolling_tracks
+    from surfmet.mechanics.rolling_resistance import rolling_resistance, rolling_tracks
 
     opts = dict(radius=0.02, materials="steel,aluminium", loads=(2.0, 5.0, 12.0), grid=64,
                 max_grid=None)

@@ -36,16 +36,16 @@ from contact.rolling import (  # noqa: E402
     log_loads,
     sphere_sweep,
 )
-from contact.rotor import mass_properties, normal_reactions, paper_rotor  # noqa: E402
+from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
+from contact.rotor.paper import BALL_RADIUS as RADIUS  # noqa: E402
 from contact.setups import CompositeRoughness  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
-from surfmet.hertz_check import hertz_check, prepare_scans  # noqa: E402
+from surfmet.mechanics.hertz_check import hertz_check, prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 from surfmet.units import jsonable  # noqa: E402
 
-RADIUS = 0.02  # m, the balls of the rotor
 MATERIALS = "steel,aluminium"
 
 
@@ -102,7 +102,7 @@ def main(argv: list[str]) -> int:
     heading("The synthetic scans against Table 2 (median of the rows, lc = 0.8 mm)")
     findings["table2"] = table2_check(plate, ball)
 
-    heading("Loads of the experiment (contact/rotor.py, Eqs. 41-42, level plate)")
+    heading("Loads of the experiment (contact/rotor/mechanics.py, Eqs. 41-42, level plate)")
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
     asym = normal_reactions(mass_properties(paper_rotor(), "end"))
     print(f"symmetric rotor : N1 = N2 = {sym[0]:.3f} N")
@@ -133,7 +133,8 @@ def main(argv: list[str]) -> int:
     close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
 
     heading("Which of these survive refinement? (resolution study: pixel 40, 20, 10, 5 µm)")
-    from surfmet.resolution import contact_study, study_json, study_lines
+    from surfmet.mechanics.resolution_study import contact_study, study_lines
+    from surfmet.records import study_record
 
     findings["resolution_study"] = {}
     for label, chk in checks.items():
@@ -143,7 +144,7 @@ def main(argv: list[str]) -> int:
         for line in study_lines(study):
             if not line.startswith("- "):  # the table and the verdict; the trends go to JSON
                 print(f"  {line}")
-        findings["resolution_study"][label] = study_json(study)
+        findings["resolution_study"][label] = study_record(study)
 
     heading("Do the asperities yield at the experiment's loads? (Fig. 17)")
     for label, chk in checks.items():

@@ -23,20 +23,18 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
-from contact.lawofmotion import (  # noqa: E402
-    SELECTABLE,
-    analyse_table,
-    paper_parabola,
-)
-from contact.rotor import (  # noqa: E402
+from contact.rotor.family import SELECTABLE  # noqa: E402
+from contact.rotor.frames import table3, table3_tsv  # noqa: E402
+from contact.rotor.groups import analyse_table  # noqa: E402
+from contact.rotor.inference import IDENTIFIABILITY, infer_rolling_law  # noqa: E402
+from contact.rotor.mechanics import (  # noqa: E402
     G_STANDARD,
-    IDENTIFIABILITY,
-    infer_rolling_law,
     mass_properties,
     optimal_collar_length,
     rolling_torque,
 )
-from contact.table3 import COLUMNS, table3, table3_tsv  # noqa: E402
+from contact.rotor.paper import TABLE3_COLUMNS as COLUMNS  # noqa: E402
+from contact.rotor.parabola import paper_parabola  # noqa: E402
 
 PAPER_PHI_S = (0.821, 1.134, -0.527)  # the paper's "phi_s(t)"
 PAPER_PHI_A = (0.951, 1.0254, -0.249)  # the paper's "phi_a(t)"

@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     positive_length,
     pressure,
 )
+from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
 EPILOG = """examples:
   surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -49,9 +50,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")
     plast.add_argument("--plastic", action="store_true",
                        help="cap the pressure at the softer material's table hardness")
-    p.add_argument("--grid", type=int, metavar="N",
-                   help="cells per side (default: the scans' own pixel, native resolution, "
-                   "when it fits in memory; 256 for a smooth ball)")
+    add_grid_argument(p, "cells per side (default: the scans' own pixel, native resolution, "
+                      "when it fits in memory; 256 for a smooth ball)")
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the roughness)")
     p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
@@ -62,7 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--max-iter", type=int, default=2000, help="iteration limit (default 2000)")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -71,47 +71,19 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     import json
-    import warnings
 
     import numpy as np
 
-    import surfmet
-    from contact.errors import EdgeContactWarning
-    from contact.materials import composite_modulus, contact_hardness
-    from contact.setups import CompositeRoughness
-    from contact.setups.ball_on_plate import solve_sphere
-    from surfmet.errors import SurfmetInputError
-    from surfmet.materials import parse_materials
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.ball_contact import ball_contact
     from surfmet.units import format_length, jsonable
 
     if args.resolution_study:
-        from surfmet.resolution import run_cli
+        from surfmet.cli._resolution_study import run_study
 
-        return run_cli(args, "contact")
-    ball_m, plate_m = parse_materials(args.materials)
-    e_star = composite_modulus(ball_m, plate_m)
-    hardness = args.hardness
-    if args.plastic:
-        hardness = contact_hardness(ball_m, plate_m)
-        if hardness is None:
-            raise SurfmetInputError("--plastic: neither material has a hardness; give --hardness")
-    if args.grid is not None and args.grid < 8:
-        raise SurfmetInputError("--grid needs at least 8 cells per side")
-    if not (args.tol > 0):
-        raise SurfmetInputError("--tol must be positive")
-
-    pair = None
-    if args.plate or args.ball:
-        plate = surfmet.read(args.plate) if args.plate else None
-        ball = surfmet.read(args.ball) if args.ball else None
-        pair = prepare_pair(plate, ball)
-        if not args.json:
-            for note in pair.notes:
-                log(f"note: {note}")
-
+        return run_study(args, "contact")
+    check_grid(args.grid)
     bar = None
-    big = (args.grid or 0) >= 512 or pair is not None
+    big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
 
     def callback(it: int, residual: float) -> None:
         nonlocal bar
@@ -123,29 +95,24 @@ def run(args: argparse.Namespace) -> int:
         bar.update(1)
         bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
 
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", EdgeContactWarning)
-        try:
-            res = solve_sphere(
-                args.radius, args.load, e_star,
-                roughness=None if pair is None else CompositeRoughness(
-                    pair.roughness, pair.dx, pair.dy),
-                hardness=hardness, periodic=args.periodic, grid=args.grid, size=args.size,
-                max_grid=None,
-                tol=args.tol, max_iter=args.max_iter, callback=callback,
-                on_edge=args.on_edge,
-            )
-        finally:
-            if bar is not None:
-                bar.close()
-    for w in caught:
-        if issubclass(w.category, EdgeContactWarning):
-            log(f"warning: {w.message}")
+    try:
+        sol = ball_contact(
+            args.plate, args.ball, radius=args.radius, load=args.load,
+            materials=args.materials, hardness=args.hardness, plastic=args.plastic,
+            grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
+            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback)
+    finally:
+        if bar is not None:
+            bar.close()
+    res, pair = sol.result, sol.pair
+    ball_m, plate_m = sol.ball_material, sol.plate_material
+    if pair is not None and not args.json:
+        for note in pair.notes:
+            log(f"note: {note}")
+    for w in sol.warnings:
+        log(f"warning: {w}")
 
-    from surfmet.records import contact_record
-
-    rec = contact_record(res, ball_m, plate_m, pair, radius=args.radius,
-                         plate_file=args.plate, ball_file=args.ball)
+    rec = sol.to_json()
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
         np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
@@ -178,14 +145,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"fields saved   {args.out}")
     return 0
 
-
-def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
-    """Where the contact grid's pixel came from, for the output (shared by the contact
-    commands)."""
-    if grid is not None:
-        return f"--grid {grid}"
-    if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
-        return "the scans' own pixel"
-    if pair is not None:
-        return "finer than the scans' pixel: 16 cells per Hertz radius"
-    return "automatic, smooth ball"

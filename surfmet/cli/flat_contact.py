@@ -53,7 +53,8 @@ def run(args: argparse.Namespace) -> int:
     import surfmet
     from surfmet.cli._common import progress
     from surfmet.errors import SurfmetInputError
-    from surfmet.flat_contact import flat_contact, parse_pressures, plot, record
+    from surfmet.mechanics.flat_contact import flat_contact, parse_pressures, plot
+    from surfmet.records import flat_contact_record
 
     pressures = parse_pressures(args.pressures)
     if args.e_star is not None:
@@ -70,7 +71,7 @@ def run(args: argparse.Namespace) -> int:
     rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
                        progress=lambda done, total: next(it, None))
-    rec = {"file": args.file, **({"materials": names} if names else {}), **record(rep)}
+    rec = {"file": args.file, **({"materials": names} if names else {}), **flat_contact_record(rep)}
     if args.plot:
         save_figure(plot(rep, args.plot), args.plot)
     if args.json:

@@ -14,6 +14,7 @@ from surfmet.cli._common import (
     pressure,
     save_figure,
 )
+from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
 EPILOG = """examples:
   surfmet hertz-check plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -54,14 +55,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="elastic solution only (do not check yield)")
     p.add_argument("--keep-spikes", action="store_true",
                    help="do not remove spikes from the scans")
-    p.add_argument("--grid", type=int, metavar="N",
-                   help="contact grid, cells per side (default: the scans' own pixel, "
-                   "native resolution, when it fits in memory)")
+    add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
+                      "native resolution, when it fits in memory)")
     p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
                    help="contact reaching the domain edge: enlarge (default), warn, fail")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)
@@ -70,19 +70,17 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.cli.contact import pixel_source
     from surfmet.errors import SurfmetInputError
-    from surfmet.hertz_check import hertz_check
+    from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length
 
-    if args.grid is not None and args.grid < 8:
-        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    check_grid(args.grid)
     if args.elastic and args.hardness is not None:
         raise SurfmetInputError("--elastic and --hardness exclude each other")
     if args.resolution_study:
-        from surfmet.resolution import run_cli
+        from surfmet.cli._resolution_study import run_study
 
-        return run_cli(args, "hertz-check")
+        return run_study(args, "hertz-check")
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
                         plastic=not args.elastic, spikes=not args.keep_spikes, grid=args.grid,
@@ -94,12 +92,10 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        from surfmet.units import quantity
+        from surfmet.records import grid_record
 
         # the issue's keys, and the grid the answer was computed on (issue 12)
-        out = {**check.to_json(), "grid": {
-            "nx": res.shape[1], "ny": res.shape[0], "dx": quantity(res.dx, "m"),
-            "pixel_source": source}}
+        out = {**check.to_json(), "grid": grid_record(res.shape, res.dx, source)}
         emit_json(out)
         return 0
     c = check.comparison

@@ -71,7 +71,8 @@ def run(args: argparse.Namespace) -> int:
             raise SurfmetInputError(f"--load must be positive, got {args.load} N")
         if not hertz_check_available():
             raise SurfmetInputError(
-                "the Hertz check is not available in this installation (surfmet.hertz_check "
+                "the Hertz check is not available in this installation "
+                "(surfmet.mechanics.hertz_check "
                 "is missing); leave out --radius/--load/--materials")
         hertz = HertzOptions(radius=args.radius, load=args.load, materials=args.materials,
                              ball=args.ball)

@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     progress,
     save_figure,
 )
+from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
 EPILOG = """examples:
   surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
@@ -60,12 +61,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="hardness of the softer body for the plastic model (default: table)")
     p.add_argument("--keep-spikes", action="store_true",
                    help="do not remove spikes from the scans")
-    p.add_argument("--grid", type=int, metavar="N",
-                   help="contact grid, cells per side (default: the scans' own pixel, "
-                   "native resolution, when it fits in memory)")
+    add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
+                      "native resolution, when it fits in memory)")
     p.add_argument("--resolution-study", action="store_true",
                    help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.resolution)")
+                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
     p.add_argument("--positions", default=None, metavar="X:Y,...",
                    help="track positions: apex offsets from the middle of the scans; the "
                    "exponent is fitted to the mean moment over them")
@@ -83,9 +83,8 @@ def run(args: argparse.Namespace) -> int:
     import math
 
     from contact.rolling import log_loads
-    from surfmet.cli.contact import pixel_source
     from surfmet.errors import SurfmetInputError
-    from surfmet.rolling import rolling_resistance
+    from surfmet.mechanics.rolling_resistance import rolling_resistance
     from surfmet.units import format_length
 
     lo, hi, n = args.loads
@@ -95,14 +94,13 @@ def run(args: argparse.Namespace) -> int:
                                 "confidence interval")
     if not (math.isfinite(args.alpha_h) and args.alpha_h > 0):
         raise SurfmetInputError("--alpha-h must be positive")
-    if args.grid is not None and args.grid < 8:
-        raise SurfmetInputError("--grid needs at least 8 cells per side")
+    check_grid(args.grid)
     if args.hardness is not None and args.model != "plastic":
         raise SurfmetInputError("--hardness applies to --model plastic")
     if args.resolution_study:
-        from surfmet.resolution import run_cli
+        from surfmet.cli._resolution_study import run_study
 
-        return run_cli(args, "rolling")
+        return run_study(args, "rolling")
     if args.positions is not None or args.workers is not None or args.scheduler is not None:
         return _run_tracks(args, log_loads(lo, hi, n))
     rep = rolling_resistance(
@@ -144,10 +142,11 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
-    """Several track positions through :func:`surfmet.rolling.rolling_tracks`."""
+    """Several track positions through
+    :func:`surfmet.mechanics.rolling_resistance.rolling_tracks`."""
     from surfmet.cli.sweep import _positions
     from surfmet.errors import SurfmetInputError
-    from surfmet.rolling import rolling_tracks
+    from surfmet.mechanics.rolling_resistance import rolling_tracks
 
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")

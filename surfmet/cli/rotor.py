@@ -64,7 +64,7 @@ def _paper_path() -> Path:
 
 
 def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
-    from contact.lawofmotion import MODELS, PARAM_UNITS
+    from contact.rotor.family import MODELS, PARAM_UNITS
 
     spec = MODELS[fit.model]
     keys = list(spec.free)
@@ -97,8 +97,8 @@ def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
 
 
 def analysis_record(an: Any, source: str) -> dict[str, Any]:
-    """The JSON record of a :class:`contact.lawofmotion.LawOfMotionAnalysis`."""
-    from contact.rotor import mass_properties
+    """The JSON record of a :class:`contact.rotor.groups.LawOfMotionAnalysis`."""
+    from contact.rotor.mechanics import mass_properties
 
     sym = mass_properties(collar_offset="symmetric")
     fps = an.fps
@@ -181,7 +181,7 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
 
 
 def _unit(key: str) -> str:
-    from contact.lawofmotion import PARAM_UNITS
+    from contact.rotor.family import PARAM_UNITS
 
     return PARAM_UNITS.get(key, "")
 
@@ -243,7 +243,7 @@ def _print_summary(an: Any, source: str) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from contact.lawofmotion import analyse_table
+    from contact.rotor.groups import analyse_table
 
     if not (math.isfinite(args.fps) and args.fps > 0):
         raise SurfmetInputError(f"--fps must be positive, got {args.fps}")

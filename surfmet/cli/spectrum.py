@@ -56,7 +56,7 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
     """``A`` (against a rigid body) or ``A,B`` -> (E*, hardness, names)."""
     from contact.materials import contact_hardness
     from surfmet.errors import SurfmetInputError
-    from surfmet.materials import parse_material
+    from surfmet.mechanics.material_spec import parse_material
 
     parts = [s for s in str(text).split(",") if s.strip()]
     if len(parts) not in (1, 2):
@@ -71,7 +71,8 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
 
 def run(args: argparse.Namespace) -> int:
     import surfmet
-    from surfmet.spectrum import plot_spectrum, prepare, spectrum, spectrum_record
+    from surfmet.mechanics.spectrum import plot_spectrum, prepare, spectrum
+    from surfmet.records import spectrum_record
 
     topo = surfmet.read(args.file)
     scan, per, level = prepare(topo, periodic_flag(args.periodic))

@@ -22,7 +22,7 @@ def hertz_check_figure(check: Any, path: str | Path | None = None, *,
 
     Parameters
     ----------
-    check : surfmet.hertz_check.HertzCheck
+    check : surfmet.mechanics.hertz_check.HertzCheck
         Uses ``result`` (the solution compared), ``comparison`` (profile, Hertz, verdict).
     path : str or Path, optional
         Where to save the figure (PNG, PDF, SVG... by extension).
@@ -34,7 +34,8 @@ def hertz_check_figure(check: Any, path: str | Path | None = None, *,
     comp = getattr(check, "comparison", None)
     res = getattr(check, "result", None)
     if comp is None or res is None:
-        raise SurfmetInputError("hertz_check_figure needs a surfmet.hertz_check.HertzCheck")
+        raise SurfmetInputError("hertz_check_figure needs a "
+                                "surfmet.mechanics.hertz_check.HertzCheck")
     fig, (ax_map, ax_prof) = new_figure(1, 2, size=(13.0, 5.0))
     pressure_map(res, ax=ax_map)
     prof = comp.profile

@@ -1,4 +1,4 @@
-"""Figures of the rotor's law-of-motion analysis (:mod:`contact.lawofmotion`)."""
+"""Figures of the rotor's law-of-motion analysis (:mod:`contact.rotor`)."""
 
 from __future__ import annotations
 
@@ -77,7 +77,7 @@ def residual_figure(
 def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
     """Angle against time for every test, with the paper's parabola of each group (through
     the mean times) and each test's chosen model."""
-    from contact.lawofmotion import PARAM_NAMES, crossing_times
+    from contact.rotor.forward import PARAM_NAMES, crossing_times
 
     fig, ax = new_figure(1, 1, size=(6.4, 4.4))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
@@ -109,7 +109,7 @@ def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
 def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -> Any:
     """The chosen models' smooth acceleration along the run, ``eps0 - eta (phi - phi0) -
     gamma omega``, per test: where the groups differ, at the start or along the way."""
-    from contact.lawofmotion import PARAM_NAMES, crossing_times
+    from contact.rotor.forward import PARAM_NAMES, crossing_times
 
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
@@ -133,7 +133,7 @@ def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -
 def rolling_law_figure(inference: Any, path: str | Path | None = None,
                        label: str = "") -> Any:
     """``lambda`` implied by the two groups' accelerations against the assumed equivalent
-    slope (:func:`contact.rotor.infer_rolling_law`), with its 16-84 % band."""
+    slope (:func:`contact.rotor.inference.infer_rolling_law`), with its 16-84 % band."""
     infs = inference if isinstance(inference, (list, tuple)) else [(label, inference)]
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     for lab, inf in infs:

@@ -1,8 +1,4 @@
-"""JSON records of results, shared by the CLI, the demo and the report.
-
-Every dimensional value is ``{"value": v, "unit": "..."}`` (dimensionless ratios with
-``"unit": ""``); counts and flags are plain JSON numbers and booleans.
-"""
+"""JSON records of scans and of form fits (``surfmet info``, ``surfmet fit``)."""
 
 from __future__ import annotations
 
@@ -91,70 +87,3 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         **_fit_fields(f),
         "loss": loss,
     }
-
-
-def material_record(m: Any) -> dict[str, Any]:
-    """Name, Young's modulus and Poisson's ratio of a :class:`contact.materials.Material`."""
-    return {"name": m.name, "E": quantity(m.E, "Pa"), "nu": quantity(m.nu, "")}
-
-
-def contact_record(res: Any, ball: Any, plate: Any, pair: Any, *, radius: float,
-                   plate_file: str | None = None, ball_file: str | None = None) -> dict:
-    """The ``surfmet contact`` record of a contact result (every value with its unit).
-
-    Parameters
-    ----------
-    res : contact.ContactResult
-    ball, plate : contact.materials.Material
-    pair : surfmet.pairing.PairedRoughness or None
-        The paired scans, when the solve used them.
-    radius : float
-        Ball radius (m).
-    plate_file, ball_file : str, optional
-        The scan files, for the record.
-    """
-    hz = res.hertz
-    rec: dict[str, Any] = {
-        "load": quantity(res.load, "N"),
-        "pmax": quantity(res.pmax, "Pa"),
-        "mean_pressure": quantity(res.mean_pressure, "Pa"),
-        "contact_radius": quantity(res.contact_radius, "m"),
-        "radius_95": quantity(res.radius_95, "m"),
-        "approach": quantity(res.approach, "m"),
-        "contact_area": quantity(res.contact_area, "m^2"),
-        "area_fraction": quantity(res.area_fraction, ""),
-        "centroid": quantity(list(res.centroid), "m"),
-        "n_clusters": res.n_clusters,
-        "plastic_area": quantity(res.plastic_area, "m^2"),
-        "regime": res.regime,
-        "iterations": res.iterations,
-        "residual": quantity(res.residual, ""),
-        "converged": res.converged,
-        "touches_edge": res.touches_edge,
-        "hertz": {
-            "a": quantity(hz.a if hz else None, "m"),
-            "delta": quantity(hz.delta if hz else None, "m"),
-            "p0": quantity(hz.p0 if hz else None, "Pa"),
-        },
-        "grid": {"nx": res.shape[1], "ny": res.shape[0], "dx": quantity(res.dx, "m"),
-                 "size": quantity(res.shape[1] * res.dx, "m"), "periodic": res.periodic},
-        "materials": {
-            "ball": material_record(ball),
-            "plate": material_record(plate),
-            "e_star": quantity(res.e_star, "Pa"),
-        },
-        "hardness": quantity(res.hardness, "Pa"),
-        "radius": quantity(radius, "m"),
-        "scans": {"plate": plate_file, "ball": ball_file},
-        "notes": list(res.notes),
-    }
-    if pair is not None:
-        rec["roughness"] = {
-            "composite_rms": quantity(pair.rms, "m"),
-            "plate_rms": quantity(pair.plate_rms, "m"),
-            "ball_rms": quantity(pair.ball_rms, "m"),
-            "ball_fit_radius": quantity(pair.ball_radius, "m"),
-            "filled_fraction": quantity(pair.filled_fraction, ""),
-            "notes": list(pair.notes),
-        }
-    return rec

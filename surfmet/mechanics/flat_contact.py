@@ -1,7 +1,8 @@
 """Which model holds for this scan? A rough scan on a flat: BEM against Persson, GW and BGT.
 
 :func:`flat_contact` levels the scan (a periodic one keeps its heights, see
-:func:`surfmet.spectrum.prepare`), describes its spectrum (:func:`surfmet.spectrum.spectrum`),
+:func:`surfmet.mechanics.spectrum.prepare`), describes its spectrum
+(:func:`surfmet.mechanics.spectrum.spectrum`),
 runs the boundary elements along the nominal pressures (:func:`contact.setups.flat.flat_contact`:
 periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
 the same spectrum:
@@ -27,8 +28,8 @@ import numpy as np
 from contact.roughcontact import ModelCurve
 from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
-from surfmet.spectrum import Spectrum
 
 
 @dataclass(frozen=True, eq=False)
@@ -102,7 +103,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     from contact.errors import ContactInputError
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
     from contact.setups.flat import flat_contact as bem_sweep
-    from surfmet.spectrum import prepare, spectrum
+    from surfmet.mechanics.spectrum import prepare, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))
@@ -127,74 +128,6 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         raise SurfmetInputError(str(exc)) from None
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
                              settings={"pressures": p.tolist()})
-
-
-def _rel(model: float | None, ref: float) -> float | None:
-    if model is None or not (math.isfinite(ref) and ref != 0):
-        return None
-    return float(model / ref - 1.0)
-
-
-def record(rep: FlatContactReport) -> dict[str, Any]:
-    """JSON-ready record (every dimensional value with its unit)."""
-    from surfmet.spectrum import spectrum_record
-    from surfmet.units import quantity
-
-    s = rep.spectrum
-    srec = spectrum_record(s)
-    srec.pop("psd")
-    bem = rep.bem
-    results = []
-    for i, pt in enumerate(bem.points):
-        row: dict[str, Any] = {
-            "pressure": quantity(pt.pressure, "Pa"),
-            "bem": {
-                "area_fraction": pt.area_fraction,
-                "corrected_area_fraction": pt.corrected_area_fraction,
-                "mean_gap": quantity(pt.mean_gap, "m"),
-                "stiffness": quantity(pt.stiffness, "Pa/m"),
-                "n_clusters": pt.n_clusters,
-                "max_pressure": quantity(pt.max_pressure, "Pa"),
-                "plastic_fraction": pt.plastic_fraction,
-                "kappa": float(pt.area_fraction * bem.e_star * s.slope_rms / pt.pressure),
-                "kappa_corrected": float(pt.corrected_area_fraction * bem.e_star
-                                         * s.slope_rms / pt.pressure),
-                "iterations": pt.iterations,
-                "converged": pt.converged,
-            },
-        }
-        for name, m in rep.models.items():
-            a = float(m.area_fraction[i])
-            gap = None if m.mean_gap is None else float(m.mean_gap[i])
-            k = None if m.stiffness is None else float(m.stiffness[i])
-            row[name] = {
-                "area_fraction": a,
-                "mean_gap": quantity(gap, "m"),
-                "stiffness": quantity(k, "Pa/m"),
-                "kappa": float(a * bem.e_star * s.slope_rms / pt.pressure),
-                "relative_error": {
-                    "area_fraction": _rel(a, pt.area_fraction),
-                    "mean_gap": _rel(gap, pt.mean_gap),
-                    "stiffness": _rel(k, pt.stiffness),
-                },
-            }
-        results.append(row)
-    return {
-        "boundary": "periodic" if bem.periodic else "free",
-        "levelling": rep.levelling,
-        "grid": {"nx": bem.shape[1], "ny": bem.shape[0], "dx": quantity(bem.dx, "m"),
-                 "dy": quantity(bem.dy, "m")},
-        "e_star": quantity(bem.e_star, "Pa"),
-        "hardness": quantity(bem.hardness, "Pa"),
-        "spectrum": srec,
-        "results": results,
-        "notes": [
-            *bem.notes,
-            "BGT gives the area only (its load-separation law has no closed form)",
-            "relative_error = model / BEM - 1; the BEM area counts whole cells, the "
-            "corrected area removes the perimeter bias (Yastrebov et al. 2015)",
-        ],
-    }
 
 
 def plot(rep: FlatContactReport, path: Any = None) -> Any:

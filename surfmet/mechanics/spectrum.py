@@ -290,52 +290,6 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     return levelled, False, "plane"
 
 
-def _qty(v: float | None, unit: str) -> dict[str, Any]:
-    from surfmet.units import quantity
-
-    return quantity(v, unit)
-
-
-def spectrum_record(s: Spectrum) -> dict[str, Any]:
-    """JSON-ready description of a :class:`Spectrum` (every dimensional value with a unit)."""
-    sm = s.summits
-    rec: dict[str, Any] = {
-        "periodic": s.periodic,
-        "periodic_detected": s.settings.get("periodic_detected"),
-        "window": s.settings.get("window"),
-        "hurst": {"value": s.hurst.hurst,
-                  "q_range": [_qty(s.hurst.q_range[0], "rad/m"),
-                              _qty(s.hurst.q_range[1], "rad/m")],
-                  "wavelength_range": [_qty(2 * math.pi / s.hurst.q_range[1], "m"),
-                                       _qty(2 * math.pi / s.hurst.q_range[0], "m")],
-                  "fit_residual_rms_decades": s.hurst.residual_rms},
-        "roll_off": {"q": _qty(s.roll_off, "rad/m"),
-                     "wavelength": _qty(2 * math.pi / s.roll_off if s.roll_off else None,
-                                        "m")},
-        "short_cutoff": {"q": _qty(s.short_cutoff, "rad/m"),
-                         "wavelength": _qty(2 * math.pi / s.short_cutoff
-                                            if s.short_cutoff else None, "m")},
-        "h_rms": {"spectrum": _qty(s.h_rms, "m"), "real_space": _qty(s.h_rms_real, "m")},
-        "slope_rms": {"spectrum": _qty(s.slope_rms, ""),
-                      "real_space": _qty(s.slope_rms_real, "")},
-        "curvature_rms": {"spectrum": _qty(s.curvature_rms, "1/m"),
-                          "real_space": _qty(s.curvature_rms_real, "1/m")},
-        "moments": {"m0": _qty(sm.m0, "m^2"), "m2": _qty(sm.m2, ""), "m4": _qty(sm.m4, "1/m^2")},
-        "nayak_alpha": sm.alpha,
-        "summits": {"density": _qty(sm.density, "1/m^2"), "radius": _qty(sm.radius, "m"),
-                    "sigma_s": _qty(sm.sigma_s, "m"), "mean_height": _qty(sm.mean_height, "m"),
-                    "gw_product": sm.gw_product},
-        "plasticity_index": s.plasticity,
-        "resolution_dependent": list(RESOLUTION_DEPENDENT),
-        "notes": ([] if 0.0 < s.hurst.hurst < 1.0 else
-                  [f"H = {s.hurst.hurst:.3g} lies outside (0, 1): the fitted band is not "
-                   "self-affine (a form, a filter or a single dominant wavelength)"]),
-        "psd": {"q": {"value": s.psd.q.tolist(), "unit": "rad/m"},
-                "C": {"value": s.psd.C.tolist(), "unit": "m^4"}},
-    }
-    return rec
-
-
 def plot_spectrum(s: Spectrum, path: Any = None) -> Any:
     """PSD, the fitted power law over its band, and the cut-offs (log-log)."""
     from surfmet.plots._style import finish, new_figure

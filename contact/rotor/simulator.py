@@ -1,8 +1,9 @@
 """Simulator of the paper's rotor experiment, with hidden effects, producing a Table-3 column.
 
-The rotor (mass properties from :mod:`contact.rotor`) rolls without sliding on a plate whose
-equivalent slope may change along the path, braked by a constant rolling-friction torque and
-optionally by a torque growing with speed, with its centre of mass optionally off the axis.
+The rotor (mass properties from :mod:`contact.rotor.mechanics`) rolls without sliding on a
+plate whose equivalent slope may change along the path, braked by a constant rolling-friction
+torque and optionally by a torque growing with speed, with its centre of mass optionally off
+the axis.
 The equation of motion is the exact Lagrangian of an eccentric rolling body (not the reduced
 form the analysis fits): with ``e`` the offset of ``G`` from the axis, ``chi = phi - psi_G``,
 
@@ -14,7 +15,7 @@ where ``x = R (phi - phi0)`` is the distance rolled, ``S(x) = S0 - kappa x`` the
 slope ``sin(alpha) sin(beta)`` (``kappa``: slope change per metre, e.g. a sagging plate),
 ``C = sqrt(1 - S^2)``, ``M_r = s_r (N1**lam + N2**lam)`` (Eq. 47) and ``c`` a viscous
 rolling-resistance coefficient. It is integrated with ``scipy.integrate.solve_ivp`` (DOP853,
-mark crossings as events), independently of the quadrature :mod:`contact.lawofmotion` uses.
+mark crossings as events), independently of the quadrature :mod:`contact.rotor.forward` uses.
 
 Frame indices are made as Table 3 was: the camera runs at ``fps``; frame ``n`` shows the
 rotor at time ``n/fps`` after the recording started; the reader notes, for each mark, the
@@ -32,12 +33,14 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from contact.errors import ContactInputError
-from contact.rotor import (
+from contact.rotor.arrays import readonly
+from contact.rotor.mechanics import (
     G_STANDARD,
     MassProperties,
     mass_properties,
     rolling_torque,
 )
+from contact.rotor.paper import FPS, MARK_STEP
 
 __all__ = [
     "EFFECTS",
@@ -127,18 +130,12 @@ class SimulatedRun:
     step: float
 
 
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, copy=True)
-    a.flags.writeable = False
-    return a
-
-
 def simulate_rotor(
     hidden: HiddenEffects,
     *,
     n_marks: int = 25,
-    fps: float = 120.0,
-    step: float = math.pi / 2,
+    fps: float = FPS,
+    step: float = MARK_STEP,
     props: MassProperties | None = None,
     g: float = G_STANDARD,
     seed: int | None = 0,
@@ -220,12 +217,27 @@ def simulate_rotor(
     if np.any(~np.isfinite(crossings)):
         raise ContactInputError("the simulated rotor stalled before the last mark")
     t_true = crossings + hidden.start_time
+    omega = np.array([float(ys[0][1]) if len(ys) else 0.0 for ys in sol.y_events[:n_marks]])
+    clean, frames = _read_frames(hidden, t_true, omega, start_acc, fps, seed)
+    return SimulatedRun(
+        k=readonly(np.arange(1, n_marks + 1)),
+        frames=readonly(frames),
+        clean_frames=readonly(clean),
+        true_times=readonly(t_true),
+        hidden=hidden,
+        fps=float(fps),
+        step=float(step),
+    )
 
+
+def _read_frames(hidden: HiddenEffects, t_true: np.ndarray, omega: np.ndarray,
+                 start_acc: float, fps: float, seed: int | None) -> tuple[np.ndarray, np.ndarray]:
+    """Frame indices as the reader notes them, before and after the misreads: the first
+    frame at or past each (angularly misjudged) crossing."""
+    n_marks = t_true.size
     rng = np.random.default_rng(seed)
     if hidden.reading_sd > 0:
         # the angular speed at each mark turns an angular reading error into a time error
-        omega = np.array([float(ys[0][1]) if len(ys) else 0.0
-                          for ys in sol.y_events[:n_marks]])
         delta = hidden.reading_sd * rng.standard_normal(n_marks)
         w_eff = np.sqrt(omega**2 + 2 * start_acc * hidden.reading_sd)
         t_read = t_true + delta / w_eff
@@ -238,15 +250,7 @@ def simulate_rotor(
         if not 2 <= k <= n_marks:
             raise ContactInputError(f"misread row {k} is not in 2..{n_marks}")
         frames[k - 1] += int(d)
-    return SimulatedRun(
-        k=_frozen(np.arange(1, n_marks + 1)),
-        frames=_frozen(frames),
-        clean_frames=_frozen(clean),
-        true_times=_frozen(t_true),
-        hidden=hidden,
-        fps=float(fps),
-        step=float(step),
-    )
+    return clean, frames
 
 
 def random_hidden_effects(
@@ -256,7 +260,7 @@ def random_hidden_effects(
     decay_form: str | None = None,
     n_misread: int | None = None,
     n_marks: int = 25,
-    step: float = math.pi / 2,
+    step: float = MARK_STEP,
     reading_sd: float = 0.0,
     props: MassProperties | None = None,
     g: float = G_STANDARD,
@@ -360,8 +364,8 @@ def simulate_random_run(
     effect: str | None = None,
     *,
     n_marks: int = 25,
-    fps: float = 120.0,
-    step: float = math.pi / 2,
+    fps: float = FPS,
+    step: float = MARK_STEP,
     min_signature: float | None = None,
     max_draws: int = 100,
     **kwargs,
@@ -419,7 +423,8 @@ def effect_signature(run: SimulatedRun) -> dict[str, float]:
     quantisation (0.29 frame rms) cannot be recovered by any analysis of the frame indices:
     a free start absorbs much of an unbalance, for instance, at some phases.
     """
-    from contact.lawofmotion import Noise, fit_model, quantisation_sigma
+    from contact.rotor.fitting import fit_model
+    from contact.rotor.noise import Noise, quantisation_sigma
 
     h = run.hidden
     t = np.asarray(run.true_times) - float(run.true_times[0])

@@ -1,7 +1,7 @@
 """Scan-level rolling resistance: the effective exponent lambda of M_r = s_r N^lambda for a
 ball rolling on a scanned plate (and a scanned ball).
 
-The scans are prepared as for the Hertz check (:func:`surfmet.hertz_check.prepare_scans`:
+The scans are prepared as for the Hertz check (:func:`surfmet.mechanics.hertz_check.prepare_scans`:
 spikes removed, plate levelled, ball sphere removed, both paired on one grid) and the load
 sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
 choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
@@ -34,7 +34,7 @@ class RollingReport:
     sweep : contact.rolling.RollingSweep
     radius : float
     ball_material, plate_material : contact.materials.Material
-    scans : surfmet.hertz_check.PreparedScans
+    scans : surfmet.mechanics.hertz_check.PreparedScans
     notes : tuple of str
     """
 
@@ -54,35 +54,10 @@ class RollingReport:
         return self.sweep.lambda_ci
 
     def to_json(self) -> dict[str, Any]:
-        from surfmet.units import quantity
+        """The record (:func:`surfmet.records.rolling.rolling_record`)."""
+        from surfmet.records.rolling import rolling_record
 
-        s = self.sweep
-        st = dict(s.settings)
-        settings = {
-            "radius": quantity(self.radius, "m"),
-            "materials": {"ball": self.ball_material.name, "plate": self.plate_material.name},
-            "e_star": quantity(st.get("e_star"), "Pa"),
-            "hardness": quantity(st.get("hardness"), "Pa"),
-            "alpha_h": quantity(st.get("alpha_h"), ""),
-            "displacement_share": quantity(st.get("share"), ""),
-            "kinematics": st.get("kinematics"),
-            "band": quantity(st.get("band"), ""),
-            "grid": st.get("grid"),
-            "dx": quantity(st.get("dx"), "m"),
-            "sigma": quantity(self.scans.sigma if self.scans is not None else 0.0, "m"),
-            "confidence": quantity(s.fit.confidence if s.fit is not None else None, ""),
-            "forces": quantity(s.forces, "N"),
-            "notes": list(self.notes),
-        }
-        return {
-            "lambda_eff": quantity(s.lambda_eff, ""),
-            "lambda_ci": quantity(list(s.lambda_ci), ""),
-            "loads": quantity(s.loads, "N"),
-            "moments": quantity(s.moments, "N m"),
-            "local_lambda": quantity(s.local_lambda, ""),
-            "model": s.model,
-            "settings": settings,
-        }
+        return rolling_record(self)
 
     def figure(self, path: Any = None) -> Any:
         """M_r(N) and the local exponent (:func:`surfmet.plots.hertz.rolling_figure`)."""
@@ -162,8 +137,8 @@ def rolling_resistance(
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness
-    from surfmet.hertz_check import prepare_scans
-    from surfmet.materials import parse_materials
+    from surfmet.mechanics.hertz_check import prepare_scans
+    from surfmet.mechanics.material_spec import parse_materials
     from surfmet.units import parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -188,7 +163,7 @@ def rolling_resistance(
     prep = prepare_scans(plate, ball, spikes=spikes)
     pair = prep.pair
     if offset is not None:
-        from surfmet.pairing import apex_centre
+        from surfmet.mechanics.pairing import apex_centre
 
         centre = apex_centre(pair, offset)
     sweep = sphere_sweep(
@@ -255,22 +230,10 @@ class TrackReport:
         return float(self.fit.exponent) if self.fit is not None else math.nan
 
     def to_json(self) -> dict[str, Any]:
-        from surfmet.units import quantity
+        """The record (:func:`surfmet.records.rolling.tracks_record`)."""
+        from surfmet.records.rolling import tracks_record
 
-        rows = []
-        for t in self.tracks:
-            row: dict[str, Any] = {"offset": quantity(None if t["offset"] is None
-                                                      else list(t["offset"]), "m")}
-            if t.get("error"):
-                row["error"] = t["error"]
-            else:
-                row.update({"moments": quantity(t["moments"], "N m"),
-                            "lambda_eff": quantity(t["lambda"], "")})
-            rows.append(row)
-        return {"lambda_eff": quantity(self.lambda_eff, ""),
-                "lambda_ci": quantity(None if self.fit is None else list(self.fit.ci), ""),
-                "loads": quantity(self.loads, "N"),
-                "mean_moments": quantity(self.mean_moments, "N m"), "tracks": rows}
+        return tracks_record(self)
 
 
 def rolling_tracks(plate: Any = None, ball: Any = None, *,

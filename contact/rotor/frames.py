@@ -1,10 +1,11 @@
-"""Table 3 of Alaci, Ciornei & Romanu (2022), typed from the paper, and its parser.
+"""The frame table of the rotor study: the paper's run-together rows split into numbers.
 
 The paper's text prints each row of Table 3 with its numbers run together: row 1 reads
-``120712314596511226``, i.e. ``1 | 2071 231 45 965 1 1226``. :data:`PRINTED_ROWS` holds the
-rows exactly as printed; :func:`split_rows` recovers the numbers as the unique split in which
-every column increases from row to row (each frame index must be later than the one above
-it). The split is searched exhaustively, so the function also proves the split is unique.
+``120712314596511226``, i.e. ``1 | 2071 231 45 965 1 1226``.
+:data:`contact.rotor.paper.TABLE3_PRINTED_ROWS` holds the rows exactly as printed;
+:func:`split_rows` recovers the numbers as the unique split in which every column increases
+from row to row (each frame index must be later than the one above it). The split is
+searched exhaustively, so the function also proves the split is unique.
 
 Columns: ``as1..as3`` the asymmetric collar (tests 1-3), ``s1..s3`` the symmetric collar.
 Each entry is the frame index (120 frames/s) at which the rotor had turned ``(k - 1)``
@@ -19,40 +20,9 @@ from functools import lru_cache
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.rotor.paper import TABLE3_COLUMNS, TABLE3_PRINTED_ROWS
 
-__all__ = ["COLUMNS", "PRINTED_ROWS", "split_rows", "table3", "table3_tsv"]
-
-COLUMNS = ("as1", "as2", "as3", "s1", "s2", "s3")
-
-# Table 3 as printed in the paper (row number first, then the six frame indices, no spaces).
-PRINTED_ROWS = (
-    "120712314596511226",
-    "2220037517510821131351",
-    "3226343323411371681406",
-    "4230747727811832131451",
-    "5234851631712232561492",
-    "6238455235412572911526",
-    "7241757438612883231558",
-    "8244761441613183521587",
-    "9247564144513443791614",
-    "10250066747213714041639",
-    "11252669249813954291663",
-    "12255071552314174511686",
-    "13257373754614394731707",
-    "14259676056914614941729",
-    "15261878259114815151749",
-    "16263980361215015351769",
-    "17266082363315215541789",
-    "18268184465415405731808",
-    "19270186467315595911826",
-    "20272188469315776001844",
-    "21274090371315956271864",
-    "22276092273216136451869",
-    "23278094175116386641896",
-    "24279995177016476781912",
-    "25281897878816676951928",
-)
-
+__all__ = ["split_rows", "table3", "table3_tsv"]
 
 def _splits(digits: str, parts: int, max_len: int) -> list[tuple[int, ...]]:
     """Every way to cut ``digits`` into ``parts`` numbers without leading zeros."""
@@ -195,19 +165,19 @@ def split_rows(
 
 @lru_cache(maxsize=1)
 def _table() -> np.ndarray:
-    return split_rows(PRINTED_ROWS)
+    return split_rows(TABLE3_PRINTED_ROWS)
 
 
 def table3() -> dict[str, np.ndarray]:
     """Table 3 as ``{column: frame indices for rows 1..25}``."""
     t = _table()
-    return {name: t[:, j].copy() for j, name in enumerate(COLUMNS)}
+    return {name: t[:, j].copy() for j, name in enumerate(TABLE3_COLUMNS)}
 
 
 def table3_tsv() -> str:
     """Table 3 as tab-separated text: header ``k`` and the columns, one row per line."""
     t = _table()
-    lines = ["\t".join(("k", *COLUMNS))]
+    lines = ["\t".join(("k", *TABLE3_COLUMNS))]
     for k, row in enumerate(t, start=1):
         lines.append("\t".join([str(k), *(str(int(v)) for v in row)]))
     return "\n".join(lines) + "\n"

@@ -71,6 +71,15 @@ class PairedRoughness:
         z = self.roughness
         return float(np.sqrt(np.mean((z - z.mean()) ** 2)))
 
+    def composite(self, offset: tuple[float, float] | None = None) -> Any:
+        """The pair as the engine's :class:`contact.setups.CompositeRoughness`, with the
+        ball's apex ``offset`` (m) from the middle of the map (a track position; None: the
+        middle)."""
+        from contact.setups import CompositeRoughness
+
+        return CompositeRoughness(self.roughness, self.dx, self.dy,
+                                  centre=apex_centre(self, offset))
+
 
 def _areal(scan: Any, what: str) -> Topography:
     if not isinstance(scan, Topography):

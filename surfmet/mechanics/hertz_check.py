@@ -3,7 +3,7 @@
 :func:`hertz_check` takes the plate scan (and optionally the ball scan), removes spikes
 (optical outliers are not asperities: a single 50 µm spike would carry newtons in an
 elastic solution), levels the plate, removes the ball's sphere, pairs the two on one grid
-(:func:`surfmet.pairing.prepare_pair`), solves the contact elastically and with the softer
+(:func:`surfmet.mechanics.pairing.prepare_pair`), solves the contact elastically and with the softer
 body's hardness (:func:`contact.hertzcheck.check_sphere`) and compares with Hertz
 (criteria and verdict in :mod:`contact.hertzcheck`).
 
@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
-from surfmet.materials import parse_materials
+from surfmet.mechanics.material_spec import parse_materials
 from surfmet.model import Topography
 
 
@@ -89,7 +89,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -
         Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first; they
         become non-measured points.
     """
-    from surfmet.pairing import prepare_pair
+    from surfmet.mechanics.pairing import prepare_pair
 
     plate = _scan(plate, "plate")
     ball = _scan(ball, "ball")
@@ -128,12 +128,6 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -
     return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
                          sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
                          residuals=residuals)
-
-
-def _q(value: Any, unit: str) -> dict[str, Any]:
-    from surfmet.units import quantity
-
-    return quantity(value, unit)
 
 
 @dataclass(frozen=True, eq=False)
@@ -195,71 +189,17 @@ class HertzCheck:
         return self.plastic if self.plastic is not None else self.elastic
 
     def to_json(self) -> dict[str, Any]:
-        """The record with exactly the issue's keys (see the module notes)."""
-        c = self.comparison
-        hz = c.hertz
-        prof = c.profile
-        return {
-            "hertz_holds": bool(c.hertz_holds),
-            "alpha": _q(c.alpha, ""),
-            "sigma": _q(c.sigma, "m"),
-            "hertz": {"a": _q(hz.a, "m"), "delta": _q(hz.delta, "m"), "p0": _q(hz.p0, "Pa")},
-            "bem": {
-                "pmax": _q(c.pmax, "Pa"),
-                "contact_radius": _q(c.contact_radius, "m"),
-                "approach": _q(c.approach, "m"),
-                "area_fraction": _q(c.area_fraction, ""),
-                "plastic_fraction": _q(c.plastic_fraction, ""),
-            },
-            "reasons": list(c.reasons),
-            "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
-                               "p_hertz": _q(prof.p_hertz, "Pa")},
-            **self._models_json(),
-        }
+        """The record with exactly the issue's keys (see
+        :func:`surfmet.records.hertz.hertz_check_record`)."""
+        from surfmet.records.hertz import hertz_check_record
 
-    def _models_json(self) -> dict[str, Any]:
-        h = self.hierarchy
-        if h is None:
-            return {}
-        models = {
-            name: {"contact_radius": _q(m.a_star, "m"), "approach": _q(m.approach, "m"),
-                   "peak_pressure": _q(m.peak, "Pa"),
-                   "radial_profile": {"r": _q(m.r, "m"), "p": _q(m.p, "Pa")},
-                   "radius_error": _q(m.radius_error, ""),
-                   "profile_error": _q(m.profile_error, "")}
-            for name, m in h.models.items()
-        }
-        out: dict[str, Any] = {"models": models,
-                               "verdict": {"model": h.verdict, "reasons": list(h.reasons)}}
-        sp = self.summits
-        if sp is not None:
-            out["summits"] = {
-                "density": _q(sp.density, "1/m^2"), "radius": _q(sp.radius, "m"),
-                "sigma_s": _q(sp.sigma_s, "m"), "nayak_alpha": _q(sp.alpha, ""),
-                "note": "spectral moments m0, m2, m4 of the plate and ball residuals summed "
-                        "(independent surfaces); the summit density and radius depend on the "
-                        "scans' lateral resolution (m2 and m4 grow as the pixel shrinks)",
-            }
-        return out
+        return hertz_check_record(self)
 
     def details(self) -> dict[str, Any]:
         """Inputs, every criterion, the elastic peak pressure, the grid and the notes."""
-        c = self.comparison
-        return {
-            "load": _q(self.load, "N"),
-            "radius": _q(self.radius, "m"),
-            "materials": {"ball": self.ball_material.name, "plate": self.plate_material.name,
-                          "e_star": _q(self.e_star, "Pa")},
-            "hardness": _q(c.hardness, "Pa"),
-            "sigma_plate": _q(self.scans.sigma_plate, "m"),
-            "sigma_ball": _q(self.scans.sigma_ball, "m"),
-            "elastic_pmax": _q(c.elastic_pmax, "Pa"),
-            "profile_deviation": _q(c.profile_deviation, ""),
-            "criteria": [{"name": k.name, "value": k.value, "limit": k.limit,
-                          "passed": k.passed, "decisive": k.decisive} for k in c.criteria],
-            "grid": {"n": self.result.shape[1], "dx": _q(self.result.dx, "m")},
-            "notes": list(self.notes),
-        }
+        from surfmet.records.hertz import hertz_check_details
+
+        return hertz_check_details(self)
 
     def figure(self, path: str | Path | None = None) -> Any:
         """Pressure map and radial profile against Hertz (:mod:`surfmet.plots.hertz`)."""
@@ -319,8 +259,6 @@ def hertz_check(
     """
     from contact.hertzcheck import check_sphere
     from contact.materials import composite_modulus, contact_hardness
-    from contact.setups import CompositeRoughness
-    from surfmet.pairing import apex_centre
     from surfmet.units import parse_force, parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -341,8 +279,7 @@ def hertz_check(
     pair = prep.pair
     check = check_sphere(
         radius, load, e_star,
-        roughness=None if pair is None else CompositeRoughness(
-            pair.roughness, pair.dx, pair.dy, centre=apex_centre(pair, offset)),
+        roughness=None if pair is None else pair.composite(offset),
         sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
     )
     notes = [*prep.notes, *check.notes]

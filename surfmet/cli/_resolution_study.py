@@ -1,0 +1,70 @@
+"""``--resolution-study`` of ``contact``, ``hertz-check`` and ``rolling``: the command-line
+options turned into a call of :func:`surfmet.mechanics.resolution_study.contact_study` or
+:func:`surfmet.mechanics.resolution_study.rolling_study`, and the study printed as a table
+or JSON."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import emit_json, log
+from surfmet.errors import SurfmetInputError
+
+
+def run_study(args: argparse.Namespace, command: str) -> int:
+    """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
+    from contact.materials import contact_hardness
+    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.resolution_study import contact_study, rolling_study, study_lines
+    from surfmet.records import study_record
+
+    def progress(label: str) -> None:
+        log(f"resolution study: solving at {label}")
+
+    # the study sets each level's grid and domain itself; these options would be ignored
+    for opt in ("grid", "size", "out", "plot"):
+        if getattr(args, opt, None) is not None:
+            raise SurfmetInputError(f"--{opt} does not apply to --resolution-study (each "
+                                    "level's grid follows its pixel on one common domain)")
+    if getattr(args, "periodic", False):
+        raise SurfmetInputError("--periodic does not apply to --resolution-study")
+
+    if command == "rolling":
+        from contact.rolling import log_loads
+        from surfmet.mechanics.material_spec import parse_materials as pm
+
+        lo, hi, n = args.loads
+        from contact.materials import displacement_shares
+
+        kwargs: dict[str, Any] = {"model": args.model, "alpha_h": args.alpha_h,
+                                  "kinematics": args.kinematics}
+        if args.lossy != "both":  # the lossy body's share of the displacement scales M_r
+            shares = displacement_shares(*pm(args.materials))
+            kwargs["share"] = shares[0] if args.lossy == "ball" else shares[1]
+        if args.model == "plastic":
+            h = args.hardness or contact_hardness(*pm(args.materials))
+            if h is None:
+                raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
+            kwargs["hardness"] = h
+        study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
+                                 loads=log_loads(lo, hi, 9 if n is None else n),
+                                 materials=args.materials, spikes=not args.keep_spikes,
+                                 progress=progress, **kwargs)
+    else:
+        hardness = getattr(args, "hardness", None)
+        if command == "contact" and args.plastic:
+            hardness = contact_hardness(*parse_materials(args.materials))
+        if command == "hertz-check" and not args.elastic and hardness is None:
+            hardness = contact_hardness(*parse_materials(args.materials))
+        plate = args.plate
+        study, _ = contact_study(plate, args.ball, radius=args.radius, load=args.load,
+                                 materials=args.materials, hardness=hardness,
+                                 spikes=not getattr(args, "keep_spikes", False),
+                                 progress=progress)
+    if args.json:
+        emit_json({"command": command, "resolution_study": study_record(study)})
+        return 0
+    for line in study_lines(study):
+        print(line)
+    return 0

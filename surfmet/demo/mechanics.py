@@ -1,0 +1,65 @@
+"""The demo's mechanics steps: the Hertz check, the rotor's loads, a contact solve and a
+rolling-resistance sweep on the shipped scans."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from contact.rotor.paper import BALL_RADIUS as RADIUS
+from contact.rotor.paper import HERTZ_CHECK, HERTZ_CHECK_LOAD
+from surfmet.demo.settings import MATERIALS
+from surfmet.units import quantity
+
+
+def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[dict[str, Any], Any]:
+    """The Hertz check of the ball on the plate at ``load`` (both scans, spikes removed)."""
+    from surfmet.mechanics.hertz_check import hertz_check
+
+    check = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS)
+    rec = check.to_json()
+    details = check.details()
+    # each criterion's number as a dimensionless quantity (a ratio or a fraction)
+    details["criteria"] = [
+        {"name": c["name"], "measured": quantity(c["value"], ""),
+         "limit": quantity(c["limit"], ""), "passed": c["passed"], "decisive": c["decisive"]}
+        for c in details["criteria"]
+    ]
+    rec["details"] = details
+    rec["paper"] = {"delta": quantity(HERTZ_CHECK["delta"], "m"),
+                    "a": quantity(HERTZ_CHECK["a"], "m")}
+    return rec, check
+
+
+def rotor_loads() -> dict[str, float]:
+    """Normal load per ball of the paper's rotor on a level plate (Eqs. 41-42, 50-51), N."""
+    from contact.rotor.mechanics import paper_ball_loads
+
+    return paper_ball_loads()
+
+
+def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
+    """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness
+    (:mod:`surfmet.mechanics.ball_contact`)."""
+    from contact.materials import contact_hardness
+    from surfmet.mechanics.ball_contact import BallContact, solve_on_pair
+
+    pair = check.scans.pair
+    hardness = contact_hardness(check.ball_material, check.plate_material)
+    res, found = solve_on_pair(pair, radius=RADIUS, load=load, e_star=check.e_star,
+                               hardness=hardness)
+    sol = BallContact(result=res, ball_material=check.ball_material,
+                      plate_material=check.plate_material, pair=pair, radius=RADIUS,
+                      plate_file="paper_plate.x3p", ball_file="paper_ball.x3p", warnings=found)
+    rec = sol.to_json()
+    rec["notes"] = [*rec["notes"], *found]
+    return rec, res
+
+
+def rolling_step(plate: Any, ball: Any, loads: str) -> tuple[dict[str, Any], Any]:
+    """The hysteresis rolling-resistance sweep over ``loads`` ("F1:F2:N")."""
+    from surfmet.mechanics.rolling_resistance import rolling_resistance
+
+    rep = rolling_resistance(plate, ball, radius=RADIUS, materials=MATERIALS, loads=loads,
+                             model="hysteresis")
+    return rep.to_json(), rep
+

@@ -1,0 +1,165 @@
+"""Running the demo: the seven steps in order, each reported on stderr and timed, their
+records gathered in ``summary.json`` and their figures written to the output folder."""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from contact.rotor.paper import HERTZ_CHECK_LOAD
+from surfmet.demo import figures as fig
+from surfmet.demo.lawofmotion import rotor_step
+from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads
+from surfmet.demo.outputs import GENERATOR, SUMMARY, prepare_output, write_json
+from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN_UM, PLATE_LEVEL
+from surfmet.demo.surfaces import ball_form, load_scans, plate_areal, row_statistics
+from surfmet.units import quantity
+
+STEPS = 7
+
+
+class _Steps:
+    """Numbered, timed steps reported through ``say``; the figures written so far."""
+
+    def __init__(self, out: Path, say: Callable[[str], None]) -> None:
+        self.out, self.say = out, say
+        self.n, self.name, self.t = 0, "", time.perf_counter()
+        self.t_start = self.t
+        self.timings: dict[str, Any] = {}
+        self.figures: dict[str, str] = {}
+
+    def start(self, name: str, text: str) -> None:
+        self.n += 1
+        self.name, self.t = name, time.perf_counter()
+        self.say(f"step {self.n}/{STEPS}: {text} ...")
+
+    def done(self) -> None:
+        dt = time.perf_counter() - self.t
+        self.timings[self.name] = quantity(dt, "s")
+        self.say(f"  done in {dt:.1f} s")
+
+    def figure(self, key: str, draw: Callable[[Path], Any]) -> None:
+        fig.write_figure(self.out, key, draw, self.figures)
+
+
+def _sayer(progress: bool | Callable[[str], None]) -> Callable[[str], None]:
+    if callable(progress):
+        return progress
+    if progress:
+        return lambda line: print(line, file=sys.stderr, flush=True)
+    return lambda line: None
+
+
+def _surfaces(st: _Steps, summary: dict[str, Any], quick: bool) -> tuple[Any, Any]:
+    st.start("read", "reading the shipped plate and ball scans (x3p)")
+    plate, ball, summary["scans"] = load_scans()
+    st.done()
+
+    st.start("roughness", "roughness of every row of both scans, and the plate's areal "
+             "parameters")
+    rough: dict[str, Any] = {}
+    rough["plate_rows"], typical = row_statistics(plate, PLATE_LEVEL)
+    rough["ball_rows"], _ = row_statistics(ball, BALL_LEVEL)
+    rough["paper_table2_mean"] = {k: {p: quantity(v * 1e-6, "m") for p, v in d.items()}
+                                  for k, d in PAPER_TABLE2_MEAN_UM.items()}
+    rough["plate_areal"], clean = plate_areal(plate)
+    summary["roughness"] = rough
+    st.figure("plate_height_map", lambda p: fig.height_map(
+        clean.surface, p, "aluminium plate (stand-in): levelled, spikes removed"))
+    row = rough["plate_rows"]["typical_row"]
+    st.figure("plate_profile", lambda p: fig.profile(
+        typical.analysis, p, f"plate row {row} (Ra nearest the median of all rows)"))
+    if not quick:
+        st.figure("plate_abbott_firestone", lambda p: fig.abbott(clean, p))
+    st.done()
+
+    st.start("ball", "the ball's radius (sphere fit) and form deviation")
+    summary["ball"], residual = ball_form(ball)
+    st.figure("ball_form", lambda p: fig.height_map(
+        residual, p, f"ball minus its best-fit sphere (R = "
+        f"{summary['ball']['sphere']['radius']['value'] * 1e3:.3f} mm)"))
+    if not quick:
+        st.figure("psd", lambda p: fig.psd(clean.surface, residual, p))
+    st.done()
+    return plate, ball
+
+
+def _mechanics(st: _Steps, summary: dict[str, Any], plate: Any, ball: Any,
+               quick: bool) -> None:
+    st.start("hertz", f"Hertz check at {HERTZ_CHECK_LOAD:g} N (boundary elements on both scans)")
+    summary["hertz_check"], check = hertz_step(plate, ball)
+    st.figure("hertz_check", check.figure)
+    st.done()
+
+    loads = rotor_loads()
+    st.start("contact", f"contact at the rotor's load per ball, {loads['symmetric']:.2f} N "
+             "(elastic-perfectly-plastic)")
+    rec, res = contact_step(check, loads["symmetric"])
+    rec["rotor_loads"] = {k: quantity(v, "N") for k, v in loads.items()}
+    summary["contact"] = rec
+    st.figure("contact_pressure", lambda p: fig.pressure(res, p))
+    st.done()
+
+    n_loads = 3 if quick else 5
+    st.start("rolling", f"rolling-resistance sweep, {n_loads} loads from 1 N to 100 N")
+    summary["rolling"], rep = rolling_step(plate, ball, f"1N:100N:{n_loads}")
+    st.figure("rolling", rep.figure)
+    st.done()
+
+
+def _rotor(st: _Steps, summary: dict[str, Any]) -> None:
+    st.start("rotor", "law of motion of the rotor (the paper's Table 3)")
+    summary["rotor"], an = rotor_step()
+    st.figure("rotor_law_of_motion", lambda p: fig.law_of_motion(an, p))
+    st.figure("rotor_residuals", lambda p: fig.residuals(an, p))
+    st.done()
+
+
+def run_demo(
+    out_dir: str | os.PathLike = "surfmet_demo",
+    *,
+    quick: bool = False,
+    progress: bool | Callable[[str], None] = True,
+) -> dict[str, Any]:
+    """Run the demo and write its figures and ``summary.json`` to ``out_dir``.
+
+    Parameters
+    ----------
+    out_dir : path
+        Output folder: created if absent; a non-empty folder must be a previous demo
+        output (see :func:`surfmet.demo.outputs.prepare_output`).
+    quick : bool
+        A shorter rolling sweep (3 loads instead of 5) and no PSD or Abbott–Firestone
+        figure; every number the story quotes is computed the same way.
+    progress : bool or callable
+        Report each step on stderr (True), not at all (False), or to ``progress(line)``.
+
+    Returns
+    -------
+    dict
+        The summary, as written to ``summary.json``.
+    """
+    import surfmet
+    from surfmet.units import jsonable
+
+    out = prepare_output(out_dir)
+    st = _Steps(out, _sayer(progress))
+    summary: dict[str, Any] = {"generator": GENERATOR, "surfmet_version": surfmet.__version__,
+                               "status": "running", "quick": bool(quick)}
+    plate, ball = _surfaces(st, summary, quick)
+    _mechanics(st, summary, plate, ball, quick)
+    _rotor(st, summary)
+
+    total = time.perf_counter() - st.t_start
+    summary["figures"] = st.figures
+    summary["timings"] = st.timings
+    summary["total_time"] = quantity(total, "s")
+    summary["out_dir"] = str(out)
+    summary["status"] = "complete"
+    write_json(out / SUMMARY, summary)
+    st.say(f"figures and {SUMMARY} written to {out} ({time.perf_counter() - st.t_start:.0f} s)")
+    return jsonable(summary)

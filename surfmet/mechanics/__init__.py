@@ -1,0 +1,17 @@
+"""Contact mechanics on scans: one facade per model command, between the command line and
+the array-level engine :mod:`contact`.
+
+Each facade takes scans (or file names) and values in SI, prepares the scans, calls the
+engine and returns a small result object with ``to_json()`` (its record is built in
+:mod:`surfmet.records`) and, where it has one, ``figure()``:
+
+- ``contact``: :mod:`~surfmet.mechanics.ball_contact` (BEM, ball on plate);
+- ``hertz-check``: :mod:`~surfmet.mechanics.hertz_check` (BEM against Hertz, the verdict);
+- ``flat-contact``: :mod:`~surfmet.mechanics.flat_contact` (BEM against the theories);
+- ``rolling``: :mod:`~surfmet.mechanics.rolling_resistance` (rolling sweeps);
+- ``--resolution-study``: :mod:`~surfmet.mechanics.resolution_study`;
+- ``spectrum``: :mod:`~surfmet.mechanics.spectrum` (spectral moments, plasticity index).
+
+Shared by them: :mod:`~surfmet.mechanics.pairing` (a plate and a ball scan on one grid)
+and :mod:`~surfmet.mechanics.material_spec` (``steel,aluminium`` text to materials).
+"""

@@ -1,0 +1,145 @@
+"""Resolution studies on scans: ``--resolution-study`` of ``contact``, ``hertz-check`` and
+``rolling``.
+
+The scans are prepared as for the ordinary commands (spikes removed, plate levelled, the
+ball's sphere removed, both paired on the finer pitch by
+:func:`surfmet.mechanics.pairing.prepare_pair`),
+then :mod:`contact.resolution` solves the contact on the composite roughness block-averaged
+8x, 4x, 2x and at the native pixel, and fits the trend of each quantity against the pixel.
+This module prints the study as a table (its JSON record is
+:func:`surfmet.records.resolution.study_record`); the command line's
+``--resolution-study`` is :mod:`surfmet.cli._resolution_study`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+#: Each quantity of a study: label, JSON unit, scale to the text unit, text unit.
+QUANTITIES = {
+    "a_star": ("a*", "m", 1e6, "µm"),
+    "approach": ("approach", "m", 1e6, "µm"),
+    "area": ("real area", "m^2", 1e12, "µm²"),
+    "corrected_area": ("corrected area", "m^2", 1e12, "µm²"),
+    "yielded_fraction": ("yielded / πa0²", "1", 1.0, ""),
+    "pmax": ("pmax", "Pa", 1e-6, "MPa"),
+    "pmax_elastic": ("pmax elastic", "Pa", 1e-6, "MPa"),
+    "sigma": ("σ", "m", 1e6, "µm"),
+    "rms_slope": ("rms slope", "1", 1.0, ""),
+    "profile_deviation": ("profile dev./p0", "1", 1.0, ""),
+    "lambda_eff": ("λ_eff", "1", 1.0, ""),
+}
+
+
+def _prepared(plate: Any, ball: Any, spikes: bool) -> Any:
+    from surfmet.mechanics.hertz_check import prepare_scans
+
+    if plate is None and ball is None:
+        raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
+                                "smooth contact has nothing to refine")
+    prep = prepare_scans(plate, ball, spikes=spikes)
+    return prep
+
+
+def contact_study(
+    plate: Any = None,
+    ball: Any = None,
+    *,
+    radius: float,
+    load: float,
+    materials: Any = "steel,aluminium",
+    hardness: float | None = None,
+    spikes: bool = True,
+    factors: tuple[int, ...] = (8, 4, 2, 1),
+    progress: Any = None,
+) -> tuple[Any, Any]:
+    """Resolution study of a ball on a plate from scans.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path
+        The scans (at least one).
+    radius, load : float
+        R (m), W (N).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    hardness : float, optional
+        Adds the elastic-plastic solve and the yielded fraction (Pa).
+    spikes : bool
+        Remove spikes first.
+    factors : tuple of int
+        Coarsening factors, decreasing to 1.
+
+    Returns
+    -------
+    (contact.resolution.ResolutionStudy, surfmet.mechanics.hertz_check.PreparedScans)
+    """
+    from contact.materials import composite_modulus
+    from contact.resolution import sphere_study
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    prep = _prepared(plate, ball, spikes)
+    pair = prep.pair
+    study = sphere_study(radius, load, composite_modulus(ball_m, plate_m), pair.roughness,
+                         pair.dx, pair.dy, hardness=hardness, sigma=prep.sigma,
+                         factors=factors, progress=progress)
+    return study, prep
+
+
+def rolling_study(
+    plate: Any = None,
+    ball: Any = None,
+    *,
+    radius: float,
+    loads: Any,
+    materials: Any = "steel,aluminium",
+    spikes: bool = True,
+    factors: tuple[int, ...] = (8, 4, 2, 1),
+    progress: Any = None,
+    **sweep_kwargs: Any,
+) -> tuple[Any, Any]:
+    """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
+    ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`."""
+    from contact.materials import composite_modulus
+    from contact.resolution import rolling_study as engine
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    prep = _prepared(plate, ball, spikes)
+    pair = prep.pair
+    study = engine(radius, composite_modulus(ball_m, plate_m), loads, pair.roughness,
+                   pair.dx, pair.dy, factors=factors, progress=progress, **sweep_kwargs)
+    return study, prep
+
+
+def study_lines(study: Any) -> list[str]:
+    """A table (one row per quantity, one column per pixel) and the trend sentences."""
+    head = f"{'':18}" + "".join(f"{p * 1e6:>10.4g} µm" for p in study.pixels) + "   status"
+    lines = [f"resolution study: same {study.side * 1e3:.4g} mm domain, pixel coarsened "
+             + ", ".join(f"{lv.factor}x" for lv in study.levels), head]
+    for name, t in study.trends.items():
+        label, _, scale, unit = QUANTITIES.get(name, (name, "1", 1.0, ""))
+        label = f"{label} ({unit})" if unit else label
+        cells = "".join(f"{v * scale:>13.5g}" for v in t.values)
+        pct = f"{100 * t.last_change:.3g} %" if math.isfinite(t.last_change) else "from 0"
+        status = "unknown (no value)" if math.isnan(t.last_change) else f"{t.status} ({pct})"
+        lines.append(f"{label:18}{cells}   {status}")
+    lines.append("")
+    lines += [f"- {t.sentence()}" for t in study.trends.values()]
+    lines += [f"note: {n}" for n in study.notes]
+    holds, reasons, left = study.verdict()
+    if study.finest.comparison is not None:
+        head = {True: "Hertz holds", False: "Hertz does not hold",
+                None: "Undecided (a decisive criterion rests on a quantity that keeps "
+                      "moving)"}[holds]
+        lines.append("")
+        lines.append(f"{head} at the native pixel, from converged quantities (and failures "
+                     "that survive refinement) only:")
+        lines += [f"  - {r}" for r in reasons]
+        lines += [f"  (not used: {x})" for x in left]
+    return lines
+
