@@ -45,6 +45,7 @@ DISPLAY_UNITS: dict[str, tuple[float, str]] = {
     "m": (1e-6, "µm"),
     "1/m²": (1e6, "1/mm²"),
     "1/m": (1e6, "1/µm"),
+    "m·%": (1e-6, "µm·%"),
 }
 
 _CSS = """

@@ -20,8 +20,8 @@ from surfmet.roughness import roughness
 EVIL = '<script>alert("x")</script> & <img src=x onerror=alert(1)>'
 
 # shown unit of each SI unit (what a metrologist expects to read)
-SHOWN = {"m": "µm", "1/m²": "1/mm²", "1/m": "1/µm", "%": "%", "°": "°", "": ""}
-FACTOR = {"m": 1e-6, "1/m²": 1e6, "1/m": 1e6, "%": 1.0, "°": 1.0, "": 1.0}
+SHOWN = {"m": "µm", "m·%": "µm·%", "1/m²": "1/mm²", "1/m": "1/µm", "%": "%", "°": "°", "": ""}
+FACTOR = {"m": 1e-6, "m·%": 1e-6, "1/m²": 1e6, "1/m": 1e6, "%": 1.0, "°": 1.0, "": 1.0}
 
 
 class Page(HTMLParser):

@@ -52,9 +52,9 @@ def row_statistics(scan: Any, level: str, lc: str = LC) -> tuple[dict[str, Any],
     typical = roughness(scan, profile=f"row:{row}", level=level, lc=lc)
     rec = {
         "rows": scan.ny,
-        "settings": {"level": level, "lc": quantity(typical.settings.get("lc"), "m"),
-                     "evaluation_length": quantity(typical.settings.get("evaluation_length"),
-                                                   "m"),
+        # the profile settings already carry their unit ({value, unit})
+        "settings": {"level": level, "lc": typical.settings.get("lc"),
+                     "evaluation_length": typical.settings.get("evaluation_length"),
                      "filter": typical.settings.get("filter")},
         "median": {k: quantity(v, "m") for k, v in med.items()},
         "quartiles": {k: quantity(np.percentile(v, [25, 75]), "m") for k, v in arr.items()},
