@@ -66,7 +66,7 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
 def test_curve_stiffness_is_exact_on_the_exponential_law():
     from contact.setups.flat import curve_stiffness
 
-    rng = np.random.default_rng()
+    rng = np.random.default_rng(20)
     u0, p0 = rng.uniform(0.1e-6, 2e-6), rng.uniform(1e5, 1e7)
     u = np.sort(rng.uniform(0.0, 5 * u0, rng.integers(2, 7)))[::-1]
     p = p0 * np.exp(-u / u0)
@@ -116,8 +116,11 @@ def test_cli_free_boundary_and_materials(scan, capsys):
                  "--periodic", "no", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["boundary"] == "free" and rec["materials"] == ["aluminium"]
-    # a rigid flat: E* = E/(1-ν²) of aluminium alone (≈ 70 GPa / (1 - 0.33²) ≈ 78 GPa)
-    assert 60e9 < rec["e_star"]["value"] < 90e9
+    # a rigid flat: 1/E* = (1 - ν²)/E of aluminium alone (Johnson 1985, eq. 4.22, the
+    # counterface's term vanishing), with the paper's E = 70 GPa, ν = 0.33 (Alaci et al.
+    # 2022): 78.55 GPa
+    assert rec["e_star"]["value"] == pytest.approx(70e9 / (1.0 - 0.33**2), rel=1e-12)
+    assert rec["e_star"]["unit"] == "Pa"
 
 
 @pytest.mark.parametrize("argv", [
@@ -132,3 +135,29 @@ def test_cli_bad_input_exits_1(argv, scan, capsys):
     assert main([a.format(scan=scan) for a in argv]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "Traceback" not in err[0]
+
+
+@pytest.mark.parametrize("level", [0.0, 3e-6])
+@pytest.mark.parametrize("argv", [
+    ["spectrum", "{scan}"],
+    ["flat-contact", "{scan}", "--materials", "steel,aluminium", "--pressures", "1MPa"],
+])
+def test_a_flat_scan_is_one_clear_line(argv, level, tmp_path, capsys):
+    # constant heights (issue 16 item 9: was exit 2, "ValueError: zero-size array")
+    flat = surfmet.model.Topography(np.full((64, 48), level), 1e-6, 1e-6)
+    path = str(surfmet.write(flat, tmp_path / "flat.npz"))
+    assert main([a.format(scan=path) for a in argv]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "flat" in err[0] and "internal error" not in err[0]
+
+
+def test_the_engine_names_a_flat_surface():
+    from contact.roughcontact import persson, summit_parameters
+
+    with pytest.raises(ContactInputError, match="flat"):
+        flat_contact(np.full((32, 32), 2e-6), 1e-6, pressures=[1e6], e_star=1e9, periodic=True)
+    with pytest.raises(ContactInputError, match="flat"):
+        summit_parameters(0.0, 0.0, 0.0)
+    q = np.linspace(1e4, 1e6, 20)
+    with pytest.raises(ContactInputError, match="flat"):
+        persson([1e6], 1e9, q, np.zeros_like(q), np.ones_like(q), 1e4)

@@ -69,6 +69,42 @@ def test_gw_integral_closed_form_matches_quad(n, t):
     assert float(gw_integral(n, t)) == pytest.approx(ref, rel=1e-6)
 
 
+def _deep_moment(n: float, t: float) -> float:
+    """E[(s - t)^n] for a standard normal s and t << 0: a^n (1 + C(n,2)/a² + 3 C(n,4)/a⁴)
+    with a = -t (binomial series; the Gaussian moments E s² = 1, E s⁴ = 3)."""
+    a = -t
+    c2 = n * (n - 1) / 2
+    c4 = n * (n - 1) * (n - 2) * (n - 3) / 24
+    return a**n * (1 + c2 / a**2 + 3 * c4 / a**4)
+
+
+@pytest.mark.parametrize("t", [-9.0, -60.0, -100.0, -1e4])
+def test_gw_integral_deep_in_contact_is_the_gaussian_moment(t):
+    # past t ≈ -54 the closed form was 0 × inf = NaN; F_0, F_1, F_2 are exact moments
+    assert float(gw_integral(0.0, t)) == pytest.approx(1.0, rel=1e-13)
+    assert float(gw_integral(1.0, t)) == pytest.approx(-t, rel=1e-13)
+    assert float(gw_integral(2.0, t)) == pytest.approx(1 + t * t, rel=1e-13)
+    for n in (0.5, 1.5):
+        if t < -50:  # the series' next term, 15 C(n,6)/t⁶, is below 1e-11 there
+            ref = _deep_moment(n, t)
+        else:
+            ref = quad(lambda s, n=n: (s - t) ** n * math.exp(-s * s / 2), t, np.inf)[0] / (
+                math.sqrt(2 * math.pi))
+        assert float(gw_integral(n, t)) == pytest.approx(ref, rel=1e-9)
+
+
+def test_gw_deep_in_contact_and_beyond_its_range():
+    s = summit_parameters(1e-12, 1e-4, 1e5)  # σ = 1 µm, slope 0.01, α = 10
+    t0 = -100.0  # the summits' mean plane 100 σ_s into the surface
+    p = 4 / 3 * s.density * E * math.sqrt(s.radius) * s.sigma_s**1.5 * _deep_moment(1.5, t0)
+    c = greenwood_williamson([p], E, s)
+    assert c.mean_gap[0] == pytest.approx(t0 * s.sigma_s + s.mean_height, rel=1e-9)
+    assert c.area_fraction[0] == 1.0  # clipped: every summit flattened
+    tiny = summit_parameters(1e-46, 1e-34, 1e-21)  # rounding noise of a levelled plane
+    with pytest.raises(ContactInputError, match="too smooth"):
+        greenwood_williamson([1e6], E, tiny)
+
+
 def test_gw_on_a_single_scale_surface_matches_independent_quadrature():
     # a narrow band (roll-off at 24 µm, cut-off at 12 µm): nearly a single scale
     topo = self_affine(128, 1e-6, hurst=0.8, h_rms=0.5e-6, roll_off=24e-6,

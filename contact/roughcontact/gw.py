@@ -23,19 +23,41 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.polynomial.hermite_e import hermegauss
 from scipy.optimize import brentq
 from scipy.special import gamma as gamma_fn
 from scipy.special import pbdv
 
+from contact.errors import ContactInputError
 from contact.roughcontact.persson import ModelCurve, check_pressures
 from contact.roughcontact.summits import SummitParameters
 
+#: Below this t the Gaussian mass under t is < 1e-15: F_n(t) is the Gaussian mean of
+#: (s - t)^n, taken by Gauss-Hermite quadrature (the closed form's e^{-t²/4} D(t) is
+#: 0 × inf past |t| ≈ 54).
+_DEEP = -8.0
+_NODES, _WEIGHTS = hermegauss(80)
+#: The summits' mean plane more than this many σ_s into the surface: no rough contact left.
+_FARTHEST = -1e6
+
 
 def gw_integral(n: float, t: np.ndarray | float) -> np.ndarray:
-    """``F_n(t) = (2π)^{-1/2} ∫_t^∞ (s-t)^n e^{-s²/2} ds`` via the parabolic cylinder D."""
+    """``F_n(t) = (2π)^{-1/2} ∫_t^∞ (s-t)^n e^{-s²/2} ds``.
+
+    Via the parabolic cylinder function, F_n(t) = Γ(n+1) (2π)^{-1/2} e^{-t²/4} D_{-n-1}(t)
+    (Greenwood & Williamson 1966); deep in contact (t < -8) by 80-point Gauss-Hermite
+    quadrature of the Gaussian mean of max(s - t, 0)^n, which agrees with it to 1e-14 there.
+    """
     t = np.asarray(t, dtype=float)
-    d, _ = pbdv(-n - 1.0, t)
-    return gamma_fn(n + 1.0) / math.sqrt(2.0 * math.pi) * np.exp(-t * t / 4.0) * d
+    deep = t < _DEEP
+    d, _ = pbdv(-n - 1.0, np.where(deep, 0.0, t))
+    out = gamma_fn(n + 1.0) / math.sqrt(2.0 * math.pi) * np.exp(-t * t / 4.0) * d
+    if np.any(deep):
+        s = _NODES - t[deep][..., None]
+        mean = np.maximum(s, 0.0) ** n @ _WEIGHTS / math.sqrt(2.0 * math.pi)
+        out = np.where(deep, 0.0, out)
+        out[deep] = mean
+    return out
 
 
 def gw_state(t: np.ndarray | float, e_star: float, s: SummitParameters
@@ -60,8 +82,6 @@ def greenwood_williamson(pressure: np.ndarray | float, e_star: float,
     """
     p = check_pressures(pressure)
     if not (summits.sigma_s > 0 and summits.radius > 0 and summits.density > 0):
-        from contact.errors import ContactInputError
-
         raise ContactInputError("GW needs a positive summit density, radius and σ_s")
 
     def logp(t: float) -> float:
@@ -72,7 +92,12 @@ def greenwood_williamson(pressure: np.ndarray | float, e_star: float,
         lp = math.log(pk)
         lo, hi = -10.0, 10.0
         while logp(lo) < lp:  # pressures beyond full contact of every summit
-            lo -= 10.0
+            lo *= 2.0
+            if lo < _FARTHEST:
+                raise ContactInputError(
+                    f"a nominal pressure of {pk:.4g} Pa is beyond the Greenwood-Williamson "
+                    f"model for these summits (σ_s = {summits.sigma_s:.3g} m): the surface is "
+                    "too smooth (or flat) for it")
         while logp(hi) > lp and hi < 60.0:
             hi += 5.0
         ts[k] = brentq(lambda t, lp=lp: logp(t) - lp, lo, hi, xtol=1e-12)

@@ -143,8 +143,11 @@ def persson(pressure: np.ndarray | float, e_star: float, q: np.ndarray, C: np.nd
     positive(dq, "dq", "1/m")
     q = np.asarray(q, float)
     base = np.asarray(C, float) * np.asarray(weights, float) * dq**2 / (2.0 * math.pi) ** 2
-    if q.shape != base.shape or q.ndim != 1 or not np.all(base >= 0) or not np.any(base > 0):
+    if q.shape != base.shape or q.ndim != 1 or not np.all(base >= 0):
         raise ContactInputError("q, C and weights must be 1D arrays of one length, C ≥ 0")
+    if not np.any(base > 0):
+        raise ContactInputError("the spectrum carries no power: a flat surface has no "
+                                "roughness to press")
     order = np.argsort(q)
     q, base = q[order], base[order]
     slope2 = np.cumsum(q**2 * base)  # h'_rms² of the wavevectors up to q

@@ -99,6 +99,8 @@ def summit_parameters(m0: float, m2: float, m4: float) -> SummitParameters:
         A non-positive or non-finite moment, or ``α < 1.5`` (no Gaussian surface has it:
         the moments are inconsistent, e.g. taken from different bands).
     """
+    if m0 == 0 and m2 == 0 and m4 == 0:
+        raise ContactInputError("all spectral moments are 0: a flat surface has no summits")
     for name, v in (("m0", m0), ("m2", m2), ("m4", m4)):
         positive(v, f"spectral moment {name}")
     alpha = m0 * m4 / m2**2

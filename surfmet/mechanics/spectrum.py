@@ -227,6 +227,8 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     if topo.nx < 16 or topo.ny < 16:
         raise SurfmetInputError(f"a spectrum needs at least 16 x 16 points, got "
                                 f"{topo.nx} x {topo.ny}")
+    if not np.nanmax(topo.heights) > np.nanmin(topo.heights):
+        raise SurfmetInputError("the scan is flat (constant heights): it has no spectrum")
     detected = is_periodic(topo)
     per = detected if periodic is None else bool(periodic)
     if per and topo.nan_fraction > 0:
@@ -283,11 +285,16 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     per = is_periodic(topo) if periodic is None else bool(periodic)
     if per:
         z = np.asarray(topo.heights, float)
-        return Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), True, "mean"
-    from surfmet.areal.form import remove_form
+        out, how = Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), "mean"
+    else:
+        from surfmet.areal.form import remove_form
 
-    levelled, _ = remove_form(topo, "plane")
-    return levelled, False, "plane"
+        out, how = remove_form(topo, "plane")[0], "plane"
+    # what levelling leaves of constant or planar heights is rounding (1e-16 of them)
+    if not np.nanmax(np.abs(out.heights)) > 1e-12 * np.nanmax(np.abs(topo.heights)):
+        raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"
+                                "): it has no roughness")
+    return out, per, how
 
 
 def plot_spectrum(s: Spectrum, path: Any = None) -> Any:
