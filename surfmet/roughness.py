@@ -125,6 +125,25 @@ def _crop_areal(topo: Topography, win: tuple[float, float]) -> Topography:
     return topo.replace(heights=topo.heights[:, cols[0]: cols[-1] + 1], metadata=md)
 
 
+def unit_caveats(metadata: Any) -> list[str]:
+    """What the file does not state about its units, to carry into every result.
+
+    Readers record ``lateral_calibrated = False`` when the file gives no lateral unit (the
+    pixel size is then taken as 1 m, or whatever the file's bare numbers say) and
+    ``height_unit = ""`` with ``units_missing`` when it gives no height unit.
+    """
+    md = dict(metadata or {})
+    out = []
+    if md.get("lateral_calibrated") is False:
+        out.append("uncalibrated lateral unit: the file states none, so the pixel size and "
+                   "every lateral quantity (Sal, Rsm, Spd, slopes, Sdr, cut-offs) are in the "
+                   "file's own numbers taken as metres, not in metres")
+    if md.get("units_missing") and not str(md.get("height_unit", "x")).strip():
+        out.append("uncalibrated height unit: the file states none, so every height (Sa, Sq, "
+                   "Sz, Ra, Rz...) is in the file's own numbers taken as metres, not in metres")
+    return out
+
+
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
     if isinstance(scan, (Topography, Profile)):
         return scan, scan.metadata.get("source")
@@ -262,6 +281,9 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         filters.append(info.as_dict())
     settings["filters"] = filters
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
+    caveats = unit_caveats(topo.metadata)
+    if caveats:
+        settings["caveats"] = caveats
     params = areal_parameters(surface, which)
     values = params.as_dict()
     settings["n_valid_points"] = params.n_valid
@@ -344,6 +366,9 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     parameters.update(feats)
     notes += feature_notes
     settings["rk_line"] = extra["rk_line"]
+    caveats = unit_caveats(prof.metadata)
+    if caveats:
+        settings["caveats"] = caveats
     if notes:
         settings["notes"] = notes
     diag = spike_diagnosis(rough, prefix="R")

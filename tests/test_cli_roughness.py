@@ -98,7 +98,7 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     assert rows[0]["status"] == "ok" and float(rows[0]["Sa_m"]) > 0
     assert rows[1]["status"] == "error" and rows[1]["error"]
     assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc_m", "ls_m",
-                                  "n_sampling", "conditions", "Sa_m", "Sq_m"]
+                                  "n_sampling", "conditions", "caveats", "Sa_m"]
     assert rows[0]["standard"].startswith("ISO 25178-2")
     assert "Ssk" in rows[0] and "Spd_1/m²" in rows[0]
 
@@ -146,3 +146,22 @@ def test_fit_circle_of_a_row(capsys, ball):
     assert rec["radius"]["value"] == pytest.approx(R, rel=0.02)
     assert len(rec["center"]["value"]) == 2 and rec["center"]["unit"] == "m"
     assert rec["radius_uncertainty"]["unit"] == "m"
+
+
+def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, tmp_path):
+    # issue 16 item 12: test.gwy states no units; info says so, roughness must too
+    path = str(realdata("test.gwy"))
+    rc, out, _ = _run(capsys, "roughness", path, "--json")
+    assert rc == 0
+    caveats = json.loads(out)["settings"]["caveats"]
+    assert any("lateral unit" in c for c in caveats)
+    assert any("height unit" in c for c in caveats)
+    rc, out, _ = _run(capsys, "roughness", path)
+    assert out.count("CAVEAT: uncalibrated") == 2
+    table = tmp_path / "t.csv"
+    _run(capsys, "roughness", path, "--csv", str(table))
+    row = next(csv.DictReader(io.StringIO(table.read_text())))
+    assert "uncalibrated lateral unit" in row["caveats"]
+    # a calibrated file has none
+    rc, out, _ = _run(capsys, "roughness", str(realdata("x3p-2.x3p")), "--json")
+    assert "caveats" not in json.loads(out)["settings"]

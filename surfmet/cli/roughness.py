@@ -149,6 +149,8 @@ def _print_table(rec: dict[str, Any]) -> None:
         print(f"  diagnosis: {diag['message']}")
     for note in s.get("notes", []) or []:
         print(f"  note: {note}")
+    for caveat in s.get("caveats", []) or []:
+        print(f"  CAVEAT: {caveat}")
 
 
 def _conditions_line(cond: dict[str, Any]) -> str:
@@ -189,15 +191,16 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             if sym not in units:
                 symbols.append(sym)
                 units[sym] = q["unit"]
-    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions"]
-            + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
+    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
+             "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
     fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
     try:
         w = csv.writer(fh)
         w.writerow(cols)
         for rec in records:
             params = rec.get("parameters", {})
-            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec)]
+            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec),
+                   " | ".join(rec.get("settings", {}).get("caveats", []))]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))
