@@ -144,6 +144,47 @@ def unit_caveats(metadata: Any) -> list[str]:
     return out
 
 
+def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
+                         spikes_removed: int | None) -> Any:
+    """The spike diagnosis restated with the result's own q/a ratio and kurtosis.
+
+    The diagnosis recomputes them about the sample mean; the profile parameters are taken
+    about the mean line (ISO), so the two could print different Rku for one result. Here
+    the table's values are used, and after a spike removal the advice is not "remove
+    spikes" again but what the extreme heights left must be.
+    """
+    import dataclasses
+
+    from surfmet.spikes import OUTLIER_SIGMAS, SUSPECT_SQ_OVER_SA
+
+    q, a, k = values.get(f"{prefix}q"), values.get(f"{prefix}a"), values.get(f"{prefix}ku")
+    if not (q and a and k is not None and np.isfinite(k)):
+        return diag
+    ratio = q / a
+    if spikes_removed is None and (f"{ratio:.3g}", f"{k:.3g}") == (
+            f"{diag.sq_over_sa:.3g}", f"{diag.kurtosis:.3g}"):
+        return diag  # already says what the table says
+    suspected = ratio > SUSPECT_SQ_OVER_SA or diag.n_outliers > 0
+    names = f"{prefix}q, {prefix}z, {prefix}sk and {prefix}ku"
+    head = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: {diag.gaussian_ratio:.3g}; "
+            f"real textures at most ~1.4); {prefix}ku = {k:.3g}; {diag.n_outliers} point(s) "
+            f"lie beyond {OUTLIER_SIGMAS:g} robust sigma of the height distribution.")
+    if not suspected:
+        msg = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: "
+               f"{diag.gaussian_ratio:.3g}); no sign of spikes.")
+    elif spikes_removed is None:
+        msg = (f"{head} A few extreme heights (spikes, outliers, dust) dominate {names}: "
+               "remove spikes (roughness(..., spikes=True) / --spikes) or check the scan "
+               "before trusting them.")
+    else:
+        msg = (f"{head} This is after removing {spikes_removed} spike(s): the extreme "
+               "heights left are not isolated spikes (wide dust, pits, scratches, steps or "
+               f"non-measured edges read as heights), which spike removal does not touch; "
+               f"inspect the scan before trusting {names}.")
+    return dataclasses.replace(diag, sq_over_sa=ratio, kurtosis=float(k),
+                               suspected=bool(suspected), message=msg)
+
+
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
     if isinstance(scan, (Topography, Profile)):
         return scan, scan.metadata.get("source")
@@ -289,7 +330,8 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
     settings["n_valid_points"] = params.n_valid
     if params.notes:
         settings["notes"] = list(params.notes)
-    diag = spike_diagnosis(surface)
+    diag = consistent_diagnosis(spike_diagnosis(surface), values, "S",
+                                report.count if report is not None else None)
     dd = diag.as_dict()
     if before is not None:
         dd["before_spike_removal"] = before.as_dict()
@@ -371,7 +413,8 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
         settings["caveats"] = caveats
     if notes:
         settings["notes"] = notes
-    diag = spike_diagnosis(rough, prefix="R")
+    diag = consistent_diagnosis(spike_diagnosis(rough, prefix="R"), values, "R",
+                                report.count if report is not None else None)
     settings["spike_diagnosis"] = diag.as_dict()
     return RoughnessResult(
         kind="profile",

@@ -165,3 +165,37 @@ def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, t
     # a calibrated file has none
     rc, out, _ = _run(capsys, "roughness", str(realdata("x3p-2.x3p")), "--json")
     assert "caveats" not in json.loads(out)["settings"]
+
+
+def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp_path):
+    # issue 16 item 13: (1) a profile's table said Rku 79.6 and its diagnosis 79.9 (about
+    # the sample mean instead of the mean line); (2) after --spikes removed spikes the
+    # diagnosis still advised "--spikes"
+    from surfmet.model import Profile
+
+    rng = np.random.default_rng(12)
+    z = 1e-8 * rng.standard_normal(4000) + 3e-9  # a mean off the mean line
+    z[rng.choice(4000, 30, replace=False)] += 2e-7
+    path = tmp_path / "spiky_profile.npz"
+    surfmet.write(Profile(z, 0.5e-6), path)
+    rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "none", "--level", "none",
+                      "--json")
+    rec = json.loads(out)
+    rku = rec["parameters"]["Rku"]["value"]
+    # numpy truth: the kurtosis about the mean line (z = 0), as ISO defines Rku
+    assert rku == pytest.approx(np.mean(z**4) / np.mean(z**2) ** 2, rel=1e-9)
+    diag = rec["settings"]["spike_diagnosis"]
+    assert f"Rku = {rku:.3g}" in diag["message"]
+    # an areal scan with wide pits that are not spikes: they stay after --spikes
+    j, i = np.mgrid[:120, :120]
+    zz = 1e-8 * rng.standard_normal((120, 120))
+    for cj, ci in ((30, 30), (80, 90), (60, 20)):
+        zz[(j - cj) ** 2 + (i - ci) ** 2 < 36] -= 2e-6
+    zz[rng.integers(0, 120, 20), rng.integers(0, 120, 20)] += 3e-6
+    scan = tmp_path / "pits.npz"
+    surfmet.write(Topography(zz, 1e-6, 1e-6), scan)
+    rc, out, _ = _run(capsys, "roughness", str(scan), "--spikes", "--json")
+    s = json.loads(out)["settings"]
+    assert s["spikes"]["count"] > 0 and s["spike_diagnosis"]["suspected"]
+    assert "--spikes" not in s["spike_diagnosis"]["message"]
+    assert "after removing" in s["spike_diagnosis"]["message"]
