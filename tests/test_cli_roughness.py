@@ -180,6 +180,7 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     surfmet.write(Profile(z, 0.5e-6), path)
     rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "none", "--level", "none",
                       "--json")
+    assert rc == 0
     rec = json.loads(out)
     rku = rec["parameters"]["Rku"]["value"]
     # numpy truth: the kurtosis about the mean line (z = 0), as ISO defines Rku
@@ -195,6 +196,7 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     scan = tmp_path / "pits.npz"
     surfmet.write(Topography(zz, 1e-6, 1e-6), scan)
     rc, out, _ = _run(capsys, "roughness", str(scan), "--spikes", "--json")
+    assert rc == 0
     s = json.loads(out)["settings"]
     assert s["spikes"]["count"] > 0 and s["spike_diagnosis"]["suspected"]
     assert "--spikes" not in s["spike_diagnosis"]["message"]
