@@ -210,7 +210,7 @@ def roughness(
     which: Any = None,
     standard: str | None = None,
     n_sampling: int | None = None,
-    rk_line: str = "secant",
+    rk_line: str | None = None,
     valley_suppression: bool = False,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
@@ -246,9 +246,11 @@ def roughness(
         ``"iso21920"``.
     n_sampling : int, optional
         Profiles: number of sampling lengths. Default: what the file states, else 5.
-    rk_line : {"secant", "least-squares", "levels"}
+    rk_line : {"secant", "least-squares", "levels"}, optional
         Profiles: construction of the ISO 13565-2 equivalent straight line
         (:mod:`profiles.rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
+        Default: what the file states (``evaluation_conditions["rk_line"]``), else
+        ``"secant"``.
     valley_suppression : bool
         Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
 
@@ -267,10 +269,10 @@ def roughness(
         from surfmet.profile_roughness import resolve_conditions
 
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
-                                  n_sampling=n_sampling)
+                                  n_sampling=n_sampling, rk_line=rk_line)
         return _profile_roughness(data, source, level=level, cond=cond, window=win,
                                   profile=profile, spikes=spikes,
-                                  extra={"rk_line": rk_line,
+                                  extra={"rk_line": cond.rk_line,
                                          "valley_suppression": bool(valley_suppression)})
     ls_v = _length_or_none(ls, "ls")
     lc_v = _length_or_none(lc, "lc")
@@ -407,7 +409,7 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     feats, feature_notes = feature_values(rough, ap.settings["dx"], ap.parameters.Rz)
     parameters.update(feats)
     notes += feature_notes
-    settings["rk_line"] = extra["rk_line"]
+    settings["rk_line"] = {"value": cond.rk_line, "why": cond.why["rk_line"]}
     caveats = unit_caveats(prof.metadata)
     if caveats:
         settings["caveats"] = caveats

@@ -61,10 +61,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "default unless the file states another) or iso4287 (ISO 4287:1997, "
                    "per sampling length, averaged)")
     p.add_argument("--rk-line", choices=("secant", "least-squares", "levels"),
-                   default="secant",
+                   default=None,
                    help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
-                   "40%% secant (default), its least-squares fit, or 'levels' (the curve "
-                   "tabulated at 1%% of Rt, as a Mitutoyo SurfTest prints)")
+                   "40%% secant (default, unless the file states its instrument's), its "
+                   "least-squares fit, or 'levels' (the curve tabulated at 1%% of Rt, as a "
+                   "Mitutoyo SurfTest prints)")
     p.add_argument("--valley-suppression", action="store_true",
                    help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
     p.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
