@@ -47,7 +47,15 @@ class SphereFit:
     rms_residual : float
         Root mean square of the orthogonal residuals, metres.
     pv_form_deviation : float
-        Peak-to-valley of the orthogonal residuals (form deviation), metres.
+        Peak-to-valley of all the orthogonal residuals, metres: the peak-to-valley
+        deviation from the least-squares sphere, roughness and outliers included (one
+        spike sets it).
+    form_pv : float
+        Form deviation, metres: the peak-to-valley of the quadratic component of the
+        residual (the least-squares bivariate polynomial of degree 2 fitted to it), i.e.
+        the departure from a sphere (astigmatism, a cap that is not spherical) that
+        roughness and outliers do not inflate. This is the one "form deviation" surfmet
+        reports.
     residuals : ndarray, shape (ny, nx)
         Orthogonal residual map (positive outside the sphere), NaN where not measured.
     n_points : int
@@ -68,6 +76,7 @@ class SphereFit:
     n_points: int
     convex: bool
     loss: str
+    form_pv: float = float("nan")
 
     def height(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """Height of the fitted sphere's measured side above ``(x, y)`` (NaN outside)."""
@@ -132,6 +141,26 @@ def _valid_points(topo: Topography, mask: np.ndarray | None):
         valid &= m
     jj, ii = np.nonzero(valid)
     return valid, ii * topo.dx, jj * topo.dy, z[valid]
+
+
+#: A sphere or cylinder must explain the scan clearly better than a plane: the plane's rms
+#: residual must exceed the curved shape's by this factor, else the curvature is not
+#: resolved by the data (a flat or tilted scan "fits" any huge radius with ± 0 m).
+CURVATURE_RESOLVED_RATIO = 2.0
+
+
+def _require_curvature(x: np.ndarray, y: np.ndarray, z: np.ndarray, rms_shape: float,
+                       shape: str, radius: float) -> None:
+    a = np.column_stack([np.ones_like(x), x - x.mean(), y - y.mean()])
+    coef, *_ = np.linalg.lstsq(a, z - z.mean(), rcond=None)
+    rms_plane = float(np.sqrt(np.mean((z - z.mean() - a @ coef) ** 2)))
+    if not rms_plane > CURVATURE_RESOLVED_RATIO * rms_shape:
+        raise SurfmetInputError(
+            f"curvature not resolved by the data: a plane fits the scan as well as the "
+            f"{shape} (rms residual {rms_plane:.3g} m against {rms_shape:.3g} m), so the "
+            f"{shape}'s radius ({radius:.3g} m) means nothing; scan more of the curved "
+            f"surface or check that this is the {shape} you meant"
+        )
 
 
 def _check_loss(loss: str) -> str:
@@ -251,10 +280,13 @@ def fit_sphere(
     Raises
     ------
     SurfmetInputError
-        Fewer than 5 valid points, or points that define no sphere (a plane).
+        Fewer than 5 valid points, points that define no sphere, or a scan whose
+        curvature the fit does not resolve (a plane fits it as well: flat or tilted data,
+        or a cap far flatter than its noise).
     """
     valid, x, y, z = _valid_points(topo, mask)
     center, radius, cov, res = fit_sphere_points(x, y, z, loss=loss, f_scale=f_scale)
+    _require_curvature(x, y, z, float(np.sqrt(np.mean(res**2))), "sphere", radius)
     resmap = np.full(topo.shape, np.nan)
     resmap[valid] = res
     unc = np.sqrt(np.clip(np.diag(cov), 0, None))
@@ -269,7 +301,18 @@ def fit_sphere(
         n_points=int(res.size),
         convex=bool(np.mean(z) > center[2]),
         loss=loss,
+        form_pv=quadratic_form_pv(x, y, res),
     )
+
+
+def quadratic_form_pv(x: np.ndarray, y: np.ndarray, res: np.ndarray) -> float:
+    """Peak-to-valley of the degree-2 least-squares polynomial fitted to residuals ``res``
+    at ``(x, y)``: the form deviation (see :class:`SphereFit`)."""
+    u = (x - x.mean()) / max(float(np.ptp(x)), 1e-300)
+    v = (y - y.mean()) / max(float(np.ptp(y)), 1e-300)
+    a = np.column_stack([np.ones_like(u), u, v, u * u, u * v, v * v])
+    coef, *_ = np.linalg.lstsq(a, res, rcond=None)
+    return float(np.ptp(a @ coef))
 
 
 def _direction(azimuth: float, elevation: float) -> np.ndarray:
@@ -367,6 +410,8 @@ def fit_cylinder(
     d, foot, r = unpack(p)
     if r < 0:  # the same cylinder, parametrised with a negative radius
         r = -r
+    _require_curvature(x, y, z, float(np.sqrt(np.mean(res**2)) * scale), "cylinder",
+                       float(r * scale))
     az, el = (az0, p[0]) if fixed_az else (p[0], p[1])
     resmap = np.full(topo.shape, np.nan)
     resmap[valid] = res * scale

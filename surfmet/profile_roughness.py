@@ -48,6 +48,7 @@ class Conditions:
     n_sampling: int
     prefiltered: bool
     why: dict[str, str]
+    rk_line: str = "secant"
 
 
 def parse_cutoff(value: Any, what: str) -> Any:
@@ -75,7 +76,7 @@ def _standard(value: Any) -> str:
 
 
 def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: Any,
-                       n_sampling: Any) -> Conditions:
+                       n_sampling: Any, rk_line: Any = None) -> Conditions:
     """User choices first, then the file's stated conditions, then the rule or default."""
     stated = metadata.get("evaluation_conditions") or {}
     why: dict[str, str] = {}
@@ -111,7 +112,13 @@ def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: 
         n, why["n_sampling"] = 5, "ISO 4288 default (5)"
     if ls_v is not None and isinstance(lc_v, float) and not ls_v < lc_v:
         raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
-    return Conditions(std, lc_v, ls_v, n, prefiltered, why)
+    if rk_line is not None:
+        line, why["rk_line"] = str(rk_line), FROM_USER
+    elif stated.get("rk_line"):
+        line, why["rk_line"] = str(stated["rk_line"]), FROM_FILE
+    else:
+        line, why["rk_line"] = "secant", FROM_DEFAULT
+    return Conditions(std, lc_v, ls_v, n, prefiltered, why, line)
 
 
 def _count(value: Any) -> int:

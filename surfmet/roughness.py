@@ -125,6 +125,66 @@ def _crop_areal(topo: Topography, win: tuple[float, float]) -> Topography:
     return topo.replace(heights=topo.heights[:, cols[0]: cols[-1] + 1], metadata=md)
 
 
+def unit_caveats(metadata: Any) -> list[str]:
+    """What the file does not state about its units, to carry into every result.
+
+    Readers record ``lateral_calibrated = False`` when the file gives no lateral unit (the
+    pixel size is then taken as 1 m, or whatever the file's bare numbers say) and
+    ``height_unit = ""`` with ``units_missing`` when it gives no height unit.
+    """
+    md = dict(metadata or {})
+    out = []
+    if md.get("lateral_calibrated") is False:
+        out.append("uncalibrated lateral unit: the file states none, so the pixel size and "
+                   "every lateral quantity (Sal, Rsm, Spd, slopes, Sdr, cut-offs) are in the "
+                   "file's own numbers taken as metres, not in metres")
+    if md.get("units_missing") and not str(md.get("height_unit", "x")).strip():
+        out.append("uncalibrated height unit: the file states none, so every height (Sa, Sq, "
+                   "Sz, Ra, Rz...) is in the file's own numbers taken as metres, not in metres")
+    return out
+
+
+def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
+                         spikes_removed: int | None) -> Any:
+    """The spike diagnosis restated with the result's own q/a ratio and kurtosis.
+
+    The diagnosis recomputes them about the sample mean; the profile parameters are taken
+    about the mean line (ISO), so the two could print different Rku for one result. Here
+    the table's values are used, and after a spike removal the advice is not "remove
+    spikes" again but what the extreme heights left must be.
+    """
+    import dataclasses
+
+    from surfmet.spikes import OUTLIER_SIGMAS, SUSPECT_SQ_OVER_SA
+
+    q, a, k = values.get(f"{prefix}q"), values.get(f"{prefix}a"), values.get(f"{prefix}ku")
+    if not (q and a and k is not None and np.isfinite(k)):
+        return diag
+    ratio = q / a
+    if spikes_removed is None and (f"{ratio:.3g}", f"{k:.3g}") == (
+            f"{diag.sq_over_sa:.3g}", f"{diag.kurtosis:.3g}"):
+        return diag  # already says what the table says
+    suspected = ratio > SUSPECT_SQ_OVER_SA or diag.n_outliers > 0
+    names = f"{prefix}q, {prefix}z, {prefix}sk and {prefix}ku"
+    head = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: {diag.gaussian_ratio:.3g}; "
+            f"real textures at most ~1.4); {prefix}ku = {k:.3g}; {diag.n_outliers} point(s) "
+            f"lie beyond {OUTLIER_SIGMAS:g} robust sigma of the height distribution.")
+    if not suspected:
+        msg = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: "
+               f"{diag.gaussian_ratio:.3g}); no sign of spikes.")
+    elif spikes_removed is None:
+        msg = (f"{head} A few extreme heights (spikes, outliers, dust) dominate {names}: "
+               "remove spikes (roughness(..., spikes=True) / --spikes) or check the scan "
+               "before trusting them.")
+    else:
+        msg = (f"{head} This is after removing {spikes_removed} spike(s): the extreme "
+               "heights left are not isolated spikes (wide dust, pits, scratches, steps or "
+               f"non-measured edges read as heights), which spike removal does not touch; "
+               f"inspect the scan before trusting {names}.")
+    return dataclasses.replace(diag, sq_over_sa=ratio, kurtosis=float(k),
+                               suspected=bool(suspected), message=msg)
+
+
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
     if isinstance(scan, (Topography, Profile)):
         return scan, scan.metadata.get("source")
@@ -150,7 +210,7 @@ def roughness(
     which: Any = None,
     standard: str | None = None,
     n_sampling: int | None = None,
-    rk_line: str = "secant",
+    rk_line: str | None = None,
     valley_suppression: bool = False,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
@@ -186,9 +246,11 @@ def roughness(
         ``"iso21920"``.
     n_sampling : int, optional
         Profiles: number of sampling lengths. Default: what the file states, else 5.
-    rk_line : {"secant", "least-squares", "levels"}
+    rk_line : {"secant", "least-squares", "levels"}, optional
         Profiles: construction of the ISO 13565-2 equivalent straight line
         (:mod:`profiles.rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
+        Default: what the file states (``evaluation_conditions["rk_line"]``), else
+        ``"secant"``.
     valley_suppression : bool
         Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
 
@@ -207,10 +269,10 @@ def roughness(
         from surfmet.profile_roughness import resolve_conditions
 
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
-                                  n_sampling=n_sampling)
+                                  n_sampling=n_sampling, rk_line=rk_line)
         return _profile_roughness(data, source, level=level, cond=cond, window=win,
                                   profile=profile, spikes=spikes,
-                                  extra={"rk_line": rk_line,
+                                  extra={"rk_line": cond.rk_line,
                                          "valley_suppression": bool(valley_suppression)})
     ls_v = _length_or_none(ls, "ls")
     lc_v = _length_or_none(lc, "lc")
@@ -262,12 +324,16 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         filters.append(info.as_dict())
     settings["filters"] = filters
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
+    caveats = unit_caveats(topo.metadata)
+    if caveats:
+        settings["caveats"] = caveats
     params = areal_parameters(surface, which)
     values = params.as_dict()
     settings["n_valid_points"] = params.n_valid
     if params.notes:
         settings["notes"] = list(params.notes)
-    diag = spike_diagnosis(surface)
+    diag = consistent_diagnosis(spike_diagnosis(surface), values, "S",
+                                report.count if report is not None else None)
     dd = diag.as_dict()
     if before is not None:
         dd["before_spike_removal"] = before.as_dict()
@@ -343,10 +409,14 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     feats, feature_notes = feature_values(rough, ap.settings["dx"], ap.parameters.Rz)
     parameters.update(feats)
     notes += feature_notes
-    settings["rk_line"] = extra["rk_line"]
+    settings["rk_line"] = {"value": cond.rk_line, "why": cond.why["rk_line"]}
+    caveats = unit_caveats(prof.metadata)
+    if caveats:
+        settings["caveats"] = caveats
     if notes:
         settings["notes"] = notes
-    diag = spike_diagnosis(rough, prefix="R")
+    diag = consistent_diagnosis(spike_diagnosis(rough, prefix="R"), values, "R",
+                                report.count if report is not None else None)
     settings["spike_diagnosis"] = diag.as_dict()
     return RoughnessResult(
         kind="profile",

@@ -98,7 +98,7 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     assert rows[0]["status"] == "ok" and float(rows[0]["Sa_m"]) > 0
     assert rows[1]["status"] == "error" and rows[1]["error"]
     assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc_m", "ls_m",
-                                  "n_sampling", "conditions", "Sa_m", "Sq_m"]
+                                  "n_sampling", "conditions", "caveats", "Sa_m"]
     assert rows[0]["standard"].startswith("ISO 25178-2")
     assert "Ssk" in rows[0] and "Spd_1/m²" in rows[0]
 
@@ -146,3 +146,58 @@ def test_fit_circle_of_a_row(capsys, ball):
     assert rec["radius"]["value"] == pytest.approx(R, rel=0.02)
     assert len(rec["center"]["value"]) == 2 and rec["center"]["unit"] == "m"
     assert rec["radius_uncertainty"]["unit"] == "m"
+
+
+def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, tmp_path):
+    # issue 16 item 12: test.gwy states no units; info says so, roughness must too
+    path = str(realdata("test.gwy"))
+    rc, out, _ = _run(capsys, "roughness", path, "--json")
+    assert rc == 0
+    caveats = json.loads(out)["settings"]["caveats"]
+    assert any("lateral unit" in c for c in caveats)
+    assert any("height unit" in c for c in caveats)
+    rc, out, _ = _run(capsys, "roughness", path)
+    assert out.count("CAVEAT: uncalibrated") == 2
+    table = tmp_path / "t.csv"
+    _run(capsys, "roughness", path, "--csv", str(table))
+    row = next(csv.DictReader(io.StringIO(table.read_text())))
+    assert "uncalibrated lateral unit" in row["caveats"]
+    # a calibrated file has none
+    rc, out, _ = _run(capsys, "roughness", str(realdata("x3p-2.x3p")), "--json")
+    assert "caveats" not in json.loads(out)["settings"]
+
+
+def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp_path):
+    # issue 16 item 13: (1) a profile's table said Rku 79.6 and its diagnosis 79.9 (about
+    # the sample mean instead of the mean line); (2) after --spikes removed spikes the
+    # diagnosis still advised "--spikes"
+    from surfmet.model import Profile
+
+    rng = np.random.default_rng(12)
+    z = 1e-8 * rng.standard_normal(4000) + 3e-9  # a mean off the mean line
+    z[rng.choice(4000, 30, replace=False)] += 2e-7
+    path = tmp_path / "spiky_profile.npz"
+    surfmet.write(Profile(z, 0.5e-6), path)
+    rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "none", "--level", "none",
+                      "--json")
+    assert rc == 0
+    rec = json.loads(out)
+    rku = rec["parameters"]["Rku"]["value"]
+    # numpy truth: the kurtosis about the mean line (z = 0), as ISO defines Rku
+    assert rku == pytest.approx(np.mean(z**4) / np.mean(z**2) ** 2, rel=1e-9)
+    diag = rec["settings"]["spike_diagnosis"]
+    assert f"Rku = {rku:.3g}" in diag["message"]
+    # an areal scan with wide pits that are not spikes: they stay after --spikes
+    j, i = np.mgrid[:120, :120]
+    zz = 1e-8 * rng.standard_normal((120, 120))
+    for cj, ci in ((30, 30), (80, 90), (60, 20)):
+        zz[(j - cj) ** 2 + (i - ci) ** 2 < 36] -= 2e-6
+    zz[rng.integers(0, 120, 20), rng.integers(0, 120, 20)] += 3e-6
+    scan = tmp_path / "pits.npz"
+    surfmet.write(Topography(zz, 1e-6, 1e-6), scan)
+    rc, out, _ = _run(capsys, "roughness", str(scan), "--spikes", "--json")
+    assert rc == 0
+    s = json.loads(out)["settings"]
+    assert s["spikes"]["count"] > 0 and s["spike_diagnosis"]["suspected"]
+    assert "--spikes" not in s["spike_diagnosis"]["message"]
+    assert "after removing" in s["spike_diagnosis"]["message"]

@@ -35,7 +35,7 @@ def mitutoyo_npz(tmp_path, printout):
     # the exported R-profile with the conditions the instrument states, as a reader of the
     # export hands them over (metadata["evaluation_conditions"])
     conditions = {"standard": "iso4287", "lc": 2.5e-3, "ls": 8e-6, "n_sampling": 4,
-                  "profile": "R", "source": "Mitutoyo SurfTest export"}
+                  "profile": "R", "rk_line": "levels", "source": "Mitutoyo SurfTest export"}
     path = tmp_path / "mitutoyo.npz"
     surfmet.write(Profile(printout.z, printout.dx,
                           metadata={"evaluation_conditions": conditions}), path)
@@ -66,8 +66,13 @@ def test_stated_conditions_reproduce_the_printout_without_flags(capsys, mitutoyo
     assert cond["n_sampling"]["value"] == 4 and "file" in cond["n_sampling"]["why"]
     got = rec["parameters"]
     for sym, ours in (("Ra", "Ra"), ("Rq", "Rq"), ("Rz", "Rz"), ("Rsk", "Rsk"),
-                      ("Rkµ", "Rku"), ("RDq", "Rdq"), ("Rt", "Rt")):
+                      ("Rkµ", "Rku"), ("RDq", "Rdq"), ("Rt", "Rt"), ("Rpk", "Rpk"),
+                      ("Rvk", "Rvk"), ("Mr1", "Mr1"), ("Mr2", "Mr2")):
         assert abs(got[ours]["value"] - printout.results[sym]) <= 1.01 * printout.digits[sym]
+    # A1, A2: printed in µm·%, ours in m·%
+    for sym in ("A1", "A2"):
+        assert abs(got[sym]["value"] * 1e6 - printout.results[sym]) <= printout.digits[sym]
+    assert rec["settings"]["rk_line"] == {"value": "levels", "why": cond["lc"]["why"]}
 
 
 def test_standard_flag_and_lc_none(capsys, sine_profile):

@@ -81,3 +81,45 @@ def test_plane_and_too_few_points_are_refused():
         fit_sphere(Topography(z, 1e-6, 1e-6))
     with pytest.raises(SurfmetInputError):
         fit_sphere(Topography(1e-6 * (i + j), 1e-6, 1e-6), loss="l2")
+
+
+@pytest.mark.parametrize("kind", ["zeros", "tilted", "flat_noise"])
+def test_unresolved_curvature_is_refused_not_a_huge_radius(kind):
+    # issue 16 item 3: all-zero heights gave a radius of 24 m, a tilted plane 3.2e8 m,
+    # both "± 0 nm" with exit 0
+    rng = np.random.default_rng(4)
+    j, i = np.mgrid[:60, :60] * 1e-6
+    z = {"zeros": 0 * i, "tilted": 1e-3 * i + 2e-4 * j,
+         "flat_noise": 1e-8 * rng.standard_normal(i.shape)}[kind]
+    with pytest.raises(SurfmetInputError, match="curvature not resolved"):
+        fit_sphere(Topography(z, 1e-6, 1e-6))
+
+
+def test_cylinder_on_a_plane_is_refused():
+    from surfmet.fitting import fit_cylinder
+
+    rng = np.random.default_rng(5)
+    _, i = np.mgrid[:60, :60] * 1e-6
+    z = 1e-3 * i + 1e-8 * rng.standard_normal(i.shape)
+    with pytest.raises(SurfmetInputError, match=r"curvature not resolved|no curvature"):
+        fit_cylinder(Topography(z, 1e-6, 1e-6))
+
+
+def test_form_deviation_is_the_quadratic_component_not_the_spikes():
+    # issue 16 item 6: one definition of the form deviation. A cap with astigmatism
+    # c (x'² - y'²) (orthogonal to the sphere's own x'² + y'² over a square, so the sphere
+    # fit leaves it in the residual): its PV over the square of half width h is 2 c h²,
+    # whatever spikes are added; the PV of all residuals is set by the spikes
+    rng = np.random.default_rng(8)
+    R, n, dx = 10e-3, 101, 10e-6
+    j, i = np.mgrid[:n, :n]
+    u, v = (i - 50) * dx, (j - 50) * dx
+    c = 2.0  # 1/m: 0.5 µm of astigmatism at the corners
+    z = np.sqrt(R**2 - u**2 - v**2) + c * (u**2 - v**2) + 5e-9 * rng.standard_normal(u.shape)
+    spiky = z.copy()
+    spiky.ravel()[rng.choice(z.size, 20, replace=False)] += 20e-6
+    h = 50 * dx
+    clean, dirty = (fit_sphere(Topography(a, dx, dx)) for a in (z, spiky))
+    assert clean.form_pv == pytest.approx(2 * c * h**2, rel=0.03)
+    assert dirty.form_pv == pytest.approx(2 * c * h**2, rel=0.1)
+    assert dirty.pv_form_deviation > 15e-6 > 10 * dirty.form_pv

@@ -254,6 +254,7 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
             "center": {"value": list(sf.center), "unit": "m"},
             "convex": sf.convex,
             "pv_form_deviation": {"value": sf.pv_form_deviation, "unit": "m"},
+            "form_pv": {"value": sf.form_pv, "unit": "m"},
         }, n_points=sf.n_points)
     else:
         from surfmet.fitting import fit_cylinder

@@ -56,5 +56,9 @@ def run(args: argparse.Namespace) -> int:
     centre = ", ".join(format_length(v, 6) for v in rec["center"]["value"])
     print(f"centre              ({centre})")
     print(f"rms residual        {format_length(rec['rms_residual']['value'])}")
-    print(f"PV form deviation   {format_length(rec['pv_form_deviation']['value'])}")
+    if "form_pv" in rec:
+        print(f"form deviation      {format_length(rec['form_pv']['value'])} PV of the "
+              "quadratic component of the residual")
+    print(f"residual PV         {format_length(rec['pv_form_deviation']['value'])} all points "
+          "(roughness and outliers included)")
     return 0

@@ -61,10 +61,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "default unless the file states another) or iso4287 (ISO 4287:1997, "
                    "per sampling length, averaged)")
     p.add_argument("--rk-line", choices=("secant", "least-squares", "levels"),
-                   default="secant",
+                   default=None,
                    help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
-                   "40%% secant (default), its least-squares fit, or 'levels' (the curve "
-                   "tabulated at 1%% of Rt, as a Mitutoyo SurfTest prints)")
+                   "40%% secant (default, unless the file states its instrument's), its "
+                   "least-squares fit, or 'levels' (the curve tabulated at 1%% of Rt, as a "
+                   "Mitutoyo SurfTest prints)")
     p.add_argument("--valley-suppression", action="store_true",
                    help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
     p.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
@@ -149,6 +150,8 @@ def _print_table(rec: dict[str, Any]) -> None:
         print(f"  diagnosis: {diag['message']}")
     for note in s.get("notes", []) or []:
         print(f"  note: {note}")
+    for caveat in s.get("caveats", []) or []:
+        print(f"  CAVEAT: {caveat}")
 
 
 def _conditions_line(cond: dict[str, Any]) -> str:
@@ -189,15 +192,16 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             if sym not in units:
                 symbols.append(sym)
                 units[sym] = q["unit"]
-    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions"]
-            + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
+    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
+             "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
     fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
     try:
         w = csv.writer(fh)
         w.writerow(cols)
         for rec in records:
             params = rec.get("parameters", {})
-            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec)]
+            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec),
+                   " | ".join(rec.get("settings", {}).get("caveats", []))]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))
