@@ -1,9 +1,10 @@
 """Fuzzing every reader with mutated real files: damage must give SurfmetFormatError only.
 
-Each real instrument file (every format with a real sample; the coordinate-text format has no real file, so
-a synthetic one stands in) is truncated at random offsets, cut to its header, emptied,
-bit-flipped, has header fields overwritten with huge / negative / zero / NaN values (binary
-fields or numbers in a text header), regions zeroed, bytes inserted and garbage appended.
+Each real instrument file (every format with a real sample; the coordinate-text and the
+ISO 5436-2 softgauge formats have none here, so synthetic ones stand in) is truncated at
+random offsets, cut to its header, emptied, bit-flipped, has header fields overwritten
+with huge / negative / zero / NaN values (binary fields or numbers in a text header),
+regions zeroed, bytes inserted and garbage appended.
 The seeds are fixed, so every run tests the same cases.
 
 For every case the outcome must be either a valid scan (the registry has already checked
@@ -65,7 +66,7 @@ FILES = {
     "x3p-2.x3p": ("x3p", 120),
     "KautschukInfiniteFocus.x3p": ("x3p", 100),
     "synthetic-grid.xyz": ("xyz", 300),
-    "mitutoyo_2_mock.xlsx": ("mitutoyo", 60),
+    "mitutoyo_2_mock.xlsx": ("mitutoyo", 40),
     "di-1.di": ("di", 200),
     "di-2.di": ("di", 120),
     "spot_1-1000nm.ibw": ("ibw", 120),
@@ -77,6 +78,9 @@ FILES = {
     "stp-1.stp": ("wsxm", 160),
     "top-1.top": ("wsxm", 200),
     "nc-1.nc": ("nc", 300),
+    "example_ps.tiff": ("park", 160),
+    "synthetic-profile.smd": ("smd", 300),
+    "mnt-1.mnt": ("mnt", 120),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")
@@ -93,9 +97,21 @@ def synthetic_xyz() -> bytes:
     return ("x\ty\tz\n" + "\n".join(rows[:-3]) + "\n").encode()
 
 
+def synthetic_smd() -> bytes:
+    # No public softgauge file is in ../shared: one written from ISO 5436-2's four records.
+    rng = np.random.default_rng(2025)
+    z = "\r\n".join(f"{v:.5f}" for v in rng.normal(size=300))
+    body = (f"ISO 5436 - 2000\r\nPRF\r\nCX I 300 MM 1.0 D 0.0005\r\nCZ A 300 UM 1.0 D\r\n"
+            f"\x03\r\nDATE 2025-01-01\r\n\x03\r\n{z}\r\n\x03\r\n").encode()
+    return body + f"{sum(body) % 65535}\r\n\x03\r\n".encode()
+
+
+SYNTHETIC = {"synthetic-grid.xyz": synthetic_xyz, "synthetic-profile.smd": synthetic_smd}
+
+
 def load(name: str) -> bytes:
-    if name == "synthetic-grid.xyz":
-        return synthetic_xyz()
+    if name in SYNTHETIC:
+        return SYNTHETIC[name]()
     return (REALDATA / name).read_bytes()
 
 
@@ -252,7 +268,7 @@ def _report(failures: list[dict]) -> str:
 @pytest.mark.parametrize("name", list(FILES))
 def test_mutated_files_fail_cleanly(name, realdata):
     fmt, count = FILES[name]
-    if name != "synthetic-grid.xyz":
+    if name not in SYNTHETIC:
         realdata(name)  # skip (or fail under CI) if the shared file is missing
     buf = load(name)
     assert read_bytes(buf, name=name).metadata["format"] == fmt  # the seed file reads
@@ -408,3 +424,26 @@ def campaign(multiplier: int, seed: int) -> dict:
 
 if __name__ == "__main__" and len(sys.argv) == 4 and sys.argv[1] == "--campaign":
     print(json.dumps(campaign(int(sys.argv[2]), int(sys.argv[3]))))
+
+
+# --- the readers added for issue 18, forced onto every other sample (wrong magic) -------------
+
+NEW_FORMATS = ["di", "ibw", "mi", "nid", "tmd", "mnt", "wsxm", "nc", "park", "bcr", "mitutoyo",
+               "smd"]
+FOREIGN = ["x3p-2.x3p", "sur-3.sur", "frt-2.frt", "di-2.di", "nid-1.nid", "top-1.top",
+           "bcrf-1.bcrf", "mitutoyo_2_mock.xlsx", "synthetic-profile.smd", "nc-1.nc"]
+
+
+@pytest.mark.realdata
+@pytest.mark.parametrize("fmt", NEW_FORMATS)
+def test_new_readers_refuse_other_formats_in_one_line(fmt, realdata):
+    for name in FOREIGN:
+        if name not in SYNTHETIC:
+            realdata(name)
+        if FILES.get(name, (None,))[0] == fmt:
+            continue
+        with pytest.raises(SurfmetFormatError) as info:
+            read_bytes(load(name), format=fmt, name=name)
+        message = str(info.value)
+        assert "\n" not in message and name in message, message
+        assert not isinstance(info.value.__cause__, MemoryError)
