@@ -14,6 +14,7 @@ import math
 from pathlib import Path
 from typing import Any
 
+from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, emit_json, log
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
@@ -46,9 +47,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     )
     p.add_argument("file", help=f"TSV of frame indices (header 'k' then columns), or "
                    f"{PAPER_ALIAS!r} for the paper's Table 3")
-    p.add_argument("--fps", type=float, default=120.0, help="camera frame rate (default 120)")
-    p.add_argument("--step-deg", type=float, default=90.0,
-                   help="rotation between successive rows, degrees (default 90)")
+    p.add_argument("--fps", type=float, default=FPS, help=f"camera frame rate (default {FPS:g})")
+    p.add_argument("--step-deg", type=float, default=math.degrees(MARK_STEP),
+                   help=f"rotation between successive rows, degrees (default "
+                   f"{math.degrees(MARK_STEP):g})")
     p.add_argument("--cv", choices=("approx", "exact"), default="approx",
                    help="leave-one-point-out errors from leverages (fast) or refits")
     p.add_argument("--threshold", type=float, default=4.0,
@@ -60,7 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def _paper_path() -> Path:
-    return Path(__file__).resolve().parents[1] / "data" / "table3_frames.tsv"
+    return Path(__file__).resolve().parents[1] / "data" / TABLE3_FILENAME
 
 
 def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
@@ -98,7 +100,7 @@ def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
 
 def analysis_record(an: Any, source: str) -> dict[str, Any]:
     """The JSON record of a :class:`contact.rotor.groups.LawOfMotionAnalysis`."""
-    from contact.rotor.mechanics import mass_properties
+    from contact.rotor.mechanics import G_STANDARD, mass_properties
 
     sym = mass_properties(collar_offset="symmetric")
     fps = an.fps
@@ -134,7 +136,7 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
         if amp:
             # for the paper's rotor: A = M g e / (J + M R^2)
             rec["com_offset_paper_rotor"] = quantity(
-                amp * sym.rolling_inertia / (sym.mass * 9.80665), "m")
+                amp * sym.rolling_inertia / (sym.mass * G_STANDARD), "m")
         tests.append(rec)
     groups = []
     units = ("rad/s²", "rad/s", "rad")
