@@ -48,11 +48,13 @@ from contact.rotor.starts import wave_period_range
 
 __all__ = [
     "ALPHA",
+    "MIN_ROWS",
     "AdequacyCheck",
     "ResidualWave",
     "WaveScan",
     "adequacy_p_value",
     "check_adequacy",
+    "named_wave",
     "residual_wave",
     "scan_peaks",
     "smooth_deletion_z",
@@ -61,6 +63,8 @@ __all__ = [
 
 ALPHA = 0.02
 """Calibrated false-alarm rate per clean column at which a model is judged inadequate."""
+MIN_ROWS = 10
+"""Fewest rows the check judges: the calibration's prior starts at 10 rows."""
 _CALIBRATION_FILE = Path(__file__).resolve().parent / "adequacy_calibration.json"
 _CALIBRATION: dict | None = None
 
@@ -119,7 +123,9 @@ class AdequacyCheck:
     calibrated probability on clean columns (NaN without a calibration); ``adequate``:
     ``p_value > ALPHA`` (True without a calibration); ``p_floor``: the smallest p-value the
     calibration can give, ``1/(n_clean + 1)``. ``runs_z``, ``lag1``, ``wave_share`` and their
-    nominal p-values; ``residual``: the periodogram's best wave.
+    nominal p-values; ``residual``: the periodogram's best wave. ``judged`` is False for a
+    column of fewer than :data:`MIN_ROWS` rows (outside the calibration: ``p_value`` NaN,
+    ``adequate`` True).
     """
 
     model: str
@@ -133,6 +139,7 @@ class AdequacyCheck:
     nominal: dict[str, float]
     residual: ResidualWave | None
     scan: WaveScan | None
+    judged: bool = True
 
 
 def _normal_sf(x: float) -> float:
@@ -268,22 +275,29 @@ def scan_peaks(scan: WaveScan, count: int = 2) -> list[int]:
 
 def residual_wave(scan: WaveScan, fit: ModelFit, j: int | None = None,
                   rolling_radius: float = BALL_RADIUS) -> ResidualWave | None:
-    """The scan's wave at index ``j`` (default its best) as a :class:`ResidualWave`; for a
-    fitted plate-wave model, its fitted wave."""
-    if "wave_c" in MODELS[fit.model].free:
-        period = float(fit.params["wave_period"])
-        amp = math.hypot(fit.params["wave_c"], fit.params["wave_s"])
-        phase = math.atan2(fit.params["wave_s"], fit.params["wave_c"])
-        share = math.nan
-    else:
-        j = scan.best if j is None else j
-        if j < 0:
-            return None
-        period, amp = float(scan.periods[j]), float(scan.amplitude[j])
-        phase, share = float(scan.phase[j]), float(scan.share[j])
+    """The scan's wave at index ``j`` (default its best): what ``fit`` leaves."""
+    j = scan.best if j is None else j
+    if j < 0:
+        return None
+    return _as_wave(float(scan.periods[j]), float(scan.amplitude[j]), float(scan.phase[j]),
+                    float(scan.share[j]), fit, scan.span, rolling_radius)
+
+
+def named_wave(fit: ModelFit, span: float,
+               rolling_radius: float = BALL_RADIUS) -> ResidualWave | None:
+    """The plate wave a wave model fitted (None for the other models); ``span``: the angle
+    the column covers (rad), for the resolution."""
+    if "wave_c" not in MODELS[fit.model].free:
+        return None
+    p = fit.params
+    return _as_wave(float(p["wave_period"]), math.hypot(p["wave_c"], p["wave_s"]),
+                    math.atan2(p["wave_s"], p["wave_c"]), math.nan, fit, span, rolling_radius)
+
+
+def _as_wave(period: float, amp: float, phase: float, share: float, fit: ModelFit,
+             span: float, rolling_radius: float) -> ResidualWave:
     k = 2.0 * math.pi / period
     track = (phase + k * float(fit.params["phi0"])) % (2.0 * math.pi)
-    span = scan.span if scan is not None else math.inf
     return ResidualWave(
         period=period, revolutions=period / (2.0 * math.pi), track_length=period * rolling_radius,
         amplitude=amp, phase_rotor=phase % (2.0 * math.pi), phase_track=track,
@@ -329,9 +343,10 @@ def check_adequacy(times: np.ndarray, angles: np.ndarray, fit: ModelFit, *,
         "wave": float((1.0 - share) ** (dof / 2.0)),
     }
     stat = -math.log10(max(min(nominal.values()), 1e-300))
-    p, floor = adequacy_p_value(stat)
+    judged = int(np.count_nonzero(used)) >= MIN_ROWS
+    p, floor = adequacy_p_value(stat) if judged else (math.nan, math.nan)
     return AdequacyCheck(
         model=fit.model, statistic=stat, p_value=p,
         adequate=bool(not (p <= ALPHA)) if math.isfinite(p) else True, p_floor=floor,
         runs_z=rz, lag1=l1, wave_share=share, nominal=nominal,
-        residual=residual_wave(scan, fit), scan=scan)
+        residual=residual_wave(scan, fit), scan=scan, judged=judged)

@@ -54,9 +54,10 @@ class Extended:
 
 
 def wave_models_for(chosen: str, n_used: int) -> list[str]:
-    """The wave models to try after ``chosen``: ``wave`` and the chosen decay with a wave,
-    those the rows can support."""
-    names = ["wave", *_WAVE_OF.get(MODELS[chosen].decay_form or "", ())]
+    """The wave models to try after ``chosen``: the chosen decay with a wave (``wave`` is
+    fitted as its parent), or ``wave`` alone; those the rows can support."""
+    names = list(_WAVE_OF.get(MODELS[chosen].decay_form or "", ()))
+    names = [m for m in names if n_used > len(MODELS[m].free) + 2] or ["wave"]
     return [m for m in names if n_used > len(MODELS[m].free) + 2]
 
 
@@ -75,10 +76,12 @@ def _fit_waves(times, angles, fits, chosen, outl, scan, *, fps, step, noise):
     names = wave_models_for(chosen, int(np.count_nonzero(~outl)))
     if not names:
         return {}, ()
+    # ``wave`` as a mere parent of a decay-with-wave model gets one start
+    every = list(dict.fromkeys(["wave", *names]))
     waves = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise,
-                           models=names, starts=_wave_starts(fits[chosen], scan, names),
-                           fitted=fits)
-    return waves, tuple(names)
+                           models=every, starts=_wave_starts(fits[chosen], scan, every),
+                           fitted=fits, max_starts={"wave": 2 if "wave" in names else 1})
+    return waves, tuple(every)
 
 
 def _smooth_candidates(angles, fit: ModelFit, outl: np.ndarray, step: float,

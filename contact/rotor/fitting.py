@@ -287,12 +287,14 @@ def fit_all_models(
     loss: str = "linear",
     starts: Mapping[str, Sequence[Mapping[str, float]]] | None = None,
     fitted: Mapping[str, ModelFit] | None = None,
+    max_starts: Mapping[str, int] | None = None,
 ) -> dict[str, ModelFit]:
     """Fit models in nesting order, each started from its parents' optima (so a richer model
     does not end worse than a parent it contains). ``models`` defaults to the core family
     (:data:`contact.rotor.family.CORE`); their ancestors are fitted too but only the
     requested ones are returned. ``starts`` adds starting points per model; ``fitted``
-    holds fits already made on the same rows (reused, not refitted)."""
+    holds fits already made on the same rows (reused, not refitted); ``max_starts``
+    overrides, per model, how many starting points are run."""
     t = np.asarray(times, float)
     phi = np.asarray(angles, float)
     n_used = int(t.size if used is None else np.count_nonzero(used))
@@ -315,7 +317,7 @@ def fit_all_models(
                               "phi0": c0 - c1 * c1 / (4 * c2)})
         n_starts = 2
         if "wave_c" in spec.free:
-            n_starts = 3
+            n_starts = 2
         elif "a_c" in spec.free and inits:
             # the unbalance phase makes the cost multimodal: also start from four phases
             base = min(inits, key=lambda d: 0.0 if "a_c" in d else 1.0)
@@ -324,6 +326,7 @@ def fit_all_models(
                 inits.append({**base, "a_c": amp * math.cos(q * math.pi / 2),
                               "a_s": amp * math.sin(q * math.pi / 2)})
             n_starts = 3
+        n_starts = (max_starts or {}).get(name, n_starts)
         fits[name] = fit_model(t, phi, name, fps=fps, step=step, used=used, inits=inits,
                                noise=noise, noise_start=_parent_noise(fits, spec), loss=loss,
                                max_starts=n_starts)
