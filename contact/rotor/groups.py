@@ -203,8 +203,8 @@ def analyse_table(
     (with the same nested-margin rule) among the core family's models (the plate-wave
     models are fitted only where a test needs them), one model for every test so that groups
     compare like with like. Groups are compared pairwise under ``paper``, ``rest``,
-    ``const`` and the study model, and on the study model's decay and unbalance parameters. ``progress(name, i, n)``
-    is called before each test is analysed.
+    ``const`` and the study model, and on the study model's decay and unbalance
+    parameters. ``progress(name, i, n)`` is called before each test is analysed.
     """
     if not columns:
         raise ContactInputError("no test columns to analyse")
