@@ -13,6 +13,8 @@ import time
 from importlib import resources
 
 from contact import composite_modulus, hertz_sphere, material
+from contact.rotor.mechanics import paper_ball_loads
+from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD
 from contact.roughcontact.greenwood_tripp import greenwood_tripp
 
 
@@ -38,10 +40,10 @@ def main() -> None:
     steel, alu = material("steel"), material("aluminium")
     e_star = composite_modulus(steel, alu)
     kw = dict(sigma_s=sp.sigma_s, density=sp.density, summit_radius=sp.radius)
-    for load in (10.0, 4.665, 5.363, 3.968):
+    for load in (HERTZ_CHECK_LOAD, *paper_ball_loads().values()):
         for hardness in (None, alu.hardness):
             t, sol = min_time(lambda load=load, hardness=hardness: greenwood_tripp(
-                load, 0.02, e_star, hardness=hardness, **kw))
+                load, BALL_RADIUS, e_star, hardness=hardness, **kw))
             print(f"paper pair, W = {load:6.3f} N, {'capped' if hardness else 'elastic'}: "
                   f"{1e3 * t:6.1f} ms  (a*/a0 = {sol.a_star / sol.a0:.3f}, "
                   f"{sol.iterations} Newton steps, {sol.r.size} rings)")

@@ -37,7 +37,8 @@ def test_json_structure_and_units(paper_run):
     names = [t["name"] for t in rec["tests"]]
     assert names == ["as1", "as2", "as3", "s1", "s2", "s3"]
     for t in rec["tests"]:
-        assert t["effect"] in ("none", "decaying", "unbalance", "decaying+unbalance")
+        assert t["effect"] in ("none", "decaying", "unbalance", "decaying+unbalance", "wave",
+                               "decaying+wave")
         assert t["eps0"]["unit"] == "rad/s²"
         assert set(t["models"]) >= {"rest", "parabola", "const", "position", "speed",
                                     "unbalance", "position+unbalance"}

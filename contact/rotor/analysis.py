@@ -25,7 +25,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.rotor.adequacy import AdequacyCheck, check_adequacy
 from contact.rotor.arrays import readonly
+from contact.rotor.extension import extend_family
 from contact.rotor.family import MODELS, ModelFit
 from contact.rotor.fitting import fit_all_models, loo_exact
 from contact.rotor.forward import model_speeds
@@ -84,6 +86,14 @@ class TestReport:
     weak_evidence : bool
         An effect is named but on weak evidence: ``false_alarm`` above 1 % or ``delta_bic``
         below 10 ("very strong" starts there on Kass & Raftery's scale).
+    adequacy : AdequacyCheck
+        Whether the selected model explains the data (:mod:`contact.rotor.adequacy`).
+    family_choice, family_adequacy :
+        The choice within the core family and its adequacy check (before any plate-wave
+        model was tried).
+    extension_tried : tuple of str
+        The plate-wave models fitted (:mod:`contact.rotor.extension`); empty when the
+        family's choice was adequate and no flagged row could be a smooth deviation.
     """
 
     __test__ = False  # not a pytest class
@@ -109,6 +119,10 @@ class TestReport:
     effect_evidence: float = math.nan
     false_alarm: float = math.nan
     weak_evidence: bool = False
+    adequacy: AdequacyCheck | None = None
+    family_choice: str = ""
+    family_adequacy: AdequacyCheck | None = None
+    extension_tried: tuple[str, ...] = ()
 
     @property
     def fit(self) -> ModelFit:
@@ -173,8 +187,10 @@ def analyse_test(
     threshold: float = 4.0,
     min_frames: float = 1.5,
     noise: Noise | None = None,
+    extend: bool = True,
 ) -> TestReport:
-    """Analyse one column of frame indices: misread rows, every model, the BIC choice.
+    """Analyse one column of frame indices: misread rows, every model, the BIC choice, its
+    adequacy, and the plate-wave models where the family's choice does not explain the data.
 
     Parameters
     ----------
@@ -194,6 +210,9 @@ def analyse_test(
         Misread threshold in noise sigmas, and its floor in frames.
     noise : Noise, optional
         Reading noise to weight every fit with (default: each model estimates its own).
+    extend : bool
+        Try the plate-wave models (:func:`contact.rotor.extension.extend_family`); False
+        keeps to the core family (as the calibrations measure it).
     """
     if cv not in ("approx", "exact"):
         raise ContactInputError(f"cv must be 'approx' or 'exact', got {cv!r}")
@@ -215,6 +234,16 @@ def analyse_test(
             fits = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise)
             chosen = select_model(fits, margin)
         search = again
+    family_choice = chosen
+    checked = fits[chosen]
+    first = check_adequacy(times, angles, checked, step=step)
+    tried: tuple[str, ...] = ()
+    if extend:
+        ext = extend_family(times, angles, fits, chosen, outl, first, fps=fps, step=step,
+                            margin=margin, threshold=threshold, min_frames=min_frames,
+                            noise=noise)
+        fits, chosen, outl, tried = ext.fits, ext.chosen, ext.outliers, ext.tried
+        search = ext.search or search
     if cv == "exact":
         fits = {m: (fit if m == "parabola" else replace(
             fit, loo_rms=loo_exact(times, angles, fit, fps=fps, step=step), loo_kind="exact"))
@@ -222,6 +251,7 @@ def analyse_test(
     sel = fits[chosen]
     delta, evidence = verdict_evidence(fits, chosen)
     pfa = false_alarm_probability(evidence)
+    final = first if sel is checked else check_adequacy(times, angles, sel, step=step)
     weak = MODELS[chosen].effect != "none" and (
         pfa > WEAK_FALSE_ALARM or not delta >= WEAK_DELTA_BIC)
     return TestReport(
@@ -246,4 +276,8 @@ def analyse_test(
         effect_evidence=evidence,
         false_alarm=pfa,
         weak_evidence=bool(weak),
+        adequacy=final,
+        family_choice=family_choice,
+        family_adequacy=first,
+        extension_tried=tried,
     )

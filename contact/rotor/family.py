@@ -11,7 +11,13 @@
     decaying acceleration: ``eps0 - eta (phi - phi0)`` (the driving slope changes along the
     plate) and/or ``eps0 - gamma omega`` (resistance growing with speed);
 ``unbalance`` and ``*+unbalance``
-    a torque ``A sin(phi + psi)`` from a centre of mass off the axis, alone or combined.
+    a torque ``A sin(phi + psi)`` from a centre of mass off the axis, alone or combined;
+``wave``, ``position+wave``, ``speed+wave`` (the extension, :data:`EXTENSION`)
+    a driving slope undulating along the track, ``B sin(2 pi phi / P + chi)`` of free period
+    ``P`` (a plate that is not plane). They are fitted only when the in-family choice does
+    not explain the data (:mod:`contact.rotor.extension`). A period of one turn has the
+    unbalance's form: the two cannot be told apart from one launch, and each wave model has
+    its unbalance counterpart as a parent, so it must beat it by the selection margin.
 
 Every model but ``parabola`` is the equation of :mod:`contact.rotor.forward` with some
 parameters fixed at zero; the models are nested through their ``parents``.
@@ -28,6 +34,8 @@ import numpy as np
 from contact.rotor.noise import Noise
 
 __all__ = [
+    "CORE",
+    "EXTENSION",
     "MODELS",
     "ORDER",
     "PARAM_UNITS",
@@ -53,6 +61,11 @@ PARAM_UNITS = {
     "c0": "rad",
     "amplitude": "rad/s²",
     "phase": "rad",
+    "wave_c": "rad/s²",
+    "wave_s": "rad/s²",
+    "wave_period": "rad",
+    "wave_amplitude": "rad/s²",
+    "wave_phase": "rad",
 }
 
 
@@ -96,8 +109,22 @@ MODELS: dict[str, ModelSpec] = {
                   "position+speed",
                   ("position+speed", "position+unbalance", "speed+unbalance"),
                   "both decay forms and unbalance"),
+        ModelSpec("wave", ("eps0", "wave_c", "wave_s", "wave_period", "t0", "phi0"), "wave",
+                  None, ("unbalance",),
+                  "constant acceleration plus a plate wave B sin(2 pi phi/P + chi) of free "
+                  "period P"),
+        ModelSpec("position+wave", ("eps0", "eta", "wave_c", "wave_s", "wave_period", "t0",
+                                    "phi0"), "decaying+wave", "position",
+                  ("position+unbalance", "wave"), "position decay and a plate wave"),
+        ModelSpec("speed+wave", ("eps0", "gamma", "wave_c", "wave_s", "wave_period", "t0",
+                                 "phi0"), "decaying+wave", "speed",
+                  ("speed+unbalance", "wave"), "speed decay and a plate wave"),
     )
 }
+EXTENSION = ("wave", "position+wave", "speed+wave")
+"""The plate-wave models: fitted on demand, never by default."""
+CORE = tuple(name for name in MODELS if name not in EXTENSION)
+"""The models fitted for every test."""
 ORDER = tuple(MODELS)
 """Fitting order: every model after its parents."""
 SELECTABLE = tuple(name for name in MODELS if name != "parabola")
@@ -198,6 +225,10 @@ def with_derived_params(params: dict[str, float]) -> dict[str, float]:
     amp = math.hypot(params.get("a_c", 0.0), params.get("a_s", 0.0))
     out["amplitude"] = amp
     out["phase"] = math.atan2(params.get("a_s", 0.0), params.get("a_c", 0.0)) if amp else 0.0
+    wc, ws = params.get("wave_c", 0.0), params.get("wave_s", 0.0)
+    if wc or ws:
+        out["wave_amplitude"] = math.hypot(wc, ws)
+        out["wave_phase"] = math.atan2(ws, wc)
     return out
 
 

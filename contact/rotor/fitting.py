@@ -24,7 +24,15 @@ from contact.rotor.diagnostics import (
     minus_two_log_likelihood,
     runs_test_z,
 )
-from contact.rotor.family import MODELS, ORDER, ModelFit, ModelSpec, ancestors, with_derived_params
+from contact.rotor.family import (
+    CORE,
+    MODELS,
+    ORDER,
+    ModelFit,
+    ModelSpec,
+    ancestors,
+    with_derived_params,
+)
 from contact.rotor.forward import PARAM_NAMES, batch_crossing_times, crossing_times, model_speeds
 from contact.rotor.noise import Noise, estimate_noise, quantisation_sigma
 from contact.rotor.paper import FPS, MARK_STEP
@@ -255,6 +263,9 @@ def _parent_starts(fits: Mapping[str, ModelFit], spec: ModelSpec) -> list[dict[s
             pp = dict(fits[parent].params)
             if parent == "rest":
                 pp["phi0"] = pp["phi0"] - 1e-6
+            if "wave_c" in spec.free and "wave_c" not in MODELS[parent].free:
+                # an unbalance is a plate wave of one turn's period
+                pp.update(wave_c=pp["a_c"], wave_s=pp["a_s"], wave_period=2 * math.pi)
             inits.append({k: v for k, v in pp.items() if k in spec.free})
     return inits
 
@@ -274,22 +285,28 @@ def fit_all_models(
     models: Sequence[str] | None = None,
     noise: Noise | None = None,
     loss: str = "linear",
+    starts: Mapping[str, Sequence[Mapping[str, float]]] | None = None,
+    fitted: Mapping[str, ModelFit] | None = None,
+    max_starts: Mapping[str, int] | None = None,
 ) -> dict[str, ModelFit]:
     """Fit models in nesting order, each started from its parents' optima (so a richer model
-    does not end worse than a parent it contains). ``models`` defaults to all; their
-    ancestors are fitted too but only the requested ones are returned."""
+    does not end worse than a parent it contains). ``models`` defaults to the core family
+    (:data:`contact.rotor.family.CORE`); their ancestors are fitted too but only the
+    requested ones are returned. ``starts`` adds starting points per model; ``fitted``
+    holds fits already made on the same rows (reused, not refitted); ``max_starts``
+    overrides, per model, how many starting points are run."""
     t = np.asarray(times, float)
     phi = np.asarray(angles, float)
     n_used = int(t.size if used is None else np.count_nonzero(used))
     # by default every model the rows can support (a short column leaves the richest out)
-    wanted = list(models or [m for m in MODELS if n_used > len(MODELS[m].free) + 2])
+    wanted = list(models or [m for m in CORE if n_used > len(MODELS[m].free) + 2])
     todo = ancestors(wanted)
-    fits: dict[str, ModelFit] = {}
+    fits: dict[str, ModelFit] = dict(fitted or {})
     for name in ORDER:
-        if name not in todo:
+        if name not in todo or name in fits:
             continue
         spec = MODELS[name]
-        inits = _parent_starts(fits, spec)
+        inits = _parent_starts(fits, spec) + [dict(s) for s in (starts or {}).get(name, ())]
         if name == "const":
             u = np.ones(t.shape, bool) if used is None else np.asarray(used, bool)
             inits.extend(start_profile(t[u], phi[u], step))
@@ -299,7 +316,9 @@ def fit_all_models(
                 inits.append({"eps0": 2 * c2, "t0": -c1 / (2 * c2),
                               "phi0": c0 - c1 * c1 / (4 * c2)})
         n_starts = 2
-        if "a_c" in spec.free and inits:
+        if "wave_c" in spec.free:
+            n_starts = 2
+        elif "a_c" in spec.free and inits:
             # the unbalance phase makes the cost multimodal: also start from four phases
             base = min(inits, key=lambda d: 0.0 if "a_c" in d else 1.0)
             amp = 0.25 * float(base.get("eps0", 1.0))
@@ -307,6 +326,7 @@ def fit_all_models(
                 inits.append({**base, "a_c": amp * math.cos(q * math.pi / 2),
                               "a_s": amp * math.sin(q * math.pi / 2)})
             n_starts = 3
+        n_starts = (max_starts or {}).get(name, n_starts)
         fits[name] = fit_model(t, phi, name, fps=fps, step=step, used=used, inits=inits,
                                noise=noise, noise_start=_parent_noise(fits, spec), loss=loss,
                                max_starts=n_starts)

@@ -3,6 +3,7 @@
 The equation of motion of the whole model family (:mod:`contact.rotor.family`),
 
     phi'' = eps0 - eta (phi - phi0) - gamma phi' + a_c sin(phi) + a_s cos(phi)
+            + wave_c sin(k phi) + wave_s cos(k phi),      k = 2 pi / wave_period
 
 from rest at ``phi0`` at time ``t0``, solved for the time at given angles (the data are
 times at known angles), for one parameter set or a batch of them.
@@ -10,13 +11,16 @@ times at known angles), for one parameter set or a batch of them.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
+from functools import lru_cache
 
 import numpy as np
 
 __all__ = ["PARAM_NAMES", "STALL", "batch_crossing_times", "crossing_times", "model_speeds"]
 
-PARAM_NAMES = ("eps0", "eta", "gamma", "a_c", "a_s", "t0", "phi0")
+PARAM_NAMES = ("eps0", "eta", "gamma", "a_c", "a_s", "t0", "phi0", "wave_c", "wave_s",
+               "wave_period")
 """The parameters of the equation of motion, in the column order of a parameter batch."""
 STALL = 1e-6
 """Floor of the specific kinetic energy per angle turned (rad/s²) where a model stalls, and
@@ -32,6 +36,9 @@ def crossing_times(
     a_s: float = 0.0,
     t0: float = 0.0,
     phi0: float = 0.0,
+    wave_c: float = 0.0,
+    wave_s: float = 0.0,
+    wave_period: float = 2 * math.pi,
     *,
     n_grid: int = 700,
     max_sweeps: int = 200,
@@ -42,8 +49,12 @@ def crossing_times(
 
         phi'' = eps0 - eta (phi - phi0) - gamma phi' + a_c sin(phi) + a_s cos(phi)
 
+        + wave_c sin(k phi) + wave_s cos(k phi),      k = 2 pi / wave_period
+
     from rest at ``phi0`` at time ``t0``; ``A sin(phi + psi)`` with ``a_c = A cos(psi)``,
-    ``a_s = A sin(psi)`` is the unbalance torque per inertia.
+    ``a_s = A sin(psi)`` is the unbalance torque per inertia; the ``wave`` terms are a
+    driving slope that undulates along the track with a period of ``wave_period`` (rad of
+    rotor turn; a period of one turn is the unbalance's form).
 
     Notes
     -----
@@ -57,16 +68,18 @@ def crossing_times(
     Angles below ``phi0`` get ``t0``.
     """
     phi = np.asarray(phi, dtype=float)
-    p = np.array([[eps0, eta, gamma, a_c, a_s, t0, phi0]], dtype=float)
+    p = np.array([[eps0, eta, gamma, a_c, a_s, t0, phi0, wave_c, wave_s, wave_period]],
+                 dtype=float)
     return batch_crossing_times(phi.ravel(), p, n_grid, max_sweeps)[0].reshape(phi.shape)
 
 
 def batch_crossing_times(phi: np.ndarray, p: np.ndarray, n_grid: int = 700,
-                 max_sweeps: int = 200) -> np.ndarray:
-    """:func:`crossing_times` for a batch of parameter rows ``p`` (B, 7), in the order of
+                         max_sweeps: int = 200) -> np.ndarray:
+    """:func:`crossing_times` for a batch of parameter rows ``p`` (B, 10), in the order of
     ``PARAM_NAMES``, at the angles ``phi`` (n,): returns (B, n). One vectorised pass, so a
     finite-difference Jacobian costs about one evaluation's overhead instead of p + 1."""
     eps0, eta, gamma, a_c, a_s, t0, phi0 = (p[:, j : j + 1] for j in range(7))
+    wave_c, wave_s, wave_period = (p[:, j : j + 1] for j in range(7, 10))
     bsz = p.shape[0]
     if phi.size == 0:
         return np.zeros((bsz, 0))
@@ -83,9 +96,7 @@ def batch_crossing_times(phi: np.ndarray, p: np.ndarray, n_grid: int = 700,
     # counts come from the first parameter row and serve the whole batch
     lens = np.diff(knots, axis=1)
     m = np.maximum(np.rint(n_grid * lens[0] / span).astype(np.int64), 4)
-    ends = np.cumsum(m)
-    idx = np.repeat(np.arange(phi.size), m)
-    step_no = np.arange(int(ends[-1])) - np.repeat(ends - m, m)
+    ends, idx, step_no = _grid_layout(m.tobytes())
     h = lens / m  # (B, n)
     s = np.empty((bsz, int(ends[-1]) + 1))
     s[:, :-1] = knots[:, idx] + h[:, idx] * step_no
@@ -106,19 +117,19 @@ def batch_crossing_times(phi: np.ndarray, p: np.ndarray, n_grid: int = 700,
         ang = phi0 + x
         u -= a_c * (np.cos(ang) - np.cos(phi0))
         u += a_s * (np.sin(ang) - np.sin(phi0))
+    wavy = bool(np.any(wave_c) or np.any(wave_s))
+    if wavy:
+        k = 2.0 * np.pi / wave_period
+        kang = k * (phi0 + x)
+        u -= wave_c * (np.cos(kang) - np.cos(k * phi0)) / k
+        u += wave_s * (np.sin(kang) - np.sin(k * phi0)) / k
     if np.any(gamma):
-        u_pos = u
-        scale = max(float(np.max(np.abs(u_pos))), 1e-300)
-        two_s = 2.0 * s
-        for _ in range(max_sweeps):
-            w = np.sqrt(2.0 * np.maximum(u, 0.0))
-            new = u_pos - gamma * cumtrapz(two_s * w)
-            done = float(np.max(np.abs(new - u))) <= 1e-11 * scale
-            u = new
-            if done:
-                break
+        u = _picard_speed_term(u, gamma, s, hh, max_sweeps)
     np.maximum(u, STALL * x, out=u)
-    eps_start = np.maximum(eps0 + a_c * np.sin(phi0) + a_s * np.cos(phi0), STALL)
+    eps_start = eps0 + a_c * np.sin(phi0) + a_s * np.cos(phi0)
+    if wavy:
+        eps_start = eps_start + wave_c * np.sin(k * phi0) + wave_s * np.cos(k * phi0)
+    eps_start = np.maximum(eps_start, STALL)
     g0 = 2.0 / np.sqrt(2.0 * eps_start)
     with np.errstate(divide="ignore", invalid="ignore"):
         g = 2.0 * s / np.sqrt(2.0 * u)
@@ -128,6 +139,53 @@ def batch_crossing_times(phi: np.ndarray, p: np.ndarray, n_grid: int = 700,
     out = np.empty((bsz, phi.size))
     out[:, order] = t0 + t[:, ends]
     return out
+
+
+@lru_cache(maxsize=64)
+def _grid_layout(m_bytes: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For ``m`` grid points per mark interval: the end index of each interval, the
+    interval of each grid point and its number within the interval (cached: the counts
+    repeat from one evaluation to the next)."""
+    m = np.frombuffer(m_bytes, dtype=np.int64)
+    ends = np.cumsum(m)
+    idx = np.repeat(np.arange(m.size), m)
+    step_no = np.arange(int(ends[-1])) - np.repeat(ends - m, m)
+    for a in (ends, idx, step_no):
+        a.flags.writeable = False
+    return ends, idx, step_no
+
+
+def _picard_speed_term(u_pos: np.ndarray, gamma: np.ndarray, s: np.ndarray, hh: np.ndarray,
+                       max_sweeps: int) -> np.ndarray:
+    """``u = u_pos - gamma int 2 s sqrt(2 u) ds`` by Picard iteration to 1e-11 of ``u``'s
+    scale (the speed term of :func:`crossing_times`), with the buffers reused."""
+    scale = max(float(np.max(np.abs(u_pos))), 1e-300)
+    two_s = 2.0 * s
+    u = u_pos
+    w = np.empty_like(u_pos)
+    mid = np.empty((u_pos.shape[0], u_pos.shape[1] - 1))
+    new = np.empty_like(u_pos)
+    new[:, 0] = 0.0
+    for _ in range(max_sweeps):
+        np.maximum(u, 0.0, out=w)
+        w *= 2.0
+        np.sqrt(w, out=w)
+        np.multiply(two_s, w, out=w)
+        # the cumulative trapezoid of w, as in crossing_times
+        np.add(w[:, 1:], w[:, :-1], out=mid)
+        mid *= 0.5
+        mid *= hh
+        np.cumsum(mid, axis=1, out=new[:, 1:])
+        new *= gamma
+        np.subtract(u_pos, new, out=new)
+        np.subtract(new, u, out=w)
+        np.abs(w, out=w)
+        done = float(np.max(w)) <= 1e-11 * scale
+        u, new = new, (np.empty_like(u_pos) if u is u_pos else u)
+        new[:, 0] = 0.0
+        if done:
+            break
+    return u
 
 
 def model_speeds(phi: np.ndarray, params: Mapping[str, float]) -> np.ndarray:

@@ -5,17 +5,18 @@ groups under one study model."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import least_squares
 
 from contact.errors import ContactInputError
+from contact.rotor.alignment import ResidualAlignment, residual_alignment
 from contact.rotor.analysis import TestReport, analyse_test
 from contact.rotor.arrays import readonly
-from contact.rotor.family import MODELS, SELECTABLE
-from contact.rotor.forward import crossing_times
+from contact.rotor.family import EXTENSION, MODELS, SELECTABLE
+from contact.rotor.forward import PARAM_NAMES, batch_crossing_times, crossing_times
 from contact.rotor.noise import quantisation_sigma
 from contact.rotor.paper import FPS, MARK_STEP
 from contact.rotor.parabola import paper_parabola
@@ -29,6 +30,7 @@ __all__ = [
     "analyse_table",
     "leave_one_test_out",
     "mean_with_uncertainty",
+    "welch_p_value",
 ]
 
 
@@ -53,6 +55,9 @@ class GroupReport:
         model, where it has them.
     loto_rms : dict
         Leave-one-test-out prediction rms (s) per model (:func:`leave_one_test_out`).
+    residual_alignment : ResidualAlignment or None
+        Whether a leftover wave lines up across the tests at the same track position or
+        rotor angle (:func:`contact.rotor.alignment.residual_alignment`).
     """
 
     name: str
@@ -63,6 +68,7 @@ class GroupReport:
     eps: dict[str, tuple[float, float, tuple[float, ...]]]
     params: dict[str, tuple[float, float, tuple[float, ...]]]
     loto_rms: dict[str, float]
+    residual_alignment: ResidualAlignment | None = None
 
 
 @dataclass(frozen=True)
@@ -127,13 +133,14 @@ def leave_one_test_out(reports: Sequence[TestReport], model: str) -> float:
     """Leave-one-test-out prediction rms (s) of ``model`` within a group.
 
     Each test is predicted with the physical parameters (``eps0``, ``eta``, ``gamma``,
-    ``a_c``, ``a_s``) averaged over the group's other tests; only its own start (``t0``,
-    ``phi0``), which differs from launch to launch, is fitted to it (weighted by its noise
-    model). Misread rows are left out. NaN for fewer than two tests and for ``parabola``.
+    ``a_c``, ``a_s`` and the plate wave's) averaged over the group's other tests; only its
+    own start (``t0``, ``phi0``), which differs from launch to launch, is fitted to it
+    (weighted by its noise model). Misread rows are left out. NaN for fewer than two tests
+    and for ``parabola``.
     """
     if len(reports) < 2 or model == "parabola":
         return math.nan
-    phys = ("eps0", "eta", "gamma", "a_c", "a_s")
+    phys = ("eps0", "eta", "gamma", "a_c", "a_s", "wave_c", "wave_s", "wave_period")
     errs: list[np.ndarray] = []
     for i, rep in enumerate(reports):
         others = [r for j, r in enumerate(reports) if j != i]
@@ -151,10 +158,26 @@ def leave_one_test_out(reports: Sequence[TestReport], model: str) -> float:
         x0 = [inside_bounds(own.params["t0"], lo[0], hi[0]),
               inside_bounds(own.params["phi0"], lo[1], hi[1])]
 
-        def fun(x: np.ndarray, t=t, phi=phi, avg=avg, sig=sig) -> np.ndarray:
-            return (crossing_times(phi, **avg, t0=x[0], phi0=x[1]) - t) / sig
+        base = np.array([{**avg, "t0": 0.0, "phi0": 0.0}.get(k, 0.0) if k != "wave_period"
+                         else avg.get(k, 2 * math.pi) for k in PARAM_NAMES])
+        cols = [PARAM_NAMES.index("t0"), PARAM_NAMES.index("phi0")]
 
-        r = least_squares(fun, x0, bounds=(lo, hi), x_scale="jac")
+        def times_at(xs: np.ndarray, phi=phi, base=base, cols=cols) -> np.ndarray:
+            rows = np.repeat(base[None, :], xs.shape[0], axis=0)
+            rows[:, cols] = xs
+            return batch_crossing_times(phi, rows)
+
+        def fun(x: np.ndarray, t=t, sig=sig, times_at=times_at) -> np.ndarray:
+            return (times_at(x[None, :])[0] - t) / sig
+
+        def jac(x: np.ndarray, sig=sig, times_at=times_at, hi=hi) -> np.ndarray:
+            # forward differences in one batch, stepping inwards at an upper bound
+            h = 1e-7 * np.maximum(1.0, np.abs(x))
+            h = np.where(x + h > np.asarray(hi), -h, h)
+            tt = times_at(np.vstack([x, x + np.diag(h)]))
+            return ((tt[1:] - tt[0]) / h[:, None]).T / sig[:, None]
+
+        r = least_squares(fun, x0, jac=jac, bounds=(lo, hi), x_scale="jac")
         errs.append(r.fun * sig)
     allr = np.concatenate(errs)
     return float(np.sqrt(np.mean(allr**2)))
@@ -170,86 +193,38 @@ def analyse_table(
     cv: str = "approx",
     threshold: float = 4.0,
     min_frames: float = 1.5,
+    progress: Callable[[str, int, int], None] | None = None,
 ) -> LawOfMotionAnalysis:
     """Analyse a table of tests (column name -> frame index per row).
 
     Per test: :func:`analyse_test`. Per group (name without trailing digits): the paper's
     parabola through the mean times, each model's initial acceleration with its uncertainty,
     leave-one-test-out errors. The study model has the smallest BIC summed over all tests
-    (with the same nested-margin rule), one model for every test so that groups compare like
-    with like. Groups are compared pairwise under ``paper``, ``rest``, ``const`` and the study
-    model, and on the study model's decay and unbalance parameters.
+    (with the same nested-margin rule) among the core family's models (the plate-wave
+    models are fitted only where a test needs them), one model for every test so that groups
+    compare like with like. Groups are compared pairwise under ``paper``, ``rest``,
+    ``const`` and the study model, and on the study model's decay and unbalance
+    parameters. ``progress(name, i, n)`` is called before each test is analysed.
     """
     if not columns:
         raise ContactInputError("no test columns to analyse")
-    reports = tuple(
-        analyse_test(name, columns[name], k, fps=fps, step=step, margin=margin, cv=cv,
-                     threshold=threshold, min_frames=min_frames)
-        for name in columns
-    )
-    # short columns leave their richest models out: compare the models every test has
-    common = [m for m in SELECTABLE if all(m in r.fits for r in reports)]
+    reports = []
+    for i, name in enumerate(columns):
+        if progress is not None:
+            progress(name, i, len(columns))
+        reports.append(analyse_test(name, columns[name], k, fps=fps, step=step, margin=margin,
+                                    cv=cv, threshold=threshold, min_frames=min_frames))
+    reports = tuple(reports)
+    # short columns leave their richest models out: compare the models every test has; the
+    # plate-wave models are fitted only where the family fails, so they are not candidates
+    common = [m for m in SELECTABLE if m not in EXTENSION and all(m in r.fits for r in reports)]
     total = {m: float(sum(r.fits[m].bic for r in reports)) for m in common}
     study = select_by_bic(total, margin)
 
-    groups: list[GroupReport] = []
-    for gname in dict.fromkeys(r.group for r in reports):
-        members = [r for r in reports if r.group == gname]
-        cols = [np.asarray(columns[r.name], float) for r in members]
-        if len({c.size for c in cols}) == 1:
-            coef, se, prms = paper_parabola(cols, fps, step)
-        else:
-            coef, se, prms = np.full(3, np.nan), np.full(3, np.nan), math.nan
-        eps: dict[str, tuple[float, float, tuple[float, ...]]] = {
-            "paper": (float(2 * coef[0]), float(2 * se[0]), (float(2 * coef[0]),))
-        }
-        for m in MODELS:
-            if not all(m in r.fits for r in members):
-                continue
-            vals = [r.fits[m].eps0 for r in members]
-            mu, u = mean_with_uncertainty(vals, [r.fits[m].eps0_stderr for r in members])
-            eps[m] = (mu, u, tuple(float(v) for v in vals))
-        params: dict[str, tuple[float, float, tuple[float, ...]]] = {}
-        free = MODELS[study].free
-        for key, needs in (("eta", "eta"), ("gamma", "gamma"), ("amplitude", "a_c")):
-            if needs in free:
-                vals = [r.fits[study].params[key] for r in members]
-                errs = [r.fits[study].stderr.get(key, math.nan) for r in members]
-                mu, u = mean_with_uncertainty(vals, errs)
-                params[key] = (mu, u, tuple(float(v) for v in vals))
-        groups.append(GroupReport(
-            name=gname,
-            tests=tuple(r.name for r in members),
-            paper_parabola=readonly(coef),
-            paper_parabola_stderr=readonly(se),
-            paper_rms=prms,
-            eps=eps,
-            params=params,
-            loto_rms={m: leave_one_test_out(members, m) for m in common},
-        ))
-
-    from scipy import stats
-
-    comps: list[GroupComparison] = []
-
-    def compare(ga, gb, model, quantity, a, b) -> None:
-        (ma, ua, va), (mb, ub, vb) = a, b
-        diff = mb - ma
-        u = math.hypot(ua, ub)
-        p = math.nan
-        if len(va) > 1 and len(vb) > 1:
-            p = float(stats.ttest_ind(vb, va, equal_var=False).pvalue)
-        comps.append(GroupComparison(ga.name, gb.name, model, quantity, diff, u,
-                                     diff / u if u > 0 else math.nan, p,
-                                     mb / ma if ma else math.nan))
-
-    for i in range(len(groups)):
-        for j in range(i + 1, len(groups)):
-            ga, gb = groups[i], groups[j]
-            for m in dict.fromkeys(("paper", "rest", "const", study)):
-                compare(ga, gb, m, "eps0", ga.eps[m], gb.eps[m])
-            for key in ga.params:
-                compare(ga, gb, study, key, ga.params[key], gb.params[key])
+    groups = [_group_report(gname, [r for r in reports if r.group == gname], columns, fps,
+                            step, study, common)
+              for gname in dict.fromkeys(r.group for r in reports)]
+    comps = _compare_groups(groups, study)
     return LawOfMotionAnalysis(
         tests=reports,
         groups=tuple(groups),
@@ -260,3 +235,84 @@ def analyse_table(
         step=float(step),
         noise_floor=quantisation_sigma(fps),
     )
+
+
+def welch_p_value(a: Sequence[float], b: Sequence[float]) -> float:
+    """Two-sided p-value of Welch's t test of equal means (unequal variances), with the
+    Welch-Satterthwaite degrees of freedom (Welch 1947, Biometrika 34:28-35); scipy's
+    ``special.stdtr`` gives the t distribution (``scipy.stats`` costs a second to import)."""
+    from scipy.special import stdtr
+
+    x, y = np.asarray(a, float), np.asarray(b, float)
+    va, vb = x.var(ddof=1) / x.size, y.var(ddof=1) / y.size
+    se2 = va + vb
+    if not se2 > 0:
+        return math.nan
+    t = (x.mean() - y.mean()) / math.sqrt(se2)
+    df = se2**2 / (va**2 / (x.size - 1) + vb**2 / (y.size - 1))
+    return float(2.0 * stdtr(df, -abs(t)))
+
+
+def _group_report(gname: str, members: list[TestReport], columns, fps: float, step: float,
+                  study: str, common: list[str]) -> GroupReport:
+    cols = [np.asarray(columns[r.name], float) for r in members]
+    if len({c.size for c in cols}) == 1:
+        coef, se, prms = paper_parabola(cols, fps, step)
+    else:
+        coef, se, prms = np.full(3, np.nan), np.full(3, np.nan), math.nan
+    eps: dict[str, tuple[float, float, tuple[float, ...]]] = {
+        "paper": (float(2 * coef[0]), float(2 * se[0]), (float(2 * coef[0]),))
+    }
+    for m in MODELS:
+        if not all(m in r.fits for r in members):
+            continue
+        vals = [r.fits[m].eps0 for r in members]
+        mu, u = mean_with_uncertainty(vals, [r.fits[m].eps0_stderr for r in members])
+        eps[m] = (mu, u, tuple(float(v) for v in vals))
+    params: dict[str, tuple[float, float, tuple[float, ...]]] = {}
+    free = MODELS[study].free
+    for key, needs in (("eta", "eta"), ("gamma", "gamma"), ("amplitude", "a_c")):
+        if needs in free:
+            vals = [r.fits[study].params[key] for r in members]
+            errs = [r.fits[study].stderr.get(key, math.nan) for r in members]
+            mu, u = mean_with_uncertainty(vals, errs)
+            params[key] = (mu, u, tuple(float(v) for v in vals))
+    return GroupReport(
+        name=gname,
+        tests=tuple(r.name for r in members),
+        paper_parabola=readonly(coef),
+        paper_parabola_stderr=readonly(se),
+        paper_rms=prms,
+        eps=eps,
+        params=params,
+        loto_rms={m: leave_one_test_out(members, m) for m in common},
+        residual_alignment=residual_alignment(members),
+    )
+
+
+def _compare_groups(groups: list[GroupReport], study: str) -> list[GroupComparison]:
+    """Pairwise comparisons under ``paper``, ``rest``, ``const`` and the study model, and
+    on the study model's decay and unbalance parameters. Welch's t test needs two values per
+    group: the paper's parabola (one per group) has no p-value."""
+    comps: list[GroupComparison] = []
+
+    def compare(ga, gb, model, quantity, a, b) -> None:
+        (ma, ua, va), (mb, ub, vb) = a, b
+        diff = mb - ma
+        u = math.hypot(ua, ub)
+        p = math.nan
+        if len(va) > 1 and len(vb) > 1:
+            p = welch_p_value(vb, va)
+        comps.append(GroupComparison(ga.name, gb.name, model, quantity, diff, u,
+                                     diff / u if u > 0 else math.nan, p,
+                                     mb / ma if ma else math.nan))
+
+    for i in range(len(groups)):
+        for j in range(i + 1, len(groups)):
+            ga, gb = groups[i], groups[j]
+            for m in dict.fromkeys(("paper", "rest", "const", study)):
+                if m in ga.eps and m in gb.eps:  # short columns may leave a model out
+                    compare(ga, gb, m, "eps0", ga.eps[m], gb.eps[m])
+            for key in ga.params:
+                compare(ga, gb, study, key, ga.params[key], gb.params[key])
+    return comps

@@ -28,6 +28,7 @@ __all__ = [
     "BIC_MARGIN",
     "WEAK_DELTA_BIC",
     "WEAK_FALSE_ALARM",
+    "false_alarm_floor",
     "false_alarm_probability",
     "select_by_bic",
     "select_model",
@@ -86,6 +87,13 @@ def false_alarm_probability(delta_bic: float) -> float:
     pfa = np.asarray(_CALIBRATION["false_alarm"], float)
     i = int(np.searchsorted(d, delta_bic, side="right")) - 1
     return 1.0 if i < 0 else float(pfa[i])
+
+
+def false_alarm_floor() -> float:
+    """The smallest false-alarm probability the calibration can state (its resolution:
+    ``1/(n + 1)`` for ``n`` simulated clean columns)."""
+    false_alarm_probability(0.0)  # loads the table
+    return float(min(_CALIBRATION["false_alarm"]))
 
 
 def verdict_evidence(fits: Mapping[str, ModelFit], selected: str) -> tuple[float, float]:

@@ -90,6 +90,10 @@ class HiddenEffects:
     eta, gamma, amplitude : float
         The same effects in the analysis' parameters: ``eta`` (1/s²), ``gamma`` (1/s),
         unbalance amplitude (rad/s²).
+    wave_amplitude, wave_period, wave_phase : float
+        A plate wave: the equivalent slope undulates along the track by
+        ``B sin(2 pi (phi - phi_start) / P + chi)`` in acceleration terms (``B`` rad/s²,
+        ``P`` rad of rotor turn, ``chi`` rad at the release point); 0: a plane plate.
     """
 
     effect: str
@@ -110,6 +114,9 @@ class HiddenEffects:
     eta: float
     gamma: float
     amplitude: float
+    wave_amplitude: float = 0.0
+    wave_period: float = 2 * math.pi
+    wave_phase: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -167,9 +174,15 @@ def simulate_rotor(
     m_r = rolling_torque(hidden.s_r, hidden.lam, p, 0.0, math.pi / 2, g)
     phi0 = hidden.start_angle
 
+    # the wave's amplitude as a slope: B = M g R S_w / (J + M R^2)
+    wave_slope = hidden.wave_amplitude * p.rolling_inertia / (m * g * r)
+    k_wave = 2.0 * math.pi / hidden.wave_period
+
     def rhs(_t: float, y: np.ndarray) -> list[float]:
         phi, w = y
         s = hidden.slope - hidden.slope_gradient * r * (phi - phi0)
+        if wave_slope:
+            s += wave_slope * math.sin(k_wave * (phi - phi0) + hidden.wave_phase)
         c = math.sqrt(max(1.0 - s * s, 0.0))
         chi = phi - psi
         inertia = j + m * (r * r + e * e - 2.0 * r * e * math.sin(chi))
@@ -267,6 +280,8 @@ def random_hidden_effects(
     decay_fraction: tuple[float, float] = (0.12, 0.4),
     unbalance_fraction: tuple[float, float] = (0.12, 0.3),
     misread_frames: tuple[int, int] = (5, 12),
+    wave_fraction: tuple[float, float] | None = None,
+    wave_period_rev: tuple[float, float] = (0.3, 3.0),
 ) -> HiddenEffects:
     """Draw a random mix of hidden effects of random size and phase.
 
@@ -286,6 +301,10 @@ def random_hidden_effects(
         Unbalance amplitude as a fraction of ``eps0``.
     misread_frames : (int, int)
         Range of the misread offsets in frames (sign random).
+    wave_fraction : (float, float), optional
+        Add a plate wave of this amplitude range (fraction of ``eps0``), of period uniform
+        in ``wave_period_rev`` (revolutions) and random phase; drawn after everything else,
+        so the other draws do not change.
 
     Notes
     -----
@@ -337,7 +356,13 @@ def random_hidden_effects(
     rows = [k for i, k in enumerate(rows) if i == 0 or k - rows[i - 1] > 1]
     by = tuple(int(rng.integers(misread_frames[0], misread_frames[1] + 1))
                * int(rng.choice((-1, 1))) for _ in rows)
+    wave = {}
+    if wave_fraction is not None:
+        wave = {"wave_amplitude": float(rng.uniform(*wave_fraction)) * eps0,
+                "wave_period": 2 * math.pi * float(rng.uniform(*wave_period_rev)),
+                "wave_phase": float(rng.uniform(0, 2 * math.pi))}
     return HiddenEffects(
+        **wave,
         effect=effect,
         decay_form=decay_form,
         slope=float(slope),

@@ -20,6 +20,7 @@ __all__ = [
     "inside_bounds",
     "parameter_bounds",
     "start_profile",
+    "wave_period_range",
 ]
 
 
@@ -31,7 +32,8 @@ def parameter_bounds(t: np.ndarray, phi: np.ndarray, step: float, eps_ref: float
     it (2.41 as ``x -> 1``), so the start time is bounded by three first-step durations
     (plus two frames of reading slack) before the first mark, not one. The unbalance
     components stay below the from-rest acceleration (a larger one would stall the rotor
-    at every turn)."""
+    at every turn), and so do the plate wave's; its period lies in
+    :func:`wave_period_range`."""
     order = np.argsort(phi)
     t_step = float(t[order[1]] - t[order[0]]) if t.size > 1 else 1.0
     t_first = float(t[order[0]])
@@ -44,11 +46,23 @@ def parameter_bounds(t: np.ndarray, phi: np.ndarray, step: float, eps_ref: float
         "a_s": (-a_max, a_max),
         "t0": (t_first - 3.0 * t_step - 2.0 * abs(t_step) / max(t.size, 1), t_first + t_step),
         "phi0": (float(phi[order[0]]) - step, float(phi[order[0]])),
+        "wave_c": (-a_max, a_max),
+        "wave_s": (-a_max, a_max),
+        "wave_period": wave_period_range(phi, step),
     }
 
 
+def wave_period_range(phi: np.ndarray, step: float) -> tuple[float, float]:
+    """The plate-wave periods (rad of rotor turn) a column can resolve: from just above two
+    mark steps (shorter waves alias onto longer ones between the marks) to the angle the
+    column spans (a longer one is a trend, which the decay models describe)."""
+    span = float(np.max(phi) - np.min(phi)) if np.size(phi) else 0.0
+    lo = 2.05 * step
+    return lo, max(span, 2.0 * lo)
+
+
 def start_profile(t: np.ndarray, phi: np.ndarray, step: float,
-                   n_grid: int = 64, keep: int = 2) -> list[dict[str, float]]:
+                  n_grid: int = 64, keep: int = 2) -> list[dict[str, float]]:
     """Global starts for the constant-acceleration fit: a profile over the start angle.
 
     For a start ``phi0 = phi_first - x step`` the from-rest law ``t = t0 + c sqrt(phi -
@@ -96,7 +110,8 @@ def inside_bounds(x: float, lo: float, hi: float) -> float:
 
 
 def full_parameters(free: Sequence[str], x: Sequence[float], fixed: Mapping[str, float]) -> dict:
-    p = {"eps0": 1.0, "eta": 0.0, "gamma": 0.0, "a_c": 0.0, "a_s": 0.0, "t0": 0.0, "phi0": 0.0}
+    p = {"eps0": 1.0, "eta": 0.0, "gamma": 0.0, "a_c": 0.0, "a_s": 0.0, "t0": 0.0, "phi0": 0.0,
+         "wave_c": 0.0, "wave_s": 0.0, "wave_period": 2 * math.pi}
     p.update(fixed)
     p.update(zip(free, (float(v) for v in x)))
     return p

@@ -37,7 +37,7 @@ from contact.rolling import (  # noqa: E402
     sphere_sweep,
 )
 from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
-from contact.rotor.paper import BALL_RADIUS as RADIUS  # noqa: E402
+from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD  # noqa: E402
 from contact.setups import CompositeRoughness  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
 from surfmet.mechanics.hertz_check import hertz_check, prepare_scans  # noqa: E402
@@ -46,6 +46,7 @@ from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 from surfmet.units import jsonable  # noqa: E402
 
+RADIUS = BALL_RADIUS  # m, the balls of the rotor
 MATERIALS = "steel,aluminium"
 
 
@@ -111,7 +112,8 @@ def main(argv: list[str]) -> int:
 
     heading("Hertz against boundary elements")
     checks = {}
-    for label, load in (("paper's 10 N check", 10.0), ("symmetric rotor, per ball", sym[0]),
+    for label, load in (("paper's 10 N check", HERTZ_CHECK_LOAD),
+                        ("symmetric rotor, per ball", sym[0]),
                         ("asymmetric rotor, ball 1", asym[0]),
                         ("asymmetric rotor, ball 2", asym[1])):
         t0 = time.time()

@@ -33,11 +33,12 @@ from contact.rotor.mechanics import (  # noqa: E402
     optimal_collar_length,
     rolling_torque,
 )
+from contact.rotor.paper import FPS, MARK_STEP, PARABOLAS, TABLE3_FILENAME  # noqa: E402
 from contact.rotor.paper import TABLE3_COLUMNS as COLUMNS  # noqa: E402
 from contact.rotor.parabola import paper_parabola  # noqa: E402
 
-PAPER_PHI_S = (0.821, 1.134, -0.527)  # the paper's "phi_s(t)"
-PAPER_PHI_A = (0.951, 1.0254, -0.249)  # the paper's "phi_a(t)"
+PAPER_PHI_S = PARABOLAS["phi_s"]  # the paper's "phi_s(t)"
+PAPER_PHI_A = PARABOLAS["phi_a"]  # the paper's "phi_a(t)"
 ALUMINIUM_E = 70e9  # Pa, textbook (the paper prints no value)
 ALUMINIUM_RHO = 2700.0  # kg/m^3 (the paper's value)
 PLATE_THICKNESS = 0.012  # m (the paper's value)
@@ -61,12 +62,12 @@ def main(argv: list[str]) -> int:
     fast = opts.fast
     out = Path(opts.outdir)
     out.mkdir(parents=True, exist_ok=True)
-    fps = 120.0
-    step = math.pi / 2
+    fps = FPS
+    step = MARK_STEP
 
     heading("1. The data: Table 3 typed from the paper")
     cols = table3()
-    shipped = (Path(__file__).resolve().parents[2] / "surfmet" / "data" / "table3_frames.tsv")
+    shipped = (Path(__file__).resolve().parents[2] / "surfmet" / "data" / TABLE3_FILENAME)
     same = shipped.exists() and shipped.read_text() == table3_tsv()
     print(f"rows 1-25 split from the run-together print; equals the shipped TSV: {same}")
     for name in COLUMNS:

@@ -11,9 +11,11 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 from typing import Any
 
+from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, emit_json, log
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
@@ -46,21 +48,24 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     )
     p.add_argument("file", help=f"TSV of frame indices (header 'k' then columns), or "
                    f"{PAPER_ALIAS!r} for the paper's Table 3")
-    p.add_argument("--fps", type=float, default=120.0, help="camera frame rate (default 120)")
-    p.add_argument("--step-deg", type=float, default=90.0,
-                   help="rotation between successive rows, degrees (default 90)")
+    p.add_argument("--fps", type=float, default=FPS, help=f"camera frame rate (default {FPS:g})")
+    p.add_argument("--step-deg", type=float, default=math.degrees(MARK_STEP),
+                   help=f"rotation between successive rows, degrees (default "
+                   f"{math.degrees(MARK_STEP):g})")
     p.add_argument("--cv", choices=("approx", "exact"), default="approx",
                    help="leave-one-point-out errors from leverages (fast) or refits")
     p.add_argument("--threshold", type=float, default=4.0,
                    help="misread threshold in noise sigmas (default 4)")
     p.add_argument("--plot", metavar="PATH", help="write the residual figure to PATH (.png/.pdf)")
+    p.add_argument("--quiet", "-q", action="store_true",
+                   help="no progress lines on stderr")
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
 
 
 def _paper_path() -> Path:
-    return Path(__file__).resolve().parents[1] / "data" / "table3_frames.tsv"
+    return Path(__file__).resolve().parents[1] / "data" / TABLE3_FILENAME
 
 
 def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
@@ -98,7 +103,7 @@ def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
 
 def analysis_record(an: Any, source: str) -> dict[str, Any]:
     """The JSON record of a :class:`contact.rotor.groups.LawOfMotionAnalysis`."""
-    from contact.rotor.mechanics import mass_properties
+    from contact.rotor.mechanics import G_STANDARD, mass_properties
 
     sym = mass_properties(collar_offset="symmetric")
     fps = an.fps
@@ -128,13 +133,14 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
             "k": [int(v) for v in t.k],
             "frames": [float(v) for v in t.frames],
             "misread_z": [float(v) for v in t.z],
+            "adequacy": _adequacy_record(t),
             "models": {m: _fit_record(f, fps) for m, f in t.fits.items()},
         }
         amp = sel.params.get("amplitude", 0.0)
         if amp:
             # for the paper's rotor: A = M g e / (J + M R^2)
             rec["com_offset_paper_rotor"] = quantity(
-                amp * sym.rolling_inertia / (sym.mass * 9.80665), "m")
+                amp * sym.rolling_inertia / (sym.mass * G_STANDARD), "m")
         tests.append(rec)
     groups = []
     units = ("rad/s²", "rad/s", "rad")
@@ -153,6 +159,7 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
                                  "values": quantity(list(v[2]), _unit(k))}
                              for k, v in g.params.items()},
             "leave_one_test_out_rms": {m: quantity(v, "s") for m, v in g.loto_rms.items()},
+            "residual_alignment": _alignment_record(g.residual_alignment),
         })
     comps = []
     for c in an.comparisons:
@@ -186,37 +193,172 @@ def _unit(key: str) -> str:
     return PARAM_UNITS.get(key, "")
 
 
-def _print_summary(an: Any, source: str) -> None:
+def adequacy_sentences(t: Any) -> list[str]:
+    """What the adequacy check says about one test, in words."""
+    from contact.rotor.adequacy import MIN_ROWS
+    from contact.rotor.family import EXTENSION
+
+    a = t.adequacy
+    if not a.judged:
+        return [f"not judged: {int(sum(t.used))} rows, fewer than the {MIN_ROWS} the "
+                "adequacy calibration starts at"]
+    p = (f"p {a.p_value:.3g}" if math.isfinite(a.p_value) else "uncalibrated")
+    if math.isfinite(a.p_value) and a.p_value <= a.p_floor:
+        p = f"p <= {a.p_floor:.3g}, the calibration's floor"
+    stats = f"runs z {a.runs_z:+.2f}, lag-1 {a.lag1:+.2f}, periodogram share {a.wave_share:.2f}"
+    w = a.residual
+    named = _named(t)
+    lines = []
+    if named is not None:
+        lines.append(f"a plate wave is named ({t.selected}): period {named.revolutions:.2f} rev "
+                     f"({named.track_length * 1e3:.0f} mm of track), amplitude "
+                     f"{named.amplitude:.3f} rad/s2; the in-family choice {t.family_choice} did "
+                     f"not explain the data (p {a_p(t.family_adequacy)})")
+    if a.adequate:
+        lines.append(f"adequate: what {t.selected} leaves looks like reading noise ({p}; {stats})")
+    else:
+        lines.append(f"NOT ADEQUATE: the chosen model {t.selected} does not explain the data "
+                     f"({p}; {stats})")
+        if w is not None:
+            lines.append(f"  what is left: a wave of period {w.revolutions:.2f} rev "
+                         f"({w.track_length * 1e3:.0f} mm of track), amplitude "
+                         f"{w.amplitude:.3f} rad/s2, {100 * w.share:.0f} % of the residual")
+    shown = named if named is not None else (w if not a.adequate else None)
+    if shown is not None and shown.unbalance_like:
+        lines.append("  its period is one revolution within the resolution: a plate wave and "
+                     "an unbalance look the same in one launch")
+    elif "unbalance" in t.effect:
+        lines.append("  (an unbalance has the form of a plate wave of one revolution: one launch "
+                     "cannot tell them apart)")
+    if t.extension_tried and t.selected not in EXTENSION:
+        lines.append(f"  plate-wave models tried ({', '.join(t.extension_tried)}): none won "
+                     "by the selection margin")
+    return lines
+
+
+def _named(t: Any) -> Any:
+    from contact.rotor.adequacy import named_wave
+
+    span = float(max(t.angles) - min(t.angles))
+    return named_wave(t.fit, span)
+
+
+def _wave_record(w: Any) -> dict[str, Any]:
+    return {
+        "period": quantity(w.period, "rad"),
+        "revolutions": w.revolutions,
+        "track_length": quantity(w.track_length, "m"),
+        "amplitude": quantity(w.amplitude, "rad/s²"),
+        "phase_rotor": quantity(w.phase_rotor, "rad"),
+        "phase_track": quantity(w.phase_track, "rad"),
+        "unbalance_like": w.unbalance_like,
+        "share_of_residual": w.share,
+    }
+
+
+def a_p(a: Any) -> str:
+    return "-" if a is None or not math.isfinite(a.p_value) else f"{a.p_value:.3g}"
+
+
+def _adequacy_record(t: Any) -> dict[str, Any]:
+    from contact.rotor.adequacy import ALPHA
+
+    a = t.adequacy
+    rec: dict[str, Any] = {
+        "adequate": a.adequate,
+        "statistic": a.statistic,
+        "p_value": a.p_value,
+        "p_value_floor": a.p_floor,
+        "alpha": ALPHA,
+        "runs_z": a.runs_z,
+        "lag1": a.lag1,
+        "periodogram_share": a.wave_share,
+        "nominal_p": dict(a.nominal),
+        "family_choice": t.family_choice,
+        "family_adequate": t.family_adequacy.adequate if t.family_adequacy else None,
+        "family_p_value": t.family_adequacy.p_value if t.family_adequacy else None,
+        "extension_tried": list(t.extension_tried),
+        "judged": a.judged,
+        "summary": adequacy_sentences(t),
+    }
+    if a.residual is not None and not a.adequate:
+        rec["residual_wave"] = _wave_record(a.residual)
+    named = _named(t)
+    if named is not None:
+        rec["named_wave"] = _wave_record(named)
+    return rec
+
+
+def _alignment_record(al: Any) -> dict[str, Any] | None:
+    if al is None:
+        return None
+    return {"period": quantity(al.period, "rad"), "revolutions": al.revolutions,
+            "track_length": quantity(al.track_length, "m"), "tests": list(al.tests),
+            "amplitude": quantity(list(al.amplitude), "rad/s²"),
+            "phase_rotor": quantity(list(al.phase_rotor), "rad"),
+            "phase_track": quantity(list(al.phase_track), "rad"),
+            "coherence_rotor": al.coherence_rotor, "coherence_track": al.coherence_track,
+            "rayleigh_p_rotor": al.p_rotor, "rayleigh_p_track": al.p_track,
+            "lines_up_by": al.verdict}
+
+
+def _fmt_p(p: float) -> str:
+    return "-" if not math.isfinite(p) else f"{p:.3g}"
+
+
+def _print_tests(an: Any) -> None:
+    from contact.rotor.selection import false_alarm_floor
+
     fps = an.fps
-    print(f"file          {source}")
-    print(f"frame rate    {fps:g} /s (quantisation sigma {an.noise_floor * 1e3:.2f} ms = "
-          f"{an.noise_floor * fps:.3f} frame)")
-    print(f"mark step     {math.degrees(an.step):g} deg")
-    print()
     print("per test (rms in frames; BIC; leave-one-out rms in frames)")
     print(f"  {'test':6s} {'model':26s} {'effect':19s} {'misread k':12s} "
           f"{'eps0 rad/s2':>16s} {'rest':>6s} {'const':>6s} {'chosen':>7s}")
     for t in an.tests:
-        rest, const, sel = t.fits["rest"], t.fits["const"], t.fit
+        sel = t.fit
+        # a short column may leave a model out (too few rows once misreads are set aside)
+        rest, const = (f"{t.fits[m].rms * fps:6.2f}" if m in t.fits else f"{'-':>6s}"
+                       for m in ("rest", "const"))
         out = ",".join(str(k) for k in t.outliers) or "-"
         print(f"  {t.name:6s} {t.selected:26s} {t.effect:19s} {out:12s} "
-              f"{t.eps0:9.3f} ± {t.eps0_stderr:5.3f} {rest.rms * fps:6.2f} "
-              f"{const.rms * fps:6.2f} {sel.rms * fps:7.2f}")
+              f"{t.eps0:9.3f} ± {t.eps0_stderr:5.3f} {rest} {const} {sel.rms * fps:7.2f}")
     print()
+    floor = false_alarm_floor()
     print("  evidence: dBIC to the next simpler model; dBIC no-effect - effect and the calibrated"
           " false-alarm probability at it")
     for t in an.tests:
         weak = "   WEAK evidence" if t.weak_evidence else ""
+        pfa = f"{t.false_alarm:.4f}"
+        if math.isfinite(t.false_alarm) and t.false_alarm <= floor:
+            pfa = f"<= {floor:.4f} (the calibration's resolution floor)"
         print(f"  {t.name:6s} dBIC {t.delta_bic:8.1f}   effect dBIC {t.effect_evidence:8.1f}   "
-              f"P(false alarm) {t.false_alarm:.4f}{weak}")
+              f"P(false alarm) {pfa}{weak}")
     print()
-    print("  BIC / leave-one-out rms (frames) per model")
+    print("  BIC / leave-one-out rms (frames) per model and test")
     names = list(dict.fromkeys(m for t in an.tests for m in t.fits))
-    print("  " + f"{'test':6s}" + "".join(f"{m[:14]:>15s}" for m in names))
+    width = max(len(m) for m in names)
+    print("  " + f"{'model':{width}s}" + "".join(f"{t.name:>16s}" for t in an.tests))
+    for m in names:
+        print("  " + f"{m:{width}s}" + "".join(
+            (f"{t.fits[m].bic:8.1f}/{t.fits[m].loo_rms * fps:5.2f}" if m in t.fits
+             else "-").rjust(16) for t in an.tests))
+
+
+def _print_adequacy(an: Any) -> None:
+    from contact.rotor.adequacy import ALPHA
+
+    print()
+    print(f"adequacy of the chosen model (runs test, lag-1 correlation and residual "
+          f"periodogram; inadequate at a calibrated p <= {ALPHA:g})")
     for t in an.tests:
-        print("  " + f"{t.name:6s}" + "".join(
-            (f"{t.fits[m].bic:8.1f}/{t.fits[m].loo_rms * fps:5.2f}"[:15] if m in t.fits
-             else "-").rjust(15) for m in names))
+        a = t.adequacy
+        if a is None:
+            continue
+        for line in adequacy_sentences(t):
+            print(f"  {t.name:6s} {line}")
+
+
+def _print_groups(an: Any) -> None:
+    fps = an.fps
     print()
     print(f"study model (smallest BIC over all tests): {an.study_model}")
     for g in an.groups:
@@ -225,6 +367,8 @@ def _print_summary(an: Any, source: str) -> None:
         print(f"  paper's parabola through the mean times: phi = {c2:.4f} t^2 {c1:+.4f} t "
               f"{c0:+.4f}   (rms {g.paper_rms:.3f} rad)")
         for m in dict.fromkeys(("paper", "rest", "const", an.study_model)):
+            if m not in g.eps:
+                continue  # a short column leaves the model out
             mean, u, vals = g.eps[m]
             label = "paper (2 c2)" if m == "paper" else m
             print(f"  eps0 {label:26s} {mean:7.3f} ± {u:5.3f} rad/s2   "
@@ -234,12 +378,32 @@ def _print_summary(an: Any, source: str) -> None:
         loto = ", ".join(f"{m} {v * fps:.2f}" for m, v in g.loto_rms.items()
                          if m in ("rest", "const", an.study_model) and math.isfinite(v))
         print(f"  leave-one-test-out rms (frames): {loto}")
+        al = g.residual_alignment
+        if al is not None:
+            print(f"  leftover wave of {al.revolutions:.2f} rev ({al.track_length * 1e3:.0f} mm "
+                  f"of track): phases agree at the same track position: coherence "
+                  f"{al.coherence_track:.2f} (Rayleigh p {_fmt_p(al.p_track)}); at the same "
+                  f"rotor angle: {al.coherence_rotor:.2f} (p {_fmt_p(al.p_rotor)}); "
+                  f"lines up by: {al.verdict}")
     if an.comparisons:
         print()
-        print("group comparison (b - a)")
+        print("group comparison (b - a); p: Welch's t test on the per-test values "
+              "('-': one value per group)")
         for c in an.comparisons:
             print(f"  {c.b} - {c.a} {c.quantity:9s} [{c.model:20s}] {c.difference:+8.4f} ± "
-                  f"{c.uncertainty:.4f}  z {c.z:+6.2f}  p {c.p_value:.3g}")
+                  f"{c.uncertainty:.4f}  z {c.z:+6.2f}  p {_fmt_p(c.p_value)}")
+
+
+def _print_summary(an: Any, source: str) -> None:
+    fps = an.fps
+    print(f"file          {source}")
+    print(f"frame rate    {fps:g} /s (quantisation sigma {an.noise_floor * 1e3:.2f} ms = "
+          f"{an.noise_floor * fps:.3f} frame)")
+    print(f"mark step     {math.degrees(an.step):g} deg")
+    print()
+    _print_tests(an)
+    _print_adequacy(an)
+    _print_groups(an)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -253,10 +417,17 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(source)
-    if not args.json:
+    # progress on stderr, unless asked for quiet, or JSON goes to a pipe and stderr is not a
+    # terminal (it may be the same pipe)
+    show = not getattr(args, "quiet", False) and (not args.json or sys.stderr.isatty())
+
+    def progress(name: str, i: int, n: int) -> None:
+        log(f"rotor: test {name} ({i + 1}/{n}) ...")
+
+    if show:
         log(f"analysing {len(cols)} test(s) of {len(ks)} rows ...")
     an = analyse_table(cols, ks, fps=args.fps, step=math.radians(args.step_deg), cv=args.cv,
-                       threshold=args.threshold)
+                       threshold=args.threshold, progress=progress if show else None)
     if args.plot:
         from surfmet.plots.rotor import residual_figure
 

@@ -27,7 +27,9 @@ def residual_figure(
 
     The grey band is the frame quantisation (one frame wide), the dashed lines the chosen
     model's reading-noise envelope (2 sigma); crosses mark rows judged misread, at their
-    prediction error (clipped to the axes, with the value written beside).
+    prediction error (clipped to the axes, with the value written beside). Each panel's
+    title names the chosen model as the legend does, with both rms values and whether the
+    chosen model explains the data; one legend, below the panels, hides no data.
     """
     groups, ncols = _grid(analysis)
     fig, axes = new_figure(len(groups), ncols, size=(3.6 * ncols, 2.8 * len(groups) + 0.4))
@@ -48,11 +50,12 @@ def residual_figure(
             rb = np.asarray(base.residuals) * fps
             rs = np.asarray(sel.residuals) * fps
             ax.plot(time[used], rb[used], "o-", ms=3, lw=0.8, color="tab:orange",
-                    label=f"{baseline} (rms {base.rms * fps:.2f})")
+                    label=f"model {baseline}")
             ax.plot(time[used], rs[used], "o-", ms=3, lw=0.8, color="tab:blue",
-                    label=f"{sel.model} (rms {sel.rms * fps:.2f})")
+                    label="chosen model (named in each title)")
             env = 2 * np.asarray(sel.sigma) * fps
-            ax.plot(time, env, "--", color="tab:blue", lw=0.6)
+            ax.plot(time, env, "--", color="tab:blue", lw=0.6,
+                    label="chosen model's 2σ reading noise")
             ax.plot(time, -env, "--", color="tab:blue", lw=0.6)
             lim = max(2.0, float(np.nanmax(np.abs(rb[used]))) * 1.15)
             ax.set_ylim(-lim, lim)
@@ -62,13 +65,17 @@ def residual_figure(
                 ax.annotate(f"k={int(t.k[i])}: {rs[i]:+.1f}", (time[i], y), fontsize=7,
                             color="tab:red", xytext=(3, 3), textcoords="offset points")
             ax.axhline(0, color="k", lw=0.5)
-            ax.set_title(f"{t.name}: {t.effect}", fontsize=9)
+            ok = t.adequacy is None or t.adequacy.adequate
+            ax.set_title(f"{t.name}: chosen model {sel.model}{'' if ok else ' (NOT adequate)'}\n"
+                         f"rms {baseline} {base.rms * fps:.2f}, {sel.model} "
+                         f"{sel.rms * fps:.2f} frame", fontsize=8)
             ax.tick_params(labelsize=7)
             if gi == len(groups) - 1:
                 ax.set_xlabel("time since first mark (s)", fontsize=8)
             if ti == 0:
                 ax.set_ylabel("model − measured (frames)", fontsize=8)
-            ax.legend(fontsize=6, loc="lower left")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize=7)
     fig.suptitle("Law of motion: residuals of constant acceleration vs the chosen model",
                  fontsize=10)
     return finish(fig, path)

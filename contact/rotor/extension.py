@@ -1,0 +1,148 @@
+"""Beyond the closed family: the plate-wave models, tried when the family's choice does not
+explain a column, and the second look at misread rows that a smooth wave may explain.
+
+The family of :mod:`contact.rotor.family` is closed. When the adequacy check
+(:mod:`contact.rotor.adequacy`) rejects the in-family choice, the plate-wave models
+(:data:`contact.rotor.family.EXTENSION`: the chosen model's decay with a wave of free period)
+are fitted from the residual periodogram's two highest peaks and the selection is made again
+under the same rule (BIC with the nested margin; each wave model has its unbalance
+counterpart as a parent). Because the wave models are only tried on columns the check
+rejects, a clean column is given a wave at most at the check's calibrated false-alarm rate.
+
+Misread rows are kept only where no smooth model explains them: when rows are flagged, a
+linearised wave on every row (:func:`contact.rotor.adequacy.smooth_deletion_z`) looks for a
+period under which a flagged row is within the misread threshold; if one is found, the wave
+model is fitted and the misread search's backward step, under that model, puts back the rows
+it predicts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.rotor.adequacy import (
+    AdequacyCheck,
+    scan_peaks,
+    smooth_deletion_z,
+    wave_scan,
+)
+from contact.rotor.family import EXTENSION, MODELS, ModelFit
+from contact.rotor.fitting import fit_all_models
+from contact.rotor.forward import PARAM_NAMES
+from contact.rotor.misreads import MisreadSearch, find_misread_rows
+from contact.rotor.selection import select_model
+
+__all__ = ["Extended", "extend_family", "wave_models_for"]
+
+_WAVE_OF = {"position": ("position+wave",), "speed": ("speed+wave",),
+            "position+speed": ("position+wave", "speed+wave")}
+
+
+@dataclass(frozen=True)
+class Extended:
+    """The outcome of :func:`extend_family`: the fits (core and any wave models), the
+    choice, the misread rows (mask) and the misread search that judged them last (None if
+    unchanged); ``tried`` names the wave models fitted."""
+
+    fits: dict[str, ModelFit]
+    chosen: str
+    outliers: np.ndarray
+    search: MisreadSearch | None
+    tried: tuple[str, ...]
+
+
+def wave_models_for(chosen: str, n_used: int) -> list[str]:
+    """The wave models to try after ``chosen``: the chosen decay with a wave (``wave`` is
+    fitted as its parent), or ``wave`` alone; those the rows can support."""
+    names = list(_WAVE_OF.get(MODELS[chosen].decay_form or "", ()))
+    names = [m for m in names if n_used > len(MODELS[m].free) + 2] or ["wave"]
+    return [m for m in names if n_used > len(MODELS[m].free) + 2]
+
+
+def _wave_starts(fit: ModelFit, scan, names: list[str]) -> dict[str, list[dict[str, float]]]:
+    base = {k: float(fit.params[k]) for k in PARAM_NAMES if k in fit.params}
+    starts = []
+    for j in scan_peaks(scan, 2):
+        amp, ph = float(scan.amplitude[j]), float(scan.phase[j])
+        starts.append({**base, "wave_period": float(scan.periods[j]),
+                       "wave_c": amp * np.cos(ph), "wave_s": amp * np.sin(ph)})
+    return {m: [{k: v for k, v in s.items() if k in MODELS[m].free} for s in starts]
+            for m in names}
+
+
+def _fit_waves(times, angles, fits, chosen, outl, scan, *, fps, step, noise):
+    names = wave_models_for(chosen, int(np.count_nonzero(~outl)))
+    if not names:
+        return {}, ()
+    # ``wave`` as a mere parent of a decay-with-wave model gets one start
+    every = list(dict.fromkeys(["wave", *names]))
+    waves = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise,
+                           models=every, starts=_wave_starts(fits[chosen], scan, every),
+                           fitted=fits, max_starts={"wave": 2 if "wave" in names else 1})
+    return waves, tuple(every)
+
+
+def _smooth_candidates(angles, fit: ModelFit, outl: np.ndarray, step: float,
+                       threshold: float, thr_abs: float):
+    """The all-row scan of ``fit`` and whether its best wave explains any flagged row."""
+    rows = np.ones(outl.shape, bool)
+    scan = wave_scan(None, angles, fit, step=step, rows=rows)
+    j = scan.best
+    if j < 0:
+        return scan, False
+    z = smooth_deletion_z(angles, fit, float(scan.periods[j]))
+    sig = np.asarray(fit.sigma, float)
+    explained = (np.abs(z) <= threshold) | (np.abs(z * sig) <= thr_abs)
+    return scan, bool(np.any(explained & outl))
+
+
+def extend_family(times, angles, fits: dict[str, ModelFit], chosen: str, outl: np.ndarray,
+                  first: AdequacyCheck, *, fps: float, step: float, margin: float,
+                  threshold: float, min_frames: float, noise=None) -> Extended:
+    """Try the plate-wave models where the in-family choice is inadequate or a flagged row
+    may be a smooth deviation (module docstring)."""
+    outl = np.asarray(outl, bool)
+    kw = dict(fps=fps, step=step, noise=noise)
+    search = None
+    tried: tuple[str, ...] = ()
+    if outl.any():
+        scan, smooth = _smooth_candidates(angles, fits[chosen], outl, step, threshold,
+                                          min_frames / fps)
+        if smooth:
+            waves, tried = _fit_waves(times, angles, fits, chosen, outl, scan, **kw)
+            if waves:
+                ref = min(waves, key=lambda m: waves[m].bic)
+                search = find_misread_rows(times, angles, fps=fps, step=step,
+                                           threshold=threshold, min_frames=min_frames,
+                                           reference=ref, initial=outl, start=waves[ref])
+                if not np.array_equal(search.outliers, outl):
+                    outl = np.array(search.outliers)
+                    fits = fit_all_models(times, angles, fps=fps, step=step, used=~outl,
+                                          noise=noise)
+                    chosen = select_model(fits, margin)
+                    waves, tried = _fit_waves(times, angles, fits, chosen, outl,
+                                              wave_scan(times, angles, fits[chosen],
+                                                        step=step), **kw)
+                fits = {**fits, **waves}
+                return Extended(fits, select_model(fits, margin), outl, search, tried)
+    if first.adequate:
+        return Extended(fits, chosen, outl, None, tried)
+    waves, tried = _fit_waves(times, angles, fits, chosen, outl, first.scan, **kw)
+    fits = {**fits, **waves}
+    new = select_model(fits, margin)
+    if new != chosen and outl.any() and new in EXTENSION:
+        # judge the flagged rows again under the wave model
+        search = find_misread_rows(times, angles, fps=fps, step=step, threshold=threshold,
+                                   min_frames=min_frames, reference=new, initial=outl,
+                                   start=fits[new])
+        if not np.array_equal(search.outliers, outl):
+            outl = np.array(search.outliers)
+            core = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise)
+            waves, tried = _fit_waves(times, angles, core, select_model(core, margin), outl,
+                                      wave_scan(times, angles, core[select_model(core, margin)],
+                                                step=step), **kw)
+            fits = {**core, **waves}
+            new = select_model(fits, margin)
+    return Extended(fits, new, outl, search, tried)
