@@ -104,6 +104,8 @@ def run(args: argparse.Namespace) -> int:
           f"(α = {c.alpha:.3g}, σ = {format_length(c.sigma)})")
     for reason in c.reasons:
         print(f"  - {reason}")
+    for w in check.warnings:
+        print(f"warning: {w}")
     print()
     print(f"{'':16}{'Hertz':>14}{'BEM':>14}")
     rows = [

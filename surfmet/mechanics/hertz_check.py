@@ -97,6 +97,15 @@ class HertzCheck:
         """The solution the comparison was made on (elastic-plastic when available)."""
         return self.plastic if self.plastic is not None else self.elastic
 
+    @property
+    def warnings(self) -> list[str]:
+        """A grid too coarse for the contact (fewer cells per Hertz radius than
+        :data:`surfmet.mechanics.ball_contact.MIN_CELLS_PER_RADIUS`): the verdict rests
+        on an unresolved solution."""
+        from surfmet.mechanics.ball_contact import grid_warnings
+
+        return grid_warnings(self.result)
+
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
         :func:`surfmet.records.hertz.hertz_check_record`)."""
