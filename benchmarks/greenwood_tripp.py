@@ -29,7 +29,8 @@ def min_time(fn, repeats: int = 5) -> tuple[float, object]:
 
 def main() -> None:
     import surfmet
-    from surfmet.mechanics.hertz_check import prepare_scans, scan_summits
+    from surfmet.mechanics.hertz_check import scan_summits
+    from surfmet.mechanics.scan_preparation import prepare_scans
 
     data = resources.files("surfmet").joinpath("data")
     plate = surfmet.read(str(data / "paper_plate.x3p"))

@@ -15,8 +15,8 @@ import surfmet
 from contact.materials import composite_modulus, material
 from contact.resolution import sphere_study
 from contact.rolling import log_loads
-from surfmet.mechanics.hertz_check import prepare_scans
 from surfmet.mechanics.resolution_study import rolling_study
+from surfmet.mechanics.scan_preparation import prepare_scans
 
 
 def _data(name: str) -> str:

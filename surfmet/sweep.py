@@ -32,6 +32,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
 
 TASKS = ("contact", "hertz-check")
 
@@ -39,13 +40,13 @@ TASKS = ("contact", "hertz-check")
 BASE_COLUMNS: tuple[tuple[str, str], ...] = (
     ("index", ""), ("key", ""), ("task", ""), ("plate", ""), ("ball", ""),
     ("materials", ""), ("load", "N"), ("radius", "m"), ("position_x", "m"),
-    ("position_y", "m"), ("status", ""), ("error", ""),
+    ("position_y", "m"), ("spikes", ""), ("status", ""), ("error", ""),
 )
 RESULT_COLUMNS: dict[str, tuple[tuple[str, str], ...]] = {
     "contact": (
         ("grid", ""), ("pixel", "m"), ("max_pressure", "Pa"), ("contact_radius", "m"),
         ("approach", "m"), ("real_area", "m^2"), ("n_clusters", ""),
-        ("plastic_area", "m^2"), ("hertz_p0", "Pa"), ("hertz_a", "m"),
+        ("plastic_area", "m^2"), ("hertz_p0", "Pa"), ("hertz_a", "m"), ("warnings", ""),
     ),
     "hertz-check": (
         ("grid", ""), ("pixel", "m"), ("hertz_holds", ""), ("model", ""), ("alpha", ""),
@@ -69,6 +70,7 @@ class SweepItem:
     position: tuple[float, float] | None = None
     grid: int | None = None
     hardness: float | None = None
+    spikes: str = SPIKES
 
     @property
     def key(self) -> str:
@@ -76,7 +78,8 @@ class SweepItem:
         pos = None if self.position is None else [repr(float(v)) for v in self.position]
         return json.dumps([self.task, self.plate, self.ball, self.materials,
                            repr(float(self.load)), repr(float(self.radius)), pos, self.grid,
-                           None if self.hardness is None else repr(float(self.hardness))],
+                           None if self.hardness is None else repr(float(self.hardness)),
+                           self.spikes],
                           separators=(",", ":"))
 
 
@@ -84,7 +87,8 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
                 plates: Sequence[str | None] = (None,), balls: Sequence[str | None] = (None,),
                 materials: Sequence[str] = ("steel,aluminium",),
                 positions: Sequence[tuple[float, float] | None] = (None,),
-                grid: int | None = None, hardness: float | None = None) -> list[SweepItem]:
+                grid: int | None = None, hardness: float | None = None,
+                spikes: Any = SPIKES) -> list[SweepItem]:
     """The Cartesian product plates x balls x materials x positions x loads, in that
     nesting order (loads vary fastest)."""
     if task not in TASKS:
@@ -96,10 +100,12 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
         raise SurfmetInputError(f"the ball radius must be positive, got {radius!r}")
     if grid is not None and grid < 8:
         raise SurfmetInputError("the grid needs at least 8 cells per side")
+    spikes = spike_mode(spikes)
     combos = itertools.product(plates or (None,), balls or (None,), materials, positions,
                                loads)
     return [SweepItem(index=k, task=task, plate=pl, ball=bl, materials=m, load=w,
-                      radius=float(radius), position=pos, grid=grid, hardness=hardness)
+                      radius=float(radius), position=pos, grid=grid, hardness=hardness,
+                      spikes=spikes)
             for k, (pl, bl, m, pos, w) in enumerate(combos)]
 
 
@@ -108,7 +114,8 @@ def _base(item: SweepItem) -> dict[str, tuple[Any, str]]:
     return {"index": (item.index, ""), "key": (item.key, ""), "task": (item.task, ""),
             "plate": (item.plate, ""), "ball": (item.ball, ""),
             "materials": (item.materials, ""), "load": (item.load, "N"),
-            "radius": (item.radius, "m"), "position_x": (px, "m"), "position_y": (py, "m")}
+            "radius": (item.radius, "m"), "position_x": (px, "m"), "position_y": (py, "m"),
+            "spikes": (item.spikes, "")}
 
 
 def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
@@ -126,7 +133,8 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
-                          grid=item.grid, max_grid=None, offset=item.position)
+                          grid=item.grid, max_grid=None, offset=item.position,
+                          spikes=item.spikes)
         c, res = chk.comparison, chk.result
         model = chk.hierarchy.verdict if chk.hierarchy is not None else None
         row.update({
@@ -139,18 +147,12 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "hertz_p0": (float(c.hertz.p0), "Pa"), "hertz_a": (float(c.hertz.a), "m"),
         })
     else:
-        from contact.materials import composite_modulus
-        from contact.setups.ball_on_plate import solve_sphere
-        from surfmet.mechanics.material_spec import parse_materials
-        from surfmet.mechanics.pairing import prepare_pair
+        from surfmet.mechanics.ball_contact import ball_contact
 
-        ball_m, plate_m = parse_materials(item.materials)
-        pair = prepare_pair(plate, ball) if (plate is not None or ball is not None) else None
-        res = solve_sphere(
-            item.radius, item.load, composite_modulus(ball_m, plate_m),
-            roughness=None if pair is None else pair.composite(item.position),
-            hardness=item.hardness,
-            grid=item.grid, max_grid=None)
+        sol = ball_contact(plate, ball, radius=item.radius, load=item.load,
+                           materials=item.materials, hardness=item.hardness, grid=item.grid,
+                           max_grid=None, offset=item.position, spikes=item.spikes)
+        res = sol.result
         row.update({
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),
             "max_pressure": (float(res.pmax), "Pa"),
@@ -160,6 +162,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "n_clusters": (int(res.n_clusters), ""),
             "plastic_area": (float(res.plastic_area), "m^2"),
             "hertz_p0": (float(res.hertz.p0), "Pa"), "hertz_a": (float(res.hertz.a), "m"),
+            "warnings": ("; ".join(sol.warnings), ""),
         })
     row["status"] = ("ok", "")
     row["error"] = (None, "")

@@ -50,14 +50,32 @@ _LENGTH_ALIASES: Mapping[str, str] = {
     "centimeter": "cm",
 }
 
-FORCE_UNITS: Mapping[str, float] = {"n": 1.0, "mn": 1e-3, "un": 1e-6, "µn": 1e-6, "kn": 1e3}
+# Units a user types (command line, material options, API text), matched exactly: SI
+# prefixes are case-sensitive (m is milli, M is mega), so "10MN" is not "10mN" and "1mPa"
+# is not "1MPa". File headers, which spell units in capitals or in words, are read with
+# :func:`length_factor` instead.
+TYPED_LENGTH_UNITS: Mapping[str, float] = {
+    "m": 1.0,
+    "cm": 1e-2,
+    "mm": 1e-3,
+    "um": 1e-6,
+    "µm": 1e-6,
+    "μm": 1e-6,
+    "nm": 1e-9,
+    "pm": 1e-12,
+    "Å": 1e-10,
+}
+FORCE_UNITS: Mapping[str, float] = {
+    "N": 1.0, "kN": 1e3, "mN": 1e-3, "uN": 1e-6, "µN": 1e-6, "μN": 1e-6,
+}
 PRESSURE_UNITS: Mapping[str, float] = {
-    "pa": 1.0,
-    "kpa": 1e3,
-    "mpa": 1e6,
-    "gpa": 1e9,
-    "n/mm2": 1e6,
-    "n/mm^2": 1e6,
+    "Pa": 1.0,
+    "kPa": 1e3,
+    "MPa": 1e6,
+    "GPa": 1e9,
+    "N/mm2": 1e6,
+    "N/mm^2": 1e6,
+    "N/mm²": 1e6,
 }
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -87,6 +105,20 @@ def length_factor(unit: str) -> float:
     raise SurfmetInputError(f"unknown length unit {unit!r}; use one of nm, um, µm, mm, m")
 
 
+def _typed_factor(unit: str, table: Mapping[str, float], kind: str, text: str) -> float:
+    """The factor of a unit a user typed, matched exactly; an unknown spelling, or one that
+    differs from an accepted unit only in case, is one error naming the accepted units."""
+    if unit in table:
+        return table[unit]
+    accepted = ", ".join(table)
+    near = [k for k in table if k.lower() == unit.lower()]
+    if near:
+        raise SurfmetInputError(
+            f"unit {unit!r} in {kind} {text!r} is not {near[0]!r}: SI prefixes are "
+            f"case-sensitive (m = milli, M = mega); accepted: {accepted}")
+    raise SurfmetInputError(f"unknown unit {unit!r} in {kind} {text!r}; accepted: {accepted}")
+
+
 def _parse(text: str, table: Mapping[str, float], kind: str, default: str) -> float:
     if not isinstance(text, str):
         value = float(text)
@@ -101,21 +133,7 @@ def _parse(text: str, table: Mapping[str, float], kind: str, default: str) -> fl
         )
     number = float(m.group(1))
     unit = (m.group(2) or "").strip()
-    if not unit:
-        factor = 1.0
-    elif table is LENGTH_UNITS:
-        try:
-            factor = length_factor(unit)
-        except SurfmetInputError:
-            raise SurfmetInputError(
-                f"unknown unit {unit!r} in {kind} {text!r}; use nm, um, µm, mm or m"
-            ) from None
-    else:
-        key = unit.lower()
-        if key not in table:
-            names = ", ".join(sorted({k for k in table}))
-            raise SurfmetInputError(f"unknown unit {unit!r} in {kind} {text!r}; use {names}")
-        factor = table[key]
+    factor = _typed_factor(unit, table, kind, text) if unit else 1.0
     value = number * factor
     if not math.isfinite(value):
         raise SurfmetInputError(f"{kind} {text!r} is not finite")
@@ -127,7 +145,7 @@ def parse_length(text: str | float) -> float:
 
     A bare number is taken in metres (SI).
     """
-    return _parse(text, LENGTH_UNITS, "length", "um")
+    return _parse(text, TYPED_LENGTH_UNITS, "length", "um")
 
 
 def parse_force(text: str | float) -> float:

@@ -205,10 +205,10 @@ def test_paper_pair_converges_plastic_at_the_asperity_scale():
     # few iterations with every loaded cell at the cap
     from importlib import resources
 
-    import surfmet.mechanics.hertz_check as hc
+    from surfmet.mechanics.scan_preparation import prepare_scans
 
     data = resources.files("surfmet").joinpath("data")
-    prep = hc.prepare_scans(str(data / "paper_plate.x3p"), str(data / "paper_ball.x3p"))
+    prep = prepare_scans(str(data / "paper_plate.x3p"), str(data / "paper_ball.x3p"))
     rough = CompositeRoughness(prep.pair.roughness, prep.pair.dx)
     prob = SphereContact(R, E_STAR, W, roughness=rough, hardness=H_AL)
     res = prob.solve(W, tol=1e-8)

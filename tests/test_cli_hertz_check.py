@@ -42,7 +42,8 @@ def test_verdicts_and_json(plates, capsys):
     rec = json.loads(out)
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
-                        "radial_profile", "models", "verdict", "summits", "grid"}
+                        "radial_profile", "models", "verdict", "summits", "grid",
+                        "scan_preparation", "warnings"}
     assert rec["verdict"]["model"] == "hertz"
     assert set(rec["models"]) == {"hertz", "bem", "greenwood_tripp", "greenwood_tripp_plastic"}
     assert "resolution" in rec["summits"]["note"]

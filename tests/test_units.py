@@ -81,3 +81,43 @@ def test_format_length():
     assert format_length(136e-6) == "136 µm"
     assert format_length(0.02) == "20 mm"
     assert format_length(float("nan")) == "n/a"
+
+
+# issue 16, item 2: SI prefixes are case-sensitive (m = milli, M = mega)
+@pytest.mark.parametrize(("text", "parse", "value"), [
+    ("10mN", parse_force, 0.01), ("2kN", parse_force, 2e3), ("3 µN", parse_force, 3e-6),
+    ("1MPa", parse_pressure, 1e6), ("1kPa", parse_pressure, 1e3),
+    ("2 N/mm2", parse_pressure, 2e6), ("5mm", parse_length, 5e-3), ("2Å", parse_length, 2e-10),
+])
+def test_typed_units_are_exact(text, parse, value):
+    assert parse(text) == pytest.approx(value, rel=1e-15)
+
+
+@pytest.mark.parametrize(("text", "parse", "accepted"), [
+    ("10MN", parse_force, "mN"),      # was read as 0.01 N
+    ("10n", parse_force, "N"),
+    ("1mPa", parse_pressure, "MPa"),  # was read as 1 MPa
+    ("1gpa", parse_pressure, "GPa"),
+    ("3Mm", parse_length, "mm"),      # megametres are not millimetres
+    ("5 UM", parse_length, "um"),
+])
+def test_wrong_case_is_one_error_naming_the_accepted_units(text, parse, accepted):
+    with pytest.raises(SurfmetInputError) as exc:
+        parse(text)
+    msg = str(exc.value)
+    assert "case-sensitive" in msg and repr(accepted) in msg and "\n" not in msg
+
+
+def test_unknown_unit_names_the_accepted_ones():
+    with pytest.raises(SurfmetInputError) as exc:
+        parse_force("4 furlong")
+    assert "accepted: N, kN, mN" in str(exc.value)
+
+
+def test_cli_refuses_a_load_in_meganewtons(capsys):
+    from surfmet.cli import main
+
+    rc = main(["contact", "--radius", "20mm", "--load", "10MN", "--materials",
+               "steel,aluminium"])
+    err = capsys.readouterr().err
+    assert rc == 1 and "case-sensitive" in err and len(err.strip().splitlines()) == 1

@@ -40,7 +40,8 @@ from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rot
 from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD  # noqa: E402
 from contact.setups import CompositeRoughness  # noqa: E402
 from surfmet.cli._common import progress  # noqa: E402
-from surfmet.mechanics.hertz_check import hertz_check, prepare_scans  # noqa: E402
+from surfmet.mechanics.hertz_check import hertz_check  # noqa: E402
+from surfmet.mechanics.scan_preparation import prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402

@@ -54,6 +54,26 @@ def add_ball_arguments(parser: Any, *, plate_option: bool = True, required: bool
                         "(override values with NAME:E=..:nu=..:H=..)")
 
 
+def add_spikes_argument(parser: Any) -> None:
+    """``--spikes remove|keep``: what every contact command does with the scans' spikes
+    (one default, :data:`surfmet.mechanics.scan_preparation.SPIKES`)."""
+    from surfmet.mechanics.scan_preparation import SPIKE_CHOICES, SPIKES
+
+    parser.add_argument("--spikes", choices=SPIKE_CHOICES, default=SPIKES,
+                        help=f"the scans' spikes (optical outliers): remove them before the "
+                        f"contact (default {SPIKES}) or keep them as measured")
+
+
+def spike_summary(prep: Any) -> str:
+    """One line saying what was done with the scans' spikes."""
+    if prep is None or prep.pair is None:
+        return "no scan"
+    if prep.spikes == "keep":
+        return "spikes kept (--spikes keep)"
+    counts = ", ".join(f"{k} {v}" for k, v in prep.spikes_removed.items())
+    return f"spikes removed ({counts})"
+
+
 def save_figure(fig: Any, path: str) -> None:
     """Close a written matplotlib figure and say where it went (on stderr)."""
     from surfmet.plots._style import close

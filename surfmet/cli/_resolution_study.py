@@ -49,7 +49,7 @@ def run_study(args: argparse.Namespace, command: str) -> int:
             kwargs["hardness"] = h
         study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
                                  loads=log_loads(lo, hi, 9 if n is None else n),
-                                 materials=args.materials, spikes=not args.keep_spikes,
+                                 materials=args.materials, spikes=args.spikes,
                                  progress=progress, **kwargs)
     else:
         hardness = getattr(args, "hardness", None)
@@ -60,7 +60,7 @@ def run_study(args: argparse.Namespace, command: str) -> int:
         plate = args.plate
         study, _ = contact_study(plate, args.ball, radius=args.radius, load=args.load,
                                  materials=args.materials, hardness=hardness,
-                                 spikes=not getattr(args, "keep_spikes", False),
+                                 spikes=getattr(args, "spikes", "remove"),
                                  progress=progress)
     if args.json:
         emit_json({"command": command, "resolution_study": study_record(study)})

@@ -9,11 +9,13 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_spikes_argument,
     emit_json,
     force,
     log,
     positive_length,
     pressure,
+    spike_summary,
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
@@ -50,6 +52,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")
     plast.add_argument("--plastic", action="store_true",
                        help="cap the pressure at the softer material's table hardness")
+    add_spikes_argument(p)
     add_grid_argument(p, "cells per side (default: the scans' own pixel, native resolution, "
                       "when it fits in memory; 256 for a smooth ball)")
     p.add_argument("--size", type=positive_length, metavar="L",
@@ -100,17 +103,19 @@ def run(args: argparse.Namespace) -> int:
             args.plate, args.ball, radius=args.radius, load=args.load,
             materials=args.materials, hardness=args.hardness, plastic=args.plastic,
             grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
-            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback)
+            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback,
+            spikes=args.spikes)
     finally:
         if bar is not None:
             bar.close()
     res, pair = sol.result, sol.pair
     ball_m, plate_m = sol.ball_material, sol.plate_material
-    if pair is not None and not args.json:
-        for note in pair.notes:
+    if sol.preparation is not None and not args.json:
+        for note in sol.preparation.notes:
             log(f"note: {note}")
-    for w in sol.warnings:
-        log(f"warning: {w}")
+    if args.json:  # in text the warnings are part of the table below
+        for w in sol.warnings:
+            log(f"warning: {w}")
 
     rec = sol.to_json()
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
@@ -122,6 +127,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     hz = res.hertz
     print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
+    if sol.preparation is not None:
+        print(f"scans          {spike_summary(sol.preparation)}")
     print(f"grid           {res.shape[1]} x {res.shape[0]} cells, pixel "
           f"{format_length(res.dx)} ({pixel_source(res.dx, pair, args.grid)}), side "
           f"{format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
@@ -141,6 +148,8 @@ def run(args: argparse.Namespace) -> int:
           f"{', touches the edge' if res.touches_edge else ''}")
     for note in res.notes:
         print(f"note           {note}")
+    for w in sol.warnings:
+        print(f"warning        {w}")
     if args.out:
         print(f"fields saved   {args.out}")
     return 0

@@ -5,7 +5,14 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, log, pressure, save_figure
+from surfmet.cli._common import (
+    add_json_flag,
+    add_spikes_argument,
+    emit_json,
+    log,
+    pressure,
+    save_figure,
+)
 from surfmet.cli.spectrum import add_periodic_argument, materials_e_star, periodic_flag
 
 EPILOG = """examples:
@@ -39,6 +46,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--hardness", type=pressure, metavar="H", default=None,
                    help="cap the BEM pressure at H (elastic-perfectly-plastic)")
     add_periodic_argument(p)
+    add_spikes_argument(p)
     p.add_argument("--stiffness", choices=("curve", "solve"), default="curve",
                    help="BEM stiffness from the slope of the computed ln p(ū) curve (default, "
                    "no extra solve) or from one more solve at p(1+1%%) per pressure")
@@ -70,7 +78,7 @@ def run(args: argparse.Namespace) -> int:
     it = iter(bar)
     rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
-                       progress=lambda done, total: next(it, None))
+                       progress=lambda done, total: next(it, None), spikes=args.spikes)
     rec = {"file": args.file, **({"materials": names} if names else {}), **flat_contact_record(rep)}
     if args.plot:
         save_figure(plot(rep, args.plot), args.plot)
@@ -83,6 +91,11 @@ def run(args: argparse.Namespace) -> int:
 
 def _print(rec: dict[str, Any]) -> None:
     print(f"file  {rec['file']}")
+    prep = rec["scan_preparation"]
+    spikes = ("spikes kept (--spikes keep)" if prep["spikes"] == "keep" else
+              f"spikes removed ({prep['spikes_removed']['scan']})")
+    print(f"  scan: {spikes}, {100 * prep['filled_fraction']['value']:.3g} % of the points "
+          "filled")
     g = rec["grid"]
     print(f"  {rec['boundary']} boundary, {g['nx']} x {g['ny']} cells, "
           f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "

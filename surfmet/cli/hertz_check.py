@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_spikes_argument,
     emit_json,
     force,
     log,
@@ -53,8 +54,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--elastic", action="store_true",
                    help="elastic solution only (do not check yield)")
-    p.add_argument("--keep-spikes", action="store_true",
-                   help="do not remove spikes from the scans")
+    add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
     p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
@@ -83,7 +83,7 @@ def run(args: argparse.Namespace) -> int:
         return run_study(args, "hertz-check")
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
-                        plastic=not args.elastic, spikes=not args.keep_spikes, grid=args.grid,
+                        plastic=not args.elastic, spikes=args.spikes, grid=args.grid,
                         max_grid=None, on_edge=args.on_edge)
     res = check.result
     source = pixel_source(res.dx, check.scans.pair, args.grid)
@@ -104,6 +104,8 @@ def run(args: argparse.Namespace) -> int:
           f"(α = {c.alpha:.3g}, σ = {format_length(c.sigma)})")
     for reason in c.reasons:
         print(f"  - {reason}")
+    for w in check.warnings:
+        print(f"warning: {w}")
     print()
     print(f"{'':16}{'Hertz':>14}{'BEM':>14}")
     rows = [

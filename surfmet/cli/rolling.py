@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_spikes_argument,
     emit_json,
     force_range,
     log,
@@ -59,8 +60,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "the snapshot's -du/dx, asperity slopes included")
     p.add_argument("--hardness", type=pressure, metavar="P",
                    help="hardness of the softer body for the plastic model (default: table)")
-    p.add_argument("--keep-spikes", action="store_true",
-                   help="do not remove spikes from the scans")
+    add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
     p.add_argument("--resolution-study", action="store_true",
@@ -107,7 +107,7 @@ def run(args: argparse.Namespace) -> int:
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=not args.keep_spikes, grid=args.grid, max_grid=None,
+        spikes=args.spikes, grid=args.grid, max_grid=None,
         progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
     )
     for note in rep.notes:
@@ -162,7 +162,7 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
         scheduler=args.scheduler, radius=args.radius, materials=args.materials,
         loads=tuple(float(w) for w in loads), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=not args.keep_spikes, grid=args.grid, max_grid=None)
+        spikes=args.spikes, grid=args.grid, max_grid=None)
     failed = [t for t in rep.tracks if t.get("error")]
     if args.json:
         emit_json({**rep.to_json(), "model": args.model})

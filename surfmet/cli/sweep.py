@@ -5,7 +5,15 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import force, force_range, length, log, positive_length, pressure
+from surfmet.cli._common import (
+    add_spikes_argument,
+    force,
+    force_range,
+    length,
+    log,
+    positive_length,
+    pressure,
+)
 
 EPILOG = """examples:
   surfmet sweep --task hertz-check --plates plate.x3p --balls ball.x3p --radius 20mm \\
@@ -72,6 +80,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="cap the pressure (contact) / the flow pressure (hertz-check)")
     p.add_argument("--grid", type=int, default=None, metavar="N",
                    help="cells per side (default: the scans' own pixel)")
+    add_spikes_argument(p)
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="local processes (default: one per CPU; 1 = serial)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
@@ -102,7 +111,7 @@ def run(args: argparse.Namespace) -> int:
                         plates=args.plates or [None], balls=args.balls or [None],
                         materials=args.materials or ["steel,aluminium"],
                         positions=args.positions or [None], grid=args.grid,
-                        hardness=args.hardness)
+                        hardness=args.hardness, spikes=args.spikes)
     skip = done_keys(args.csv, json_path) if args.resume else set()
     with RowWriter(args.task, args.csv, json_path, resume=args.resume) as writer:
         todo = sum(1 for it in items if it.key not in skip)

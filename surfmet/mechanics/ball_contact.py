@@ -1,7 +1,8 @@
 """``surfmet contact``'s facade: the normal contact of a (rough) ball on a (rough) plate from
 scans, solved by the FFT boundary-element method of :mod:`contact`.
 
-:func:`ball_contact` reads and pairs the scans (:func:`surfmet.mechanics.pairing.prepare_pair`),
+:func:`ball_contact` prepares the scans as every contact does (spikes, levelling, the ball's
+sphere, one grid: :func:`surfmet.mechanics.scan_preparation.prepare_scans`),
 resolves the materials (:func:`surfmet.mechanics.material_spec.parse_materials`), and solves
 the ball-on-plate set-up; :class:`BallContact` holds the result with what it was computed
 from, and gives its JSON record (:func:`surfmet.records.contact_record`) and its figure.
@@ -17,6 +18,14 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES
+
+#: Fewest cells a contact may cover before the answer is called under-resolved.
+MIN_CONTACT_CELLS = 20
+#: Fewest cells per Hertz contact radius a0 before the grid is called too coarse: below
+#: it the pressure profile is sampled at a handful of points (the Hertz approach and a0
+#: converge as (dx/a0)^2, about 4 % at 5 cells).
+MIN_CELLS_PER_RADIUS = 5
 
 
 @dataclass(frozen=True, eq=False)
@@ -35,7 +44,10 @@ class BallContact:
     plate_file, ball_file : str or None
         The scan files, for the record.
     warnings : tuple of str
-        Warnings of the solve (a contact reaching the domain's edge).
+        Warnings of the solve (a contact reaching the domain's edge, a pressure above the
+        elastic limit, a contact on a handful of cells): :func:`solution_warnings`.
+    preparation : surfmet.mechanics.scan_preparation.PreparedScans or None
+        What was done to the scans.
     """
 
     result: Any
@@ -46,14 +58,20 @@ class BallContact:
     plate_file: str | None = None
     ball_file: str | None = None
     warnings: tuple[str, ...] = ()
+    preparation: Any = None
 
     def to_json(self) -> dict[str, Any]:
-        """The ``surfmet contact`` record (every value with its unit)."""
+        """The ``surfmet contact`` record (every value with its unit), with what was done
+        to the scans and the warnings."""
         from surfmet.records import contact_record
 
-        return contact_record(self.result, self.ball_material, self.plate_material,
-                              self.pair, radius=self.radius, plate_file=self.plate_file,
-                              ball_file=self.ball_file)
+        rec = contact_record(self.result, self.ball_material, self.plate_material,
+                             self.pair, radius=self.radius, plate_file=self.plate_file,
+                             ball_file=self.ball_file)
+        if self.preparation is not None:
+            rec["scan_preparation"] = self.preparation.record()
+        rec["warnings"] = list(self.warnings)
+        return rec
 
     def figure(self, path: str | Path | None = None) -> Any:
         """The pressure map (:func:`surfmet.plots.contact.pressure_map`)."""
@@ -80,14 +98,59 @@ def _file(obj: Any) -> str | None:
     return None if obj is None else str(obj) if isinstance(obj, (str, Path)) else None
 
 
-def _read(obj: Any) -> Any:
-    import surfmet
+def grid_warnings(res: Any) -> list[str]:
+    """A grid too coarse for the contact: fewer than :data:`MIN_CELLS_PER_RADIUS` cells
+    per Hertz contact radius a0 (empty for a grid fine enough, or without a Hertz value)."""
+    from surfmet.units import format_length
 
-    return surfmet.read(obj) if isinstance(obj, (str, Path)) else obj
+    hz = getattr(res, "hertz", None)
+    if hz is None or not hz.a > 0:
+        return []
+    cells = hz.a / res.dx
+    if cells >= MIN_CELLS_PER_RADIUS:
+        return []
+    return [f"the grid is too coarse for this contact: pixel {format_length(res.dx)} against "
+            f"the Hertz radius a0 = {format_length(hz.a)}, {cells:.2g} cells per radius "
+            f"(at least {MIN_CELLS_PER_RADIUS} are needed); use a finer --grid or the "
+            "scans' own pixel"]
+
+
+def solution_warnings(res: Any, ball_m: Any, plate_m: Any) -> list[str]:
+    """What makes a solved contact's answer doubtful, as sentences.
+
+    - an elastic solution whose peak pressure exceeds the softer body's hardness (or, with
+      no hardness known, the composite modulus E*): the material would have yielded, and
+      beyond E* the small-slope half-space model itself no longer holds;
+    - a contact on fewer than :data:`MIN_CONTACT_CELLS` cells: the area and the peak
+      pressure are not resolved by the grid;
+    - a grid with fewer than :data:`MIN_CELLS_PER_RADIUS` cells per Hertz radius
+      (:func:`grid_warnings`).
+    """
+    from contact.materials import contact_hardness
+    from surfmet.units import format_length
+
+    out = []
+    if res.hardness is None:
+        h = contact_hardness(ball_m, plate_m)
+        limit, what = (h, "the softer body's hardness") if h else (res.e_star, "E*")
+        if res.pmax > limit:
+            out.append(f"max pressure {res.pmax / 1e6:.4g} MPa exceeds {what} "
+                       f"({limit / 1e6:.4g} MPa): beyond the elastic limit this model allows; "
+                       "solve elastic-plastic (--plastic or --hardness), and check the scans "
+                       "for spikes")
+    coarse = grid_warnings(res)
+    out.extend(coarse)
+    cells = res.contact_area / (res.dx * res.dx)
+    if cells < MIN_CONTACT_CELLS and not coarse:
+        out.append(f"the contact covers {cells:.3g} cells of {format_length(res.dx)}: fewer "
+                   f"than {MIN_CONTACT_CELLS}, the area and the peak pressure are not resolved;"
+                   " use a finer --grid")
+    return out
 
 
 def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
-                  hardness: float | None = None, **options: Any) -> tuple[Any, tuple[str, ...]]:
+                  hardness: float | None = None, offset: tuple[float, float] | None = None,
+                  **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).
 
     ``options`` go to the set-up and the solver (``grid``, ``size``, ``periodic``,
@@ -101,7 +164,7 @@ def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
         warnings.simplefilter("always", EdgeContactWarning)
         res = solve_sphere(
             radius, load, e_star,
-            roughness=None if pair is None else pair.composite(),
+            roughness=None if pair is None else pair.composite(offset),
             hardness=hardness, **options,
         )
     found = tuple(str(w.message) for w in caught if issubclass(w.category, EdgeContactWarning))
@@ -125,15 +188,17 @@ def ball_contact(
     max_iter: int = 2000,
     max_grid: int | None = None,
     callback: Callable[[int, float], None] | None = None,
+    spikes: Any = SPIKES,
+    offset: tuple[float, float] | None = None,
 ) -> BallContact:
     """Normal contact of a ball on a plate from their scans.
 
     Parameters
     ----------
     plate, ball : Topography or path, optional
-        The scans (either, both or none: smooth surfaces). The plate is levelled, the
-        ball's best-fit sphere removed, and both paired on one grid
-        (:func:`surfmet.mechanics.pairing.prepare_pair`).
+        The scans (either, both or none: smooth surfaces). Spikes removed (unless
+        ``spikes="keep"``), the plate levelled, the ball's best-fit sphere removed, and
+        both paired on one grid (:func:`surfmet.mechanics.scan_preparation.prepare_scans`).
     radius, load : float
         Ball radius (m) and normal load (N).
     materials : str or pair of Material
@@ -145,6 +210,10 @@ def ball_contact(
     grid, size, periodic, on_edge, tol, max_iter, max_grid, callback
         The set-up and the solver (:func:`contact.setups.ball_on_plate.solve_sphere`);
         ``max_grid=None`` lets the scans' own pixel through whatever the grid.
+    spikes : {"remove", "keep"} or bool
+        What to do with the scans' spikes (default remove).
+    offset : (float, float), optional
+        The ball's apex (x, y) from the middle of the paired map (m): a track position.
 
     Returns
     -------
@@ -152,20 +221,27 @@ def ball_contact(
     """
     from contact.materials import composite_modulus
     from surfmet.mechanics.material_spec import parse_materials
-    from surfmet.mechanics.pairing import prepare_pair
+    from surfmet.mechanics.scan_preparation import prepare_scans
 
     ball_m, plate_m = parse_materials(materials)
     e_star = composite_modulus(ball_m, plate_m)
     cap = _hardness(hardness, plastic, ball_m, plate_m)
     if not (tol > 0):
         raise SurfmetInputError("--tol must be positive")
-    pair = None
+    prep = None
     if plate is not None or ball is not None:
-        pair = prepare_pair(_read(plate), _read(ball))
-    res, found = solve_on_pair(pair, radius=radius, load=load, e_star=e_star, hardness=cap,
+        prep = prepare_scans(plate, ball, spikes=spikes)
+    pair = None if prep is None else prep.pair
+    if offset is not None:
+        from surfmet.mechanics.pairing import apex_centre
+
+        apex_centre(pair, offset)  # refuses a track position without a scan
+    res, found = solve_on_pair(pair, offset=offset, radius=radius, load=load, e_star=e_star,
+                               hardness=cap,
                                periodic=periodic, grid=grid, size=size, max_grid=max_grid,
                                tol=tol, max_iter=max_iter, callback=callback,
                                on_edge=on_edge)
+    found = (*found, *solution_warnings(res, ball_m, plate_m))
     return BallContact(result=res, ball_material=ball_m, plate_material=plate_m, pair=pair,
                        radius=radius, plate_file=_file(plate), ball_file=_file(ball),
-                       warnings=found)
+                       warnings=found, preparation=prep)

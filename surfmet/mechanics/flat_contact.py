@@ -28,6 +28,7 @@ import numpy as np
 from contact.roughcontact import ModelCurve
 from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
 from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
 
@@ -41,6 +42,7 @@ class FlatContactReport:
     spectrum: Spectrum
     levelling: str
     settings: dict[str, Any] = field(default_factory=dict)
+    preparation: dict[str, Any] = field(default_factory=dict)
 
     @property
     def periodic(self) -> bool:
@@ -77,7 +79,8 @@ def parse_pressures(text: str) -> np.ndarray:
 
 def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
-                 stiffness: str = "curve", progress: Any = None) -> FlatContactReport:
+                 stiffness: str = "curve", progress: Any = None,
+                 spikes: Any = SPIKES) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -94,6 +97,9 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         None: detect from the edges.
     stiffness : {"curve", "solve"}
         How the BEM stiffness is measured (see :func:`contact.setups.flat.flat_contact`).
+    spikes : {"remove", "keep"} or bool
+        The scan's spikes, removed by default; non-measured points are filled with the
+        nearest measured value (:func:`surfmet.mechanics.scan_preparation.prepare_flat`).
 
     Raises
     ------
@@ -109,9 +115,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         np.atleast_1d(np.asarray(pressures, dtype=float)))
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
+    topo, preparation = prepare_flat(topo, spikes=spikes)
     scan, per, level = prepare(topo, periodic)
-    if scan.nan_fraction > 0:
-        raise SurfmetInputError("the scan has unmeasured points; fill or crop them first")
     spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
                     hardness=hardness)
     try:
@@ -127,7 +132,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     except ContactInputError as exc:
         raise SurfmetInputError(str(exc)) from None
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
-                             settings={"pressures": p.tolist()})
+                             settings={"pressures": p.tolist()}, preparation=preparation)
 
 
 def plot(rep: FlatContactReport, path: Any = None) -> Any:

@@ -30,104 +30,13 @@ from __future__ import annotations
 
 import contextlib
 import math
-import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import parse_materials
-from surfmet.model import Topography
-
-
-def _scan(obj: Any, what: str) -> Topography | None:
-    if obj is None:
-        return None
-    if isinstance(obj, (str, os.PathLike, Path)):
-        import surfmet
-
-        obj = surfmet.read(obj)
-    if not isinstance(obj, Topography):
-        kind = getattr(obj, "kind", type(obj).__name__)
-        raise SurfmetInputError(f"the Hertz check needs an areal scan of the {what}, got {kind}")
-    return obj
-
-
-@dataclass(frozen=True, eq=False)
-class PreparedScans:
-    """Scans made ready for the contact engine.
-
-    Attributes
-    ----------
-    pair : PairedRoughness or None
-        Composite roughness on one grid (None: two smooth bodies).
-    sigma, sigma_plate, sigma_ball : float
-        Combined rms roughness and its parts (m), from the measured points (0 for a
-        surface not given).
-    notes : tuple of str
-    spikes_removed : dict
-        Spikes removed per scan (counts).
-    """
-
-    pair: Any
-    sigma: float
-    sigma_plate: float
-    sigma_ball: float
-    notes: tuple[str, ...]
-    spikes_removed: dict[str, int]
-    residuals: dict[str, Topography] = field(default_factory=dict)
-
-
-def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: bool = True) -> PreparedScans:
-    """Spike removal, levelling, sphere removal and pairing of a plate and a ball scan.
-
-    Parameters
-    ----------
-    plate, ball : Topography or path, optional
-        The scans (either, both or none).
-    spikes : bool
-        Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first; they
-        become non-measured points.
-    """
-    from surfmet.mechanics.pairing import prepare_pair
-
-    plate = _scan(plate, "plate")
-    ball = _scan(ball, "ball")
-    if plate is None and ball is None:
-        return PreparedScans(None, 0.0, 0.0, 0.0, ("no scan: smooth surfaces",), {})
-    notes: list[str] = []
-    removed: dict[str, int] = {}
-    if spikes:
-        from surfmet.spikes import remove_spikes
-
-        cleaned = []
-        for name, scan in (("plate", plate), ("ball", ball)):
-            if scan is None:
-                cleaned.append(None)
-                continue
-            new, report = remove_spikes(scan)
-            removed[name] = int(report.count)
-            if report.count:
-                notes.append(f"{report.count} spike(s) removed from the {name} scan "
-                             f"({report.n_points} points made non-measured)")
-            cleaned.append(new)
-        plate, ball = cleaned
-    pair = prepare_pair(plate, ball)
-    notes.extend(pair.notes)
-    from surfmet.areal.form import remove_form
-
-    # each surface's own residual, for its spectrum (summit parameters)
-    residuals = {name: remove_form(scan, form)[0]
-                 for name, scan, form in (("plate", plate, "plane"), ("ball", ball, "sphere"))
-                 if scan is not None}
-    s_plate = s_ball = 0.0
-    if "plate" in pair.fits:
-        s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
-    if "ball" in pair.fits:
-        s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
-    return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
-                         sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
-                         residuals=residuals)
+from surfmet.mechanics.scan_preparation import SPIKES, PreparedScans, prepare_scans
 
 
 @dataclass(frozen=True, eq=False)
@@ -188,6 +97,15 @@ class HertzCheck:
         """The solution the comparison was made on (elastic-plastic when available)."""
         return self.plastic if self.plastic is not None else self.elastic
 
+    @property
+    def warnings(self) -> list[str]:
+        """A grid too coarse for the contact (fewer cells per Hertz radius than
+        :data:`surfmet.mechanics.ball_contact.MIN_CELLS_PER_RADIUS`): the verdict rests
+        on an unresolved solution."""
+        from surfmet.mechanics.ball_contact import grid_warnings
+
+        return grid_warnings(self.result)
+
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
         :func:`surfmet.records.hertz.hertz_check_record`)."""
@@ -217,7 +135,7 @@ def hertz_check(
     ball: Any = None,
     hardness: float | None = None,
     plastic: bool = True,
-    spikes: bool = True,
+    spikes: Any = SPIKES,
     grid: int | None = None,
     max_grid: int | None = 1024,
     on_edge: str = "enlarge",
@@ -241,8 +159,9 @@ def hertz_check(
         Flow pressure of the softer body (Pa); default the materials' (softer) hardness.
     plastic : bool
         Solve the elastic-plastic contact too (needs a hardness).
-    spikes : bool
-        Remove spikes from the scans before anything else.
+    spikes : {"remove", "keep"} or bool
+        Remove spikes from the scans before anything else (the default), or keep them
+        (:mod:`surfmet.mechanics.scan_preparation`).
     grid, max_grid : int, optional
         Contact grid (cells per side) and the largest automatic grid; ``max_grid=None``
         runs on the scans' own pixel at any size that fits in memory (native resolution).

@@ -90,7 +90,9 @@ def _areal(scan: Any, what: str) -> Topography:
     return scan
 
 
-def _fill(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def fill_nearest(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``z`` with each non-finite point given its nearest finite neighbour's value, and the
+    mask of the points filled."""
     from scipy.ndimage import distance_transform_edt
 
     bad = ~np.isfinite(z)
@@ -106,7 +108,7 @@ def _resample(z: np.ndarray, dx: float, dy: float, nx: int, ny: int, pitch: floa
     where the source was not measured (nearest-neighbour of the NaN mask)."""
     from scipy.ndimage import map_coordinates, uniform_filter
 
-    filled, bad = _fill(z)
+    filled, bad = fill_nearest(z)
     sy, sx = z.shape
     cx, cy = 0.5 * (sx - 1) * dx, 0.5 * (sy - 1) * dy
     X = cx + (np.arange(nx) - 0.5 * (nx - 1)) * pitch

@@ -17,6 +17,7 @@ import math
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES
 
 #: Each quantity of a study: label, JSON unit, scale to the text unit, text unit.
 QUANTITIES = {
@@ -34,8 +35,8 @@ QUANTITIES = {
 }
 
 
-def _prepared(plate: Any, ball: Any, spikes: bool) -> Any:
-    from surfmet.mechanics.hertz_check import prepare_scans
+def _prepared(plate: Any, ball: Any, spikes: Any) -> Any:
+    from surfmet.mechanics.scan_preparation import prepare_scans
 
     if plate is None and ball is None:
         raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
@@ -52,7 +53,7 @@ def contact_study(
     load: float,
     materials: Any = "steel,aluminium",
     hardness: float | None = None,
-    spikes: bool = True,
+    spikes: Any = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Any = None,
 ) -> tuple[Any, Any]:
@@ -75,7 +76,7 @@ def contact_study(
 
     Returns
     -------
-    (contact.resolution.ResolutionStudy, surfmet.mechanics.hertz_check.PreparedScans)
+    (contact.resolution.ResolutionStudy, surfmet.mechanics.scan_preparation.PreparedScans)
     """
     from contact.materials import composite_modulus
     from contact.resolution import sphere_study
@@ -97,7 +98,7 @@ def rolling_study(
     radius: float,
     loads: Any,
     materials: Any = "steel,aluminium",
-    spikes: bool = True,
+    spikes: Any = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Any = None,
     **sweep_kwargs: Any,

@@ -1,7 +1,8 @@
 """Scan-level rolling resistance: the effective exponent lambda of M_r = s_r N^lambda for a
 ball rolling on a scanned plate (and a scanned ball).
 
-The scans are prepared as for the Hertz check (:func:`surfmet.mechanics.hertz_check.prepare_scans`:
+The scans are prepared as for every contact
+(:func:`surfmet.mechanics.scan_preparation.prepare_scans`:
 spikes removed, plate levelled, ball sphere removed, both paired on one grid) and the load
 sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
 choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
@@ -21,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES
 
 LOSSY = ("both", "plate", "ball")
 
@@ -34,7 +36,7 @@ class RollingReport:
     sweep : contact.rolling.RollingSweep
     radius : float
     ball_material, plate_material : contact.materials.Material
-    scans : surfmet.mechanics.hertz_check.PreparedScans
+    scans : surfmet.mechanics.scan_preparation.PreparedScans
     notes : tuple of str
     """
 
@@ -91,7 +93,7 @@ def rolling_resistance(
     alpha_h: float = 1.0,
     lossy: str = "both",
     kinematics: str = "rolling",
-    spikes: bool = True,
+    spikes: Any = SPIKES,
     grid: int | None = None,
     max_grid: int | None = 1024,
     centre: tuple[float, float] | None = None,
@@ -121,8 +123,8 @@ def rolling_resistance(
         ("both": the combined displacement, both bodies losing alpha_h).
     kinematics : {"rolling", "frozen"}
         See :func:`contact.rolling.hysteresis_work`.
-    spikes : bool
-        Remove spikes from the scans first.
+    spikes : {"remove", "keep"} or bool
+        Remove spikes from the scans first (the default) or keep them.
     grid, max_grid : int, optional
         Contact grid settings; ``max_grid=None`` runs on the scans' own pixel at any size
         that fits in memory (native resolution).
@@ -137,8 +139,8 @@ def rolling_resistance(
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness
-    from surfmet.mechanics.hertz_check import prepare_scans
     from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.scan_preparation import prepare_scans
     from surfmet.units import parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)

@@ -65,6 +65,7 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
         "e_star": quantity(bem.e_star, "Pa"),
         "hardness": quantity(bem.hardness, "Pa"),
         "spectrum": srec,
+        "scan_preparation": rep.preparation,
         "results": results,
         "notes": [
             *bem.notes,

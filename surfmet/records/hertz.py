@@ -27,6 +27,8 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
             "plastic_fraction": _q(c.plastic_fraction, ""),
         },
         "reasons": list(c.reasons),
+        "scan_preparation": check.scans.record(),
+        "warnings": check.warnings,
         "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
                            "p_hertz": _q(prof.p_hertz, "Pa")},
         **_models(check),

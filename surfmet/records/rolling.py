@@ -28,6 +28,8 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         "forces": quantity(s.forces, "N"),
         "notes": list(rep.notes),
     }
+    if rep.scans is not None:
+        settings["scan_preparation"] = rep.scans.record()
     return {
         "lambda_eff": quantity(s.lambda_eff, ""),
         "lambda_ci": quantity(list(s.lambda_ci), ""),

@@ -1,0 +1,182 @@
+"""How a scan becomes a contact's roughness: one preparation, one set of defaults, for every
+command and API entry point that builds a contact from a scan (``contact``, ``hertz-check``,
+``flat-contact``, ``rolling``, ``sweep``, the report, the demo and the facades in
+:mod:`surfmet.mechanics`).
+
+1. Spikes (:data:`SPIKES`, ``"remove"`` by default): optical outliers are not asperities.
+   A single 50 µm spike carries newtons in an elastic solution and pushes the peak pressure
+   above the composite modulus; :func:`surfmet.spikes.remove_spikes` turns them into
+   non-measured points. ``"keep"`` leaves the scan as measured.
+2. The plate is levelled, the ball's best-fit sphere removed, both paired on one grid and
+   the non-measured points filled with the nearest measured value
+   (:func:`surfmet.mechanics.pairing.prepare_pair`).
+
+Every result built this way states what was done (:meth:`PreparedScans.record`).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
+
+#: The spike choices, the default first.
+SPIKE_CHOICES = ("remove", "keep")
+#: The default: spikes are removed before any contact is built.
+SPIKES = SPIKE_CHOICES[0]
+
+
+def spike_mode(spikes: Any) -> str:
+    """``"remove"`` or ``"keep"`` from the text or a flag (True: remove, False: keep)."""
+    if isinstance(spikes, bool):
+        return "remove" if spikes else "keep"
+    if spikes in SPIKE_CHOICES:
+        return str(spikes)
+    raise SurfmetInputError(f"spikes must be one of {', '.join(SPIKE_CHOICES)}, got {spikes!r}")
+
+
+def read_areal(obj: Any, what: str) -> Topography | None:
+    """The scan of the ``what`` (a Topography, or a file read with :func:`surfmet.read`)."""
+    if obj is None:
+        return None
+    if isinstance(obj, (str, os.PathLike, Path)):
+        import surfmet
+
+        obj = surfmet.read(obj)
+    if not isinstance(obj, Topography):
+        kind = getattr(obj, "kind", type(obj).__name__)
+        raise SurfmetInputError(f"a contact needs an areal scan of the {what}, got {kind}")
+    return obj
+
+
+def clean_spikes(scan: Topography, what: str, spikes: Any = SPIKES
+                 ) -> tuple[Topography, int, str | None]:
+    """The scan with its spikes removed (``spikes="remove"``) or as measured (``"keep"``):
+    the scan, the number of spikes removed, and a note saying what was done."""
+    if spike_mode(spikes) == "keep":
+        return scan, 0, f"spikes kept in the {what} scan (--spikes keep)"
+    from surfmet.spikes import remove_spikes
+
+    new, report = remove_spikes(scan)
+    if not report.count:
+        return new, 0, None
+    return new, int(report.count), (f"{report.count} spike(s) removed from the {what} scan "
+                                    f"({report.n_points} points made non-measured)")
+
+
+@dataclass(frozen=True, eq=False)
+class PreparedScans:
+    """Scans made ready for the contact engine.
+
+    Attributes
+    ----------
+    pair : PairedRoughness or None
+        Composite roughness on one grid (None: two smooth bodies).
+    sigma, sigma_plate, sigma_ball : float
+        Combined rms roughness and its parts (m), from the measured points (0 for a
+        surface not given).
+    notes : tuple of str
+    spikes_removed : dict
+        Spikes removed per scan (counts).
+    residuals : dict
+        Each scan's own form residual (plane for the plate, sphere for the ball).
+    spikes : str
+        ``"remove"`` or ``"keep"``.
+    """
+
+    pair: Any
+    sigma: float
+    sigma_plate: float
+    sigma_ball: float
+    notes: tuple[str, ...]
+    spikes_removed: dict[str, int]
+    residuals: dict[str, Topography] = field(default_factory=dict)
+    spikes: str = SPIKES
+
+    def record(self) -> dict[str, Any]:
+        """What was done to the scans, for the output."""
+        from surfmet.units import quantity
+
+        pair = self.pair
+        return {"spikes": self.spikes, "spikes_removed": dict(self.spikes_removed),
+                "filled_fraction": quantity(None if pair is None else pair.filled_fraction,
+                                            ""),
+                "notes": list(self.notes)}
+
+
+def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
+                  ) -> PreparedScans:
+    """Spikes, levelling, sphere removal and pairing of a plate and a ball scan.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path, optional
+        The scans (either, both or none).
+    spikes : {"remove", "keep"} or bool
+        Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first (they
+        become non-measured points), or keep them. True means "remove".
+    """
+    from surfmet.areal.form import remove_form
+    from surfmet.mechanics.pairing import prepare_pair
+
+    mode = spike_mode(spikes)
+    plate = read_areal(plate, "plate")
+    ball = read_areal(ball, "ball")
+    if plate is None and ball is None:
+        return PreparedScans(None, 0.0, 0.0, 0.0, ("no scan: smooth surfaces",), {},
+                             spikes=mode)
+    notes: list[str] = []
+    removed: dict[str, int] = {}
+    cleaned: dict[str, Topography | None] = {"plate": plate, "ball": ball}
+    for name, scan in (("plate", plate), ("ball", ball)):
+        if scan is not None:
+            cleaned[name], removed[name], note = clean_spikes(scan, name, mode)
+            if note:
+                notes.append(note)
+    plate, ball = cleaned["plate"], cleaned["ball"]
+    pair = prepare_pair(plate, ball)
+    notes.extend(pair.notes)
+    # each surface's own residual, for its spectrum (summit parameters)
+    residuals = {name: remove_form(scan, form)[0]
+                 for name, scan, form in (("plate", plate, "plane"), ("ball", ball, "sphere"))
+                 if scan is not None}
+    s_plate = s_ball = 0.0
+    if "plate" in pair.fits:
+        s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
+    if "ball" in pair.fits:
+        s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
+    return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
+                         sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
+                         residuals=residuals, spikes=mode)
+
+
+def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[str, Any]]:
+    """A single scan made ready for a flat contact: spikes as :func:`prepare_scans` does
+    them, then every non-measured point filled with its nearest measured value.
+
+    Returns the scan and the record of what was done (as :meth:`PreparedScans.record`).
+    """
+    import numpy as np
+
+    from surfmet.mechanics.pairing import fill_nearest
+    from surfmet.units import quantity
+
+    mode = spike_mode(spikes)
+    scan = read_areal(topo, "scan")
+    if not np.isfinite(scan.heights).any():
+        raise SurfmetInputError("the scan has no measured point")
+    scan, count, note = clean_spikes(scan, "scan", mode)
+    notes = [note] if note else []
+    z, filled = fill_nearest(np.asarray(scan.heights, dtype=float))
+    frac = float(filled.mean())
+    if frac > 0:
+        notes.append(f"{100 * frac:.3g} % of the scan not measured; filled with the nearest "
+                     "measured value")
+        scan = scan.replace(heights=z)
+    return scan, {"spikes": mode, "spikes_removed": {"scan": count},
+                  "filled_fraction": quantity(frac, ""), "notes": notes}
