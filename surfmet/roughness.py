@@ -101,6 +101,9 @@ def _length_or_none(value: Any, what: str) -> float | None:
         return None
     if isinstance(value, str) and value.strip().lower() in ("none", "off", ""):
         return None
+    if isinstance(value, str) and value.strip().lower() == "auto":
+        raise SurfmetInputError(f"{what} auto (the ISO 4288 rule) applies to profiles; an "
+                                f"areal scan needs a length or none")
     v = parse_length(value)
     if not v > 0:
         raise SurfmetInputError(f"{what} must be a positive length, got {value!r}")
