@@ -77,6 +77,7 @@ class SphereFit:
     convex: bool
     loss: str
     form_pv: float = float("nan")
+    curvature_resolved: bool = True
 
     def height(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """Height of the fitted sphere's measured side above ``(x, y)`` (NaN outside)."""
@@ -150,17 +151,20 @@ CURVATURE_RESOLVED_RATIO = 2.0
 
 
 def _require_curvature(x: np.ndarray, y: np.ndarray, z: np.ndarray, rms_shape: float,
-                       shape: str, radius: float) -> None:
+                       shape: str, radius: float, require: bool = True) -> bool:
+    """Whether the curvature is resolved; raises when it is not and ``require``."""
     a = np.column_stack([np.ones_like(x), x - x.mean(), y - y.mean()])
     coef, *_ = np.linalg.lstsq(a, z - z.mean(), rcond=None)
     rms_plane = float(np.sqrt(np.mean((z - z.mean() - a @ coef) ** 2)))
-    if not rms_plane > CURVATURE_RESOLVED_RATIO * rms_shape:
+    resolved = rms_plane > CURVATURE_RESOLVED_RATIO * rms_shape
+    if not resolved and require:
         raise SurfmetInputError(
             f"curvature not resolved by the data: a plane fits the scan as well as the "
             f"{shape} (rms residual {rms_plane:.3g} m against {rms_shape:.3g} m), so the "
             f"{shape}'s radius ({radius:.3g} m) means nothing; scan more of the curved "
             f"surface or check that this is the {shape} you meant"
         )
+    return bool(resolved)
 
 
 def _check_loss(loss: str) -> str:
@@ -256,6 +260,7 @@ def fit_sphere(
     loss: str = "linear",
     f_scale: float | None = None,
     mask: np.ndarray | None = None,
+    require_curvature: bool = True,
 ) -> SphereFit:
     """Fit a sphere to an areal scan of a spherical cap (a ball, a lens).
 
@@ -270,6 +275,10 @@ def fit_sphere(
         1.4826 × median |residual| of the algebraic start.
     mask : bool array, optional
         True where points may be used (in addition to the measured points).
+    require_curvature : bool
+        Refuse a scan whose curvature the fit does not resolve (default). False: return
+        the fit with ``curvature_resolved=False`` (form removal, where any near-plane
+        fit removes what it should).
 
     Returns
     -------
@@ -286,7 +295,8 @@ def fit_sphere(
     """
     valid, x, y, z = _valid_points(topo, mask)
     center, radius, cov, res = fit_sphere_points(x, y, z, loss=loss, f_scale=f_scale)
-    _require_curvature(x, y, z, float(np.sqrt(np.mean(res**2))), "sphere", radius)
+    resolved = _require_curvature(x, y, z, float(np.sqrt(np.mean(res**2))), "sphere",
+                                  radius, require_curvature)
     resmap = np.full(topo.shape, np.nan)
     resmap[valid] = res
     unc = np.sqrt(np.clip(np.diag(cov), 0, None))
@@ -302,6 +312,7 @@ def fit_sphere(
         convex=bool(np.mean(z) > center[2]),
         loss=loss,
         form_pv=quadratic_form_pv(x, y, res),
+        curvature_resolved=resolved,
     )
 
 
@@ -325,6 +336,7 @@ def fit_cylinder(
     *,
     axis: str = "free",
     mask: np.ndarray | None = None,
+    require_curvature: bool = True,
 ) -> CylinderFit:
     """Geometric least-squares cylinder fit of an areal scan (a roller, a wire, a shaft).
 
@@ -335,6 +347,8 @@ def fit_cylinder(
     axis : {"free", "x", "y"}
         ``"x"``/``"y"``: the axis lies along that direction (its tilt out of the plane is
         still fitted); ``"free"``: its in-plane direction is fitted too.
+    require_curvature : bool
+        Refuse a scan whose curvature the fit does not resolve (see :func:`fit_sphere`).
 
     Notes
     -----
@@ -411,7 +425,7 @@ def fit_cylinder(
     if r < 0:  # the same cylinder, parametrised with a negative radius
         r = -r
     _require_curvature(x, y, z, float(np.sqrt(np.mean(res**2)) * scale), "cylinder",
-                       float(r * scale))
+                       float(r * scale), require_curvature)
     az, el = (az0, p[0]) if fixed_az else (p[0], p[1])
     resmap = np.full(topo.shape, np.nan)
     resmap[valid] = res * scale

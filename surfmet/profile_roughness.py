@@ -208,8 +208,9 @@ def stratified_parameters(rough: Any, rk_line: str
                           ) -> tuple[dict[str, tuple[float, str]], list[str]]:
     """ISO 13565-2 and -3 parameters of the evaluated roughness profile, with units.
 
-    Ratios in %, the areas A1, A2 in m·% (a printout's µm·% times 1e-6). A profile on which
-    they are undefined (flat, too few points) gets a note instead of the values.
+    Ratios in %; the areas A1, A2 in m (a height times a material ratio taken as a
+    fraction: a printout's µm·% times 1e-8). A profile on which they are undefined (flat,
+    too few points) gets a note instead of the values.
     """
     import profiles
     from profiles.errors import ProfileError
@@ -220,7 +221,7 @@ def stratified_parameters(rough: Any, rk_line: str
         rk = profiles.rk_parameters(rough, construction=rk_line)
         out.update({"Rk": (rk.Rk, "m"), "Rpk": (rk.Rpk, "m"), "Rvk": (rk.Rvk, "m"),
                     "Mr1": (100 * rk.Mr1, "%"), "Mr2": (100 * rk.Mr2, "%"),
-                    "A1": (100 * rk.A1, "m·%"), "A2": (100 * rk.A2, "m·%")})
+                    "A1": (rk.A1, "m"), "A2": (rk.A2, "m")})
         pq = profiles.probability_parameters(rough)
         out.update({"Rpq": (pq.Rpq, "m"), "Rvq": (pq.Rvq, "m"), "Rmq": (100 * pq.Rmq, "%")})
     except ProfileError as exc:

@@ -79,11 +79,20 @@ class RoughnessResult:
             ) from None
 
     def to_json(self) -> dict[str, Any]:
-        """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types)."""
+        """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types).
+
+        Lengths in a profile's settings (SI floats in :attr:`settings`) become
+        ``{"value", "unit"}`` here, at the edge.
+        """
+        settings = self.settings
+        if self.kind == "profile":
+            from surfmet.profile_roughness import with_units
+
+            settings = with_units(settings)
         return {
             "parameters": {k: {"value": jsonable(v), "unit": u}
                            for k, (v, u) in self.parameters.items()},
-            "settings": jsonable(self.settings),
+            "settings": jsonable(settings),
         }
 
 
@@ -92,6 +101,9 @@ def _length_or_none(value: Any, what: str) -> float | None:
         return None
     if isinstance(value, str) and value.strip().lower() in ("none", "off", ""):
         return None
+    if isinstance(value, str) and value.strip().lower() == "auto":
+        raise SurfmetInputError(f"{what} auto (the ISO 4288 rule) applies to profiles; an "
+                                f"areal scan needs a length or none")
     v = parse_length(value)
     if not v > 0:
         raise SurfmetInputError(f"{what} must be a positive length, got {value!r}")
@@ -365,7 +377,6 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
         engine_cutoffs,
         feature_values,
         stratified_parameters,
-        with_units,
     )
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
@@ -398,7 +409,7 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
                                   valley_suppression=extra["valley_suppression"])
     stated = dict(prof.metadata.get("evaluation_conditions") or {})
     settings["conditions"] = conditions_record(cond, ap.settings, stated)
-    settings.update(with_units(ap.settings))
+    settings.update(ap.settings)
     settings["level"] = lvl
     units = type(ap.parameters).UNITS
     values = ap.parameters.as_dict()

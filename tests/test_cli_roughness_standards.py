@@ -69,9 +69,10 @@ def test_stated_conditions_reproduce_the_printout_without_flags(capsys, mitutoyo
                       ("Rkµ", "Rku"), ("RDq", "Rdq"), ("Rt", "Rt"), ("Rpk", "Rpk"),
                       ("Rvk", "Rvk"), ("Mr1", "Mr1"), ("Mr2", "Mr2")):
         assert abs(got[ours]["value"] - printout.results[sym]) <= 1.01 * printout.digits[sym]
-    # A1, A2: printed in µm·%, ours in m·%
+    # A1, A2: printed in µm·%, ours in m (height times the ratio as a fraction)
     for sym in ("A1", "A2"):
-        assert abs(got[sym]["value"] * 1e6 - printout.results[sym]) <= printout.digits[sym]
+        assert got[sym]["unit"] == "m"
+        assert abs(got[sym]["value"] * 1e8 - printout.results[sym]) <= printout.digits[sym]
     assert rec["settings"]["rk_line"] == {"value": "levels", "why": cond["lc"]["why"]}
 
 

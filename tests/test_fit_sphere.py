@@ -93,6 +93,9 @@ def test_unresolved_curvature_is_refused_not_a_huge_radius(kind):
          "flat_noise": 1e-8 * rng.standard_normal(i.shape)}[kind]
     with pytest.raises(SurfmetInputError, match="curvature not resolved"):
         fit_sphere(Topography(z, 1e-6, 1e-6))
+    # form removal goes on, flagged
+    flagged = fit_sphere(Topography(z, 1e-6, 1e-6), require_curvature=False)
+    assert flagged.curvature_resolved is False
 
 
 def test_cylinder_on_a_plane_is_refused():

@@ -245,7 +245,7 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
     elif name == "sphere":
         from surfmet.fitting import fit_sphere
 
-        sf = fit_sphere(topo)
+        sf = fit_sphere(topo, require_curvature=False)
         jj, ii = np.indices(z.shape)
         res = z - sf.height(ii * topo.dx, jj * topo.dy)
         fit = FormFit(method="sphere", shape={
@@ -255,11 +255,12 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
             "convex": sf.convex,
             "pv_form_deviation": {"value": sf.pv_form_deviation, "unit": "m"},
             "form_pv": {"value": sf.form_pv, "unit": "m"},
+            "curvature_resolved": sf.curvature_resolved,
         }, n_points=sf.n_points)
     else:
         from surfmet.fitting import fit_cylinder
 
-        cf = fit_cylinder(topo, axis=name.partition(":")[2] or "free")
+        cf = fit_cylinder(topo, axis=name.partition(":")[2] or "free", require_curvature=False)
         jj, ii = np.indices(z.shape)
         res = z - cf.height(ii * topo.dx, jj * topo.dy, near=z)
         fit = FormFit(method=name, shape={

@@ -118,8 +118,6 @@ def _display(value: Any, unit: str) -> str:
         return "n/a"
     if unit == "m":
         return format_length(value)
-    if unit == "m·%":
-        return format_length(value) + "·%"
     if unit == "1/m²":
         return f"{value * 1e-6:.5g} 1/mm²"
     if unit == "1/m":
