@@ -134,8 +134,9 @@ def power_phase(seed: int) -> list[dict]:
                                  "size": size, "period": period, "effect": rep.effect,
                                  "adequate": rep.adequacy.adequate, "found": found,
                                  "named": named, "false_flags": len(rep.outliers),
-                                 "fitted_period": (rep.adequacy.residual.revolutions
-                                                   if rep.adequacy.residual else math.nan)})
+                                 "family_choice": rep.family_choice,
+                                 "fitted_period": (rep.fit.params["wave_period"] / (2 * math.pi)
+                                                   if named else math.nan)})
                     print(f"wave {len(rows)}: {fps:g}/{sd:g} P={period:.2f} rev "
                           f"B={size:.2f} eps0 -> {rep.effect} adequate="
                           f"{rep.adequacy.adequate}", file=sys.stderr)

@@ -166,10 +166,11 @@ def _wave_response(phi: np.ndarray, fit: ModelFit, periods: np.ndarray) -> np.nd
     """First-order change of the crossing times at ``phi`` per unit acceleration
     ``sin(k phi)`` and ``cos(k phi)`` for each period: (n, 2 len(periods)).
 
-    With ``u = omega^2/2`` and ``du/dphi`` the acceleration, an added ``da(phi)`` changes
-    ``u`` by ``du = int da`` and the time by ``dt = -int du / omega^3 dphi`` (the speed
-    term's feedback on ``du`` is left out: a first-order scan, refined by the fits).
-    On ``phi = phi0 + s^2`` the integrand is smooth at the start."""
+    With ``u = omega^2/2``, ``du/dphi = eps(phi) - gamma omega``: an added ``da(phi)``
+    changes ``u`` by ``du`` with ``du' + (gamma/omega) du = da`` (integrating factor
+    ``exp G``, ``G = int gamma/omega dphi``; ``du = int da`` without the speed term) and the
+    time by ``dt = -int du / omega^3 dphi``. On ``phi = phi0 + s^2`` the integrands are
+    smooth at the start."""
     phi0 = float(fit.params["phi0"])
     s_max = math.sqrt(max(float(np.max(phi)) - phi0, 1e-12))
     s = np.linspace(0.0, s_max, 1201)[1:]
@@ -178,6 +179,13 @@ def _wave_response(phi: np.ndarray, fit: ModelFit, periods: np.ndarray) -> np.nd
     k = 2.0 * math.pi / periods[:, None]
     du_sin = (np.cos(k * phi0) - np.cos(k * grid)) / k
     du_cos = (np.sin(k * grid) - np.sin(k * phi0)) / k
+    gamma = float(fit.params.get("gamma", 0.0))
+    if gamma:
+        dphi = 2.0 * s  # dphi/ds
+        big_g = _cumulative(gamma / omega * dphi, s)
+        grow = np.exp(big_g)
+        du_sin = _cumulative(np.sin(k * grid) * grow * dphi, s) / grow
+        du_cos = _cumulative(np.cos(k * grid) * grow * dphi, s) / grow
     weight = 2.0 * s / omega**3
     resp = []
     for du in (du_sin, du_cos):
@@ -209,6 +217,16 @@ def _design(angles: np.ndarray, fit: ModelFit, use: np.ndarray, periods: np.ndar
     sig = np.asarray(fit.sigma, float)[use]
     z = -np.asarray(fit.residuals, float)[use] / sig
     return z, _base_jacobian(ph, fit, sig), _wave_response(ph, fit, periods) / sig[:, None]
+
+
+def _cumulative(y: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """Cumulative trapezoid of ``y`` over ``s`` from ``s = 0`` (``y`` taken as its first
+    value below the first grid point)."""
+    y = np.atleast_2d(y)
+    out = np.concatenate([np.zeros((y.shape[0], 1)),
+                          np.cumsum(0.5 * (y[:, 1:] + y[:, :-1]) * np.diff(s), axis=1)], axis=1)
+    out = out + y[:, :1] * s[0]
+    return out if out.shape[0] > 1 else out[0]
 
 
 def wave_scan(

@@ -13,7 +13,8 @@ Misread rows are kept only where no smooth model explains them: when rows are fl
 linearised wave on every row (:func:`contact.rotor.adequacy.smooth_deletion_z`) looks for a
 period under which a flagged row is within the misread threshold; if one is found, the wave
 model is fitted and the misread search's backward step, under that model, puts back the rows
-it predicts.
+it predicts. The second look never flags a row the in-family search let stand (a smooth
+model explained it).
 """
 
 from __future__ import annotations
@@ -54,8 +55,8 @@ class Extended:
 
 
 def wave_models_for(chosen: str, n_used: int) -> list[str]:
-    """The wave models to try after ``chosen``: the chosen decay with a wave (``wave`` is
-    fitted as its parent), or ``wave`` alone; those the rows can support."""
+    """The wave models to try after ``chosen``: the chosen decay with a wave, or ``wave``
+    alone; those the rows can support."""
     names = list(_WAVE_OF.get(MODELS[chosen].decay_form or "", ()))
     names = [m for m in names if n_used > len(MODELS[m].free) + 2] or ["wave"]
     return [m for m in names if n_used > len(MODELS[m].free) + 2]
@@ -64,7 +65,7 @@ def wave_models_for(chosen: str, n_used: int) -> list[str]:
 def _wave_starts(fit: ModelFit, scan, names: list[str]) -> dict[str, list[dict[str, float]]]:
     base = {k: float(fit.params[k]) for k in PARAM_NAMES if k in fit.params}
     starts = []
-    for j in scan_peaks(scan, 2):
+    for j in scan_peaks(scan, 1):
         amp, ph = float(scan.amplitude[j]), float(scan.phase[j])
         starts.append({**base, "wave_period": float(scan.periods[j]),
                        "wave_c": amp * np.cos(ph), "wave_s": amp * np.sin(ph)})
@@ -76,12 +77,10 @@ def _fit_waves(times, angles, fits, chosen, outl, scan, *, fps, step, noise):
     names = wave_models_for(chosen, int(np.count_nonzero(~outl)))
     if not names:
         return {}, ()
-    # ``wave`` as a mere parent of a decay-with-wave model gets one start
-    every = list(dict.fromkeys(["wave", *names]))
     waves = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise,
-                           models=every, starts=_wave_starts(fits[chosen], scan, every),
-                           fitted=fits, max_starts={"wave": 2 if "wave" in names else 1})
-    return waves, tuple(every)
+                           models=names, starts=_wave_starts(fits[chosen], scan, names),
+                           fitted=fits)
+    return waves, tuple(names)
 
 
 def _smooth_candidates(angles, fit: ModelFit, outl: np.ndarray, step: float,
@@ -117,8 +116,11 @@ def extend_family(times, angles, fits: dict[str, ModelFit], chosen: str, outl: n
                 search = find_misread_rows(times, angles, fps=fps, step=step,
                                            threshold=threshold, min_frames=min_frames,
                                            reference=ref, initial=outl, start=waves[ref])
-                if not np.array_equal(search.outliers, outl):
-                    outl = np.array(search.outliers)
+                # a second look only puts rows back: a row the in-family search let stand
+                # is explained by a smooth model already
+                kept = np.asarray(search.outliers) & outl
+                if not np.array_equal(kept, outl):
+                    outl = kept
                     fits = fit_all_models(times, angles, fps=fps, step=step, used=~outl,
                                           noise=noise)
                     chosen = select_model(fits, margin)
@@ -137,8 +139,9 @@ def extend_family(times, angles, fits: dict[str, ModelFit], chosen: str, outl: n
         search = find_misread_rows(times, angles, fps=fps, step=step, threshold=threshold,
                                    min_frames=min_frames, reference=new, initial=outl,
                                    start=fits[new])
-        if not np.array_equal(search.outliers, outl):
-            outl = np.array(search.outliers)
+        kept = np.asarray(search.outliers) & outl
+        if not np.array_equal(kept, outl):
+            outl = kept
             core = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise)
             waves, tried = _fit_waves(times, angles, core, select_model(core, margin), outl,
                                       wave_scan(times, angles, core[select_model(core, margin)],

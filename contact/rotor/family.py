@@ -17,7 +17,8 @@
     ``P`` (a plate that is not plane). They are fitted only when the in-family choice does
     not explain the data (:mod:`contact.rotor.extension`). A period of one turn has the
     unbalance's form: the two cannot be told apart from one launch, and each wave model has
-    its unbalance counterpart as a parent, so it must beat it by the selection margin.
+    its unbalance counterpart as a parent, so it must beat it by the selection margin. After
+    a decaying choice only the decay with a wave is fitted (``wave`` alone is then not tried).
 
 Every model but ``parabola`` is the equation of :mod:`contact.rotor.forward` with some
 parameters fixed at zero; the models are nested through their ``parents``.
@@ -115,10 +116,10 @@ MODELS: dict[str, ModelSpec] = {
                   "period P"),
         ModelSpec("position+wave", ("eps0", "eta", "wave_c", "wave_s", "wave_period", "t0",
                                     "phi0"), "decaying+wave", "position",
-                  ("position+unbalance", "wave"), "position decay and a plate wave"),
+                  ("position+unbalance",), "position decay and a plate wave"),
         ModelSpec("speed+wave", ("eps0", "gamma", "wave_c", "wave_s", "wave_period", "t0",
                                  "phi0"), "decaying+wave", "speed",
-                  ("speed+unbalance", "wave"), "speed decay and a plate wave"),
+                  ("speed+unbalance",), "speed decay and a plate wave"),
     )
 }
 EXTENSION = ("wave", "position+wave", "speed+wave")

@@ -306,7 +306,9 @@ def fit_all_models(
         if name not in todo or name in fits:
             continue
         spec = MODELS[name]
-        inits = _parent_starts(fits, spec) + [dict(s) for s in (starts or {}).get(name, ())]
+        extra = [dict(s) for s in (starts or {}).get(name, ())]
+        # a wave model given starts (the periodogram's peaks) runs from them alone
+        inits = extra if extra and "wave_c" in spec.free else _parent_starts(fits, spec) + extra
         if name == "const":
             u = np.ones(t.shape, bool) if used is None else np.asarray(used, bool)
             inits.extend(start_profile(t[u], phi[u], step))
@@ -317,7 +319,7 @@ def fit_all_models(
                               "phi0": c0 - c1 * c1 / (4 * c2)})
         n_starts = 2
         if "wave_c" in spec.free:
-            n_starts = 2
+            n_starts = 1
         elif "a_c" in spec.free and inits:
             # the unbalance phase makes the cost multimodal: also start from four phases
             base = min(inits, key=lambda d: 0.0 if "a_c" in d else 1.0)
