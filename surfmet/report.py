@@ -447,6 +447,10 @@ def _hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | Non
         parts.append(_kv_table([("ball radius", _fmt_q({"value": hz.radius, "unit": "m"})),
                                 ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
                                 ("ball scan", hz.ball or "none (smooth ball)")]))
+    grid = check.get("grid")
+    if grid:  # the grid and pixel the answer was computed on, as the CLI states them
+        parts.append(_kv_table([("contact grid", f"{grid['nx']} × {grid['ny']} cells, pixel "
+                                 f"{_fmt_q(grid['dx'])} ({grid.get('pixel_source', '')})")]))
     reasons = check.get("reasons") or []
     if reasons:
         parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")

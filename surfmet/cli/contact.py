@@ -103,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
             args.plate, args.ball, radius=args.radius, load=args.load,
             materials=args.materials, hardness=args.hardness, plastic=args.plastic,
             grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
-            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback,
+            tol=args.tol, max_iter=args.max_iter, callback=callback,
             spikes=args.spikes)
     finally:
         if bar is not None:

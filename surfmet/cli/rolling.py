@@ -107,7 +107,7 @@ def run(args: argparse.Namespace) -> int:
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=args.spikes, grid=args.grid, max_grid=None,
+        spikes=args.spikes, grid=args.grid,
         progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
     )
     for note in rep.notes:
@@ -118,9 +118,7 @@ def run(args: argparse.Namespace) -> int:
     pair = rep.scans.pair if rep.scans is not None else None
     source = pixel_source(s.settings["dx"], pair, args.grid)
     if args.json:
-        out = rep.to_json()
-        out.setdefault("settings", {})["pixel_source"] = source
-        emit_json(out)
+        emit_json(rep.to_json())
         return 0
     lo_ci, hi_ci = s.lambda_ci
     print(f"model          {s.model}"
@@ -162,7 +160,7 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
         scheduler=args.scheduler, radius=args.radius, materials=args.materials,
         loads=tuple(float(w) for w in loads), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=args.spikes, grid=args.grid, max_grid=None)
+        spikes=args.spikes, grid=args.grid)
     failed = [t for t in rep.tracks if t.get("error")]
     if args.json:
         emit_json({**rep.to_json(), "model": args.model})
