@@ -10,6 +10,7 @@ from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force,
     log,
@@ -85,6 +86,7 @@ def run(args: argparse.Namespace) -> int:
 
         return run_study(args, "contact")
     check_grid(args.grid)
+    check_output(args.out, "--out")
     bar = None
     big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
 

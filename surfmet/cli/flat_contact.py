@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     log,
     pressure,
@@ -65,6 +66,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.records import flat_contact_record
 
     pressures = parse_pressures(args.pressures)
+    check_output(args.plot, "--plot")
     if args.e_star is not None:
         if not args.e_star > 0:
             raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")

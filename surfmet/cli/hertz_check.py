@@ -9,6 +9,7 @@ from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force,
     log,
@@ -75,6 +76,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.units import format_length
 
     check_grid(args.grid)
+    check_output(args.plot, "--plot")
     if args.elastic and args.hardness is not None:
         raise SurfmetInputError("--elastic and --hardness exclude each other")
     if args.resolution_study:

@@ -9,6 +9,7 @@ from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force_range,
     log,
@@ -95,6 +96,7 @@ def run(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.alpha_h) and args.alpha_h > 0):
         raise SurfmetInputError("--alpha-h must be positive")
     check_grid(args.grid)
+    check_output(args.plot, "--plot")
     if args.hardness is not None and args.model != "plastic":
         raise SurfmetInputError("--hardness applies to --model plastic")
     if args.resolution_study:
