@@ -557,7 +557,7 @@ def write_report(
     list of ScanSection
         One per scan, in order (``status`` "ok" or "error").
     """
-    from surfmet.batch import _bar
+    from surfmet.batch import progress_bar
 
     paths = [str(p) for p in paths]
     if not paths:
@@ -566,7 +566,7 @@ def write_report(
     if not out.parent.exists():
         raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
     sections = []
-    with _bar(len(paths), "report", progress) as bar:
+    with progress_bar(len(paths), "report", progress) as bar:
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)

@@ -132,9 +132,24 @@ def log(message: str) -> None:
     print(message, file=sys.stderr)
 
 
-def progress(iterable: Iterable[T], total: int | None = None, desc: str = "") -> Iterator[T]:
-    """A progress bar on stderr for long loops (hidden when stderr is not a terminal)."""
-    from tqdm.auto import tqdm
+def add_quiet_flag(parser: Any) -> None:
+    """``--quiet``: no progress on stderr."""
+    parser.add_argument("--quiet", action="store_true",
+                        help="no progress on stderr (shown for long runs: a bar on a "
+                        "terminal, one line per step elsewhere)")
 
-    yield from tqdm(iterable, total=total, desc=desc, file=sys.stderr, leave=False,
-                    disable=None, dynamic_ncols=True)
+
+def show_progress(args: Any) -> bool:
+    """Whether a command shows its progress: always, unless ``--quiet``."""
+    return not getattr(args, "quiet", False)
+
+
+def progress(iterable: Iterable[T], total: int | None = None, desc: str = "",
+             show: bool | None = True) -> Iterator[T]:
+    """Progress on stderr over a long loop (:func:`surfmet.batch.progress_bar`)."""
+    from surfmet.batch import progress_bar
+
+    with progress_bar(total, desc, show) as bar:
+        for item in iterable:
+            yield item
+            bar.update(1)

@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
     check_output,
     emit_json,
@@ -16,6 +17,7 @@ from surfmet.cli._common import (
     pressure,
     progress,
     save_figure,
+    show_progress,
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
@@ -76,6 +78,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="run the track positions on a Dask cluster, e.g. tcp://host:8786")
     p.add_argument("--plot", metavar="FILE", help="write M_r(N) and the local exponent")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -110,7 +113,8 @@ def run(args: argparse.Namespace) -> int:
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
         spikes=args.spikes, grid=args.grid,
-        progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
+        progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model}), loads",
+                                     show=show_progress(args)),
     )
     for note in rep.notes:
         log(f"note: {note}")
@@ -160,7 +164,8 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
     rep = rolling_tracks(
         args.plate, args.ball, positions=positions, workers=args.workers,
         scheduler=args.scheduler, radius=args.radius, materials=args.materials,
-        loads=tuple(float(w) for w in loads), model=args.model, hardness=args.hardness,
+        progress=show_progress(args), loads=tuple(float(w) for w in loads),
+        model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
         spikes=args.spikes, grid=args.grid)
     failed = [t for t in rep.tracks if t.get("error")]
