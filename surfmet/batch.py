@@ -267,10 +267,10 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
 
 def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout, done
               ) -> list[Any]:
-    try:
-        from distributed import Client, as_completed
-    except ImportError as exc:  # pragma: no cover - a dependency of surfmet
-        raise SurfmetInputError(f"--scheduler needs dask.distributed: {exc}") from None
+    from surfmet.extras import require
+
+    distributed = require("distributed", "dask", "--scheduler (a Dask cluster)")
+    Client, as_completed = distributed.Client, distributed.as_completed
 
     own = not isinstance(scheduler, Client)
     if own:

@@ -150,13 +150,23 @@ class ScanSection:
 # computing a section
 
 
+def _view_installed() -> bool:
+    """The 3D view's extra is installed (without it the report leaves the 3D picture out)."""
+    import importlib.util
+
+    try:
+        return importlib.util.find_spec("pyvista") is not None
+    except (ImportError, ValueError, AttributeError):  # a broken or blocked install
+        return False
+
+
 def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
                    ) -> list[tuple[str, bytes]]:
     from surfmet.plots.areal import abbott_firestone, height_map, psd_figure
     from surfmet.psd import fit_hurst, psd
 
     figs: list[tuple[str, bytes]] = []
-    if include_3d:
+    if include_3d and _view_installed():
         from surfmet.render import render_3d
 
         img = render_3d(surface, window_size=(1000, 750))
