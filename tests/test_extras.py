@@ -5,10 +5,10 @@ install has neither, and a command that needs one says which extra to install, i
 from __future__ import annotations
 
 import sys
-import tomllib
 from pathlib import Path
 
 import numpy as np
+import tomllib
 
 import surfmet
 from surfmet import Topography

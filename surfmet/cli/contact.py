@@ -79,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
     import numpy as np
 
     from surfmet.mechanics.ball_contact import ball_contact
-    from surfmet.units import format_length, jsonable
+    from surfmet.units import jsonable
 
     if args.resolution_study:
         from surfmet.cli._resolution_study import run_study
@@ -111,7 +111,6 @@ def run(args: argparse.Namespace) -> int:
         if bar is not None:
             bar.close()
     res, pair = sol.result, sol.pair
-    ball_m, plate_m = sol.ball_material, sol.plate_material
     if sol.preparation is not None and not args.json:
         for note in sol.preparation.notes:
             log(f"note: {note}")
@@ -127,6 +126,16 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         emit_json(rec)
         return 0
+    _print(sol, args)
+    return 0
+
+
+def _print(sol: Any, args: argparse.Namespace) -> None:
+    """The text table of a solved contact."""
+    from surfmet.units import format_length
+
+    res, pair = sol.result, sol.pair
+    ball_m, plate_m = sol.ball_material, sol.plate_material
     hz = res.hertz
     print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
     if sol.preparation is not None:
@@ -154,5 +163,4 @@ def run(args: argparse.Namespace) -> int:
         print(f"warning        {w}")
     if args.out:
         print(f"fields saved   {args.out}")
-    return 0
 
