@@ -10,7 +10,9 @@ with three guarantees whatever the engine:
 * **a failure stays in its row**: an exception, or a worker process that dies (a crash,
   the kernel's out-of-memory killer), turns into ``on_error(item, message)`` in that
   item's place and the batch goes on;
-* **a progress bar** on stderr (tqdm; hidden when stderr is not a terminal).
+* **progress** on stderr (:func:`progress_bar`): a bar on a terminal; with
+  ``progress=True`` plain lines elsewhere (logs, pipes), where a bar's carriage returns
+  would garble the text.
 
 Engines:
 
@@ -76,12 +78,46 @@ def _describe(exc: BaseException) -> str:
     return f"internal error: {type(exc).__name__}: {exc}"
 
 
-def _bar(total: int, desc: str, show: bool | None) -> Any:
+class _Lines:
+    """Progress as one plain line per finished item on stderr (``desc: k/n``)."""
+
+    def __init__(self, total: int | None, desc: str) -> None:
+        self.total, self.desc, self.n = total, desc, 0
+
+    def update(self, n: int = 1) -> None:
+        self.n += n
+        of = f"/{self.total}" if self.total else ""
+        print(f"{self.desc}: {self.n}{of}", file=sys.stderr, flush=True)
+
+    def set_postfix_str(self, text: str, refresh: bool = True) -> None:
+        return None
+
+    def close(self) -> None:
+        return None
+
+    def __enter__(self) -> _Lines:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        return None
+
+
+def progress_bar(total: int | None, desc: str, show: bool | None) -> Any:
+    """Progress on stderr: ``show=False`` nothing; on a terminal a tqdm bar; elsewhere
+    (logs, pipes, CI) plain lines when ``show=True`` and nothing when ``show=None`` (the
+    API's default: a library call stays quiet unless asked)."""
     from tqdm.auto import tqdm
 
-    # disable=None hides the bar when stderr is not a terminal (logs, CI, pipes)
-    return tqdm(total=total, desc=desc, file=sys.stderr, leave=False, dynamic_ncols=True,
-                disable=None if show is None else not show)
+    if show is False:
+        return tqdm(total=total, disable=True)
+    if sys.stderr.isatty():
+        return tqdm(total=total, desc=desc, file=sys.stderr, leave=False,
+                    dynamic_ncols=True)
+    if show:
+        return _Lines(total, desc)
+    return tqdm(total=total, disable=True)
+
+
 
 
 def batch_map(
@@ -163,7 +199,7 @@ def _call(func: Callable[[Any], Any], item: Any, on_error: Callable[[Any, str], 
 
 def _serial_map(func, items, on_error, progress, desc, done) -> list[Any]:
     out = []
-    with _bar(len(items), desc, progress) as bar:
+    with progress_bar(len(items), desc, progress) as bar:
         for k, item in enumerate(items):
             out.append(_call(func, item, on_error))
             done(k, out[-1])
@@ -192,7 +228,7 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
         ) from None
     results: list[Any] = [None] * len(items)
     broken: list[int] = []
-    with _bar(len(items), desc, progress) as bar:
+    with progress_bar(len(items), desc, progress) as bar:
         pool = ProcessPoolExecutor(max_workers=n, mp_context=_mp_context())
         try:
             futures = {pool.submit(func, item): k for k, item in enumerate(items)}
@@ -231,10 +267,10 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
 
 def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout, done
               ) -> list[Any]:
-    try:
-        from distributed import Client, as_completed
-    except ImportError as exc:  # pragma: no cover - a dependency of surfmet
-        raise SurfmetInputError(f"--scheduler needs dask.distributed: {exc}") from None
+    from surfmet.extras import require
+
+    distributed = require("distributed", "dask", "--scheduler (a Dask cluster)")
+    Client, as_completed = distributed.Client, distributed.as_completed
 
     own = not isinstance(scheduler, Client)
     if own:
@@ -251,7 +287,7 @@ def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout,
         futures = client.map(func, items, pure=False)
         index = {f.key: k for k, f in enumerate(futures)}
         results: list[Any] = [None] * len(items)
-        with _bar(len(items), desc, progress) as bar, client.as_current():
+        with progress_bar(len(items), desc, progress) as bar, client.as_current():
             for fut in as_completed(futures):
                 k = index[fut.key]
                 try:

@@ -133,8 +133,10 @@ def render_3d(
     valid = np.isfinite(z)
     if not valid.any():
         raise SurfmetInputError("the scan has no measured point")
+    from surfmet.extras import require
+
+    pv = require("pyvista", "view", "the 3D view (use --2d for a height map without it)")
     _quiet_vtk()
-    import pyvista as pv
 
     ny, nx = z.shape
     lateral = max(nx * dx, ny * dy)

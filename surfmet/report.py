@@ -151,13 +151,23 @@ class ScanSection:
 # computing a section
 
 
+def _view_installed() -> bool:
+    """The 3D view's extra is installed (without it the report leaves the 3D picture out)."""
+    import importlib.util
+
+    try:
+        return importlib.util.find_spec("pyvista") is not None
+    except (ImportError, ValueError, AttributeError):  # a broken or blocked install
+        return False
+
+
 def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
                    ) -> list[tuple[str, bytes]]:
     from surfmet.plots.areal import abbott_firestone, height_map, psd_figure
     from surfmet.psd import fit_hurst, psd
 
     figs: list[tuple[str, bytes]] = []
-    if include_3d:
+    if include_3d and _view_installed():
         from surfmet.render import render_3d
 
         img = render_3d(surface, window_size=(1000, 750))
@@ -448,6 +458,10 @@ def _hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | Non
         parts.append(_kv_table([("ball radius", _fmt_q({"value": hz.radius, "unit": "m"})),
                                 ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
                                 ("ball scan", hz.ball or "none (smooth ball)")]))
+    grid = check.get("grid")
+    if grid:  # the grid and pixel the answer was computed on, as the CLI states them
+        parts.append(_kv_table([("contact grid", f"{grid['nx']} × {grid['ny']} cells, pixel "
+                                 f"{_fmt_q(grid['dx'])} ({grid.get('pixel_source', '')})")]))
     reasons = check.get("reasons") or []
     if reasons:
         parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")
@@ -554,7 +568,7 @@ def write_report(
     list of ScanSection
         One per scan, in order (``status`` "ok" or "error").
     """
-    from surfmet.batch import _bar
+    from surfmet.batch import progress_bar
 
     paths = [str(p) for p in paths]
     if not paths:
@@ -563,7 +577,7 @@ def write_report(
     if not out.parent.exists():
         raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
     sections = []
-    with _bar(len(paths), "report", progress) as bar:
+    with progress_bar(len(paths), "report", progress) as bar:
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)

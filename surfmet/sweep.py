@@ -133,7 +133,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
-                          grid=item.grid, max_grid=None, offset=item.position,
+                          grid=item.grid, offset=item.position,
                           spikes=item.spikes)
         c, res = chk.comparison, chk.result
         model = chk.hierarchy.verdict if chk.hierarchy is not None else None
@@ -151,7 +151,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
 
         sol = ball_contact(plate, ball, radius=item.radius, load=item.load,
                            materials=item.materials, hardness=item.hardness, grid=item.grid,
-                           max_grid=None, offset=item.position, spikes=item.spikes)
+                           offset=item.position, spikes=item.spikes)
         res = sol.result
         row.update({
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),

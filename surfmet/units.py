@@ -55,15 +55,7 @@ _LENGTH_ALIASES: Mapping[str, str] = {
 # is not "1MPa". File headers, which spell units in capitals or in words, are read with
 # :func:`length_factor` instead.
 TYPED_LENGTH_UNITS: Mapping[str, float] = {
-    "m": 1.0,
-    "cm": 1e-2,
-    "mm": 1e-3,
-    "um": 1e-6,
-    "µm": 1e-6,
-    "μm": 1e-6,
-    "nm": 1e-9,
-    "pm": 1e-12,
-    "Å": 1e-10,
+    **{k: v for k, v in LENGTH_UNITS.items() if k not in ("a", "å")}, "Å": 1e-10,
 }
 FORCE_UNITS: Mapping[str, float] = {
     "N": 1.0, "kN": 1e3, "mN": 1e-3, "uN": 1e-6, "µN": 1e-6, "μN": 1e-6,

@@ -8,6 +8,7 @@ import json
 import numpy as np
 import pytest
 from contact_synth import rough_surface
+from scipy import stats
 
 import surfmet
 from contact import composite_modulus, hertz_sphere, material
@@ -24,10 +25,16 @@ def test_smooth_ball_json(capsys):
     assert {"lambda_eff", "lambda_ci", "loads", "moments", "local_lambda", "model"} <= set(rec)
     assert rec["model"] == "hysteresis"
     assert rec["lambda_eff"] == {"value": pytest.approx(4 / 3, abs=0.01), "unit": ""}
-    lo, hi = rec["lambda_ci"]["value"]
-    assert lo < rec["lambda_eff"]["value"] < hi
     assert rec["loads"]["unit"] == "N" and rec["moments"]["unit"] == "N m"
     loads = np.array(rec["loads"]["value"])
+    # the exponent and its interval are the least-squares fit of ln M on ln N with a
+    # Student-t interval: checked against scipy's own regression (was lo < λ < hi, which
+    # holds for any symmetric interval)
+    fit = stats.linregress(np.log(loads), np.log(rec["moments"]["value"]))
+    t = stats.t.ppf(0.975, len(loads) - 2)
+    assert rec["lambda_eff"]["value"] == pytest.approx(fit.slope, rel=1e-12)
+    assert rec["lambda_ci"]["value"] == pytest.approx(
+        [fit.slope - t * fit.stderr, fit.slope + t * fit.stderr], rel=1e-9)
     assert np.allclose(loads, np.geomspace(1, 100, 4))
     a = np.array([hertz_sphere(0.02, w, E_STAR).a for w in loads])
     # alpha_h = 1: M_r = (3/16) N a (Johnson eq. 9.19)

@@ -188,8 +188,17 @@ def test_contact_and_rolling_are_sound(demo):
     ro = s["rolling"]
     assert len(ro["loads"]["value"]) == 3
     assert all(m > 0 for m in ro["moments"]["value"])
-    lo, hi = ro["lambda_ci"]["value"]
-    assert lo <= ro["lambda_eff"]["value"] <= hi
+    # the exponent and its interval: least squares on ln M, ln N with a Student-t interval
+    # at the stated confidence, against scipy's regression (was lo <= λ <= hi)
+    from scipy import stats
+
+    loads, moments = np.array(ro["loads"]["value"]), np.array(ro["moments"]["value"])
+    fit = stats.linregress(np.log(loads), np.log(moments))
+    conf = ro["settings"]["confidence"]["value"]
+    t = stats.t.ppf(0.5 + conf / 2, len(loads) - 2)
+    assert ro["lambda_eff"]["value"] == pytest.approx(fit.slope, rel=1e-12)
+    assert ro["lambda_ci"]["value"] == pytest.approx(
+        [fit.slope - t * fit.stderr, fit.slope + t * fit.stderr], rel=1e-9)
 
 
 def test_every_figure_is_a_non_blank_png(demo):

@@ -185,9 +185,11 @@ def test_to_json_has_exactly_the_issue_keys():
     z = rough_surface(128, 2e-6, 20e-9, seed=3, corr=10e-6)
     rec = hertz_check(Topography(z, 2e-6, 2e-6), radius=5e-3, load=1.0,
                       materials="steel,aluminium", grid=64).to_json()
-    # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits)
+    # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits), plus
+    # issue 16's grid, scan preparation and warnings
     assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
-                        "radial_profile", "models", "verdict", "summits"}
+                        "radial_profile", "models", "verdict", "summits", "grid",
+                        "scan_preparation", "warnings"}
     assert set(rec["hertz"]) == {"a", "delta", "p0"}
     assert set(rec["bem"]) == {"pmax", "contact_radius", "approach", "area_fraction",
                                "plastic_fraction"}

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
+import re
 import sys
 from collections.abc import Sequence
 
@@ -81,6 +82,35 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+# A value that starts like a negative number ("-5N", "-0.5mm"): argparse takes "-5" for a
+# number but "-5N" for an unknown option.
+_NEGATIVE = re.compile(r"^-(\d|\.\d)")
+
+
+def negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> list[str]:
+    """``--load -5N`` as ``--load=-5N`` when the option takes a value, so that a
+    negative-looking value reaches its type check and the domain error ("must be
+    positive") is what the user sees, not "expected one argument"."""
+    sub = None
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction) and argv:
+            sub = action.choices.get(argv[0])
+    options = {} if sub is None else sub._option_string_actions
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        tok = argv[i]
+        action = options.get(tok)
+        if (action is not None and action.nargs != 0 and i + 1 < len(argv)
+                and _NEGATIVE.match(argv[i + 1])):
+            out.append(f"{tok}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit status."""
     from surfmet.errors import user_error_types
@@ -88,7 +118,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
         parser = build_parser()
-        args = parser.parse_args(argv)
+        args = parser.parse_args(negative_values(parser, argv))
         if not getattr(args, "func", None):
             parser.print_help(sys.stderr)
             return 1

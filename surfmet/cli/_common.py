@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 from collections.abc import Iterable, Iterator
@@ -74,6 +75,36 @@ def spike_summary(prep: Any) -> str:
     return f"spikes removed ({counts})"
 
 
+def check_output(path: Any, option: str) -> None:
+    """Refuse, before any work, an output path that cannot be written (a missing folder, a
+    folder in its place, no permission), so that a long computation is not lost at the end.
+
+    The file is opened for appending and, if it did not exist, removed again: whatever
+    the operating system would refuse at the end is refused now, in one line.
+    """
+    import os
+    from pathlib import Path
+
+    if path is None:
+        return
+    p = Path(path)
+    if p.is_dir():
+        raise SurfmetInputError(f"{option} {path}: is a folder; give a file name")
+    parent = p.parent if str(p.parent) else Path(".")
+    if not parent.is_dir():
+        raise SurfmetInputError(f"{option} {path}: folder {parent} does not exist")
+    existed = p.exists()
+    try:
+        with open(p, "ab"):
+            pass
+    except OSError as exc:
+        raise SurfmetInputError(f"{option} {path}: cannot write there "
+                                f"({exc.strerror or type(exc).__name__})") from None
+    if not existed:
+        with contextlib.suppress(OSError):
+            os.remove(p)
+
+
 def save_figure(fig: Any, path: str) -> None:
     """Close a written matplotlib figure and say where it went (on stderr)."""
     from surfmet.plots._style import close
@@ -101,9 +132,24 @@ def log(message: str) -> None:
     print(message, file=sys.stderr)
 
 
-def progress(iterable: Iterable[T], total: int | None = None, desc: str = "") -> Iterator[T]:
-    """A progress bar on stderr for long loops (hidden when stderr is not a terminal)."""
-    from tqdm.auto import tqdm
+def add_quiet_flag(parser: Any) -> None:
+    """``--quiet``: no progress on stderr."""
+    parser.add_argument("--quiet", action="store_true",
+                        help="no progress on stderr (shown for long runs: a bar on a "
+                        "terminal, one line per step elsewhere)")
 
-    yield from tqdm(iterable, total=total, desc=desc, file=sys.stderr, leave=False,
-                    disable=None, dynamic_ncols=True)
+
+def show_progress(args: Any) -> bool:
+    """Whether a command shows its progress: always, unless ``--quiet``."""
+    return not getattr(args, "quiet", False)
+
+
+def progress(iterable: Iterable[T], total: int | None = None, desc: str = "",
+             show: bool | None = True) -> Iterator[T]:
+    """Progress on stderr over a long loop (:func:`surfmet.batch.progress_bar`)."""
+    from surfmet.batch import progress_bar
+
+    with progress_bar(total, desc, show) as bar:
+        for item in iterable:
+            yield item
+            bar.update(1)

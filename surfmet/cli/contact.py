@@ -10,6 +10,7 @@ from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force,
     log,
@@ -78,13 +79,14 @@ def run(args: argparse.Namespace) -> int:
     import numpy as np
 
     from surfmet.mechanics.ball_contact import ball_contact
-    from surfmet.units import format_length, jsonable
+    from surfmet.units import jsonable
 
     if args.resolution_study:
         from surfmet.cli._resolution_study import run_study
 
         return run_study(args, "contact")
     check_grid(args.grid)
+    check_output(args.out, "--out")
     bar = None
     big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
 
@@ -103,13 +105,12 @@ def run(args: argparse.Namespace) -> int:
             args.plate, args.ball, radius=args.radius, load=args.load,
             materials=args.materials, hardness=args.hardness, plastic=args.plastic,
             grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
-            tol=args.tol, max_iter=args.max_iter, max_grid=None, callback=callback,
+            tol=args.tol, max_iter=args.max_iter, callback=callback,
             spikes=args.spikes)
     finally:
         if bar is not None:
             bar.close()
     res, pair = sol.result, sol.pair
-    ball_m, plate_m = sol.ball_material, sol.plate_material
     if sol.preparation is not None and not args.json:
         for note in sol.preparation.notes:
             log(f"note: {note}")
@@ -125,6 +126,16 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         emit_json(rec)
         return 0
+    _print(sol, args)
+    return 0
+
+
+def _print(sol: Any, args: argparse.Namespace) -> None:
+    """The text table of a solved contact."""
+    from surfmet.units import format_length
+
+    res, pair = sol.result, sol.pair
+    ball_m, plate_m = sol.ball_material, sol.plate_material
     hz = res.hertz
     print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
     if sol.preparation is not None:
@@ -152,5 +163,4 @@ def run(args: argparse.Namespace) -> int:
         print(f"warning        {w}")
     if args.out:
         print(f"fields saved   {args.out}")
-    return 0
 

@@ -7,11 +7,14 @@ from typing import Any
 
 from surfmet.cli._common import (
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     log,
     pressure,
     save_figure,
+    show_progress,
 )
 from surfmet.cli.spectrum import add_periodic_argument, materials_e_star, periodic_flag
 
@@ -53,18 +56,20 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="plot A/A0 and the mean gap against p for all four")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
 
 def run(args: argparse.Namespace) -> int:
     import surfmet
-    from surfmet.cli._common import progress
+    from surfmet.batch import progress_bar
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.flat_contact import flat_contact, parse_pressures, plot
     from surfmet.records import flat_contact_record
 
     pressures = parse_pressures(args.pressures)
+    check_output(args.plot, "--plot")
     if args.e_star is not None:
         if not args.e_star > 0:
             raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
@@ -74,11 +79,11 @@ def run(args: argparse.Namespace) -> int:
         if args.hardness is None:
             hard = None  # the BEM stays elastic unless a hardness is asked for
     topo = surfmet.read(args.file)
-    bar = progress(range(len(pressures)), total=len(pressures), desc="pressures")
-    it = iter(bar)
+    bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
     rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
-                       progress=lambda done, total: next(it, None), spikes=args.spikes)
+                       progress=lambda done, total: bar.update(1), spikes=args.spikes)
+    bar.close()
     rec = {"file": args.file, **({"materials": names} if names else {}), **flat_contact_record(rep)}
     if args.plot:
         save_figure(plot(rep, args.plot), args.plot)

@@ -9,6 +9,7 @@ from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force,
     log,
@@ -75,6 +76,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.units import format_length
 
     check_grid(args.grid)
+    check_output(args.plot, "--plot")
     if args.elastic and args.hardness is not None:
         raise SurfmetInputError("--elastic and --hardness exclude each other")
     if args.resolution_study:
@@ -84,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
                         plastic=not args.elastic, spikes=args.spikes, grid=args.grid,
-                        max_grid=None, on_edge=args.on_edge)
+                        on_edge=args.on_edge)
     res = check.result
     source = pixel_source(res.dx, check.scans.pair, args.grid)
     for note in check.notes:
@@ -92,11 +94,7 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        from surfmet.records import grid_record
-
-        # the issue's keys, and the grid the answer was computed on (issue 12)
-        out = {**check.to_json(), "grid": grid_record(res.shape, res.dx, source)}
-        emit_json(out)
+        emit_json(check.to_json())
         return 0
     c = check.comparison
     hz = c.hertz

@@ -5,7 +5,15 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, force, log, positive_length
+from surfmet.cli._common import (
+    add_json_flag,
+    add_quiet_flag,
+    emit_json,
+    force,
+    log,
+    positive_length,
+    show_progress,
+)
 
 EPILOG = """examples:
   surfmet report plate.x3p -o report.html
@@ -50,6 +58,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     hz.add_argument("--materials", metavar="BALL,PLATE", help="e.g. steel,aluminium")
     hz.add_argument("--ball", metavar="FILE", help="scan of the ball (optional)")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -77,7 +86,8 @@ def run(args: argparse.Namespace) -> int:
         hertz = HertzOptions(radius=args.radius, load=args.load, materials=args.materials,
                              ball=args.ball)
     sections = write_report(args.files, args.output, options, title=args.title,
-                            include_3d=not args.no_3d, hertz=hertz)
+                            include_3d=not args.no_3d, hertz=hertz,
+                            progress=show_progress(args))
     failed = [s for s in sections if s.status != "ok"]
     for s in failed:
         msg = s.error or ""

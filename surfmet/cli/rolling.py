@@ -8,13 +8,16 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
+    check_output,
     emit_json,
     force_range,
     log,
     pressure,
     progress,
     save_figure,
+    show_progress,
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 
@@ -75,6 +78,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="run the track positions on a Dask cluster, e.g. tcp://host:8786")
     p.add_argument("--plot", metavar="FILE", help="write M_r(N) and the local exponent")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -95,6 +99,7 @@ def run(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.alpha_h) and args.alpha_h > 0):
         raise SurfmetInputError("--alpha-h must be positive")
     check_grid(args.grid)
+    check_output(args.plot, "--plot")
     if args.hardness is not None and args.model != "plastic":
         raise SurfmetInputError("--hardness applies to --model plastic")
     if args.resolution_study:
@@ -107,8 +112,9 @@ def run(args: argparse.Namespace) -> int:
         args.plate, args.ball, radius=args.radius, materials=args.materials,
         loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=args.spikes, grid=args.grid, max_grid=None,
-        progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model})"),
+        spikes=args.spikes, grid=args.grid,
+        progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model}), loads",
+                                     show=show_progress(args)),
     )
     for note in rep.notes:
         log(f"note: {note}")
@@ -118,9 +124,7 @@ def run(args: argparse.Namespace) -> int:
     pair = rep.scans.pair if rep.scans is not None else None
     source = pixel_source(s.settings["dx"], pair, args.grid)
     if args.json:
-        out = rep.to_json()
-        out.setdefault("settings", {})["pixel_source"] = source
-        emit_json(out)
+        emit_json(rep.to_json())
         return 0
     lo_ci, hi_ci = s.lambda_ci
     print(f"model          {s.model}"
@@ -160,9 +164,10 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
     rep = rolling_tracks(
         args.plate, args.ball, positions=positions, workers=args.workers,
         scheduler=args.scheduler, radius=args.radius, materials=args.materials,
-        loads=tuple(float(w) for w in loads), model=args.model, hardness=args.hardness,
+        progress=show_progress(args), loads=tuple(float(w) for w in loads),
+        model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
-        spikes=args.spikes, grid=args.grid, max_grid=None)
+        spikes=args.spikes, grid=args.grid)
     failed = [t for t in rep.tracks if t.get("error")]
     if args.json:
         emit_json({**rep.to_json(), "model": args.model})

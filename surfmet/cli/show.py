@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, log
+from surfmet.cli._common import add_json_flag, check_output, emit_json, log
 
 EPILOG = """examples:
   surfmet show plate.x3p -o plate.png
@@ -70,8 +70,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.model import Profile
 
     out = Path(args.output)
-    if not out.parent.exists():
-        raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
+    check_output(out, "-o")
     scan = surfmet.read(args.file, format=args.format)
     rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level}
     if isinstance(scan, Profile):

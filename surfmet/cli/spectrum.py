@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, log, pressure, save_figure
+from surfmet.cli._common import add_json_flag, check_output, emit_json, log, pressure, save_figure
 
 EPILOG = """examples:
   surfmet spectrum plate.x3p
@@ -74,6 +74,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.mechanics.spectrum import plot_spectrum, prepare, spectrum
     from surfmet.records import spectrum_record
 
+    check_output(args.plot, "--plot")
     topo = surfmet.read(args.file)
     scan, per, level = prepare(topo, periodic_flag(args.periodic))
     e_star = hard = None

@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import (
+    add_quiet_flag,
     add_spikes_argument,
     force,
     force_range,
@@ -13,6 +14,7 @@ from surfmet.cli._common import (
     log,
     positive_length,
     pressure,
+    show_progress,
 )
 
 EPILOG = """examples:
@@ -86,6 +88,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on a Dask distributed cluster, e.g. tcp://host:8786")
     p.add_argument("--csv", default=None, metavar="OUT.csv", help="rows as CSV")
+    add_quiet_flag(p)
     p.add_argument("--json", nargs="?", const="-", default=None, metavar="OUT.jsonl",
                    help="rows as JSON Lines in OUT.jsonl, written as they finish; without "
                    "OUT, one JSON document with all rows on stdout at the end")
@@ -118,7 +121,7 @@ def run(args: argparse.Namespace) -> int:
         if skip:
             log(f"resume: {len(items) - todo} of {len(items)} items already written")
         rows = run_sweep(items, workers=args.workers, scheduler=args.scheduler,
-                         writer=writer, skip=skip)
+                         writer=writer, skip=skip, progress=show_progress(args))
     failed = [r for r in rows if r["status"][0] == "error"]
     if to_stdout:
         from surfmet.cli._common import emit_json

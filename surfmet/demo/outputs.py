@@ -78,8 +78,12 @@ def prepare_output(out_dir: str | os.PathLike) -> Path:
         for name in (prev.get("figures") or {}).values():
             if isinstance(name, str) and name == Path(name).name and name in FIGURES.values():
                 (folder / name).unlink(missing_ok=True)
-    folder.mkdir(parents=True, exist_ok=True)
-    write_json(folder / SUMMARY, {"generator": GENERATOR, "status": "running"})
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        write_json(folder / SUMMARY, {"generator": GENERATOR, "status": "running"})
+    except OSError as exc:
+        raise SurfmetInputError(f"--out {folder}: cannot write there "
+                                f"({exc.strerror or type(exc).__name__})") from None
     return folder
 
 

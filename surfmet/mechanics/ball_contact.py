@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.scan_preparation import SPIKES
+from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 #: Fewest cells a contact may cover before the answer is called under-resolved.
 MIN_CONTACT_CELLS = 20
@@ -150,7 +150,7 @@ def solution_warnings(res: Any, ball_m: Any, plate_m: Any) -> list[str]:
 
 def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
                   hardness: float | None = None, offset: tuple[float, float] | None = None,
-                  **options: Any) -> tuple[Any, tuple[str, ...]]:
+                  max_grid: int | None = MAX_GRID, **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).
 
     ``options`` go to the set-up and the solver (``grid``, ``size``, ``periodic``,
@@ -165,7 +165,7 @@ def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
         res = solve_sphere(
             radius, load, e_star,
             roughness=None if pair is None else pair.composite(offset),
-            hardness=hardness, **options,
+            hardness=hardness, max_grid=max_grid, **options,
         )
     found = tuple(str(w.message) for w in caught if issubclass(w.category, EdgeContactWarning))
     return res, found
@@ -186,7 +186,7 @@ def ball_contact(
     on_edge: str = "enlarge",
     tol: float = 1e-6,
     max_iter: int = 2000,
-    max_grid: int | None = None,
+    max_grid: int | None = MAX_GRID,
     callback: Callable[[int, float], None] | None = None,
     spikes: Any = SPIKES,
     offset: tuple[float, float] | None = None,
@@ -209,7 +209,8 @@ def ball_contact(
         Cap the pressure at the softer material's table hardness.
     grid, size, periodic, on_edge, tol, max_iter, max_grid, callback
         The set-up and the solver (:func:`contact.setups.ball_on_plate.solve_sphere`);
-        ``max_grid=None`` lets the scans' own pixel through whatever the grid.
+        ``max_grid`` defaults to :data:`~surfmet.mechanics.scan_preparation.MAX_GRID`
+        (None: the scans' own pixel at any size), the same for every entry point.
     spikes : {"remove", "keep"} or bool
         What to do with the scans' spikes (default remove).
     offset : (float, float), optional

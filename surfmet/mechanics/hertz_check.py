@@ -36,7 +36,7 @@ from typing import Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import parse_materials
-from surfmet.mechanics.scan_preparation import SPIKES, PreparedScans, prepare_scans
+from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, prepare_scans
 
 
 @dataclass(frozen=True, eq=False)
@@ -67,6 +67,7 @@ class HertzCheck:
     notes: tuple[str, ...]
     hierarchy: Any = None
     summits: Any = None
+    grid: int | None = None
 
     @property
     def verdict(self) -> str:
@@ -137,7 +138,7 @@ def hertz_check(
     plastic: bool = True,
     spikes: Any = SPIKES,
     grid: int | None = None,
-    max_grid: int | None = 1024,
+    max_grid: int | None = MAX_GRID,
     on_edge: str = "enlarge",
     offset: tuple[float, float] | None = None,
 ) -> HertzCheck:
@@ -214,7 +215,7 @@ def hertz_check(
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
-                      notes=tuple(notes), hierarchy=hierarchy, summits=summits)
+                      notes=tuple(notes), hierarchy=hierarchy, summits=summits, grid=grid)
 
 
 def scan_summits(prep: PreparedScans) -> Any:

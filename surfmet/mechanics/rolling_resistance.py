@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.scan_preparation import SPIKES
+from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 LOSSY = ("both", "plate", "ball")
 
@@ -46,6 +46,7 @@ class RollingReport:
     plate_material: Any
     scans: Any
     notes: tuple[str, ...]
+    grid: int | None = None
 
     @property
     def lambda_eff(self) -> float:
@@ -95,7 +96,7 @@ def rolling_resistance(
     kinematics: str = "rolling",
     spikes: Any = SPIKES,
     grid: int | None = None,
-    max_grid: int | None = 1024,
+    max_grid: int | None = MAX_GRID,
     centre: tuple[float, float] | None = None,
     offset: tuple[float, float] | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
@@ -177,7 +178,7 @@ def rolling_resistance(
     )
     notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]
     return RollingReport(sweep=sweep, radius=radius, ball_material=ball_m,
-                         plate_material=plate_m, scans=prep, notes=tuple(notes))
+                         plate_material=plate_m, scans=prep, notes=tuple(notes), grid=grid)
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,11 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
+#: The largest automatic contact grid, for every entry point (CLI, API, report, sweep):
+#: None runs on the scans' own pixel at any size that fits in memory, so that two ways of
+#: asking the same question get the same grid.
+MAX_GRID: int | None = None
+
 #: The spike choices, the default first.
 SPIKE_CHOICES = ("remove", "keep")
 #: The default: spikes are removed before any contact is built.
@@ -38,6 +43,17 @@ def spike_mode(spikes: Any) -> str:
     if spikes in SPIKE_CHOICES:
         return str(spikes)
     raise SurfmetInputError(f"spikes must be one of {', '.join(SPIKE_CHOICES)}, got {spikes!r}")
+
+
+def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
+    """Where a contact grid's pixel came from, for the output."""
+    if grid is not None:
+        return f"--grid {grid}"
+    if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
+        return "the scans' own pixel"
+    if pair is not None:
+        return "finer than the scans' pixel: 16 cells per Hertz radius"
+    return "automatic, smooth ball"
 
 
 def read_areal(obj: Any, what: str) -> Topography | None:

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from surfmet.mechanics.scan_preparation import pixel_source
+from surfmet.records.contact import grid_record
 from surfmet.units import quantity as _q
 
 
@@ -27,6 +29,8 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
             "plastic_fraction": _q(c.plastic_fraction, ""),
         },
         "reasons": list(c.reasons),
+        "grid": grid_record(check.result.shape, check.result.dx,
+                            pixel_source(check.result.dx, check.scans.pair, check.grid)),
         "scan_preparation": check.scans.record(),
         "warnings": check.warnings,
         "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),

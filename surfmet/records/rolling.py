@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from surfmet.mechanics.scan_preparation import pixel_source
 from surfmet.units import quantity
 
 
@@ -23,6 +24,8 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         "band": quantity(st.get("band"), ""),
         "grid": st.get("grid"),
         "dx": quantity(st.get("dx"), "m"),
+        "pixel_source": pixel_source(st.get("dx"), None if rep.scans is None else
+                                     rep.scans.pair, rep.grid),
         "sigma": quantity(rep.scans.sigma if rep.scans is not None else 0.0, "m"),
         "confidence": quantity(s.fit.confidence if s.fit is not None else None, ""),
         "forces": quantity(s.forces, "N"),

@@ -1,0 +1,56 @@
+"""Long commands show their progress on stderr, and --quiet turns it off (issue 16, item 15).
+
+Under pytest stderr is not a terminal, so the progress comes as plain lines ("desc: k/n"),
+the form logs and pipes get; stdout (the JSON) never carries it.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from surfmet.cli import main
+
+
+def _run(capsys, argv):
+    rc = main(argv)
+    cap = capsys.readouterr()
+    assert rc == 0, cap.err
+    return cap.out, cap.err
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_rolling_progress_per_load(capsys, quiet):
+    argv = ["rolling", "--radius", "20mm", "--materials", "steel,aluminium", "--loads",
+            "1N:10N:3", "--grid", "32", "--json"] + (["--quiet"] if quiet else [])
+    out, err = _run(capsys, argv)
+    json.loads(out)  # the JSON stays clean
+    lines = [ln for ln in err.splitlines() if "loads:" in ln]
+    assert lines == ([] if quiet else [f"rolling (hysteresis), loads: {k}/3"
+                                        for k in (1, 2, 3)])
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_sweep_progress_per_item(capsys, quiet):
+    argv = ["sweep", "--task", "contact", "--radius", "20mm", "--loads", "1N,2N", "--grid", "32",
+            "--workers", "1", "--json"] + (["--quiet"] if quiet else [])
+    out, err = _run(capsys, argv)
+    assert len(json.loads(out)["rows"]) == 2
+    lines = [ln for ln in err.splitlines() if ln.startswith("sweep:")]
+    assert lines == ([] if quiet else ["sweep: 1/2", "sweep: 2/2"])
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_report_progress_per_scan(tmp_path, capsys, quiet):
+    import surfmet
+    from surfmet import Topography
+
+    rng = np.random.default_rng(15)
+    paths = [surfmet.write(Topography(rng.normal(0, 1e-7, (32, 32)), 1e-6, 1e-6),
+                           tmp_path / f"s{k}.npz") for k in range(2)]
+    argv = ["report", *map(str, paths), "-o", str(tmp_path / "r.html"), "--no-3d"]
+    _, err = _run(capsys, argv + (["--quiet"] if quiet else []))
+    lines = [ln for ln in err.splitlines() if ln.startswith("report:")]
+    assert lines == ([] if quiet else ["report: 1/2", "report: 2/2"])
