@@ -12,9 +12,9 @@ import argparse
 import subprocess
 import sys
 import textwrap
-import time
 
 import numpy as np
+from _timing import min_time
 
 from surfmet.areal.filters import l_filter
 from surfmet.areal.form import remove_form
@@ -23,15 +23,6 @@ from surfmet.areal.hybrid import gradient_parameters
 from surfmet.model import Topography
 
 N = 2048
-
-
-def min_time(fn, repeats: int) -> float:
-    best = float("inf")
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def surface(seed: int = 0) -> np.ndarray:

@@ -9,22 +9,14 @@ Also times the summit parameters of the bundled pair (PSDs of both scans).
 
 from __future__ import annotations
 
-import time
 from importlib import resources
+
+from _timing import min_time_and_result
 
 from contact import composite_modulus, hertz_sphere, material
 from contact.rotor.mechanics import paper_ball_loads
 from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD
 from contact.roughcontact.greenwood_tripp import greenwood_tripp
-
-
-def min_time(fn, repeats: int = 5) -> tuple[float, object]:
-    best, out = float("inf"), None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def main() -> None:
@@ -36,14 +28,14 @@ def main() -> None:
     plate = surfmet.read(str(data / "paper_plate.x3p"))
     ball = surfmet.read(str(data / "paper_ball.x3p"))
     prep = prepare_scans(plate, ball)
-    t, sp = min_time(lambda: scan_summits(prep), 3)
+    t, sp = min_time_and_result(lambda: scan_summits(prep), 3)
     print(f"summit parameters of the paper's pair (two PSDs): {1e3 * t:.1f} ms")
     steel, alu = material("steel"), material("aluminium")
     e_star = composite_modulus(steel, alu)
     kw = dict(sigma_s=sp.sigma_s, density=sp.density, summit_radius=sp.radius)
     for load in (HERTZ_CHECK_LOAD, *paper_ball_loads().values()):
         for hardness in (None, alu.hardness):
-            t, sol = min_time(lambda load=load, hardness=hardness: greenwood_tripp(
+            t, sol = min_time_and_result(lambda load=load, hardness=hardness: greenwood_tripp(
                 load, BALL_RADIUS, e_star, hardness=hardness, **kw))
             print(f"paper pair, W = {load:6.3f} N, {'capped' if hardness else 'elastic'}: "
                   f"{1e3 * t:6.1f} ms  (a*/a0 = {sol.a_star / sol.a0:.3f}, "
@@ -53,7 +45,7 @@ def main() -> None:
     for alpha in (0.01, 0.1, 1.0, 4.0):
         sig = alpha * hz.a**2 / radius
         beta = sig / 1e-3
-        t, sol = min_time(lambda sig=sig, beta=beta: greenwood_tripp(
+        t, sol = min_time_and_result(lambda sig=sig, beta=beta: greenwood_tripp(
             load, radius, e, sigma_s=sig, density=0.05 / (beta * sig), summit_radius=beta))
         print(f"generic population, α = {alpha:5.2f}: {1e3 * t:6.1f} ms "
               f"(a*/a0 = {sol.a_star / hz.a:.3f})")

@@ -9,24 +9,14 @@ tens of thousands of motifs before Wolf pruning.
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
+from _timing import min_time
 from scipy.ndimage import gaussian_filter1d
 
 from profiles import feature_parameters, probability_parameters, profile_parameters, rk_parameters
 
 N = 100_000
 DX = 0.5e-6
-
-
-def min_time(fn, repeats: int = 5) -> float:
-    best = float("inf")
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def profile(seed: int = 0) -> np.ndarray:

@@ -8,8 +8,9 @@ of each level, so the study's overhead over the native solve shows.
 
 from __future__ import annotations
 
-import time
 from importlib import resources
+
+from _timing import min_time
 
 import surfmet
 from contact.materials import composite_modulus, material
@@ -23,15 +24,6 @@ def _data(name: str) -> str:
     return str(resources.files("surfmet").joinpath("data", name))
 
 
-def best(fn, repeats: int = 2) -> float:
-    out = float("inf")
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        out = min(out, time.perf_counter() - t0)
-    return out
-
-
 def main() -> None:
     plate, ball = surfmet.read(_data("paper_plate.x3p")), surfmet.read(_data("paper_ball.x3p"))
     steel, alu = material("steel"), material("aluminium")
@@ -42,12 +34,12 @@ def main() -> None:
     kw = dict(hardness=alu.hardness, sigma=prep.sigma)
     sphere_study(*args, **kw)  # warm the numba cache
     runs = []
-    t_all = best(lambda: runs.append(sphere_study(*args, **kw)))
+    t_all = min_time(lambda: runs.append(sphere_study(*args, **kw)), 2)
     levels = runs[-1].levels
     print(f"contact study 10 N, 4 levels (8x..1x): {t_all:.2f} s; per level "
           + ", ".join(f"{lv.pixel * 1e6:g} µm ({lv.grid}²) {lv.seconds:.2f} s" for lv in levels))
-    t_roll = best(lambda: rolling_study(plate, ball, radius=0.02, loads=log_loads(1, 100, 7),
-                                        materials="steel,aluminium"))
+    t_roll = min_time(lambda: rolling_study(plate, ball, radius=0.02, loads=log_loads(1, 100, 7),
+                                            materials="steel,aluminium"), 2)
     print(f"rolling study 1-100 N, 7 loads, 4 levels: {t_roll:.2f} s")
 
 

@@ -8,10 +8,10 @@ block-directory layout, including block types that surfalize cannot handle.
 from __future__ import annotations
 
 import struct
-import tracemalloc
 
 import numpy as np
 import pytest
+from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
@@ -183,9 +183,4 @@ def test_byte_image_is_not_heights_and_sizes_must_agree():
 def test_tiny_file_claiming_huge_directory_and_grid():
     buf = bytearray(opd_file(basic_blocks(array_block(np.zeros((2, 2)), "<f4"))))
     struct.pack_into("<I", buf, 20, 24 * 60000)
-    tracemalloc.start()
-    with pytest.raises(SurfmetFormatError):
-        read_bytes(bytes(buf), name="huge.opd")
-    _, peak = tracemalloc.get_traced_memory()
-    tracemalloc.stop()
-    assert peak < 20e6
+    refused_cheaply(buf, name="huge.opd")

@@ -156,6 +156,21 @@ def check_step(value: float, name: str, fmt: str, what: str = "pixel size") -> f
     return v
 
 
+def channel_index(names: list[str], channel: int | str, r: ByteReader,
+                  what: str = "channel") -> int:
+    """The index a user's ``channel`` names: a name (case-insensitive, first match) or an
+    index (a string of digits counts as an index); fails with a format error otherwise."""
+    if isinstance(channel, str) and not channel.lstrip("-").isdigit():
+        for i, n in enumerate(names):
+            if n.lower() == channel.lower():
+                return i
+        r.fail(f"no {what} named {channel!r}; {what}s: {names}")
+    index = int(channel)
+    if not 0 <= index < len(names):
+        r.fail(f"{what} {index} does not exist: the file holds {len(names)}")
+    return index
+
+
 def decode_text(buf: bytes) -> str:
     """Decode text files: UTF-8 (with or without BOM), else Latin-1 (never fails)."""
     try:

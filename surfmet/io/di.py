@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -133,16 +133,7 @@ def _pick(channels: list[dict[str, Any]], channel: int | str | None, r: ByteRead
             if ch["scale"] is not None:
                 return ch
         r.fail(f"no height channel among {[c['name'] for c in channels]}")
-    if isinstance(channel, str) and not channel.lstrip("-").isdigit():
-        hits = [c for c in channels if c["name"].lower() == channel.lower()]
-        if not hits:
-            r.fail(f"no channel named {channel!r}; channels: {[c['name'] for c in channels]}")
-        ch = hits[0]
-    else:
-        index = int(channel)
-        if not 0 <= index < len(channels):
-            r.fail(f"channel {index} does not exist: the file holds {len(channels)}")
-        ch = channels[index]
+    ch = channels[channel_index([c["name"] for c in channels], channel, r)]
     if ch["scale"] is None:
         r.fail(f"channel {ch['name']!r} does not hold heights (its scale is not a length)")
     return ch

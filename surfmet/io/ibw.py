@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -85,15 +85,7 @@ def _channel_names(labels: bytes, nlayers: int) -> list[str]:
 def _pick(names: list[str], channel: int | str | None, r: ByteReader) -> int:
     if channel is None:
         return next((i for i, n in enumerate(names) if n.lower().startswith("height")), 0)
-    if isinstance(channel, str) and not channel.lstrip("-").isdigit():
-        for i, n in enumerate(names):
-            if n.lower() == channel.lower():
-                return i
-        r.fail(f"no channel named {channel!r}; channels: {names}")
-    index = int(channel)
-    if not 0 <= index < len(names):
-        r.fail(f"channel {index} does not exist: the file holds {len(names)}")
-    return index
+    return channel_index(names, channel, r)
 
 
 def _note(note: str) -> dict[str, Any]:

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -79,15 +79,7 @@ def _pick(channels: list[dict[str, str]], channel: int | str | None, r: ByteRead
             if is_height(c):
                 return i
         r.fail(f"no channel holds heights (channels: {labels})")
-    if isinstance(channel, str) and not channel.lstrip("-").isdigit():
-        hits = [i for i, n in enumerate(labels) if n.lower() == channel.lower()]
-        if not hits:
-            r.fail(f"no channel named {channel!r}; channels: {labels}")
-        index = hits[0]
-    else:
-        index = int(channel)
-        if not 0 <= index < len(channels):
-            r.fail(f"channel {index} does not exist: the file holds {len(channels)}")
+    index = channel_index(labels, channel, r)
     if not is_height(channels[index]):
         r.fail(f"channel {index} ({labels[index]}) is in {channels[index].get('bufferUnit')!r}, "
                "not a length")

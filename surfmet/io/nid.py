@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -96,15 +96,7 @@ def _pick(heights: list[dict[str, Any]], channel: int | str | None, r: ByteReade
         r.fail("no data set holds heights (no value unit is a length)")
     if channel is None:
         return heights[0]
-    if isinstance(channel, str) and not channel.lstrip("-").isdigit():
-        for d in heights:
-            if d["name"].lower() == channel.lower():
-                return d
-        r.fail(f"no height channel named {channel!r}; height channels: {names}")
-    index = int(channel)
-    if not 0 <= index < len(heights):
-        r.fail(f"height channel {index} does not exist: the file holds {len(heights)}")
-    return heights[index]
+    return heights[channel_index(names, channel, r, what="height channel")]
 
 
 def _metadata(sections: dict[str, dict[str, str]], ds: dict[str, Any],
