@@ -51,3 +51,10 @@ def test_readme_numbers_of_the_paper_pair():
     psi = plasticity_index(chk.e_star, contact_hardness(chk.ball_material, chk.plate_material),
                            chk.summits)
     assert round(psi, 1) == float(psi_text.group(1))
+    # the share of the real contact area at the hardness (quoted over 10 N and the rotor's
+    # loads): the 10 N value lies in the quoted range
+    share = re.search(r"(\d+)–(\d+) % of the real contact area is at the hardness", readme)
+    assert share
+    c = chk.comparison
+    assert int(share.group(1)) <= round(100 * c.plastic_fraction / c.area_fraction) \
+        <= int(share.group(2))
