@@ -122,40 +122,52 @@ def free_kernel_spectrum(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
 
 
 @nb.njit(cache=True)
+def _alias_terms(a, n_alias, step, s, q):  # pragma: no cover - compiled
+    """Fill s[k] = sinc(z) and q[k] = 2 z / step, z = a + pi m, m = k - n_alias.
+
+    ``a`` is q step / 2 of the base wavenumber; z runs over its aliases. sin(z) is
+    +-sin(a), so one sine serves every alias.
+    """
+    sa = math.sin(a)
+    for k in range(2 * n_alias + 1):
+        m = k - n_alias
+        z = a + math.pi * m
+        if z == 0.0:
+            s[k] = 1.0
+        else:
+            s[k] = (sa if m % 2 == 0 else -sa) / z
+        q[k] = 2.0 * z / step
+
+
+@nb.njit(cache=True)
 def periodic_love_spectrum(ny, nx, dx, dy, n_alias):  # pragma: no cover - compiled
     """Alias sum of 2/|q'| sinc(qx' dx/2) sinc(qy' dy/2) on the rfft grid (E* = 1)."""
     nxh = nx // 2 + 1
+    na = 2 * n_alias + 1
     out = np.zeros((ny, nxh))
+    # The same aliases serve every row: the x terms once per column, the y terms per row.
+    sxs = np.empty((nxh, na))
+    qxs = np.empty((nxh, na))
+    for j in range(nxh):
+        _alias_terms(math.pi * j / nx, n_alias, dx, sxs[j], qxs[j])
+    sy = np.empty(na)
+    qy = np.empty(na)
     # The sum is even in qy: compute rows 0..ny/2 and mirror the others.
     for i in range(ny // 2 + 1):
-        ky = i
-        ay = math.pi * ky / ny  # qy dy / 2
-        say = math.sin(ay)
+        _alias_terms(math.pi * i / ny, n_alias, dy, sy, qy)
         for j in range(nxh):
             if i == 0 and j == 0:
                 continue
-            ax = math.pi * j / nx  # qx dx / 2
-            sax = math.sin(ax)
+            sx = sxs[j]
+            qx = qxs[j]
             acc = 0.0
-            for m in range(-n_alias, n_alias + 1):
-                zx = ax + math.pi * m
-                if zx == 0.0:
-                    sx = 1.0
-                else:
-                    sx = (sax if m % 2 == 0 else -sax) / zx
-                if sx == 0.0:
+            for kx in range(na):
+                if sx[kx] == 0.0:
                     continue
-                qx = 2.0 * zx / dx
-                for n in range(-n_alias, n_alias + 1):
-                    zy = ay + math.pi * n
-                    if zy == 0.0:
-                        sy = 1.0
-                    else:
-                        sy = (say if n % 2 == 0 else -say) / zy
-                    if sy == 0.0:
+                for ky in range(na):
+                    if sy[ky] == 0.0:
                         continue
-                    qy = 2.0 * zy / dy
-                    acc += 2.0 / math.sqrt(qx * qx + qy * qy) * sx * sy
+                    acc += 2.0 / math.sqrt(qx[kx] * qx[kx] + qy[ky] * qy[ky]) * sx[kx] * sy[ky]
             out[i, j] = acc
     for i in range(ny // 2 + 1, ny):
         for j in range(nxh):

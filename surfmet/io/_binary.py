@@ -18,6 +18,11 @@ from surfmet.errors import SurfmetFormatError
 MAX_POINTS = 2**31
 
 
+def format_error(name: str, fmt: str, problem: str) -> SurfmetFormatError:
+    """The error every reader raises for a bad file: ``"<file>: <format> file: <problem>"``."""
+    return SurfmetFormatError(f"{name}: {fmt} file: {problem}")
+
+
 class ByteReader:
     """A cursor over a bytes object whose reads fail with a format error when short.
 
@@ -47,7 +52,7 @@ class ByteReader:
 
     def fail(self, problem: str) -> NoReturn:
         """Raise a format error naming the file, the format and the problem."""
-        raise SurfmetFormatError(f"{self.name}: {self.fmt} file: {problem}")
+        raise format_error(self.name, self.fmt, problem)
 
     def need(self, n: int, what: str = "data") -> None:
         """Fail unless ``n`` more bytes are available at the cursor."""
@@ -134,9 +139,9 @@ def check_grid(nx: int, ny: int, name: str, fmt: str, available: int | None = No
             f"{name}: {fmt} file: grid size {nx!r} x {ny!r} is not an integer"
         ) from None
     if nx <= 0 or ny <= 0:
-        raise SurfmetFormatError(f"{name}: {fmt} file: grid size {nx} x {ny} has no points")
+        raise format_error(name, fmt, f"grid size {nx} x {ny} has no points")
     if nx * ny > MAX_POINTS:
-        raise SurfmetFormatError(f"{name}: {fmt} file: absurd grid size {nx} x {ny}")
+        raise format_error(name, fmt, f"absurd grid size {nx} x {ny}")
     if available is not None and nx * ny * itemsize > available:
         raise SurfmetFormatError(
             f"{name}: {fmt} file: truncated: header says {nx} x {ny} points "
@@ -150,9 +155,9 @@ def check_step(value: float, name: str, fmt: str, what: str = "pixel size") -> f
     try:
         v = float(value)
     except (TypeError, ValueError):
-        raise SurfmetFormatError(f"{name}: {fmt} file: {what} {value!r} is not a number") from None
+        raise format_error(name, fmt, f"{what} {value!r} is not a number") from None
     if not (np.isfinite(v) and v > 0):
-        raise SurfmetFormatError(f"{name}: {fmt} file: {what} {value!r} is not a positive length")
+        raise format_error(name, fmt, f"{what} {value!r} is not a positive length")
     return v
 
 

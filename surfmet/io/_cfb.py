@@ -18,7 +18,7 @@ from typing import NoReturn
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
+from surfmet.io._binary import format_error
 
 SIGNATURE = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
 _END = 0xFFFFFFFA  # sector numbers from here on are markers (end of chain, free, FAT, DIFAT)
@@ -47,7 +47,7 @@ class CompoundFile:
         self.minifat = np.frombuffer(self._chain_bytes(minifat_start, None), "<u4")
 
     def fail(self, problem: str) -> NoReturn:
-        raise SurfmetFormatError(f"{self.name}: {self.fmt} file: {problem}")
+        raise format_error(self.name, self.fmt, problem)
 
     def _sector(self, n: int) -> bytes:
         if n >= self.nsectors:

@@ -11,7 +11,7 @@ import re
 import zipfile
 from xml.etree import ElementTree as ET
 
-from surfmet.errors import SurfmetFormatError
+from surfmet.io._binary import format_error
 from surfmet.io._zip import read_member
 
 _MAIN = "{http://schemas.openxmlformats.org/spreadsheetml/2006/main}"
@@ -26,12 +26,11 @@ Cells = dict[tuple[str, int], "str | float"]
 
 def _parse(raw: bytes, name: str, fmt: str, what: str) -> ET.Element:
     if b"<!DOCTYPE" in raw[:65536] or b"<!ENTITY" in raw[:65536]:
-        raise SurfmetFormatError(f"{name}: {fmt} file: {what} declares a DOCTYPE; refused")
+        raise format_error(name, fmt, f"{what} declares a DOCTYPE; refused")
     try:
         return ET.fromstring(raw)
     except ET.ParseError as exc:
-        raise SurfmetFormatError(f"{name}: {fmt} file: {what} is not well-formed XML "
-                                 f"({exc})") from None
+        raise format_error(name, fmt, f"{what} is not well-formed XML ({exc})") from None
 
 
 def sheet_paths(zf: zipfile.ZipFile, name: str, fmt: str) -> dict[str, str]:

@@ -12,6 +12,7 @@ import zipfile
 import zlib
 
 from surfmet.errors import SurfmetFormatError
+from surfmet.io._binary import format_error
 
 ZIP_MAGIC = b"PK\x03\x04"
 # Deflate cannot expand data by more than about 1032:1; a member claiming more is lying.
@@ -23,8 +24,8 @@ def open_zip(buf: bytes, name: str, fmt: str) -> zipfile.ZipFile:
     try:
         return zipfile.ZipFile(io.BytesIO(buf))
     except (zipfile.BadZipFile, OSError, ValueError, EOFError) as exc:
-        raise SurfmetFormatError(
-            f"{name}: {fmt} file: not a readable zip archive: truncated or corrupted ({exc})"
+        raise format_error(
+            name, fmt, f"not a readable zip archive: truncated or corrupted ({exc})"
         ) from None
 
 
@@ -32,7 +33,7 @@ def read_member(zf: zipfile.ZipFile, member: str, name: str, fmt: str, limit: in
     """The bytes of ``member`` after checking its declared sizes (at most ``limit``)."""
 
     def fail(problem: str) -> SurfmetFormatError:
-        return SurfmetFormatError(f"{name}: {fmt} file: {problem}")
+        return format_error(name, fmt, problem)
 
     try:
         info = zf.getinfo(member)

@@ -32,7 +32,14 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import MAX_POINTS, check_grid, check_step, decode_text, looks_like_text
+from surfmet.io._binary import (
+    MAX_POINTS,
+    check_grid,
+    check_step,
+    decode_text,
+    format_error,
+    looks_like_text,
+)
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -89,7 +96,7 @@ def _is_asc(buf: bytes) -> bool:
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: {FORMAT} file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _parse_matrix(lines: list[str], start: int, name: str) -> np.ndarray:

@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import decode_text, looks_like_text
+from surfmet.io._binary import decode_text, format_error, looks_like_text
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile
 from surfmet.units import length_factor, quantity
@@ -70,7 +70,7 @@ _UNIFORM_RTOL = 1e-3
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: {FORMAT} file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _is_dektak(buf: bytes) -> bool:

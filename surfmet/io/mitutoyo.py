@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import check_step
+from surfmet.io._binary import check_step, format_error
 from surfmet.io._xlsx import Cells, read_cells, shared_strings, sheet_paths
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip
 from surfmet.io.registry import register_reader
@@ -61,7 +61,7 @@ def _is_mitutoyo(buf: bytes) -> bool:
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: Mitutoyo xlsx file: {problem}")
+    return format_error(name, "Mitutoyo xlsx", problem)
 
 
 def _column(cells: Cells, col: str) -> list[tuple[int, str | float]]:

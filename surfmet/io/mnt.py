@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import MAX_POINTS, check_grid, check_step
+from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
 from surfmet.io._cfb import SIGNATURE, CompoundFile
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
@@ -49,7 +49,7 @@ def _is_mnt(buf: bytes) -> bool:
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: mnt file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _entries(data: bytes, name: str, where: str) -> list[tuple[int, bytes]]:

@@ -17,8 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
-from surfmet.io._binary import MAX_POINTS
+from surfmet.io._binary import MAX_POINTS, format_error
 from surfmet.io.registry import register_reader, register_writer
 from surfmet.model import Profile, Topography
 from surfmet.units import jsonable, length_factor
@@ -48,12 +47,11 @@ def _check_header(buf: bytes, name: str) -> None:
         else:
             shape, _, dtype = np.lib.format.read_array_header_2_0(f)
     except Exception as exc:
-        raise SurfmetFormatError(f"{name}: npy file: unreadable header ({exc})") from None
+        raise format_error(name, "npy", f"unreadable header ({exc})") from None
     count = int(np.prod(shape, dtype=np.int64)) if shape else 1
     if count > MAX_POINTS or count * dtype.itemsize > len(buf):
-        raise SurfmetFormatError(
-            f"{name}: npy file: truncated: header says shape {shape} but the file has "
-            f"{len(buf)} bytes"
+        raise format_error(
+            name, "npy", f"truncated: header says shape {shape} but the file has {len(buf)} bytes"
         )
 
 
@@ -61,7 +59,7 @@ def _load_npy(buf: bytes, name: str) -> np.ndarray:
     _check_header(buf, name)
     arr = np.load(io.BytesIO(buf), allow_pickle=False)
     if arr.dtype.kind not in "fiub":
-        raise SurfmetFormatError(f"{name}: npy file: heights must be numeric, got {arr.dtype}")
+        raise format_error(name, "npy", f"heights must be numeric, got {arr.dtype}")
     return arr.astype(np.float64)
 
 
@@ -77,7 +75,7 @@ def decode_npy(buf: bytes, name: str, dx: float | None = None, dy: float | None 
         return Topography(z, sx, sx if dy is None else float(dy), md)
     if z.ndim == 1:
         return Profile(z, 1.0 if dx is None else float(dx), metadata=md)
-    raise SurfmetFormatError(f"{name}: npy file: expected a 1D or 2D array, got shape {z.shape}")
+    raise format_error(name, "npy", f"expected a 1D or 2D array, got shape {z.shape}")
 
 
 @register_reader("npz", extensions=("npz",), description="surfmet NumPy archive (SI, exact)",
@@ -89,14 +87,14 @@ def decode_npz(buf: bytes, name: str) -> Topography | Profile:
     with zipfile.ZipFile(io.BytesIO(buf)) as zf:
         members = {n.removesuffix(".npy"): n for n in zf.namelist()}
         if "kind" not in members:
-            raise SurfmetFormatError(f"{name}: npz file: no 'kind' entry (not written by surfmet)")
+            raise format_error(name, "npz", "no 'kind' entry (not written by surfmet)")
 
         def get(key: str) -> np.ndarray:
             if key not in members:
-                raise SurfmetFormatError(f"{name}: npz file: missing entry {key!r}")
+                raise format_error(name, "npz", f"missing entry {key!r}")
             info = zf.getinfo(members[key])
             if info.file_size > 16 * MAX_POINTS:
-                raise SurfmetFormatError(f"{name}: npz file: entry {key!r} is absurdly large")
+                raise format_error(name, "npz", f"entry {key!r} is absurdly large")
             data = zf.read(members[key])
             _check_header(data, name)
             return np.load(io.BytesIO(data), allow_pickle=False)
@@ -104,13 +102,13 @@ def decode_npz(buf: bytes, name: str) -> Topography | Profile:
         kind = str(get("kind"))
         md = json.loads(str(get("metadata"))) if "metadata" in members else {}
         if not isinstance(md, dict):
-            raise SurfmetFormatError(f"{name}: npz file: metadata is not a JSON object")
+            raise format_error(name, "npz", "metadata is not a JSON object")
         if kind == "areal":
             return Topography(get("heights"), float(get("dx")), float(get("dy")), md)
         if kind == "profile":
             x = get("x") if "x" in members else None
             return Profile(get("z"), float(get("dx")), x, md)
-    raise SurfmetFormatError(f"{name}: npz file: unknown kind {kind!r}")
+    raise format_error(name, "npz", f"unknown kind {kind!r}")
 
 
 @register_writer("npz")

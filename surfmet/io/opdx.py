@@ -149,10 +149,10 @@ def _read_items(r: ByteReader, end: int, prefix: str, tree: dict[str, Any], dept
             _name(r, end)
             n = _varlen(r, end)
             tree[path] = r.bytes(n, path)
-        elif kind == 0x40:
+        elif kind in (0x40, 0x7C):  # an array of doubles / of positions, read later
             _name(r, end)
             n = _varlen(r, end)
-            tree[path] = ("doubles", r.pos, n)
+            tree[path] = ("doubles" if kind == 0x40 else "positions", r.pos, n)
             r.skip(n, path)
         elif kind == 0x42:
             _name(r, end)
@@ -162,11 +162,6 @@ def _read_items(r: ByteReader, end: int, prefix: str, tree: dict[str, Any], dept
             while r.pos < stop:
                 names.append(_name(r, stop))
             tree[path] = names
-        elif kind == 0x7C:
-            _name(r, end)
-            n = _varlen(r, end)
-            tree[path] = ("positions", r.pos, n)
-            r.skip(n, path)
         elif kind == 0x00:
             _name(r, end)
             r.unpack("<I", path)

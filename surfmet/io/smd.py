@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError
-from surfmet.io._binary import MAX_POINTS, check_grid, check_step
+from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
@@ -49,7 +49,7 @@ def _is_smd(buf: bytes) -> bool:
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: smd file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _axis(fields: list[str], name: str) -> dict[str, Any]:

@@ -49,7 +49,7 @@ from xml.etree import ElementTree as ET
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError
-from surfmet.io._binary import MAX_POINTS, check_grid, check_step
+from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
@@ -77,7 +77,7 @@ def _is_x3p(buf: bytes) -> bool:
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: x3p file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _local(tag: str) -> str:

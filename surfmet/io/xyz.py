@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import MAX_POINTS, decode_text, looks_like_text
+from surfmet.io._binary import MAX_POINTS, decode_text, format_error, looks_like_text
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 from surfmet.units import length_factor, quantity
@@ -40,7 +40,7 @@ _MAX_EMPTY_RATIO = 4
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
-    return SurfmetFormatError(f"{name}: {FORMAT} file: {problem}")
+    return format_error(name, FORMAT, problem)
 
 
 def _delimiter(line: str) -> str | None:
