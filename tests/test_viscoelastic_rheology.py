@@ -76,3 +76,20 @@ def test_bad_rheology() -> None:
         pair_creep(None, None)
     with pytest.raises(ContactInputError):
         CreepSeries(1e-9, (1e-9,), (-1.0,))
+
+
+def test_sls_from_loss_peak() -> None:
+    from contact.viscoelastic.loss import loss_data, sls_from_loss
+
+    sls = sls_from_loss(70e9, 0.33, 1e-3, 2e-3)
+    w = np.geomspace(1.0, 1e6, 20001)
+    tsig = sls.tau_sigma
+    e = sls.E_r + (sls.E_g - sls.E_r) * 1j * w * tsig / (1 + 1j * w * tsig)  # E*(omega)
+    tan = e.imag / e.real
+    k = int(np.argmax(tan))
+    assert tan[k] == pytest.approx(1e-3, rel=1e-6)
+    assert w[k] == pytest.approx(1 / 2e-3, rel=2e-3)
+    assert np.sqrt(sls.E_g * sls.E_r) == pytest.approx(70e9)
+    assert loss_data("al").low <= loss_data("al").typical <= loss_data("al").high
+    with pytest.raises(ContactInputError, match="no loss data"):
+        loss_data("unobtainium")
