@@ -10,6 +10,10 @@ viscoelastic plate; roughness on the plate itself travels through the contact, s
 steady state does not exist and the roughness is then *frozen* in the contact frame (the
 ``kinematics="frozen"`` reading of :mod:`contact.rolling`); average several track positions
 for a scan. The roughness map is sampled bilinearly on the solver's grid around ``centre``.
+On a rough map the pressure's moment about the axis is not zero even without loss (the
+asperities in contact lie unevenly ahead of and behind the apex), so the moment of the
+elastic solution on the same map (compliance (C_g + C_r)/2) is subtracted: M_r is the part
+the material's creep adds.
 """
 
 from __future__ import annotations
@@ -21,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
-from contact.viscoelastic.rheology import pair_creep
+from contact.viscoelastic.rheology import CreepSeries, pair_creep
 from contact.viscoelastic.surface import rolling_sphere
 
 
@@ -87,6 +91,7 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
         if roughness_dx is None:
             raise ContactInputError("a roughness map needs its pitch roughness_dx (m)")
         z = _window(roughness, roughness_dx, roughness_dy or roughness_dx, centre, half, n)
+    elastic = CreepSeries(0.5 * (creep.glassy + creep.relaxed))
     mus = np.zeros(w.size)
     results = []
     seq = progress(range(w.size)) if progress is not None else range(w.size)
@@ -94,6 +99,10 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
         res = rolling_sphere(radius, float(w[k]), creep, speed, n=n, half_width=half,
                              roughness=z, tol=tol)
         mus[k] = res.rolling_resistance
+        if z is not None:  # the lossless moment of the same rough geometry
+            ref = rolling_sphere(radius, float(w[k]), elastic, speed, n=n, half_width=half,
+                                 roughness=z, tol=tol)
+            mus[k] -= ref.rolling_resistance
         results.append(res)
     forces = mus * w
     moments = forces * radius
