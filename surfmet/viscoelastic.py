@@ -247,3 +247,59 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     notes = ("micro-slip (dissimilar elastic constants) is the tangential solver's "
              "'--model microslip'; it is not in this table",)
     return MechanismsReport(comp, table3_accelerations(), notes)
+
+
+def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
+                                 viscoelastic: list[str], speed: float, line: bool = False,
+                                 grid: int | None = None, plate: Any = None, ball: Any = None,
+                                 spikes: bool = True) -> Any:
+    """One steady viscoelastic rolling solve (the normal problem) of a ball or a cylinder.
+
+    Parameters
+    ----------
+    radius : float
+        Ball or cylinder radius (m).
+    load : float
+        N (N), or N/m with ``line``.
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``; the ``viscoelastic`` texts replace either body by an SLS.
+    viscoelastic : list of str
+        ``BODY:Eg=..:Er=..:tau=..`` texts (:func:`parse_viscoelastic`).
+    speed : float
+        V (m/s), > 0.
+    line : bool
+        Plane strain (cylinder) instead of a ball.
+    grid : int, optional
+        Cells (line: default 1024) or cells per side (ball: default 128).
+    plate, ball : Topography or path, optional
+        Scans for a rough ball contact (the roughness frozen in the contact frame).
+
+    Returns
+    -------
+    contact.viscoelastic.RollingResult
+    """
+    from contact.viscoelastic import pair_creep
+    from contact.viscoelastic.line import rolling_cylinder
+    from contact.viscoelastic.surface import rolling_sphere
+    from surfmet.materials import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    bodies: dict[str, Any] = {"ball": ball_m, "plate": plate_m}
+    for text in viscoelastic:
+        name, sls = parse_viscoelastic(text, ball_m, plate_m)
+        bodies[name] = sls
+    creep = pair_creep(bodies["ball"], bodies["plate"])
+    if line:
+        if plate is not None or ball is not None:
+            raise SurfmetInputError("--line takes no scans")
+        return rolling_cylinder(radius, load, creep, speed, n=grid or 1024)
+    n = grid or 128
+    z = None
+    if plate is not None or ball is not None:
+        from contact.viscoelastic.sweep import roughness_window
+        from surfmet.hertz_check import prepare_scans
+
+        pair = prepare_scans(plate, ball, spikes=spikes).pair
+        half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
+        z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
+    return rolling_sphere(radius, load, creep, speed, n=n, roughness=z)

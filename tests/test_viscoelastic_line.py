@@ -110,3 +110,16 @@ def test_bad_input() -> None:
     for v in (0.0, -1.0, float("nan")):
         with pytest.raises(ContactInputError, match="speed"):
             rolling_cylinder(R, W, creep, v, n=64)
+
+
+@pytest.mark.parametrize("scale, modulus", [(1e-6, "relaxed"), (1e6, "glassy")])
+def test_prony_series_limits(scale: float, modulus: str) -> None:
+    # two relaxation times, both far below (or above) the passage time a/V
+    from contact.viscoelastic import PronySeries
+
+    pr = PronySeries(1.0e9, (1.5e9, 0.5e9), (0.2 * scale, 3.0 * scale), nu=NU)
+    E = pr.E_inf if modulus == "relaxed" else pr.E_g
+    res = rolling_cylinder(R, W, pair_creep(None, pr), 1.0, n=1024)
+    hz = hertz_cylinder(R, W, E / (1 - NU**2))
+    assert res.pmax == pytest.approx(hz.p0, rel=0.01)
+    assert res.leading - res.trailing == pytest.approx(2 * hz.a, rel=0.01)

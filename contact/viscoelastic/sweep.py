@@ -29,8 +29,8 @@ from contact.viscoelastic.rheology import CreepSeries, pair_creep
 from contact.viscoelastic.surface import rolling_sphere
 
 
-def _window(roughness: np.ndarray, dx: float, dy: float, centre: tuple[float, float] | None,
-            half: float, n: int) -> np.ndarray:
+def roughness_window(roughness: np.ndarray, dx: float, dy: float,
+                     centre: tuple[float, float] | None, half: float, n: int) -> np.ndarray:
     """The roughness (m) on an n x n grid of half-width ``half`` centred on ``centre``."""
     from scipy.ndimage import map_coordinates
 
@@ -90,7 +90,7 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
     if roughness is not None:
         if roughness_dx is None:
             raise ContactInputError("a roughness map needs its pitch roughness_dx (m)")
-        z = _window(roughness, roughness_dx, roughness_dy or roughness_dx, centre, half, n)
+        z = roughness_window(roughness, roughness_dx, roughness_dy or roughness_dx, centre, half, n)
     elastic = CreepSeries(0.5 * (creep.glassy + creep.relaxed))
     mus = np.zeros(w.size)
     results = []
