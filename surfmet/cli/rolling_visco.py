@@ -35,26 +35,15 @@ def _loss(text: str | None) -> tuple[float, float] | None:
     return a, b
 
 
-def _speed(text: str) -> float:
-    from surfmet.errors import SurfmetInputError
-
-    try:
-        v = float(str(text).removesuffix("m/s"))
-    except ValueError:
-        raise SurfmetInputError(f"--speed must be a number in m/s, got {text!r}") from None
-    if not v > 0 or v != v or v == float("inf"):
-        raise SurfmetInputError(f"--speed must be positive (m/s), got {text!r}")
-    return v
-
-
 def run_visco(args: argparse.Namespace) -> int:
     """Dispatch of --model viscoelastic / all."""
     from contact.rolling import log_loads
     from surfmet.cli._common import emit_json, log, progress
+    from surfmet.cli.rolling_contact_visco import speed_value
 
     lo, hi, n = args.loads
     n = 9 if n is None else n
-    speed = _speed(args.speed)
+    speed = speed_value(args.speed)
     if args.model == "all":
         from surfmet.viscoelastic import rolling_mechanisms
 
