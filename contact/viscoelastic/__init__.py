@@ -4,7 +4,8 @@ Modules: :mod:`.rheology` (SLS in CONTACT's convention, Prony series, the pair's
 series), :mod:`.hunter` (Hunter's 1961 closed form for a rigid cylinder), :mod:`.line`
 (plane-strain boundary elements, exact influence coefficients), :mod:`.surface` (3D FFT
 boundary elements on a grid), :mod:`.loss` (loss data of materials, with sources),
-:mod:`.result` (the result record).
+:mod:`.traction` (plane-strain steady rolling tractions with creep), :mod:`.result`
+(the result record).
 """
 
 from contact.viscoelastic.hunter import HunterSolution, hunter_cylinder
@@ -16,6 +17,7 @@ from contact.viscoelastic.rheology import (
     StandardLinearSolid,
     pair_creep,
 )
+from contact.viscoelastic.traction import TractionResult, steady_traction
 
 __all__ = [
     "CreepSeries",
@@ -23,8 +25,10 @@ __all__ = [
     "PronySeries",
     "RollingResult",
     "StandardLinearSolid",
+    "TractionResult",
     "hunter_cylinder",
     "pair_creep",
     "rolling_cylinder",
     "solve_line",
+    "steady_traction",
 ]
