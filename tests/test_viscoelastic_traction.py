@@ -65,3 +65,18 @@ def test_bad_friction_input() -> None:
         steady_traction(A, np.asarray(res.pressure), dx, 0.0, 0.0)
     with pytest.raises(ContactInputError, match="slides"):
         steady_traction(A, np.asarray(res.pressure), dx, 0.3, -0.3 * 6e5)
+
+
+def test_prescribed_creepage_gives_the_force_back() -> None:
+    G, nu = 1143e6, 0.4
+    body = StandardLinearSolid(2 * G * (1 + nu), G * (1 + nu), 0.009, nu)
+    creep = pair_creep(body, body)
+    x = (-7.92 + 0.16 * np.arange(99)) * 1e-3
+    dx = 0.16e-3
+    res = solve_line(x**2 / (2 * 0.05), dx, 6.0e5, creep, 1.0, x0=float(x[0]))
+    A, p = influence_matrix(99, dx, creep, 1.0), np.asarray(res.pressure)
+    by_force = steady_traction(A, p, dx, 0.3, -0.6 * 0.3 * 6.0e5)
+    by_creep = steady_traction(A, p, dx, 0.3, creepage=by_force.creepage)
+    assert by_creep.force == pytest.approx(by_force.force, rel=1e-9)
+    full = steady_traction(A, p, dx, 0.3, creepage=0.1)  # far beyond saturation: sliding
+    assert full.force == pytest.approx(-0.3 * 6.0e5, rel=1e-9) and not full.stick.any()

@@ -56,28 +56,35 @@ class TractionResult:
 
 
 def _solve(A: np.ndarray, dx: float, on: np.ndarray, state: np.ndarray, bound: np.ndarray,
-           force: float) -> tuple[np.ndarray, float]:
-    """Linear solve for q (stick cells) and xi, with slip cells at q = state * bound."""
+           force: float | None, creepage: float | None) -> tuple[np.ndarray, float]:
+    """Linear solve for q (stick cells) and xi (unless given), with slip cells at
+    q = state * bound."""
     n = A.shape[0]
     stick = np.flatnonzero(on & (state == 0))
     slipq = np.where(on & (state != 0), state * bound, 0.0)
     nxt = np.minimum(np.arange(n) + 1, n - 1)
     G = (A[nxt] - A) / dx  # du/dx rows (upwind)
     m = stick.size
+    q = slipq.copy()
+    if creepage is not None:  # stick: G q = xi
+        if m:
+            q[stick] = np.linalg.solve(G[np.ix_(stick, stick)],
+                                       creepage - G[stick] @ slipq)
+        return q, float(creepage)
     M = np.zeros((m + 1, m + 1))
     M[:m, :m] = -G[np.ix_(stick, stick)]
     M[:m, m] = 1.0
     M[m, :m] = dx
     rhs = np.concatenate((G[stick] @ slipq, [force - dx * slipq.sum()]))
     sol = np.linalg.solve(M, rhs)
-    q = slipq.copy()
     q[stick] = sol[:m]
     return q, float(sol[m])
 
 
-def steady_traction(A: np.ndarray, pressure: np.ndarray, dx: float, mu: float, force: float,
+def steady_traction(A: np.ndarray, pressure: np.ndarray, dx: float, mu: float,
+                    force: float | None = None, *, creepage: float | None = None,
                     max_iter: int = 200) -> TractionResult:
-    """Steady rolling tractions for a prescribed total tangential force.
+    """Steady rolling tractions for a prescribed total tangential force or creepage.
 
     Parameters
     ----------
@@ -90,20 +97,27 @@ def steady_traction(A: np.ndarray, pressure: np.ndarray, dx: float, mu: float, f
         Cell pitch (m).
     mu : float
         Coefficient of friction, > 0.
-    force : float
-        F_x on body 1 (N/m), |F| < mu N.
+    force : float, optional
+        F_x on body 1 (N/m), |F| < mu N (default 0, free rolling, unless ``creepage``).
+    creepage : float, optional
+        xi instead of the force.
     """
     p = np.asarray(pressure, dtype=float)
     if not (np.isfinite(mu) and mu > 0):
         raise ContactInputError(f"the coefficient of friction must be positive, got {mu!r}")
+    if force is not None and creepage is not None:
+        raise ContactInputError("prescribe the tangential force or the creepage, not both")
+    if creepage is not None and not np.isfinite(creepage):
+        raise ContactInputError(f"the creepage must be a finite number, got {creepage!r}")
+    force = 0.0 if force is None and creepage is None else force
     on = p > 0
     bound = mu * p
-    if abs(force) >= bound.sum() * dx:
+    if force is not None and abs(force) >= bound.sum() * dx:
         raise ContactInputError("the tangential force reaches mu N: the roller slides")
     state = np.zeros(p.size)  # 0 stick, +-1 slip with q = state * mu p
     nxt = np.minimum(np.arange(p.size) + 1, p.size - 1)
     for it in range(1, max_iter + 1):
-        q, xi = _solve(A, dx, on, state, bound, force)
+        q, xi = _solve(A, dx, on, state, bound, force, creepage)
         u = A @ q
         s = xi - (u[nxt] - u) / dx
         over = on & (state == 0) & (np.abs(q) > bound * (1 + 1e-12))
