@@ -252,8 +252,10 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
 def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
                                  viscoelastic: list[str], speed: float, line: bool = False,
                                  grid: int | None = None, plate: Any = None, ball: Any = None,
-                                 spikes: bool = True) -> Any:
-    """One steady viscoelastic rolling solve (the normal problem) of a ball or a cylinder.
+                                 spikes: bool = True, mu: float | None = None,
+                                 creepage: float | None = None) -> tuple[Any, Any]:
+    """One steady viscoelastic rolling solve of a ball or a cylinder: the normal problem,
+    and for a cylinder with ``mu`` the tangential one (quasi-identical bodies).
 
     Parameters
     ----------
@@ -273,10 +275,13 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         Cells (line: default 1024) or cells per side (ball: default 128).
     plate, ball : Topography or path, optional
         Scans for a rough ball contact (the roughness frozen in the contact frame).
+    mu, creepage : float, optional
+        Coefficient of friction and creepage (default free rolling) for the tangential
+        tractions of a line contact (:func:`contact.viscoelastic.steady_traction`).
 
     Returns
     -------
-    contact.viscoelastic.RollingResult
+    (contact.viscoelastic.RollingResult, contact.viscoelastic.TractionResult or None)
     """
     from contact.viscoelastic import pair_creep
     from contact.viscoelastic.line import rolling_cylinder
@@ -292,7 +297,17 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
     if line:
         if plate is not None or ball is not None:
             raise SurfmetInputError("--line takes no scans")
-        return rolling_cylinder(radius, load, creep, speed, n=grid or 1024)
+        res = rolling_cylinder(radius, load, creep, speed, n=grid or 1024)
+        if mu is None:
+            return res, None
+        from contact.viscoelastic import steady_traction
+        from contact.viscoelastic.line import influence_matrix
+
+        dx = float(res.x[1] - res.x[0])
+        A = influence_matrix(res.x.size, dx, creep, speed)
+        return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
+    if mu is not None:
+        raise SurfmetInputError("viscoelastic tangential tractions are solved for --line only")
     n = grid or 128
     z = None
     if plate is not None or ball is not None:
@@ -302,4 +317,4 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         pair = prepare_scans(plate, ball, spikes=spikes).pair
         half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
         z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
-    return rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
+    return rolling_sphere(radius, load, creep, speed, n=n, roughness=z), None

@@ -58,12 +58,20 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
     if getattr(args, "speed", None) is None:
         raise SurfmetInputError("--viscoelastic needs --speed V (m/s)")
     line = bool(getattr(args, "line", False))
-    res = viscoelastic_rolling_contact(
+    res, tr = viscoelastic_rolling_contact(
         radius=args.radius, load=load_value(args.load, line), materials=args.materials,
         viscoelastic=args.viscoelastic, speed=speed_value(args.speed), line=line,
         grid=getattr(args, "grid", None), plate=getattr(args, "plate", None),
-        ball=getattr(args, "ball", None))
+        ball=getattr(args, "ball", None), mu=getattr(args, "mu", None),
+        creepage=getattr(args, "creepage", None))
     out = res.to_json()
+    if tr is not None:
+        dx = float(res.x[1] - res.x[0])
+        out.update({"creepage": {"value": tr.creepage, "unit": "1"},
+                    "fx": {"value": tr.force, "unit": "N/m"},
+                    "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
+                    "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"},
+                    "sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"})
     out["model"] = "viscoelastic, steady rolling, normal problem (frictionless)"
     out["direction"] = "the contact moves towards +x; the leading edge is at larger x"
     if args.json:
@@ -79,4 +87,10 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
           + ("  (2D: against a 1 m datum)" if line else ""))
     print(f"leading edge                    {res.leading * 1e6:.6g} µm")
     print(f"trailing edge                   {res.trailing * 1e6:.6g} µm")
+    if tr is not None:
+        dx = float(res.x[1] - res.x[0])
+        print(f"creepage                        {tr.creepage:.6g}")
+        print(f"fx                              {tr.force:.6g} N/m")
+        print(f"stick, slip length              {tr.stick.sum() * dx * 1e6:.5g} µm, "
+              f"{tr.slip.sum() * dx * 1e6:.5g} µm")
     return 0
