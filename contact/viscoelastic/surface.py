@@ -191,6 +191,7 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
     it = 0
     while it < max_outer:
         it += 1
+        # the mixed iterate predicts the next pressure better than the last one does
         g, res = step(x_in, np.clip(x_in, 0.0, None), tol)
         change = float(np.abs(g - p).max()) / max(float(g.max()), 1e-300)
         xs.append(x_in)
