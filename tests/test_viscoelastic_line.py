@@ -123,3 +123,20 @@ def test_prony_series_limits(scale: float, modulus: str) -> None:
     hz = hertz_cylinder(R, W, E / (1 - NU**2))
     assert res.pmax == pytest.approx(hz.p0, rel=0.01)
     assert res.leading - res.trailing == pytest.approx(2 * hz.a, rel=0.01)
+
+
+def test_rough_cylinder_contact_conditions() -> None:
+    rng = np.random.default_rng(7)
+    n = 512
+    z = 0.03 * A_R**2 / (2 * R) * np.convolve(rng.standard_normal(n), np.ones(8) / 8, "same")
+    creep = pair_creep(None, StandardLinearSolid(EG, ER, A_R, NU))
+    res = rolling_cylinder(R, W, creep, 1.0, n=n, roughness=z)
+    p = np.asarray(res.pressure)
+    dx = float(res.x[1] - res.x[0])
+    assert p.min() >= 0 and p.sum() * dx == pytest.approx(W, rel=1e-9)
+    h = np.asarray(res.x) ** 2 / (2 * R) - z
+    gap = h + np.asarray(res.displacement) - res.approach
+    scale = float(np.ptp(h[p > 0]))
+    assert np.abs(gap[p > 0]).max() < 1e-9 * scale  # closed where loaded
+    assert gap[p == 0].min() > -1e-9 * scale  # no overlap elsewhere
+    assert res.rolling_resistance > 0
