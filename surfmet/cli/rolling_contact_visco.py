@@ -94,3 +94,53 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
         print(f"stick, slip length              {tr.stick.sum() * dx * 1e6:.5g} µm, "
               f"{tr.slip.sum() * dx * 1e6:.5g} µm")
     return 0
+
+
+EPILOG = """examples:
+  surfmet rolling-contact --radius 20mm --load 5N --materials steel,pmma \\
+      --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms --speed 0.1
+  surfmet rolling-contact --line --radius 50mm --load 600N/mm --materials pmma,pmma \\
+      --viscoelastic ball:Eg=3.2GPa:Er=1.6GPa:tau=9ms:nu=0.4 \\
+      --viscoelastic plate:Eg=3.2GPa:Er=1.6GPa:tau=9ms:nu=0.4 --speed 1 --mu 0.3 --json
+
+The contact moves towards +x over both bodies; material enters at the leading edge. The
+rolling-resistance coefficient is the pressure's moment about the axis over N R.
+Creepage (v1 - v2)/V and fx act on body 1 (the ball or roller); --line solves plane strain
+with the load per unit length and, with --mu, the tangential tractions (quasi-identical
+bodies; free rolling unless --creepage).
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    """``surfmet rolling-contact`` for the viscoelastic normal problem (minimal command)."""
+    from surfmet.cli._common import add_ball_arguments, add_json_flag
+
+    p = sub.add_parser(
+        "rolling-contact", help="one steady rolling solve on viscoelastic bodies",
+        description="Steady rolling of a ball (or a cylinder, --line) on viscoelastic "
+        "bodies: rolling-resistance coefficient, pmax, approach, contact edges.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    add_ball_arguments(p)
+    p.add_argument("--load", required=True, metavar="F",
+                   help="normal load (5N), or per unit length with --line (600N/mm)")
+    p.add_argument("--speed", required=True, metavar="V", help="rolling speed in m/s")
+    p.add_argument("--line", action="store_true", help="plane strain (a cylinder)")
+    p.add_argument("--mu", type=float, default=None, metavar="M",
+                   help="friction coefficient: tangential tractions (--line only)")
+    p.add_argument("--creepage", type=float, default=None, metavar="X",
+                   help="prescribed creepage (default free rolling)")
+    p.add_argument("--grid", type=int, default=None, metavar="N",
+                   help="cells (line, default 1024) or cells per side (ball, default 128)")
+    add_visco_options(p)
+    add_json_flag(p)
+    p.set_defaults(func=_run)
+    return p
+
+
+def _run(args: argparse.Namespace) -> int:
+    if not args.viscoelastic:
+        raise SurfmetInputError("this rolling-contact solves viscoelastic bodies: give "
+                                "--viscoelastic BODY:Eg=..:Er=..:tau=..")
+    if args.creepage is not None and args.mu is None:
+        raise SurfmetInputError("--creepage needs --mu")
+    return run_viscoelastic(args)
