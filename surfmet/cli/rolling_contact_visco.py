@@ -72,7 +72,9 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
                     "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
                     "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"},
                     "sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"})
-    out["model"] = "viscoelastic, steady rolling, normal problem (frictionless)"
+    out["model"] = ("viscoelastic steady rolling, normal problem"
+                    + (" and tangential tractions (plane strain, quasi-identical bodies)"
+                       if tr is not None else " (frictionless)"))
     out["direction"] = "the contact moves towards +x; the leading edge is at larger x"
     if args.json:
         emit_json(out)
