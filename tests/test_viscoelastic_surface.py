@@ -85,3 +85,28 @@ def test_rough_sphere_runs_and_bad_input() -> None:
         rolling_sphere(R, W, creep, 0.0, n=64)
     with pytest.raises(ContactInputError, match="shape"):
         rolling_sphere(R, W, creep, 1.0, n=64, roughness=np.zeros((8, 8)))
+
+
+def test_against_dense_reference() -> None:
+    """FFT + recursive filter + tail + splitting vs a dense quadrature of the hereditary
+    integral solved by a dense active set (tests/viscoelastic_dense.py). The two
+    discretisations differ at O(dx^2) (the filter takes w linear between nodes), so the
+    difference must shrink ~4x from 16^2 to 32^2 and be small at 32^2."""
+    from viscoelastic_dense import dense_influence, dense_solve
+
+    creep = pair_creep(None, StandardLinearSolid(EG, ER, A_R, NU))
+    diffs = {}
+    for n in (16, 32):
+        half = 1.6 * A_R
+        dx = 2 * half / n
+        x = -half + dx / 2 + np.arange(n) * dx
+        h = ((x[None, :] ** 2 + x[:, None] ** 2) / (2 * R)).ravel()
+        A = dense_influence(n, dx, creep.glassy, creep.amplitudes, creep.times, 1.0)
+        p, delta = dense_solve(A, h, W, dx * dx)
+        mu = float((p.reshape(n, n).sum(axis=0) * x).sum() * dx * dx / (W * R))
+        res = rolling_sphere(R, W, creep, 1.0, n=n)
+        diffs[n] = (res.rolling_resistance / mu - 1, res.pmax / p.max() - 1,
+                    res.approach / delta - 1)
+    for k in range(3):
+        assert abs(diffs[32][k]) < 3.5e-3
+        assert abs(diffs[16][k]) > 2.5 * abs(diffs[32][k])
