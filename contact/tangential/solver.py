@@ -1,0 +1,183 @@
+"""The tangential contact problem for a given pressure: Kalker's active-set iteration.
+
+For a pressure p (and so a traction bound g = mu p), a rigid slip w and the fixed part
+u0 of the tangential displacement difference, find tractions q on the contact elements
+with Coulomb's law (Kalker 1990, sec. 2.1):
+
+    |q| <= g;  s = 0 where |q| < g (adhesion);  q = -g s/|s| where s != 0 (slip),
+
+s = w + L(A q + u0) the slip, L the upwind difference of steady rolling or the identity of
+a shift (:mod:`contact.tangential.kinematics`) and A the Cerruti operator
+(:mod:`contact.tangential.influence`).
+
+Algorithm (the active-set idea of Kalker's TANG, 1990 sec. 2.2): with the adhesion set H,
+the slip set S and the slip directions e fixed, the problem is linear: q = g e on S and
+s = 0 on H. That system is solved by GMRES (Saad & Schultz 1986) with the FFT products
+of A, no matrix is formed. The sets and directions are then updated element by element
+(:func:`contact.tangential.kernels.update_states`) until none changes and the directions
+have settled.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse.linalg as spla
+
+from contact.errors import ConvergenceError
+from contact.tangential.influence import HalfSpacePair
+from contact.tangential.kernels import SLIP, STICK, update_states
+from contact.tangential.kinematics import rolling_slip
+
+
+@dataclass
+class TangentialState:
+    """Tractions, slip and element states of one solved tangential problem.
+
+    Attributes
+    ----------
+    q : ndarray, shape (2, ny, nx)
+        Tractions (q_x, q_y) on body 1 (Pa).
+    s : ndarray, shape (2, ny, nx)
+        Slip: a velocity over V in rolling (dimensionless), a distance in a shift (m).
+    state : ndarray of int8, shape (ny, nx)
+        0 exterior, 1 adhesion, 2 slip.
+    e : ndarray, shape (2, ny, nx)
+        Unit traction directions of the slip elements.
+    outer, matvecs : int
+        Active-set iterations and FFT operator products used.
+    """
+
+    q: np.ndarray
+    s: np.ndarray
+    state: np.ndarray
+    e: np.ndarray
+    outer: int = 0
+    matvecs: int = 0
+
+
+def initial_state(g: np.ndarray) -> TangentialState:
+    """Full adhesion on the loaded elements, zero tractions."""
+    shape = g.shape
+    return TangentialState(q=np.zeros((2, *shape)), s=np.zeros((2, *shape)),
+                           state=np.where(g > 0, STICK, 0).astype(np.int8),
+                           e=np.zeros((2, *shape)))
+
+
+def slip_of(op: HalfSpacePair, q: np.ndarray, w: np.ndarray, u0: np.ndarray,
+            rolling: bool) -> np.ndarray:
+    """s = w + L(A q + u0)."""
+    u = op.tangential(q[0], q[1]) + u0
+    return w + (rolling_slip(u, op.dx) if rolling else u)
+
+
+def diagonal(op: HalfSpacePair, rolling: bool) -> tuple[float, float]:
+    """The diagonal (x and y) of the slip operator: an element's slip per unit of its own
+    traction (m/Pa in a shift, 1/Pa in rolling)."""
+    kxx, kyy = op.real["xx"], op.real["yy"]
+    if not rolling:
+        return float(kxx[0, 0]), float(kyy[0, 0])
+    return (float(kxx[0, 0] - kxx[0, 1]) / op.dx, float(kyy[0, 0] - kyy[0, 1]) / op.dx)
+
+
+def _linear_solve(op, g, w, u0, st, rolling, ncomp, rtol, counter):
+    """q on the adhesion set H with q = g e fixed on S and s = 0 on H (GMRES)."""
+    H = st.state == STICK
+    S = st.state == SLIP
+    q = np.zeros_like(st.q)
+    q[:, S] = g[S] * st.e[:, S]
+    nh = int(H.sum())
+    if nh == 0:
+        return q
+    scale = op.c.G  # unknowns q/G and equations s/sref are of order one
+    sref = 1.0 if rolling else op.dx
+    s_fixed = slip_of(op, q, w, u0, rolling)
+    b = -s_fixed[:ncomp, H].ravel() / sref
+    work = np.zeros_like(q)
+
+    def matvec(x):
+        counter[0] += 1
+        work[:] = 0.0
+        work[:ncomp, H] = x.reshape(ncomp, nh) * scale
+        u = op.tangential(work[0], work[1] if ncomp == 2 else None)
+        s = rolling_slip(u, op.dx) if rolling else u
+        return s[:ncomp, H].ravel() / sref
+
+    A = spla.LinearOperator((ncomp * nh, ncomp * nh), matvec=matvec, dtype=float)
+    x0 = st.q[:ncomp, H].ravel() / scale
+    bnorm = np.linalg.norm(b)
+    if bnorm == 0.0:
+        return q
+    x, info = spla.gmres(A, b, x0=x0, rtol=rtol, atol=0.0, restart=80, maxiter=40)
+    if info > 0:
+        res = np.linalg.norm(A.matvec(x) - b) / bnorm
+        if res > 100 * rtol:
+            raise ConvergenceError(
+                f"tangential solver: GMRES stopped at residual {res:.1e}", res, info)
+    q[:ncomp, H] = x.reshape(ncomp, nh) * scale
+    return q
+
+
+def solve_tangential(
+    op: HalfSpacePair,
+    g: np.ndarray,
+    w: np.ndarray,
+    u0: np.ndarray,
+    *,
+    rolling: bool,
+    start: TangentialState | None = None,
+    tol: float = 1e-6,
+    max_outer: int = 200,
+) -> TangentialState:
+    """Solve the tangential problem for the bound g = mu p (see the module docstring).
+
+    Parameters
+    ----------
+    op : HalfSpacePair
+        Influence operator of the grid.
+    g : ndarray, shape (ny, nx)
+        Traction bound mu p (Pa); elements with g = 0 carry no traction.
+    w : ndarray, shape (2, ny, nx)
+        Rigid slip (creepage, or rigid shift in metres).
+    u0 : ndarray, shape (2, ny, nx)
+        Fixed part of the tangential displacement difference (m): that of the pressure
+        for dissimilar bodies, minus the previous displacement in a shift.
+    rolling : bool
+        Steady rolling (slip = velocity) or a shift (slip = distance).
+    start : TangentialState, optional
+        Warm start (its states are re-read against g).
+    tol : float
+        Tolerance on the slip directions and on the linear solves.
+    max_outer : int
+        Limit on active-set iterations.
+
+    Raises
+    ------
+    ConvergenceError
+        If the sets keep changing after ``max_outer`` iterations.
+    """
+    st = initial_state(g)
+    if start is not None:
+        keep = (g > 0) & (start.state > 0)
+        st.state[keep] = start.state[keep]
+        st.e[:, keep] = start.e[:, keep]
+        st.q[:, g > 0] = start.q[:, g > 0]
+    line_only_x = op.line and not np.any(w[1]) and not np.any(u0[1])
+    ncomp = 1 if line_only_x else 2
+    counter = [0]
+    slack = 1e-9
+    dxx, dyy = diagonal(op, rolling)
+    for it in range(1, max_outer + 1):
+        q = _linear_solve(op, g, w, u0, st, rolling, ncomp, min(tol, 1e-6) * 1e-2, counter)
+        s = slip_of(op, q, w, u0, rolling)
+        st.q, st.s = q, s
+        changes, de = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0], st.e[1],
+                                    dxx, dyy, slack)
+        if changes == 0 and de <= tol:
+            st.outer, st.matvecs = it, counter[0]
+            st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
+            return st
+    raise ConvergenceError(
+        f"tangential solver: the stick/slip areas did not settle in {max_outer} iterations",
+        float("nan"), max_outer)
