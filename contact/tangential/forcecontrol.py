@@ -2,16 +2,15 @@
 
 The total force F_x is a non-increasing function of the rigid slip (creepage xi in
 rolling, rigid shift in a shift): more slip of body 1 forward, more friction backward.
-The slip for a target force is found by bracketing and Brent's method (Brent 1973,
-*Algorithms for Minimization without Derivatives*, ch. 4), every solve warm-started from
-the previous one (CONTACT's outer Newton-Raphson on CKSI plays the same part).
+The slip for a target force is found by bracketing and the Illinois variant of regula
+falsi (Dowell & Jarratt 1971, BIT 11:168), which keeps the force values it has (a solve
+is not repeated at a bracket end) and every solve warm-started from the previous one
+(CONTACT's outer Newton-Raphson on CKSI plays the same part).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-
-import scipy.optimize as so
 
 from contact.errors import ContactInputError, ConvergenceError
 
@@ -24,6 +23,7 @@ def slip_for_force(
     bound: float,
     *,
     rtol: float = 1e-7,
+    ftol: float = 1e-7,
 ) -> float:
     """The rigid slip x with ``force_of(x) == target``.
 
@@ -41,6 +41,8 @@ def slip_for_force(
         The largest force friction can carry, mu N: |target| must stay below it.
     rtol : float
         Tolerance on x relative to ``scale``.
+    ftol : float
+        Tolerance on the force relative to ``bound``.
 
     Raises
     ------
@@ -65,9 +67,29 @@ def slip_for_force(
         if fhi == 0.0:
             return hi
         if (fhi > 0) != (flo > 0):
-            a, b = (lo, hi) if lo < hi else (hi, lo)
-            return float(so.brentq(lambda v: force_of(v) - target, a, b,
-                                   xtol=rtol * scale, rtol=1e-12, maxiter=100))
+            return _illinois(force_of, target, lo, flo, hi, fhi, rtol * scale,
+                             ftol * bound)
         lo, flo = hi, fhi
         step *= 2.0
     raise ConvergenceError("no rigid slip found that gives the prescribed tangential force")
+
+
+def _illinois(force_of, target, a, fa, b, fb, xtol, ftol):
+    """Regula falsi with the Illinois halving on a bracket [a, b] of the force."""
+    side = 0
+    for _ in range(100):
+        x = b - fb * (b - a) / (fb - fa)
+        fx = force_of(x) - target
+        if abs(fx) <= ftol or abs(b - a) <= xtol:
+            return x
+        if (fx > 0) == (fb > 0):
+            b, fb = x, fx
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            a, fa = x, fx
+            if side == 1:
+                fb *= 0.5
+            side = 1
+    raise ConvergenceError("the rigid slip for the prescribed force did not converge")

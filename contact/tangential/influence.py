@@ -247,12 +247,14 @@ class HalfSpacePair:
         self.spec, self.real = _spectra(self.ny, self.nx, self.dx, self.dy, constants,
                                         self.line)
         self.coupled = constants.K != 0.0
+        # threads pay off only on large transforms (their start-up dominates small ones)
+        self._workers = -1 if self._pad[0] * self._pad[1] >= 256 * 256 else 1
 
     def _fwd(self, a: np.ndarray) -> np.ndarray:
-        return sfft.rfft2(a, s=self._pad, workers=-1)
+        return sfft.rfft2(a, s=self._pad, workers=self._workers)
 
     def _inv(self, a: np.ndarray) -> np.ndarray:
-        return sfft.irfft2(a, s=self._pad, workers=-1)[: self.ny, : self.nx]
+        return sfft.irfft2(a, s=self._pad, workers=self._workers)[: self.ny, : self.nx]
 
     def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None) -> np.ndarray:
         """(u_x, u_y), shape (2, ny, nx), of the tangential tractions alone (m)."""

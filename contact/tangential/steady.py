@@ -82,6 +82,9 @@ def steady_rolling(
         coupled = False
     else:
         p, delta = solve_pressure(op, grid.h, load)
+    if np.any(p[:, -1] > 0):
+        raise ContactInputError(
+            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
     st: list[TangentialState | None] = [None]
     xi = creep.xi
     iterations = 0
