@@ -26,9 +26,9 @@ def update_states(qx, qy, sx, sy, g, state, ex, ey, dxx, dyy, slack, allow):  # 
     otherwise slips with q = g q*/|q*| (opposite to its slip). With ``dxx = 0`` the plain
     complementarity test is used (for operators that are far from diagonally dominant,
     such as the upwind rolling operator): adhesion elements with |q| > g slip along q,
-    slip elements with s . e > 0 stick, the others take e = -s/|s|. ``allow`` is a bit mask of the moves permitted
-    in this pass (1: stick to slip, 2: slip to stick, 4: re-aim the slip directions); the
-    solver takes the moves into slip
+    slip elements with s . e > 0 stick, the others take e = -s/|s|. ``allow`` is a bit
+    mask of the moves permitted in this pass (1: stick to slip, 2: slip to stick, 4:
+    re-aim the slip directions); the solver takes the moves into slip
     first, which stops two groups of elements from trading places for ever. Returns the
     number of state changes and the largest change of a slip direction.
     """
