@@ -92,3 +92,20 @@ def cylinder_grid(radius: float, half_width: float, n: int,
             raise ContactInputError(f"roughness must be a finite profile of {n} points")
         h = h - r
     return Grid(x=x, y=np.zeros(1), h=h, line=True)
+
+
+def sample_roughness(z: np.ndarray, zdx: float, zdy: float, x: np.ndarray,
+                     y: np.ndarray) -> np.ndarray:
+    """A height map (pitch zdx, zdy, centred on the contact) sampled at the grid points
+    (x, y) by bilinear interpolation; the map must cover the grid."""
+    from scipy.ndimage import map_coordinates
+
+    z = np.asarray(z, dtype=float)
+    ny, nx = z.shape
+    cols = np.asarray(x, float) / zdx + 0.5 * (nx - 1)
+    rows = np.asarray(y, float) / zdy + 0.5 * (ny - 1)
+    if cols.min() < 0 or cols.max() > nx - 1 or rows.min() < 0 or rows.max() > ny - 1:
+        raise ContactInputError(
+            "the scans do not cover the contact grid: use larger scans or a smaller grid")
+    rr, cc = np.meshgrid(rows, cols, indexing="ij")
+    return map_coordinates(z, [rr, cc], order=1, mode="nearest")

@@ -248,7 +248,8 @@ class HalfSpacePair:
                                         self.line)
         self.coupled = constants.K != 0.0
         # threads pay off only on large transforms (their start-up dominates small ones)
-        self._workers = -1 if self._pad[0] * self._pad[1] >= 256 * 256 else 1
+        self._inv_spec: tuple[np.ndarray, ...] | None = None
+        self._workers = 1 if self._pad[0] * self._pad[1] < 512 * 512 else -1
 
     def _fwd(self, a: np.ndarray) -> np.ndarray:
         return sfft.rfft2(a, s=self._pad, workers=self._workers)
@@ -265,6 +266,21 @@ class HalfSpacePair:
         fy = self._fwd(qy)
         return np.stack([self._inv(s["xx"] * fx + s["xy"] * fy),
                          self._inv(s["xy"] * fx + s["yy"] * fy)])
+
+    def tangential_inverse(self, ux: np.ndarray, uy: np.ndarray) -> np.ndarray:
+        """Approximately the tractions (q_x, q_y) that displace the grid by (u_x, u_y):
+        the 2 x 2 inverse of the padded kernel spectra (a preconditioner, not a solve)."""
+        s = self.spec
+        if self._inv_spec is None:
+            sxx, syy, sxy = s["xx"].real, s["yy"].real, s["xy"].real
+            det = sxx * syy - sxy * sxy
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ok = np.abs(det) > 1e-300
+                self._inv_spec = tuple(np.where(ok, v / np.where(ok, det, 1.0), 0.0)
+                                       for v in (syy, sxx, -sxy))
+        ixx, iyy, ixy = self._inv_spec
+        fx, fy = self._fwd(ux), self._fwd(uy)
+        return np.stack([self._inv(ixx * fx + ixy * fy), self._inv(ixy * fx + iyy * fy)])
 
     def normal(self, p: np.ndarray) -> np.ndarray:
         """u_n of the pressure alone (m)."""

@@ -23,12 +23,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from contact.errors import ConvergenceError
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kernels import SLIP, STICK, update_states
 from contact.tangential.kinematics import rolling_slip
+from contact.tangential.newton import NewtonSystem
 
 
 @dataclass
@@ -55,6 +55,7 @@ class TangentialState:
     e: np.ndarray
     outer: int = 0
     matvecs: int = 0
+    dw: float = 0.0
 
 
 def initial_state(g: np.ndarray) -> TangentialState:
@@ -81,84 +82,6 @@ def diagonal(op: HalfSpacePair, rolling: bool) -> tuple[float, float]:
     return (float(kxx[0, 0] - kxx[0, 1]) / op.dx, float(kyy[0, 0] - kyy[0, 1]) / op.dx)
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[0] * b[1] - a[1] * b[0]
-
-
-def _newton_step(op, g, w, u0, st, rolling, ncomp, rtol, counter, dxx):
-    """One Newton step on the adhesion tractions and the slip directions (GMRES).
-
-    Unknowns: the traction increments on the adhesion set H and, in 3D, the rotation
-    d theta of each slip traction q = g (cos theta, sin theta). Equations: s = 0 on H and
-    s x e = 0 (slip along the traction) on the slip set S, linearised about the present
-    state (Kalker's Newton-Raphson for the slip directions, 1990 sec. 2.2). In plane
-    strain the slip directions are +-x and only H carries unknowns.
-    Returns the new tractions, the slip directions and the largest rotation.
-    """
-    H = st.state == STICK
-    S = st.state == SLIP
-    q0 = np.zeros_like(st.q)
-    q0[:, H] = st.q[:, H]
-    q0[:, S] = g[S] * st.e[:, S]
-    s0 = slip_of(op, q0, w, u0, rolling)
-    nh = int(H.sum())
-    ns = int(S.sum()) if ncomp == 2 else 0
-    if nh + ns == 0:
-        return q0, st.e, 0.0
-    G = op.c.G  # unknowns scaled by G and equations by sref are of order one
-    sref = 1.0 if rolling else op.dx
-    e = st.e[:, S]
-    t = np.stack([-e[1], e[0]])
-    gs = g[S]
-    # s . e < 0 on a settled slip element; one slipping the wrong way (about to stick)
-    # is linearised as if its slip were zero, which keeps the Jacobian regular
-    se = np.minimum((s0[:, S] * e).sum(axis=0), 0.0)
-    # Jacobi row scaling: each slip row divided by its diagonal, se G/g - D G, over
-    # D G (elements at the rim, g -> 0, would otherwise dwarf the rest)
-    row = 1.0 / (1.0 + np.abs(se) / (gs * dxx)) if ns else None
-    b = -s0[:ncomp, H].ravel()
-    if ns:
-        b = np.concatenate([b, -_cross(s0[:, S], e) * row])
-    b /= sref
-    dq = np.zeros_like(q0)
-
-    def increments(x):
-        dq[:] = 0.0
-        dq[:ncomp, H] = x[: ncomp * nh].reshape(ncomp, nh) * G
-        if ns:
-            dq[:, S] = G * x[ncomp * nh:] * t
-        return dq
-
-    def matvec(x):
-        counter[0] += 1
-        d = increments(x)
-        u = op.tangential(d[0], d[1] if ncomp == 2 else None)
-        r = rolling_slip(u, op.dx) if rolling else u
-        out = r[:ncomp, H].ravel()
-        if ns:
-            out = np.concatenate(
-                [out, (_cross(r[:, S], e) + se * x[ncomp * nh:] * G / gs) * row])
-        return out / sref
-
-    n = ncomp * nh + ns
-    bnorm = np.linalg.norm(b)
-    if bnorm == 0.0:
-        return q0, st.e, 0.0
-    A = spla.LinearOperator((n, n), matvec=matvec, dtype=float)
-    # an inexact Newton step is still a step: the outer loop judges convergence
-    x, _ = spla.gmres(A, b, rtol=rtol, atol=0.0, restart=80, maxiter=10)
-    q = q0 + increments(x)
-    e_new = st.e.copy()
-    rot = 0.0
-    if ns:
-        dth = np.clip(x[ncomp * nh:] * G / gs, -np.pi / 3, np.pi / 3)
-        en = e * np.cos(dth) + t * np.sin(dth)
-        e_new[:, S] = en / np.hypot(en[0], en[1])
-        q[:, S] = gs * e_new[:, S]
-        rot = float(np.abs(dth).max())
-    return q, e_new, rot
-
-
 def solve_tangential(
     op: HalfSpacePair,
     g: np.ndarray,
@@ -169,6 +92,8 @@ def solve_tangential(
     start: TangentialState | None = None,
     tol: float = 1e-6,
     max_outer: int = 200,
+    force: float | None = None,
+    area: float = 1.0,
 ) -> TangentialState:
     """Solve the tangential problem for the bound g = mu p (see the module docstring).
 
@@ -191,6 +116,11 @@ def solve_tangential(
         Tolerance on the slip directions and on the linear solves.
     max_outer : int
         Limit on active-set iterations.
+    force : float, optional
+        Prescribed total force along x (N): the rigid slip along x is then an unknown,
+        added to ``w`` (its increment is returned in ``TangentialState.dw``). 3D only.
+    area : float
+        Element area (m^2), to turn tractions into the force.
 
     Raises
     ------
@@ -210,9 +140,23 @@ def solve_tangential(
     # the local (Gauss-Seidel) test suits the shift operator; the upwind rolling
     # operator is far from diagonally dominant and takes the plain test
     dxx, dyy = diagonal(op, rolling) if not rolling else (0.0, 0.0)
+    w = w.copy()
+    dw_total = 0.0
+    d_shift = diagonal(op, rolling)[0]
+    limit = float(g.sum()) * area
     for it in range(1, max_outer + 1):
-        q, st.e, rot = _newton_step(op, g, w, u0, st, rolling, ncomp, 1e-8, counter,
-                                     diagonal(op, rolling)[0])
+        H, S = st.state == STICK, st.state == SLIP
+        q0 = np.zeros_like(st.q)
+        q0[:, H] = st.q[:, H]
+        q0[:, S] = g[S] * st.e[:, S]
+        s0 = slip_of(op, q0, w, u0, rolling)
+        residual = None if force is None else force / area - float(q0[0].sum())
+        system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
+        step = system.solve(1e-6)
+        counter[0] += system.matvecs
+        q, st.e, rot = step.q, step.e, step.rotation
+        w[0] += step.dw
+        dw_total += step.dw
         s = slip_of(op, q, w, u0, rolling)
         st.q, st.s = q, s
         aim = 4 if ncomp == 1 else 0  # 3D directions come from the Newton step
@@ -222,8 +166,9 @@ def solve_tangential(
             changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
                                        st.e[1], dxx, dyy, slack, 2 | aim)
         de = max(de, rot)
-        if changes == 0 and de <= tol:
-            st.outer, st.matvecs = it, counter[0]
+        settled = force is None or abs(float(q[0].sum()) * area - force) <= tol * 1e-2 * limit
+        if changes == 0 and de <= tol and settled:
+            st.outer, st.matvecs, st.dw = it, counter[0], dw_total
             st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
             return st
     raise ConvergenceError(

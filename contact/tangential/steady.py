@@ -92,13 +92,22 @@ def steady_rolling(
         u0 = op.tangential_from_normal(p)
         g = mu * p
 
-        def run(v: float, g=g, u0=u0) -> TangentialState:
+        def run(v: float, g=g, u0=u0, force=None) -> TangentialState:
             w = rigid_slip(grid.x, grid.y, Creepage(v, creep.eta, creep.phi))
-            st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0], tol=tol)
+            st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0], tol=tol,
+                                     force=force, area=grid.area)
             return st[0]
 
         if fx is None:
             run(xi)
+        elif not grid.line:
+            # 3D: the creepage is one more unknown of the Newton steps
+            fn = float(p.sum()) * grid.area
+            if abs(fx) >= mu * fn:
+                raise ContactInputError(
+                    f"tangential force {abs(fx):.4g} N is not below the friction limit "
+                    f"mu N = {mu * fn:.4g} N: the bodies slide as a whole")
+            xi += run(xi, force=fx).dw
         else:
             scale = 2.0 * mu * float(p.max()) / constants.e_star
             fn = float(p.sum()) * grid.area
