@@ -32,6 +32,7 @@ SUBCOMMANDS = (
     "demo",
     "spectrum",
     "flat_contact",
+    "rolling_contact",
 )
 
 EPILOG = """examples:
