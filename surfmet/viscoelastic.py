@@ -277,7 +277,8 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         Scans for a rough ball contact (the roughness frozen in the contact frame).
     mu, creepage : float, optional
         Coefficient of friction and creepage (default free rolling) for the tangential
-        tractions of a line contact (:func:`contact.viscoelastic.steady_traction`).
+        tractions of a line contact (:func:`contact.viscoelastic.steady_traction`); a ball
+        gets the normal problem only.
 
     Returns
     -------
@@ -306,9 +307,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         dx = float(res.x[1] - res.x[0])
         A = influence_matrix(res.x.size, dx, creep, speed)
         return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
-    if mu is not None:
-        raise SurfmetInputError("viscoelastic tangential tractions are solved for --line only")
-    n = grid or 128
+    n = grid or 128  # a ball: the normal problem (tractions are solved for lines only)
     z = None
     if plate is not None or ball is not None:
         from contact.viscoelastic.sweep import roughness_window

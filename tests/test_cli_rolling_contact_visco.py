@@ -3,21 +3,17 @@ CONTACT's visc_cylindr numbers, units in JSON, one-line errors."""
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 
 import pytest
 
 from contact.viscoelastic.hunter import hunter_cylinder
-from surfmet.cli import rolling_contact_visco
+from surfmet.cli import main
 
 
 def _run(argv: list[str]) -> int:
-    ap = argparse.ArgumentParser()
-    rolling_contact_visco.add_parser(ap.add_subparsers())
-    args = ap.parse_args(["rolling-contact", *argv])
-    return args.func(args)
+    return main(["rolling-contact", *argv])
 
 
 def test_line_against_hunter(capsys) -> None:
@@ -25,6 +21,7 @@ def test_line_against_hunter(capsys) -> None:
     rc = _run(["--line", "--radius", "50mm", "--load", "600N/mm", "--materials",
                "tungsten_carbide:E=1e15GPa,pmma", "--viscoelastic",
                "plate:Eg=3.2GPa:Er=1.6GPa:tau=4.48ms:nu=0.4", "--speed", "1", "--grid", "512",
+               "--mu", "0.3",
                "--json"])
     assert rc == 0
     out = json.loads(capsys.readouterr().out)
@@ -53,14 +50,20 @@ def test_line_tangential_contact_case2(capsys) -> None:
 def test_ball_runs_and_errors(capsys) -> None:
     rc = _run(["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma",
                "--viscoelastic", "plate:Eg=3GPa:Er=1GPa:tau=1ms", "--speed", "0.1",
-               "--grid", "48", "--json"])
+               "--grid", "48", "--mu", "0.3", "--json"])
     assert rc == 0
     out = json.loads(capsys.readouterr().out)
     assert out["rolling_resistance_coefficient"]["value"] > 0
     assert out["leading_edge"]["value"] > -out["trailing_edge"]["value"]
     assert math.isfinite(out["approach"]["value"])
-    from surfmet.errors import SurfmetInputError
-
-    with pytest.raises(SurfmetInputError, match="speed"):
-        _run(["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma",
-              "--viscoelastic", "plate:Eg=3GPa:Er=1GPa:tau=1ms", "--speed", "-1"])
+    for bad, message in (("--speed=-1", "speed"), ("--speed=0", "speed")):
+        rc = _run(["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma", "--mu",
+                   "0.3", "--viscoelastic", "plate:Eg=3GPa:Er=1GPa:tau=1ms", bad])
+        err = capsys.readouterr().err
+        assert rc == 1 and message in err and len(err.strip().splitlines()) == 1
+    for spec, message in (("plate:Eg=1GPa:Er=3GPa:tau=1ms", "exceeds the glassy"),
+                          ("plate:Eg=3GPa:Er=1GPa:tau=0s", "creep time")):
+        rc = _run(["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma", "--mu",
+                   "0.3", "--viscoelastic", spec, "--speed", "0.1"])
+        err = capsys.readouterr().err
+        assert rc == 1 and message in err and len(err.strip().splitlines()) == 1

@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_ball_arguments, add_json_flag, emit_json, log
+from surfmet.cli.rolling_contact_visco import add_visco_options, run_viscoelastic
 
 EPILOG = """examples:
   surfmet rolling-contact --radius 20mm --load 5N --materials steel,aluminium --mu 0.3
@@ -46,6 +47,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="rolling speed in m/s (adds the frictional power in W)")
     p.add_argument("--grid", type=int, metavar="N",
                    help="elements per side (default 64; 256 with --line)")
+    add_visco_options(p)
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
@@ -67,6 +69,8 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError("--creepage must be a finite number")
     if not (math.isfinite(args.mu) and args.mu > 0):
         raise SurfmetInputError("--mu must be a positive number")
+    if args.viscoelastic:
+        return run_viscoelastic(args)
     load = parse_line_load(args.load) if args.line else units.parse_force(args.load)
     if not load > 0:
         raise SurfmetInputError("--load must be positive")

@@ -19,24 +19,21 @@ def add_visco_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--viscoelastic", action="append", default=None,
                    metavar="BODY:Eg=..:Er=..:tau=..",
                    help="steady rolling on a standard linear solid: BODY ball or plate, "
-                   "glassy and relaxed moduli, creep time tau_c (CONTACT's convention; the "
-                   "stress-relaxation time is tau_c Er/Eg); needs --speed. Repeat for both "
-                   "bodies")
+                   "glassy and relaxed moduli (Pa units), creep time tau_c (s, ms; CONTACT's "
+                   "convention: the stress-relaxation time is tau_c Er/Eg); needs --speed; "
+                   "repeat for both bodies. Reports the rolling-resistance coefficient, "
+                   "pmax, approach and the contact edges; with --line also the tractions "
+                   "(quasi-identical bodies), e.g. --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms")
 
 
 def load_value(text: Any, line: bool) -> float:
-    """A load in N, or with ``line`` a load per length in N/m (``100N/mm``, ``1e5N/m``)."""
+    """A load in N, or with ``line`` a load per length in N/m (``100N/mm``)."""
+    from surfmet.rolling_contact import parse_line_load
     from surfmet.units import parse_force
 
     if isinstance(text, (int, float)):
         return float(text)
-    s = str(text).strip()
-    if not line:
-        return parse_force(s)
-    for unit, scale in (("/mm", 1e3), ("/m", 1.0)):
-        if s.endswith(unit):
-            return parse_force(s[: -len(unit)]) * scale
-    raise SurfmetInputError(f"--line needs a load per length such as 100N/mm, got {s!r}")
+    return parse_line_load(text) if line else parse_force(str(text))
 
 
 def speed_value(value: Any) -> float:
@@ -76,6 +73,9 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
                     + (" and tangential tractions (plane strain, quasi-identical bodies)"
                        if tr is not None else " (frictionless)"))
     out["direction"] = "the contact moves towards +x; the leading edge is at larger x"
+    if tr is None and getattr(args, "mu", None) is not None:
+        out["note"] = ("tangential tractions on viscoelastic bodies are solved for --line "
+                       "only; this is the ball's normal problem")
     if args.json:
         emit_json(out)
         return 0
@@ -97,52 +97,3 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
               f"{tr.slip.sum() * dx * 1e6:.5g} µm")
     return 0
 
-
-EPILOG = """examples:
-  surfmet rolling-contact --radius 20mm --load 5N --materials steel,pmma \\
-      --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms --speed 0.1
-  surfmet rolling-contact --line --radius 50mm --load 600N/mm --materials pmma,pmma \\
-      --viscoelastic ball:Eg=3.2GPa:Er=1.6GPa:tau=9ms:nu=0.4 \\
-      --viscoelastic plate:Eg=3.2GPa:Er=1.6GPa:tau=9ms:nu=0.4 --speed 1 --mu 0.3 --json
-
-The contact moves towards +x over both bodies; material enters at the leading edge. The
-rolling-resistance coefficient is the pressure's moment about the axis over N R.
-Creepage (v1 - v2)/V and fx act on body 1 (the ball or roller); --line solves plane strain
-with the load per unit length and, with --mu, the tangential tractions (quasi-identical
-bodies; free rolling unless --creepage).
-"""
-
-
-def add_parser(sub: Any) -> argparse.ArgumentParser:
-    """``surfmet rolling-contact`` for the viscoelastic normal problem (minimal command)."""
-    from surfmet.cli._common import add_ball_arguments, add_json_flag
-
-    p = sub.add_parser(
-        "rolling-contact", help="one steady rolling solve on viscoelastic bodies",
-        description="Steady rolling of a ball (or a cylinder, --line) on viscoelastic "
-        "bodies: rolling-resistance coefficient, pmax, approach, contact edges.",
-        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    add_ball_arguments(p)
-    p.add_argument("--load", required=True, metavar="F",
-                   help="normal load (5N), or per unit length with --line (600N/mm)")
-    p.add_argument("--speed", required=True, metavar="V", help="rolling speed in m/s")
-    p.add_argument("--line", action="store_true", help="plane strain (a cylinder)")
-    p.add_argument("--mu", type=float, default=None, metavar="M",
-                   help="friction coefficient: tangential tractions (--line only)")
-    p.add_argument("--creepage", type=float, default=None, metavar="X",
-                   help="prescribed creepage (default free rolling)")
-    p.add_argument("--grid", type=int, default=None, metavar="N",
-                   help="cells (line, default 1024) or cells per side (ball, default 128)")
-    add_visco_options(p)
-    add_json_flag(p)
-    p.set_defaults(func=_run)
-    return p
-
-
-def _run(args: argparse.Namespace) -> int:
-    if not args.viscoelastic:
-        raise SurfmetInputError("this rolling-contact solves viscoelastic bodies: give "
-                                "--viscoelastic BODY:Eg=..:Er=..:tau=..")
-    if args.creepage is not None and args.mu is None:
-        raise SurfmetInputError("--creepage needs --mu")
-    return run_viscoelastic(args)
