@@ -215,13 +215,35 @@ _UNITS = {"speed": "m/s", "hardness": "Pa", "peak_time": "s",
           "contact_radius_symmetric": "m"}
 
 
+def microslip_sweep(radius: float, materials: Any, mu: float,
+                    grid: int | None = None) -> Any:
+    """loads -> RollingSweep of micro-slip dissipation in free rolling (the tangential
+    solver, :func:`surfmet.rolling_contact.solve_rolling_contact`): F_r is the frictional
+    power per unit rolling speed, M_r = F_r R."""
+    from contact.viscoelastic.sweep import sweep_record
+    from surfmet.rolling_contact import solve_rolling_contact
+
+    def run(loads: Any) -> Any:
+        w = np.asarray(loads, dtype=float)
+        res = [solve_rolling_contact(radius, float(n), materials, mu, grid=grid).result
+               for n in w]
+        forces = np.array([r.frictional_power for r in res])
+        return sweep_record("microslip", w, forces, radius,
+                            {"model": "microslip", "mu": mu, "grid": grid})
+
+    return run
+
+
 def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminium",
                        loads: Any = (2.0, 12.0, 7), speed: float = 0.1,
                        loss: tuple[float, float] | None = None,
-                       hardness: float | None = None, grid: int = 128) -> MechanismsReport:
+                       hardness: float | None = None, grid: int = 128,
+                       mu: float | None = 0.3) -> MechanismsReport:
     """Mechanisms at the rotor's ball loads (smooth pair) beside Table 3's measurement.
 
-    ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic.loss`.
+    ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic.loss`;
+    ``mu`` (assumed; dry steel on aluminium) sets the micro-slip mechanism, None leaves it
+    out (it costs one 3D frictional solve per load).
     """
     from contact.materials import contact_hardness
     from contact.rolling import log_loads
@@ -241,11 +263,11 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     ns = normal_reactions(sym)[0]
     n1, n2 = normal_reactions(asym)
     sweep = log_loads(*loads) if isinstance(loads, tuple) else np.asarray(loads, float)
+    ms = None if mu is None else microslip_sweep(radius, (ball_m, plate_m), mu)
     comp = compare_mechanisms(radius, ball_m, plate_m, loads=sweep, rotor_loads=(ns, n1, n2),
                               rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
-                              hardness=hardness, grid=grid)
-    notes = ("micro-slip (dissimilar elastic constants) is the tangential solver's "
-             "'--model microslip'; it is not in this table",)
+                              hardness=hardness, grid=grid, microslip=ms)
+    notes = () if mu is not None else ("micro-slip left out (no friction coefficient)",)
     return MechanismsReport(comp, table3_accelerations(), notes)
 
 

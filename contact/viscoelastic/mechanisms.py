@@ -21,7 +21,8 @@ principles except the hysteresis rule's loss fraction):
   damping capacity psi = 2 pi eta of one load-unload cycle; Lazan 1968), each body's
   eta weighted by its share of the displacement.
 - ``plastic``: first-pass plastic work at the softer body's hardness (:mod:`contact.rolling`).
-- ``microslip``: from the tangential solver when it is available (``microslip=`` callable).
+- ``microslip``: frictional dissipation of free rolling between the dissimilar elastic
+  bodies (Bentall & Johnson 1967), from a tangential solver passed as ``microslip=``.
 """
 
 from __future__ import annotations
@@ -164,8 +165,9 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
                            f"first pass, H = {hardness:.3g} Pa"))
     if microslip is not None:
         ms = microslip(every)
+        mu = ms.settings.get("mu")
         out.append(_with_rotor("microslip", ms, _lookup(ms), rotor_loads, rolling_inertia,
-                               "tangential solver, free rolling"))
+                               f"tangential solver, free rolling, mu = {mu}"))
     assumptions = {"speed": speed, "loss_ball": loss[0], "loss_plate": loss[1],
                    "alpha_h": alpha, "hardness": hardness, "peak_time": t_peak,
                    "contact_radius_symmetric": a_s, "grid": grid}

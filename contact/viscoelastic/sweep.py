@@ -19,7 +19,7 @@ the material's creep adds.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 import numpy as np
@@ -79,8 +79,6 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
     -------
     contact.rolling.RollingSweep
     """
-    from contact.rolling import RollingSweep, fit_exponent, local_exponent
-
     w = np.sort(np.asarray(list(loads), dtype=float))
     if w.size < 1 or not (np.isfinite(w).all() and (w > 0).all()):
         raise ContactInputError("loads must be positive and finite (N)")
@@ -104,7 +102,22 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
                                  roughness=z, tol=tol)
             mus[k] -= ref.rolling_resistance
         results.append(res)
-    forces = mus * w
+    settings = {"model": "viscoelastic", "speed": float(speed), "grid": int(n),
+                "dx": 2 * half / n, "glassy_compliance": creep.glassy,
+                "relaxed_compliance": creep.relaxed, "creep_times": list(creep.times),
+                "contact": "sphere", "roughness": "frozen" if z is not None else None}
+    return sweep_record("viscoelastic", w, mus * w, radius, settings, results, confidence)
+
+
+def sweep_record(model: str, loads: np.ndarray, forces: np.ndarray, radius: float,
+                 settings: dict, results: Sequence[Any] = (),
+                 confidence: float = 0.95) -> Any:
+    """A :class:`contact.rolling.RollingSweep` from resisting forces F_r(N) (M_r = F_r R),
+    with the power-law fit over the loads that dissipate and the local exponent."""
+    from contact.rolling import RollingSweep, fit_exponent, local_exponent
+
+    w = np.asarray(loads, dtype=float)
+    forces = np.asarray(forces, dtype=float)
     moments = forces * radius
     pos = moments > 0
     notes = []
@@ -114,10 +127,6 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
     local = np.full(w.size, math.nan)
     if pos.sum() >= 2:
         local[pos] = local_exponent(w[pos], moments[pos])
-    settings = {"model": "viscoelastic", "speed": float(speed), "grid": int(n),
-                "dx": 2 * half / n, "glassy_compliance": creep.glassy,
-                "relaxed_compliance": creep.relaxed, "creep_times": list(creep.times),
-                "contact": "sphere", "roughness": "frozen" if z is not None else None}
-    return RollingSweep(model="viscoelastic", loads=w, forces=forces, moments=moments,
-                        fit=fit, local_lambda=local, radius=float(radius), settings=settings,
+    return RollingSweep(model=model, loads=w, forces=forces, moments=moments, fit=fit,
+                        local_lambda=local, radius=float(radius), settings=settings,
                         notes=tuple(notes), results=tuple(results))

@@ -16,6 +16,11 @@ def add_visco_arguments(p: argparse.ArgumentParser) -> None:
                    help="loss factors tan(delta); each body's SLS puts its loss peak at the "
                    "contact frequency V/a (an upper bound). Default for --model all: the "
                    "materials' typical values (contact.viscoelastic.loss)")
+    p.add_argument("--mu", type=float, default=0.3, metavar="M",
+                   help="friction coefficient assumed for the micro-slip mechanism of "
+                   "--model all (default 0.3, dry steel on aluminium)")
+    p.add_argument("--no-microslip", action="store_true",
+                   help="--model all without micro-slip (one 3D frictional solve per load)")
     p.add_argument("--viscoelastic", action="append", default=None,
                    metavar="BODY:Eg=..:Er=..:tau=..",
                    help="a standard linear solid for ball or plate (creep time tau, CONTACT's "
@@ -47,9 +52,14 @@ def run_visco(args: argparse.Namespace) -> int:
     if args.model == "all":
         from surfmet.viscoelastic import rolling_mechanisms
 
+        if not (args.mu > 0 and args.mu < float("inf")):
+            from surfmet.errors import SurfmetInputError
+
+            raise SurfmetInputError("--mu must be a positive number")
         rep = rolling_mechanisms(radius=args.radius, materials=args.materials,
                                  loads=(lo, hi, n), speed=speed, loss=_loss(args.loss),
-                                 hardness=args.hardness, grid=args.grid or 128)
+                                 hardness=args.hardness, grid=args.grid or 128,
+                                 mu=None if args.no_microslip else args.mu)
         if args.json:
             emit_json(rep.to_json())
             return 0
@@ -98,6 +108,8 @@ def _print_all(rep: Any) -> None:
     print(f"assumed            speed {a['speed']:g} m/s, loss factor ball {a['loss_ball']:g}, "
           f"plate {a['loss_plate']:g} (alpha_h = {a['alpha_h']:.3g}), H = "
           f"{a['hardness'] / 1e9:.3g} GPa, smooth pair")
+    for m in c.mechanisms:
+        print(f"  {m.name:13s} {m.assumption}")
     print(f"{'mechanism':>13}{'M_r(Ns) N m':>14}{'lambda':>9}{'95 % CI':>19}"
           f"{'eps_s-eps_a':>14}")
     for m in c.mechanisms:
