@@ -9,14 +9,14 @@ For the smooth steel ball (R = 20 mm) on the aluminium plate, at the rotor's bal
   with each loss peak placed at the contact frequency V/a (an upper bound),
 - the hysteresis rule with alpha_h = 2 pi eta (contact.rolling),
 - first-pass plastic work at the aluminium's hardness (contact.rolling),
+- micro-slip of free rolling between the dissimilar elastic bodies (contact.tangential,
+  mu = 0.3 assumed),
 
 for the typical and the highest loss factor (the loss peak follows V/a, so the bound
 does not depend on the speed), and sets the symmetric-minus-asymmetric angular
 acceleration each implies beside the one Table 3 measures. ``--scans`` repeats the
 comparison on the bundled stand-in scans (one track position; plastic and hysteresis from
 the scans' contact, viscoelastic with the roughness frozen in the contact frame).
-Micro-slip of the dissimilar pair is the tangential solver's
-``surfmet rolling --model microslip``.
 """
 
 from __future__ import annotations
