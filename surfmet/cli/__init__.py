@@ -33,6 +33,7 @@ SUBCOMMANDS = (
     "demo",
     "spectrum",
     "flat_contact",
+    "rolling_contact",
 )
 
 EPILOG = """examples:

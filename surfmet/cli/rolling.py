@@ -20,6 +20,7 @@ from surfmet.cli._common import (
     show_progress,
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
+from surfmet.cli.rolling_visco import add_visco_arguments, run_visco
 
 EPILOG = """examples:
   surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
@@ -52,8 +53,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_ball_arguments(p)
     p.add_argument("--loads", type=force_range, required=True, metavar="F1:F2[:N]",
                    help="load range, N log-spaced loads (default 9), e.g. 1N:100N:9")
-    p.add_argument("--model", choices=("hysteresis", "plastic"), default="hysteresis",
-                   help="dissipation model (default hysteresis)")
+    p.add_argument("--model", choices=("hysteresis", "plastic", "viscoelastic", "all"),
+                   default="hysteresis", help="dissipation model (default hysteresis); "
+                   "all: the mechanisms side by side at the rotor's ball loads")
+    add_visco_arguments(p)
     p.add_argument("--alpha-h", type=float, default=1.0, metavar="A",
                    help="hysteresis loss fraction (default 1: M_r is the work put in)")
     p.add_argument("--lossy", choices=("both", "plate", "ball"), default="both",
@@ -91,6 +94,8 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.mechanics.rolling_resistance import rolling_resistance
     from surfmet.units import format_length
 
+    if args.model in ("viscoelastic", "all"):
+        return run_visco(args)
     lo, hi, n = args.loads
     n = 9 if n is None else n
     if n < 3:

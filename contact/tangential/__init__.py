@@ -1,0 +1,28 @@
+"""Rolling and shift contact with friction: a tangential boundary-element solver.
+
+Tractions (q_x, q_y) with Coulomb friction on a regular grid, stick and slip areas,
+Cerruti influence coefficients and, for dissimilar bodies, the normal-tangential coupling
+(Kalker's K, Dundurs' beta) iterated with the normal problem; steady rolling with
+prescribed creepages or tangential force, shifts (Cattaneo-Mindlin) and stepwise
+compression (Spence); plane strain and 3D, smooth or rough.
+
+Modules: :mod:`~contact.tangential.influence` (kernels, FFT operator),
+:mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`~contact.tangential.grid`,
+:mod:`~contact.tangential.normal` (pressure with an extra gap),
+:mod:`~contact.tangential.solver` (active-set iteration), :mod:`~contact.tangential.kernels`
+(compiled loops), :mod:`~contact.tangential.forcecontrol`, :mod:`~contact.tangential.steady`
+(steady rolling), :mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
+"""
+
+from contact.tangential.grid import Grid, cylinder_grid, sphere_grid
+from contact.tangential.influence import PairConstants, pair_constants, pair_constants_from
+from contact.tangential.kinematics import Creepage
+from contact.tangential.results import TangentialResult
+from contact.tangential.shift import compress_in_steps, shift
+from contact.tangential.steady import steady_rolling
+
+__all__ = [
+    "Creepage", "Grid", "PairConstants", "TangentialResult", "compress_in_steps",
+    "cylinder_grid", "pair_constants", "pair_constants_from", "shift", "sphere_grid",
+    "steady_rolling",
+]

@@ -1,0 +1,134 @@
+"""One Newton step of the tangential problem for fixed adhesion and slip sets (GMRES).
+
+Unknowns: the traction increments on the adhesion set H; in 3D the rotation d theta of
+each slip traction q = g (cos theta, sin theta); and, when the total force F_x is
+prescribed, the increment of the rigid slip (creepage or shift). Equations: s = 0 on H,
+s x e = 0 (slip along the traction) on the slip set S, and sum(q_x) dA = F_x, linearised
+about the present state (Kalker's Newton-Raphson for the slip directions, 1990 sec. 2.2).
+In plane strain the slip directions are +-x and only H carries unknowns.
+
+Scaling: traction unknowns are divided by G, equations by the slip scale (1 in rolling,
+dx in a shift), slip rows by their own diagonal (elements at the rim, g -> 0, would
+otherwise dwarf the rest). GMRES (Saad & Schultz 1986) is right-preconditioned by an
+FFT approximation of the adhesion block's inverse (in the spirit of Vollebregt 2014,
+J. Comput. Phys. 257:333): undo the upwind difference by summing from the leading edge,
+then the influence by the inverse kernel spectrum.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse.linalg as spla
+
+from contact.tangential.influence import HalfSpacePair
+from contact.tangential.kinematics import rolling_slip
+
+
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """z component of a x b for stacked 2-vectors."""
+    return a[0] * b[1] - a[1] * b[0]
+
+
+@dataclass
+class NewtonStep:
+    """What a step changed: tractions, slip directions, largest rotation, rigid slip."""
+
+    q: np.ndarray
+    e: np.ndarray
+    rotation: float
+    dw: float
+
+
+class NewtonSystem:
+    """The linearised problem about (q0, e) for the sets H (adhesion) and S (slip)."""
+
+    def __init__(self, op: HalfSpacePair, g, s0, q0, e_all, H, S, rolling: bool,
+                 ncomp: int, dxx: float, force_residual: float | None):
+        self.op, self.rolling, self.ncomp = op, rolling, ncomp
+        self.H, self.S, self.q0, self.e_all = H, S, q0, e_all
+        self.nh = int(H.sum())
+        self.ns = int(S.sum()) if ncomp == 2 else 0
+        self.aug = force_residual is not None and ncomp == 2
+        self.G = op.c.G
+        self.sref = 1.0 if rolling else op.dx
+        self.e = e_all[:, S]
+        self.t = np.stack([-self.e[1], self.e[0]])
+        self.gs = g[S]
+        # s . e < 0 on a settled slip element; one slipping the wrong way (about to
+        # stick) is linearised as if its slip were zero, keeping the Jacobian regular
+        self.se = np.minimum((s0[:, S] * self.e).sum(axis=0), 0.0)
+        self.row = 1.0 / (1.0 + np.abs(self.se) / (self.gs * dxx)) if self.ns else None
+        self.nc = max(int((g > 0).sum()), 1)
+        b = [-s0[:ncomp, H].ravel()]
+        if self.ns:
+            b.append(-cross(s0[:, S], self.e) * self.row)
+        if self.aug:
+            b.append(np.array([force_residual / (self.G * self.nc)]))
+        self.b = np.concatenate(b) / np.array(
+            [self.sref] * (ncomp * self.nh + self.ns) + [1.0] * self.aug)
+        self.n = self.b.size
+        self._dq = np.zeros_like(q0)
+        self.matvecs = 0
+
+    def increments(self, x: np.ndarray) -> np.ndarray:
+        """Traction increments (Pa) of the unknowns x."""
+        k = self.ncomp * self.nh
+        d = self._dq
+        d[:] = 0.0
+        d[: self.ncomp, self.H] = x[:k].reshape(self.ncomp, self.nh) * self.G
+        if self.ns:
+            d[:, self.S] = self.G * x[k : k + self.ns] * self.t
+        return d
+
+    def matvec(self, x: np.ndarray) -> np.ndarray:
+        self.matvecs += 1
+        k = self.ncomp * self.nh
+        d = self.increments(x)
+        u = self.op.tangential(d[0], d[1] if self.ncomp == 2 else None)
+        r = rolling_slip(u, self.op.dx) if self.rolling else u
+        z = x[-1] * self.sref if self.aug else 0.0  # rigid slip increment along x
+        rh = r[: self.ncomp, self.H]
+        rh[0] += z
+        out = [rh.ravel() / self.sref]
+        if self.ns:
+            xs = x[k : k + self.ns]
+            rows = cross(r[:, self.S], self.e) + z * self.e[1] + self.se * xs * self.G / self.gs
+            out.append(rows * self.row / self.sref)
+        if self.aug:
+            out.append(np.array([d[0].sum() / (self.G * self.nc)]))
+        return np.concatenate(out)
+
+    def precondition(self, r: np.ndarray) -> np.ndarray:
+        out = r.copy()
+        k = self.ncomp * self.nh
+        u = np.zeros((2, *self.H.shape))
+        u[: self.ncomp, self.H] = r[:k].reshape(self.ncomp, self.nh) * self.sref
+        if self.rolling:
+            u = np.cumsum(u[..., ::-1], axis=-1)[..., ::-1] * self.op.dx
+        q = self.op.tangential_inverse(u[0], u[1]) / self.G
+        out[:k] = q[: self.ncomp, self.H].ravel()
+        return out
+
+    def solve(self, rtol: float) -> NewtonStep:
+        """Solve by GMRES (an inexact step is still a step: the caller judges)."""
+        if self.n == 0 or not np.any(self.b):
+            return NewtonStep(self.q0, self.e_all, 0.0, 0.0)
+        A = spla.LinearOperator((self.n, self.n), matvec=self.matvec, dtype=float)
+        M = None
+        if self.ncomp == 2:
+            M = spla.LinearOperator((self.n, self.n), matvec=self.precondition, dtype=float)
+        x, _ = spla.gmres(A, self.b, rtol=rtol, atol=0.0, restart=80, maxiter=10, M=M)
+        q = self.q0 + self.increments(x)
+        e_new = self.e_all.copy()
+        rot = 0.0
+        if self.ns:
+            k = self.ncomp * self.nh
+            dth = np.clip(x[k : k + self.ns] * self.G / self.gs, -np.pi / 3, np.pi / 3)
+            en = self.e * np.cos(dth) + self.t * np.sin(dth)
+            e_new[:, self.S] = en / np.hypot(en[0], en[1])
+            q[:, self.S] = self.gs * e_new[:, self.S]
+            rot = float(np.abs(dth).max())
+        dw = float(x[-1] * self.sref) if self.aug else 0.0
+        return NewtonStep(q, e_new, rot, dw)

@@ -1,0 +1,120 @@
+"""The result of a tangential contact solve and the quantities read off it.
+
+Signs follow :mod:`contact.tangential.kinematics`: forces are those on body 1, creepage
+is the rigid slip of body 1 relative to body 2 over the rolling speed, the leading edge
+is at the largest x.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.tangential.grid import Grid
+from contact.tangential.influence import PairConstants
+from contact.tangential.kernels import SLIP, STICK
+from contact.tangential.kinematics import Creepage
+
+
+@dataclass(frozen=True)
+class TangentialResult:
+    """Pressure, tractions and slip of a rolling or shift solve.
+
+    Attributes
+    ----------
+    grid : Grid
+        The grid and undeformed separation.
+    constants : PairConstants
+        Combined elastic constants (G, nu, K).
+    mu : float
+        Coefficient of friction.
+    p : ndarray, shape (ny, nx)
+        Pressure (Pa).
+    q : ndarray, shape (2, ny, nx)
+        Tractions on body 1 (Pa).
+    s : ndarray, shape (2, ny, nx)
+        Slip: velocity over V in rolling (dimensionless), distance in a shift (m).
+    state : ndarray of int8
+        0 exterior, 1 adhesion, 2 slip.
+    creepage : Creepage
+        Creepages in rolling; in a shift, xi and eta hold the rigid shift (m).
+    approach : float
+        Rigid approach delta (m) against the datum of h (plane strain: only relative).
+    rolling : bool
+        Steady rolling (else a shift).
+    iterations : int
+        Normal-tangential (Panagiotopoulos) iterations.
+    """
+
+    grid: Grid
+    constants: PairConstants
+    mu: float
+    p: np.ndarray
+    q: np.ndarray
+    s: np.ndarray
+    state: np.ndarray
+    creepage: Creepage
+    approach: float
+    rolling: bool
+    iterations: int
+
+    @property
+    def fn(self) -> float:
+        """Normal force (N; N/m in plane strain)."""
+        return float(self.p.sum() * self.grid.area)
+
+    @property
+    def fx(self) -> float:
+        """Tangential force on body 1 along x (N; N/m in plane strain)."""
+        return float(self.q[0].sum() * self.grid.area)
+
+    @property
+    def fy(self) -> float:
+        """Tangential force on body 1 along y (N; N/m in plane strain)."""
+        return float(self.q[1].sum() * self.grid.area)
+
+    @property
+    def pmax(self) -> float:
+        """Peak pressure (Pa)."""
+        return float(self.p.max())
+
+    @property
+    def contact_area(self) -> float:
+        """Loaded area (m^2; contact width in m in plane strain)."""
+        return float(np.count_nonzero(self.p > 0) * self.grid.area)
+
+    @property
+    def stick_area(self) -> float:
+        """Adhesion area (m^2; m in plane strain)."""
+        return float(np.count_nonzero(self.state == STICK) * self.grid.area)
+
+    @property
+    def slip_area(self) -> float:
+        """Slip area (m^2; m in plane strain)."""
+        return float(np.count_nonzero(self.state == SLIP) * self.grid.area)
+
+    @property
+    def n_stick(self) -> int:
+        """Number of adhesion elements."""
+        return int(np.count_nonzero(self.state == STICK))
+
+    @property
+    def n_slip(self) -> int:
+        """Number of slip elements."""
+        return int(np.count_nonzero(self.state == SLIP))
+
+    @property
+    def frictional_power(self) -> float:
+        """Frictional dissipation per unit rolling speed, -sum(q . s) dA (N = J/m rolled;
+        N/m = J/m^2 in plane strain). In a shift, the frictional work of the step (J)."""
+        return float(-(self.q * self.s).sum() * self.grid.area)
+
+    def pressure_moment(self) -> float:
+        """Moment of the pressure about the contact centre, sum(p x) dA (N m; N in plane
+        strain): positive when the pressure leans to the leading edge and resists rolling."""
+        return float((self.p * self.grid.x[None, :]).sum() * self.grid.area)
+
+    def rolling_resistance_coefficient(self, radius: float) -> float:
+        """The pressure's moment about the centre over N R (dimensionless)."""
+        return self.pressure_moment() / (self.fn * radius)

@@ -1,0 +1,176 @@
+"""The tangential contact problem for a given pressure: Kalker's active-set iteration.
+
+For a pressure p (and so a traction bound g = mu p), a rigid slip w and the fixed part
+u0 of the tangential displacement difference, find tractions q on the contact elements
+with Coulomb's law (Kalker 1990, sec. 2.1):
+
+    |q| <= g;  s = 0 where |q| < g (adhesion);  q = -g s/|s| where s != 0 (slip),
+
+s = w + L(A q + u0) the slip, L the upwind difference of steady rolling or the identity of
+a shift (:mod:`contact.tangential.kinematics`) and A the Cerruti operator
+(:mod:`contact.tangential.influence`).
+
+Algorithm (the active-set idea of Kalker's TANG, 1990 sec. 2.2): with the adhesion set H,
+the slip set S and the slip directions e fixed, the problem is linear: q = g e on S and
+s = 0 on H. That system is solved by GMRES (Saad & Schultz 1986) with the FFT products
+of A, no matrix is formed. The sets and directions are then updated element by element
+(:func:`contact.tangential.kernels.update_states`) until none changes and the directions
+have settled.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.errors import ConvergenceError
+from contact.tangential.influence import HalfSpacePair
+from contact.tangential.kernels import SLIP, STICK, update_states
+from contact.tangential.kinematics import rolling_slip
+from contact.tangential.newton import NewtonSystem
+
+
+@dataclass
+class TangentialState:
+    """Tractions, slip and element states of one solved tangential problem.
+
+    Attributes
+    ----------
+    q : ndarray, shape (2, ny, nx)
+        Tractions (q_x, q_y) on body 1 (Pa).
+    s : ndarray, shape (2, ny, nx)
+        Slip: a velocity over V in rolling (dimensionless), a distance in a shift (m).
+    state : ndarray of int8, shape (ny, nx)
+        0 exterior, 1 adhesion, 2 slip.
+    e : ndarray, shape (2, ny, nx)
+        Unit traction directions of the slip elements.
+    outer, matvecs : int
+        Active-set iterations and FFT operator products used.
+    """
+
+    q: np.ndarray
+    s: np.ndarray
+    state: np.ndarray
+    e: np.ndarray
+    outer: int = 0
+    matvecs: int = 0
+    dw: float = 0.0
+
+
+def initial_state(g: np.ndarray) -> TangentialState:
+    """Full adhesion on the loaded elements, zero tractions."""
+    shape = g.shape
+    return TangentialState(q=np.zeros((2, *shape)), s=np.zeros((2, *shape)),
+                           state=np.where(g > 0, STICK, 0).astype(np.int8),
+                           e=np.zeros((2, *shape)))
+
+
+def slip_of(op: HalfSpacePair, q: np.ndarray, w: np.ndarray, u0: np.ndarray,
+            rolling: bool) -> np.ndarray:
+    """s = w + L(A q + u0)."""
+    u = op.tangential(q[0], q[1]) + u0
+    return w + (rolling_slip(u, op.dx) if rolling else u)
+
+
+def diagonal(op: HalfSpacePair, rolling: bool) -> tuple[float, float]:
+    """The diagonal (x and y) of the slip operator: an element's slip per unit of its own
+    traction (m/Pa in a shift, 1/Pa in rolling)."""
+    kxx, kyy = op.real["xx"], op.real["yy"]
+    if not rolling:
+        return float(kxx[0, 0]), float(kyy[0, 0])
+    return (float(kxx[0, 0] - kxx[0, 1]) / op.dx, float(kyy[0, 0] - kyy[0, 1]) / op.dx)
+
+
+def solve_tangential(
+    op: HalfSpacePair,
+    g: np.ndarray,
+    w: np.ndarray,
+    u0: np.ndarray,
+    *,
+    rolling: bool,
+    start: TangentialState | None = None,
+    tol: float = 1e-6,
+    max_outer: int = 200,
+    force: float | None = None,
+    area: float = 1.0,
+) -> TangentialState:
+    """Solve the tangential problem for the bound g = mu p (see the module docstring).
+
+    Parameters
+    ----------
+    op : HalfSpacePair
+        Influence operator of the grid.
+    g : ndarray, shape (ny, nx)
+        Traction bound mu p (Pa); elements with g = 0 carry no traction.
+    w : ndarray, shape (2, ny, nx)
+        Rigid slip (creepage, or rigid shift in metres).
+    u0 : ndarray, shape (2, ny, nx)
+        Fixed part of the tangential displacement difference (m): that of the pressure
+        for dissimilar bodies, minus the previous displacement in a shift.
+    rolling : bool
+        Steady rolling (slip = velocity) or a shift (slip = distance).
+    start : TangentialState, optional
+        Warm start (its states are re-read against g).
+    tol : float
+        Tolerance on the slip directions and on the linear solves.
+    max_outer : int
+        Limit on active-set iterations.
+    force : float, optional
+        Prescribed total force along x (N): the rigid slip along x is then an unknown,
+        added to ``w`` (its increment is returned in ``TangentialState.dw``). 3D only.
+    area : float
+        Element area (m^2), to turn tractions into the force.
+
+    Raises
+    ------
+    ConvergenceError
+        If the sets keep changing after ``max_outer`` iterations.
+    """
+    st = initial_state(g)
+    if start is not None:
+        keep = (g > 0) & (start.state > 0)
+        st.state[keep] = start.state[keep]
+        st.e[:, keep] = start.e[:, keep]
+        st.q[:, g > 0] = start.q[:, g > 0]
+    line_only_x = op.line and not np.any(w[1]) and not np.any(u0[1])
+    ncomp = 1 if line_only_x else 2
+    counter = [0]
+    slack = 1e-9
+    # the local (Gauss-Seidel) test suits the shift operator; the upwind rolling
+    # operator is far from diagonally dominant and takes the plain test
+    dxx, dyy = diagonal(op, rolling) if not rolling else (0.0, 0.0)
+    w = w.copy()
+    dw_total = 0.0
+    d_shift = diagonal(op, rolling)[0]
+    limit = float(g.sum()) * area
+    for it in range(1, max_outer + 1):
+        H, S = st.state == STICK, st.state == SLIP
+        q0 = np.zeros_like(st.q)
+        q0[:, H] = st.q[:, H]
+        q0[:, S] = g[S] * st.e[:, S]
+        s0 = slip_of(op, q0, w, u0, rolling)
+        residual = None if force is None else force / area - float(q0[0].sum())
+        system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
+        step = system.solve(1e-6)
+        counter[0] += system.matvecs
+        q, st.e, rot = step.q, step.e, step.rotation
+        w[0] += step.dw
+        dw_total += step.dw
+        s = slip_of(op, q, w, u0, rolling)
+        st.q, st.s = q, s
+        aim = 4 if ncomp == 1 else 0  # 3D directions come from the Newton step
+        changes, de = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0], st.e[1],
+                                    dxx, dyy, slack, 1 | aim)
+        if changes == 0:
+            changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
+                                       st.e[1], dxx, dyy, slack, 2 | aim)
+        de = max(de, rot)
+        settled = force is None or abs(float(q[0].sum()) * area - force) <= tol * 1e-2 * limit
+        if changes == 0 and de <= tol and settled:
+            st.outer, st.matvecs, st.dw = it, counter[0], dw_total
+            st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
+            return st
+    raise ConvergenceError(
+        f"tangential solver: the stick/slip areas did not settle in {max_outer} iterations",
+        float("nan"), max_outer)

@@ -1,0 +1,132 @@
+"""Steady rolling with friction: prescribed creepages or a prescribed tangential force.
+
+The pressure comes from the normal problem on the same grid; for dissimilar bodies
+(K != 0) the normal and tangential problems are iterated in turn (the Panagiotopoulos
+process of CONTACT; Kalker 1990 sec. 2.3): the tractions' normal displacement is added to
+the gap, the pressure solved again, and so on until the pressure settles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from contact.errors import ContactInputError, ConvergenceError
+from contact.tangential.forcecontrol import slip_for_force
+from contact.tangential.grid import Grid
+from contact.tangential.influence import HalfSpacePair, PairConstants
+from contact.tangential.kinematics import Creepage, rigid_slip
+from contact.tangential.normal import solve_pressure
+from contact.tangential.results import TangentialResult
+from contact.tangential.solver import TangentialState, solve_tangential
+
+
+def check_friction(mu: float) -> float:
+    """mu as a float, or one error line when it is not a positive finite number."""
+    if not (isinstance(mu, (int, float)) and math.isfinite(mu) and mu > 0):
+        raise ContactInputError(f"friction coefficient mu must be positive, got {mu}")
+    return float(mu)
+
+
+def operator_for(grid: Grid, constants: PairConstants) -> HalfSpacePair:
+    """The influence operator of a grid."""
+    return HalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, constants,
+                         line=grid.line)
+
+
+def steady_rolling(
+    grid: Grid,
+    constants: PairConstants,
+    load: float,
+    mu: float,
+    creepage: Creepage | None = None,
+    *,
+    fx: float | None = None,
+    coupled: bool = True,
+    pressure: np.ndarray | None = None,
+    tol: float = 1e-6,
+    max_coupling: int = 30,
+) -> TangentialResult:
+    """Solve steady rolling on ``grid``.
+
+    Parameters
+    ----------
+    grid : Grid
+        Grid and undeformed separation (:mod:`contact.tangential.grid`).
+    constants : PairConstants
+        Combined constants of body 1 and body 2.
+    load : float
+        Normal force (N; N/m for a line contact).
+    mu : float
+        Coefficient of friction (> 0).
+    creepage : Creepage, optional
+        Prescribed creepages (xi is the starting guess when ``fx`` is given).
+    fx : float, optional
+        Prescribed tangential force on body 1 along x (N; N/m); 0 is free rolling.
+        The creepage xi is then solved for.
+    coupled : bool
+        Iterate the normal problem with the tractions (only matters when K != 0).
+    pressure : ndarray, optional
+        A pressure to use instead of solving the normal problem (uncoupled only).
+    tol : float
+        Tolerance of the slip directions and of the pressure between couplings.
+    max_coupling : int
+        Limit on normal-tangential iterations.
+    """
+    mu = check_friction(mu)
+    creep = creepage or Creepage()
+    op = operator_for(grid, constants)
+    if pressure is not None:
+        p, delta = np.asarray(pressure, float), float("nan")
+        coupled = False
+    else:
+        p, delta = solve_pressure(op, grid.h, load)
+    if np.any(p[:, -1] > 0):
+        raise ContactInputError(
+            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    st: list[TangentialState | None] = [None]
+    xi = creep.xi
+    iterations = 0
+    for iterations in range(1, max_coupling + 1):  # noqa: B007 (read after the loop)
+        u0 = op.tangential_from_normal(p)
+        g = mu * p
+
+        def run(v: float, g=g, u0=u0, force=None) -> TangentialState:
+            w = rigid_slip(grid.x, grid.y, Creepage(v, creep.eta, creep.phi))
+            st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0], tol=tol,
+                                     force=force, area=grid.area)
+            return st[0]
+
+        if fx is None:
+            run(xi)
+        elif not grid.line:
+            # 3D: the creepage is one more unknown of the Newton steps
+            fn = float(p.sum()) * grid.area
+            if abs(fx) >= mu * fn:
+                raise ContactInputError(
+                    f"tangential force {abs(fx):.4g} N is not below the friction limit "
+                    f"mu N = {mu * fn:.4g} N: the bodies slide as a whole")
+            xi += run(xi, force=fx).dw
+        else:
+            scale = 2.0 * mu * float(p.max()) / constants.e_star
+            fn = float(p.sum()) * grid.area
+            xi = slip_for_force(lambda v: float(run(v).q[0].sum()) * grid.area, fx, xi,
+                                scale / 8.0, mu * fn)
+            run(xi)
+        if not (coupled and op.coupled):
+            break
+        q = st[0].q
+        p_new, delta = solve_pressure(op, grid.h, load,
+                                      extra=op.normal_from_tangential(q[0], q[1]), start=p)
+        change = float(np.abs(p_new - p).sum() / p.sum())
+        p = p_new
+        if change < tol:
+            break
+    else:
+        raise ConvergenceError(
+            f"normal-tangential coupling did not settle in {max_coupling} iterations")
+    s = st[0]
+    return TangentialResult(grid=grid, constants=constants, mu=mu, p=p, q=s.q, s=s.s,
+                            state=s.state, creepage=Creepage(xi, creep.eta, creep.phi),
+                            approach=delta, rolling=True, iterations=iterations)

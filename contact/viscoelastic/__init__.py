@@ -1,0 +1,36 @@
+"""Steady rolling on linear viscoelastic bodies (standard linear solid, Prony series).
+
+Modules: :mod:`.rheology` (SLS in CONTACT's convention, Prony series, the pair's creep
+series), :mod:`.hunter` (Hunter's 1961 closed form for a rigid cylinder), :mod:`.line`
+(plane-strain boundary elements, exact influence coefficients), :mod:`.surface` (3D FFT
+boundary elements on a grid), :mod:`.loss` (loss data of materials, with sources),
+:mod:`.traction` (plane-strain steady rolling tractions with creep), :mod:`.kernels`
+(numba: the exponential creep filter), :mod:`.sweep` (load sweep and lambda),
+:mod:`.mechanisms` (rolling-friction mechanisms side by side at the rotor's loads),
+:mod:`.result` (the result record). Guide: docs/viscoelastic_rolling.md.
+"""
+
+from contact.viscoelastic.hunter import HunterSolution, hunter_cylinder
+from contact.viscoelastic.line import rolling_cylinder, solve_line
+from contact.viscoelastic.result import RollingResult
+from contact.viscoelastic.rheology import (
+    CreepSeries,
+    PronySeries,
+    StandardLinearSolid,
+    pair_creep,
+)
+from contact.viscoelastic.traction import TractionResult, steady_traction
+
+__all__ = [
+    "CreepSeries",
+    "HunterSolution",
+    "PronySeries",
+    "RollingResult",
+    "StandardLinearSolid",
+    "TractionResult",
+    "hunter_cylinder",
+    "pair_creep",
+    "rolling_cylinder",
+    "solve_line",
+    "steady_traction",
+]

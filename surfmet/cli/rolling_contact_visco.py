@@ -1,0 +1,99 @@
+"""``surfmet rolling-contact ... --viscoelastic BODY:Eg=..:Er=..:tau=.. --speed V``: the
+steady viscoelastic rolling solve (normal problem) behind the rolling-contact command.
+
+Reports the rolling-resistance coefficient (the pressure's moment about the axis over
+N R), pmax, the approach, and the leading and trailing contact edges (the contact moves
+towards +x; the leading edge is where material enters).
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+
+def add_visco_options(p: argparse.ArgumentParser) -> None:
+    """The --viscoelastic option (repeatable: one per body)."""
+    p.add_argument("--viscoelastic", action="append", default=None,
+                   metavar="BODY:Eg=..:Er=..:tau=..",
+                   help="steady rolling on a standard linear solid: BODY ball or plate, "
+                   "glassy and relaxed moduli (Pa units), creep time tau_c (s, ms; CONTACT's "
+                   "convention: the stress-relaxation time is tau_c Er/Eg); needs --speed; "
+                   "repeat for both bodies. Reports the rolling-resistance coefficient, "
+                   "pmax, approach and the contact edges; with --line also the tractions "
+                   "(quasi-identical bodies), e.g. --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms")
+
+
+def load_value(text: Any, line: bool) -> float:
+    """A load in N, or with ``line`` a load per length in N/m (``100N/mm``)."""
+    from surfmet.mechanics.rolling_contact import parse_line_load
+    from surfmet.units import parse_force
+
+    if isinstance(text, (int, float)):
+        return float(text)
+    return parse_line_load(text) if line else parse_force(str(text))
+
+
+def speed_value(value: Any) -> float:
+    """V in m/s, positive."""
+    try:
+        v = float(str(value).removesuffix("m/s"))
+    except (TypeError, ValueError):
+        raise SurfmetInputError(f"--speed must be a number in m/s, got {value!r}") from None
+    if not (v > 0 and v != float("inf")):
+        raise SurfmetInputError(f"--speed must be positive (m/s), got {value!r}")
+    return v
+
+
+def run_viscoelastic(args: argparse.Namespace) -> int:
+    """Solve and report (text or --json)."""
+    from surfmet.cli._common import emit_json
+    from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling_contact
+
+    if getattr(args, "speed", None) is None:
+        raise SurfmetInputError("--viscoelastic needs --speed V (m/s)")
+    line = bool(getattr(args, "line", False))
+    res, tr = viscoelastic_rolling_contact(
+        radius=args.radius, load=load_value(args.load, line), materials=args.materials,
+        viscoelastic=args.viscoelastic, speed=speed_value(args.speed), line=line,
+        grid=getattr(args, "grid", None), plate=getattr(args, "plate", None),
+        ball=getattr(args, "ball", None), mu=getattr(args, "mu", None),
+        creepage=getattr(args, "creepage", None))
+    out = res.to_json()
+    if tr is not None:
+        dx = float(res.x[1] - res.x[0])
+        out.update({"creepage": {"value": tr.creepage, "unit": "1"},
+                    "fx": {"value": tr.force, "unit": "N/m"},
+                    "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
+                    "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"},
+                    "sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"})
+    out["model"] = ("viscoelastic steady rolling, normal problem"
+                    + (" and tangential tractions (plane strain, quasi-identical bodies)"
+                       if tr is not None else " (frictionless)"))
+    out["direction"] = "the contact moves towards +x; the leading edge is at larger x"
+    if tr is None and getattr(args, "mu", None) is not None:
+        out["note"] = ("tangential tractions on viscoelastic bodies are solved for --line "
+                       "only; this is the ball's normal problem")
+    if args.json:
+        emit_json(out)
+        return 0
+    per = " per unit length" if line else ""
+    print(f"viscoelastic steady rolling at {res.speed:g} m/s, load {res.load:.6g} "
+          f"{'N/m' if line else 'N'}{per}")
+    print(f"rolling-resistance coefficient  {res.rolling_resistance:.6g}  "
+          f"(pressure resultant {res.pressure_offset * 1e6:.4g} µm ahead of the axis)")
+    print(f"pmax                            {res.pmax / 1e6:.6g} MPa")
+    print(f"approach                        {res.approach * 1e6:.6g} µm"
+          + ("  (2D: against a 1 m datum)" if line else ""))
+    print(f"leading edge                    {res.leading * 1e6:.6g} µm")
+    print(f"trailing edge                   {res.trailing * 1e6:.6g} µm")
+    if tr is not None:
+        dx = float(res.x[1] - res.x[0])
+        print(f"creepage                        {tr.creepage:.6g}")
+        print(f"fx                              {tr.force:.6g} N/m")
+        print(f"stick, slip length              {tr.stick.sum() * dx * 1e6:.5g} µm, "
+              f"{tr.slip.sum() * dx * 1e6:.5g} µm")
+    return 0
+

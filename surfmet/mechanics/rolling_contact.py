@@ -1,0 +1,167 @@
+"""Steady rolling with friction of a ball (or roller) on a plate: the facade of
+:mod:`contact.tangential` for the ``surfmet rolling-contact`` command.
+
+One solve: the normal load, the materials and the friction coefficient, with either a
+prescribed longitudinal creepage or free rolling (zero tangential force, the creepage
+solved for); a sphere on a flat (3D) or a cylinder on a flat in plane strain (``line``,
+load per unit length); smooth, or rough from the plate and ball scans (their composite
+roughness, prepared as for ``surfmet contact``).
+
+Sign convention (stated once, in :data:`SIGN_CONVENTION`): body 1 is the ball, body 2
+the plate; the contact moves over both in +x (the leading edge is at +x); creepage is
+the rigid slip velocity of the ball relative to the plate over the rolling speed; forces
+are those on the ball, so a positive creepage gives a negative F_x.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+
+SIGN_CONVENTION = (
+    "body 1 = ball, body 2 = plate; the contact moves in +x (leading edge at +x); "
+    "creepage = (rigid slip velocity of the ball relative to the plate) / rolling speed; "
+    "forces are those on the ball (positive creepage gives negative fx)"
+)
+
+
+@dataclass(frozen=True)
+class RollingContact:
+    """A solved rolling contact and the set-up it came from."""
+
+    result: Any  # contact.tangential.TangentialResult
+    radius: float
+    load: float
+    line: bool
+    speed: float | None
+    free_rolling: bool
+    grid: int
+
+
+def parse_line_load(text: str) -> float:
+    """A load per unit length such as ``"100N/mm"`` or ``"2e4 N/m"`` -> N/m."""
+    from surfmet import units
+
+    if "/" not in str(text):
+        raise SurfmetInputError(f"--line needs a load per length, e.g. 100N/mm; got {text!r}")
+    num, den = str(text).split("/", 1)
+    length = units.parse_length("1" + den.strip())
+    value = units.parse_force(num) / length
+    if not (math.isfinite(value) and value > 0):
+        raise SurfmetInputError(f"load per length must be positive, got {text!r}")
+    return value
+
+
+def solve_rolling_contact(
+    radius: float,
+    load: float,
+    materials: Any,
+    mu: float,
+    *,
+    creepage: float | None = None,
+    line: bool = False,
+    speed: float | None = None,
+    grid: int | None = None,
+    roughness: Any = None,
+) -> RollingContact:
+    """Solve one steady-rolling case.
+
+    Parameters
+    ----------
+    radius : float
+        Ball (or roller) radius R (m).
+    load : float
+        Normal load (N), or per unit length (N/m) when ``line``.
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"`` or the two materials.
+    mu : float
+        Coefficient of friction (> 0).
+    creepage : float, optional
+        Longitudinal creepage xi; None solves free rolling (F_x = 0).
+    line : bool
+        Plane strain (a roller).
+    speed : float, optional
+        Rolling speed (m/s), to report the frictional power in watts as well.
+    grid : int, optional
+        Elements per side (default 64 in 3D, 256 in plane strain).
+    roughness : (ndarray, dx, dy), optional
+        Composite roughness map and its pitch (m), e.g. from
+        :func:`surfmet.pairing.prepare_pair`.
+    """
+    from contact.hertz import hertz_cylinder, hertz_sphere
+    from contact.tangential import (
+        Creepage,
+        cylinder_grid,
+        pair_constants,
+        sphere_grid,
+        steady_rolling,
+    )
+    from contact.tangential.grid import sample_roughness
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    constants = pair_constants(ball_m, plate_m)
+    if speed is not None and not (math.isfinite(speed) and speed > 0):
+        raise SurfmetInputError("--speed must be a positive speed in m/s")
+    n = grid or (256 if line else 64)
+    if n < 8:
+        raise SurfmetInputError("--grid needs at least 8 elements a side")
+    if line:
+        a = hertz_cylinder(radius, load, constants.e_star).a
+    else:
+        a = hertz_sphere(radius, load, constants.e_star).a
+    half = (1.5 if roughness is not None else 1.25) * a
+    make = cylinder_grid if line else sphere_grid
+    z = None
+    if roughness is not None:
+        zmap, zdx, zdy = roughness
+        x = make(radius, half, n).x
+        z = sample_roughness(zmap, zdx, zdy, x, [0.0] if line else x)
+        z = z - z.max()  # the highest summit touches first; only differences matter
+    g = make(radius, half, n, roughness=z)
+    res = steady_rolling(g, constants, load, mu,
+                         Creepage(xi=0.0 if creepage is None else creepage),
+                         fx=0.0 if creepage is None else None)
+    return RollingContact(result=res, radius=radius, load=load, line=line, speed=speed,
+                          free_rolling=creepage is None, grid=n)
+
+
+def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
+    """The JSON record of a solve: every value with its unit."""
+    from surfmet.units import quantity
+
+    r = rc.result
+    per = "/m" if rc.line else ""
+    area = "m" if rc.line else "m^2"
+    rec: dict[str, Any] = {
+        "sign_convention": SIGN_CONVENTION,
+        "geometry": "cylinder on flat, plane strain" if rc.line else "sphere on flat",
+        "free_rolling": rc.free_rolling,
+        "radius": quantity(rc.radius, "m"),
+        "load": quantity(rc.load, "N" + per),
+        "mu": r.mu,
+        "grid": {"elements": rc.grid, "element_size": quantity(r.grid.dx, "m")},
+        "creepage": quantity(r.creepage.xi, "1"),
+        "fx": quantity(r.fx, "N" + per),
+        "fy": quantity(r.fy, "N" + per),
+        "pmax": quantity(r.pmax, "Pa"),
+        "approach": quantity(r.approach, "m"),
+        "contact_area": quantity(r.contact_area, area),
+        "stick_area": quantity(r.stick_area, area),
+        "slip_area": quantity(r.slip_area, area),
+        "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
+        "rolling_resistance_coefficient": quantity(
+            r.rolling_resistance_coefficient(rc.radius), "1"),
+        "kalker_K": r.constants.K,
+        "dundurs_beta": r.constants.beta,
+    }
+    if rc.line:
+        rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
+                                "2D displacement and is given for the grid's own datum")
+    if rc.speed is not None:
+        rec["speed"] = quantity(rc.speed, "m/s")
+        rec["frictional_power_at_speed"] = quantity(r.frictional_power * rc.speed, "W" + per)
+    return rec

@@ -1,0 +1,342 @@
+"""Viscoelastic rolling at the surfmet layer: option text, the load sweep on scans, and the
+side-by-side comparison of rolling-friction mechanisms for the paper's rotor.
+
+Text forms
+----------
+``--viscoelastic BODY:Eg=..:Er=..:tau=..[:nu=..]``: BODY is ``ball`` or ``plate``; ``Eg``
+and ``Er`` are the glassy and relaxed moduli (pressure units), ``tau`` the creep time
+tau_c in CONTACT's convention (``s``, ``ms``, ``us``; a bare number is seconds; the
+stress-relaxation time is tau_c Er/Eg, :mod:`contact.viscoelastic.rheology`). ``nu``
+defaults to the body's material.
+
+The mechanism comparison (:func:`rolling_mechanisms`) uses the rotor of Alaci et al.
+(2022) (:mod:`contact.rotor`) for the ball loads and J + M R^2, and Table 3's films for
+the measured accelerations: each column fitted with the paper's constant-acceleration
+parabola phi = phi0 + omega0 t + eps t^2/2 (frames at 120 /s, a quarter turn a row).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.units import parse_pressure, quantity
+
+_TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
+
+
+def _parse_time(text: str) -> float:
+    t = text.strip()
+    for unit in sorted(_TIME, key=len, reverse=True):
+        if t.endswith(unit):
+            number, scale = t[: -len(unit)], _TIME[unit]
+            break
+    else:
+        number, scale = t, 1.0
+    try:
+        return float(number) * scale
+    except ValueError:
+        raise SurfmetInputError(f"cannot read the time {text!r}: write e.g. 2ms") from None
+
+
+def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
+    """``BODY:Eg=..:Er=..:tau=..[:nu=..]`` -> (body, StandardLinearSolid).
+
+    Raises
+    ------
+    SurfmetInputError
+        Unreadable text; contact.ContactInputError for Er > Eg or tau <= 0.
+    """
+    from contact.viscoelastic import StandardLinearSolid
+
+    body, *opts = [s.strip() for s in str(text).split(":")]
+    body = body.lower()
+    if body not in ("ball", "plate"):
+        raise SurfmetInputError(f"--viscoelastic names the body first: ball or plate, got "
+                                f"{body!r}")
+    kw: dict[str, float] = {}
+    for opt in opts:
+        key, sep, value = opt.partition("=")
+        key = key.strip().lower()
+        if not sep:
+            raise SurfmetInputError(f"cannot read viscoelastic option {opt!r}: write KEY=VALUE")
+        if key in ("eg", "er"):
+            kw[key] = parse_pressure(value)
+        elif key in ("tau", "tau_c", "tc"):
+            kw["tau"] = _parse_time(value)
+        elif key == "nu":
+            try:
+                kw["nu"] = float(value)
+            except ValueError:
+                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
+        else:
+            raise SurfmetInputError(f"unknown viscoelastic option {key!r}: use Eg, Er, tau, nu")
+    missing = [k for k in ("eg", "er", "tau") if k not in kw]
+    if missing:
+        raise SurfmetInputError(f"--viscoelastic needs Eg, Er and tau; missing {missing}")
+    nu = kw.get("nu", (ball if body == "ball" else plate).nu)
+    return body, StandardLinearSolid(kw["eg"], kw["er"], kw["tau"], nu)
+
+
+@dataclass(frozen=True, eq=False)
+class ViscoRollingReport:
+    """Viscoelastic rolling resistance over a load sweep (``surfmet rolling --model
+    viscoelastic``)."""
+
+    sweep: Any
+    radius: float
+    bodies: tuple[Any, Any]
+    notes: tuple[str, ...] = ()
+
+    def to_json(self) -> dict[str, Any]:
+        s = self.sweep
+        st = s.settings
+        return {
+            "model": "viscoelastic",
+            "lambda_eff": quantity(s.lambda_eff, ""),
+            "lambda_ci": quantity(list(s.lambda_ci), ""),
+            "loads": quantity(s.loads, "N"),
+            "moments": quantity(s.moments, "N m"),
+            "rolling_resistance_coefficient": quantity(s.forces / s.loads, ""),
+            "local_lambda": quantity(s.local_lambda, ""),
+            "settings": {"radius": quantity(self.radius, "m"),
+                         "speed": quantity(st["speed"], "m/s"),
+                         "bodies": [repr(b) for b in self.bodies],
+                         "grid": st["grid"], "dx": quantity(st["dx"], "m"),
+                         "roughness": st["roughness"], "notes": list(self.notes)},
+        }
+
+
+def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
+                         materials: Any, loads: Any, speed: float,
+                         viscoelastic: list[str] | None = None,
+                         loss: tuple[float, float] | None = None, grid: int = 128,
+                         spikes: bool = True, progress: Any = None) -> ViscoRollingReport:
+    """Rolling resistance of viscoelastic bodies over a load sweep (smooth or scans).
+
+    Each body is the ``--viscoelastic`` SLS given for it, else, with ``loss``, the SLS of
+    that loss factor peaking at V/a (:func:`contact.viscoelastic.loss.sls_from_loss`), else
+    elastic.
+    """
+    from contact.hertz import hertz_sphere
+    from contact.materials import composite_modulus
+    from contact.viscoelastic.loss import sls_from_loss
+    from contact.viscoelastic.sweep import viscoelastic_sweep
+    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.scan_preparation import prepare_scans
+
+    ball_m, plate_m = parse_materials(materials)
+    bodies: dict[str, Any] = {"ball": ball_m, "plate": plate_m}
+    if loss is not None:
+        w_mid = float(np.sqrt(np.min(loads) * np.max(loads)))
+        t_peak = hertz_sphere(radius, w_mid, composite_modulus(ball_m, plate_m)).a / speed
+        for name, eta in zip(("ball", "plate"), loss):
+            m = bodies[name]
+            bodies[name] = sls_from_loss(m.E, m.nu, eta, t_peak)
+    for text in viscoelastic or []:
+        name, sls = parse_viscoelastic(text, ball_m, plate_m)
+        bodies[name] = sls
+    prep = prepare_scans(plate, ball, spikes=spikes)
+    pair = prep.pair
+    sweep = viscoelastic_sweep(
+        radius, bodies["ball"], bodies["plate"], loads, speed,
+        roughness=None if pair is None else pair.roughness,
+        roughness_dx=None if pair is None else pair.dx,
+        roughness_dy=None if pair is None else pair.dy, n=grid, progress=progress)
+    notes = [*(prep.notes if pair is not None else ()), *sweep.notes]
+    if pair is not None:
+        notes.append("roughness frozen in the contact frame (contact.viscoelastic.sweep)")
+    return ViscoRollingReport(sweep, float(radius), (bodies["ball"], bodies["plate"]),
+                              tuple(notes))
+
+
+def table3_accelerations() -> dict[str, float]:
+    """Constant-acceleration eps (rad/s^2) of each Table 3 column, parabola fits."""
+    from contact.rotor.frames import table3
+    from contact.rotor.paper import FPS, MARK_STEP
+
+    out = {}
+    for name, frames in table3().items():
+        f = np.asarray(frames, dtype=float)
+        t = (f - f[0]) / FPS
+        phi = np.arange(f.size) * MARK_STEP
+        out[name] = float(2.0 * np.polyfit(t, phi, 2)[0])
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class MechanismsReport:
+    """Mechanisms side by side with what Table 3 measures (``--model all``)."""
+
+    comparison: Any
+    measured: dict[str, float]
+    notes: tuple[str, ...] = field(default=())
+
+    @property
+    def measured_delta_eps(self) -> tuple[float, float]:
+        """(mean eps_s - mean eps_a, its standard error) from Table 3 (rad/s^2)."""
+        s = np.array([v for k, v in self.measured.items() if k.startswith("s")])
+        a = np.array([v for k, v in self.measured.items() if k.startswith("as")])
+        se = math.sqrt(s.var(ddof=1) / s.size + a.var(ddof=1) / a.size)
+        return float(s.mean() - a.mean()), se
+
+    def to_json(self) -> dict[str, Any]:
+        c = self.comparison
+        d, se = self.measured_delta_eps
+        name, factor = c.dominant()
+        rows = {}
+        for m in c.mechanisms:
+            rows[m.name] = {
+                "moments_at_rotor_loads": quantity(list(m.rotor_moments), "N m"),
+                "lambda_eff": quantity(m.sweep.lambda_eff, ""),
+                "lambda_ci": quantity(list(m.sweep.lambda_ci), ""),
+                "local_lambda_rotor": quantity(m.local_lambda, ""),
+                "sweep_loads": quantity(m.sweep.loads, "N"),
+                "sweep_moments": quantity(m.sweep.moments, "N m"),
+                "delta_eps": quantity(m.delta_eps, "rad/s^2"),
+                "assumption": m.assumption,
+            }
+        return {"model": "all", "mechanisms": rows,
+                "rotor_loads": quantity(list(c.rotor_loads), "N"),
+                "rolling_inertia": quantity(c.rolling_inertia, "kg m^2"),
+                "dominant": name, "dominant_factor": quantity(factor, ""),
+                "measured_delta_eps": quantity(d, "rad/s^2"),
+                "measured_delta_eps_se": quantity(se, "rad/s^2"),
+                "measured_eps": quantity(self.measured, "rad/s^2"),
+                "assumptions": {k: quantity(v, _UNITS.get(k, "")) for k, v in
+                                c.assumptions.items()},
+                "notes": list(self.notes)}
+
+
+_UNITS = {"speed": "m/s", "hardness": "Pa", "peak_time": "s",
+          "contact_radius_symmetric": "m"}
+
+
+def microslip_sweep(radius: float, materials: Any, mu: float,
+                    grid: int | None = None) -> Any:
+    """loads -> RollingSweep of micro-slip dissipation in free rolling (the tangential
+    solver, :func:`surfmet.mechanics.rolling_contact.solve_rolling_contact`): F_r is the frictional
+    power per unit rolling speed, M_r = F_r R."""
+    from contact.viscoelastic.sweep import sweep_record
+    from surfmet.mechanics.rolling_contact import solve_rolling_contact
+
+    def run(loads: Any) -> Any:
+        w = np.asarray(loads, dtype=float)
+        res = [solve_rolling_contact(radius, float(n), materials, mu, grid=grid).result
+               for n in w]
+        forces = np.array([r.frictional_power for r in res])
+        return sweep_record("microslip", w, forces, radius,
+                            {"model": "microslip", "mu": mu, "grid": grid})
+
+    return run
+
+
+def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminium",
+                       loads: Any = (2.0, 12.0, 7), speed: float = 0.1,
+                       loss: tuple[float, float] | None = None,
+                       hardness: float | None = None, grid: int = 128,
+                       mu: float | None = 0.3) -> MechanismsReport:
+    """Mechanisms at the rotor's ball loads (smooth pair) beside Table 3's measurement.
+
+    ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic.loss`;
+    ``mu`` (assumed; dry steel on aluminium) sets the micro-slip mechanism, None leaves it
+    out (it costs one 3D frictional solve per load).
+    """
+    from contact.materials import contact_hardness
+    from contact.rolling import log_loads
+    from contact.rotor.mechanics import mass_properties, normal_reactions
+    from contact.viscoelastic.loss import loss_data
+    from contact.viscoelastic.mechanisms import compare_mechanisms
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    if loss is None:
+        loss = (loss_data(ball_m.name).typical, loss_data(plate_m.name).typical)
+    hardness = hardness if hardness is not None else contact_hardness(ball_m, plate_m)
+    if hardness is None:
+        raise SurfmetInputError("the plastic mechanism needs a hardness (--hardness)")
+    sym = mass_properties(collar_offset="symmetric")
+    asym = mass_properties(collar_offset="end")
+    ns = normal_reactions(sym)[0]
+    n1, n2 = normal_reactions(asym)
+    sweep = log_loads(*loads) if isinstance(loads, tuple) else np.asarray(loads, float)
+    ms = None if mu is None else microslip_sweep(radius, (ball_m, plate_m), mu)
+    comp = compare_mechanisms(radius, ball_m, plate_m, loads=sweep, rotor_loads=(ns, n1, n2),
+                              rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
+                              hardness=hardness, grid=grid, microslip=ms)
+    notes = () if mu is not None else ("micro-slip left out (no friction coefficient)",)
+    return MechanismsReport(comp, table3_accelerations(), notes)
+
+
+def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
+                                 viscoelastic: list[str], speed: float, line: bool = False,
+                                 grid: int | None = None, plate: Any = None, ball: Any = None,
+                                 spikes: bool = True, mu: float | None = None,
+                                 creepage: float | None = None) -> tuple[Any, Any]:
+    """One steady viscoelastic rolling solve of a ball or a cylinder: the normal problem,
+    and for a cylinder with ``mu`` the tangential one (quasi-identical bodies).
+
+    Parameters
+    ----------
+    radius : float
+        Ball or cylinder radius (m).
+    load : float
+        N (N), or N/m with ``line``.
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``; the ``viscoelastic`` texts replace either body by an SLS.
+    viscoelastic : list of str
+        ``BODY:Eg=..:Er=..:tau=..`` texts (:func:`parse_viscoelastic`).
+    speed : float
+        V (m/s), > 0.
+    line : bool
+        Plane strain (cylinder) instead of a ball.
+    grid : int, optional
+        Cells (line: default 1024) or cells per side (ball: default 128).
+    plate, ball : Topography or path, optional
+        Scans for a rough ball contact (the roughness frozen in the contact frame).
+    mu, creepage : float, optional
+        Coefficient of friction and creepage (default free rolling) for the tangential
+        tractions of a line contact (:func:`contact.viscoelastic.steady_traction`); a ball
+        gets the normal problem only.
+
+    Returns
+    -------
+    (contact.viscoelastic.RollingResult, contact.viscoelastic.TractionResult or None)
+    """
+    from contact.viscoelastic import pair_creep
+    from contact.viscoelastic.line import rolling_cylinder
+    from contact.viscoelastic.surface import rolling_sphere
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball_m, plate_m = parse_materials(materials)
+    bodies: dict[str, Any] = {"ball": ball_m, "plate": plate_m}
+    for text in viscoelastic:
+        name, sls = parse_viscoelastic(text, ball_m, plate_m)
+        bodies[name] = sls
+    creep = pair_creep(bodies["ball"], bodies["plate"])
+    if line:
+        if plate is not None or ball is not None:
+            raise SurfmetInputError("--line takes no scans")
+        res = rolling_cylinder(radius, load, creep, speed, n=grid or 1024)
+        if mu is None:
+            return res, None
+        from contact.viscoelastic import steady_traction
+        from contact.viscoelastic.line import influence_matrix
+
+        dx = float(res.x[1] - res.x[0])
+        A = influence_matrix(res.x.size, dx, creep, speed)
+        return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
+    n = grid or 128  # a ball: the normal problem (tractions are solved for lines only)
+    z = None
+    if plate is not None or ball is not None:
+        from contact.viscoelastic.sweep import roughness_window
+        from surfmet.mechanics.scan_preparation import prepare_scans
+
+        pair = prepare_scans(plate, ball, spikes=spikes).pair
+        half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
+        z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
+    return rolling_sphere(radius, load, creep, speed, n=n, roughness=z), None
