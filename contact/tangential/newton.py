@@ -24,6 +24,8 @@ import numpy as np
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
 
+PRECONDITIONER = "continuum"
+
 
 def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
           max_cycles: int = 10) -> np.ndarray:
@@ -114,6 +116,8 @@ class NewtonSystem:
             [self.sref] * (ncomp * self.nh + self.ns) + [1.0] * self.aug)
         self.n = self.b.size
         self._dq = np.zeros_like(q0)
+        self._inverse = (op.tangential_stiffness if PRECONDITIONER == "continuum"
+                         else op.tangential_inverse)
         self.matvecs = 0
 
     def increments(self, x: np.ndarray) -> np.ndarray:
@@ -151,7 +155,7 @@ class NewtonSystem:
         u[: self.ncomp, self.H] = r[:k].reshape(self.ncomp, self.nh) * self.sref
         if self.rolling:
             u = np.cumsum(u[..., ::-1], axis=-1)[..., ::-1] * self.op.dx
-        q = self.op.tangential_inverse(u[0], u[1]) / self.G
+        q = self._inverse(u[0], u[1]) / self.G
         out[:k] = q[: self.ncomp, self.H].ravel()
         return out
 
