@@ -11,9 +11,10 @@ rotor's acceleration) adds creep. Friction dissipates, per metre rolled,
 
 which is the frictional power per unit rolling speed of :mod:`contact.tangential`; as a
 rolling-resistance moment M_r = F_r R, comparable with the hysteresis and plastic models
-of :mod:`contact.rolling`. Each load is solved on its own grid scaled with its Hertz
-radius (so all loads have the same relative resolution), with the normal-tangential
-coupling of dissimilar bodies iterated.
+of :mod:`contact.rolling`. For a smooth pair each load is solved on its own grid scaled
+with its Hertz radius (so all loads have the same relative resolution), with the normal-tangential
+coupling of dissimilar bodies iterated. With roughness, all loads share one grid sized
+for the largest load, so that every load sees the same sampling of the asperities.
 """
 
 from __future__ import annotations
@@ -37,19 +38,20 @@ from contact.tangential.steady import check_friction, steady_rolling
 def microslip_dissipation(radius: float, ball: Material, plate: Material, load: float,
                           mu: float, *, traction_ratio: float = 0.0,
                           roughness: tuple[np.ndarray, float, float] | None = None,
-                          grid: int = 32) -> Any:
+                          grid: int = 32, half_width: float | None = None) -> Any:
     """One steady-rolling solve of a ball on a plate at ``load`` (N).
 
     ``traction_ratio`` = |F_x|/N, the tangential force on the ball opposing its rolling
-    (a ball accelerated by a slope, braked at the contact); 0 is free rolling. Returns the
-    :class:`~contact.tangential.results.TangentialResult`.
+    (a ball accelerated by a slope, braked at the contact); 0 is free rolling.
+    ``half_width`` fixes the grid (default: 1.25 Hertz radii, 1.5 with roughness).
+    Returns the :class:`~contact.tangential.results.TangentialResult`.
     """
     if not (math.isfinite(traction_ratio) and 0 <= traction_ratio < mu):
         raise ContactInputError(
             f"traction ratio must lie in [0, mu) = [0, {mu}), got {traction_ratio}")
     constants = pair_constants(ball, plate)
     a = hertz_sphere(radius, load, constants.e_star).a
-    half = (1.5 if roughness is not None else 1.25) * a
+    half = half_width or (1.5 if roughness is not None else 1.25) * a
     z = None
     if roughness is not None:
         x = sphere_grid(radius, half, grid).x
@@ -103,11 +105,14 @@ def microslip_sweep(
     creep = np.zeros(w.size)
     slip_fraction = np.zeros(w.size)
     results = []
+    half = None
+    if roughness is not None:
+        half = 1.5 * hertz_sphere(radius, float(w[-1]), pair_constants(ball, plate).e_star).a
     sequence = progress(range(w.size)) if progress is not None else range(w.size)
     for k in sequence:
         r = microslip_dissipation(radius, ball, plate, float(w[k]), mu,
                                   traction_ratio=traction_ratio, roughness=roughness,
-                                  grid=grid)
+                                  grid=grid, half_width=half)
         forces[k] = max(r.frictional_power, 0.0)
         creep[k] = r.creepage.xi
         slip_fraction[k] = r.slip_area / max(r.contact_area, 1e-300)
