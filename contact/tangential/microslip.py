@@ -107,7 +107,10 @@ def microslip_sweep(
     results = []
     half = None
     if roughness is not None:
-        half = 1.5 * hertz_sphere(radius, float(w[-1]), pair_constants(ball, plate).e_star).a
+        # asperities 3 sigma high still touch out to a^2 + 6 R sigma (as surfmet's domains)
+        a = hertz_sphere(radius, float(w[-1]), pair_constants(ball, plate).e_star).a
+        sigma = float(np.std(roughness[0]))
+        half = 1.25 * math.sqrt(a * a + 6.0 * radius * sigma)
     sequence = progress(range(w.size)) if progress is not None else range(w.size)
     for k in sequence:
         r = microslip_dissipation(radius, ball, plate, float(w[k]), mu,
