@@ -51,6 +51,8 @@ INVOCATIONS = {
               "--json"],
     "flat-contact": ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "1MPa",
                      "--json"],
+    "rolling-contact": ["rolling-contact", "--radius", "20mm", "--load", "5N", "--materials",
+                        "steel,aluminium", "--mu", "0.3", "--grid", "16", "--json"],
 }
 
 

@@ -62,20 +62,21 @@ def test_carter_rolling_traction():
 
 
 CONTACT_BENTALL = [
-    # mu, F_x / (mu N) in CONTACT's frame, coupled, CREEP X, PMAX, NADH, NSLIP
-    (1e-4, 0.0, False, 5.260e-4, 103.1, 1, 199),
-    (10.0, 0.0, True, 3.591e-4, 103.8, 200, 0),
-    (0.05, 0.0, True, 4.294e-4, 103.6, 125, 75),
-    (0.05, 0.75, True, 2.108e-4, 103.2, 36, 164),
-    (0.05, -0.75, True, 5.392e-4, 103.3, 106, 95),
+    # mu, F_x / (mu N) in CONTACT's frame, coupled, CREEP X, PMAX, NADH, NSLIP, FRIC.POWER
+    (1e-4, 0.0, False, 5.260e-4, 103.1, 1, 199, 1.156e-4),
+    (10.0, 0.0, True, 3.591e-4, 103.8, 200, 0, 0.0),
+    (0.05, 0.0, True, 4.294e-4, 103.6, 125, 75, 9.475e-3),
+    (0.05, 0.75, True, 2.108e-4, 103.2, 36, 164, 0.1955),
+    (0.05, -0.75, True, 5.392e-4, 103.3, 106, 95, 4.418e-2),
 ]
 
 
 @pytest.mark.parametrize("case", CONTACT_BENTALL)
 def test_bentall_johnson_against_contact(case):
     """Aluminium on steel rollers (bentall.inp, 216 elements of 1 um): creepage to 0.2 %,
-    peak pressure to 0.1 %, adhesion/slip element counts to one element."""
-    mu, fx_rel, coupled, creep, pmax, nadh, nslip = case
+    peak pressure to 0.1 %, adhesion/slip element counts to one element, frictional
+    power to 0.2 % (CONTACT prints watts over DY = 1000 mm at VELOC = 1000 mm/s)."""
+    mu, fx_rel, coupled, creep, pmax, nadh, nslip, power = case
     c = pair_constants_from(23000.0, 0.31, 82000.0, 0.28)  # N, mm
     x = -0.108 + (np.arange(216) + 0.5) * 0.001
     grid = Grid(x=x, y=np.zeros(1), h=(x**2 / (2 * 25.0))[None, :], line=True)
@@ -85,6 +86,35 @@ def test_bentall_johnson_against_contact(case):
     assert r.pmax == pytest.approx(pmax, rel=1e-3)
     assert abs(r.n_stick - nadh) <= 1
     assert abs(r.n_slip - nslip) <= 1
+    # N per mm of width per unit speed -> W over 1000 mm at 1 m/s
+    assert r.frictional_power * 1000.0 == pytest.approx(power, rel=2e-3, abs=1e-12)
+
+
+def test_bentall_full_slip_dissipation_closed_form():
+    """mu -> 0, free rolling, uncoupled (Bentall & Johnson 1967): all slips, with slip
+    s = (2K/G)(p - p*), p* the pressure splitting the load in halves (theta* + sin
+    theta* cos theta* = pi/4 on the ellipse); dissipation mu iint p |s| to 0.2 %."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    c = pair_constants_from(23000.0, 0.31, 82000.0, 0.28)
+    x = -0.108 + (np.arange(216) + 0.5) * 0.001
+    grid = Grid(x=x, y=np.zeros(1), h=(x**2 / (2 * 25.0))[None, :], line=True)
+    load, mu = 16.2019, 1e-4
+    r = steady_rolling(grid, c, load, mu, fx=0.0, coupled=False)
+    th = brentq(lambda t: t + math.sin(t) * math.cos(t) - math.pi / 4, 0.0, 1.5)
+    a = math.sqrt(4 * load * 25.0 / (math.pi * c.e_star))
+    p0 = 2 * load / (math.pi * a)
+    pstar = p0 * math.cos(th)
+
+    def p(s):
+        return p0 * math.sqrt(max(1 - (s / a) ** 2, 0.0))
+
+    ends = [-a * math.sin(th), a * math.sin(th)]
+    dissipation = mu * 2 * abs(c.K) / c.G * quad(lambda s: p(s) * abs(p(s) - pstar), -a, a,
+                                                  points=ends)[0]
+    assert r.frictional_power == pytest.approx(dissipation, rel=2e-3)
+    assert abs(r.creepage.xi) == pytest.approx(2 * abs(c.K) * pstar / c.G, rel=3e-3)
 
 
 def test_spence_compression_against_contact():

@@ -97,10 +97,17 @@ def cylinder_grid(radius: float, half_width: float, n: int,
 def sample_roughness(z: np.ndarray, zdx: float, zdy: float, x: np.ndarray,
                      y: np.ndarray) -> np.ndarray:
     """A height map (pitch zdx, zdy, centred on the contact) sampled at the grid points
-    (x, y) by bilinear interpolation; the map must cover the grid."""
-    from scipy.ndimage import map_coordinates
+    (x, y) by bilinear interpolation; the map must cover the grid. Non-measured points
+    (NaN) take the value of the nearest measured one."""
+    from scipy.ndimage import distance_transform_edt, map_coordinates
 
     z = np.asarray(z, dtype=float)
+    bad = ~np.isfinite(z)
+    if bad.all():
+        raise ContactInputError("the roughness map has no measured point")
+    if bad.any():
+        idx = distance_transform_edt(bad, return_distances=False, return_indices=True)
+        z = z[tuple(idx)]
     ny, nx = z.shape
     cols = np.asarray(x, float) / zdx + 0.5 * (nx - 1)
     rows = np.asarray(y, float) / zdy + 0.5 * (ny - 1)

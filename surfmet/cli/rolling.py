@@ -53,9 +53,14 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_ball_arguments(p)
     p.add_argument("--loads", type=force_range, required=True, metavar="F1:F2[:N]",
                    help="load range, N log-spaced loads (default 9), e.g. 1N:100N:9")
-    p.add_argument("--model", choices=("hysteresis", "plastic", "viscoelastic", "all"),
-                   default="hysteresis", help="dissipation model (default hysteresis); "
-                   "all: the mechanisms side by side at the rotor's ball loads")
+    p.add_argument("--model", choices=("hysteresis", "plastic", "microslip", "viscoelastic",
+                                       "all"),
+                   default="hysteresis", help="dissipation model (default hysteresis; "
+                   "microslip: frictional slip of dissimilar bodies, contact.tangential; "
+                   "all: the mechanisms side by side at the rotor's ball loads)")
+    p.add_argument("--traction-ratio", type=float, default=0.0, metavar="T",
+                   help="microslip: tangential force over normal force opposing the rolling "
+                   "(e.g. the rotor's acceleration; default 0, free rolling)")
     add_visco_arguments(p)
     p.add_argument("--alpha-h", type=float, default=1.0, metavar="A",
                    help="hysteresis loss fraction (default 1: M_r is the work put in)")
@@ -120,6 +125,7 @@ def run(args: argparse.Namespace) -> int:
         spikes=args.spikes, grid=args.grid,
         progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model}), loads",
                                      show=show_progress(args)),
+        mu=args.mu, traction_ratio=args.traction_ratio,
     )
     for note in rep.notes:
         log(f"note: {note}")
@@ -135,6 +141,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"model          {s.model}"
           + (f" ({s.settings['kinematics']} kinematics, alpha_h = {args.alpha_h:g})"
              if s.model == "hysteresis" else
+             f" (mu = {args.mu:g}, traction ratio {args.traction_ratio:g})"
+             if s.model == "microslip" else
              f" (first pass, hardness {s.settings['hardness'] / 1e9:.4g} GPa)"))
     if s.fit is not None:
         print(f"lambda_eff     {s.lambda_eff:.4f}   "

@@ -18,7 +18,7 @@ def add_visco_arguments(p: argparse.ArgumentParser) -> None:
                    "materials' typical values (contact.viscoelastic.loss)")
     p.add_argument("--mu", type=float, default=0.3, metavar="M",
                    help="friction coefficient assumed for the micro-slip mechanism of "
-                   "--model all (default 0.3, dry steel on aluminium)")
+                   "--model microslip and all (default 0.3, dry steel on aluminium)")
     p.add_argument("--no-microslip", action="store_true",
                    help="--model all without micro-slip (one 3D frictional solve per load)")
     p.add_argument("--viscoelastic", action="append", default=None,

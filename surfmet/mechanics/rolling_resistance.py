@@ -100,6 +100,8 @@ def rolling_resistance(
     centre: tuple[float, float] | None = None,
     offset: tuple[float, float] | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
+    mu: float = 0.3,
+    traction_ratio: float = 0.0,
 ) -> RollingReport:
     """Rolling-resistance moments over a load sweep and the fitted exponent lambda.
 
@@ -136,6 +138,9 @@ def rolling_resistance(
         (instead of ``centre``).
     progress : callable, optional
         Wraps the iterable of loads (a progress bar).
+    mu, traction_ratio : float
+        Microslip model (:mod:`contact.tangential.microslip`): friction coefficient and
+        |F_x|/N opposing the rolling (0: free rolling).
     """
     from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
@@ -147,8 +152,8 @@ def rolling_resistance(
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
     if not (math.isfinite(radius) and radius > 0):
         raise SurfmetInputError(f"the ball radius must be a positive length, got {radius!r}")
-    if model not in MODELS:
-        raise SurfmetInputError(f"model must be one of {MODELS}, got {model!r}")
+    if model not in (*MODELS, "microslip"):
+        raise SurfmetInputError(f"model must be one of {(*MODELS, 'microslip')}, got {model!r}")
     if lossy not in LOSSY:
         raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
     ball_m, plate_m = parse_materials(materials)
@@ -169,13 +174,22 @@ def rolling_resistance(
         from surfmet.mechanics.pairing import apex_centre
 
         centre = apex_centre(pair, offset)
-    sweep = sphere_sweep(
-        radius, e_star, w, model=model,
-        roughness=None if pair is None else CompositeRoughness(
-            pair.roughness, pair.dx, pair.dy, centre=centre),
-        roughness_rms=prep.sigma, hardness=hardness, alpha_h=alpha_h,
-        share=share, kinematics=kinematics, grid=grid, max_grid=max_grid, progress=progress,
-    )
+    if model == "microslip":
+        from contact.tangential.microslip import microslip_sweep
+
+        sweep = microslip_sweep(
+            radius, ball_m, plate_m, w, mu, traction_ratio=traction_ratio,
+            roughness=None if pair is None else (pair.roughness, pair.dx, pair.dy),
+            grid=grid or 32, progress=progress)
+    else:
+        sweep = sphere_sweep(
+            radius, e_star, w, model=model,
+            roughness=None if pair is None else CompositeRoughness(
+                pair.roughness, pair.dx, pair.dy, centre=centre),
+            roughness_rms=prep.sigma, hardness=hardness, alpha_h=alpha_h,
+            share=share, kinematics=kinematics, grid=grid, max_grid=max_grid,
+            progress=progress,
+        )
     notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]
     return RollingReport(sweep=sweep, radius=radius, ball_material=ball_m,
                          plate_material=plate_m, scans=prep, notes=tuple(notes), grid=grid)

@@ -30,6 +30,7 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         "confidence": quantity(s.fit.confidence if s.fit is not None else None, ""),
         "forces": quantity(s.forces, "N"),
         "notes": list(rep.notes),
+        **({"microslip": st["microslip"]} if "microslip" in st else {}),
     }
     if rep.scans is not None:
         settings["scan_preparation"] = rep.scans.record()
