@@ -4,12 +4,13 @@ or at the same angle of the rotor?
 A plate that is not plane slows and speeds the rotor at the same *track positions* in every
 launch from the same release point; an unbalance or a ball's form error does it at the same
 *rotor angles*. For a group where some test's model is inadequate (or a plate wave was
-named), every test's in-family residual is fitted with a wave of the group's median
-dominant period (:func:`contact.rotor.adequacy.wave_scan` at that one period), and the
-phases are compared in both coordinates: the rotor angle from the first mark, and the angle
-rolled since the fitted release ``phi0`` (``track = R x angle``). Their concentration is
-measured by the mean resultant length and Rayleigh's test (Zar's approximation of its
-p-value), which with three launches can reach p = 0.034 only when they agree closely.
+named), every test's in-family residual is fitted with a wave of the group's median period
+(the named wave's, else the residual periodogram's best;
+:func:`contact.rotor.adequacy.wave_scan` at that one period), and the phases are compared in
+both coordinates: the rotor angle from the first mark, and the angle rolled since the fitted
+release ``phi0`` (``track = R x angle``). Their concentration is measured by the mean
+resultant length and Rayleigh's test (Zar's approximation of its p-value), which with three
+launches can reach p = 0.034 only when they agree closely.
 
 Assumptions, stated because the frame table cannot show them: the launches of a group start
 from the same release point on the plate, and row 1 of every launch is the same mark of the
@@ -28,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.rotor.adequacy import wave_scan
+from contact.rotor.adequacy import named_wave, wave_scan
 from contact.rotor.analysis import TestReport
 from contact.rotor.family import EXTENSION
 from contact.rotor.paper import BALL_RADIUS
@@ -79,7 +80,11 @@ def residual_alignment(members: Sequence[TestReport], alpha: float = 0.05,
            and (not r.adequacy.adequate or r.selected in EXTENSION)]
     if not odd or len(members) < 2:
         return None
-    period = float(np.median([r.adequacy.residual.period for r in odd]))
+    periods = []
+    for r in odd:
+        named = named_wave(r.fit, float(np.ptp(r.angles)))
+        periods.append(named.period if named is not None else r.adequacy.residual.period)
+    period = float(np.median(periods))
     k = 2.0 * math.pi / period
     amps, rot, track = [], [], []
     for r in members:

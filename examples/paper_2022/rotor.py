@@ -142,7 +142,7 @@ def main(argv: list[str]) -> int:
     print(f"     {'test':5s} {'position-const':>15s} {'speed-const':>12s} {'unbal-const':>12s} "
           f"{'speed-position':>15s} {'pos+unb - pos':>14s}")
     for t in an.tests:
-        b = {m: t.fits[m].bic for m in SELECTABLE}
+        b = {m: t.fits[m].bic for m in SELECTABLE if m in t.fits}
         print(f"     {t.name:5s} {b['position'] - b['const']:15.1f} "
               f"{b['speed'] - b['const']:12.1f} {b['unbalance'] - b['const']:12.1f} "
               f"{b['speed'] - b['position']:15.1f} "
