@@ -17,6 +17,7 @@ from scipy.io import loadmat
 
 from profiles import ProfileError
 from profiles.features import feature_characterization, feature_parameters, segment
+from profiles.material_ratio import material_ratio_height
 
 DATA = Path(__file__).parent / "data" / "mts"
 DX = 0.5e-6  # the reference case studies' step
@@ -121,3 +122,56 @@ def test_bad_feature_input():
         segment(bad, dx)
     assert math.isnan(feature_characterization(np.linspace(0, 1e-6, 50), dx, "D",
                                                attr="HDh", statistic="mean"))
+
+
+
+# the reference's inverse material ratio Rcm(z, p) (µm, p in %), its own profiles
+RCM = {
+    "Bu_1_56_ak": {0.5: -3.7973321192264997, 2.0: -5.548912747473601,
+                   10.0: -9.5458811174645, 50.0: -28.823052580786012,
+                   87.5: -31.05135221703594, 100.0: -33.7653565680084},
+    "Luftpresser_1_56_ak": {0.5: -0.18506820977557692, 2.0: -0.337044956503081,
+                            10.0: -0.41691671929955393, 50.0: -0.54421091651516,
+                            87.5: -1.155009114492269, 100.0: -3.706617275460439},
+}
+
+
+@pytest.mark.parametrize("name", list(RCM))
+def test_rcm_matches_the_reference(name):
+    z = _profile(name)
+    for p, ref in RCM[name].items():
+        assert material_ratio_height(z, p / 100) * 1e6 == pytest.approx(ref, rel=1e-12)
+
+
+def test_rcm_closed_forms():
+    # N points at distinct heights: the level of ratio k/N is the k-th highest point
+    z = np.array([3.0, -1.0, 2.0, 0.5, -2.0]) * 1e-6
+    assert material_ratio_height(z, 0.0) == 0.0
+    assert material_ratio_height(z, 0.2) == 0.0
+    assert material_ratio_height(z, 0.21) == pytest.approx(-1e-6)
+    assert material_ratio_height(z, 0.6) == pytest.approx(-2.5e-6)
+    assert material_ratio_height(z, 1.0) == pytest.approx(-5e-6)
+    # a sine's share above A cos(pi p) is p: Rcm(p) = A (cos(pi p) - 1)
+    amp = 1e-6
+    s = amp * np.sin(np.linspace(0, 2 * np.pi, 200_001)[:-1])
+    for p in (0.1, 0.25, 0.5, 0.9):
+        assert material_ratio_height(s, p) == pytest.approx(amp * (np.cos(np.pi * p) - 1),
+                                                            abs=1e-4 * amp)
+    with pytest.raises(ProfileError, match="between 0 and 1"):
+        material_ratio_height(z, 1.5)
+
+
+def test_profile_output_states_rcm_and_rz_of_the_reference():
+    # the reference profiles are R-profiles already: evaluate them as they are
+    from surfmet.model import Profile
+    from surfmet.roughness import roughness
+
+    for name in RCM:
+        z = _profile(name)
+        res = roughness(Profile(z, DX), lc="none", level="none").to_json()["parameters"]
+        for p in (10, 50):
+            assert res[f"Rcm({p}%)"]["unit"] == "m"
+            assert res[f"Rcm({p}%)"]["value"] * 1e6 == pytest.approx(RCM[name][float(p)],
+                                                                     rel=1e-12)
+    # the reference's Rz (mean of five sections) of the last one, Luftpresser_1_56_ak, µm
+    assert res["Rz"]["value"] * 1e6 == pytest.approx(2.674442617015665, rel=1e-12)
