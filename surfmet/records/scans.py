@@ -40,7 +40,8 @@ def _fit_fields(f: Any) -> dict[str, Any]:
         "rms_residual": quantity(f.rms_residual, "m"),
         "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
         "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-        "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
+        "pv_form_deviation": {**quantity(f.pv_form_deviation, "m"),
+                              "name": "residual PV (all points)"},
         "n_points": f.n_points,
     }
 
@@ -60,6 +61,8 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         return {
             "shape": "sphere",
             **_fit_fields(f),
+            "form_pv": {**quantity(f.form_pv, "m"), "name": "form deviation",
+                        "meaning": "PV of the quadratic component of the sphere residual"},
             "convex": f.convex,
             "loss": loss,
         }
