@@ -144,8 +144,9 @@ def test_demo_and_fit_state_the_same_form_deviation(capsys):
     path = data_file("paper_ball.x3p")
     assert main(["fit", str(path), "--shape", "sphere", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
-    assert rec["form_pv"]["name"] == "form deviation" and rec["form_pv"]["unit"] == "m"
-    assert rec["pv_form_deviation"]["name"] == "residual PV (all points)"
+    assert rec["names"]["form_pv"].startswith("form deviation") and \
+        rec["form_pv"]["unit"] == "m"
+    assert rec["names"]["pv_form_deviation"] == "residual PV (all points)"
     summary, _ = ball_form(surfmet.read(path))
     text = _Text()
     _ball(text, {"ball": summary})

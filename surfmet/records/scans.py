@@ -40,8 +40,7 @@ def _fit_fields(f: Any) -> dict[str, Any]:
         "rms_residual": quantity(f.rms_residual, "m"),
         "radius_uncertainty": quantity(f.radius_uncertainty, "m"),
         "center_uncertainty": quantity(list(f.center_uncertainty), "m"),
-        "pv_form_deviation": {**quantity(f.pv_form_deviation, "m"),
-                              "name": "residual PV (all points)"},
+        "pv_form_deviation": quantity(f.pv_form_deviation, "m"),
         "n_points": f.n_points,
     }
 
@@ -61,8 +60,9 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         return {
             "shape": "sphere",
             **_fit_fields(f),
-            "form_pv": {**quantity(f.form_pv, "m"), "name": "form deviation",
-                        "meaning": "PV of the quadratic component of the sphere residual"},
+            "form_pv": quantity(f.form_pv, "m"),
+            "names": {"form_pv": "form deviation: PV of the quadratic component of the "
+                      "sphere residual", "pv_form_deviation": "residual PV (all points)"},
             "convex": f.convex,
             "loss": loss,
         }
