@@ -10,6 +10,7 @@ split_profile        primary / waviness / roughness by the ISO 16610-21 Gaussian
 iso4288_cutoff       automatic λc per ISO 4288
 fit_circle           radius of a ball or roller from a profile
 material_ratio, material_ratio_curve   Abbott-Firestone curve, Rmr(c)
+material_ratio_height   ISO 21920-2 Rcm(p), the level at material ratio p below the top
 rk_parameters, probability_parameters   ISO 13565-2 Rk family, ISO 13565-3 Rpq, Rvq, Rmq
 feature_parameters   ISO 21920-2 Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z (Wolf pruning)
 remove_form          least-squares line / polynomial removal
@@ -32,6 +33,7 @@ from profiles.material_ratio import (
     height_at_ratio,
     material_ratio,
     material_ratio_curve,
+    material_ratio_height,
     section_height_difference,
 )
 from profiles.parameters import ProfileParameters, profile_parameters
@@ -66,6 +68,7 @@ __all__ = [
     "level_profile",
     "material_ratio",
     "material_ratio_curve",
+    "material_ratio_height",
     "probability_parameters",
     "profile_parameters",
     "regularize",

@@ -9,7 +9,9 @@ The five steps of feature characterisation:
    Rz), the smallest motif with the neighbour on the side of its lower bounding peak (the
    way water filling the dale would spill over its lower rim); a motif whose lower rim is
    the profile's end is dropped;
-3. significant features: all, or the N with the largest peak/pit height (``("top", N)``);
+3. significant features: all, the N with the largest peak/pit height (``("top", N)``), or
+   those open or closed at a height ``c`` (``("open", c)``, ``("closed", c)``; ``c`` in
+   metres or as a material ratio ``"p %"``), see :func:`significant_motifs`;
 4. attributes: ``"HDh"`` motif height (lower rim minus pit), ``"HDw"`` width (from the
    lower rim to the farthest crossing of the rim level), ``"HDv"`` area below the rim level
    divided by the evaluation length, ``"HDl"`` developed length over that width, ``"PVh"``
@@ -261,35 +263,96 @@ def attribute(m: Motifs, dx: float, name: str) -> np.ndarray:
     return out
 
 
+def significance_level(z: np.ndarray, c: float | str) -> float:
+    """The height ``c`` of an open/closed rule: metres, or a material ratio ``"p %"``.
+
+    A material ratio is turned into the level at which that share of the profile lies at
+    or above it (ISO 21920-2 Rcm, :func:`profiles.material_ratio.material_ratio_height`).
+    """
+    from profiles.material_ratio import material_ratio_height
+
+    if isinstance(c, str):
+        text = c.strip()
+        if not text.endswith("%"):
+            raise ProfileError(f"a significance level is a height in metres or a material "
+                               f"ratio such as '10 %', got {c!r}")
+        try:
+            p = float(text[:-1]) / 100.0
+        except ValueError:
+            raise ProfileError(f"bad material ratio {c!r}: use e.g. '10 %'") from None
+        return float(np.max(z) + material_ratio_height(z, p))
+    level = float(c)
+    if not math.isfinite(level):
+        raise ProfileError(f"a significance level must be finite, got {c!r}")
+    return level
+
+
+def significant_motifs(m: Motifs, dx: float, significant: tuple[str, Any] | str,
+                       z: np.ndarray) -> Motifs:
+    """Step 3 of feature characterisation: keep the significant motifs.
+
+    ``"all"``; ``("top", N)`` / ``("bot", N)``: the N features with the largest peak height
+    or pit depth (PVh; both keep the largest, as the reference implementation does);
+    ``("open", c)``: the motifs open at height ``c``, i.e. a dale whose lower rim lies at
+    or below ``c`` (a hill whose lower rim, on the profile, lies at or above ``c``): water
+    at level ``c`` would not be held by it; ``("closed", c)``: the motifs closed at ``c``,
+    a dale whose pit lies at or below ``c`` and whose lower rim at or above ``c`` (a hill
+    whose peak lies at or above ``c`` and whose lower rim at or below ``c``): the section
+    at ``c`` cuts it in a closed contour. ``c`` is a height in metres from the mean line
+    or a material ratio ``"p %"`` (:func:`significance_level`). ISO 21920-2:2021,
+    feature characterisation; the rules as in the RPTU / MTS reference implementation.
+    """
+    if significant == "all":
+        return m
+    try:
+        kind, value = significant
+    except (TypeError, ValueError):
+        raise ProfileError(f"significant features must be 'all', ('top', N), ('bot', N), "
+                           f"('open', c) or ('closed', c), got {significant!r}") from None
+    kind = str(kind).lower()
+    if kind in ("top", "bot"):
+        order = np.argsort(-attribute(m, dx, "PVh"), kind="stable")[: int(value)]
+        keep = np.sort(order)
+    elif kind in ("open", "closed"):
+        # on the segmented profile w (-z for hills) every motif is a dale: the level is
+        # mirrored with it
+        level = significance_level(z, value)
+        level = -level if m.hills else level
+        rim = m.z[m.low.astype(int)]
+        if kind == "open":
+            keep = np.flatnonzero(rim <= level)
+        else:
+            pit = m.z[m.pit.astype(int)]
+            keep = np.flatnonzero((rim >= level) & (pit <= level))
+    else:
+        raise ProfileError(f"significant features must be 'all', ('top', N), ('bot', N), "
+                           f"('open', c) or ('closed', c), got {significant!r}")
+    return Motifs(m.pit[keep], m.low[keep], m.high[keep], m.z, m.hills)
+
+
 def feature_characterization(
     z: Any,
     dx: float,
     feature: str = "D",
     *,
     wolf: float | None = WOLF_DEFAULT,
-    significant: tuple[str, int] | str = "all",
+    significant: tuple[str, Any] | str = "all",
     attr: str = "count",
     statistic: str = "density",
     rz: float | None = None,
 ) -> float:
     """One feature parameter by the five steps of ISO 21920-2 (module docstring).
 
-    Returns NaN when no (significant) feature is found.
+    ``significant`` is one of the rules of :func:`significant_motifs`. Returns NaN when no
+    (significant) feature is found.
     """
     if attr not in ATTRIBUTES:
         raise ProfileError(f"unknown attribute {attr!r}: use one of {', '.join(ATTRIBUTES)}")
     if statistic not in STATISTICS:
         raise ProfileError(f"unknown statistic {statistic!r}: use one of "
                            f"{', '.join(STATISTICS)}")
-    m = segment(z, dx, feature, wolf=wolf, rz=rz)
-    if significant != "all":
-        kind, count = significant
-        if kind not in ("top", "bot"):
-            raise ProfileError(f"significant features must be 'all' or ('top', N), "
-                               f"got {significant!r}")
-        order = np.argsort(-attribute(m, dx, "PVh"), kind="stable")[: int(count)]
-        keep = np.sort(order)
-        m = Motifs(m.pit[keep], m.low[keep], m.high[keep], m.z, m.hills)
+    z = as_heights(z)
+    m = significant_motifs(segment(z, dx, feature, wolf=wolf, rz=rz), dx, significant, z)
     if m.pit.size == 0:
         return math.nan
     values = attribute(m, dx, attr)

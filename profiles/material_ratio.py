@@ -1,10 +1,10 @@
 """Material ratio: Rmr(c), the Abbott-Firestone curve and the Rk family.
 
-Definitions: ISO 4287:1997 (Rmr(c), material ratio curve, Rδc); the ISO 13565 parameters
-that build on the curve are in :mod:`profiles.rk`. Ratios are fractions in [0, 1] (not %),
-heights in metres. Computed from the measured points only (NaN = not measured); for a
-uniformly sampled profile the fraction of points at or above a level is the fraction of
-the evaluation length.
+Definitions: ISO 4287:1997 (Rmr(c), material ratio curve, Rδc), ISO 21920-2:2021 (Rcm);
+the ISO 13565 parameters that build on the curve are in :mod:`profiles.rk`. Ratios are
+fractions in [0, 1] (not %), heights in metres. Computed from the measured points only
+(NaN = not measured); for a uniformly sampled profile the fraction of points at or above a
+level is the fraction of the evaluation length.
 """
 
 from __future__ import annotations
@@ -81,6 +81,36 @@ def height_at_ratio(z: Any, mr: Any) -> float | np.ndarray:
     grid = np.concatenate(([0.0], np.arange(1, zv.size + 1) / zv.size))
     heights = np.concatenate(([zv[0]], zv))
     out = np.interp(m, grid, heights)
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def material_ratio_height(z: Any, p: Any) -> float | np.ndarray:
+    """Rcm(p): the section level at material ratio ``p``, measured from the highest point.
+
+    ISO 21920-2:2021 (inverse material ratio, used to turn a material ratio into the
+    height ``c`` of the "open c" / "closed c" significance rules of feature
+    characterisation). On the N measured points sorted from the top, ``z(1) >= ... >=
+    z(N)``, the level of ratio ``p`` is the highest level whose material ratio reaches
+    ``p``: ``z(k)`` with ``k = ceil(p N)`` (``k >= 1``), so the value is ``z(k) - z(1)``,
+    zero or negative (0 at ``p = 0``, ``-Rt`` at ``p = 1``). This is the construction of
+    the RPTU / MTS reference implementation (Müller et al., Surf. Topogr.: Metrol. Prop.
+    13 (2025) 015003). Unlike :func:`height_at_ratio` it does not interpolate between
+    points: it is the step curve of :func:`material_ratio`.
+
+    Parameters
+    ----------
+    z : array_like
+        Heights in metres; NaN where not measured.
+    p : float or array_like
+        Material ratio(s) as fractions in [0, 1].
+    """
+    zv = np.sort(_heights(z))[::-1]
+    m = np.asarray(p, dtype=float)
+    if np.any(~np.isfinite(m) | (m < 0) | (m > 1)):
+        raise ProfileError("material ratios must lie between 0 and 1")
+    # the tolerance keeps p = k/N (up to rounding) on point k, not k + 1
+    k = np.clip(np.ceil(m * zv.size - 1e-9).astype(np.int64), 1, zv.size)
+    out = zv[k - 1] - zv[0]
     return float(out) if np.ndim(out) == 0 else out
 
 

@@ -204,13 +204,19 @@ def _iso4288_units(choice: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+RCM_RATIOS = (10, 50, 90)
+"""Material ratios (%) at which the profile output states Rcm (any other: the API)."""
+
+
 def stratified_parameters(rough: Any, rk_line: str
                           ) -> tuple[dict[str, tuple[float, str]], list[str]]:
-    """ISO 13565-2 and -3 parameters of the evaluated roughness profile, with units.
+    """Material-ratio parameters of the evaluated roughness profile, with units.
 
-    Ratios in %; the areas A1, A2 in m (a height times a material ratio taken as a
-    fraction: a printout's µm·% times 1e-8). A profile on which they are undefined (flat,
-    too few points) gets a note instead of the values.
+    ISO 13565-2 and -3 (ratios in %; the areas A1, A2 in m: a height times a material
+    ratio taken as a fraction, a printout's µm·% times 1e-8) and ISO 21920-2 Rcm(p) at
+    :data:`RCM_RATIOS` (the level of material ratio p below the highest point, zero or
+    negative, keyed ``"Rcm(p%)"``). A profile on which they are undefined (flat, too few
+    points) gets a note instead of the values.
     """
     import profiles
     from profiles.errors import ProfileError
@@ -218,6 +224,8 @@ def stratified_parameters(rough: Any, rk_line: str
     out: dict[str, tuple[float, str]] = {}
     notes: list[str] = []
     try:
+        for p in RCM_RATIOS:
+            out[f"Rcm({p}%)"] = (float(profiles.material_ratio_height(rough, p / 100)), "m")
         rk = profiles.rk_parameters(rough, construction=rk_line)
         out.update({"Rk": (rk.Rk, "m"), "Rpk": (rk.Rpk, "m"), "Rvk": (rk.Rvk, "m"),
                     "Mr1": (100 * rk.Mr1, "%"), "Mr2": (100 * rk.Mr2, "%"),

@@ -218,7 +218,7 @@ def roughness(
     window: Any = None,
     profile: str | None = None,
     spikes: bool = False,
-    edge: str = "moment",
+    edge: str = "discard",
     which: Any = None,
     standard: str | None = None,
     n_sampling: int | None = None,
@@ -247,8 +247,17 @@ def roughness(
     spikes : bool
         Remove spikes (:func:`surfmet.spikes.remove_spikes`) before levelling; the report
         goes into the result.
-    edge : {"moment", "renormalise", "discard"}
-        Edge treatment of the areal Gaussian filters.
+    edge : {"discard", "moment", "renormalise"}
+        Edge treatment of the areal Gaussian filters (:mod:`surfmet.areal.filters`).
+        Default ``"discard"``: the Gaussian filter of ISO 16610-61 is the full weighting
+        function only where it lies inside the scan; within half a nesting index of a
+        border it is cut (the end effects of ISO 16610-21, 4.3, whose corrections ISO
+        16610-28 lists, and which ISO 4288 leaves out of a profile's evaluation as run-up
+        and run-out), so that band is left out and the parameters come from the inner
+        area, where the filter is the standard's. The moment correction keeps the band and
+        is exact for a plane, but attenuates wavelengths near λc there (Sq of a surface
+        with wavelengths at λc/2-λc/6 about 2 % low on a 2.5 λc scan); use it, or
+        ``"renormalise"``, for a scan too small to lose the band.
     which : optional
         Areal parameters to compute (symbols or groups, see
         :func:`surfmet.areal.areal_parameters`); default all.
@@ -335,6 +344,10 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         surface, info = l_filter(surface, lc, edge=edge)
         filters.append(info.as_dict())
     settings["filters"] = filters
+    if filters:
+        from surfmet.areal.filters import EDGE_MEANING
+
+        settings["edge"] = {"value": edge, "meaning": EDGE_MEANING.get(edge, "")}
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
     caveats = unit_caveats(topo.metadata)
     if caveats:

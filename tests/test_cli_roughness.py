@@ -77,7 +77,7 @@ def test_filters_and_spikes_are_recorded(capsys, scan):
     assert s["lc"] == {"value": pytest.approx(50e-6), "unit": "m"}
     assert s["ls"] == {"value": pytest.approx(2e-6), "unit": "m"}
     assert [f["kind"] for f in s["filters"]] == ["S", "L"]
-    assert s["filters"][1]["edge"] == "moment"
+    assert s["filters"][1]["edge"] == "discard" and s["edge"]["value"] == "discard"
     assert s["spikes"]["removed"] is True and s["spikes"]["count"] == 0
     assert s["level"] == "poly:2"
 
@@ -201,3 +201,39 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     assert s["spikes"]["count"] > 0 and s["spike_diagnosis"]["suspected"]
     assert "--spikes" not in s["spike_diagnosis"]["message"]
     assert "after removing" in s["spike_diagnosis"]["message"]
+
+
+def test_areal_default_leaves_out_the_filter_edges_and_gets_the_closed_form_sq(capsys,
+                                                                               tmp_path):
+    # three plane waves between λc/6 and λc/2 on a 2.5 λc scan: after the L-filter each
+    # keeps 1 - exp(-π (α λc / λ)²) of its amplitude (ISO 16610-61), so the S-L surface is
+    # known in closed form at every point; Sq over the area the output keeps must be its
+    # rms there (issue 18: the kept edge bands made Sq about 2 % low)
+    from surfmet.areal.filters import ALPHA
+
+    n, dx, lc = 500, 4e-6, 0.8e-3
+    y, x = np.mgrid[:n, :n] * dx
+    rng = np.random.default_rng(3)
+    z = np.zeros((n, n))
+    filtered = np.zeros((n, n))
+    for lam, amp in ((0.2e-3, 1e-6), (0.4e-3, 0.7e-6), (0.13e-3, 0.5e-6)):
+        th, ph = rng.uniform(0, np.pi), rng.uniform(0, 2 * np.pi)
+        wave = np.sin(2 * np.pi * (x * np.cos(th) + y * np.sin(th)) / lam + ph)
+        z += amp * wave
+        filtered += amp * (1 - np.exp(-np.pi * (ALPHA * lc / lam) ** 2)) * wave
+    path = tmp_path / "waves.npz"
+    surfmet.write(Topography(z, dx, dx), path)
+    rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "0.8mm", "--level", "none",
+                      "--json")
+    assert rc == 0
+    rec = json.loads(out)
+    band = rec["settings"]["filters"][0]["discarded_points_each_edge"]["rows"]
+    assert band == 100  # λc/2 = 400 µm = 100 points
+    inner = filtered[band:n - band, band:n - band]
+    assert rec["parameters"]["Sq"]["value"] == pytest.approx(inner.std(), rel=1e-3)
+    assert "left out" in rec["settings"]["edge"]["meaning"]
+    # keeping the bands with the moment correction misses the whole surface's Sq by > 1 %
+    rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "0.8mm", "--level", "none",
+                      "--edge", "moment", "--json")
+    kept = json.loads(out)["parameters"]["Sq"]["value"]
+    assert kept < 0.99 * filtered.std()

@@ -126,3 +126,32 @@ def test_form_deviation_is_the_quadratic_component_not_the_spikes():
     assert clean.form_pv == pytest.approx(2 * c * h**2, rel=0.03)
     assert dirty.form_pv == pytest.approx(2 * c * h**2, rel=0.1)
     assert dirty.pv_form_deviation > 15e-6 > 10 * dirty.form_pv
+
+
+def test_demo_and_fit_state_the_same_form_deviation(capsys):
+    # issue 16 item 6: `surfmet fit` said 37.96 µm (PV of all residuals) and the demo 3.41
+    # µm (its own quadratic) for the same ball; both now state SphereFit.form_pv and the
+    # record names the other value "residual PV (all points)"
+    import json
+    import re
+
+    import surfmet
+    from surfmet.cli import main
+    from surfmet.demo.outputs import data_file
+    from surfmet.demo.story import _ball, _Text
+    from surfmet.demo.surfaces import ball_form
+
+    path = data_file("paper_ball.x3p")
+    assert main(["fit", str(path), "--shape", "sphere", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["names"]["form_pv"].startswith("form deviation") and \
+        rec["form_pv"]["unit"] == "m"
+    assert rec["names"]["pv_form_deviation"] == "residual PV (all points)"
+    summary, _ = ball_form(surfmet.read(path))
+    text = _Text()
+    _ball(text, {"ball": summary})
+    line = next(s for s in text.lines if "form deviation" in s)
+    demo_um = float(re.search(r"form deviation ([0-9.]+) µm PV", line).group(1))
+    assert demo_um == round(rec["form_pv"]["value"] * 1e6, 2)
+    # the residual PV is set by the ball's spikes, an order of magnitude above the form
+    assert rec["pv_form_deviation"]["value"] > 5 * rec["form_pv"]["value"]

@@ -17,6 +17,7 @@ from scipy.io import loadmat
 
 from profiles import ProfileError
 from profiles.features import feature_characterization, feature_parameters, segment
+from profiles.material_ratio import material_ratio_height
 
 DATA = Path(__file__).parent / "data" / "mts"
 DX = 0.5e-6  # the reference case studies' step
@@ -121,3 +122,186 @@ def test_bad_feature_input():
         segment(bad, dx)
     assert math.isnan(feature_characterization(np.linspace(0, 1e-6, 50), dx, "D",
                                                attr="HDh", statistic="mean"))
+
+
+# Significance rules "open c" / "closed c" (ISO 21920-2 step 3), Wolf pruning 5 % Rz.
+# Produced by the reference implementation (commit ab4c9d5) on its profiles:
+# feature_characterization(z, 0.5e-3, FT, "Wolfprune 5 %", SIG, AT, STATS); c in µm or as
+# a material ratio "p %"; nan where it declares every feature not significant.
+SIGNIFICANCE = {
+    ("Bu_1_56_ak", "D", "Open 10 %", "Count", "Density"): 199.97500312460943,
+    ("Bu_1_56_ak", "D", "Open 10 %", "HDh", "Mean"): 3.08449998202596,
+    ("Bu_1_56_ak", "H", "Open 10 %", "Count", "Density"): math.nan,
+    ("Bu_1_56_ak", "H", "Open 10 %", "HDh", "Mean"): math.nan,
+    ("Bu_1_56_ak", "D", "Closed 10 %", "Count", "Density"): math.nan,
+    ("Bu_1_56_ak", "D", "Closed 10 %", "HDh", "Mean"): math.nan,
+    ("Bu_1_56_ak", "H", "Closed 10 %", "Count", "Density"): 54.9931258592676,
+    ("Bu_1_56_ak", "H", "Closed 10 %", "HDh", "Mean"): 16.618343608089617,
+    ("Bu_1_56_ak", "D", "Open 50 %", "Count", "Density"): 104.98687664041996,
+    ("Bu_1_56_ak", "D", "Open 50 %", "HDh", "Mean"): 3.0813959617951974,
+    ("Bu_1_56_ak", "H", "Open 50 %", "Count", "Density"): 59.992500937382836,
+    ("Bu_1_56_ak", "H", "Open 50 %", "HDh", "Mean"): 5.063900172026737,
+    ("Bu_1_56_ak", "D", "Closed 50 %", "Count", "Density"): 64.99187601549806,
+    ("Bu_1_56_ak", "D", "Closed 50 %", "HDh", "Mean"): 3.671172490945468,
+    ("Bu_1_56_ak", "H", "Closed 50 %", "Count", "Density"): 82.48968878890139,
+    ("Bu_1_56_ak", "H", "Closed 50 %", "HDh", "Mean"): 10.528004499832761,
+    ("Bu_1_56_ak", "D", "Open 90 %", "Count", "Density"): math.nan,
+    ("Bu_1_56_ak", "D", "Open 90 %", "HDh", "Mean"): math.nan,
+    ("Bu_1_56_ak", "H", "Open 90 %", "Count", "Density"): 74.99062617172854,
+    ("Bu_1_56_ak", "H", "Open 90 %", "HDh", "Mean"): 6.067060955420112,
+    ("Bu_1_56_ak", "D", "Closed 90 %", "Count", "Density"): 159.98000249968754,
+    ("Bu_1_56_ak", "D", "Closed 90 %", "HDh", "Mean"): 3.374415077323386,
+    ("Bu_1_56_ak", "H", "Closed 90 %", "Count", "Density"): 127.48406449193853,
+    ("Bu_1_56_ak", "H", "Closed 90 %", "HDh", "Mean"): 6.69746524062143,
+    ("Bu_1_56_ak", "D", "Open 0.5", "Count", "Density"): 169.97875265591802,
+    ("Bu_1_56_ak", "D", "Open 0.5", "HDh", "Mean"): 3.3068987523526534,
+    ("Bu_1_56_ak", "H", "Open 0.5", "Count", "Density"): 59.992500937382836,
+    ("Bu_1_56_ak", "H", "Open 0.5", "HDh", "Mean"): 5.063900172026737,
+    ("Bu_1_56_ak", "D", "Closed 0.5", "Count", "Density"): math.nan,
+    ("Bu_1_56_ak", "D", "Closed 0.5", "HDh", "Mean"): math.nan,
+    ("Bu_1_56_ak", "H", "Closed 0.5", "Count", "Density"): 24.99687539057618,
+    ("Bu_1_56_ak", "H", "Closed 0.5", "HDh", "Mean"): 26.59608386514264,
+    ("Bu_1_56_ak", "D", "Open -0.5", "Count", "Density"): 169.97875265591802,
+    ("Bu_1_56_ak", "D", "Open -0.5", "HDh", "Mean"): 3.3068987523526534,
+    ("Bu_1_56_ak", "H", "Open -0.5", "Count", "Density"): 59.992500937382836,
+    ("Bu_1_56_ak", "H", "Open -0.5", "HDh", "Mean"): 5.063900172026737,
+    ("Bu_1_56_ak", "D", "Closed -0.5", "Count", "Density"): math.nan,
+    ("Bu_1_56_ak", "D", "Closed -0.5", "HDh", "Mean"): math.nan,
+    ("Bu_1_56_ak", "H", "Closed -0.5", "Count", "Density"): 24.99687539057618,
+    ("Bu_1_56_ak", "H", "Closed -0.5", "HDh", "Mean"): 26.59608386514264,
+    ("Luftpresser_1_56_ak", "D", "Open 10 %", "Count", "Density"): 402.4496937882765,
+    ("Luftpresser_1_56_ak", "D", "Open 10 %", "HDh", "Mean"): 0.5622274250853206,
+    ("Luftpresser_1_56_ak", "H", "Open 10 %", "Count", "Density"): math.nan,
+    ("Luftpresser_1_56_ak", "H", "Open 10 %", "HDh", "Mean"): math.nan,
+    ("Luftpresser_1_56_ak", "D", "Closed 10 %", "Count", "Density"): 129.98375203099613,
+    ("Luftpresser_1_56_ak", "D", "Closed 10 %", "HDh", "Mean"): 0.2756687069013747,
+    ("Luftpresser_1_56_ak", "H", "Closed 10 %", "Count", "Density"): 212.47344081989755,
+    ("Luftpresser_1_56_ak", "H", "Closed 10 %", "HDh", "Mean"): 0.2728079357426992,
+    ("Luftpresser_1_56_ak", "D", "Open 50 %", "Count", "Density"): 224.97187851518564,
+    ("Luftpresser_1_56_ak", "D", "Open 50 %", "HDh", "Mean"): 0.613772265934785,
+    ("Luftpresser_1_56_ak", "H", "Open 50 %", "Count", "Density"): 64.99187601549806,
+    ("Luftpresser_1_56_ak", "H", "Open 50 %", "HDh", "Mean"): 0.19811242688462685,
+    ("Luftpresser_1_56_ak", "D", "Closed 50 %", "Count", "Density"): 269.96625421822273,
+    ("Luftpresser_1_56_ak", "D", "Closed 50 %", "HDh", "Mean"): 0.4367409838176201,
+    ("Luftpresser_1_56_ak", "H", "Closed 50 %", "Count", "Density"): 324.9593800774903,
+    ("Luftpresser_1_56_ak", "H", "Closed 50 %", "HDh", "Mean"): 0.3215187557809076,
+    ("Luftpresser_1_56_ak", "D", "Open 90 %", "Count", "Density"): 27.4965629296338,
+    ("Luftpresser_1_56_ak", "D", "Open 90 %", "HDh", "Mean"): 0.42926005095257974,
+    ("Luftpresser_1_56_ak", "H", "Open 90 %", "Count", "Density"): 479.9400074990627,
+    ("Luftpresser_1_56_ak", "H", "Open 90 %", "HDh", "Mean"): 0.2666274063020676,
+    ("Luftpresser_1_56_ak", "D", "Closed 90 %", "Count", "Density"): 119.98500187476567,
+    ("Luftpresser_1_56_ak", "D", "Closed 90 %", "HDh", "Mean"): 1.2223545086992742,
+    ("Luftpresser_1_56_ak", "H", "Closed 90 %", "Count", "Density"): 37.49531308586427,
+    ("Luftpresser_1_56_ak", "H", "Closed 90 %", "HDh", "Mean"): 0.973565029301442,
+    ("Luftpresser_1_56_ak", "D", "Open 0.5", "Count", "Density"): 532.4334458192726,
+    ("Luftpresser_1_56_ak", "D", "Open 0.5", "HDh", "Mean"): 0.4922694281577845,
+    ("Luftpresser_1_56_ak", "H", "Open 0.5", "Count", "Density"): math.nan,
+    ("Luftpresser_1_56_ak", "H", "Open 0.5", "HDh", "Mean"): math.nan,
+    ("Luftpresser_1_56_ak", "D", "Closed 0.5", "Count", "Density"): math.nan,
+    ("Luftpresser_1_56_ak", "D", "Closed 0.5", "HDh", "Mean"): math.nan,
+    ("Luftpresser_1_56_ak", "H", "Closed 0.5", "Count", "Density"): 12.49843769528809,
+    ("Luftpresser_1_56_ak", "H", "Closed 0.5", "HDh", "Mean"): 0.587811173573753,
+    ("Luftpresser_1_56_ak", "D", "Open -0.5", "Count", "Density"): 37.49531308586427,
+    ("Luftpresser_1_56_ak", "D", "Open -0.5", "HDh", "Mean"): 0.4513219999999997,
+    ("Luftpresser_1_56_ak", "H", "Open -0.5", "Count", "Density"): 472.44094488188983,
+    ("Luftpresser_1_56_ak", "H", "Open -0.5", "HDh", "Mean"): 0.26201072840992407,
+    ("Luftpresser_1_56_ak", "D", "Closed -0.5", "Count", "Density"): 127.48406449193853,
+    ("Luftpresser_1_56_ak", "D", "Closed -0.5", "HDh", "Mean"): 1.183081578959901,
+    ("Luftpresser_1_56_ak", "H", "Closed -0.5", "Count", "Density"): 39.995000624921886,
+    ("Luftpresser_1_56_ak", "H", "Closed -0.5", "HDh", "Mean"): 0.9912276971059502,
+}
+# the reference's inverse material ratio Rcm(z, p) (µm, p in %), its own profiles
+RCM = {
+    "Bu_1_56_ak": {0.5: -3.7973321192264997, 2.0: -5.548912747473601,
+                   10.0: -9.5458811174645, 50.0: -28.823052580786012,
+                   87.5: -31.05135221703594, 100.0: -33.7653565680084},
+    "Luftpresser_1_56_ak": {0.5: -0.18506820977557692, 2.0: -0.337044956503081,
+                            10.0: -0.41691671929955393, 50.0: -0.54421091651516,
+                            87.5: -1.155009114492269, 100.0: -3.706617275460439},
+}
+
+
+ATTR = {"Count": "count", "HDh": "HDh"}  # the reference's spelling -> ours
+
+
+def _rule(sig: str):
+    kind, value = sig.split(" ", 1)
+    if value.endswith("%"):
+        return kind.lower(), value
+    return kind.lower(), float(value) * 1e-6  # the reference's c is in µm
+
+
+@pytest.mark.parametrize("key", list(SIGNIFICANCE), ids=lambda k: "-".join(map(str, k)))
+def test_open_and_closed_significance_match_the_reference(key):
+    name, ft, sig, attr, stat = key
+    z = _profile(name)
+    ours = feature_characterization(z, DX, ft, significant=_rule(sig), attr=ATTR[attr],
+                                    statistic=stat.lower())
+    ref = SIGNIFICANCE[key]
+    if math.isnan(ref):
+        assert math.isnan(ours)
+    else:
+        assert ours * TO_MTS[ATTR[attr]] == pytest.approx(ref, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", list(RCM))
+def test_rcm_matches_the_reference(name):
+    z = _profile(name)
+    for p, ref in RCM[name].items():
+        assert material_ratio_height(z, p / 100) * 1e6 == pytest.approx(ref, rel=1e-12)
+
+
+def test_rcm_closed_forms():
+    # N points at distinct heights: the level of ratio k/N is the k-th highest point
+    z = np.array([3.0, -1.0, 2.0, 0.5, -2.0]) * 1e-6
+    assert material_ratio_height(z, 0.0) == 0.0
+    assert material_ratio_height(z, 0.2) == 0.0
+    assert material_ratio_height(z, 0.21) == pytest.approx(-1e-6)
+    assert material_ratio_height(z, 0.6) == pytest.approx(-2.5e-6)
+    assert material_ratio_height(z, 1.0) == pytest.approx(-5e-6)
+    # a sine's share above A cos(pi p) is p: Rcm(p) = A (cos(pi p) - 1)
+    amp = 1e-6
+    s = amp * np.sin(np.linspace(0, 2 * np.pi, 200_001)[:-1])
+    for p in (0.1, 0.25, 0.5, 0.9):
+        assert material_ratio_height(s, p) == pytest.approx(amp * (np.cos(np.pi * p) - 1),
+                                                            abs=1e-4 * amp)
+    with pytest.raises(ProfileError, match="between 0 and 1"):
+        material_ratio_height(z, 1.5)
+
+
+def test_open_closed_rules_on_a_sine_with_two_depths():
+    # dales alternate between depths A and 2A below a rim at +A: at c = -1.5 A only the
+    # deep dales are closed (pit below c, rim above it); at c = +2 A every dale is open
+    amp, lam, dx = 1e-6, 100e-6, 0.25e-6
+    x = np.arange(round(40 * lam / dx)) * dx
+    z = amp * np.cos(2 * np.pi * x / lam)
+    # the valley of period k lies inside [k lam, (k + 1) lam]: deepen every other one
+    z = np.where((z < 0) & (np.floor(x / lam) % 2 == 0), 2 * z, z)
+    dales = segment(z, dx, "D", wolf=None).pit.size
+    deep = feature_characterization(z, dx, "D", wolf=None, significant=("closed", -1.5 * amp),
+                                    attr="count", statistic="sum")
+    assert deep == pytest.approx(round(dales / 2), abs=1)
+    assert feature_characterization(z, dx, "D", wolf=None, significant=("open", 2 * amp),
+                                    attr="count", statistic="sum") == dales
+    assert math.isnan(feature_characterization(z, dx, "D", wolf=None,
+                                               significant=("open", 0.0)))
+    with pytest.raises(ProfileError, match="significant features"):
+        feature_characterization(z, dx, "D", significant=("middle", 1.0))
+    with pytest.raises(ProfileError, match="material ratio"):
+        feature_characterization(z, dx, "D", significant=("open", "ten"))
+
+
+def test_profile_output_states_rcm_and_rz_of_the_reference():
+    # the reference profiles are R-profiles already: evaluate them as they are
+    from surfmet.model import Profile
+    from surfmet.roughness import roughness
+
+    for name in RCM:
+        z = _profile(name)
+        res = roughness(Profile(z, DX), lc="none", level="none").to_json()["parameters"]
+        for p in (10, 50):
+            assert res[f"Rcm({p}%)"]["unit"] == "m"
+            assert res[f"Rcm({p}%)"]["value"] * 1e6 == pytest.approx(RCM[name][float(p)],
+                                                                     rel=1e-12)
+    # the reference's Rz (mean of five sections) of the last one, Luftpresser_1_56_ak, µm
+    assert res["Rz"]["value"] * 1e6 == pytest.approx(2.674442617015665, rel=1e-12)

@@ -138,8 +138,8 @@ def test_filters_and_settings_are_stated(tmp_path, evil_scan):
     page = parse(render_html([sec], options={"lc": 30e-6}))
     body = "".join(page.text)
     assert "S-L surface" in body and "poly:2" in body
-    assert "Gaussian ISO 16610-61, λ = 30 µm, edge treatment moment" in body
-    assert "Gaussian ISO 16610-61, λ = 2 µm, edge treatment moment" in body
+    assert "Gaussian ISO 16610-61, λ = 30 µm, edge treatment discard" in body
+    assert "Gaussian ISO 16610-61, λ = 2 µm, edge treatment discard" in body
     res = roughness(surfmet.read(evil_scan), level="poly:2", lc=30e-6, ls=2e-6)
     check_parameters(page, res)
     check_images(page, 3)

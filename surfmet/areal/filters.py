@@ -47,6 +47,15 @@ ALPHA = math.sqrt(math.log(2.0) / math.pi)
 """ISO 16610-61 constant α = sqrt(ln 2 / π) ≈ 0.4697."""
 
 EDGE_MODES = ("moment", "renormalise", "discard")
+EDGE_MEANING = {
+    "discard": "the band of half a nesting index along each border, where the Gaussian "
+    "weights run past the scan's end (end effects), is left out; parameters come from the "
+    "inner area only",
+    "moment": "kept, with a first-order (moment) end-effect correction: exact for a plane, "
+    "but a wavelength near the nesting index is attenuated there (Sq about 2 % low near λc)",
+    "renormalise": "kept, the truncated weights renormalised (zeroth order)",
+}
+"""What each edge treatment means, stated in every result that used a filter."""
 _EDGE_ALIASES = {"renormalize": "renormalise", "crop": "discard", "moment-criterion": "moment"}
 
 # Above this kernel length a 1D FFT convolution beats scipy's direct correlate1d.
@@ -72,6 +81,7 @@ class FilterInfo:
             "nesting_index": {"value": self.nesting_index, "unit": "m"},
             "standard": self.standard,
             "edge": self.edge,
+            "edge_meaning": EDGE_MEANING.get(self.edge, ""),
             "truncation": self.truncation,
             "discarded_points_each_edge": {"rows": self.discarded[0],
                                            "columns": self.discarded[1]},

@@ -22,13 +22,15 @@ EPILOG = """examples:
   surfmet roughness scans/*.x3p --scheduler tcp://10.0.0.5:8786 --csv table.csv
 
 Without --ls/--lc an areal scan is evaluated after the form removal only (the S-F
-surface); a profile gets the λc, λs, number of sampling lengths and standard its file states
-(an instrument's export), else an automatic ISO 4288 cut-off, 5 sampling lengths and
-ISO 21920-2. --standard iso4287 averages every per-sampling-length parameter over the
-sampling lengths as ISO 4287:1997 (and most instruments' printouts) do; --lc none evaluates
-an already filtered profile as it is. Every output states the standard, λc, λs and the
-number of sampling lengths used, and why. --spikes removes spikes (reported) before
-levelling; every result carries an Sq/Sa spike diagnosis.
+surface); with them, the band of half a nesting index along each border, where the
+filter's weights run past the scan, is left out (--edge). A profile gets the λc, λs,
+number of sampling lengths and standard its file states (an instrument's export), else an
+automatic ISO 4288 cut-off, 5 sampling lengths and ISO 21920-2. --standard iso4287 averages
+every per-sampling-length parameter over the sampling lengths as ISO 4287:1997 (and most
+instruments' printouts) do; --lc none evaluates an already filtered profile as it is.
+Every output states the standard, λc, λs and the number of sampling lengths used, and why.
+--spikes removes spikes (reported) before levelling; every result carries an Sq/Sa spike
+diagnosis.
 
 Several files run in parallel over local processes (--workers, default: one per CPU), or
 on a Dask distributed cluster (--scheduler; the workers must see the same paths). A file
@@ -56,6 +58,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="L-filter nesting index / cut-off λc (e.g. 0.8mm); profiles: none "
                    "for an already filtered profile, auto for the ISO 4288 rule (default: "
                    "the file's stated λc, else auto)")
+    p.add_argument("--edge", choices=("discard", "moment", "renormalise"), default="discard",
+                   help="areal filters: the band of half a nesting index along each border "
+                   "where the Gaussian weights run past the scan (end effects) is left out "
+                   "(discard, the default) or kept with a moment or renormalised correction "
+                   "(biased near λc); the output states which")
     p.add_argument("--standard", choices=("iso21920", "iso4287"), default=None,
                    help="profiles: iso21920 (ISO 21920-2, over the evaluation length; the "
                    "default unless the file states another) or iso4287 (ISO 4287:1997, "
@@ -108,7 +115,7 @@ def _options(args: argparse.Namespace) -> dict[str, Any]:
     return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
             "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
             "n_sampling": args.n_sampling, "rk_line": args.rk_line,
-            "valley_suppression": args.valley_suppression}
+            "valley_suppression": args.valley_suppression, "edge": args.edge}
 
 
 def _display(value: Any, unit: str) -> str:
@@ -132,6 +139,8 @@ def _print_table(rec: dict[str, Any]) -> None:
                         for f in s.get("filters", []) or [])
     print(f"  kind {s.get('kind')}, level {s.get('level')}"
           + (f", {filters}" if filters else ""))
+    if s.get("edge"):
+        print(f"  filter edges ({s['edge']['value']}): {s['edge']['meaning']}")
     cond = s.get("conditions")
     if cond:
         print("  " + _conditions_line(cond))

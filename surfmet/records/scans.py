@@ -60,6 +60,9 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         return {
             "shape": "sphere",
             **_fit_fields(f),
+            "form_pv": quantity(f.form_pv, "m"),
+            "names": {"form_pv": "form deviation: PV of the quadratic component of the "
+                      "sphere residual", "pv_form_deviation": "residual PV (all points)"},
             "convex": f.convex,
             "loss": loss,
         }
