@@ -38,6 +38,10 @@ CASES = [
       "--plot", "{bad}/f.png"]),
     ("surfmet.read", "-o", ["show", PLATE, "-o", "{bad}/v.png"]),
     ("surfmet.demo.run.load_scans", "--out", ["demo", "--out", "{file}/demo"]),
+    ("surfmet.batch.batch_map", "--csv",
+     ["roughness", PLATE, BALL, "--csv", "{bad}/t.csv"]),
+    ("surfmet.frames.read_frames_table", "--plot",
+     ["rotor", "paper2022", "--plot", "{bad}/r.png"]),
 ]
 
 

@@ -31,6 +31,7 @@ __all__ = [
     "PARABOLAS",
     "ROD_DENSITY",
     "ROD_RADIUS",
+    "TABLE2",
     "TABLE3_COLUMNS",
     "TABLE3_FILENAME",
     "TABLE3_PRINTED_ROWS",
@@ -103,3 +104,15 @@ HERTZ_CHECK_LOAD = 10.0
 """Load of the paper's Hertz check ("the rotor weight"), N."""
 HERTZ_CHECK = {"delta": 0.936e-6, "a": 136e-6}
 """The paper's Hertz check at :data:`HERTZ_CHECK_LOAD`: approach and contact radius, m."""
+
+# --- the roughness of the contact pair (Table 2) ---
+TABLE2 = {
+    "plate": ({"Ra": 1.776e-6, "Rq": 2.342e-6, "Rz": 11.220e-6, "Rt": 16.256e-6},
+              {"Ra": 1.263e-6, "Rq": 1.629e-6, "Rz": 9.277e-6, "Rt": 11.337e-6},
+              {"Ra": 2.165e-6, "Rq": 2.639e-6, "Rz": 13.566e-6, "Rt": 13.566e-6}),
+    "ball": ({"Ra": 0.209e-6, "Rq": 0.330e-6, "Rz": 2.453e-6, "Rt": 3.889e-6},
+             {"Ra": 0.230e-6, "Rq": 0.329e-6, "Rz": 1.109e-6, "Rt": 2.553e-6},
+             {"Ra": 0.192e-6, "Rq": 0.290e-6, "Rz": 2.137e-6, "Rt": 3.948e-6}),
+}
+"""Table 2: the R-parameters of the three measured profiles of the aluminium plate and of
+the steel ball, as printed, m."""

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
-from surfmet.cli._common import add_json_flag, emit_json, log
+from surfmet.cli._common import add_json_flag, check_output, emit_json, log
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
@@ -409,6 +409,7 @@ def _print_summary(an: Any, source: str) -> None:
 def run(args: argparse.Namespace) -> int:
     from contact.rotor.groups import analyse_table
 
+    check_output(args.plot, "--plot")
     if not (math.isfinite(args.fps) and args.fps > 0):
         raise SurfmetInputError(f"--fps must be positive, got {args.fps}")
     if not (math.isfinite(args.step_deg) and args.step_deg > 0):

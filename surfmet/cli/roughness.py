@@ -7,7 +7,7 @@ import csv
 import sys
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json, log, positive_length
+from surfmet.cli._common import add_json_flag, check_output, emit_json, log, positive_length
 
 EPILOG = """examples:
   surfmet roughness plate.x3p
@@ -224,6 +224,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.batch import batch_map
     from surfmet.roughness import roughness, roughness_file
 
+    check_output(args.csv if args.csv != "-" else None, "--csv")
     opts = _options(args)
     if len(args.files) == 1 and not args.csv:
         # One file: errors propagate, so the CLI prints one line and exits 1.

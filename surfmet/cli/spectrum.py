@@ -71,7 +71,7 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
 
 def run(args: argparse.Namespace) -> int:
     import surfmet
-    from surfmet.mechanics.spectrum import plot_spectrum, prepare, spectrum
+    from surfmet.mechanics.spectrum import prepare, spectrum
     from surfmet.records import spectrum_record
 
     check_output(args.plot, "--plot")
@@ -88,7 +88,9 @@ def run(args: argparse.Namespace) -> int:
         rec["e_star"] = {"value": e_star, "unit": "Pa"}
         rec["hardness"] = {"value": hard, "unit": "Pa"}
     if args.plot:
-        save_figure(plot_spectrum(s, args.plot), args.plot)
+        from surfmet.plots.spectrum import spectrum_figure
+
+        save_figure(spectrum_figure(s, args.plot), args.plot)
     if args.json:
         emit_json(rec)
         return 0
@@ -111,6 +113,8 @@ def _print(rec: dict[str, Any], s: Any) -> None:
     print(f"  Hurst H          {s.hurst.hurst:.4f}  fitted on q = {lo:.4g}..{hi:.4g} rad/m")
     print(f"  roll-off         {wl(s.roll_off)}")
     print(f"  short cut-off    {wl(s.short_cutoff)}")
+    if s.noise_floor:
+        print(f"  noise floor from {wl(s.noise_floor)} (not fitted)")
     print(f"  h_rms            {format_length(s.h_rms)} (spectrum), "
           f"{format_length(s.h_rms_real)} (real space)")
     print(f"  h'_rms *         {s.slope_rms:.5g} (spectrum), {s.slope_rms_real:.5g} (real space)")

@@ -15,7 +15,7 @@ from surfmet.demo import figures as fig
 from surfmet.demo.lawofmotion import rotor_step
 from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads
 from surfmet.demo.outputs import GENERATOR, SUMMARY, prepare_output, write_json
-from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN_UM, PLATE_LEVEL
+from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN, PLATE_LEVEL
 from surfmet.demo.surfaces import ball_form, load_scans, plate_areal, row_statistics
 from surfmet.units import quantity
 
@@ -64,8 +64,8 @@ def _surfaces(st: _Steps, summary: dict[str, Any], quick: bool) -> tuple[Any, An
     rough: dict[str, Any] = {}
     rough["plate_rows"], typical = row_statistics(plate, PLATE_LEVEL)
     rough["ball_rows"], _ = row_statistics(ball, BALL_LEVEL)
-    rough["paper_table2_mean"] = {k: {p: quantity(v * 1e-6, "m") for p, v in d.items()}
-                                  for k, d in PAPER_TABLE2_MEAN_UM.items()}
+    rough["paper_table2_mean"] = {k: {p: quantity(v, "m") for p, v in d.items()}
+                                  for k, d in PAPER_TABLE2_MEAN.items()}
     rough["plate_areal"], clean = plate_areal(plate)
     summary["roughness"] = rough
     st.figure("plate_height_map", lambda p: fig.height_map(

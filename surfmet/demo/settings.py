@@ -1,11 +1,13 @@
-"""What the demo computes with: the settings of each step, and Table 2 of the paper.
+"""What the demo computes with: the settings of each step, and the means of Table 2.
 
 The paper's rotor facts (the balls' radius, the Hertz check's load and its 0.936 µm and
-136 µm, the film's frame rate and marks, the parabolas φ_s and φ_a) have one home,
+136 µm, the film's frame rate and marks, the parabolas φ_s and φ_a, Table 2) have one home,
 :mod:`contact.rotor.paper`; the demo uses them from there.
 """
 
 from __future__ import annotations
+
+from contact.rotor.paper import TABLE2
 
 MATERIALS = "steel,aluminium"
 LC = "0.8mm"  # ISO 4288 cut-off for Ra in 0.1-2 µm
@@ -13,9 +15,9 @@ PLATE_LEVEL = "plane"  # a least-squares line on each row
 BALL_LEVEL = "poly:2"  # a parabola takes the ball's curvature off each row
 ROW_PARAMETERS = ("Ra", "Rq", "Rz", "Rt")
 
-#: Table 2 of the paper, means of its three profiles (µm).
-PAPER_TABLE2_MEAN_UM = {
-    "plate": {"Ra": (1.776 + 1.263 + 2.165) / 3, "Rq": (2.342 + 1.629 + 2.639) / 3,
-              "Rz": (11.220 + 9.277 + 13.566) / 3, "Rt": (16.256 + 11.337 + 13.566) / 3},
-    "ball": {"Ra": (0.209 + 0.230 + 0.192) / 3, "Rq": (0.330 + 0.329 + 0.290) / 3},
+#: Table 2 of the paper (:data:`contact.rotor.paper.TABLE2`), means of its three profiles, m:
+#: the plate's four row parameters, and the ball's Ra and Rq (the two the demo compares).
+PAPER_TABLE2_MEAN = {
+    surface: {p: sum(row[p] for row in TABLE2[surface]) / len(TABLE2[surface]) for p in params}
+    for surface, params in (("plate", ROW_PARAMETERS), ("ball", ("Ra", "Rq")))
 }

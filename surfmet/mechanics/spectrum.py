@@ -64,6 +64,9 @@ class Spectrum:
         Power law fitted between the cut-offs (``q_range`` in rad/m).
     roll_off, short_cutoff : float or None
         Cut-off wavevectors (rad/m), None where the spectrum shows none.
+    noise_floor : float or None
+        Wavevector (rad/m) from which the spectrum turns flat (an instrument's noise floor,
+        :func:`_noise_floor`); the power law is fitted below it. None where there is none.
     h_rms, slope_rms, curvature_rms : float
         From the spectrum (m, -, 1/m).
     h_rms_real, slope_rms_real, curvature_rms_real : float
@@ -88,6 +91,7 @@ class Spectrum:
     summits: SummitParameters
     plasticity: float | None = None
     settings: dict[str, Any] = field(default_factory=dict)
+    noise_floor: float | None = None
 
 
 def is_periodic(topo: Topography, tol: float = 0.1) -> bool:
@@ -204,6 +208,39 @@ def _cutoffs(spec: PSD, q_min: float = 0.0
     return roll, short, (lo_q, hi_q)
 
 
+def _noise_floor(spec: PSD, band: tuple[float, float]) -> float | None:
+    """Wavevector where the spectrum stops falling inside ``band``, or None.
+
+    An instrument's noise (or its lateral resolution) adds a white floor: above some q the
+    log-log spectrum turns flat. A line and a line with one upward bend (a hinge) are
+    fitted to the binned spectrum of the band and compared by the Bayesian information
+    criterion, as the cut-offs are. A winning bend of more than :data:`_KNOT_MIN` in slope,
+    after which the spectrum falls slower than ``q^-2`` (no self-affine surface does:
+    ``C ∝ q^(-2(1+H))`` with ``0 < H < 1``), is the floor's onset. The power law is fitted
+    below it, never into it.
+    """
+    sel = (spec.q >= band[0]) & (spec.q <= band[1])
+    bq, bc, _ = _binned(PSD(q=spec.q[sel], C=spec.C[sel], kind=spec.kind, dq=spec.dq,
+                            weights=spec.weights[sel]))
+    x, y = bq, np.log10(bc)
+    m = x.size
+    if m < 6:
+        return None
+
+    def bic(cols: list[np.ndarray]) -> tuple[float, np.ndarray]:
+        A = np.column_stack(cols)
+        coef, *_ = np.linalg.lstsq(A, y, rcond=None)
+        rss = max(float(np.sum((A @ coef - y) ** 2)), 1e-12 * m)
+        return m * math.log(rss / m) + 2 * (len(cols) - 1) * math.log(m), coef
+
+    best, floor = bic([np.ones(m), x])[0], None
+    for g in np.arange(x[1], x[-2] + 1e-9, 0.02):
+        b, coef = bic([np.ones(m), x, np.maximum(x - g, 0.0)])
+        if b < best and coef[2] > _KNOT_MIN and coef[1] + coef[2] > -2.0:
+            best, floor = b, float(10**g)
+    return floor
+
+
 def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | None = None,
              hardness: float | None = None) -> Spectrum:
     """Describe a scan's spectrum (see the module docstring).
@@ -238,12 +275,20 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     # A Hann window's main lobe spans ±2Δq and flattens the first wavevectors like a
     # roll-off would: a windowed scan resolves no roll-off below 6Δq (a tested margin).
     roll, short, band = _cutoffs(spec, 0.0 if per else 6.0 * spec.dq)
+    floor = _noise_floor(spec, band)
+    if floor is not None:
+        band = (band[0], floor)
     # keep a margin of one bin off each knot: the transition bends the spectrum there
     lo = max(band[0] * 10**0.1, spec.q[0] if per else 8.0 * spec.dq)
     hi = min(band[1] * 10**-0.1, float(spec.q.max()) if per or short else
              0.5 * float(spec.q.max()))
+    if floor is not None:
+        # the floor adds to the power law, it does not replace it: at its onset the noise
+        # is as strong as the surface; 0.3 decades below, the surface is 4-12 times stronger
+        # (0 < H < 1)
+        hi = min(hi, floor * 10**-0.3)
     hfit = None
-    whole = (float(spec.q[0]), short if short else float(spec.q.max()))
+    whole = (float(spec.q[0]), min(short or math.inf, floor or math.inf, float(spec.q.max())))
     for rng in ((lo, hi), band, whole):
         try:
             hfit = fit_hurst(spec, rng)
@@ -270,7 +315,7 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
                     h_rms=summits.h_rms, slope_rms=summits.slope_rms,
                     curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,
                     curvature_rms_real=c_r, summits=summits, plasticity=psi,
-                    settings=settings)
+                    settings=settings, noise_floor=floor)
 
 
 def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography, bool, str]:
@@ -295,24 +340,3 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
         raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"
                                 "): it has no roughness")
     return out, per, how
-
-
-def plot_spectrum(s: Spectrum, path: Any = None) -> Any:
-    """PSD, the fitted power law over its band, and the cut-offs (log-log)."""
-    from surfmet.plots._style import finish, new_figure
-
-    fig, ax = new_figure()
-    ok = s.psd.C > 1e-12 * float(s.psd.C.max())  # wavevectors with no power: off the plot
-    ax.loglog(s.psd.q[ok], s.psd.C[ok], ".", ms=2, color="0.5", label="isotropic PSD")
-    lo, hi = s.hurst.q_range
-    qq = np.geomspace(lo, hi, 50)
-    ax.loglog(qq, s.hurst.prefactor * qq**s.hurst.slope, "r-", lw=2,
-              label=f"power law, H = {s.hurst.hurst:.3f}")
-    for q, name, style in ((s.roll_off, "roll-off", "--"), (s.short_cutoff, "short cut-off", ":")):
-        if q:
-            ax.axvline(q, color="k", ls=style, label=f"{name} λ = {2 * math.pi / q:.3g} m")
-    ax.set_xlabel("wavevector q (rad/m)")
-    ax.set_ylabel("C^iso(q) (m⁴)")
-    ax.set_title("periodic, unwindowed" if s.periodic else "Hann-windowed")
-    ax.legend(fontsize=8)
-    return finish(fig, path)

@@ -31,6 +31,9 @@ def spectrum_record(s: Any) -> dict[str, Any]:
         "short_cutoff": {"q": _q(s.short_cutoff, "rad/m"),
                          "wavelength": _q(2 * math.pi / s.short_cutoff
                                             if s.short_cutoff else None, "m")},
+        "noise_floor": {"q": _q(s.noise_floor, "rad/m"),
+                        "wavelength": _q(2 * math.pi / s.noise_floor
+                                         if s.noise_floor else None, "m")},
         "h_rms": {"spectrum": _q(s.h_rms, "m"), "real_space": _q(s.h_rms_real, "m")},
         "slope_rms": {"spectrum": _q(s.slope_rms, ""),
                       "real_space": _q(s.slope_rms_real, "")},
