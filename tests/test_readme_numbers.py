@@ -106,3 +106,31 @@ def test_number_of_real_instrument_files_the_tests_read(realdata):
                     if p.name != Path(__file__).name)
     unread = [name for name in names if name not in tests]
     assert not unread, f"named in MANIFEST.tsv but read by no test: {unread}"
+
+
+def test_quickstart_figures():
+    """docs/quickstart.md: the shipped scans' pixels, the resolution study's halvings and
+    its convergence threshold, the rolling exponent's default number of loads."""
+    import inspect
+
+    import surfmet
+    from contact.resolution import CONVERGED
+    from surfmet.data import path
+    from surfmet.mechanics.resolution_study import contact_study
+    from surfmet.mechanics.rolling_resistance import rolling_resistance
+
+    doc = " ".join((ROOT / "docs" / "quickstart.md").read_text(encoding="utf-8").split())
+    m = re.search(r"\(the paper's stand-in plate and ball scans, (\d+) µm and (\d+) µm pixel\)",
+                  doc)
+    assert m, "the quickstart no longer states the shipped scans' pixels"
+    for name, um in (("paper_plate.x3p", m.group(1)), ("paper_ball.x3p", m.group(2))):
+        t = surfmet.read(path(name))
+        assert (t.dx, t.dy) == pytest.approx((float(um) * 1e-6,) * 2, rel=1e-9), name
+    m = re.search(r"scans block-averaged (\d+)x, (\d+)x, (\d+)x, then native", doc)
+    assert m and inspect.signature(contact_study).parameters["factors"].default == (
+        *(int(g) for g in m.groups()), 1)
+    m = re.search(r"which quantities changed < (\d+) % over the last halving", doc)
+    assert m and 100 * CONVERGED == int(m.group(1))
+    m = re.search(r'or model="plastic"; the default loads: (\d+)', doc)
+    default = inspect.signature(rolling_resistance).parameters["loads"].default
+    assert m and default.endswith(f":{m.group(1)}")
