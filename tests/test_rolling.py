@@ -10,6 +10,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from contact_synth import rough_surface
+from scipy import stats
 
 from contact import composite_modulus, hertz_cylinder, hertz_sphere, material, solve_sphere
 from contact.errors import ContactInputError
@@ -56,8 +57,13 @@ def test_smooth_sphere_exponent_is_four_thirds():
     s = sphere_sweep(R, E_STAR, log_loads(1.0, 100.0, 5), grid=128, alpha_h=0.02)
     assert s.lambda_eff == pytest.approx(4.0 / 3.0, abs=0.01)
     assert np.all(np.abs(s.local_lambda - 4.0 / 3.0) < 0.01)
-    lo, hi = s.lambda_ci
-    assert lo < s.lambda_eff < hi and hi - lo < 0.01
+    # the interval is Student's t on the least-squares slope of ln M against ln N
+    # (scipy's linregress as the reference), and it is tight on a smooth ball
+    ref = stats.linregress(np.log(s.loads), np.log(s.moments))
+    half = stats.t.ppf(0.975, s.loads.size - 2) * ref.stderr
+    assert s.lambda_eff == pytest.approx(ref.slope, rel=1e-12)
+    assert s.lambda_ci == pytest.approx((ref.slope - half, ref.slope + half), rel=1e-9)
+    assert s.lambda_ci[1] - s.lambda_ci[0] < 0.01
     # and the moments themselves: M_r = alpha_h (3/16) N a
     a = np.array([hertz_sphere(R, w, E_STAR).a for w in s.loads])
     assert np.allclose(s.moments, 0.02 * 3.0 / 16.0 * s.loads * a, rtol=3e-3)
