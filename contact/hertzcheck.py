@@ -195,8 +195,35 @@ def compare_with_hertz(
     if hardness is None and plastic is not None:
         hardness = plastic.hardness
     hz = hertz_sphere(radius, main.load, main.e_star)
-    a0, p0, d0 = hz.a, hz.p0, hz.delta
-    alpha = gjm_alpha(sigma, radius, a0)
+    alpha = gjm_alpha(sigma, radius, hz.a)
+    prof, dev = _radial_profile(main, hz)
+    a_star = effective_radius(np.asarray(main.pressure), main.x, main.y)
+    nominal = math.pi * hz.a**2
+    area_frac = main.contact_area / nominal
+    plastic_frac = (main.plastic_area / nominal) if plastic is not None else 0.0
+    e_pmax = float(result.pmax)
+    crit = [
+        _alpha_criterion(alpha, sigma, hz.delta),
+        _profile_criterion(dev),
+        _radius_criterion(a_star, hz.a),
+        _approach_criterion(main.approach, hz.delta),
+    ]
+    if hardness is not None:
+        crit += _yield_criteria(hardness, hz.p0, None if plastic is None else plastic_frac)
+    crit += _asperity_criteria(main, e_pmax, hz.p0, area_frac, plastic is not None)
+    holds = all(c.passed for c in crit if c.decisive)
+    return HertzComparison(
+        hertz=hz, sigma=float(sigma), alpha=alpha, pmax=float(main.pmax), elastic_pmax=e_pmax,
+        contact_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
+        plastic_fraction=plastic_frac, profile=prof, profile_deviation=dev, hardness=hardness,
+        criteria=tuple(crit), hertz_holds=bool(holds),
+    )
+
+
+def _radial_profile(main: Any, hz: HertzSphere) -> tuple[RadialProfile, float]:
+    """The radial profile against Hertz (bins out to 1.5 a0 or past the loaded cells, inside
+    the domain) and its rms deviation within 1.5 a0, over p0."""
+    a0 = hz.a
     p = np.asarray(main.pressure)
     rr = np.hypot(main.x[None, :], main.y[:, None])
     loaded = rr[p > 0]
@@ -205,14 +232,10 @@ def compare_with_hertz(
                 float(min(abs(main.x[0]), abs(main.x[-1]), abs(main.y[0]), abs(main.y[-1]))))
     width = max(main.dx, main.dy, a0 / 30.0, r_max / 120.0)
     prof = radial_average(p, main.x, main.y, width=width, r_max=r_max, hertz=hz)
-    dev = profile_deviation(prof, p0, PROFILE_EXTENT * a0)
-    a_star = effective_radius(p, main.x, main.y)
-    nominal = math.pi * a0**2
-    area_frac = main.contact_area / nominal
-    plastic_frac = (main.plastic_area / nominal) if plastic is not None else 0.0
-    e_pmax = float(result.pmax)
+    return prof, profile_deviation(prof, hz.p0, PROFILE_EXTENT * a0)
 
-    crit: list[Criterion] = []
+
+def _alpha_criterion(alpha: float, sigma: float, d0: float) -> Criterion:
     ok = alpha < ALPHA_LIMIT
     rel = "≪" if alpha < 0.2 * ALPHA_LIMIT else ("<" if ok else (">" if alpha < 4 * ALPHA_LIMIT
                                                                 else "≫"))
@@ -222,14 +245,20 @@ def compare_with_hertz(
                 f"δ0 = {_um(d0)}" + ("" if ok else "; Hertz is not expected to hold"))
     else:
         text = f"α = 0 < {ALPHA_LIMIT:g}: smooth surfaces (no roughness given)"
-    crit.append(Criterion("alpha", alpha, ALPHA_LIMIT, ok, True, text))
+    return Criterion("alpha", alpha, ALPHA_LIMIT, ok, True, text)
+
+
+def _profile_criterion(dev: float) -> Criterion:
     ok = dev <= PROFILE_TOLERANCE
-    crit.append(Criterion(
+    return Criterion(
         "profile", dev, PROFILE_TOLERANCE, ok, True,
         f"the azimuthally averaged pressure {'stays within' if ok else 'departs from'} the "
         f"Hertz profile by {100 * dev:.3g} % of p0 (rms within {PROFILE_EXTENT:g} a0; "
         f"limit {100 * PROFILE_TOLERANCE:g} %)",
-    ))
+    )
+
+
+def _radius_criterion(a_star: float, a0: float) -> Criterion:
     ratio = a_star / a0
     ok = abs(ratio - 1) <= RADIUS_TOLERANCE
     if ok:
@@ -241,55 +270,65 @@ def compare_with_hertz(
     else:
         text = (f"the load concentrates within a* = {ratio:.3g} a0 ({_um(a_star)} against "
                 f"the Hertz a0 = {_um(a0)}; second-moment radius)")
-    crit.append(Criterion("radius", ratio, RADIUS_TOLERANCE, ok, True, text))
-    ratio = main.approach / d0
+    return Criterion("radius", ratio, RADIUS_TOLERANCE, ok, True, text)
+
+
+def _approach_criterion(approach: float, d0: float) -> Criterion:
+    ratio = approach / d0
     ok = abs(ratio - 1) <= APPROACH_TOLERANCE
-    crit.append(Criterion(
+    return Criterion(
         "approach", ratio, APPROACH_TOLERANCE, ok, True,
         f"the approach from first touch is {ratio:.3g} × the Hertz δ0 "
-        f"({_um(main.approach)} against {_um(d0)}; "
+        f"({_um(approach)} against {_um(d0)}; "
         f"{'within' if ok else 'beyond'} {100 * APPROACH_TOLERANCE:g} %)",
+    )
+
+
+def _yield_criteria(hardness: float, p0: float, plastic_frac: float | None
+                    ) -> list[Criterion]:
+    """Yield of the asperities (when an elastic-plastic solution was given: its yielded
+    fraction of π a0²) and first yield under the surface at the Hertz scale."""
+    crit = []
+    if plastic_frac is not None:
+        ok = plastic_frac <= PLASTIC_LIMIT
+        if plastic_frac > 0:
+            text = (f"asperities yield on {100 * plastic_frac:.3g} % of the nominal area "
+                    f"π a0² (pressure at the hardness H = {_mpa(hardness)}"
+                    f"{'' if ok else f'; limit {100 * PLASTIC_LIMIT:g} %'})")
+        else:
+            text = f"no asperity reaches the hardness H = {_mpa(hardness)}"
+        crit.append(Criterion("yield", plastic_frac, PLASTIC_LIMIT, ok, True, text))
+    ratio = p0 / hardness
+    ok = ratio < FIRST_YIELD_P0_OVER_H
+    crit.append(Criterion(
+        "first_yield", ratio, FIRST_YIELD_P0_OVER_H, ok, True,
+        f"the Hertz peak pressure p0 = {_mpa(p0)} is {ratio:.3g} H "
+        + (f"(below first yield under the surface, p0 = 1.6 Y ≈ "
+           f"{FIRST_YIELD_P0_OVER_H:.2f} H)" if ok else
+           f"(at or beyond first yield under the surface, p0 = 1.6 Y ≈ "
+           f"{FIRST_YIELD_P0_OVER_H:.2f} H: the smooth contact itself is not elastic)"),
     ))
-    if hardness is not None:
-        if plastic is not None:
-            ok = plastic_frac <= PLASTIC_LIMIT
-            if plastic_frac > 0:
-                text = (f"asperities yield on {100 * plastic_frac:.3g} % of the nominal area "
-                        f"π a0² (pressure at the hardness H = {_mpa(hardness)}"
-                        f"{'' if ok else f'; limit {100 * PLASTIC_LIMIT:g} %'})")
-            else:
-                text = f"no asperity reaches the hardness H = {_mpa(hardness)}"
-            crit.append(Criterion("yield", plastic_frac, PLASTIC_LIMIT, ok, True, text))
-        ratio = p0 / hardness
-        ok = ratio < FIRST_YIELD_P0_OVER_H
-        crit.append(Criterion(
-            "first_yield", ratio, FIRST_YIELD_P0_OVER_H, ok, True,
-            f"the Hertz peak pressure p0 = {_mpa(p0)} is {ratio:.3g} H "
-            + (f"(below first yield under the surface, p0 = 1.6 Y ≈ "
-               f"{FIRST_YIELD_P0_OVER_H:.2f} H)" if ok else
-               f"(at or beyond first yield under the surface, p0 = 1.6 Y ≈ "
-               f"{FIRST_YIELD_P0_OVER_H:.2f} H: the smooth contact itself is not elastic)"),
-        ))
+    return crit
+
+
+def _asperity_criteria(main: Any, e_pmax: float, p0: float, area_frac: float,
+                       with_plastic: bool) -> list[Criterion]:
+    """The peak pressure and the real area: reported, not decisive (asperity scale)."""
     ratio = e_pmax / p0
     where = "on asperities" if ratio > 1 + PROFILE_TOLERANCE else "at the centre"
     text = f"the peak pressure is {ratio:.3g} × p0 {where} ({_mpa(e_pmax)}, elastic solution"
-    if plastic is not None and main.pmax < e_pmax * (1 - 1e-9):
+    if with_plastic and main.pmax < e_pmax * (1 - 1e-9):
         text += f"; {_mpa(main.pmax)} with yield"
     text += "; asperity scale, grows with the scan's lateral resolution: not used for the verdict)"
-    crit.append(Criterion("peak", ratio, math.inf, True, False, text))
-    crit.append(Criterion(
-        "area", area_frac, math.inf, True, False,
-        f"real contact covers {area_frac:.3g} × the Hertz area π a0² "
-        f"({main.n_clusters} contact spot{'s' if main.n_clusters != 1 else ''}; asperity "
-        "scale, not used for the verdict)",
-    ))
-    holds = all(c.passed for c in crit if c.decisive)
-    return HertzComparison(
-        hertz=hz, sigma=float(sigma), alpha=alpha, pmax=float(main.pmax), elastic_pmax=e_pmax,
-        contact_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
-        plastic_fraction=plastic_frac, profile=prof, profile_deviation=dev, hardness=hardness,
-        criteria=tuple(crit), hertz_holds=bool(holds),
-    )
+    return [
+        Criterion("peak", ratio, math.inf, True, False, text),
+        Criterion(
+            "area", area_frac, math.inf, True, False,
+            f"real contact covers {area_frac:.3g} × the Hertz area π a0² "
+            f"({main.n_clusters} contact spot{'s' if main.n_clusters != 1 else ''}; asperity "
+            "scale, not used for the verdict)",
+        ),
+    ]
 
 
 @dataclass(frozen=True, eq=False)

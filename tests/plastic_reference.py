@@ -6,11 +6,12 @@ The engine solves elastic-plastic contact with the capped Polonsky-Keer iteratio
 for the same conditions (p <= H everywhere, p = H wherever the permanent indentation
 u_pl > 0, elastic complementarity elsewhere, load balance): solve the *elastic* contact of
 the gap h + u_pl, take the pressure above H on the yielded set and deepen u_pl there by the
-displacement that excess makes (a plain linear convolution with the Love influence
-coefficients, scipy.signal, not the solver's DC-FFT); where u_pl > 0 and p < H the
-indentation shrinks back. The load constraint pushes part of the removed load back onto
-the yielded cells, a slow mode of the plain iteration that Anderson mixing over the last
-few steps removes (Walker & Ni 2011, SIAM J. Numer. Anal. 49:1715).
+displacement that excess makes (a plain linear convolution, scipy.signal, with Love's
+closed-form influence coefficients written out here: not the solver's kernels or its
+DC-FFT); where u_pl > 0 and p < H the indentation shrinks back. The load constraint
+pushes part of the removed load back onto the yielded cells, a slow mode of the plain
+iteration that Anderson mixing over the last few steps removes (Walker & Ni 2011, SIAM J.
+Numer. Anal. 49:1715).
 
 It shares nothing with the capped iteration but the elastic solver.
 """
@@ -25,7 +26,6 @@ import numpy as np
 from scipy.signal import fftconvolve
 
 from contact.bem import solve_normal
-from contact.halfspace.influence import love_coefficients
 
 
 @dataclass(frozen=True, eq=False)
@@ -39,11 +39,25 @@ class PlasticReference:
     yield_excess: float
 
 
+def _love(x: np.ndarray, y: np.ndarray, dx: float, dy: float) -> np.ndarray:
+    """Displacement at (x, y) per unit pressure on the cell [-dx/2, dx/2] x [-dy/2, dy/2],
+    E* = 1: Love (1929) in Johnson's (1985, eq. 3.25) logarithmic form, written here apart
+    from the engine's influence coefficients. On a grid of cell offsets no corner
+    coordinate is 0, so every logarithm is finite."""
+    def corner(cx: np.ndarray, cy: np.ndarray) -> np.ndarray:
+        r = np.hypot(cx, cy)
+        return cx * np.log(cy + r) + cy * np.log(cx + r)
+
+    a, b = 0.5 * dx, 0.5 * dy
+    return (corner(x + a, y + b) - corner(x + a, y - b) - corner(x - a, y + b)
+            + corner(x - a, y - b)) / math.pi
+
+
 def _displacement(p: np.ndarray, dx: float, e_star: float) -> np.ndarray:
     """Surface displacement of the pressure ``p`` on a free (non-periodic) square grid."""
     n = p.shape[0]
     off = np.arange(-(n - 1), n) * dx
-    kernel = love_coefficients(off[None, :], off[:, None], dx, dx)
+    kernel = _love(off[None, :], off[:, None], dx, dx)
     full = fftconvolve(p, kernel, mode="full")
     return full[n - 1:2 * n - 1, n - 1:2 * n - 1] / e_star
 

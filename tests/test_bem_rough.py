@@ -132,3 +132,20 @@ def test_raw_solver_warns_when_the_contact_is_cut_by_the_domain():
         quiet = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, edge="ignore")
         fits = solve_normal(sphere_gap(n, 3 * hz.a / n, R), 3 * hz.a / n, e_star=E_STAR, load=W)
     assert quiet.touches_edge and not fits.touches_edge
+
+
+def test_unresolved_answers_carry_a_note():
+    # issue 16 items 1 and 4: a grid coarser than the contact, or a spike that carries the
+    # load on a handful of cells at a pressure above E*, is said in the result's notes
+    hz = hertz_sphere(R, W, E_STAR)
+    coarse = solve_sphere(R, W, E_STAR, grid=8, size=8 * 0.5 * hz.a)  # 2 cells per a0
+    assert any("too coarse" in n and "2 cells per Hertz radius" in n for n in coarse.notes)
+    fine = solve_sphere(R, W, E_STAR)
+    assert fine.notes == ()
+    zdx = 5e-6
+    z = np.zeros((160, 160))
+    z[79:81, 79:81] = 50 * hz.delta  # one 10 µm wide spike, 50 Hertz approaches tall
+    spiky = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx, level=False))
+    assert np.count_nonzero(spiky.contact) < 20 and spiky.pmax > E_STAR
+    assert any("covers only" in n for n in spiky.notes)
+    assert any("exceeds E*" in n for n in spiky.notes)

@@ -57,12 +57,12 @@ def test_smooth_sphere_exponent_is_four_thirds():
     s = sphere_sweep(R, E_STAR, log_loads(1.0, 100.0, 5), grid=128, alpha_h=0.02)
     assert s.lambda_eff == pytest.approx(4.0 / 3.0, abs=0.01)
     assert np.all(np.abs(s.local_lambda - 4.0 / 3.0) < 0.01)
-    # the interval is the Student-t interval of the least-squares slope (scipy's regression
-    # as the reference; was lo < λ < hi, true of any interval around its own estimate)
-    fit = stats.linregress(np.log(s.loads), np.log(s.moments))
-    t = stats.t.ppf(0.975, len(s.loads) - 2)
-    assert s.lambda_ci == pytest.approx((fit.slope - t * fit.stderr, fit.slope + t * fit.stderr),
-                                        rel=1e-9)
+    # the interval is Student's t on the least-squares slope of ln M against ln N
+    # (scipy's linregress as the reference), and it is tight on a smooth ball
+    ref = stats.linregress(np.log(s.loads), np.log(s.moments))
+    half = stats.t.ppf(0.975, s.loads.size - 2) * ref.stderr
+    assert s.lambda_eff == pytest.approx(ref.slope, rel=1e-12)
+    assert s.lambda_ci == pytest.approx((ref.slope - half, ref.slope + half), rel=1e-9)
     assert s.lambda_ci[1] - s.lambda_ci[0] < 0.01
     # and the moments themselves: M_r = alpha_h (3/16) N a
     a = np.array([hertz_sphere(R, w, E_STAR).a for w in s.loads])

@@ -295,6 +295,7 @@ class SphereContact:
             p0 = self._embed(np.asarray(res.pressure), n_new)
         W = res.load
         hz = hertz_sphere(self.radius, W, self.e_star) if W > 0 else None
+        notes += [n for n in resolution_notes(res, hz, self.e_star) if n not in notes]
         own_cap = hardness is None and self.hardness is not None
         if own_cap and res.plastic_area > 0 and hz is not None:
             frac = res.plastic_area / res.contact_area
@@ -319,6 +320,38 @@ class SphereContact:
             prev = self.solve(w, initial=prev, **kwargs)
             out.append(prev)
         return out
+
+
+#: Fewer grid cells than this per Hertz radius: the grid cannot resolve the contact.
+MIN_CELLS_PER_RADIUS = 4
+#: Fewer loaded cells than this: the contact is a handful of cells, not a pressure field.
+MIN_CONTACT_CELLS = 20
+
+
+def resolution_notes(res: ContactResult, hz: Any, e_star: float) -> list[str]:
+    """Sentences for an answer the grid or the model cannot stand behind.
+
+    - the pixel leaves fewer than :data:`MIN_CELLS_PER_RADIUS` cells per Hertz radius;
+    - fewer than :data:`MIN_CONTACT_CELLS` cells carry pressure (typically a spike of the
+      scan standing above the rest);
+    - the peak pressure exceeds E*: surface slopes of order one, outside the linear
+      elastic half-space (small slopes) the solver assumes.
+    """
+    out = []
+    if hz is not None and hz.a < MIN_CELLS_PER_RADIUS * res.dx:
+        out.append(f"the grid is too coarse for this contact: {hz.a / res.dx:.2g} cells per "
+                   f"Hertz radius (a0 = {hz.a * 1e6:.4g} µm, pixel {res.dx * 1e6:.4g} µm; "
+                   f"at least {MIN_CELLS_PER_RADIUS} are needed to resolve it)")
+    cells = int(np.count_nonzero(res.contact))
+    if not out and 0 < cells < MIN_CONTACT_CELLS:
+        out.append(f"the contact covers only {cells} cell{'s' if cells > 1 else ''} of "
+                   f"{res.dx * 1e6:.4g} µm: a handful of points carries the load (a spike in "
+                   "the scan?), not a resolved contact")
+    if res.pmax > e_star:
+        out.append(f"the peak pressure {res.pmax / 1e9:.4g} GPa exceeds E* = "
+                   f"{e_star / 1e9:.4g} GPa: slopes of order one, outside the linear elastic "
+                   "half-space the solver assumes (a spike in the scan?)")
+    return out
 
 
 def _with(res: ContactResult, **changes: Any) -> ContactResult:
