@@ -72,6 +72,7 @@ FILES = {
     "10x10-one_channel_without_name.ibw": ("ibw", 300),
     "nid-1.nid": ("nid", 160),
     "mi-1.mi": ("mi", 160),
+    "bcrf-1.bcrf": ("bcr", 120),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

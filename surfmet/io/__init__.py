@@ -31,6 +31,7 @@ FORMAT_MODULES = (
     "ibw",
     "nid",
     "mi",
+    "bcr",
     "sur",
     "plu",
     "opd",
