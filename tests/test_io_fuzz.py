@@ -73,6 +73,7 @@ FILES = {
     "nid-1.nid": ("nid", 160),
     "mi-1.mi": ("mi", 160),
     "bcrf-1.bcrf": ("bcr", 120),
+    "tmd-1.tmd": ("tmd", 200),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

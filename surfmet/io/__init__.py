@@ -32,6 +32,7 @@ FORMAT_MODULES = (
     "nid",
     "mi",
     "bcr",
+    "tmd",
     "sur",
     "plu",
     "opd",
