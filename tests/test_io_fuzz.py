@@ -74,8 +74,10 @@ FILES = {
     "mi-1.mi": ("mi", 160),
     "bcrf-1.bcrf": ("bcr", 120),
     "tmd-1.tmd": ("tmd", 200),
+    "stp-1.stp": ("wsxm", 160),
+    "top-1.top": ("wsxm", 200),
 }
-TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz"}
+TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")
 _FIELD_VALUES = [0, 1, 2**16 - 1, 2**31 - 1, 2**31, 2**32 - 1, 100_000, -1, -(2**31)]
 _DOUBLE_VALUES = [0.0, -1.0, 1e300, -1e300, float("nan"), float("inf"), 1e-300]

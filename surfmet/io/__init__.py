@@ -33,6 +33,7 @@ FORMAT_MODULES = (
     "mi",
     "bcr",
     "tmd",
+    "wsxm",
     "sur",
     "plu",
     "opd",
