@@ -76,6 +76,7 @@ FILES = {
     "tmd-1.tmd": ("tmd", 200),
     "stp-1.stp": ("wsxm", 160),
     "top-1.top": ("wsxm", 200),
+    "nc-1.nc": ("nc", 300),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

@@ -34,6 +34,7 @@ FORMAT_MODULES = (
     "bcr",
     "tmd",
     "wsxm",
+    "netcdf",
     "sur",
     "plu",
     "opd",
