@@ -77,6 +77,7 @@ FILES = {
     "stp-1.stp": ("wsxm", 160),
     "top-1.top": ("wsxm", 200),
     "nc-1.nc": ("nc", 300),
+    "example_ps.tiff": ("park", 160),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

@@ -35,6 +35,7 @@ FORMAT_MODULES = (
     "tmd",
     "wsxm",
     "netcdf",
+    "park",
     "sur",
     "plu",
     "opd",
