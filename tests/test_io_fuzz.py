@@ -1,9 +1,10 @@
 """Fuzzing every reader with mutated real files: damage must give SurfmetFormatError only.
 
-Each real instrument file (every format with a real sample; the coordinate-text format has no real file, so
-a synthetic one stands in) is truncated at random offsets, cut to its header, emptied,
-bit-flipped, has header fields overwritten with huge / negative / zero / NaN values (binary
-fields or numbers in a text header), regions zeroed, bytes inserted and garbage appended.
+Each real instrument file (every format with a real sample; the coordinate-text and the
+ISO 5436-2 softgauge formats have none here, so synthetic ones stand in) is truncated at
+random offsets, cut to its header, emptied, bit-flipped, has header fields overwritten
+with huge / negative / zero / NaN values (binary fields or numbers in a text header),
+regions zeroed, bytes inserted and garbage appended.
 The seeds are fixed, so every run tests the same cases.
 
 For every case the outcome must be either a valid scan (the registry has already checked
@@ -78,6 +79,7 @@ FILES = {
     "top-1.top": ("wsxm", 200),
     "nc-1.nc": ("nc", 300),
     "example_ps.tiff": ("park", 160),
+    "synthetic-profile.smd": ("smd", 300),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")
@@ -94,9 +96,21 @@ def synthetic_xyz() -> bytes:
     return ("x\ty\tz\n" + "\n".join(rows[:-3]) + "\n").encode()
 
 
+def synthetic_smd() -> bytes:
+    # No public softgauge file is in ../shared: one written from ISO 5436-2's four records.
+    rng = np.random.default_rng(2025)
+    z = "\r\n".join(f"{v:.5f}" for v in rng.normal(size=300))
+    body = (f"ISO 5436 - 2000\r\nPRF\r\nCX I 300 MM 1.0 D 0.0005\r\nCZ A 300 UM 1.0 D\r\n"
+            f"\x03\r\nDATE 2025-01-01\r\n\x03\r\n{z}\r\n\x03\r\n").encode()
+    return body + f"{sum(body) % 65535}\r\n\x03\r\n".encode()
+
+
+SYNTHETIC = {"synthetic-grid.xyz": synthetic_xyz, "synthetic-profile.smd": synthetic_smd}
+
+
 def load(name: str) -> bytes:
-    if name == "synthetic-grid.xyz":
-        return synthetic_xyz()
+    if name in SYNTHETIC:
+        return SYNTHETIC[name]()
     return (REALDATA / name).read_bytes()
 
 
@@ -253,7 +267,7 @@ def _report(failures: list[dict]) -> str:
 @pytest.mark.parametrize("name", list(FILES))
 def test_mutated_files_fail_cleanly(name, realdata):
     fmt, count = FILES[name]
-    if name != "synthetic-grid.xyz":
+    if name not in SYNTHETIC:
         realdata(name)  # skip (or fail under CI) if the shared file is missing
     buf = load(name)
     assert read_bytes(buf, name=name).metadata["format"] == fmt  # the seed file reads

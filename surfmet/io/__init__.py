@@ -36,6 +36,7 @@ FORMAT_MODULES = (
     "wsxm",
     "netcdf",
     "park",
+    "smd",
     "sur",
     "plu",
     "opd",
