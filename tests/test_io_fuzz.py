@@ -80,6 +80,7 @@ FILES = {
     "nc-1.nc": ("nc", 300),
     "example_ps.tiff": ("park", 160),
     "synthetic-profile.smd": ("smd", 300),
+    "mnt-1.mnt": ("mnt", 120),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

@@ -37,6 +37,7 @@ FORMAT_MODULES = (
     "netcdf",
     "park",
     "smd",
+    "mnt",
     "sur",
     "plu",
     "opd",
