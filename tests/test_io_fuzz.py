@@ -424,3 +424,26 @@ def campaign(multiplier: int, seed: int) -> dict:
 
 if __name__ == "__main__" and len(sys.argv) == 4 and sys.argv[1] == "--campaign":
     print(json.dumps(campaign(int(sys.argv[2]), int(sys.argv[3]))))
+
+
+# --- the readers added for issue 18, forced onto every other sample (wrong magic) -------------
+
+NEW_FORMATS = ["di", "ibw", "mi", "nid", "tmd", "mnt", "wsxm", "nc", "park", "bcr", "mitutoyo",
+               "smd"]
+FOREIGN = ["x3p-2.x3p", "sur-3.sur", "frt-2.frt", "di-2.di", "nid-1.nid", "top-1.top",
+           "bcrf-1.bcrf", "mitutoyo_2_mock.xlsx", "synthetic-profile.smd", "nc-1.nc"]
+
+
+@pytest.mark.realdata
+@pytest.mark.parametrize("fmt", NEW_FORMATS)
+def test_new_readers_refuse_other_formats_in_one_line(fmt, realdata):
+    for name in FOREIGN:
+        if name not in SYNTHETIC:
+            realdata(name)
+        if FILES.get(name, (None,))[0] == fmt:
+            continue
+        with pytest.raises(SurfmetFormatError) as info:
+            read_bytes(load(name), format=fmt, name=name)
+        message = str(info.value)
+        assert "\n" not in message and name in message, message
+        assert not isinstance(info.value.__cause__, MemoryError)
