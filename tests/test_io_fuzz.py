@@ -66,7 +66,7 @@ FILES = {
     "x3p-2.x3p": ("x3p", 120),
     "KautschukInfiniteFocus.x3p": ("x3p", 100),
     "synthetic-grid.xyz": ("xyz", 300),
-    "mitutoyo_2_mock.xlsx": ("mitutoyo", 60),
+    "mitutoyo_2_mock.xlsx": ("mitutoyo", 40),
     "di-1.di": ("di", 200),
     "di-2.di": ("di", 120),
     "spot_1-1000nm.ibw": ("ibw", 120),

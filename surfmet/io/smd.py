@@ -37,7 +37,7 @@ from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
 FORMAT = "smd"
-_ETX = 3
+_ETX = b"\x03"
 _UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9}
 _AXIS_RE = re.compile(rb"(?:^|[\r\n])[ \t\0]*C[XYZ][ \t\0]+[AI][ \t\0]")
 _UNIFORM_RTOL = 1e-6
@@ -45,7 +45,7 @@ _UNIFORM_RTOL = 1e-6
 
 def _is_smd(buf: bytes) -> bool:
     head = buf[:4096]
-    return bytes([_ETX]) in head and _AXIS_RE.search(head) is not None
+    return _ETX in head and _AXIS_RE.search(head) is not None
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
@@ -140,7 +140,11 @@ def decode(buf: bytes, name: str, verify_checksum: bool = True) -> Profile | Top
     verify_checksum : bool
         Check record 4's checksum when the file has one.
     """
-    etx = [i for i, b in enumerate(buf) if b == _ETX][:4]
+    etx: list[int] = []
+    pos = buf.find(_ETX)
+    while pos >= 0 and len(etx) < 4:
+        etx.append(pos)
+        pos = buf.find(_ETX, pos + 1)
     if len(etx) < 3:
         raise _fail(name, f"{len(etx)} ETX record separators, at least 3 expected (truncated?)")
     header = buf[:etx[0]].replace(b"\0", b" ").decode("latin-1")
