@@ -98,6 +98,7 @@ def _channel(values: dict[str, str], soft: dict[str, str], r: ByteReader) -> dic
     except SurfmetInputError:
         r.fail(f"channel {ch['name']!r}: scan size unit {size[2]!r} is not a length")
     ch["sx"], ch["sy"] = float(size[0]) * xy, float(size[1]) * xy
+    ch["xy_unit"] = size[2]
     ch["scale"], ch["unit"] = _z_scale(values.get("@2:z scale", ""), soft, ch["elsize"])
     return ch
 
@@ -153,8 +154,9 @@ def _metadata(sections: list[tuple[str, dict[str, str]]], ch: dict[str, Any],
     for sname, values in sections:
         if sname in ("file list", "equipment list", "scanner list"):
             merged.update(values)
-    md: dict[str, Any] = {"vendor": "Bruker", "height_unit": ch["unit"], "lateral_unit": "m",
-                          "lateral_calibrated": True, "channel": ch["name"],
+    md: dict[str, Any] = {"vendor": "Bruker", "height_unit": ch["unit"],
+                          "lateral_unit": ch["xy_unit"], "lateral_calibrated": True,
+                          "channel": ch["name"],
                           "channels": [c["name"] for c in channels],
                           "height_scale_factor": ch["scale"]}
     inst = merged.get("microscope") or merged.get("description")

@@ -53,6 +53,7 @@ _STANDARDS = {"iso 1997": "iso4287", "iso1997": "iso4287", "iso 4287": "iso4287"
 _CODES = {"CUT": "cut-off", "N": "n", "CUV": "profile", "FIL": "filter", "STD": "standard",
           "LS": "λs"}
 _UNIFORM_RTOL = 1e-4
+_ORDER = ("standard", "standard_text", "lc", "ls", "n_sampling", "profile", "filter")
 
 
 def _is_mitutoyo(buf: bytes) -> bool:
@@ -154,9 +155,6 @@ def _evaluation(found: dict[str, str], name: str) -> tuple[dict[str, Any], str |
     if ev:
         ev["source"] = "Mitutoyo SurfTest export"
     return ev, (cut[1] if cut is not None else None)
-
-
-_ORDER = ("standard", "standard_text", "lc", "ls", "n_sampling", "profile", "filter")
 
 
 def _positions_and_heights(data: Cells, name: str) -> tuple[np.ndarray, np.ndarray]:
