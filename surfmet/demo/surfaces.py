@@ -50,12 +50,13 @@ def row_statistics(scan: Any, level: str, lc: str = LC) -> tuple[dict[str, Any],
     med = {k: float(np.median(v)) for k, v in arr.items()}
     row = int(np.argmin(np.abs(arr["Ra"] - med["Ra"])))
     typical = roughness(scan, profile=f"row:{row}", level=level, lc=lc)
+    typical_settings = typical.to_json()["settings"]
     rec = {
         "rows": scan.ny,
-        # the profile settings already carry their unit ({value, unit})
-        "settings": {"level": level, "lc": typical.settings.get("lc"),
-                     "evaluation_length": typical.settings.get("evaluation_length"),
-                     "filter": typical.settings.get("filter")},
+        # the record's settings carry their units ({value, unit}), as the CLI's JSON does
+        "settings": {"level": level, "lc": typical_settings.get("lc"),
+                     "evaluation_length": typical_settings.get("evaluation_length"),
+                     "filter": typical_settings.get("filter")},
         "median": {k: quantity(v, "m") for k, v in med.items()},
         "quartiles": {k: quantity(np.percentile(v, [25, 75]), "m") for k, v in arr.items()},
         "typical_row": row,
