@@ -17,6 +17,7 @@ import glob
 import io
 import re
 import shlex
+import textwrap
 import time
 import warnings
 from dataclasses import dataclass
@@ -28,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 QUICKSTART = ROOT / "docs" / "quickstart.md"
 README = ROOT / "README.md"
 SKIP = re.compile(r"<!--\s*quickstart-test:\s*skip\s*\((.+?)\)\s*-->")
-FENCE = re.compile(r"^```(\w*)\s*$")
+FENCE = re.compile(r"^\s*```(\w*)\s*$")
 
 
 @dataclass(frozen=True)
@@ -52,12 +53,12 @@ def code_blocks(path: Path) -> list[Block]:
         start = i
         i += 1
         body = []
-        while i < len(lines) and not lines[i].startswith("```"):
+        while i < len(lines) and not lines[i].lstrip().startswith("```"):
             body.append(lines[i])
             i += 1
         above = next((t for t in reversed(lines[:start]) if t.strip()), "")
         marker = SKIP.search(above)
-        out.append(Block(m.group(1), "\n".join(body), start + 1,
+        out.append(Block(m.group(1), textwrap.dedent("\n".join(body)), start + 1,
                          marker.group(1) if marker else None))
         i += 1
     return out
