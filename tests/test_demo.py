@@ -132,7 +132,7 @@ def test_ball_radius_and_form(demo, generator):
     basis = np.column_stack([np.ones_like(X), X, Y, X**2 + Y**2])
     left = astig - basis @ np.linalg.lstsq(basis, astig, rcond=None)[0]
     truth = float(left.max() - left.min())
-    assert b["quadratic_form_pv"]["value"] == pytest.approx(truth, rel=0.1)
+    assert b["sphere"]["form_pv"]["value"] == pytest.approx(truth, rel=0.1)
 
 
 def test_plate_and_ball_roughness_match_table2(demo, paper):

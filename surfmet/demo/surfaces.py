@@ -110,13 +110,5 @@ def ball_form(ball: Any) -> tuple[dict[str, Any], Any]:
         rec[key] = {"profile": spec, "radius": quantity(c.radius, "m"),
                     "radius_uncertainty": quantity(c.radius_uncertainty, "m")}
     residual = ball.replace(heights=np.asarray(fit.residuals))
-    # The sphere residual is roughness, outliers and the form error; a quadratic fitted to
-    # it keeps the form (the astigmatism of a cap that is not a sphere) and its PV is the
-    # form deviation that roughness and outliers do not inflate.
-    from surfmet.areal.form import remove_form
-
-    rough, _ = remove_form(residual, "poly:2")
-    form = np.asarray(residual.heights) - np.asarray(rough.heights)
-    rec["quadratic_form_pv"] = quantity(float(np.nanmax(form) - np.nanmin(form)), "m")
     return rec, residual
 

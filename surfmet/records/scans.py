@@ -60,6 +60,7 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         return {
             "shape": "sphere",
             **_fit_fields(f),
+            "form_pv": quantity(f.form_pv, "m"),
             "convex": f.convex,
             "loss": loss,
         }
