@@ -50,12 +50,13 @@ def row_statistics(scan: Any, level: str, lc: str = LC) -> tuple[dict[str, Any],
     med = {k: float(np.median(v)) for k, v in arr.items()}
     row = int(np.argmin(np.abs(arr["Ra"] - med["Ra"])))
     typical = roughness(scan, profile=f"row:{row}", level=level, lc=lc)
+    # the JSON form of the profile settings carries each length's unit ({value, unit})
+    settings = typical.to_json()["settings"]
     rec = {
         "rows": scan.ny,
-        # the profile settings already carry their unit ({value, unit})
-        "settings": {"level": level, "lc": typical.settings.get("lc"),
-                     "evaluation_length": typical.settings.get("evaluation_length"),
-                     "filter": typical.settings.get("filter")},
+        "settings": {"level": level, "lc": settings.get("lc"),
+                     "evaluation_length": settings.get("evaluation_length"),
+                     "filter": settings.get("filter")},
         "median": {k: quantity(v, "m") for k, v in med.items()},
         "quartiles": {k: quantity(np.percentile(v, [25, 75]), "m") for k, v in arr.items()},
         "typical_row": row,
