@@ -84,7 +84,7 @@ def _ball(t: _Text, summary: dict[str, Any]) -> None:
     t.add(f"  R - nominal = {_v(b['radius_minus_nominal']) * 1e6:+.1f} µm = "
           f"{_v(b['radius_minus_nominal_in_uncertainties']):+.0f} uncertainties")
     t.add(f"  sphere residual {_um(sp['rms_residual'], 2)} rms (roughness, outliers, form);"
-          f" form deviation {_um(sp['form_pv'], 2)} PV")
+          f" form deviation {_um(sp['form_pv'], 2)} (PV of its quadratic component)")
     t.add(f"  circle fits: {b['row_circle']['profile']} R = "
           f"{_v(b['row_circle']['radius']) * 1e3:.3f} mm, "
           f"{b['column_circle']['profile']} R = "
