@@ -151,7 +151,7 @@ def test_demo_and_fit_state_the_same_form_deviation(capsys):
     text = _Text()
     _ball(text, {"ball": summary})
     line = next(s for s in text.lines if "form deviation" in s)
-    demo_um = float(re.search(r"form deviation ([0-9.]+) µm PV", line).group(1))
+    demo_um = float(re.search(r"form deviation ([0-9.]+) µm \(PV", line).group(1))
     assert demo_um == round(rec["form_pv"]["value"] * 1e6, 2)
     # the residual PV is set by the ball's spikes, an order of magnitude above the form
     assert rec["pv_form_deviation"]["value"] > 5 * rec["form_pv"]["value"]
