@@ -125,3 +125,5 @@ def _print(rec: dict[str, Any]) -> None:
                   f"{'-' if eg is None else f'{100 * eg:+.1f}%':>8}")
     for note in rec["notes"]:
         log(f"  note: {note}")
+    for caveat in rec["caveats"]:
+        print(f"  CAVEAT: {caveat}")

@@ -128,4 +128,6 @@ def _print(rec: dict[str, Any], s: Any) -> None:
         print(f"  plasticity psi * {s.plasticity:.4g}")
     for note in rec["notes"]:
         print(f"  note: {note}")
+    for caveat in rec["caveats"]:
+        print(f"  CAVEAT: {caveat}")
     log("  * depends on the scan's resolution (grows as the pixel shrinks)")

@@ -309,8 +309,11 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     psi = None
     if e_star is not None and hardness is not None:
         psi = plasticity_index(e_star, hardness, summits)
+    from surfmet.roughness import unit_caveats
+
     settings = {"window": spec.settings.get("window"), "periodic_detected": detected,
-                "dx": topo.dx, "dy": topo.dy, "nx": topo.nx, "ny": topo.ny}
+                "dx": topo.dx, "dy": topo.dy, "nx": topo.nx, "ny": topo.ny,
+                "caveats": unit_caveats(topo.metadata)}
     return Spectrum(psd=spec, periodic=per, hurst=hfit, roll_off=roll, short_cutoff=short,
                     h_rms=summits.h_rms, slope_rms=summits.slope_rms,
                     curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,

@@ -49,6 +49,7 @@ def spectrum_record(s: Any) -> dict[str, Any]:
         "notes": ([] if 0.0 < s.hurst.hurst < 1.0 else
                   [f"H = {s.hurst.hurst:.3g} lies outside (0, 1): the fitted band is not "
                    "self-affine (a form, a filter or a single dominant wavelength)"]),
+        "caveats": list(s.settings.get("caveats", [])),
         "psd": {"q": {"value": s.psd.q.tolist(), "unit": "rad/m"},
                 "C": {"value": s.psd.C.tolist(), "unit": "m^4"}},
     }
