@@ -222,11 +222,12 @@ def _design(angles: np.ndarray, fit: ModelFit, use: np.ndarray, periods: np.ndar
 def _cumulative(y: np.ndarray, s: np.ndarray) -> np.ndarray:
     """Cumulative trapezoid of ``y`` over ``s`` from ``s = 0`` (``y`` taken as its first
     value below the first grid point)."""
+    flat = np.ndim(y) == 1
     y = np.atleast_2d(y)
     out = np.concatenate([np.zeros((y.shape[0], 1)),
                           np.cumsum(0.5 * (y[:, 1:] + y[:, :-1]) * np.diff(s), axis=1)], axis=1)
     out = out + y[:, :1] * s[0]
-    return out if out.shape[0] > 1 else out[0]
+    return out[0] if flat else out
 
 
 def wave_scan(
