@@ -98,9 +98,19 @@ class RollingOperator:
         """w = K * p on the grid extended ahead, shape (ny, nx + m) (unit compliance)."""
         from scipy import fft
 
-        pf = fft.rfft2(p, s=(self.Ny, self.Nx))
-        w = fft.irfft2(pf * self._kf, s=(self.Ny, self.Nx))
-        return w[: self.ny, : self.nx + self.m]
+        # the transforms along x run only over the rows that carry pressure (forward) and
+        # the rows kept (inverse): the zero padding in y would double their cost
+        rows = np.nonzero(p.any(axis=1))[0]
+        out = np.zeros((self.ny, self.nx + self.m))
+        if rows.size == 0:
+            return out
+        lo, hi = int(rows[0]), int(rows[-1]) + 1
+        pf = np.zeros(self._kf.shape, dtype=complex)
+        pf[lo:hi] = fft.rfft(p[lo:hi], n=self.Nx, axis=1)
+        pf = fft.fft(pf, axis=0, overwrite_x=True)
+        pf *= self._kf
+        pf = fft.ifft(pf, axis=0, overwrite_x=True)[: self.ny]
+        return fft.irfft(pf, n=self.Nx, axis=1)[:, : self.nx + self.m]
 
     def _tail(self, w: np.ndarray, p: np.ndarray, ell: float) -> np.ndarray:
         """F at the last extended column from the monopole decay of w beyond it."""
