@@ -110,3 +110,15 @@ def test_against_dense_reference() -> None:
     for k in range(3):
         assert abs(diffs[32][k]) < 3.5e-3
         assert abs(diffs[16][k]) > 2.5 * abs(diffs[32][k])
+
+
+def test_coarse_start_leaves_the_solution() -> None:
+    """The nested start (the 64^2 solution interpolated) changes where the outer iteration
+    begins, not where it ends: both starts reach the same pressure within the tolerance."""
+    creep = pair_creep(None, StandardLinearSolid(EG, ER, A_R, NU))
+    cold = rolling_sphere(R, W, creep, 1.0, n=128, nested=False)
+    warm = rolling_sphere(R, W, creep, 1.0, n=128)
+    p_cold, p_warm = np.asarray(cold.pressure), np.asarray(warm.pressure)
+    assert np.abs(p_warm - p_cold).max() < 2e-5 * p_cold.max()
+    assert warm.rolling_resistance == pytest.approx(cold.rolling_resistance, rel=1e-5)
+    assert warm.iterations < cold.iterations
