@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
@@ -35,7 +36,16 @@ def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
     passes of classical Gram-Schmidt as matrix products (numerically as good as modified
     Gram-Schmidt, and free of the per-vector Python loops that dominate SciPy's version
     at tens of thousands of unknowns). Returns x (inexact if the cycles run out).
+
+    BLAS runs on one thread here: its products are of vectors of 10^4-10^5 entries, where
+    a second thread gains little on an idle machine and, spinning for a busy core, costs
+    ten to a hundred times the product itself on a loaded one (measured, issue 19).
     """
+    with threadpool_limits(limits=1, user_api="blas"):
+        return _gmres(matvec, b, precondition, rtol, restart, max_cycles)
+
+
+def _gmres(matvec, b, precondition, rtol, restart, max_cycles) -> np.ndarray:
     n = b.size
     x = np.zeros(n)
     bnorm = float(np.linalg.norm(b))
