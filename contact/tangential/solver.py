@@ -94,6 +94,7 @@ def solve_tangential(
     max_outer: int = 200,
     force: float | None = None,
     area: float = 1.0,
+    polish_rtol: float = 1e-7,
 ) -> TangentialState:
     """Solve the tangential problem for the bound g = mu p (see the module docstring).
 
@@ -121,6 +122,9 @@ def solve_tangential(
         added to ``w`` (its increment is returned in ``TangentialState.dw``). 3D only.
     area : float
         Element area (m^2), to turn tractions into the force.
+    polish_rtol : float
+        GMRES tolerance of the last Newton steps, once the sets stand (looser while an
+        outer normal-tangential iteration is still moving the pressure).
 
     Raises
     ------
@@ -154,7 +158,7 @@ def solve_tangential(
         residual = None if force is None else force / area - float(q0[0].sum())
         system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
         # loose linear solves while the sets move (inexact Newton), tight once they stand
-        step = system.solve(1e-4 if polish is False else 1e-7)
+        step = system.solve(1e-4 if polish is False else polish_rtol)
         counter[0] += system.matvecs
         q, st.e, rot = step.q, step.e, step.rotation
         w[0] += step.dw
