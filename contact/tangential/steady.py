@@ -154,6 +154,7 @@ def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
     coarse = coarse_grid(grid)
     if coarse is None:
         return None
-    r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled, tol=tol,
-                       max_coupling=max_coupling)
+    # only a start: its own tolerances can be loose
+    r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
+                       tol=max(tol, 1e-4), max_coupling=max_coupling)
     return prolong(r.p, r.q, r.state, r.creepage.xi)
