@@ -11,7 +11,8 @@ Modules: :mod:`~contact.tangential.influence` (kernels, FFT operator),
 :mod:`~contact.tangential.normal` (pressure with an extra gap),
 :mod:`~contact.tangential.solver` (active-set iteration), :mod:`~contact.tangential.kernels`
 (compiled loops), :mod:`~contact.tangential.forcecontrol`, :mod:`~contact.tangential.steady`
-(steady rolling), :mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
+(steady rolling), :mod:`~contact.tangential.nested` (coarse-grid start),
+:mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
 """
 
 from contact.tangential.grid import Grid, cylinder_grid, sphere_grid

@@ -256,7 +256,11 @@ class HalfSpacePair:
         return sfft.rfft2(a, s=self._pad, workers=self._workers)
 
     def _inv(self, a: np.ndarray) -> np.ndarray:
-        return sfft.irfft2(a, s=self._pad, workers=self._workers)[..., : self.ny, : self.nx]
+        # the inverse along y first, then only the ny rows that are kept go through the
+        # real inverse along x: a quarter less work, and pocketfft's one-axis transforms
+        # run two to four times faster here than its 2D c2r (measured, issue 19)
+        b = sfft.ifft(a, axis=-2, workers=self._workers)[..., : self.ny, :]
+        return sfft.irfft(b, n=self._pad[1], axis=-1, workers=self._workers)[..., : self.nx]
 
     def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None) -> np.ndarray:
         """(u_x, u_y), shape (2, ny, nx), of the tangential tractions alone (m)."""
@@ -303,8 +307,9 @@ class HalfSpacePair:
                                f * c * kx * ky * kk)
         sxx, syy, sxy = self._stiff
         f = sfft.rfft2(np.stack([ux, uy]), workers=self._workers)
-        return sfft.irfft2(np.stack([sxx * f[0] + sxy * f[1], sxy * f[0] + syy * f[1]]),
-                           s=(self.ny, self.nx), workers=self._workers)
+        b = sfft.ifft(np.stack([sxx * f[0] + sxy * f[1], sxy * f[0] + syy * f[1]]), axis=-2,
+                      workers=self._workers)
+        return sfft.irfft(b, n=self.nx, axis=-1, workers=self._workers)
 
     def normal(self, p: np.ndarray) -> np.ndarray:
         """u_n of the pressure alone (m)."""

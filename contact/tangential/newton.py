@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
@@ -35,7 +36,16 @@ def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
     passes of classical Gram-Schmidt as matrix products (numerically as good as modified
     Gram-Schmidt, and free of the per-vector Python loops that dominate SciPy's version
     at tens of thousands of unknowns). Returns x (inexact if the cycles run out).
+
+    BLAS runs on one thread here: its products are of vectors of 10^4-10^5 entries, where
+    a second thread gains little on an idle machine and, spinning for a busy core, costs
+    ten to a hundred times the product itself on a loaded one (measured, issue 19).
     """
+    with threadpool_limits(limits=1, user_api="blas"):
+        return _gmres(matvec, b, precondition, rtol, restart, max_cycles)
+
+
+def _gmres(matvec, b, precondition, rtol, restart, max_cycles) -> np.ndarray:
     n = b.size
     x = np.zeros(n)
     bnorm = float(np.linalg.norm(b))
@@ -70,6 +80,14 @@ def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
         x += y @ Z[:m]
         r = b - matvec(x)
     return x
+
+
+def flat_indices(mask: np.ndarray, ncomp: int) -> np.ndarray:
+    """Indices into a flattened (ncomp, *mask.shape) array of the masked elements of each
+    component: with np.take and np.put these gather and scatter in a fraction of the time
+    of boolean indexing, which recounts the mask on every call (measured, issue 19)."""
+    idx = np.flatnonzero(mask)
+    return (idx[None, :] + mask.size * np.arange(ncomp)[:, None]).ravel()
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -115,7 +133,10 @@ class NewtonSystem:
         self.b = np.concatenate(b) / np.array(
             [self.sref] * (ncomp * self.nh + self.ns) + [1.0] * self.aug)
         self.n = self.b.size
+        # the same elements are written on every call, so the rest stays zero
         self._dq = np.zeros_like(q0)
+        self._ih = flat_indices(H, ncomp)
+        self._is = flat_indices(S, 2)
         self._inverse = (op.tangential_stiffness if PRECONDITIONER == "continuum"
                          else op.tangential_inverse)
         self.matvecs = 0
@@ -124,10 +145,9 @@ class NewtonSystem:
         """Traction increments (Pa) of the unknowns x."""
         k = self.ncomp * self.nh
         d = self._dq
-        d[:] = 0.0
-        d[: self.ncomp, self.H] = x[:k].reshape(self.ncomp, self.nh) * self.G
+        np.put(d, self._ih, x[:k] * self.G)
         if self.ns:
-            d[:, self.S] = self.G * x[k : k + self.ns] * self.t
+            np.put(d, self._is, self.G * x[k : k + self.ns] * self.t)
         return d
 
     def matvec(self, x: np.ndarray) -> np.ndarray:
@@ -137,12 +157,13 @@ class NewtonSystem:
         u = self.op.tangential(d[0], d[1] if self.ncomp == 2 else None)
         r = rolling_slip(u, self.op.dx) if self.rolling else u
         z = x[-1] * self.sref if self.aug else 0.0  # rigid slip increment along x
-        rh = r[: self.ncomp, self.H]
-        rh[0] += z
-        out = [rh.ravel() / self.sref]
+        rh = np.take(r, self._ih)
+        rh[: self.nh] += z
+        out = [rh / self.sref]
         if self.ns:
             xs = x[k : k + self.ns]
-            rows = cross(r[:, self.S], self.e) + z * self.e[1] + self.se * xs * self.G / self.gs
+            rs = np.take(r, self._is).reshape(2, self.ns)
+            rows = cross(rs, self.e) + z * self.e[1] + self.se * xs * self.G / self.gs
             out.append(rows * self.row / self.sref)
         if self.aug:
             out.append(np.array([d[0].sum() / (self.G * self.nc)]))
@@ -152,11 +173,11 @@ class NewtonSystem:
         out = r.copy()
         k = self.ncomp * self.nh
         u = np.zeros((2, *self.H.shape))
-        u[: self.ncomp, self.H] = r[:k].reshape(self.ncomp, self.nh) * self.sref
+        np.put(u, self._ih, r[:k] * self.sref)
         if self.rolling:
             u = np.cumsum(u[..., ::-1], axis=-1)[..., ::-1] * self.op.dx
-        q = self._inverse(u[0], u[1]) / self.G
-        out[:k] = q[: self.ncomp, self.H].ravel()
+        q = self._inverse(u[0], u[1])
+        out[:k] = np.take(q, self._ih) / self.G
         return out
 
     def solve(self, rtol: float) -> NewtonStep:

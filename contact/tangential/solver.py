@@ -94,6 +94,7 @@ def solve_tangential(
     max_outer: int = 200,
     force: float | None = None,
     area: float = 1.0,
+    polish_rtol: float = 1e-7,
 ) -> TangentialState:
     """Solve the tangential problem for the bound g = mu p (see the module docstring).
 
@@ -121,6 +122,9 @@ def solve_tangential(
         added to ``w`` (its increment is returned in ``TangentialState.dw``). 3D only.
     area : float
         Element area (m^2), to turn tractions into the force.
+    polish_rtol : float
+        GMRES tolerance of the last Newton steps, once the sets stand (looser while an
+        outer normal-tangential iteration is still moving the pressure).
 
     Raises
     ------
@@ -145,6 +149,7 @@ def solve_tangential(
     d_shift = diagonal(op, rolling)[0]
     limit = float(g.sum()) * area
     polish = False
+    moving = start is None
     for it in range(1, max_outer + 1):
         H, S = st.state == STICK, st.state == SLIP
         q0 = np.zeros_like(st.q)
@@ -153,8 +158,9 @@ def solve_tangential(
         s0 = slip_of(op, q0, w, u0, rolling)
         residual = None if force is None else force / area - float(q0[0].sum())
         system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
-        # loose linear solves while the sets move (inexact Newton), tight once they stand
-        step = system.solve(1e-4 if polish is False else 1e-7)
+        # loose linear solves while the sets move (inexact Newton: 1e-2 while elements
+        # change state, 1e-4 while only the directions settle), tight once they stand
+        step = system.solve(polish_rtol if polish else 1e-2 if moving else 1e-4)
         counter[0] += system.matvecs
         q, st.e, rot = step.q, step.e, step.rotation
         w[0] += step.dw
@@ -168,6 +174,7 @@ def solve_tangential(
             changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
                                        st.e[1], dxx, dyy, slack, 2 | aim)
         de = max(de, rot)
+        moving = changes > 0
         was_polished = polish
         polish = changes == 0 and de <= 1e-3
         settled = force is None or abs(float(q[0].sum()) * area - force) <= tol * 1e-2 * limit

@@ -17,6 +17,7 @@ from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.influence import HalfSpacePair, PairConstants
 from contact.tangential.kinematics import Creepage, rigid_slip
+from contact.tangential.nested import CoarseStart, coarse_grid, prolong
 from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult
 from contact.tangential.solver import TangentialState, solve_tangential
@@ -47,6 +48,7 @@ def steady_rolling(
     pressure: np.ndarray | None = None,
     tol: float = 1e-6,
     max_coupling: int = 30,
+    nested: bool = True,
 ) -> TangentialResult:
     """Solve steady rolling on ``grid``.
 
@@ -73,29 +75,42 @@ def steady_rolling(
         Tolerance of the slip directions and of the pressure between couplings.
     max_coupling : int
         Limit on normal-tangential iterations.
+    nested : bool
+        Start from the solution of a grid of twice the pitch (:mod:`contact.tangential.
+        nested`), recursively; the answer is still the fine grid's.
     """
     mu = check_friction(mu)
     creep = creepage or Creepage()
     op = operator_for(grid, constants)
+    start = _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol, max_coupling) \
+        if nested and pressure is None else None
     if pressure is not None:
         p, delta = np.asarray(pressure, float), float("nan")
         coupled = False
+    elif start is not None:
+        extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
+        p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
     else:
         p, delta = solve_pressure(op, grid.h, load)
     if np.any(p[:, -1] > 0):
         raise ContactInputError(
             "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
-    st: list[TangentialState | None] = [None]
-    xi = creep.xi
+    st: list[TangentialState | None] = [None if start is None else start.state]
+    xi = creep.xi if start is None else start.xi
     iterations = 0
+    # inexact outer iteration: while the pressure still moves by more than 1e-3, the
+    # tangential problems are solved loosely (their exact answer is for a pressure that is
+    # about to change); the last ones, which decide convergence, are solved tight
+    loose = [coupled and op.coupled]
     for iterations in range(1, max_coupling + 1):  # noqa: B007 (read after the loop)
         u0 = op.tangential_from_normal(p)
         g = mu * p
 
         def run(v: float, g=g, u0=u0, force=None) -> TangentialState:
             w = rigid_slip(grid.x, grid.y, Creepage(v, creep.eta, creep.phi))
-            st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0], tol=tol,
-                                     force=force, area=grid.area)
+            st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0],
+                                     tol=1e-3 if loose[0] else tol, force=force,
+                                     area=grid.area, polish_rtol=1e-4 if loose[0] else 1e-7)
             return st[0]
 
         if fx is None:
@@ -121,8 +136,9 @@ def steady_rolling(
                                       extra=op.normal_from_tangential(q[0], q[1]), start=p)
         change = float(np.abs(p_new - p).sum() / p.sum())
         p = p_new
-        if change < tol:
+        if change < tol and not loose[0]:
             break
+        loose[0] = loose[0] and change > 1e-3
     else:
         raise ConvergenceError(
             f"normal-tangential coupling did not settle in {max_coupling} iterations")
@@ -130,3 +146,15 @@ def steady_rolling(
     return TangentialResult(grid=grid, constants=constants, mu=mu, p=p, q=s.q, s=s.s,
                             state=s.state, creepage=Creepage(xi, creep.eta, creep.phi),
                             approach=delta, rolling=True, iterations=iterations)
+
+
+def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
+                  max_coupling) -> CoarseStart | None:
+    """The coarse grid's answer copied to ``grid``, or None where nesting does not pay."""
+    coarse = coarse_grid(grid)
+    if coarse is None:
+        return None
+    # only a start: its own tolerances can be loose
+    r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
+                       tol=max(tol, 1e-4), max_coupling=max_coupling)
+    return prolong(r.p, r.q, r.state, r.creepage.xi)
