@@ -86,6 +86,8 @@ def test_clean_columns_are_adequate_at_the_calibrated_rate(seed):
         rep = analyse_test("c", c.frames, fps=c.fps, step=c.step)
         bad += not rep.adequacy.adequate
         assert rep.effect == "none", rep.selected
+        # the smooth term (the last resort) is tried only where the check rejects
+        assert rep.smooth is None or not rep.adequacy.adequate
         assert 0 < rep.adequacy.p_value <= 1
     assert bad <= 1
 
