@@ -103,3 +103,27 @@ def test_legendre_recursion_against_numpy(degree):
     coef = np.zeros(degree + 1)
     coef[-1] = 1.0
     assert np.allclose(_legendre(x, range(degree, degree + 1))[0], legendre.legval(x, coef))
+
+
+def test_cli_reports_the_smooth_deviation_with_units(tmp_path):
+    import io
+    import json
+    from contextlib import redirect_stdout
+
+    from surfmet.cli import main
+
+    frames, fps, step = _bump_column(20, 0.45)
+    rep = analyse_test("b", frames, fps=fps, step=step)
+    assert rep.smooth is not None  # a bump the wave leaves structure of: the last resort
+    table = tmp_path / "bump.tsv"
+    table.write_text("k\tb1\n" + "".join(f"{k}\t{int(f)}\n" for k, f in enumerate(frames, 1)))
+    args = ["rotor", str(table), "--fps", str(fps), "--step-deg", "45", "-q"]
+    out = io.StringIO()
+    with redirect_stdout(out):
+        assert main([*args, "--json"]) == 0
+    rec = json.loads(out.getvalue())["tests"][0]["adequacy"]
+    sm = rec["smooth_deviation"]
+    assert sm["amplitude"]["unit"] == "rad/s²"
+    assert sm["amplitude"]["value"] == pytest.approx(rep.smooth.amplitude)
+    assert sm["delta_bic"] > 6 and not rec["adequate"]
+    assert any("unexplained smooth deviation" in line for line in rec["summary"])
