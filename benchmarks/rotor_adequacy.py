@@ -76,14 +76,14 @@ NOTES = """
   between the marks, and at the paper's 90 deg marks waves of 0.3-1.2 turns are seldom
   found at up to 0.35 eps0 (many are absorbed by an unbalance or by nothing visible:
   their signature in the frames is small). With marks every 45 deg and 40 rows, 0.35 eps0
-  is found in every column of each band measured here (but the test's own draws missed one
-  0.3-0.6 turn wave at 0.35 eps0, so that band's 90 % threshold is not established); waves
+  is found in every column of each band measured here (the 0.3-0.6 turn band at larger
+  samples and amplitudes: benchmarks/rotor_short_waves.py); waves
   of 1.2-3 turns in 6 of 6 columns from 0.2 eps0 at 90 deg marks (5 of 6 at 0.35) and
   from 0.05 eps0 at 45 deg marks (5 of 6 at 0.1). A one-turn wave has the form of an
   unbalance; the output says so when the period is within one resolution (P^2/span) of a
   turn.
-- Not done: the free-form smooth term of the issue (a last resort after the wave) is not
-  implemented.
+- The smooth term (`contact/rotor/smooth.py`) is the last resort where the chosen model,
+  core or plate wave, is still inadequate (docs/rotor_adequacy.md, hand-written part).
 """
 CAL_FILE = ROOT / "contact" / "rotor" / "adequacy_calibration.json"
 DOC = ROOT / "docs" / "rotor_adequacy.md"

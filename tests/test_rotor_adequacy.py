@@ -86,22 +86,30 @@ def test_clean_columns_are_adequate_at_the_calibrated_rate(seed):
         rep = analyse_test("c", c.frames, fps=c.fps, step=c.step)
         bad += not rep.adequacy.adequate
         assert rep.effect == "none", rep.selected
+        # the smooth term (the last resort) is tried only where the check rejects
+        assert rep.smooth is None or not rep.adequacy.adequate
         assert 0 < rep.adequacy.p_value <= 1
     assert bad <= 1
 
 
 # the smallest amplitudes (fraction of eps0) flagged or named in every column of their cell at
 # 240 fps, 45 deg marks, 40 rows, measured by benchmarks/rotor_adequacy.py
-# (docs/rotor_adequacy.md). The 0.3-0.6 turn band is left out: 6 of 6 at 0.35 eps0 in the
-# benchmark, but not in every draw here, so its 90 % threshold lies above the sizes measured;
-# at the paper's 90 deg marks waves shorter than about 1.2 turns are not found at these sizes
+# (docs/rotor_adequacy.md); at the paper's 90 deg marks waves shorter than about 1.2 turns
+# are not found at these sizes
 POWER = {(0.6, 1.2): 0.35, (1.2, 3.0): 0.2}
+# waves of 0.3-0.6 turns (benchmarks/rotor_short_waves.py): flagged or named in 46 of 50
+# columns at 0.35 eps0, 49 of 50 at 0.5 and 17 of 20 at 0.7 (some are taken for an adequate
+# unbalance): the band's power stays near 90 %, so its test asks for most columns, not all
+SHORT_BAND, SHORT_SIZE = (0.3, 0.6), 0.5
 
 
-@settings(deadline=None, derandomize=True, max_examples=6)
-@given(seed=st.integers(0, 2**32 - 1), band=st.sampled_from(sorted(POWER)),
+@pytest.mark.parametrize("band", sorted(POWER))
+@settings(deadline=None, derandomize=True, max_examples=4)
+@given(seed=st.integers(0, 2**32 - 1),
        log_factor=st.floats(0.0, math.log(1.3)), effect=st.sampled_from(["none", "decaying"]))
-def test_a_hidden_plate_wave_is_flagged_or_named(seed, band, log_factor, effect):
+def test_a_hidden_plate_wave_is_flagged_or_named(band, seed, log_factor, effect):
+    # the period is drawn within the band, the amplitude at or above the band's measured
+    # threshold (0.3-0.6 turns: the test below)
     size = POWER[band] * math.exp(log_factor)
     run = simulate_random_run(seed, effect, n_marks=40, fps=240.0, step=math.pi / 4,
                               n_misread=0, wave_fraction=(size, size), wave_period_rev=band)
@@ -110,6 +118,22 @@ def test_a_hidden_plate_wave_is_flagged_or_named(seed, band, log_factor, effect)
     assert named or not rep.adequacy.adequate, (band, size, rep.selected)
     # never a bare in-family verdict that claims to explain the data
     assert not (rep.effect in IN_FAMILY and rep.adequacy.adequate)
+
+
+@settings(deadline=None, derandomize=True, max_examples=2)
+@given(seed=st.integers(0, 2**31), log_factor=st.floats(0.0, math.log(1.3)))
+def test_a_short_hidden_plate_wave_is_mostly_flagged_or_named(seed, log_factor):
+    # 4 columns per draw, 0.3-0.6 turns at or above 0.5 eps0: at the measured ~93-98 %
+    # power, 2 or more missed of 4 happens in 0.2-3 % of draws; at 70 % power in 35 %
+    size = SHORT_SIZE * math.exp(log_factor)
+    missed = 0
+    for i in range(4):
+        run = simulate_random_run(seed + i, ("none", "decaying")[i % 2], n_marks=40, fps=240.0,
+                                  step=math.pi / 4, n_misread=0, wave_fraction=(size, size),
+                                  wave_period_rev=SHORT_BAND)
+        rep = analyse_test("w", run.frames, run.k, fps=run.fps, step=run.step)
+        missed += not ("wave" in rep.effect or not rep.adequacy.adequate)
+    assert missed <= 1
 
 
 def test_rayleigh_closed_forms():

@@ -42,6 +42,7 @@ from contact.rotor.selection import (
     select_model,
     verdict_evidence,
 )
+from contact.rotor.smooth import SmoothDeviation, fit_smooth_deviation
 
 __all__ = ["TestReport", "analyse_test", "group_of", "prepare_column"]
 
@@ -94,6 +95,10 @@ class TestReport:
     extension_tried : tuple of str
         The plate-wave models fitted (:mod:`contact.rotor.extension`); empty when the
         family's choice was adequate and no flagged row could be a smooth deviation.
+    smooth : SmoothDeviation or None
+        The last resort (:mod:`contact.rotor.smooth`): an unexplained smooth deviation of the
+        acceleration, selected when the chosen model is inadequate and the smooth term wins
+        by the selection margin.
     """
 
     __test__ = False  # not a pytest class
@@ -123,6 +128,7 @@ class TestReport:
     family_choice: str = ""
     family_adequacy: AdequacyCheck | None = None
     extension_tried: tuple[str, ...] = ()
+    smooth: SmoothDeviation | None = None
 
     @property
     def fit(self) -> ModelFit:
@@ -252,6 +258,9 @@ def analyse_test(
     delta, evidence = verdict_evidence(fits, chosen)
     pfa = false_alarm_probability(evidence)
     final = first if sel is checked else check_adequacy(times, angles, sel, step=step)
+    smooth = None
+    if extend and final.judged and not final.adequate:
+        smooth = fit_smooth_deviation(angles, sel, margin=margin)
     weak = MODELS[chosen].effect != "none" and (
         pfa > WEAK_FALSE_ALARM or not delta >= WEAK_DELTA_BIC)
     return TestReport(
@@ -280,4 +289,5 @@ def analyse_test(
         family_choice=family_choice,
         family_adequacy=first,
         extension_tried=tried,
+        smooth=smooth,
     )

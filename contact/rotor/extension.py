@@ -31,11 +31,19 @@ from contact.rotor.adequacy import (
 )
 from contact.rotor.family import EXTENSION, MODELS, ModelFit
 from contact.rotor.fitting import fit_all_models
-from contact.rotor.forward import PARAM_NAMES
+from contact.rotor.forward import PARAM_NAMES, crossing_times
 from contact.rotor.misreads import MisreadSearch, find_misread_rows
 from contact.rotor.selection import select_model
 
-__all__ = ["Extended", "extend_family", "wave_models_for"]
+__all__ = ["GRID_STARTS", "RUN_STARTS", "Extended", "extend_family", "start_indices",
+           "wave_models_for"]
+
+GRID_STARTS = 6
+"""Periods, evenly spaced in frequency over the resolvable range, each wave fit may start
+from besides the periodogram's highest peak."""
+RUN_STARTS = 2
+"""Starting points each wave fit runs to convergence: the periodogram's peak and the grid
+period of least cost."""
 
 _WAVE_OF = {"position": ("position+wave",), "speed": ("speed+wave",),
             "position+speed": ("position+wave", "speed+wave")}
@@ -62,13 +70,41 @@ def wave_models_for(chosen: str, n_used: int) -> list[str]:
     return [m for m in names if n_used > len(MODELS[m].free) + 2]
 
 
-def _wave_starts(fit: ModelFit, scan, names: list[str]) -> dict[str, list[dict[str, float]]]:
-    base = {k: float(fit.params[k]) for k in PARAM_NAMES if k in fit.params}
-    starts = []
-    for j in scan_peaks(scan, 1):
+def start_indices(scan, grid: int = GRID_STARTS) -> tuple[list[int], list[int]]:
+    """Scan indices the wave fits may start from: the periodogram's highest peak, and
+    ``grid`` periods evenly spaced in frequency over the scan (a fixed grid, so that the
+    outcome does not hinge on which of two near-equal peaks the linearised scan puts
+    first)."""
+    n = scan.periods.size
+    if n == 0:
+        return [], []
+    peak = scan_peaks(scan, 1)
+    even = np.linspace(0, n - 1, grid).round().astype(int) if grid else np.zeros(0, int)
+    return peak, [int(j) for j in dict.fromkeys(even.tolist()) if int(j) not in peak]
+
+
+def _wave_starts(times, angles, fit: ModelFit, scan,
+                 names: list[str]) -> dict[str, list[dict[str, float]]]:
+    """The peak's start and the grid start of least cost (the model's weighted sum of
+    squares with the scan's linearised wave at that period): :data:`RUN_STARTS` in all."""
+    base = {k: float(fit.params[k]) for k in PARAM_NAMES}
+    peak, grid = start_indices(scan)
+    used = np.asarray(fit.used, bool)
+    phi, t = np.asarray(angles, float)[used], np.asarray(times, float)[used]
+    sig = np.asarray(fit.sigma, float)[used]
+
+    def start(j: int) -> dict[str, float]:
         amp, ph = float(scan.amplitude[j]), float(scan.phase[j])
-        starts.append({**base, "wave_period": float(scan.periods[j]),
-                       "wave_c": amp * np.cos(ph), "wave_s": amp * np.sin(ph)})
+        return {**base, "wave_period": float(scan.periods[j]),
+                "wave_c": amp * np.cos(ph), "wave_s": amp * np.sin(ph)}
+
+    def cost(st: dict[str, float]) -> float:
+        r = (crossing_times(phi, **st) - t) / sig
+        return float(r @ r) if np.all(np.isfinite(r)) else np.inf
+
+    starts = [start(j) for j in peak]
+    if grid:
+        starts += sorted((start(j) for j in grid), key=cost)[: RUN_STARTS - len(starts)]
     return {m: [{k: v for k, v in s.items() if k in MODELS[m].free} for s in starts]
             for m in names}
 
@@ -78,8 +114,9 @@ def _fit_waves(times, angles, fits, chosen, outl, scan, *, fps, step, noise):
     if not names:
         return {}, ()
     waves = fit_all_models(times, angles, fps=fps, step=step, used=~outl, noise=noise,
-                           models=names, starts=_wave_starts(fits[chosen], scan, names),
-                           fitted=fits)
+                           models=names, starts=_wave_starts(times, angles, fits[chosen], scan,
+                                                              names),
+                           fitted=fits, max_starts=dict.fromkeys(names, RUN_STARTS))
     return waves, tuple(names)
 
 

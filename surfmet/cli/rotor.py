@@ -230,6 +230,12 @@ def adequacy_sentences(t: Any) -> list[str]:
     elif "unbalance" in t.effect:
         lines.append("  (an unbalance has the form of a plate wave of one revolution: one launch "
                      "cannot tell them apart)")
+    sm = t.smooth
+    if sm is not None:
+        lines.append(f"  unexplained smooth deviation: {sm.modes} Legendre mode(s) of the "
+                     f"rotation angle beat {sm.model} by {sm.delta_bic:.1f} in BIC; largest "
+                     f"{sm.amplitude:.3f} rad/s2, {sm.at_angle / (2 * math.pi):.2f} rev after "
+                     "the first mark (no effect of the family or plate wave explains it)")
     if t.extension_tried and t.selected not in EXTENSION:
         lines.append(f"  plate-wave models tried ({', '.join(t.extension_tried)}): none won "
                      "by the selection margin")
@@ -286,6 +292,14 @@ def _adequacy_record(t: Any) -> dict[str, Any]:
     named = _named(t)
     if named is not None:
         rec["named_wave"] = _wave_record(named)
+    sm = t.smooth
+    if sm is not None:
+        rec["smooth_deviation"] = {
+            "added_to": sm.model, "modes": sm.modes, "basis": "Legendre P2..P(modes+1)",
+            "coefficients": quantity(list(sm.coefficients), "rad/s²"),
+            "amplitude": quantity(sm.amplitude, "rad/s²"),
+            "at_angle": quantity(sm.at_angle, "rad"), "rms": quantity(sm.rms, "rad/s²"),
+            "delta_bic": sm.delta_bic, "runs_z_after": sm.runs_z, "lag1_after": sm.lag1}
     return rec
 
 
