@@ -18,8 +18,9 @@ Main entry points::
 Rooms: set-ups (``contact.setups``: ball on plate, line, flat, the composite roughness),
 field post-processing (``contact.fields``), roughness statistics (``contact.roughstats``),
 theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hertzcheck``,
-``contact.resolution``), rolling resistance (``contact.rolling``).
-    sphere_sweep(...); fit_exponent(...)   # rolling-resistance exponent (rolling)
+``contact.resolution``), rolling resistance (``contact.rolling``) and its load exponent
+(``contact.exponent``).
+    sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
     analyse_table(columns)                 # rotor law of motion (rotor.groups)
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
@@ -69,7 +70,7 @@ _LAZY = {
     "check_sphere": "contact.hertzcheck",
     "sphere_sweep": "contact.rolling",
     "cylinder_sweep": "contact.rolling",
-    "fit_exponent": "contact.rolling",
+    "fit_exponent": "contact.exponent",
     "solve_cylinder": "contact.setups.line",
     "mass_properties": "contact.rotor.mechanics",
     "angular_acceleration": "contact.rotor.mechanics",

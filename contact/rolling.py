@@ -54,7 +54,8 @@ neglected. M_pl = F_pl R.
 
 Exponent. log M_r is fitted against log N by least squares over the sweep: lambda_eff is
 the slope, with a Student-t confidence interval; the local exponent d ln M / d ln N
-(second-order finite differences on the log grid) shows how lambda drifts with the load.
+(second-order finite differences on the log grid) shows how lambda drifts with the load
+(both in :mod:`contact.exponent`).
 """
 
 from __future__ import annotations
@@ -68,6 +69,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
+from contact.exponent import ExponentFit, fit_exponent, local_exponent
 from contact.setups.composite import CompositeRoughness
 
 KINEMATICS = ("rolling", "frozen")
@@ -209,89 +211,6 @@ def plastic_work(
     sel = np.abs(along) <= half
     d = upl[:, sel].mean(axis=1) if axis == 1 else upl[sel, :].mean(axis=0)
     return float(H) * float(d.sum()) * across
-
-
-@dataclass(frozen=True)
-class ExponentFit:
-    """Least-squares power law M = s N^lambda.
-
-    Attributes
-    ----------
-    exponent : float
-        lambda (the slope of ln M against ln N).
-    ci : (float, float)
-        Confidence interval of lambda (Student t, ``confidence`` level).
-    prefactor : float
-        s (unit: [M] / [N]^lambda).
-    stderr : float
-        Standard error of lambda.
-    n : int
-        Points fitted.
-    rms_log_residual : float
-        Rms of the residuals of ln M.
-    confidence : float
-    """
-
-    exponent: float
-    ci: tuple[float, float]
-    prefactor: float
-    stderr: float
-    n: int
-    rms_log_residual: float
-    confidence: float
-
-
-def fit_exponent(loads: Sequence[float], moments: Sequence[float],
-                 confidence: float = 0.95) -> ExponentFit:
-    """Fit ln M = ln s + lambda ln N by least squares, with a confidence interval.
-
-    Raises
-    ------
-    ContactInputError
-        Fewer than 3 points, non-positive values, or a single load value.
-    """
-    from scipy import stats
-
-    n_ = np.asarray(loads, dtype=float)
-    m_ = np.asarray(moments, dtype=float)
-    if n_.shape != m_.shape or n_.ndim != 1:
-        raise ContactInputError("loads and moments must be 1D arrays of the same length")
-    if n_.size < 3:
-        raise ContactInputError(f"fitting an exponent with a confidence interval needs at "
-                                f"least 3 loads, got {n_.size}")
-    if not (np.all(n_ > 0) and np.all(m_ > 0) and np.isfinite(n_).all()
-            and np.isfinite(m_).all()):
-        raise ContactInputError("loads and moments must be positive and finite to take logs")
-    if not 0 < confidence < 1:
-        raise ContactInputError(f"confidence must lie in (0, 1), got {confidence!r}")
-    lx, ly = np.log(n_), np.log(m_)
-    sxx = float(((lx - lx.mean()) ** 2).sum())
-    if sxx <= 0:
-        raise ContactInputError("the loads must not all be equal")
-    slope = float(((lx - lx.mean()) * (ly - ly.mean())).sum() / sxx)
-    icpt = float(ly.mean() - slope * lx.mean())
-    resid = ly - (icpt + slope * lx)
-    dof = n_.size - 2
-    se = math.sqrt(float((resid**2).sum()) / dof / sxx)
-    t = float(stats.t.ppf(0.5 + confidence / 2, dof))
-    return ExponentFit(exponent=slope, ci=(slope - t * se, slope + t * se),
-                       prefactor=math.exp(icpt), stderr=se, n=int(n_.size),
-                       rms_log_residual=math.sqrt(float((resid**2).mean())),
-                       confidence=float(confidence))
-
-
-def local_exponent(loads: Sequence[float], moments: Sequence[float]) -> np.ndarray:
-    """d ln M / d ln N at each load (second-order differences; one-sided at the ends)."""
-    n_ = np.asarray(loads, dtype=float)
-    m_ = np.asarray(moments, dtype=float)
-    if n_.size < 2 or n_.shape != m_.shape:
-        raise ContactInputError("the local exponent needs at least 2 loads and moments")
-    if not (np.all(n_ > 0) and np.all(m_ > 0)):
-        raise ContactInputError("loads and moments must be positive to take logs")
-    if n_.size == 2:
-        s = (math.log(m_[1]) - math.log(m_[0])) / (math.log(n_[1]) - math.log(n_[0]))
-        return np.array([s, s])
-    return np.gradient(np.log(m_), np.log(n_))
 
 
 def log_loads(lo: float, hi: float, n: int) -> np.ndarray:

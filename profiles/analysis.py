@@ -129,30 +129,18 @@ def _window(x: np.ndarray, window: Any) -> tuple[slice, tuple[float, float]]:
     return slice(i0, i1 + 1), (a, b)
 
 
-def _parse_lc(lc: Any) -> float | str | None:
-    if lc is None:
+def _parse_cutoff(value: Any, name: str) -> float | str | None:
+    """A cutoff option ``name`` (``lc`` or ``ls``): a length in metres, ``"auto"`` or None."""
+    if value is None:
         return None
-    if isinstance(lc, str):
-        text = lc.strip().lower()
+    if isinstance(value, str):
+        text = value.strip().lower()
         if text == "auto":
             return "auto"
         if text in ("none", "off", "no"):
             return None
-        raise ProfileError(f"lc must be a length in metres, 'auto' or None, got {lc!r}")
-    return as_step(lc, "lc")
-
-
-def _parse_ls(ls: Any) -> float | str | None:
-    if ls is None:
-        return None
-    if isinstance(ls, str):
-        text = ls.strip().lower()
-        if text == "auto":
-            return "auto"
-        if text in ("none", "off", "no"):
-            return None
-        raise ProfileError(f"ls must be a length in metres, 'auto' or None, got {ls!r}")
-    return as_step(ls, "ls")
+        raise ProfileError(f"{name} must be a length in metres, 'auto' or None, got {value!r}")
+    return as_step(value, name)
 
 
 def _uniform_window(
@@ -355,8 +343,8 @@ def analyze_profile(
     standard = parse_standard(standard)
     end_treatment = parse_end_treatment(end_treatment)
     level_name, _ = parse_level(level)
-    lc_req = _parse_lc(lc)
-    ls_req = _parse_ls(ls)
+    lc_req = _parse_cutoff(lc, "lc")
+    ls_req = _parse_cutoff(ls, "ls")
     if n_sampling is not None and int(n_sampling) < 1:
         raise ProfileError(f"n_sampling must be >= 1, got {n_sampling}")
     settings: dict[str, Any] = {"points_input": int(z.size)}

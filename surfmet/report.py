@@ -24,10 +24,7 @@ A scan that cannot be read or evaluated gets a section with its error; the other
 
 from __future__ import annotations
 
-import base64
 import datetime as _dt
-import html
-import io
 import json
 import math
 from collections.abc import Iterable, Sequence
@@ -39,6 +36,15 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
+from surfmet.report_hertz import HertzOptions, hertz_figure, hertz_html, run_hertz_check
+from surfmet.report_html import (
+    array_png,
+    esc,
+    figure_png,
+    figures_html,
+    kv_table,
+    quantity_text,
+)
 
 # Display units of the parameter table: (SI unit) -> (factor to divide by, shown unit).
 DISPLAY_UNITS: dict[str, tuple[float, str]] = {
@@ -66,56 +72,12 @@ pre{background:#f6f6f6;padding:.6em;overflow:auto;font-size:.8em;max-height:30em
 """
 
 
-def esc(value: Any) -> str:
-    """HTML-escaped text of any value (quotes too, so it is safe in attributes)."""
-    return html.escape(str(value), quote=True)
-
-
-def png_data_uri(png: bytes) -> str:
-    """``data:image/png;base64,...`` for PNG bytes."""
-    if not png.startswith(b"\x89PNG\r\n\x1a\n"):
-        raise SurfmetInputError("not a PNG image")
-    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
-
-
-def figure_png(fig: Any, dpi: int = 100) -> bytes:
-    """PNG bytes of a matplotlib figure, which is then closed."""
-    from surfmet.plots._style import close
-
-    buf = io.BytesIO()
-    try:
-        fig.savefig(buf, format="png", dpi=dpi)
-    finally:
-        close(fig)
-    return buf.getvalue()
-
-
-def array_png(img: np.ndarray) -> bytes:
-    """PNG bytes of an RGB(A) uint8 image array."""
-    import matplotlib.image as mpimg
-
-    buf = io.BytesIO()
-    mpimg.imsave(buf, np.asarray(img), format="png")
-    return buf.getvalue()
-
-
 def display_value(value: Any, unit: str) -> tuple[str, str]:
     """``(number text, unit text)`` of an SI parameter value for the table."""
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
         return "n/a", unit
     factor, shown = DISPLAY_UNITS.get(unit, (1.0, unit))
     return f"{value / factor:.5g}", shown
-
-
-@dataclass(frozen=True)
-class HertzOptions:
-    """Inputs of the Hertz-check section (SI): ball radius (m), load (N), the materials as
-    ``"BALL,PLATE"`` (names with optional ``:E=..:nu=..:H=..``), and an optional ball scan."""
-
-    radius: float
-    load: float
-    materials: str
-    ball: str | None = None
 
 
 @dataclass
@@ -208,54 +170,6 @@ def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
     return figs
 
 
-def hertz_check_available() -> bool:
-    """True when :mod:`surfmet.mechanics.hertz_check` can be imported."""
-    import importlib.util
-
-    return importlib.util.find_spec("surfmet.mechanics.hertz_check") is not None
-
-
-def _run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
-    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
-
-    This is the one place the report touches the Hertz-check module.
-    """
-    try:
-        from surfmet.mechanics.hertz_check import hertz_check
-    except ImportError:
-        raise SurfmetInputError(
-            "the Hertz check is not available in this installation (surfmet.mechanics.hertz_check "
-            "is missing); run the report without --radius/--load/--materials"
-        ) from None
-    import surfmet
-
-    ball = surfmet.read(hz.ball) if hz.ball else None
-    res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
-    return res.to_json()
-
-
-def _num(v: Any) -> Any:
-    """A value of the Hertz-check JSON: ``{"value": v, "unit": u}`` or a bare number."""
-    if isinstance(v, dict) and "value" in v:
-        return v["value"]
-    return v
-
-
-def hertz_figure(check: dict[str, Any]) -> bytes | None:
-    """The radial pressure figure (Hertz vs BEM) of a Hertz-check record, as PNG."""
-    from surfmet.plots.contact import radial_pressure
-
-    rp = check.get("radial_profile") or {}
-    a0 = _num((check.get("hertz") or {}).get("a"))
-    try:
-        r, pb, ph = (np.asarray(_num(rp[k]), dtype=float) for k in ("r", "p_bem", "p_hertz"))
-    except (KeyError, TypeError, ValueError):
-        return None
-    if a0 is None or r.size < 2:
-        return None
-    return figure_png(radial_pressure(r, pb, ph, float(a0)))
-
-
 def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
                  include_3d: bool = True, hertz: HertzOptions | None = None) -> ScanSection:
     """Compute everything the report shows for one scan; errors end up in the section.
@@ -297,7 +211,7 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         # its own failure (no convergence, contact at the domain edge...) must not hide
         # the roughness part
         try:
-            sec.hertz = _run_hertz_check(scan, hertz)
+            sec.hertz = run_hertz_check(scan, hertz)
             sec.hertz_figure = hertz_figure(sec.hertz)
         except user_error_types() as exc:
             sec.hertz_error = str(exc)
@@ -308,45 +222,24 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
 # HTML
 
 
-def _kv_table(rows: Iterable[tuple[str, Any]], cls: str = "meta") -> str:
-    body = "".join(f"<tr><td>{esc(k)}</td><td>{esc(v)}</td></tr>" for k, v in rows)
-    return f'<table class="{cls}">{body}</table>'
-
-
-def _fmt_q(q: Any) -> str:
-    """Human text of a ``{"value", "unit"}`` quantity (lengths in µm)."""
-    from surfmet.units import format_length
-
-    if isinstance(q, dict) and "value" in q:
-        v, u = q["value"], q.get("unit", "")
-        if v is None:
-            return "n/a"
-        if u == "m" and isinstance(v, (int, float)):
-            return format_length(v)
-        if isinstance(v, (int, float)):
-            return f"{v:.5g} {u}".rstrip()
-        return f"{v} {u}".rstrip()
-    return str(q)
-
-
 def _info_html(info: dict[str, Any]) -> str:
     rows = [("format", info.get("format")), ("kind", info.get("kind")),
             ("grid", f"{info.get('nx')} × {info.get('ny')}" if info.get("kind") == "areal"
              else f"{info.get('nx')} points")]
-    rows.append(("pixel size", f"{_fmt_q(info.get('dx'))} × {_fmt_q(info.get('dy'))}"
-                 if info.get("kind") == "areal" else _fmt_q(info.get("dx"))))
+    rows.append(("pixel size", f"{quantity_text(info.get('dx'))} × {quantity_text(info.get('dy'))}"
+                 if info.get("kind") == "areal" else quantity_text(info.get("dx"))))
     if info.get("kind") == "areal":
-        rows.append(("scan size", f"{_fmt_q(info.get('size_x'))} × "
-                                  f"{_fmt_q(info.get('size_y'))}"))
+        rows.append(("scan size", f"{quantity_text(info.get('size_x'))} × "
+                                  f"{quantity_text(info.get('size_y'))}"))
     else:
-        rows.append(("length", _fmt_q(info.get("length"))))
+        rows.append(("length", quantity_text(info.get("length"))))
     rows.append(("non-measured", f"{100 * float(info.get('nan_fraction') or 0):.3f} %"))
     for k, v in (info.get("metadata") or {}).items():
         text = _meta_text(_jsonable(v))
         if len(text) > 400:
             text = text[:397] + "..."
         rows.append((k, text))
-    return "<h3>Instrument and grid</h3>" + _kv_table(rows)
+    return "<h3>Instrument and grid</h3>" + kv_table(rows)
 
 
 def _meta_text(v: Any) -> str:
@@ -354,7 +247,7 @@ def _meta_text(v: Any) -> str:
     ``key: value; ...``, numbers with 6 significant digits."""
     if isinstance(v, dict):
         if "value" in v and "unit" in v and len(v) == 2:
-            return _fmt_q(v)
+            return quantity_text(v)
         def inner(x: Any) -> str:
             t = _meta_text(x)
             nested = isinstance(x, dict) and not ("value" in x and "unit" in x)
@@ -393,13 +286,13 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
         rows.append(("surface", s.get("surface", "")))
         form = s.get("form") or {}
         rows.append(("F-operator (form removed)",
-                     f"{s.get('level')} (residual rms {_fmt_q(form.get('residual_rms'))})"))
+                     f"{s.get('level')} (residual rms {quantity_text(form.get('residual_rms'))})"))
         for name in ("ls", "lc"):
             rows.append((f"{'S' if name == 'ls' else 'L'}-filter nesting index {name}",
-                         _fmt_q(s[name]) if s.get(name) else "none"))
+                         quantity_text(s[name]) if s.get(name) else "none"))
         for f in s.get("filters") or []:
             rows.append((f"{f.get('kind')}-filter",
-                         f"Gaussian ISO 16610-61, λ = {_fmt_q(f.get('nesting_index'))}, "
+                         f"Gaussian ISO 16610-61, λ = {quantity_text(f.get('nesting_index'))}, "
                          f"edge treatment {f.get('edge')}"))
         rows.append(("measured points used", str(s.get("n_valid_points"))))
     else:
@@ -407,10 +300,10 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
         rows.append(("levelling", str(s.get("level"))))
         lc = s.get("lc")
         rows.append(("λc (L-filter cut-off)", "none" if lc is None else
-                     f"{_fmt_q({'value': lc, 'unit': 'm'})} ({s.get('lc_mode')})"))
+                     f"{quantity_text({'value': lc, 'unit': 'm'})} ({s.get('lc_mode')})"))
         ls = s.get("ls")
         rows.append(("λs (S-filter cut-off)", "none" if ls is None else
-                     _fmt_q({"value": ls, "unit": "m"})))
+                     quantity_text({"value": ls, "unit": "m"})))
         if s.get("filter"):
             rows.append(("filter", str(s["filter"])))
         for key in ("lc_note", "ls_note"):
@@ -418,7 +311,7 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
                 rows.append(("note", str(s[key])))
         if s.get("evaluation_length") is not None:
             rows.append(("evaluation length",
-                         f"{_fmt_q({'value': s['evaluation_length'], 'unit': 'm'})} "
+                         f"{quantity_text({'value': s['evaluation_length'], 'unit': 'm'})} "
                          f"({s.get('n_sampling')} sampling lengths)"))
     win = s.get("window")
     rows.append(("window", "whole scan" if not win else json.dumps(_jsonable(win))))
@@ -435,51 +328,9 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
 
 def _settings_html(s: dict[str, Any]) -> str:
     full = json.dumps(_jsonable(s), indent=1, ensure_ascii=False)
-    return ("<h3>Processing (settings used)</h3>" + _kv_table(_settings_rows(s))
+    return ("<h3>Processing (settings used)</h3>" + kv_table(_settings_rows(s))
             + "<details><summary>all settings (JSON, SI units)</summary><pre>"
             + esc(full) + "</pre></details>")
-
-
-def _figures_html(figs: Sequence[tuple[str, bytes]]) -> str:
-    items = "".join(
-        f'<figure><img alt="{esc(cap)}" src="{png_data_uri(png)}">'
-        f"<figcaption>{esc(cap)}</figcaption></figure>" for cap, png in figs)
-    return f'<h3>Pictures</h3><div class="figs">{items}</div>' if figs else ""
-
-
-def _hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None) -> str:
-    holds = check.get("hertz_holds")
-    verdict = ('<span class="ok">Hertz holds</span>' if holds else
-               '<span class="error">Hertz does not hold</span>' if holds is not None else
-               "no verdict")
-    parts = ["<h3>Hertz check</h3>", f'<p class="verdict">{verdict}'
-             f" (α = {esc(_fmt_q(check.get('alpha')))})</p>"]
-    if hz is not None:
-        parts.append(_kv_table([("ball radius", _fmt_q({"value": hz.radius, "unit": "m"})),
-                                ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
-                                ("ball scan", hz.ball or "none (smooth ball)")]))
-    grid = check.get("grid")
-    if grid:  # the grid and pixel the answer was computed on, as the CLI states them
-        parts.append(_kv_table([("contact grid", f"{grid['nx']} × {grid['ny']} cells, pixel "
-                                 f"{_fmt_q(grid['dx'])} ({grid.get('pixel_source', '')})")]))
-    reasons = check.get("reasons") or []
-    if reasons:
-        parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")
-    rows = []
-    hertz, bem = check.get("hertz") or {}, check.get("bem") or {}
-    for key in sorted(set(hertz) | set(bem)):
-        if isinstance(hertz.get(key), (list, dict)) and not (
-                isinstance(hertz.get(key), dict) and "value" in hertz[key]):
-            continue
-        rows.append(f"<tr><td>{esc(key)}</td><td>{esc(_fmt_q(hertz.get(key, '')))}</td>"
-                    f"<td>{esc(_fmt_q(bem.get(key, '')))}</td></tr>")
-    if rows:
-        parts.append('<table class="hertz"><tr><th>quantity</th><th>Hertz</th>'
-                     "<th>boundary elements</th></tr>" + "".join(rows) + "</table>")
-    if fig is not None:
-        parts.append(_figures_html([("radial pressure: Hertz against boundary elements",
-                                     fig)]).replace("<h3>Pictures</h3>", ""))
-    return "".join(parts)
 
 
 def _section_html(k: int, sec: ScanSection, hz: HertzOptions | None) -> str:
@@ -492,9 +343,9 @@ def _section_html(k: int, sec: ScanSection, hz: HertzOptions | None) -> str:
     out.append(_info_html(sec.info))
     out.append('<div class="cols"><div>' + _params_html(sec.parameters) + "</div><div>"
                + _settings_html(sec.settings) + "</div></div>")
-    out.append(_figures_html(sec.figures))
+    out.append(figures_html(sec.figures))
     if sec.hertz is not None:
-        out.append(_hertz_html(sec.hertz, sec.hertz_figure, hz))
+        out.append(hertz_html(sec.hertz, sec.hertz_figure, hz))
     elif sec.hertz_error:
         out.append(f'<h3>Hertz check</h3><p class="error">failed: {esc(sec.hertz_error)}</p>')
     out.append("</section>")

@@ -45,17 +45,17 @@ def test_hertz_check_cli_and_api_agree(capsys, api_check):
 
 def test_report_states_the_same_grid_and_numbers(tmp_path, api_check):
     import surfmet
-    from surfmet.report import HertzOptions, _run_hertz_check
+    from surfmet.report_hertz import HertzOptions, run_hertz_check
 
-    rec = _run_hertz_check(surfmet.read(PLATE), HertzOptions(0.01, 4.7, "steel,aluminium",
+    rec = run_hertz_check(surfmet.read(PLATE), HertzOptions(0.01, 4.7, "steel,aluminium",
                                                               ball=BALL))
     api = api_check.to_json()
     assert rec["grid"] == api["grid"] and rec["bem"] == api["bem"]
     import html as html_lib
 
-    from surfmet.report import _hertz_html
+    from surfmet.report_hertz import hertz_html
 
-    html = html_lib.unescape(_hertz_html(rec, None, HertzOptions(0.01, 4.7, "steel,aluminium",
+    html = html_lib.unescape(hertz_html(rec, None, HertzOptions(0.01, 4.7, "steel,aluminium",
                                                                  ball=BALL)))
     g = rec["grid"]
     assert f"{g['nx']} × {g['ny']} cells" in html and "the scans' own pixel" in html

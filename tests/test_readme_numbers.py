@@ -114,7 +114,7 @@ def test_quickstart_figures():
     import inspect
 
     import surfmet
-    from contact.resolution import CONVERGED
+    from contact.convergence import CONVERGED
     from surfmet.data import path
     from surfmet.mechanics.resolution_study import contact_study
     from surfmet.mechanics.rolling_resistance import rolling_resistance

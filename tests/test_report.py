@@ -14,7 +14,8 @@ import pytest
 import surfmet
 from surfmet.cli import main
 from surfmet.model import Topography
-from surfmet.report import HertzOptions, hertz_check_available, render_html, scan_section
+from surfmet.report import render_html, scan_section
+from surfmet.report_hertz import HertzOptions, hertz_check_available
 from surfmet.roughness import roughness
 
 EVIL = '<script>alert("x")</script> & <img src=x onerror=alert(1)>'
@@ -179,7 +180,7 @@ def test_hertz_section_rendering(tmp_path, evil_scan):
     # to_json() (values from Hertz's formulas; the BEM curve carries a hidden dip).
     from contact.hertz import hertz_sphere
     from contact.materials import composite_modulus, material
-    from surfmet.report import _hertz_html, hertz_figure
+    from surfmet.report_hertz import hertz_figure, hertz_html
 
     h = hertz_sphere(0.01, 4.7, composite_modulus(material("steel"), material("aluminium")))
     r = np.linspace(0, 1.4 * h.a, 50)
@@ -195,7 +196,7 @@ def test_hertz_section_rendering(tmp_path, evil_scan):
              "bem": {"a": {"value": 1.1 * h.a, "unit": "m"},
                      "p0": {"value": float(pb.max()), "unit": "Pa"}}}
     fig = hertz_figure(check)
-    html_text = _hertz_html(check, fig, HertzOptions(0.01, 4.7, "steel,aluminium"))
+    html_text = hertz_html(check, fig, HertzOptions(0.01, 4.7, "steel,aluminium"))
     page = parse(html_text)
     body = "".join(page.text)
     assert "Hertz does not hold" in body and "α = 0.31" in body

@@ -11,9 +11,10 @@ import numpy as np
 import pytest
 
 from contact import hertz_sphere
+from contact.convergence import trend
 from contact.errors import ContactInputError
 from contact.fields import PERIMETER_COEFFICIENT, block_average, corrected_area
-from contact.resolution import CRITERION_QUANTITY, sphere_study, trend
+from contact.resolution import CRITERION_QUANTITY, sphere_study
 from contact.roughstats import rms_slope
 from surfmet.cli import main
 

@@ -14,11 +14,10 @@ from scipy import stats
 
 from contact import composite_modulus, hertz_cylinder, hertz_sphere, material, solve_sphere
 from contact.errors import ContactInputError
+from contact.exponent import fit_exponent, local_exponent
 from contact.rolling import (
     cylinder_sweep,
-    fit_exponent,
     hysteresis_work,
-    local_exponent,
     log_loads,
     plastic_work,
     sphere_sweep,

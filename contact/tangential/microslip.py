@@ -26,9 +26,10 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.exponent import fit_exponent, local_exponent
 from contact.hertz import hertz_sphere
 from contact.materials import Material
-from contact.rolling import RollingSweep, fit_exponent, local_exponent
+from contact.rolling import RollingSweep
 from contact.tangential.grid import sample_roughness, sphere_grid
 from contact.tangential.influence import pair_constants
 from contact.tangential.kinematics import Creepage

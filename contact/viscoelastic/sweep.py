@@ -114,7 +114,8 @@ def sweep_record(model: str, loads: np.ndarray, forces: np.ndarray, radius: floa
                  confidence: float = 0.95) -> Any:
     """A :class:`contact.rolling.RollingSweep` from resisting forces F_r(N) (M_r = F_r R),
     with the power-law fit over the loads that dissipate and the local exponent."""
-    from contact.rolling import RollingSweep, fit_exponent, local_exponent
+    from contact.exponent import fit_exponent, local_exponent
+    from contact.rolling import RollingSweep
 
     w = np.asarray(loads, dtype=float)
     forces = np.asarray(forces, dtype=float)

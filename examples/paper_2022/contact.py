@@ -27,12 +27,11 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 import numpy as np  # noqa: E402
 
 import surfmet  # noqa: E402
+from contact.exponent import fit_exponent, local_exponent  # noqa: E402
 from contact.materials import composite_modulus, displacement_shares, material  # noqa: E402
 from contact.rolling import (  # noqa: E402
     RollingSweep,
-    fit_exponent,
     hysteresis_work,
-    local_exponent,
     log_loads,
     sphere_sweep,
 )

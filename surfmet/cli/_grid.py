@@ -1,5 +1,5 @@
 """The contact grid as the contact commands (``contact``, ``hertz-check``, ``rolling``) take
-it: the ``--grid`` option and its check. Where the pixel came from is
+it: the ``--grid`` option and its check, and the ``--on-edge`` option. Where the pixel came from is
 :func:`surfmet.mechanics.scan_preparation.pixel_source`."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import pixel_source
 
-__all__ = ["MIN_GRID", "add_grid_argument", "check_grid", "pixel_source"]
+__all__ = ["MIN_GRID", "add_grid_argument", "add_on_edge_argument", "check_grid", "pixel_source"]
 
 #: The fewest cells per side a contact grid may have.
 MIN_GRID = 8
@@ -18,6 +18,12 @@ MIN_GRID = 8
 def add_grid_argument(parser: Any, help: str) -> None:
     """The ``--grid N`` option (cells per side; checked by :func:`check_grid`)."""
     parser.add_argument("--grid", type=int, metavar="N", help=help)
+
+
+def add_on_edge_argument(parser: Any, help: str) -> None:
+    """The ``--on-edge {enlarge,warn,raise}`` option: a contact reaching the domain's edge."""
+    parser.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
+                        help=help)
 
 
 def check_grid(grid: int | None) -> None:

@@ -12,6 +12,14 @@ from surfmet.cli._common import emit_json, log
 from surfmet.errors import SurfmetInputError
 
 
+def add_resolution_study_flag(parser: Any) -> None:
+    """The ``--resolution-study`` flag (run by :func:`run_study`)."""
+    parser.add_argument("--resolution-study", action="store_true",
+                        help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
+                        "quantity per pixel and which converged "
+                        "(surfmet.mechanics.resolution_study)")
+
+
 def run_study(args: argparse.Namespace, command: str) -> int:
     """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
     from contact.materials import contact_hardness

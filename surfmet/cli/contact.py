@@ -18,7 +18,8 @@ from surfmet.cli._common import (
     pressure,
     spike_summary,
 )
-from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
+from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
+from surfmet.cli._resolution_study import add_resolution_study_flag
 
 EPILOG = """examples:
   surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -59,14 +60,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the roughness)")
     p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
-    p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
-                   help="contact reaching the domain edge: enlarge the domain (default), "
-                   "warn and return the truncated result, or fail")
+    add_on_edge_argument(p, "contact reaching the domain edge: enlarge the domain (default), "
+                         "warn and return the truncated result, or fail")
     p.add_argument("--tol", type=float, default=1e-6, help="solver tolerance (default 1e-6)")
     p.add_argument("--max-iter", type=int, default=2000, help="iteration limit (default 2000)")
-    p.add_argument("--resolution-study", action="store_true",
-                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
+    add_resolution_study_flag(p)
     p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
     add_json_flag(p)
     p.set_defaults(func=run)

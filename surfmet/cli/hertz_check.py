@@ -16,7 +16,8 @@ from surfmet.cli._common import (
     pressure,
     save_figure,
 )
-from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
+from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
+from surfmet.cli._resolution_study import add_resolution_study_flag
 
 EPILOG = """examples:
   surfmet hertz-check plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -58,11 +59,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
-    p.add_argument("--on-edge", choices=("enlarge", "warn", "raise"), default="enlarge",
-                   help="contact reaching the domain edge: enlarge (default), warn, fail")
-    p.add_argument("--resolution-study", action="store_true",
-                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
+    add_on_edge_argument(p, "contact reaching the domain edge: enlarge (default), warn, fail")
+    add_resolution_study_flag(p)
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)

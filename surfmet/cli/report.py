@@ -65,7 +65,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
-    from surfmet.report import HertzOptions, hertz_check_available, write_report
+    from surfmet.report import write_report
+    from surfmet.report_hertz import HertzOptions, hertz_check_available
 
     options = {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
                "profile": args.profile, "spikes": args.spikes}

@@ -20,6 +20,7 @@ from surfmet.cli._common import (
     show_progress,
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
+from surfmet.cli._resolution_study import add_resolution_study_flag
 from surfmet.cli.rolling_visco import add_visco_arguments, run_visco
 
 EPILOG = """examples:
@@ -74,9 +75,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
-    p.add_argument("--resolution-study", action="store_true",
-                   help="solve on the scans coarsened 8x, 4x, 2x and native; report each "
-                   "quantity per pixel and which converged (surfmet.mechanics.resolution_study)")
+    add_resolution_study_flag(p)
     p.add_argument("--positions", default=None, metavar="X:Y,...",
                    help="track positions: apex offsets from the middle of the scans; the "
                    "exponent is fitted to the mean moment over them")

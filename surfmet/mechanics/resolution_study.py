@@ -35,14 +35,17 @@ QUANTITIES = {
 }
 
 
-def _prepared(plate: Any, ball: Any, spikes: Any) -> Any:
+def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any) -> tuple[float, Any]:
+    """The composite modulus E* (Pa) of the materials and the prepared scans of a study."""
+    from contact.materials import composite_modulus
+    from surfmet.mechanics.material_spec import parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
+    ball_m, plate_m = parse_materials(materials)
     if plate is None and ball is None:
         raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
                                 "smooth contact has nothing to refine")
-    prep = prepare_scans(plate, ball, spikes=spikes)
-    return prep
+    return composite_modulus(ball_m, plate_m), prepare_scans(plate, ball, spikes=spikes)
 
 
 def contact_study(
@@ -78,16 +81,13 @@ def contact_study(
     -------
     (contact.resolution.ResolutionStudy, surfmet.mechanics.scan_preparation.PreparedScans)
     """
-    from contact.materials import composite_modulus
     from contact.resolution import sphere_study
-    from surfmet.mechanics.material_spec import parse_materials
 
-    ball_m, plate_m = parse_materials(materials)
-    prep = _prepared(plate, ball, spikes)
+    e_star, prep = _study_inputs(plate, ball, materials, spikes)
     pair = prep.pair
-    study = sphere_study(radius, load, composite_modulus(ball_m, plate_m), pair.roughness,
-                         pair.dx, pair.dy, hardness=hardness, sigma=prep.sigma,
-                         factors=factors, progress=progress)
+    study = sphere_study(radius, load, e_star, pair.roughness, pair.dx, pair.dy,
+                         hardness=hardness, sigma=prep.sigma, factors=factors,
+                         progress=progress)
     return study, prep
 
 
@@ -105,15 +105,12 @@ def rolling_study(
 ) -> tuple[Any, Any]:
     """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
     ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`."""
-    from contact.materials import composite_modulus
     from contact.resolution import rolling_study as engine
-    from surfmet.mechanics.material_spec import parse_materials
 
-    ball_m, plate_m = parse_materials(materials)
-    prep = _prepared(plate, ball, spikes)
+    e_star, prep = _study_inputs(plate, ball, materials, spikes)
     pair = prep.pair
-    study = engine(radius, composite_modulus(ball_m, plate_m), loads, pair.roughness,
-                   pair.dx, pair.dy, factors=factors, progress=progress, **sweep_kwargs)
+    study = engine(radius, e_star, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
+                   progress=progress, **sweep_kwargs)
     return study, prep
 
 

@@ -233,7 +233,7 @@ class TrackReport:
         The loads (N).
     mean_moments : ndarray
         Mean moment over the positions that succeeded (N m), summed in position order.
-    fit : contact.rolling.ExponentFit or None
+    fit : contact.exponent.ExponentFit or None
         Power law fitted to the mean moments (None with fewer than 3 dissipating loads).
     """
 
@@ -270,7 +270,7 @@ def rolling_tracks(plate: Any = None, ball: Any = None, *,
     SurfmetInputError
         No position, or every position failed (the first error is named).
     """
-    from contact.rolling import fit_exponent
+    from contact.exponent import fit_exponent
     from surfmet.batch import batch_map
 
     if not positions:

@@ -1,0 +1,106 @@
+"""The Hertz-check section of the report (:mod:`surfmet.report`): its inputs, the call to
+:func:`surfmet.mechanics.hertz_check.hertz_check`, the radial pressure figure and the HTML."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.report_html import esc, figure_png, figures_html, kv_table, quantity_text
+
+
+@dataclass(frozen=True)
+class HertzOptions:
+    """Inputs of the Hertz-check section (SI): ball radius (m), load (N), the materials as
+    ``"BALL,PLATE"`` (names with optional ``:E=..:nu=..:H=..``), and an optional ball scan."""
+
+    radius: float
+    load: float
+    materials: str
+    ball: str | None = None
+
+
+def hertz_check_available() -> bool:
+    """True when :mod:`surfmet.mechanics.hertz_check` can be imported."""
+    import importlib.util
+
+    return importlib.util.find_spec("surfmet.mechanics.hertz_check") is not None
+
+
+def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
+    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
+
+    This is the one place the report touches the Hertz-check module.
+    """
+    try:
+        from surfmet.mechanics.hertz_check import hertz_check
+    except ImportError:
+        raise SurfmetInputError(
+            "the Hertz check is not available in this installation (surfmet.mechanics.hertz_check "
+            "is missing); run the report without --radius/--load/--materials"
+        ) from None
+    import surfmet
+
+    ball = surfmet.read(hz.ball) if hz.ball else None
+    res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
+    return res.to_json()
+
+
+def _number(v: Any) -> Any:
+    """A value of the Hertz-check JSON: ``{"value": v, "unit": u}`` or a bare number."""
+    if isinstance(v, dict) and "value" in v:
+        return v["value"]
+    return v
+
+
+def hertz_figure(check: dict[str, Any]) -> bytes | None:
+    """The radial pressure figure (Hertz vs BEM) of a Hertz-check record, as PNG."""
+    from surfmet.plots.contact import radial_pressure
+
+    rp = check.get("radial_profile") or {}
+    a0 = _number((check.get("hertz") or {}).get("a"))
+    try:
+        r, pb, ph = (np.asarray(_number(rp[k]), dtype=float) for k in ("r", "p_bem", "p_hertz"))
+    except (KeyError, TypeError, ValueError):
+        return None
+    if a0 is None or r.size < 2:
+        return None
+    return figure_png(radial_pressure(r, pb, ph, float(a0)))
+
+
+def hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None) -> str:
+    holds = check.get("hertz_holds")
+    verdict = ('<span class="ok">Hertz holds</span>' if holds else
+               '<span class="error">Hertz does not hold</span>' if holds is not None else
+               "no verdict")
+    parts = ["<h3>Hertz check</h3>", f'<p class="verdict">{verdict}'
+             f" (α = {esc(quantity_text(check.get('alpha')))})</p>"]
+    if hz is not None:
+        parts.append(kv_table([("ball radius", quantity_text({"value": hz.radius, "unit": "m"})),
+                                ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
+                                ("ball scan", hz.ball or "none (smooth ball)")]))
+    grid = check.get("grid")
+    if grid:  # the grid and pixel the answer was computed on, as the CLI states them
+        parts.append(kv_table([("contact grid", f"{grid['nx']} × {grid['ny']} cells, pixel "
+                                 f"{quantity_text(grid['dx'])} ({grid.get('pixel_source', '')})")]))
+    reasons = check.get("reasons") or []
+    if reasons:
+        parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")
+    rows = []
+    hertz, bem = check.get("hertz") or {}, check.get("bem") or {}
+    for key in sorted(set(hertz) | set(bem)):
+        if isinstance(hertz.get(key), (list, dict)) and not (
+                isinstance(hertz.get(key), dict) and "value" in hertz[key]):
+            continue
+        rows.append(f"<tr><td>{esc(key)}</td><td>{esc(quantity_text(hertz.get(key, '')))}</td>"
+                    f"<td>{esc(quantity_text(bem.get(key, '')))}</td></tr>")
+    if rows:
+        parts.append('<table class="hertz"><tr><th>quantity</th><th>Hertz</th>'
+                     "<th>boundary elements</th></tr>" + "".join(rows) + "</table>")
+    if fig is not None:
+        parts.append(figures_html([("radial pressure: Hertz against boundary elements",
+                                     fig)]).replace("<h3>Pictures</h3>", ""))
+    return "".join(parts)
