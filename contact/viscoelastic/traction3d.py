@@ -45,7 +45,7 @@ from contact.tangential.results import TangentialResult
 from contact.tangential.solver import solve_tangential
 from contact.tangential.steady import check_friction
 from contact.viscoelastic.kernels import creep_filter_rows
-from contact.viscoelastic.rheology import CreepSeries
+from contact.viscoelastic.rheology import CreepSeries, pair_creep
 
 
 def constants_at(compliance: float, nu: float) -> PairConstants:
@@ -53,6 +53,29 @@ def constants_at(compliance: float, nu: float) -> PairConstants:
     if not (math.isfinite(nu) and -1.0 < nu < 0.5 + 1e-12):
         raise ContactInputError(f"Poisson's ratio must lie in (-1, 0.5], got {nu!r}")
     return PairConstants(G=(1.0 - nu) / compliance, nu=float(nu), K=0.0)
+
+
+def pair_poisson(body1: object, body2: object) -> float:
+    """The pair's combined Poisson ratio nu (Kalker 1990, sec. 1.5), the bodies weighted by
+    their mean surface compliances C_i = (C_g + C_r)/2 (None: rigid):
+
+        nu/(1 - nu) = sum nu_i C_i/(1 - nu_i) / sum C_i,
+
+    from 1/G_i = 2 C_i/(1 - nu_i). Exact for one deforming body or equal ratios.
+    """
+    num = den = 0.0
+    for body in (body1, body2):
+        if body is None:
+            continue
+        cs = pair_creep(body, None)
+        c = 0.5 * (cs.glassy + cs.relaxed)
+        nu = float(body.nu)
+        num += nu * c / (1.0 - nu)
+        den += c
+    if den == 0.0:
+        raise ContactInputError("at least one body must deform (both were rigid)")
+    r = num / den
+    return r / (1.0 + r)
 
 
 class ViscoHalfSpacePair(HalfSpacePair):
