@@ -97,3 +97,45 @@ def test_bad_input():
         visco_steady_tractions(grid, p, cr, 0.3, -1.0, 0.3, creepage=1e-3)
     with pytest.raises(ContactInputError, match="not both"):
         visco_steady_tractions(grid, p, cr, 0.3, V, 0.3, creepage=1e-3, fx=0.0)
+
+
+def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
+    """(3D creepage, plane-strain creepage, a) at F_x = -0.6 mu N for a slender elliptical
+    contact (R_y = 25 R_x, b/a ~ 7.8, 48 x 48) and the plane-strain roller with the same
+    R and the same relaxed half-width a; V tau = vt a (None: relaxed, tau -> 0)."""
+    import math
+
+    from contact.tangential.grid import centres
+    from contact.viscoelastic.line import influence_matrix, rolling_cylinder
+    from contact.viscoelastic.surface import solve_surface
+    from contact.viscoelastic.traction import steady_traction
+
+    nu, mu, ratio, k = 0.3, 0.3, 0.6, 25.0
+    a_r = 2.2196e-4  # relaxed centre half-width of this ellipse (its own solve, 48 x 48)
+    cr = _sls(1e-12 if vt is None else vt * a_r / V, nu).creep()
+    x, y = centres(48, 1.35 * a_r), centres(48, 1.3 * 1.733e-3)
+    h = x[None, :] ** 2 / (2 * R) + y[:, None] ** 2 / (2 * k * R)
+    res = solve_surface(h, x[1] - x[0], N, cr, V, dy=y[1] - y[0], origin=(x[0], y[0]))
+    grid = Grid(x=x, y=y, h=h)
+    tr = visco_steady_tractions(grid, np.asarray(res.pressure), cr, nu, V, mu,
+                                fx=-ratio * mu * N)
+    W = math.pi * a_r**2 / (4 * R * cr.relaxed)
+    r2 = rolling_cylinder(R, W, cr, V, n=256)
+    d2 = float(r2.x[1] - r2.x[0])
+    t2 = steady_traction(influence_matrix(256, d2, cr, V), np.asarray(r2.pressure), d2, mu,
+                         -ratio * mu * W)
+    return tr.creepage.xi, t2.creepage, (res.leading - res.trailing) / 2
+
+
+@pytest.mark.parametrize("vt", [0.3, 1.0])
+def test_slender_contact_viscoelastic_factor_matches_plane_strain(vt):
+    """The 2D limit. At equal F_x/(mu N) = -0.6 the viscoelastic factor of the creepage,
+    xi(V tau/a)/xi(relaxed), of a slender elliptical contact (b/a ~ 7.8) matches that of
+    plane strain (contact.viscoelastic.traction, Carter with creep) within 1 %. (The
+    creepages themselves differ by ~14 % at b/a = 8 and at b/a = 18 alike: the approach
+    of an ellipse to plane strain is logarithmic in b/a, out of reach of a fast test.)"""
+    xi3_r, xi2_r, a = _slender_creepage(None)
+    assert a == pytest.approx(2.2196e-4, rel=0.02)  # the half-width assumed above
+    xi3, xi2, _ = _slender_creepage(vt)
+    assert xi3 / xi3_r == pytest.approx(xi2 / xi2_r, rel=0.01)
+    assert xi3 / xi3_r != pytest.approx(1.0, abs=0.008)  # creep does change it
