@@ -8,6 +8,8 @@ nu = 0.25 (Kalker 1990, Table E.3).
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -99,6 +101,7 @@ def test_bad_input():
         visco_steady_tractions(grid, p, cr, 0.3, V, 0.3, creepage=1e-3, fx=0.0)
 
 
+@functools.lru_cache(maxsize=4)
 def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
     """(3D creepage, plane-strain creepage, a) at F_x = -0.6 mu N for a slender elliptical
     contact (R_y = 25 R_x, b/a ~ 7.8, 48 x 48) and the plane-strain roller with the same
