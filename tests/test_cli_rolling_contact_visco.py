@@ -67,3 +67,27 @@ def test_ball_runs_and_errors(capsys) -> None:
                    "0.3", "--viscoelastic", spec, "--speed", "0.1"])
         err = capsys.readouterr().err
         assert rc == 1 and message in err and len(err.strip().splitlines()) == 1
+
+
+def test_ball_tangential_kalker_and_full_slip(capsys) -> None:
+    # near-rigid ball on an incompressible SLS plate (nu = 0.5: K = 0, no coupling) in the
+    # relaxed limit (V tau/a ~ 1e-10): full adhesion gives Kalker's C11 = 5.20 (Kalker
+    # 1990, Table E.3, a/b = 1, nu = 0.5); a large creepage gives fx = -mu N
+    base = ["--radius", "20mm", "--load", "5N", "--materials",
+            "tungsten_carbide:E=1e15GPa,pmma", "--viscoelastic",
+            "plate:Eg=3GPa:Er=1GPa:tau=1ns:nu=0.5", "--speed", "0.1", "--grid", "64",
+            "--json"]
+    assert _run([*base, "--mu", "1e4", "--creepage", "1e-5"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    G = 2 * 1e9 / 3.0  # Kalker's combined modulus: 1/G = (1/G1 + 1/G2)/2, G1 -> inf
+    a = (3 * 5.0 * 0.02 * (1 - 0.25) / (4 * 1e9)) ** (1 / 3)
+    assert out["fx"]["unit"] == "N" and out["stick_area"]["unit"] == "m^2"
+    assert -out["fx"]["value"] / (G * a * a * 1e-5) == pytest.approx(5.20, rel=0.03)
+    assert out["slip_area"]["value"] == 0.0
+    assert out["stick_area"]["value"] == pytest.approx(math.pi * a * a, rel=0.03)
+    assert "3D" in out["model"] and "note" not in out
+    assert _run([*base, "--mu", "0.3", "--creepage", "0.5"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["fx"]["value"] == pytest.approx(-0.3 * 5.0, rel=1e-3)
+    assert out["stick_area"]["value"] == 0.0
+    assert out["creepage"]["value"] == 0.5

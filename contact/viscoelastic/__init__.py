@@ -4,7 +4,8 @@ Modules: :mod:`.rheology` (SLS in CONTACT's convention, Prony series, the pair's
 series), :mod:`.hunter` (Hunter's 1961 closed form for a rigid cylinder), :mod:`.line`
 (plane-strain boundary elements, exact influence coefficients), :mod:`.surface` (3D FFT
 boundary elements on a grid), :mod:`.loss` (loss data of materials, with sources),
-:mod:`.traction` (plane-strain steady rolling tractions with creep), :mod:`.kernels`
+:mod:`.traction` (plane-strain steady rolling tractions with creep), :mod:`.traction3d`
+(3D tractions: the tangential solver with a creep-filtered Cerruti operator), :mod:`.kernels`
 (numba: the exponential creep filter), :mod:`.sweep` (load sweep and lambda),
 :mod:`.mechanisms` (rolling-friction mechanisms side by side at the rotor's loads),
 :mod:`.result` (the result record). Guide: docs/viscoelastic_rolling.md.
@@ -20,6 +21,7 @@ from contact.viscoelastic.rheology import (
     pair_creep,
 )
 from contact.viscoelastic.traction import TractionResult, steady_traction
+from contact.viscoelastic.traction3d import ViscoHalfSpacePair, visco_steady_tractions
 
 __all__ = [
     "CreepSeries",
@@ -28,9 +30,11 @@ __all__ = [
     "RollingResult",
     "StandardLinearSolid",
     "TractionResult",
+    "ViscoHalfSpacePair",
     "hunter_cylinder",
     "pair_creep",
     "rolling_cylinder",
     "solve_line",
     "steady_traction",
+    "visco_steady_tractions",
 ]

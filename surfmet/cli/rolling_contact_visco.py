@@ -1,5 +1,6 @@
 """``surfmet rolling-contact ... --viscoelastic BODY:Eg=..:Er=..:tau=.. --speed V``: the
-steady viscoelastic rolling solve (normal problem) behind the rolling-contact command.
+steady viscoelastic rolling solve behind the rolling-contact command (normal problem; with
+--mu also the tangential tractions, plane strain or 3D).
 
 Reports the rolling-resistance coefficient (the pressure's moment about the axis over
 N R), pmax, the approach, and the leading and trailing contact edges (the contact moves
@@ -22,8 +23,9 @@ def add_visco_options(p: argparse.ArgumentParser) -> None:
                    "glassy and relaxed moduli (Pa units), creep time tau_c (s, ms; CONTACT's "
                    "convention: the stress-relaxation time is tau_c Er/Eg); needs --speed; "
                    "repeat for both bodies. Reports the rolling-resistance coefficient, "
-                   "pmax, approach and the contact edges; with --line also the tractions "
-                   "(quasi-identical bodies), e.g. --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms")
+                   "pmax, approach and the contact edges; with --mu also the tractions "
+                   "(quasi-identical bodies; creepage, fx, stick and slip), "
+                   "e.g. --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms")
 
 
 def load_value(text: Any, line: bool) -> float:
@@ -63,19 +65,11 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
         creepage=getattr(args, "creepage", None))
     out = res.to_json()
     if tr is not None:
-        dx = float(res.x[1] - res.x[0])
-        out.update({"creepage": {"value": tr.creepage, "unit": "1"},
-                    "fx": {"value": tr.force, "unit": "N/m"},
-                    "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
-                    "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"},
-                    "sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"})
+        out.update(_traction_json(res, tr, line))
     out["model"] = ("viscoelastic steady rolling, normal problem"
-                    + (" and tangential tractions (plane strain, quasi-identical bodies)"
-                       if tr is not None else " (frictionless)"))
+                    + (f" and tangential tractions ({'plane strain' if line else '3D'}, "
+                       "quasi-identical bodies)" if tr is not None else " (frictionless)"))
     out["direction"] = "the contact moves towards +x; the leading edge is at larger x"
-    if tr is None and getattr(args, "mu", None) is not None:
-        out["note"] = ("tangential tractions on viscoelastic bodies are solved for --line "
-                       "only; this is the ball's normal problem")
     if args.json:
         emit_json(out)
         return 0
@@ -90,10 +84,29 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
     print(f"leading edge                    {res.leading * 1e6:.6g} µm")
     print(f"trailing edge                   {res.trailing * 1e6:.6g} µm")
     if tr is not None:
-        dx = float(res.x[1] - res.x[0])
-        print(f"creepage                        {tr.creepage:.6g}")
-        print(f"fx                              {tr.force:.6g} N/m")
-        print(f"stick, slip length              {tr.stick.sum() * dx * 1e6:.5g} µm, "
-              f"{tr.slip.sum() * dx * 1e6:.5g} µm")
+        t = _traction_json(res, tr, line)
+        print(f"creepage                        {t['creepage']['value']:.6g}")
+        print(f"fx                              {t['fx']['value']:.6g} {t['fx']['unit']}")
+        if line:
+            print(f"stick, slip length              {t['stick_length']['value'] * 1e6:.5g} "
+                  f"µm, {t['slip_length']['value'] * 1e6:.5g} µm")
+        else:
+            print(f"stick, slip area                {t['stick_area']['value'] * 1e12:.5g} "
+                  f"µm², {t['slip_area']['value'] * 1e12:.5g} µm²")
     return 0
+
+
+def _traction_json(res: Any, tr: Any, line: bool) -> dict[str, Any]:
+    """Creepage, force and stick/slip extent of the tractions, with units."""
+    sign = {"sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"}
+    if line:
+        dx = float(res.x[1] - res.x[0])
+        return {"creepage": {"value": tr.creepage, "unit": "1"},
+                "fx": {"value": tr.force, "unit": "N/m"},
+                "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
+                "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"}, **sign}
+    return {"creepage": {"value": tr.creepage.xi, "unit": "1"},
+            "fx": {"value": tr.fx, "unit": "N"}, "fy": {"value": tr.fy, "unit": "N"},
+            "stick_area": {"value": tr.stick_area, "unit": "m^2"},
+            "slip_area": {"value": tr.slip_area, "unit": "m^2"}, **sign}
 

@@ -300,12 +300,14 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         Scans for a rough ball contact (the roughness frozen in the contact frame).
     mu, creepage : float, optional
         Coefficient of friction and creepage (default free rolling) for the tangential
-        tractions of a line contact (:func:`contact.viscoelastic.steady_traction`); a ball
-        gets the normal problem only.
+        tractions, quasi-identical bodies: plane strain
+        (:func:`contact.viscoelastic.steady_traction`) or, for a ball, 3D
+        (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`).
 
     Returns
     -------
-    (contact.viscoelastic.RollingResult, contact.viscoelastic.TractionResult or None)
+    (contact.viscoelastic.RollingResult, TractionResult (line), TangentialResult (ball)
+    or None)
     """
     from contact.viscoelastic import pair_creep
     from contact.viscoelastic.line import rolling_cylinder
@@ -330,7 +332,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         dx = float(res.x[1] - res.x[0])
         A = influence_matrix(res.x.size, dx, creep, speed)
         return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
-    n = grid or 128  # a ball: the normal problem (tractions are solved for lines only)
+    n = grid or 128
     z = None
     if plate is not None or ball is not None:
         from contact.viscoelastic.sweep import roughness_window
@@ -339,4 +341,14 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         pair = prepare_scans(plate, ball, spikes=spikes).pair
         half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
         z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
-    return rolling_sphere(radius, load, creep, speed, n=n, roughness=z), None
+    res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
+    if mu is None:
+        return res, None
+    from contact.tangential.grid import Grid
+    from contact.viscoelastic.traction3d import pair_poisson, visco_steady_tractions
+
+    x, y = np.asarray(res.x), np.asarray(res.y)
+    grid3 = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius))
+    nu = pair_poisson(bodies["ball"], bodies["plate"])
+    return res, visco_steady_tractions(grid3, np.asarray(res.pressure), creep, nu, speed, mu,
+                                       creepage=creepage)

@@ -1,0 +1,220 @@
+"""Tangential tractions of steady rolling on a viscoelastic half-space in 3D.
+
+The 3D counterpart of :mod:`contact.viscoelastic.traction` (plane strain): Coulomb
+friction, stick and slip areas, prescribed creepage xi or prescribed total force F_x
+(free rolling: 0), for the pressure of :mod:`contact.viscoelastic.surface`. The active-set
+Newton machinery of :mod:`contact.tangential.solver` is reused unchanged; only the
+influence operator differs.
+
+Operator. Poisson's ratio is constant in time (CONTACT's convention, see
+:mod:`contact.viscoelastic.rheology`), so every Cerruti kernel of
+:mod:`contact.tangential.influence` (Johnson 1985, *Contact Mechanics*, eqs. 3.86-3.87)
+carries the time dependence of 1/G(t), i.e. of the pair's creep compliance
+C(t) = C_g + sum dC_m (1 - exp(-t/theta_m)). This is exact for one viscoelastic body
+against a rigid one, or for two bodies with the same nu (quasi-identical: no
+normal-tangential coupling, K = 0). With w = A_g q the glassy elastic displacement
+(G_g = (1 - nu)/C_g) the steady-state hereditary integral along the rolling direction
+is the one :mod:`contact.viscoelastic.surface` applies to the normal kernel
+(Carbone & Putignano 2013, J. Mech. Phys. Solids 61:1822, eq. 10):
+
+    u = w + sum (dC_m / C_g) F_m(w),
+    F_m(x, y) = (1/l_m) int_0^inf exp(-xi/l_m) w(x + xi, y) dxi,   l_m = V theta_m,
+
+the material at x having passed x + xi a time xi/V before (the contact moves towards +x,
+the sign convention of :mod:`contact.tangential.kinematics`). F_m is the exact recursive
+filter :func:`contact.viscoelastic.kernels.creep_filter_rows`. w is needed ahead of the
+grid: it is computed on the grid extended ahead by ``ahead`` grid lengths (tractions zero
+there) and continued beyond by the 1/r decay of a point force at the grid centre
+(Gauss-Laguerre quadrature), which keeps the operator linear in q.
+
+Limits: l -> 0 gives F = w and u = (C_r/C_g) w, the relaxed elastic body; l -> inf
+gives F -> 0 and the glassy one.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from contact.errors import ContactInputError
+from contact.tangential.grid import Grid
+from contact.tangential.influence import HalfSpacePair, PairConstants
+from contact.tangential.kinematics import Creepage, rigid_slip
+from contact.tangential.results import TangentialResult
+from contact.tangential.solver import solve_tangential
+from contact.tangential.steady import check_friction
+from contact.viscoelastic.kernels import creep_filter_rows
+from contact.viscoelastic.rheology import CreepSeries, pair_creep
+
+
+def constants_at(compliance: float, nu: float) -> PairConstants:
+    """Elastic pair constants of the surface compliance C = 1/E* (1/Pa) and nu (K = 0)."""
+    if not (math.isfinite(nu) and -1.0 < nu < 0.5 + 1e-12):
+        raise ContactInputError(f"Poisson's ratio must lie in (-1, 0.5], got {nu!r}")
+    return PairConstants(G=(1.0 - nu) / compliance, nu=float(nu), K=0.0)
+
+
+def pair_poisson(body1: object, body2: object) -> float:
+    """The pair's combined Poisson ratio nu (Kalker 1990, sec. 1.5), the bodies weighted by
+    their mean surface compliances C_i = (C_g + C_r)/2 (None: rigid):
+
+        nu/(1 - nu) = sum nu_i C_i/(1 - nu_i) / sum C_i,
+
+    from 1/G_i = 2 C_i/(1 - nu_i). Exact for one deforming body or equal ratios.
+    """
+    num = den = 0.0
+    for body in (body1, body2):
+        if body is None:
+            continue
+        cs = pair_creep(body, None)
+        c = 0.5 * (cs.glassy + cs.relaxed)
+        nu = float(body.nu)
+        num += nu * c / (1.0 - nu)
+        den += c
+    if den == 0.0:
+        raise ContactInputError("at least one body must deform (both were rigid)")
+    r = num / den
+    return r / (1.0 + r)
+
+
+class ViscoHalfSpacePair(HalfSpacePair):
+    """The steady-rolling tangential operator of a viscoelastic pair (see module notes).
+
+    Its elastic attributes (``c``, ``real``, ``spec``, the preconditioner) are those of
+    the mean compliance (C_g + C_r)/2; :meth:`tangential` is the viscoelastic product.
+
+    Parameters
+    ----------
+    ny, nx : int
+        Grid shape.
+    dx, dy : float
+        Element size (m).
+    creep : CreepSeries
+        The pair's creep series.
+    nu : float
+        The combined Poisson ratio (constant in time).
+    speed : float
+        Rolling speed V (m/s).
+    ahead : float
+        Extension of the evaluation grid ahead, in grid lengths.
+    """
+
+    def __init__(self, ny: int, nx: int, dx: float, dy: float, creep: CreepSeries,
+                 nu: float, speed: float, ahead: float = 0.5):
+        if not (math.isfinite(speed) and speed > 0):
+            raise ContactInputError(f"the rolling speed must be positive in m/s, got {speed!r}")
+        super().__init__(ny, nx, dx, dy, constants_at(0.5 * (creep.glassy + creep.relaxed), nu))
+        self.creep, self.speed = creep, float(speed)
+        self.m = math.ceil(ahead * nx) if creep.amplitudes else 0
+        self._ext = HalfSpacePair(ny, nx + self.m, dx, dy, constants_at(creep.glassy, nu))
+        lag_x, lag_w = np.polynomial.laguerre.laggauss(32)
+        # distances from the grid centre of the last extended column and of the tail
+        yc = (np.arange(ny) - 0.5 * (ny - 1)) * dy
+        xe = (nx + self.m - 1 - 0.5 * (nx - 1)) * dx
+        re = np.hypot(xe, yc)
+        self._tails = []
+        for th in creep.times:
+            ell = self.speed * th
+            r = np.hypot(xe + ell * lag_x[None, :], yc[:, None])
+            self._tails.append((re[:, None] / r) @ lag_w)
+
+    def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None) -> np.ndarray:
+        """(u_x, u_y), shape (2, ny, nx), of the tractions in steady rolling (m)."""
+        ext = (self.ny, self.nx + self.m)
+        qxe = np.zeros(ext)
+        qxe[:, : self.nx] = qx
+        qye = None
+        if qy is not None and np.any(qy):
+            qye = np.zeros(ext)
+            qye[:, : self.nx] = qy
+        w = self._ext.tangential(qxe, qye)
+        u = w.copy()
+        cg = self.creep.glassy
+        for dc, th, tail in zip(self.creep.amplitudes, self.creep.times, self._tails):
+            for k in range(2):
+                wk = np.ascontiguousarray(w[k])
+                u[k] += (dc / cg) * creep_filter_rows(wk, wk[:, -1] * tail, self.dx,
+                                                      self.speed * th)
+        return u[..., : self.nx]
+
+
+def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries, nu: float,
+                           speed: float, mu: float, *, creepage: float | None = None,
+                           fx: float | None = None, tol: float = 1e-6,
+                           ahead: float = 0.5) -> TangentialResult:
+    """Steady rolling tractions on a viscoelastic pair for a given pressure (3D).
+
+    Parameters
+    ----------
+    grid : Grid
+        The grid (:func:`contact.tangential.grid.sphere_grid` or the pressure's own).
+    pressure : ndarray, shape (ny, nx)
+        Pressure (Pa), e.g. from :func:`contact.viscoelastic.surface.solve_surface`.
+    creep : CreepSeries
+        The pair's creep series.
+    nu : float
+        The combined Poisson ratio.
+    speed : float
+        Rolling speed V (m/s).
+    mu : float
+        Coefficient of friction (> 0).
+    creepage : float, optional
+        Prescribed longitudinal creepage xi; otherwise the force ``fx`` is prescribed.
+    fx : float, optional
+        Prescribed F_x on body 1 (N), |F_x| < mu N (default 0: free rolling).
+    tol : float
+        Tolerance of the slip directions and linear solves.
+    """
+    mu = check_friction(mu)
+    if grid.line:
+        raise ContactInputError("plane strain: use contact.viscoelastic.traction")
+    if creepage is not None and fx is not None:
+        raise ContactInputError("prescribe the tangential force or the creepage, not both")
+    if creepage is not None and not math.isfinite(creepage):
+        raise ContactInputError(f"the creepage must be a finite number, got {creepage!r}")
+    p = np.asarray(pressure, dtype=float)
+    if p.shape != grid.h.shape:
+        raise ContactInputError(f"the pressure must have the grid's shape {grid.h.shape}")
+    if np.any(p[:, -1] > 0):
+        raise ContactInputError(
+            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    op = ViscoHalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, creep, nu, speed,
+                            ahead)
+    g = mu * p
+    u0 = np.zeros((2, *p.shape))
+    xi = 0.0 if creepage is None else float(creepage)
+    force = None
+    if creepage is None:
+        force = 0.0 if fx is None else float(fx)
+        fn = float(p.sum()) * grid.area
+        if abs(force) >= mu * fn:
+            raise ContactInputError(
+                f"tangential force {abs(force):.4g} N is not below the friction limit "
+                f"mu N = {mu * fn:.4g} N: the bodies slide as a whole")
+    w = rigid_slip(grid.x, grid.y, Creepage(xi))
+    st = solve_tangential(op, g, w, u0, rolling=True, tol=tol, force=force, area=grid.area)
+    xi += st.dw
+    return TangentialResult(grid=grid, constants=op.c, mu=mu, p=p, q=st.q, s=st.s,
+                            state=st.state, creepage=Creepage(xi), approach=float("nan"),
+                            rolling=True, iterations=1)
+
+
+def rolling_sphere_tractions(radius: float, load: float, creep: CreepSeries, nu: float,
+                             speed: float, mu: float, *, n: int = 64,
+                             creepage: float | None = None, fx: float | None = None,
+                             tol: float = 1e-6, **normal_kw) -> tuple:
+    """A ball rolling on a viscoelastic pair: the normal solve of
+    :func:`contact.viscoelastic.surface.rolling_sphere`, then the tractions on its grid.
+
+    Returns (RollingResult, TangentialResult).
+    """
+    from contact.viscoelastic.surface import rolling_sphere
+
+    res = rolling_sphere(radius, load, creep, speed, n=n, **normal_kw)
+    x, y = np.asarray(res.x), np.asarray(res.y)
+    h = (x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius)
+    grid = Grid(x=x, y=y, h=h)
+    tr = visco_steady_tractions(grid, np.asarray(res.pressure), creep, nu, speed, mu,
+                                creepage=creepage, fx=fx, tol=tol)
+    return res, tr
