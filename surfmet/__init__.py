@@ -3,7 +3,8 @@
 Reading scans::
 
     import surfmet
-    topo = surfmet.read("scan.nms")        # Topography or Profile, heights in metres
+    from surfmet.data import path
+    topo = surfmet.read(path("paper_plate.x3p"))  # Topography or Profile, heights in metres
     surfmet.write(topo, "copy.x3p")
 
 Analysis lives in submodules (``surfmet.areal``, ``surfmet.areal.filters``...) and in the two

@@ -84,7 +84,7 @@ class SweepItem:
 
 
 def sweep_items(*, task: str, loads: Sequence[float], radius: float,
-                plates: Sequence[str | None] = (None,), balls: Sequence[str | None] = (None,),
+                plates: Sequence[Any] = (None,), balls: Sequence[Any] = (None,),
                 materials: Sequence[str] = ("steel,aluminium",),
                 positions: Sequence[tuple[float, float] | None] = (None,),
                 grid: int | None = None, hardness: float | None = None,
@@ -101,7 +101,10 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
     if grid is not None and grid < 8:
         raise SurfmetInputError("the grid needs at least 8 cells per side")
     spikes = spike_mode(spikes)
-    combos = itertools.product(plates or (None,), balls or (None,), materials, positions,
+    # paths may come as pathlib objects; an item holds them as text (its key is JSON)
+    plates = [None if p is None else os.fspath(p) for p in (plates or (None,))]
+    balls = [None if b is None else os.fspath(b) for b in (balls or (None,))]
+    combos = itertools.product(plates, balls, materials, positions,
                                loads)
     return [SweepItem(index=k, task=task, plate=pl, ball=bl, materials=m, load=w,
                       radius=float(radius), position=pos, grid=grid, hardness=hardness,

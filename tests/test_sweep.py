@@ -44,6 +44,15 @@ def test_product_order_and_stable_keys():
     assert {it.key for it in items} == {it.key for it in again}
 
 
+def test_paths_may_be_pathlib_objects():
+    # the quickstart passes surfmet.data.path(...) objects; the key is JSON text
+    as_path = sweep_items(task="contact", loads=[1.0], radius=0.02,
+                          plates=[Path("plate.x3p")], balls=[Path("ball.x3p")])
+    as_text = sweep_items(task="contact", loads=[1.0], radius=0.02,
+                          plates=["plate.x3p"], balls=["ball.x3p"])
+    assert as_path[0].plate == "plate.x3p" and as_path[0].key == as_text[0].key
+
+
 def test_smooth_item_is_hertz():
     rows = run_sweep(sweep_items(task="contact", loads=[3.0], radius=0.02, grid=96),
                      workers=1)
