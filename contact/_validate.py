@@ -25,12 +25,15 @@ def positive(value: Any, what: str, unit: str = "") -> float:
     return v
 
 
-def frozen(a: Any) -> np.ndarray:
-    """``a`` as a C-contiguous, read-only array (a copy only where ``a`` is not contiguous).
+def frozen(a: Any, *, copy: bool = False, dtype: Any = None) -> np.ndarray:
+    """``a`` as a C-contiguous, read-only array.
 
-    Results are frozen dataclasses; freezing their arrays too keeps a caller from changing
-    a field behind the derived scalars' back.
+    Without ``copy`` it is a copy only where ``a`` is not contiguous (or not of ``dtype``),
+    so a caller's contiguous array becomes read-only too; ``copy=True`` always copies and
+    leaves the caller's array writeable. Results are frozen dataclasses; freezing their
+    arrays too keeps a caller from changing a field behind the derived scalars' back.
     """
-    out = np.ascontiguousarray(a)
+    out = np.array(a, dtype=dtype, copy=True, order="C") if copy else \
+        np.ascontiguousarray(a, dtype=dtype)
     out.setflags(write=False)
     return out

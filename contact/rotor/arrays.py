@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from contact._validate import frozen
+
 __all__ = ["on_rows", "readonly"]
 
 
 def readonly(a: np.ndarray) -> np.ndarray:
     """A read-only copy of ``a``: the frozen records hold arrays nobody can change."""
-    a = np.array(a, copy=True)
-    a.flags.writeable = False
-    return a
+    return frozen(a, copy=True)
 
 
 def on_rows(values: np.ndarray, used: np.ndarray) -> np.ndarray:

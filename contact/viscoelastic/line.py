@@ -31,10 +31,10 @@ until neither occurs (a few iterations; exact for the discretised problem).
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
@@ -161,9 +161,9 @@ def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
     h = np.asarray(heights, dtype=float)
     if h.ndim != 1 or h.size < 4 or not np.all(np.isfinite(h)):
         raise ContactInputError("the line heights must be a finite 1D array of >= 4 cells")
-    v = _check_positive(speed, "the rolling speed", "m/s")
-    W = _check_positive(load, "the load per unit length", "N/m")
-    dx = _check_positive(dx, "the cell pitch", "m")
+    v = positive(speed, "the rolling speed", "m/s")
+    W = positive(load, "the load per unit length", "N/m")
+    dx = positive(dx, "the cell pitch", "m")
     n = h.size
     x = (x0 if x0 is not None else -(n - 1) * dx / 2) + np.arange(n) * dx
     A = influence_matrix(n, dx, creep, v)
@@ -181,15 +181,6 @@ def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
                          iterations=it)
 
 
-def _check_positive(value: Any, what: str, unit: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ContactInputError(f"{what} must be a number in {unit}, got {value!r}") from None
-    if not (math.isfinite(v) and v > 0):
-        raise ContactInputError(f"{what} must be positive and finite in {unit}, got {value!r}")
-    return v
-
 
 def rolling_cylinder(radius: float, load: float, creep: CreepSeries, speed: float, *,
                      n: int = 1024, half_length: float | None = None,
@@ -200,8 +191,8 @@ def rolling_cylinder(radius: float, load: float, creep: CreepSeries, speed: floa
     bounds the contact at every speed); ``roughness`` (m, length n) is subtracted from the
     gap (material heights up, as a plate's profile).
     """
-    R = _check_positive(radius, "the radius", "m")
-    W = _check_positive(load, "the load per unit length", "N/m")
+    R = positive(radius, "the radius", "m")
+    W = positive(load, "the load per unit length", "N/m")
     a_r = math.sqrt(4.0 * W * R * creep.relaxed / math.pi)
     L = half_length if half_length is not None else 1.6 * a_r
     dx = 2.0 * L / n

@@ -6,12 +6,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from contact._validate import frozen as _frozen
+
 
 def frozen(a: np.ndarray) -> np.ndarray:
-    """A read-only contiguous float copy."""
-    a = np.array(a, dtype=float, copy=True, order="C")
-    a.setflags(write=False)
-    return a
+    """A read-only contiguous float copy (:func:`contact._validate.frozen`)."""
+    return _frozen(a, copy=True, dtype=float)
 
 
 @dataclass(frozen=True, eq=False)

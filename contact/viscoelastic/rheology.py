@@ -38,18 +38,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.materials import Material
-
-
-def _finite_positive(value: float, what: str, unit: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ContactInputError(f"{what} must be a number in {unit}, got {value!r}") from None
-    if not (math.isfinite(v) and v > 0):
-        raise ContactInputError(f"{what} must be positive and finite in {unit}, got {value!r}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -71,13 +62,13 @@ class CreepSeries:
     times: tuple[float, ...] = ()
 
     def __post_init__(self) -> None:
-        _finite_positive(self.glassy, "the glassy compliance", "1/Pa")
+        positive(self.glassy, "the glassy compliance", "1/Pa")
         if len(self.amplitudes) != len(self.times):
             raise ContactInputError("a creep series needs one time per amplitude")
         for dc, t in zip(self.amplitudes, self.times):
             if not (math.isfinite(dc) and dc >= 0):
                 raise ContactInputError(f"creep amplitudes must be >= 0 in 1/Pa, got {dc!r}")
-            _finite_positive(t, "a creep time tau", "s")
+            positive(t, "a creep time tau", "s")
 
     @property
     def relaxed(self) -> float:
@@ -110,7 +101,7 @@ class CreepSeries:
 
     def scaled(self, factor: float) -> CreepSeries:
         """Every compliance times ``factor`` (e.g. 1 - nu^2 for a half-space surface)."""
-        f = _finite_positive(factor, "the compliance factor", "-")
+        f = positive(factor, "the compliance factor", "-")
         return CreepSeries(self.glassy * f, tuple(a * f for a in self.amplitudes), self.times)
 
     def glassy_only(self) -> CreepSeries:
@@ -142,13 +133,13 @@ class StandardLinearSolid:
     nu: float = 0.3
 
     def __post_init__(self) -> None:
-        eg = _finite_positive(self.E_g, "the glassy modulus Eg", "Pa")
-        er = _finite_positive(self.E_r, "the relaxed modulus Er", "Pa")
+        eg = positive(self.E_g, "the glassy modulus Eg", "Pa")
+        er = positive(self.E_r, "the relaxed modulus Er", "Pa")
         if er > eg:
             raise ContactInputError(
                 f"the relaxed modulus Er = {er:g} Pa exceeds the glassy modulus Eg = {eg:g} Pa "
                 "(a standard linear solid softens with time: Er <= Eg)")
-        _finite_positive(self.tau_c, "the creep time tau", "s")
+        positive(self.tau_c, "the creep time tau", "s")
         if not (math.isfinite(self.nu) and -1.0 < self.nu <= 0.5):
             raise ContactInputError(f"Poisson's ratio must lie in (-1, 0.5], got {self.nu}")
 
@@ -193,12 +184,12 @@ class PronySeries:
     nu: float = 0.3
 
     def __post_init__(self) -> None:
-        _finite_positive(self.E_inf, "the relaxed modulus E_inf", "Pa")
+        positive(self.E_inf, "the relaxed modulus E_inf", "Pa")
         if len(self.moduli) != len(self.times) or not self.moduli:
             raise ContactInputError("a Prony series needs one relaxation time per modulus")
         for e, t in zip(self.moduli, self.times):
-            _finite_positive(e, "a Prony modulus E_k", "Pa")
-            _finite_positive(t, "a relaxation time tau", "s")
+            positive(e, "a Prony modulus E_k", "Pa")
+            positive(t, "a relaxation time tau", "s")
         if len(set(self.times)) != len(self.times):
             raise ContactInputError("the Prony relaxation times must be distinct")
 
