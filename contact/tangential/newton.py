@@ -26,6 +26,8 @@ from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
 
 PRECONDITIONER = "continuum"
+# inner solves at or above this relative tolerance use float32 FFT products
+SINGLE_ABOVE = 1e-5
 
 
 def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
@@ -140,6 +142,7 @@ class NewtonSystem:
         self._inverse = (op.tangential_stiffness if PRECONDITIONER == "continuum"
                          else op.tangential_inverse)
         self.matvecs = 0
+        self.single = False
 
     def increments(self, x: np.ndarray) -> np.ndarray:
         """Traction increments (Pa) of the unknowns x."""
@@ -154,7 +157,7 @@ class NewtonSystem:
         self.matvecs += 1
         k = self.ncomp * self.nh
         d = self.increments(x)
-        u = self.op.tangential(d[0], d[1] if self.ncomp == 2 else None)
+        u = self.op.tangential(d[0], d[1] if self.ncomp == 2 else None, self.single)
         r = rolling_slip(u, self.op.dx) if self.rolling else u
         z = x[-1] * self.sref if self.aug else 0.0  # rigid slip increment along x
         rh = np.take(r, self._ih)
@@ -185,6 +188,10 @@ class NewtonSystem:
         if self.n == 0 or not np.any(self.b):
             return NewtonStep(self.q0, self.e_all, 0.0, 0.0)
         pre = self.precondition if self.ncomp == 2 else (lambda v: v)
+        # float32 products are exact enough for a loose step (their error, ~1e-7 of the
+        # product, is far below its tolerance); the residual of every step is still
+        # formed in float64 by the caller, so the answer keeps double precision
+        self.single = rtol >= SINGLE_ABOVE
         x = gmres(self.matvec, self.b, pre, rtol)
         q = self.q0 + self.increments(x)
         e_new = self.e_all.copy()

@@ -9,8 +9,11 @@ Conventions as :mod:`contact.bem`: h is the separation of the undeformed surface
 (positive apart), u the combined normal displacement (positive into the bodies), the
 deformed gap h + u - delta >= 0, p >= 0, p (h + u - delta) = 0, and the load sum(p) dA.
 
-Algorithm: Polonsky & Keer (1999, Wear 231:206) constrained conjugate gradients, load
-controlled, with FFT products (no preconditioner: these grids hold only the contact).
+Algorithm: in 3D the package's normal solver (:func:`contact.bem.solve_normal`: the same
+Love influence coefficients, preconditioned conjugate gradients), warm-started from the
+previous pressure; in plane strain, whose kernel it does not hold, Polonsky & Keer
+(1999, Wear 231:206) constrained conjugate gradients, load controlled, with the FFT
+products of this grid's operator.
 """
 
 from __future__ import annotations
@@ -66,6 +69,8 @@ def solve_pressure(
     """
     if not (np.isfinite(load) and load > 0):
         raise ContactInputError("normal load must be a positive number of newtons")
+    if not op.line:
+        return _solve_3d(op, h if extra is None else h + extra, load, start)
     area = op.dx * (1.0 if op.line else op.dy)
     hh = h if extra is None else h + extra
     p = _initial(hh, load, area) if start is None else start * load / (start.sum() * area)
@@ -95,3 +100,14 @@ def solve_pressure(
             return p, float(gap[p > 0].mean())
     raise ConvergenceError(f"normal solve: residual {err:.1e} after {max_iter} iterations",
                            err, max_iter)
+
+
+def _solve_3d(op: HalfSpacePair, h: np.ndarray, load: float,
+              start: np.ndarray | None) -> tuple[np.ndarray, float]:
+    """The 3D pressure by the package's normal solver (:func:`contact.bem.solve_normal`,
+    the same Love influence coefficients), warm-started from ``start``."""
+    from contact.bem import solve_normal
+
+    r = solve_normal(h, op.dx, op.dy, e_star=op.c.e_star, load=load, initial=start,
+                     tol=1e-8, edge="ignore")
+    return np.asarray(r.pressure, dtype=float), float(r.approach)

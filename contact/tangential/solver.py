@@ -20,6 +20,7 @@ have settled.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,6 +30,13 @@ from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kernels import SLIP, STICK, update_states
 from contact.tangential.kinematics import rolling_slip
 from contact.tangential.newton import NewtonSystem
+
+# relative tolerances of the inner (GMRES) solves of an inexact Newton iteration
+# (Dembo, Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400): loose while elements
+# still change state, tighter while only the slip directions settle; the last steps take
+# the caller's ``polish_rtol``
+MOVING_RTOL = 1e-1
+SETTLE_RTOL = 1e-3
 
 
 @dataclass
@@ -95,6 +103,7 @@ def solve_tangential(
     force: float | None = None,
     area: float = 1.0,
     polish_rtol: float = 1e-7,
+    recouple: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, float]] | None = None,
 ) -> TangentialState:
     """Solve the tangential problem for the bound g = mu p (see the module docstring).
 
@@ -125,6 +134,13 @@ def solve_tangential(
     polish_rtol : float
         GMRES tolerance of the last Newton steps, once the sets stand (looser while an
         outer normal-tangential iteration is still moving the pressure).
+    recouple : callable, optional
+        ``q -> (g, u0, change)``: the normal problem solved again with the tractions q
+        (dissimilar bodies), giving the new bound, the new fixed displacement and the
+        relative change of the pressure. Called after every Newton step, so that the
+        pressure converges with the tractions in one loop instead of an outer
+        normal-tangential iteration that converges the tangential problem in full for
+        each pressure; convergence then also needs the pressure to have settled.
 
     Raises
     ------
@@ -149,7 +165,8 @@ def solve_tangential(
     d_shift = diagonal(op, rolling)[0]
     limit = float(g.sum()) * area
     polish = False
-    moving = start is None
+    moving = True
+    change = 0.0
     for it in range(1, max_outer + 1):
         H, S = st.state == STICK, st.state == SLIP
         q0 = np.zeros_like(st.q)
@@ -158,14 +175,19 @@ def solve_tangential(
         s0 = slip_of(op, q0, w, u0, rolling)
         residual = None if force is None else force / area - float(q0[0].sum())
         system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
-        # loose linear solves while the sets move (inexact Newton: 1e-2 while elements
-        # change state, 1e-4 while only the directions settle), tight once they stand
-        step = system.solve(polish_rtol if polish else 1e-2 if moving else 1e-4)
+        step = system.solve(polish_rtol if polish else MOVING_RTOL if moving else SETTLE_RTOL)
         counter[0] += system.matvecs
         q, st.e, rot = step.q, step.e, step.rotation
         w[0] += step.dw
         dw_total += step.dw
+        entered = 0
+        if recouple is not None:
+            g, u0, change = recouple(q)
+            entered, new = _follow_bound(st, q, g)
+            limit = float(g.sum()) * area
         s = slip_of(op, q, w, u0, rolling)
+        if entered:
+            _aim_new(st, q, s, g, new)
         st.q, st.s = q, s
         aim = 4 if ncomp == 1 else 0  # 3D directions come from the Newton step
         changes, de = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0], st.e[1],
@@ -173,15 +195,46 @@ def solve_tangential(
         if changes == 0:
             changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
                                        st.e[1], dxx, dyy, slack, 2 | aim)
+        changes += entered
         de = max(de, rot)
-        moving = changes > 0
+        moving = changes > 0 or change > 1e-3
         was_polished = polish
-        polish = changes == 0 and de <= 1e-3
+        polish = changes == 0 and de <= 1e-3 and change <= 1e-3
         settled = force is None or abs(float(q[0].sum()) * area - force) <= tol * 1e-2 * limit
-        if changes == 0 and de <= tol and settled and was_polished:
+        if changes == 0 and de <= tol and settled and was_polished and change <= tol:
             st.outer, st.matvecs, st.dw = it, counter[0], dw_total
             st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
             return st
     raise ConvergenceError(
         f"tangential solver: the stick/slip areas did not settle in {max_outer} iterations",
         float("nan"), max_outer)
+
+
+def _follow_bound(st: TangentialState, q: np.ndarray,
+                  g: np.ndarray) -> tuple[int, np.ndarray]:
+    """Bring the states and the slip tractions in line with a new bound g (in place):
+    elements that left the contact carry nothing, slip tractions take the new bound.
+    Returns the number of elements that entered or left, and the mask of those that
+    entered (their slip directions come from the slip, :func:`_aim_new`)."""
+    left = (g <= 0) & (st.state > 0)
+    entered = (g > 0) & (st.state == 0)
+    st.state[left] = 0
+    q[:, left] = 0.0
+    st.e[:, left] = 0.0
+    slip = st.state == SLIP
+    q[:, slip] = g[slip] * st.e[:, slip]
+    return int(left.sum() + entered.sum()), entered
+
+
+def _aim_new(st: TangentialState, q: np.ndarray, s: np.ndarray, g: np.ndarray,
+             new: np.ndarray) -> None:
+    """Elements that entered the contact start in slip against their slip: they enter at
+    the rim, where the bound is near zero (in place)."""
+    norm = np.hypot(s[0, new], s[1, new])
+    ok = norm > 0
+    e = np.zeros((2, int(new.sum())))
+    e[0] = np.where(ok, -s[0, new] / np.where(ok, norm, 1.0), 1.0)
+    e[1] = np.where(ok, -s[1, new] / np.where(ok, norm, 1.0), 0.0)
+    st.state[new] = SLIP
+    st.e[:, new] = e
+    q[:, new] = g[new] * e

@@ -119,8 +119,10 @@ class ViscoHalfSpacePair(HalfSpacePair):
             r = np.hypot(xe + ell * lag_x[None, :], yc[:, None])
             self._tails.append((re[:, None] / r) @ lag_w)
 
-    def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None) -> np.ndarray:
-        """(u_x, u_y), shape (2, ny, nx), of the tractions in steady rolling (m)."""
+    def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None,
+                   single: bool = False) -> np.ndarray:
+        """(u_x, u_y), shape (2, ny, nx), of the tractions in steady rolling (m);
+        ``single``: float32 transforms of the elastic part (for loose inner solves)."""
         ext = (self.ny, self.nx + self.m)
         qxe = np.zeros(ext)
         qxe[:, : self.nx] = qx
@@ -128,7 +130,7 @@ class ViscoHalfSpacePair(HalfSpacePair):
         if qy is not None and np.any(qy):
             qye = np.zeros(ext)
             qye[:, : self.nx] = qy
-        w = self._ext.tangential(qxe, qye)
+        w = self._ext.tangential(qxe, qye, single)
         u = w.copy()
         cg = self.creep.glassy
         for dc, th, tail in zip(self.creep.amplitudes, self.creep.times, self._tails):
