@@ -27,7 +27,7 @@ from contact.tangential.kinematics import rolling_slip
 
 PRECONDITIONER = "continuum"
 # inner solves at or above this relative tolerance use float32 FFT products
-SINGLE_ABOVE = 1e-5
+SINGLE_ABOVE = 1e-6
 
 
 def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,

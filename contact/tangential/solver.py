@@ -37,6 +37,8 @@ from contact.tangential.newton import NewtonSystem
 # the caller's ``polish_rtol``
 MOVING_RTOL = 1e-1
 SETTLE_RTOL = 1e-3
+# active-set iterations that may move elements into and out of slip in the same update
+BOTH_MOVES_UNTIL = 10
 
 
 @dataclass
@@ -190,8 +192,12 @@ def solve_tangential(
             _aim_new(st, q, s, g, new)
         st.q, st.s = q, s
         aim = 4 if ncomp == 1 else 0  # 3D directions come from the Newton step
+        # both moves at once at first (half the steps where rim elements trade places);
+        # later moves into slip first, which stops two groups of elements from trading
+        # places for ever
+        moves = 3 if it <= BOTH_MOVES_UNTIL else 1
         changes, de = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0], st.e[1],
-                                    dxx, dyy, slack, 1 | aim)
+                                    dxx, dyy, slack, moves | aim)
         if changes == 0:
             changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
                                        st.e[1], dxx, dyy, slack, 2 | aim)

@@ -20,7 +20,7 @@ from contact.tangential.kinematics import Creepage, rigid_slip
 from contact.tangential.nested import CoarseStart, coarse_grid, prolong
 from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult
-from contact.tangential.solver import TangentialState, solve_tangential
+from contact.tangential.solver import SETTLE_RTOL, TangentialState, solve_tangential
 
 # GMRES tolerance of the last Newton steps: each step's residual is formed afresh, so
 # 1e-5 of the residual left before it ends with slips of order 1e-14 of the creepage
@@ -54,6 +54,7 @@ def steady_rolling(
     tol: float = 1e-6,
     max_coupling: int = 30,
     nested: bool = True,
+    polish_rtol: float = POLISH_RTOL,
 ) -> TangentialResult:
     """Solve steady rolling on ``grid``.
 
@@ -83,6 +84,8 @@ def steady_rolling(
     nested : bool
         Start from the solution of a grid of twice the pitch (:mod:`contact.tangential.
         nested`), recursively; the answer is still the fine grid's.
+    polish_rtol : float
+        GMRES tolerance of the last Newton steps (a coarse start takes a loose one).
     """
     mu = check_friction(mu)
     creep = creepage or Creepage()
@@ -119,7 +122,7 @@ def steady_rolling(
             w = rigid_slip(grid.x, grid.y, Creepage(v, creep.eta, creep.phi))
             st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0],
                                      tol=1e-3 if loose[0] else tol, force=force,
-                                     area=grid.area, polish_rtol=1e-4 if loose[0] else POLISH_RTOL,
+                                     area=grid.area, polish_rtol=1e-4 if loose[0] else polish_rtol,
                                      recouple=pressure_now)
             return st[0]
 
@@ -167,9 +170,10 @@ def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
     coarse = coarse_grid(grid)
     if coarse is None:
         return None
-    # only a start: its own tolerances can be loose
+    # only a start: its own tolerances can be loose (the fine solve converges in full)
     r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
-                       tol=max(tol, 1e-4), max_coupling=max_coupling)
+                       tol=max(tol, 1e-3), max_coupling=max_coupling,
+                       polish_rtol=SETTLE_RTOL)
     return prolong(r.p, r.q, r.state, r.creepage.xi)
 
 
