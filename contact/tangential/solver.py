@@ -36,7 +36,7 @@ from contact.tangential.newton import NewtonSystem
 # still change state, tighter while only the slip directions settle; the last steps take
 # the caller's ``polish_rtol``
 MOVING_RTOL = 1e-1
-SETTLE_RTOL = 1e-3
+SETTLE_RTOL = 1e-2
 # active-set iterations that may move elements into and out of slip in the same update
 BOTH_MOVES_UNTIL = 10
 
