@@ -22,10 +22,11 @@ from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult
 from contact.tangential.solver import SETTLE_RTOL, TangentialState, solve_tangential
 
-# GMRES tolerance of the last Newton steps: each step's residual is formed afresh, so
-# 1e-4 of the small residual left before it ends with stick-zone slips below 1e-12 of
-# the creepage (measured on the benchmark ball at 128^2 and 256^2)
-POLISH_RTOL = 1e-4
+# GMRES tolerance of the last Newton steps: each step's residual is formed afresh in
+# float64 and the last steps start from a residual that is already small, so 1e-2 of it
+# ends with stick-zone slips below 1e-9 of the creepage (measured on the benchmark ball
+# at 64^2, 128^2 and 256^2: 5e-10, 3e-12, 4e-11)
+POLISH_RTOL = 1e-2
 
 
 def check_friction(mu: float) -> float:
