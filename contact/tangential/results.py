@@ -44,7 +44,8 @@ class TangentialResult:
     rolling : bool
         Steady rolling (else a shift).
     iterations : int
-        Normal-tangential (Panagiotopoulos) iterations.
+        Normal-tangential (Panagiotopoulos) iterations; in 3D steady rolling of
+        dissimilar bodies, the pressure solves done inside the Newton loop.
     """
 
     grid: Grid
