@@ -209,6 +209,67 @@ def run_ours(n: int, creepages: list[float]) -> dict:
     return res
 
 
+def _value(v, unit: str, source: str, digits: int | None = None) -> dict:
+    out = {"value": v, "unit": unit, "from": source}
+    if digits is not None:
+        out["significant_digits"] = digits
+    return out
+
+
+def reference(exe: str, sizes: list[int], creepages: list[float], folder: Path) -> None:
+    """Run the decks into ``folder`` and write ``contact_reference.json`` (SI, CONTACT only).
+
+    Kept: the decks (``.inp``) and CONTACT's printed outputs (``.out``); the element
+    tables (``.mat``) are read for Fx and pmax (6 significant digits per element) and
+    deleted. Creepage and approach come from the ``.out`` (4 significant digits).
+    """
+    steel, al, _, a = pair()
+    folder.mkdir(parents=True, exist_ok=True)
+    cases = [Case("free")] + [Case("creep", x) for x in creepages]
+    grids = []
+    for n in sizes:
+        entry: dict = {"n": n, "dx": _value(2.0 * HALF * a / n, "m", "deck"), "cases": {}}
+        for case in cases:
+            r = run_contact(exe, n, case, folder)
+            mat = folder / f"ball_n{n}_{case.name}.0001.mat"
+            mat.unlink()
+            entry["cases"][case.name] = {
+                "deck": f"ball_n{n}_{case.name}.inp",
+                "creepage": _value(r.get("creepage", case.creepage), "1",
+                                   ".out CREEP X" if case.kind == "free" else "prescribed",
+                                   4 if case.kind == "free" else None),
+                "fx": _value(0.0 if case.kind == "free" else r["fx_mat"], "N",
+                             "prescribed" if case.kind == "free" else ".mat sum(PX) dx dy", 6),
+                "pmax": _value(r["pmax_mat"], "Pa", ".mat max(PN)", 6),
+                "approach": _value(r["approach"], "m", ".out APPROACH", 4),
+                "n_contact": _value(r["n_contact"], "elements", ".out NCON"),
+                "n_adhesion": _value(r["n_adhesion"], "elements", ".out NADH"),
+                "n_slip": _value(r["n_slip"], "elements", ".out NSLIP"),
+            }
+        grids.append(entry)
+    banner = next(s for s in (folder / f"ball_n{sizes[0]}_free.out").read_text().splitlines()
+                  if "Version" in s)
+    doc = {
+        "source": "CONTACT by E. A. H. Vollebregt and J. J. Kalker (Apache-2.0, "
+                  "github eve70a/CONTACT), " + banner.strip(" |").strip(),
+        "produced_by": "benchmarks/contact_beside.py --reference (see README.md here)",
+        "case": {
+            "radius": _value(RADIUS, "m", "deck"), "load": _value(LOAD, "N", "deck"),
+            "mu": _value(MU, "1", "deck"),
+            "body1": {"name": steel.name, "G": _value(steel.E / (2 * (1 + steel.nu)), "Pa",
+                                                      "deck"), "nu": _value(steel.nu, "1", "deck")},
+            "body2": {"name": al.name, "G": _value(al.E / (2 * (1 + al.nu)), "Pa", "deck"),
+                      "nu": _value(al.nu, "1", "deck")},
+            "half_width": _value(HALF * a, "m", "deck"),
+            "grid": "n x n element centres over [-half_width, half_width]^2, "
+                    "h = (x^2 + y^2)/(2 radius)",
+            "rolling": "steady state, CHI = 0 (+x), DQ = dx, eta = phi = 0",
+        },
+        "grids": grids,
+    }
+    (folder / "contact_reference.json").write_text(json.dumps(doc, indent=1) + "\n")
+
+
 def _warm() -> None:
     # compiled kernels load from the numba cache on first use: not the solvers' time
     from contact.bem import solve_normal
@@ -221,7 +282,8 @@ def _warm() -> None:
 
 
 def _fmt(v, spec: str) -> str:
-    return "-" if v is None else format(v, spec)
+    width = int(spec.split(".")[0].rstrip("dfe") or 0)
+    return "-".rjust(width) if v is None else format(v, spec)
 
 
 def table(rows: list[dict]) -> None:
@@ -239,7 +301,7 @@ def table(rows: list[dict]) -> None:
               f"{_fmt(cf.get('creepage'), '11.4e')}{sf['creepage']:11.4e}"
               f"{_fmt(c.get(key, {}).get('fx_mat'), '11.5f')}"
               f"{_fmt(s.get(key, {}).get('fx'), '11.5f')}"
-              f"{_fmt(cf.get('pmax_mat', 0) / MPA if cf else None, '11.3f')}"
+              f"{_fmt(cf['pmax_mat'] / MPA if 'pmax_mat' in cf else None, '11.3f')}"
               f"{sf['pmax'] / MPA:11.3f}{_fmt(cf.get('n_slip'), '7d')}{sf['n_slip']:7d}")
 
 
@@ -251,6 +313,8 @@ def main() -> None:
     ap.add_argument("--keep", type=Path, help="folder for the CONTACT decks and outputs")
     ap.add_argument("--json", type=Path, help="write every number (SI) to this file")
     ap.add_argument("--no-ours", action="store_true", help="CONTACT only")
+    ap.add_argument("--reference", type=Path,
+                    help="write the decks, outputs and contact_reference.json here and stop")
     ap.add_argument("--solver", choices=("default", "gdsteady"), default="default",
                     help="CONTACT's steady-rolling solver: SteadyGS (default) or GDsteady")
     args = ap.parse_args()
@@ -261,6 +325,9 @@ def main() -> None:
         print("CONTACT_EXE is not set: build CONTACT with ../shared/tools/contact_oracle/"
               "build.sh CONTACT_GIT_DIR OUT_DIR and point CONTACT_EXE at the executable")
         sys.exit(0)
+    if args.reference:
+        reference(exe, sizes, creepages, args.reference)
+        return
     cases = [Case("normal"), Case("free")] + [Case("creep", x) for x in creepages]
     if not args.no_ours:
         _warm()
