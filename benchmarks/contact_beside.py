@@ -210,6 +210,8 @@ def run_ours(n: int, creepages: list[float]) -> dict:
 
 
 def _value(v, unit: str, source: str, digits: int | None = None) -> dict:
+    if digits is not None and source.startswith(".out"):
+        v = float(f"{v:.{digits}g}")  # as printed, without the mm -> m rounding noise
     out = {"value": v, "unit": unit, "from": source}
     if digits is not None:
         out["significant_digits"] = digits
