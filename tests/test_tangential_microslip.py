@@ -32,6 +32,28 @@ def test_identical_bodies_do_not_dissipate_in_free_rolling():
     assert r.n_slip == 0
 
 
+def test_edge_share_flags_a_slip_zone_the_grid_does_not_resolve():
+    """Free rolling of the smooth steel-aluminium pair slips only in a band one element
+    wide at the rim, where mu p -> 0: the dissipation then depends on the grid (it falls
+    about threefold per halving of the element) and the result says so. A braking
+    traction T/N = 0.1 opens a slip zone many elements deep: the share of the edge is
+    small, no note is given and the dissipation changes little with the grid."""
+    free = [microslip_dissipation(0.02, material("steel"), material("aluminium"), 4.67, 0.3,
+                                  grid=n) for n in (32, 64)]
+    assert all(r.edge_dissipation_share > 0.9 for r in free)
+    assert free[0].frictional_power > 2.0 * free[1].frictional_power
+    s = microslip_sweep(0.02, material("steel"), material("aluminium"), [4.0, 4.67, 5.3],
+                        0.3, grid=32)
+    assert any("not resolved by this grid" in n for n in s.notes)
+    braked = [microslip_dissipation(0.02, material("steel"), material("aluminium"), 4.67,
+                                    0.3, traction_ratio=0.1, grid=n) for n in (64, 96)]
+    assert all(r.edge_dissipation_share < 0.3 for r in braked)
+    assert braked[1].frictional_power == pytest.approx(braked[0].frictional_power, rel=0.1)
+    s = microslip_sweep(0.02, material("steel"), material("aluminium"), [4.0, 4.67, 5.3],
+                        0.3, traction_ratio=0.1, grid=64)
+    assert not any("not resolved" in n for n in s.notes)
+
+
 def test_traction_above_friction_is_refused():
     with pytest.raises(ContactInputError, match="traction ratio"):
         microslip_dissipation(0.02, material("steel"), material("aluminium"), 5.0, 0.3,

@@ -33,6 +33,7 @@ from contact.rolling import RollingSweep
 from contact.tangential.grid import sample_roughness, sphere_grid
 from contact.tangential.influence import pair_constants
 from contact.tangential.kinematics import Creepage
+from contact.tangential.results import edge_note
 from contact.tangential.steady import check_friction, steady_rolling
 
 
@@ -105,6 +106,7 @@ def microslip_sweep(
     forces = np.zeros(w.size)
     creep = np.zeros(w.size)
     slip_fraction = np.zeros(w.size)
+    edge = np.zeros(w.size)
     results = []
     half = None
     if roughness is not None:
@@ -120,6 +122,7 @@ def microslip_sweep(
         forces[k] = max(r.frictional_power, 0.0)
         creep[k] = r.creepage.xi
         slip_fraction[k] = r.slip_area / max(r.contact_area, 1e-300)
+        edge[k] = r.edge_dissipation_share
         results.append(r)
     c = pair_constants(ball, plate)
     settings = {"model": "microslip", "e_star": c.e_star, "grid": grid,
@@ -127,15 +130,18 @@ def microslip_sweep(
                 "microslip": {"mu": mu, "traction_ratio": traction_ratio,
                               "kalker_K": c.K, "dundurs_beta": c.beta,
                               "creepages": creep.tolist(),
-                              "slip_fractions": slip_fraction.tolist()}}
-    return _sweep(w, forces, radius, settings, results, confidence)
+                              "slip_fractions": slip_fraction.tolist(),
+                              "edge_dissipation_shares": edge.tolist()}}
+    note = edge_note(float(edge.max()))
+    return _sweep(w, forces, radius, settings, results, confidence,
+                  () if note is None else (f"at {w[int(edge.argmax())]:.4g} N: {note}",))
 
 
 def _sweep(loads: np.ndarray, forces: np.ndarray, radius: float, settings: dict,
-           results: Sequence[Any], confidence: float) -> RollingSweep:
+           results: Sequence[Any], confidence: float, notes: Sequence[str] = ()) -> RollingSweep:
     moments = forces * radius
     pos = moments > 0
-    notes = []
+    notes = list(notes)
     fit = fit_exponent(loads[pos], moments[pos], confidence) if pos.sum() >= 3 else None
     if fit is None:
         notes.append(f"only {int(pos.sum())} of {loads.size} loads dissipate: no exponent "

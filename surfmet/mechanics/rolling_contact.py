@@ -131,6 +131,7 @@ def solve_rolling_contact(
 
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
     """The JSON record of a solve: every value with its unit."""
+    from contact.tangential.results import edge_note
     from surfmet.units import quantity
 
     r = rc.result
@@ -153,11 +154,15 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "stick_area": quantity(r.stick_area, area),
         "slip_area": quantity(r.slip_area, area),
         "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
+        "edge_dissipation_share": quantity(r.edge_dissipation_share, "1"),
         "rolling_resistance_coefficient": quantity(
             r.rolling_resistance_coefficient(rc.radius), "1"),
         "kalker_K": r.constants.K,
         "dundurs_beta": r.constants.beta,
     }
+    note = edge_note(r.edge_dissipation_share)
+    if note is not None:
+        rec["notes"] = [note]
     if rc.line:
         rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
                                 "2D displacement and is given for the grid's own datum")
