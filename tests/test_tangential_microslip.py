@@ -41,7 +41,7 @@ def test_edge_share_flags_a_slip_zone_the_grid_does_not_resolve():
     free = [microslip_dissipation(0.02, material("steel"), material("aluminium"), 4.67, 0.3,
                                   grid=n) for n in (32, 64)]
     assert all(r.edge_dissipation_share > 0.9 for r in free)
-    assert free[0].frictional_power > 2.0 * free[1].frictional_power
+    assert 2.0 < free[0].frictional_power / free[1].frictional_power < 4.0
     s = microslip_sweep(0.02, material("steel"), material("aluminium"), [4.0, 4.67, 5.3],
                         0.3, grid=32)
     assert any("not resolved by this grid" in n for n in s.notes)
