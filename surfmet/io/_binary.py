@@ -16,6 +16,9 @@ from surfmet.errors import SurfmetFormatError
 
 # Largest grid any reader accepts: 2**31 points is 16 GiB of float64, beyond any instrument.
 MAX_POINTS = 2**31
+# Deflate (zlib, zip) cannot expand data by more than about 1032:1: a stream or member
+# claiming more is lying.
+MAX_DEFLATE_RATIO = 1100
 
 
 def format_error(name: str, fmt: str, problem: str) -> SurfmetFormatError:
