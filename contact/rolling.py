@@ -69,7 +69,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
-from contact.exponent import ExponentFit, fit_exponent, local_exponent
+from contact.exponent import ExponentFit, dissipating_exponents
 from contact.setups.composite import CompositeRoughness
 
 KINEMATICS = ("rolling", "frozen")
@@ -274,18 +274,13 @@ def _finish(model: str, loads: np.ndarray, forces: np.ndarray, radius: float,
             confidence: float) -> RollingSweep:
     moments = forces * radius
     pos = moments > 0
-    fit = None
-    if pos.sum() >= 3:
-        fit = fit_exponent(loads[pos], moments[pos], confidence)
-    else:
+    fit, local = dissipating_exponents(loads, moments, confidence)
+    if fit is None:
         notes.append(f"only {int(pos.sum())} of {loads.size} loads dissipate: no exponent "
                      "fitted (3 needed)")
     if (~pos).any() and pos.any():
         notes.append(f"no dissipation at {int((~pos).sum())} load(s) "
                      f"({', '.join(f'{w:.4g}' for w in loads[~pos])}); fitted over the rest")
-    local = np.full(loads.size, math.nan)
-    if pos.sum() >= 2:
-        local[pos] = local_exponent(loads[pos], moments[pos])
     return RollingSweep(model=model, loads=loads, forces=forces, moments=moments, fit=fit,
                         local_lambda=local, radius=float(radius), settings=settings,
                         notes=tuple(notes), results=tuple(results))
