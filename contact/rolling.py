@@ -286,7 +286,8 @@ def _finish(model: str, loads: np.ndarray, forces: np.ndarray, radius: float,
                         notes=tuple(notes), results=tuple(results))
 
 
-def _loads(loads: Iterable[float]) -> np.ndarray:
+def sweep_loads(loads: Iterable[float]) -> np.ndarray:
+    """The loads of a sweep (N), sorted; at least one, each positive and finite."""
     arr = np.asarray(list(loads), dtype=float)
     if arr.ndim != 1 or arr.size < 1:
         raise ContactInputError("give at least one load")
@@ -360,7 +361,7 @@ def sphere_sweep(
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
     _check_fraction(share, "the displacement share")
-    w = _loads(loads)
+    w = sweep_loads(loads)
     problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness, grid=grid,
                             size=size, max_grid=max_grid, results=w.size + 1)
     rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
@@ -417,7 +418,7 @@ def cylinder_sweep(
     from contact.setups.line import solve_cylinder
 
     positive(alpha_h, "alpha_h")
-    w = _loads(loads_per_length)
+    w = sweep_loads(loads_per_length)
     side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
     forces = np.zeros(w.size)
     results = []

@@ -78,9 +78,9 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
     -------
     contact.rolling.RollingSweep
     """
-    w = np.sort(np.asarray(list(loads), dtype=float))
-    if w.size < 1 or not (np.isfinite(w).all() and (w > 0).all()):
-        raise ContactInputError("loads must be positive and finite (N)")
+    from contact.rolling import sweep_loads
+
+    w = sweep_loads(loads)
     creep = pair_creep(ball, plate)
     half = 1.6 * (3.0 * w[-1] * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
     z = None
