@@ -36,13 +36,12 @@ import time
 from pathlib import Path
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from rotor_calibration import FPS_CELLS, STEP_CELLS, simulate  # noqa: E402
+from rotor_calibration import clean_columns, mark_frames  # noqa: E402
 
 from contact.errors import ContactInputError  # noqa: E402
 from contact.rotor.adequacy import check_adequacy  # noqa: E402
@@ -92,22 +91,16 @@ DOC = ROOT / "docs" / "rotor_adequacy.md"
 def clean_phase(seed: int) -> dict:
     rng = np.random.default_rng(seed)
     stats, skipped, t0 = [], 0, time.perf_counter()
-    for fps in FPS_CELLS:
-        for sd in STEP_CELLS:
-            for _ in range(PER_CELL):
-                n = int(rng.integers(10, 61))
-                eps0 = float(rng.uniform(0.5, 5.0))
-                f, _bad = simulate(rng, fps=fps, step_deg=sd, n=n, eps0=eps0,
-                                   n_misread=int(rng.integers(0, 3)))
-                try:
-                    rep = analyse_test("c", f, fps=fps, step=math.radians(sd), extend=False)
-                except (ContactInputError, TypeError):
-                    skipped += 1  # frames repeat (too slow a camera for the step) or stall
-                    continue
-                a = check_adequacy(rep.times, rep.angles, rep.fit, step=math.radians(sd))
-                stats.append({"fps": fps, "step_deg": sd, "n": n, "statistic": a.statistic})
-                print(f"clean {len(stats)}: {fps:g} fps {sd:g} deg n={n} "
-                      f"T={a.statistic:.2f}", file=sys.stderr)
+    for fps, sd, n, _eps0, f, _bad in clean_columns(rng, PER_CELL):
+        try:
+            rep = analyse_test("c", f, fps=fps, step=math.radians(sd), extend=False)
+        except (ContactInputError, TypeError):
+            skipped += 1  # frames repeat (too slow a camera for the step) or stall
+            continue
+        a = check_adequacy(rep.times, rep.angles, rep.fit, step=math.radians(sd))
+        stats.append({"fps": fps, "step_deg": sd, "n": n, "statistic": a.statistic})
+        print(f"clean {len(stats)}: {fps:g} fps {sd:g} deg n={n} "
+              f"T={a.statistic:.2f}", file=sys.stderr)
     values = sorted(s["statistic"] for s in stats)
     cal = {"statistic_clean": values, "n": len(values), "seed": seed, "skipped": skipped,
            "seconds": time.perf_counter() - t0,
@@ -130,20 +123,7 @@ def wave_column(rng, *, fps, step_deg, n, eps0, amp, period_rev, n_misread=0):
     def rhs(_t, y):
         return [y[1], eps0 + amp * math.sin(k * (y[0] - phi0) + chi)]
 
-    events = []
-    for m in marks:
-        def ev(_t, y, m=m):
-            return y[0] - m
-        ev.direction = 1.0
-        events.append(ev)
-    t_end = 4.0 * math.sqrt(2.0 * (marks[-1] + step) / (eps0 * 0.2)) + 1.0
-    sol = solve_ivp(rhs, (0.0, t_end), [phi0, 0.0], events=events, rtol=1e-10, atol=1e-12,
-                    max_step=t_end / 200)
-    t = np.array([e[0] if e.size else np.nan for e in sol.t_events])
-    if not np.all(np.isfinite(t)):
-        return None
-    t = t + float(rng.uniform(0.0, 1.0)) / fps
-    return np.floor(t * fps)
+    return mark_frames(rng, rhs, phi0, marks, step, eps0, fps)
 
 
 def power_phase(seed: int) -> list[dict]:

@@ -52,18 +52,10 @@ SIZES = (0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4)
 THRESHOLDS = (0.0, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0)
 
 
-def simulate(rng, *, fps, step_deg, n, eps0, eta=0.0, gamma=0.0, amp=0.0, psi=0.0,
-             n_misread=0):
-    """Frame indices of one column (see the module docstring), and the misread rows."""
-    step = math.radians(step_deg)
-    x = float(rng.uniform(0.0, 1.0))
-    phi0 = -x * step
-    marks = np.arange(n) * step
-
-    def rhs(_t, y):
-        phi, w = y
-        return [w, eps0 - eta * (phi - phi0) - gamma * w + amp * math.sin(phi + psi)]
-
+def mark_frames(rng, rhs, phi0, marks, step, eps0, fps):
+    """Frame indices at which a rotor released at rest at ``phi0`` (``rhs``: its equation of
+    motion for ``solve_ivp``) passes ``marks``, the release time uniform within a frame;
+    None when it stalls before the last mark."""
     events = []
     for m in marks:
         def ev(_t, y, m=m):
@@ -76,9 +68,26 @@ def simulate(rng, *, fps, step_deg, n, eps0, eta=0.0, gamma=0.0, amp=0.0, psi=0.
                     atol=1e-12, max_step=t_end / 200)
     t = np.array([e[0] if e.size else np.nan for e in sol.t_events])
     if not np.all(np.isfinite(t)):
-        return None, ()
+        return None
     t = t + float(rng.uniform(0.0, 1.0)) / fps
-    f = np.floor(t * fps)
+    return np.floor(t * fps)
+
+
+def simulate(rng, *, fps, step_deg, n, eps0, eta=0.0, gamma=0.0, amp=0.0, psi=0.0,
+             n_misread=0):
+    """Frame indices of one column (see the module docstring), and the misread rows."""
+    step = math.radians(step_deg)
+    x = float(rng.uniform(0.0, 1.0))
+    phi0 = -x * step
+    marks = np.arange(n) * step
+
+    def rhs(_t, y):
+        phi, w = y
+        return [w, eps0 - eta * (phi - phi0) - gamma * w + amp * math.sin(phi + psi)]
+
+    f = mark_frames(rng, rhs, phi0, marks, step, eps0, fps)
+    if f is None:
+        return None, ()
     bad = []
     if n_misread:
         rows = rng.choice(np.arange(2, n), size=n_misread, replace=False)
@@ -95,13 +104,10 @@ def simulate(rng, *, fps, step_deg, n, eps0, eta=0.0, gamma=0.0, amp=0.0, psi=0.
     return f, tuple(r + 1 for r in bad)
 
 
-def evidence(rep) -> float:
-    """BIC of the best no-effect model minus that of the best effect model."""
-    return float(rep.effect_evidence)
-
-
-def clean_sweep(rng, per_cell, progress):
-    rows = []
+def clean_columns(rng, per_cell):
+    """The clean columns of the sweep: ``per_cell`` per cell fps x step, with 10-60 rows,
+    eps0 0.5-5 rad/s² and 0-2 misread rows drawn in each; yields (fps, step_deg, n, eps0,
+    frames, misread rows)."""
     for fps in FPS_CELLS:
         for sd in STEP_CELLS:
             for _ in range(per_cell):
@@ -109,14 +115,25 @@ def clean_sweep(rng, per_cell, progress):
                 eps0 = float(rng.uniform(0.5, 5.0))
                 f, bad = simulate(rng, fps=fps, step_deg=sd, n=n, eps0=eps0,
                                   n_misread=int(rng.integers(0, 3)))
-                rep = analyse_test("c1", f, fps=fps, step=math.radians(sd))
-                rows.append({"fps": fps, "step_deg": sd, "n": n, "eps0": eps0,
-                             "effect": rep.effect, "selected": rep.selected,
-                             "false_flags": len(set(rep.outliers) - set(bad)),
-                             "missed": len(set(bad) - set(rep.outliers)),
-                             "n_misread": len(bad), "eps0_fit": rep.eps0,
-                             "eps0_se": rep.eps0_stderr, "evidence": evidence(rep)})
-                progress()
+                yield fps, sd, n, eps0, f, bad
+
+
+def evidence(rep) -> float:
+    """BIC of the best no-effect model minus that of the best effect model."""
+    return float(rep.effect_evidence)
+
+
+def clean_sweep(rng, per_cell, progress):
+    rows = []
+    for fps, sd, n, eps0, f, bad in clean_columns(rng, per_cell):
+        rep = analyse_test("c1", f, fps=fps, step=math.radians(sd))
+        rows.append({"fps": fps, "step_deg": sd, "n": n, "eps0": eps0,
+                     "effect": rep.effect, "selected": rep.selected,
+                     "false_flags": len(set(rep.outliers) - set(bad)),
+                     "missed": len(set(bad) - set(rep.outliers)),
+                     "n_misread": len(bad), "eps0_fit": rep.eps0,
+                     "eps0_se": rep.eps0_stderr, "evidence": evidence(rep)})
+        progress()
     return rows
 
 

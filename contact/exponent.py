@@ -95,3 +95,18 @@ def local_exponent(loads: Sequence[float], moments: Sequence[float]) -> np.ndarr
         s = (math.log(m_[1]) - math.log(m_[0])) / (math.log(n_[1]) - math.log(n_[0]))
         return np.array([s, s])
     return np.gradient(np.log(m_), np.log(n_))
+
+
+def dissipating_exponents(loads: Sequence[float], moments: Sequence[float],
+                          confidence: float = 0.95) -> tuple[ExponentFit | None, np.ndarray]:
+    """The exponent fitted over the loads whose moment is positive (None with fewer than 3
+    of them) and the local exponent at those loads (NaN elsewhere; all NaN with fewer
+    than 2)."""
+    n_ = np.asarray(loads, dtype=float)
+    m_ = np.asarray(moments, dtype=float)
+    pos = m_ > 0
+    fit = fit_exponent(n_[pos], m_[pos], confidence) if pos.sum() >= 3 else None
+    local = np.full(n_.size, math.nan)
+    if pos.sum() >= 2:
+        local[pos] = local_exponent(n_[pos], m_[pos])
+    return fit, local

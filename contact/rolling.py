@@ -69,7 +69,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
-from contact.exponent import ExponentFit, fit_exponent, local_exponent
+from contact.exponent import ExponentFit, dissipating_exponents
 from contact.setups.composite import CompositeRoughness
 
 KINEMATICS = ("rolling", "frozen")
@@ -274,24 +274,20 @@ def _finish(model: str, loads: np.ndarray, forces: np.ndarray, radius: float,
             confidence: float) -> RollingSweep:
     moments = forces * radius
     pos = moments > 0
-    fit = None
-    if pos.sum() >= 3:
-        fit = fit_exponent(loads[pos], moments[pos], confidence)
-    else:
+    fit, local = dissipating_exponents(loads, moments, confidence)
+    if fit is None:
         notes.append(f"only {int(pos.sum())} of {loads.size} loads dissipate: no exponent "
                      "fitted (3 needed)")
     if (~pos).any() and pos.any():
         notes.append(f"no dissipation at {int((~pos).sum())} load(s) "
                      f"({', '.join(f'{w:.4g}' for w in loads[~pos])}); fitted over the rest")
-    local = np.full(loads.size, math.nan)
-    if pos.sum() >= 2:
-        local[pos] = local_exponent(loads[pos], moments[pos])
     return RollingSweep(model=model, loads=loads, forces=forces, moments=moments, fit=fit,
                         local_lambda=local, radius=float(radius), settings=settings,
                         notes=tuple(notes), results=tuple(results))
 
 
-def _loads(loads: Iterable[float]) -> np.ndarray:
+def sweep_loads(loads: Iterable[float]) -> np.ndarray:
+    """The loads of a sweep (N), sorted; at least one, each positive and finite."""
     arr = np.asarray(list(loads), dtype=float)
     if arr.ndim != 1 or arr.size < 1:
         raise ContactInputError("give at least one load")
@@ -365,7 +361,7 @@ def sphere_sweep(
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
     _check_fraction(share, "the displacement share")
-    w = _loads(loads)
+    w = sweep_loads(loads)
     problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness, grid=grid,
                             size=size, max_grid=max_grid, results=w.size + 1)
     rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
@@ -422,7 +418,7 @@ def cylinder_sweep(
     from contact.setups.line import solve_cylinder
 
     positive(alpha_h, "alpha_h")
-    w = _loads(loads_per_length)
+    w = sweep_loads(loads_per_length)
     side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
     forces = np.zeros(w.size)
     results = []

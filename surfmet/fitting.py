@@ -173,6 +173,20 @@ def _check_loss(loss: str) -> str:
     return loss
 
 
+def _normalised(x: np.ndarray, y: np.ndarray, z: np.ndarray
+                ) -> tuple[np.ndarray, float, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """The points centred on their mean and divided by their largest span: (origin, scale,
+    (px, py, pz)).
+
+    Fits work on these so that the unknowns are O(1): metres of a 20 mm ball with
+    nanometre residuals would otherwise strain the solver's tolerances.
+    """
+    origin = np.array([x.mean(), y.mean(), z.mean()])
+    scale = float(max(np.ptp(x), np.ptp(y), np.ptp(z), 1e-300))
+    return origin, scale, ((x - origin[0]) / scale, (y - origin[1]) / scale,
+                           (z - origin[2]) / scale)
+
+
 def _covariance(jac: np.ndarray, res: np.ndarray, n_par: int) -> np.ndarray:
     dof = max(res.size - n_par, 1)
     s2 = float(res @ res) / dof
@@ -223,11 +237,7 @@ def fit_sphere_points(
     x, y, z = (np.asarray(v, dtype=np.float64) for v in (x, y, z))
     if x.size < 5:
         raise SurfmetInputError(f"a sphere fit needs at least 5 valid points, got {x.size}")
-    # Centre and scale so that the unknowns are O(1): metres of a 20 mm ball with
-    # nanometre residuals would otherwise strain the solver's tolerances.
-    origin = np.array([x.mean(), y.mean(), z.mean()])
-    scale = float(max(np.ptp(x), np.ptp(y), np.ptp(z), 1e-300))
-    px, py, pz = (x - origin[0]) / scale, (y - origin[1]) / scale, (z - origin[2]) / scale
+    origin, scale, (px, py, pz) = _normalised(x, y, z)
     c0, r0 = algebraic_sphere(px, py, pz)
 
     def resid(p: np.ndarray) -> np.ndarray:
@@ -365,9 +375,7 @@ def fit_cylinder(
     valid, x, y, z = _valid_points(topo, mask)
     if x.size < 6:
         raise SurfmetInputError(f"a cylinder fit needs at least 6 valid points, got {x.size}")
-    origin = np.array([x.mean(), y.mean(), z.mean()])
-    scale = float(max(np.ptp(x), np.ptp(y), np.ptp(z), 1e-300))
-    px, py, pz = (x - origin[0]) / scale, (y - origin[1]) / scale, (z - origin[2]) / scale
+    origin, scale, (px, py, pz) = _normalised(x, y, z)
 
     # Quadratic start: z ≈ c0 + c1 x + c2 y + c3 x² + c4 xy + c5 y².
     a = np.column_stack([np.ones_like(px), px, py, px * px, px * py, py * py])

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from contact.viscoelastic.surface import love_kernel
+from contact.halfspace.influence import love_coefficients as love_kernel
 
 
 def dense_influence(n: int, dx: float, glassy: float, amplitudes, times, speed: float):

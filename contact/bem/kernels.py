@@ -69,9 +69,9 @@ def pk_residual(p, u, h, gbar, hmax, d):  # pragma: no cover - compiled
 
 
 @nb.njit(cache=True)
-def pk_direction(d, p, t, beta, hmax, direction_fft, nx):  # pragma: no cover - compiled
-    """t = d + beta t on F, 0 elsewhere; copy t to ``direction_fft`` (the precision of the FFT,
-    float32 or float64); return the rows [lo, hi) of F."""
+def _free_rows(src, t, beta, p, hmax, out, nx):  # pragma: no cover - compiled
+    """out = src + beta t on F, 0 elsewhere (with ``t`` None: out = src on F), and t = out
+    when given; return the rows [lo, hi) of F. ``out`` may be float32."""
     ny = p.size // nx
     lo = ny
     hi = 0
@@ -82,13 +82,17 @@ def pk_direction(d, p, t, beta, hmax, direction_fft, nx):  # pragma: no cover - 
             i = base + c
             pi = p[i]
             if pi > 0.0 and pi < hmax:
-                ti = d[i] + beta * t[i]
-                t[i] = ti
-                direction_fft[i] = ti
+                if t is None:
+                    vi = src[i]
+                else:
+                    vi = src[i] + beta * t[i]
+                    t[i] = vi
+                out[i] = vi
                 row_has = True
             else:
-                t[i] = 0.0
-                direction_fft[i] = 0.0
+                if t is not None:
+                    t[i] = 0.0
+                out[i] = 0.0
         if row_has:
             if r < lo:
                 lo = r
@@ -99,20 +103,32 @@ def pk_direction(d, p, t, beta, hmax, direction_fft, nx):  # pragma: no cover - 
 
 
 @nb.njit(cache=True)
+def _free_mean(x, p, hmax):  # pragma: no cover - compiled
+    """The mean of x over F (0 when F is empty)."""
+    s = 0.0
+    n = 0
+    for i in range(p.size):
+        pi = p[i]
+        if pi > 0.0 and pi < hmax:
+            s += x[i]
+            n += 1
+    return s / n if n > 0 else 0.0
+
+
+@nb.njit(cache=True)
+def pk_direction(d, p, t, beta, hmax, direction_fft, nx):  # pragma: no cover - compiled
+    """t = d + beta t on F, 0 elsewhere; copy t to ``direction_fft`` (the precision of the FFT,
+    float32 or float64); return the rows [lo, hi) of F."""
+    return _free_rows(d, t, beta, p, hmax, direction_fft, nx)
+
+
+@nb.njit(cache=True)
 def pk_step_length(r, t, d, p, hmax, subtract_mean):  # pragma: no cover - compiled
     """The CG step tau = sum_F d t / sum_F (r - rbar) t, with rbar the mean of r on F.
 
     Returns (tau, rbar). In approach control the mean is not subtracted (rbar = 0).
     """
-    rs = 0.0
-    n = 0
-    if subtract_mean:
-        for i in range(p.size):
-            pi = p[i]
-            if pi > 0.0 and pi < hmax:
-                rs += r[i]
-                n += 1
-    rbar = rs / n if n > 0 else 0.0
+    rbar = _free_mean(r, p, hmax) if subtract_mean else 0.0
     num = 0.0
     den = 0.0
     for i in range(p.size):
@@ -314,27 +330,7 @@ def scatter(buf, index, value, nc, value_mode):  # pragma: no cover - compiled
 @nb.njit(cache=True)
 def masked_copy(d, p, hmax, out, nx):  # pragma: no cover - compiled
     """out = d on F, 0 elsewhere (out may be float32); return the rows [lo, hi) of F."""
-    ny = p.size // nx
-    lo = ny
-    hi = 0
-    for r in range(ny):
-        row_has = False
-        base = r * nx
-        for c in range(nx):
-            i = base + c
-            pi = p[i]
-            if pi > 0.0 and pi < hmax:
-                out[i] = d[i]
-                row_has = True
-            else:
-                out[i] = 0.0
-        if row_has:
-            if r < lo:
-                lo = r
-            hi = r + 1
-    if hi == 0:
-        lo = 0
-    return lo, hi
+    return _free_rows(d, None, 0.0, p, hmax, out, nx)
 
 
 @nb.njit(cache=True)
@@ -344,15 +340,7 @@ def center_on_free(zin, z, d, p, hmax, subtract_mean):  # pragma: no cover - com
     The preconditioned residual must stay in the space of load-neutral pressure changes,
     hence the mean removal in load control.
     """
-    s = 0.0
-    n = 0
-    if subtract_mean:
-        for i in range(p.size):
-            pi = p[i]
-            if pi > 0.0 and pi < hmax:
-                s += zin[i]
-                n += 1
-    zbar = s / n if n > 0 else 0.0
+    zbar = _free_mean(zin, p, hmax) if subtract_mean else 0.0
     rho = 0.0
     for i in range(p.size):
         pi = p[i]

@@ -31,7 +31,7 @@ from contact.rotor.extension import extend_family
 from contact.rotor.family import MODELS, ModelFit
 from contact.rotor.fitting import fit_all_models, loo_exact
 from contact.rotor.forward import model_speeds
-from contact.rotor.misreads import find_misread_rows
+from contact.rotor.misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD, find_misread_rows
 from contact.rotor.noise import Noise
 from contact.rotor.paper import FPS, MARK_STEP
 from contact.rotor.selection import (
@@ -190,8 +190,8 @@ def analyse_test(
     step: float = MARK_STEP,
     margin: float = BIC_MARGIN,
     cv: str = "approx",
-    threshold: float = 4.0,
-    min_frames: float = 1.5,
+    threshold: float = MISREAD_THRESHOLD,
+    min_frames: float = MISREAD_MIN_FRAMES,
     noise: Noise | None = None,
     extend: bool = True,
 ) -> TestReport:

@@ -17,6 +17,7 @@ from contact.rotor.analysis import TestReport, analyse_test
 from contact.rotor.arrays import readonly
 from contact.rotor.family import EXTENSION, MODELS, SELECTABLE
 from contact.rotor.forward import PARAM_NAMES, batch_crossing_times, crossing_times
+from contact.rotor.misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
 from contact.rotor.noise import quantisation_sigma
 from contact.rotor.paper import FPS, MARK_STEP
 from contact.rotor.parabola import paper_parabola
@@ -191,8 +192,8 @@ def analyse_table(
     step: float = MARK_STEP,
     margin: float = BIC_MARGIN,
     cv: str = "approx",
-    threshold: float = 4.0,
-    min_frames: float = 1.5,
+    threshold: float = MISREAD_THRESHOLD,
+    min_frames: float = MISREAD_MIN_FRAMES,
     progress: Callable[[str, int, int], None] | None = None,
 ) -> LawOfMotionAnalysis:
     """Analyse a table of tests (column name -> frame index per row).

@@ -20,7 +20,13 @@ from contact.rotor.forward import model_speeds
 from contact.rotor.noise import Noise, estimate_noise, quantisation_sigma
 from contact.rotor.paper import FPS, MARK_STEP
 
-__all__ = ["MisreadSearch", "find_misread_rows", "robust_noise"]
+__all__ = ["MISREAD_MIN_FRAMES", "MISREAD_THRESHOLD", "MisreadSearch", "find_misread_rows",
+           "robust_noise"]
+
+#: A row is flagged misread when its prediction error exceeds this many noise sigmas...
+MISREAD_THRESHOLD = 4.0
+#: ...and this many frames (a frame or two off cannot be told from reading scatter).
+MISREAD_MIN_FRAMES = 1.5
 
 
 @dataclass(frozen=True)
@@ -58,8 +64,8 @@ def find_misread_rows(
     *,
     fps: float = FPS,
     step: float = MARK_STEP,
-    threshold: float = 4.0,
-    min_frames: float = 1.5,
+    threshold: float = MISREAD_THRESHOLD,
+    min_frames: float = MISREAD_MIN_FRAMES,
     reference: str = "position+unbalance",
     initial: np.ndarray | None = None,
     max_fraction: float = 0.2,

@@ -37,6 +37,20 @@ from contact.errors import ContactInputError, ConvergenceError
 from contact.hertz import hertz_cylinder
 
 
+def _prim(v: np.ndarray) -> np.ndarray:
+    """F(v) = v ln|v| - v (0 at v = 0)."""
+    av = np.abs(v)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = np.where(av > 0, v * np.log(np.where(av > 0, av, 1.0)) - v, 0.0)
+    return out
+
+
+def line_column(d: np.ndarray, dx: float) -> np.ndarray:
+    """Displacement at offsets ``d`` (m) from a uniform-pressure cell of width ``dx`` on a
+    half-plane, E* = 1 (m per Pa; the datum of the module notes)."""
+    return -(2.0 / math.pi) * (_prim(d + dx / 2) - _prim(d - dx / 2))
+
+
 def line_influence(n: int, dx: float) -> np.ndarray:
     """Dense (n, n) influence matrix of a uniform-pressure cell on a half-plane, E* = 1.
 
@@ -44,17 +58,50 @@ def line_influence(n: int, dx: float) -> np.ndarray:
     """
     if n < 1 or not (math.isfinite(dx) and dx > 0):
         raise ContactInputError("the line grid needs n >= 1 cells of positive pitch")
-
-    def prim(v: np.ndarray) -> np.ndarray:
-        av = np.abs(v)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            out = np.where(av > 0, v * np.log(np.where(av > 0, av, 1.0)) - v, 0.0)
-        return out
-
-    d = np.arange(n) * dx
-    col = -(2.0 / math.pi) * (prim(d + dx / 2) - prim(d - dx / 2))
+    col = line_column(np.arange(n) * dx, dx)
     idx = np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])
     return col[idx]
+
+
+def solve_active_set(A: np.ndarray, h: np.ndarray, weight: float, target: float,
+                     active: np.ndarray, tol: float,
+                     max_iter: int) -> tuple[np.ndarray, float, int] | None:
+    """Dense active-set solution of a line contact under a load: p >= 0, gap >= 0.
+
+    On the contact set the pressures and the approach solve ``h + A p - delta = 0`` with
+    ``weight * sum(p) = target``; cells with negative pressure leave the set, cells whose
+    gap is below ``-tol`` enter it, until neither happens. ``active`` (bool, changed in
+    place) is the starting set. Returns (p, delta, iterations), or None when the set has
+    not settled after ``max_iter`` steps.
+    """
+    n = h.size
+    p = np.zeros(n)
+    for it in range(1, max_iter + 1):
+        idx = np.flatnonzero(active)
+        m = idx.size
+        M = np.empty((m + 1, m + 1))
+        M[:m, :m] = A[np.ix_(idx, idx)]
+        M[:m, m] = -1.0
+        M[m, :m] = weight
+        M[m, m] = 0.0
+        rhs = np.empty(m + 1)
+        rhs[:m] = -h[idx]
+        rhs[m] = target
+        sol = np.linalg.solve(M, rhs)
+        p[:] = 0.0
+        p[idx] = sol[:m]
+        delta = float(sol[m])
+        neg = idx[sol[:m] < 0]
+        if neg.size:
+            active[neg] = False
+            if not active.any():  # pragma: no cover - cannot happen with a positive load
+                active[int(np.argmin(h))] = True
+            continue
+        enter = (~active) & (h + A @ p - delta < -tol)
+        if not enter.any():
+            return p, delta, it
+        active |= enter
+    return None
 
 
 @dataclass(frozen=True, eq=False)
@@ -157,53 +204,28 @@ def solve_line(
     load = positive(load, "the load per length", "N/m")
     n = h.size
     K = line_influence(n, dx) / e_star
-    target = load / dx
     active = np.zeros(n, dtype=bool)
     active[int(np.argmin(h))] = True
-    p = np.zeros(n)
-    delta = 0.0
     tol = 1e-12 * max(float(np.ptp(h)), 1e-12) + 1e-15
-    for it in range(1, max_iter + 1):
-        idx = np.flatnonzero(active)
-        m = idx.size
-        A = np.empty((m + 1, m + 1))
-        A[:m, :m] = K[np.ix_(idx, idx)]
-        A[:m, m] = -1.0
-        A[m, :m] = 1.0
-        A[m, m] = 0.0
-        rhs = np.empty(m + 1)
-        rhs[:m] = -h[idx]
-        rhs[m] = target
-        sol = np.linalg.solve(A, rhs)
-        p[:] = 0.0
-        p[idx] = sol[:m]
-        delta = float(sol[m])
-        neg = p < 0
-        if neg.any():
-            active &= ~neg
-            if not active.any():  # pragma: no cover - cannot happen with a positive load
-                active[int(np.argmin(h))] = True
-            continue
-        g = h + K @ p - delta
-        enter = (~active) & (g < -tol)
-        if not enter.any():
-            u = K @ p
-            gap = np.maximum(h + u - delta, 0.0)
-            gap[active] = 0.0
-            x = origin + np.arange(n) * dx
-            on = np.flatnonzero(p > 0)
-            lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
-            return LineContactResult(
-                x=frozen(x), pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
-                dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
-                approach=delta, pmax=float(p.max()),
-                half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
-                centre=0.5 * (hi + lo) if on.size else math.nan, iterations=it,
-            )
-        active |= enter
-    raise ConvergenceError(
-        f"the line-contact active set did not settle in {max_iter} iterations; refine the "
-        "grid or smooth the profile", iterations=max_iter,
+    found = solve_active_set(K, h, 1.0, load / dx, active, tol, max_iter)
+    if found is None:
+        raise ConvergenceError(
+            f"the line-contact active set did not settle in {max_iter} iterations; refine the "
+            "grid or smooth the profile", iterations=max_iter,
+        )
+    p, delta, it = found
+    u = K @ p
+    gap = np.maximum(h + u - delta, 0.0)
+    gap[active] = 0.0
+    x = origin + np.arange(n) * dx
+    on = np.flatnonzero(p > 0)
+    lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
+    return LineContactResult(
+        x=frozen(x), pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
+        dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
+        approach=delta, pmax=float(p.max()),
+        half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
+        centre=0.5 * (hi + lo) if on.size else math.nan, iterations=it,
     )
 
 

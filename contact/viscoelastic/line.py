@@ -36,14 +36,9 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
+from contact.setups.line import line_column, solve_active_set
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
-
-
-def _prim(v: np.ndarray) -> np.ndarray:
-    av = np.abs(v)
-    safe = np.where(av > 0, av, 1.0)
-    return np.where(av > 0, v * np.log(safe) - v, 0.0)
 
 
 def _logsafe(v: np.ndarray) -> np.ndarray:
@@ -92,44 +87,11 @@ def influence_matrix(n: int, dx: float, creep: CreepSeries, speed: float) -> np.
         raise ContactInputError("the line grid needs n >= 2 cells of positive pitch")
     k = np.arange(-(n - 1), n)
     d = k * dx
-    w = -(2.0 / math.pi) * (_prim(d + dx / 2) - _prim(d - dx / 2))
-    col = creep.relaxed * w
+    col = creep.relaxed * line_column(d, dx)
     for dc, th in zip(creep.amplitudes, creep.times):
         col = col + dc * _creep_column(d, dx, speed * th)
     idx = np.arange(n)[:, None] - np.arange(n)[None, :] + (n - 1)
     return col[idx]
-
-
-def _active_set(A: np.ndarray, h: np.ndarray, load: float, dx: float,
-                start: np.ndarray, max_iter: int) -> tuple[np.ndarray, float, int]:
-    n = h.size
-    on = start.copy()
-    p = np.zeros(n)
-    for it in range(1, max_iter + 1):
-        idx = np.flatnonzero(on)
-        m = idx.size
-        M = np.empty((m + 1, m + 1))
-        M[:m, :m] = A[np.ix_(idx, idx)]
-        M[:m, m] = -1.0
-        M[m, :m] = dx
-        M[m, m] = 0.0
-        rhs = np.concatenate((-h[idx], [load]))
-        sol = np.linalg.solve(M, rhs)
-        p[:] = 0.0
-        p[idx] = sol[:m]
-        delta = float(sol[m])
-        neg = idx[sol[:m] < 0]
-        if neg.size:
-            on[neg] = False
-            continue
-        gap = h + A @ p - delta
-        scale = max(float(np.ptp(h)), 1e-300)
-        pen = (~on) & (gap < -1e-12 * scale)
-        if not pen.any():
-            return p, delta, it
-        on |= pen
-    raise ConvergenceError(f"viscoelastic line contact: active set not settled after "
-                           f"{max_iter} iterations", iterations=max_iter)
 
 
 def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
@@ -168,7 +130,12 @@ def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
     x = (x0 if x0 is not None else -(n - 1) * dx / 2) + np.arange(n) * dx
     A = influence_matrix(n, dx, creep, v)
     start = h <= np.quantile(h, 0.2)
-    p, delta, it = _active_set(A, h, W, dx, start, max_iter)
+    found = solve_active_set(A, h, dx, W, start, 1e-12 * max(float(np.ptp(h)), 1e-300),
+                             max_iter)
+    if found is None:
+        raise ConvergenceError(f"viscoelastic line contact: active set not settled after "
+                               f"{max_iter} iterations", iterations=max_iter)
+    p, delta, it = found
     u = A @ p
     gap = np.where(p > 0, 0.0, np.maximum(h + u - delta, 0.0))
     trailing, leading = edges_1d(x, p)

@@ -1,12 +1,8 @@
 """Steady rolling on a viscoelastic half-space in 3D, on a regular grid (FFT boundary elements).
 
 Operator. Cell (i, j) carries a uniform pressure; on a half-space of unit compliance it
-makes the surface displacement of Love's rectangle (Johnson 1985, *Contact Mechanics*,
-eq. 3.25), written with G(u, v) = u asinh(v/|u|) + v asinh(u/|v|):
-
-    K(x, y) = (1/pi) [G(x+a, y+b) - G(x+a, y-b) - G(x-a, y+b) + G(x-a, y-b)],
-    a = dx/2, b = dy/2,
-
+makes the surface displacement K(x, y) of Love's rectangle (Johnson 1985, *Contact
+Mechanics*, eq. 3.25; :func:`contact.halfspace.influence.love_coefficients`),
 and w = K * p is a free-boundary (zero-padded FFT) convolution. The contact moves at V
 towards +x; with the pair's creep series (:mod:`contact.viscoelastic.rheology`) the
 displacement is the steady-state hereditary integral along x (Carbone & Putignano 2013,
@@ -48,24 +44,12 @@ from typing import Any
 
 import numpy as np
 
+from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
+from contact.halfspace.influence import love_coefficients
 from contact.viscoelastic.kernels import creep_filter_rows
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
-
-
-def love_kernel(x: np.ndarray, y: np.ndarray, dx: float, dy: float) -> np.ndarray:
-    """Displacement (m per Pa, unit compliance) at offsets (x, y) from a uniform cell."""
-    a, b = dx / 2, dy / 2
-
-    def G(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-        au, av = np.abs(u), np.abs(v)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t1 = np.where(au > 0, u * np.arcsinh(v / np.where(au > 0, au, 1.0)), 0.0)
-            t2 = np.where(av > 0, v * np.arcsinh(u / np.where(av > 0, av, 1.0)), 0.0)
-        return t1 + t2
-
-    return (G(x + a, y + b) - G(x + a, y - b) - G(x - a, y + b) + G(x - a, y - b)) / math.pi
 
 
 class RollingOperator:
@@ -98,7 +82,7 @@ class RollingOperator:
         ox = np.where(ox < nx + self.m, ox, ox - self.Nx) * dx
         oy = np.arange(self.Ny)
         oy = np.where(oy < ny, oy, oy - self.Ny) * dy
-        self._kf = fft.rfft2(love_kernel(ox[None, :], oy[:, None], dx, dy))
+        self._kf = fft.rfft2(love_coefficients(ox[None, :], oy[:, None], dx, dy))
         self._lag_x, self._lag_w = np.polynomial.laguerre.laggauss(32)
 
     def elastic(self, p: np.ndarray) -> np.ndarray:
@@ -193,10 +177,10 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
     h = np.asarray(heights, dtype=float)
     if h.ndim != 2 or min(h.shape) < 8 or not np.all(np.isfinite(h)):
         raise ContactInputError("the heights must be a finite 2D array of at least 8 x 8")
-    v = _positive(speed, "the rolling speed", "m/s")
-    W = _positive(load, "the load", "N")
-    dx = _positive(dx, "the cell pitch", "m")
-    dy = dx if dy is None else _positive(dy, "the cell pitch dy", "m")
+    v = positive(speed, "the rolling speed", "m/s")
+    W = positive(load, "the load", "N")
+    dx = positive(dx, "the cell pitch", "m")
+    dy = dx if dy is None else positive(dy, "the cell pitch dy", "m")
     ny, nx = h.shape
     op = RollingOperator(ny, nx, dx, dy, creep, v, ahead)
     ce = 0.5 * (creep.glassy + creep.relaxed)
@@ -282,16 +266,6 @@ def _result(op: RollingOperator, h: np.ndarray, p: np.ndarray, res: Any, W: floa
                                 "inner_iterations": int(res.iterations)})
 
 
-def _positive(value: Any, what: str, unit: str) -> float:
-    try:
-        val = float(value)
-    except (TypeError, ValueError):
-        raise ContactInputError(f"{what} must be a number in {unit}, got {value!r}") from None
-    if not (math.isfinite(val) and val > 0):
-        raise ContactInputError(f"{what} must be positive and finite in {unit}, got {value!r}")
-    return val
-
-
 def rolling_sphere(radius: float, load: float, creep: CreepSeries, speed: float, *,
                    n: int = 128, half_width: float | None = None,
                    roughness: np.ndarray | None = None, **kw: Any) -> RollingResult:
@@ -299,8 +273,8 @@ def rolling_sphere(radius: float, load: float, creep: CreepSeries, speed: float,
 
     The square grid spans +-``half_width`` (default 1.6 relaxed Hertz radii).
     """
-    R = _positive(radius, "the radius", "m")
-    W = _positive(load, "the load", "N")
+    R = positive(radius, "the radius", "m")
+    W = positive(load, "the load", "N")
     a_r = (3.0 * W * R * creep.relaxed / 4.0) ** (1.0 / 3.0)
     L = half_width if half_width is not None else 1.6 * a_r
     dx = 2.0 * L / n

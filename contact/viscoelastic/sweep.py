@@ -18,7 +18,6 @@ the material's creep adds.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
@@ -79,9 +78,9 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
     -------
     contact.rolling.RollingSweep
     """
-    w = np.sort(np.asarray(list(loads), dtype=float))
-    if w.size < 1 or not (np.isfinite(w).all() and (w > 0).all()):
-        raise ContactInputError("loads must be positive and finite (N)")
+    from contact.rolling import sweep_loads
+
+    w = sweep_loads(loads)
     creep = pair_creep(ball, plate)
     half = 1.6 * (3.0 * w[-1] * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
     z = None
@@ -114,20 +113,15 @@ def sweep_record(model: str, loads: np.ndarray, forces: np.ndarray, radius: floa
                  confidence: float = 0.95) -> Any:
     """A :class:`contact.rolling.RollingSweep` from resisting forces F_r(N) (M_r = F_r R),
     with the power-law fit over the loads that dissipate and the local exponent."""
-    from contact.exponent import fit_exponent, local_exponent
+    from contact.exponent import dissipating_exponents
     from contact.rolling import RollingSweep
 
     w = np.asarray(loads, dtype=float)
     forces = np.asarray(forces, dtype=float)
     moments = forces * radius
-    pos = moments > 0
-    notes = []
-    fit = fit_exponent(w[pos], moments[pos], confidence) if pos.sum() >= 3 else None
-    if fit is None:
-        notes.append("fewer than 3 loads with a positive moment: no exponent fitted")
-    local = np.full(w.size, math.nan)
-    if pos.sum() >= 2:
-        local[pos] = local_exponent(w[pos], moments[pos])
+    fit, local = dissipating_exponents(w, moments, confidence)
+    notes = [] if fit is not None else \
+        ["fewer than 3 loads with a positive moment: no exponent fitted"]
     return RollingSweep(model=model, loads=w, forces=forces, moments=moments, fit=fit,
                         local_lambda=local, radius=float(radius), settings=settings,
                         notes=tuple(notes), results=tuple(results))

@@ -13,9 +13,13 @@ from typing import Any, NoReturn
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError
+from surfmet.model import Profile
 
 # Largest grid any reader accepts: 2**31 points is 16 GiB of float64, beyond any instrument.
 MAX_POINTS = 2**31
+# Deflate (zlib, zip) cannot expand data by more than about 1032:1: a stream or member
+# claiming more is lying.
+MAX_DEFLATE_RATIO = 1100
 
 
 def format_error(name: str, fmt: str, problem: str) -> SurfmetFormatError:
@@ -159,6 +163,16 @@ def check_step(value: float, name: str, fmt: str, what: str = "pixel size") -> f
     if not (np.isfinite(v) and v > 0):
         raise format_error(name, fmt, f"{what} {value!r} is not a positive length")
     return v
+
+
+def positions_profile(z: np.ndarray, x: np.ndarray, step: float, rtol: float,
+                      metadata: dict[str, Any]) -> Profile:
+    """A profile of heights ``z`` at increasing positions ``x`` (m): uniform at ``step`` when
+    no step between the positions differs from it by more than ``rtol * step``, else with
+    the positions kept (from ``x[0]``)."""
+    if np.max(np.abs(np.diff(x) - step)) <= rtol * step:
+        return Profile(z, step, metadata=metadata)
+    return Profile(z, step, x - x[0], metadata=metadata)
 
 
 def channel_index(names: list[str], channel: int | str, r: ByteReader,

@@ -1,4 +1,4 @@
-"""Guarded zip access for the zip-based formats (Mitutoyo .xlsx; the x3p reader has its own).
+"""Guarded zip access for the zip-based formats (X3P, Mitutoyo .xlsx).
 
 A member's declared size is checked against a limit and against what deflate can expand
 to before anything is decompressed, so a zip bomb or a corrupted central directory fails
@@ -12,11 +12,9 @@ import zipfile
 import zlib
 
 from surfmet.errors import SurfmetFormatError
-from surfmet.io._binary import format_error
+from surfmet.io._binary import MAX_DEFLATE_RATIO, format_error
 
 ZIP_MAGIC = b"PK\x03\x04"
-# Deflate cannot expand data by more than about 1032:1; a member claiming more is lying.
-_MAX_DEFLATE_RATIO = 1100
 
 
 def open_zip(buf: bytes, name: str, fmt: str) -> zipfile.ZipFile:
@@ -29,8 +27,25 @@ def open_zip(buf: bytes, name: str, fmt: str) -> zipfile.ZipFile:
         ) from None
 
 
-def read_member(zf: zipfile.ZipFile, member: str, name: str, fmt: str, limit: int) -> bytes:
-    """The bytes of ``member`` after checking its declared sizes (at most ``limit``)."""
+def read_member(zf: zipfile.ZipFile, member: str, name: str, fmt: str, limit: int, *,
+                what: str | None = None, expected: int | None = None,
+                implied_by: str = "the header") -> bytes:
+    """The bytes of ``member`` after checking its declared sizes; never reads more than needed.
+
+    Parameters
+    ----------
+    zf : zipfile.ZipFile
+        The archive.
+    member, name, fmt : str
+        The member; the file and its format, for messages.
+    limit : int
+        Most bytes the member may declare.
+    what : str, optional
+        The member's role in the format (``"header"``, ``"point data"``), for messages.
+    expected : int, optional
+        The size ``implied_by`` (the format's header) says the member has.
+    """
+    label = what or "member"
 
     def fail(problem: str) -> SurfmetFormatError:
         return format_error(name, fmt, problem)
@@ -38,21 +53,30 @@ def read_member(zf: zipfile.ZipFile, member: str, name: str, fmt: str, limit: in
     try:
         info = zf.getinfo(member)
     except KeyError:
-        raise fail(f"the archive has no member {member!r}") from None
+        role = f" ({what})" if what else ""
+        raise fail(f"the archive has no member {member!r}{role}") from None
     if info.file_size > limit:
-        raise fail(f"member {member!r} is absurdly large ({info.file_size} bytes)")
-    if info.compress_type != zipfile.ZIP_STORED and \
-            info.file_size > _MAX_DEFLATE_RATIO * info.compress_size + 1024:
-        raise fail(f"member {member!r} claims more bytes than compression allows "
+        raise fail(f"{label} {member!r} is absurdly large ({info.file_size} bytes)")
+    if info.compress_type == zipfile.ZIP_STORED:
+        if info.file_size != info.compress_size:
+            raise fail(f"{label} {member!r}: stored member with inconsistent sizes")
+    elif info.file_size > MAX_DEFLATE_RATIO * info.compress_size + 1024:
+        raise fail(f"{label} {member!r} claims {info.file_size} bytes from "
+                   f"{info.compress_size} compressed bytes, more than compression allows "
                    "(zip bomb or corrupted archive)")
+    if expected is not None and info.file_size != expected:
+        raise fail(f"{label} {member!r} holds {info.file_size} bytes but {implied_by} "
+                   f"implies {expected}")
     try:
         with zf.open(info) as f:
             data = f.read(info.file_size + 1)
     except (zipfile.BadZipFile, zlib.error, EOFError, OSError, RuntimeError,
             NotImplementedError, ValueError) as exc:
-        raise fail(f"cannot extract {member!r} ({exc})") from None
+        # RuntimeError: encrypted member; NotImplementedError: unknown compression method.
+        role = f"{what} " if what else ""
+        raise fail(f"cannot extract {role}{member!r} ({exc})") from None
     if len(data) != info.file_size:
-        raise fail(f"member {member!r} is truncated or corrupted")
+        raise fail(f"{label} {member!r} is truncated or corrupted")
     return data
 
 

@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import decode_text, format_error, looks_like_text
+from surfmet.io._binary import decode_text, format_error, looks_like_text, positions_profile
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile
 from surfmet.units import length_factor, quantity
@@ -293,7 +293,6 @@ def decode(buf: bytes, name: str) -> Profile:
     if x.size < 2:
         raise _fail(name, "a profile needs at least two points")
     mean_step = float((x[-1] - x[0]) / (x.size - 1))
-    uniform = bool(np.max(np.abs(steps - mean_step)) <= _UNIFORM_RTOL * mean_step)
 
     md: dict[str, Any] = {
         "instrument": "Dektak",
@@ -314,9 +313,7 @@ def decode(buf: bytes, name: str) -> Profile:
         if stated and span < stated - max(tolerance, 1e-3 * stated):
             raise _fail(name, f"truncated: the data span {span * 1e6:.6g} um but the header "
                               f"states a scan length of {stated * 1e6:.6g} um")
-    if uniform:
-        return Profile(z, mean_step, metadata=md)
-    return Profile(z, mean_step, x - x[0], metadata=md)
+    return positions_profile(z, x, mean_step, _UNIFORM_RTOL, md)
 
 
 __all__ = ["G_STANDARD", "decode"]

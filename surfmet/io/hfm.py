@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import decode_text, format_error, looks_like_text
+from surfmet.io._binary import decode_text, format_error, looks_like_text, positions_profile
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile
 from surfmet.units import length_factor, quantity
@@ -91,21 +91,18 @@ def decode(buf: bytes, name: str) -> Profile:
     steps = np.diff(x)
     if not np.all(steps > 0):
         if np.all(steps < 0):  # recorded backwards: keep the physical order
-            x, z, steps = x[::-1], z[::-1], -steps[::-1]
+            x, z = x[::-1], z[::-1]
         else:
             bad = int(np.argmax(~(steps > 0)))
             raise _fail(name, f"positions must be monotonic; data line {bad + 4} breaks the order")
     mean_step = float((x[-1] - x[0]) / (x.size - 1))
-    uniform = bool(np.max(np.abs(steps - mean_step)) <= _UNIFORM_RTOL * mean_step)
     md: dict[str, Any] = {
         "height_unit": zunit,
         "lateral_unit": xunit,
         "lateral_calibrated": True,
         "x_offset": quantity(float(x[0]), "m"),
     }
-    if uniform:
-        return Profile(z, mean_step, metadata=md)
-    return Profile(z, mean_step, x - x[0], metadata=md)
+    return positions_profile(z, x, mean_step, _UNIFORM_RTOL, md)
 
 
 __all__ = ["decode"]

@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import check_step, format_error
+from surfmet.io._binary import check_step, format_error, positions_profile
 from surfmet.io._xlsx import Cells, read_cells, shared_strings, sheet_paths
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip
 from surfmet.io.registry import register_reader
@@ -204,7 +204,6 @@ def decode(buf: bytes, name: str) -> Profile:
     if not np.all(np.isfinite(x)) or not np.all(np.diff(x) > 0):
         raise _fail(name, "the positions (column E) are not finite and increasing")
     z[~np.isfinite(z)] = np.nan
-    steps = np.diff(x)
     dx = check_step(float((x[-1] - x[0]) / (x.size - 1)), name, FORMAT, "mean step")
     md: dict[str, Any] = {
         "vendor": "Mitutoyo",
@@ -221,9 +220,7 @@ def decode(buf: bytes, name: str) -> Profile:
         md["evaluation_conditions"] = evaluation
     if results:
         md["instrument_results"] = results
-    if np.max(np.abs(steps - dx)) <= _UNIFORM_RTOL * dx:
-        return Profile(z, dx, metadata=md)
-    return Profile(z, dx, x - x[0], metadata=md)
+    return positions_profile(z, x, dx, _UNIFORM_RTOL, md)
 
 
 __all__ = ["decode"]

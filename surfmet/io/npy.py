@@ -18,12 +18,12 @@ from typing import Any
 import numpy as np
 
 from surfmet.io._binary import MAX_POINTS, format_error
+from surfmet.io._zip import ZIP_MAGIC
 from surfmet.io.registry import register_reader, register_writer
 from surfmet.model import Profile, Topography
 from surfmet.units import jsonable, length_factor
 
 _NPY_MAGIC = b"\x93NUMPY"
-_ZIP_MAGIC = b"PK\x03\x04"
 
 
 def _is_npy(buf: bytes) -> bool:
@@ -33,7 +33,7 @@ def _is_npy(buf: bytes) -> bool:
 def _is_surfmet_npz(buf: bytes) -> bool:
     # An .npz is a zip whose members end in .npy; x3p files are zips too, so look for our
     # member names in the central directory rather than at the zip signature alone.
-    return buf.startswith(_ZIP_MAGIC) and b"kind.npy" in buf[-4096:]
+    return buf.startswith(ZIP_MAGIC) and b"kind.npy" in buf[-4096:]
 
 
 def _check_header(buf: bytes, name: str) -> None:

@@ -32,7 +32,13 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError
-from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
+from surfmet.io._binary import (
+    MAX_POINTS,
+    check_grid,
+    check_step,
+    format_error,
+    positions_profile,
+)
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
@@ -181,9 +187,7 @@ def decode(buf: bytes, name: str, verify_checksum: bool = True) -> Profile | Top
     if z.size < 2 or not np.all(np.isfinite(x)) or not np.all(np.diff(x) > 0):
         raise _fail(name, "absolute x positions must be finite and increasing")
     dx = check_step(float((x[-1] - x[0]) / (x.size - 1)), name, FORMAT, "mean x step")
-    if np.max(np.abs(np.diff(x) - dx)) <= _UNIFORM_RTOL * dx:
-        return Profile(z, dx, metadata=md)
-    return Profile(z, dx, x - x[0], metadata=md)
+    return positions_profile(z, x, dx, _UNIFORM_RTOL, md)
 
 
 __all__ = ["decode"]

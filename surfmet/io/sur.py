@@ -69,7 +69,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.io._binary import MAX_POINTS, ByteReader, check_grid, check_step
+from surfmet.io._binary import MAX_DEFLATE_RATIO, MAX_POINTS, ByteReader, check_grid, check_step
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 from surfmet.units import length_factor
@@ -81,8 +81,6 @@ HEADER_SIZE = 512
 # At most this many objects are walked through to find the heights.
 _MAX_OBJECTS = 4096
 _MAX_STREAMS = 1 << 16
-# zlib cannot expand data by more than about 1032:1.
-_MAX_DEFLATE_RATIO = 1100
 
 OBJECT_TYPES = {
     1: "profile", 2: "surface", 3: "binary image", 4: "series of profiles",
@@ -178,7 +176,7 @@ def _read_points(r: ByteReader, h: dict[str, Any], pos: int, index: int
         r.fail(f"object {index}: the compressed streams hold {total_raw} bytes but the "
                f"header implies {_data_size(h)}")
     r.need(total_zip, f"object {index} compressed points")
-    if total_raw > _MAX_DEFLATE_RATIO * total_zip + 1024:
+    if total_raw > MAX_DEFLATE_RATIO * total_zip + 1024:
         r.fail(f"object {index}: {total_zip} compressed bytes cannot hold {total_raw} bytes "
                "(corrupted header or decompression bomb)")
     chunks = []

@@ -38,11 +38,9 @@ The writer lives in :mod:`surfmet.io.x3p_writer`.
 from __future__ import annotations
 
 import hashlib
-import io
 import math
 import re
 import zipfile
-import zlib
 from typing import Any
 from xml.etree import ElementTree as ET
 
@@ -50,15 +48,13 @@ import numpy as np
 
 from surfmet.errors import SurfmetFormatError
 from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
+from surfmet.io._zip import ZIP_MAGIC, open_zip, read_member
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 
 FORMAT = "x3p"
-_ZIP_MAGIC = b"PK\x03\x04"
 # main.xml of a real file is a few kB; 16 MB of XML is never a header.
 MAX_XML_BYTES = 16 * 2**20
-# Deflate cannot expand data by more than about 1032:1; a member claiming more is lying.
-_MAX_DEFLATE_RATIO = 1100
 # A DataList holds one XML element per point: cap it well below the binary limit.
 _MAX_DATALIST_POINTS = 10_000_000
 
@@ -73,7 +69,7 @@ DTYPES: dict[str, np.dtype] = {
 def _is_x3p(buf: bytes) -> bool:
     # npz files are zips too: require the main.xml member name, which sits in the local
     # header of the first member (openGPS writes it first) or in the central directory.
-    return buf[:4] == _ZIP_MAGIC and (b"main.xml" in buf[:1024] or b"main.xml" in buf[-65536:])
+    return buf[:4] == ZIP_MAGIC and (b"main.xml" in buf[:1024] or b"main.xml" in buf[-65536:])
 
 
 def _fail(name: str, problem: str) -> SurfmetFormatError:
@@ -125,37 +121,9 @@ def _int(elem: ET.Element | None, tag: str, name: str, where: str) -> int:
 
 def _read_member(zf: zipfile.ZipFile, member: str, name: str, expected: int | None,
                  limit: int, what: str) -> bytes:
-    """Read a zip member after checking its declared size; never reads more than needed."""
-    try:
-        info = zf.getinfo(member)
-    except KeyError:
-        raise _fail(name, f"the archive has no member {member!r} ({what})") from None
-    if info.file_size > limit:
-        raise _fail(name, f"{what} {member!r} is absurdly large ({info.file_size} bytes)")
-    if info.compress_type == zipfile.ZIP_STORED:
-        if info.file_size != info.compress_size:
-            raise _fail(name, f"{what} {member!r}: stored member with inconsistent sizes")
-    elif info.file_size > _MAX_DEFLATE_RATIO * info.compress_size + 1024:
-        raise _fail(
-            name,
-            f"{what} {member!r} claims {info.file_size} bytes from {info.compress_size} "
-            "compressed bytes, more than compression allows (zip bomb or corrupted archive)",
-        )
-    if expected is not None and info.file_size != expected:
-        raise _fail(
-            name,
-            f"{what} {member!r} holds {info.file_size} bytes but main.xml implies {expected}",
-        )
-    try:
-        with zf.open(info) as f:
-            data = f.read(info.file_size + 1)
-    except (zipfile.BadZipFile, zlib.error, EOFError, OSError, RuntimeError,
-            NotImplementedError, ValueError) as exc:
-        # RuntimeError: encrypted member; NotImplementedError: unknown compression method.
-        raise _fail(name, f"cannot extract {what} {member!r} ({exc})") from None
-    if len(data) != info.file_size:
-        raise _fail(name, f"{what} {member!r} is truncated or corrupted")
-    return data
+    """:func:`surfmet.io._zip.read_member` for X3P: sizes ``expected`` from main.xml."""
+    return read_member(zf, member, name, FORMAT, limit, what=what, expected=expected,
+                       implied_by="main.xml")
 
 
 def _check_md5(data: bytes, expected: str | None, name: str, what: str) -> None:
@@ -374,11 +342,7 @@ def decode(buf: bytes, name: str, verify_checksum: bool = True) -> Topography | 
     -------
     Topography (FeatureType SUR) or Profile (FeatureType PRF), heights in metres.
     """
-    try:
-        zf = zipfile.ZipFile(io.BytesIO(buf))
-    except (zipfile.BadZipFile, OSError, ValueError, EOFError) as exc:
-        raise _fail(name, f"not a readable zip archive: truncated or corrupted ({exc})") from None
-    with zf:
+    with open_zip(buf, name, FORMAT) as zf:
         raw_xml, root, r1, r3 = _open_header(zf, name)
         md: dict[str, Any] = {"format": FORMAT}
         revision = _text(r1, "Revision")

@@ -26,7 +26,13 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetFormatError, SurfmetInputError
-from surfmet.io._binary import MAX_POINTS, decode_text, format_error, looks_like_text
+from surfmet.io._binary import (
+    MAX_POINTS,
+    decode_text,
+    format_error,
+    looks_like_text,
+    positions_profile,
+)
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 from surfmet.units import length_factor, quantity
@@ -154,15 +160,12 @@ def _profile(x: np.ndarray, z: np.ndarray, name: str, md: dict[str, Any]) -> Pro
     steps = np.diff(x)
     if not np.all(steps > 0):
         if np.all(steps < 0):
-            x, z, steps = x[::-1], z[::-1], -steps[::-1]
+            x, z = x[::-1], z[::-1]
         else:
             raise _fail(name, "positions are neither strictly increasing nor decreasing")
     mean_step = float((x[-1] - x[0]) / (x.size - 1))
     md["x_offset"] = quantity(float(x[0]), "m")
-    uniform = bool(np.max(np.abs(steps - mean_step)) <= _UNIFORM_RTOL * mean_step)
-    if uniform:
-        return Profile(z, mean_step, metadata=md)
-    return Profile(z, mean_step, x - x[0], metadata=md)
+    return positions_profile(z, x, mean_step, _UNIFORM_RTOL, md)
 
 
 def _axis(v: np.ndarray, name: str, label: str) -> tuple[np.ndarray, float, float]:

@@ -7,10 +7,29 @@ only parses the user's text, with units, into it.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.units import parse_pressure
+
+
+def spec_options(opts: Iterable[str], what: str) -> Iterator[tuple[str, str]]:
+    """The ``KEY=VALUE`` options of a ``NAME:KEY=VALUE:...`` text, one at a time, as
+    (lower-case key, value); ``what`` names them in the message of one without ``=``."""
+    for opt in opts:
+        key, sep, value = opt.partition("=")
+        if not sep:
+            raise SurfmetInputError(f"cannot read {what} option {opt!r}: write KEY=VALUE")
+        yield key.strip().lower(), value
+
+
+def poisson_ratio(value: str) -> float:
+    """Poisson's ratio from an option's text."""
+    try:
+        return float(value)
+    except ValueError:
+        raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
 
 
 def parse_material(text: str) -> Any:
@@ -22,18 +41,11 @@ def parse_material(text: str) -> Any:
 
     name, *opts = [s.strip() for s in str(text).split(":")]
     kw: dict[str, float] = {}
-    for opt in opts:
-        key, sep, value = opt.partition("=")
-        key = key.strip().lower()
-        if not sep:
-            raise SurfmetInputError(f"cannot read material option {opt!r}: write KEY=VALUE")
+    for key, value in spec_options(opts, "material"):
         if key == "e":
             kw["E"] = parse_pressure(value)
         elif key in ("nu", "poisson"):
-            try:
-                kw["nu"] = float(value)
-            except ValueError:
-                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
+            kw["nu"] = poisson_ratio(value)
         elif key in ("h", "hardness"):
             kw["hardness"] = parse_pressure(value)
         else:

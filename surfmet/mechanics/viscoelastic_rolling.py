@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.material_spec import poisson_ratio, spec_options
 from surfmet.units import parse_pressure, quantity
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -59,20 +60,13 @@ def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
         raise SurfmetInputError(f"--viscoelastic names the body first: ball or plate, got "
                                 f"{body!r}")
     kw: dict[str, float] = {}
-    for opt in opts:
-        key, sep, value = opt.partition("=")
-        key = key.strip().lower()
-        if not sep:
-            raise SurfmetInputError(f"cannot read viscoelastic option {opt!r}: write KEY=VALUE")
+    for key, value in spec_options(opts, "viscoelastic"):
         if key in ("eg", "er"):
             kw[key] = parse_pressure(value)
         elif key in ("tau", "tau_c", "tc"):
             kw["tau"] = _parse_time(value)
         elif key == "nu":
-            try:
-                kw["nu"] = float(value)
-            except ValueError:
-                raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
+            kw["nu"] = poisson_ratio(value)
         else:
             raise SurfmetInputError(f"unknown viscoelastic option {key!r}: use Eg, Er, tau, nu")
     missing = [k for k in ("eg", "er", "tau") if k not in kw]
