@@ -143,6 +143,22 @@ class NewtonSystem:
                          else op.tangential_inverse)
         self.matvecs = 0
         self.single = False
+        self._slip_diag = self._slip_diagonal(op, rolling) if self.ns else None
+
+    def _slip_diagonal(self, op: HalfSpacePair, rolling: bool) -> np.ndarray:
+        """The diagonal of the slip rows, as :meth:`matvec` forms them: the element's own
+        slip across its traction per unit rotation of that traction (the self term of
+        the slip operator along t), plus the linearised slip magnitude, row-scaled.
+        Dividing by it (Jacobi) puts the slip rows' eigenvalues near 1 beside the
+        adhesion rows' (whose FFT preconditioner does the same), instead of near a
+        negative constant: two to six times fewer GMRES products (measured, issue 19)."""
+        kxx, kyy = op.real["xx"], op.real["yy"]
+        if rolling:
+            dxx, dyy = (kxx[0, 0] - kxx[0, 1]) / op.dx, (kyy[0, 0] - kyy[0, 1]) / op.dx
+        else:
+            dxx, dyy = kxx[0, 0], kyy[0, 0]
+        own = self.G * (dxx * self.t[0] * self.e[1] - dyy * self.t[1] * self.e[0])
+        return (own + self.se * self.G / self.gs) * self.row / self.sref
 
     def increments(self, x: np.ndarray) -> np.ndarray:
         """Traction increments (Pa) of the unknowns x."""
@@ -181,6 +197,8 @@ class NewtonSystem:
             u = np.cumsum(u[..., ::-1], axis=-1)[..., ::-1] * self.op.dx
         q = self._inverse(u[0], u[1])
         out[:k] = np.take(q, self._ih) / self.G
+        if self.ns:
+            out[k : k + self.ns] = r[k : k + self.ns] / self._slip_diag
         return out
 
     def solve(self, rtol: float) -> NewtonStep:
