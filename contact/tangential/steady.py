@@ -25,7 +25,7 @@ from contact.tangential.kinematics import Creepage, rigid_slip
 from contact.tangential.nested import CoarseStart, coarse_grid, prolong
 from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult
-from contact.tangential.solver import SETTLE_RTOL, TangentialState, solve_tangential
+from contact.tangential.solver import TangentialState, solve_tangential
 
 # GMRES tolerance of the last Newton steps: each step's residual is formed afresh in
 # float64 and the last steps start from a residual that is already small, so 1e-2 of it
@@ -61,6 +61,7 @@ def steady_rolling(
     max_coupling: int = 30,
     nested: bool = True,
     polish_rtol: float = POLISH_RTOL,
+    start_only: bool = False,
 ) -> TangentialResult:
     """Solve steady rolling on ``grid``.
 
@@ -91,7 +92,10 @@ def steady_rolling(
         Start from the solution of a grid of twice the pitch (:mod:`contact.tangential.
         nested`), recursively; the answer is still the fine grid's.
     polish_rtol : float
-        GMRES tolerance of the last Newton steps (a coarse start takes a loose one).
+        GMRES tolerance of the last Newton steps.
+    start_only : bool
+        The answer is only the start of a finer solve (nested grids): the tangential
+        iteration stops once the stick and slip areas stand.
     """
     mu = check_friction(mu)
     creep = creepage or Creepage()
@@ -129,7 +133,7 @@ def steady_rolling(
             st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0],
                                      tol=1e-3 if loose[0] else tol, force=force,
                                      area=grid.area, polish_rtol=1e-4 if loose[0] else polish_rtol,
-                                     recouple=pressure_now)
+                                     recouple=pressure_now, start_only=start_only)
             return st[0]
 
         if fx is None:
@@ -179,8 +183,7 @@ def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
         return None
     # only a start: its own tolerances can be loose (the fine solve converges in full)
     r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
-                       tol=max(tol, 1e-3), max_coupling=max_coupling,
-                       polish_rtol=SETTLE_RTOL)
+                       tol=max(tol, 1e-3), max_coupling=max_coupling, start_only=True)
     return prolong(r.p, r.q, r.state, r.creepage.xi)
 
 
