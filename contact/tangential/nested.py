@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.tangential.grid import Grid
-from contact.tangential.kernels import SLIP
+from contact.tangential.kernels import SLIP, STICK
 from contact.tangential.solver import TangentialState
 
 # below this many elements a side a grid is solved from cold
@@ -76,3 +76,23 @@ def prolong(p: np.ndarray, q: np.ndarray, state: np.ndarray, xi: float) -> Coars
     st[(st == SLIP) & ~slip] = 1
     start = TangentialState(q=qf, s=np.zeros_like(qf), state=st, e=e)
     return CoarseStart(p=np.clip(_smooth(p), 0.0, None), state=start, xi=xi)
+
+
+# a prolonged traction within this fraction of the fine bound starts in slip
+REACHES_BOUND = 0.99
+
+
+def restate(state: TangentialState, g: np.ndarray) -> None:
+    """The fine states of a prolonged start, read off its tractions against the fine
+    grid's own bound g = mu p (in place): slip, along the traction, where the traction
+    reaches the bound, adhesion on the other loaded elements. The coarse states copied
+    to 2 x 2 fine elements make the slip band at the rim twice too wide; read this way the
+    fine solve settles in one Newton step fewer (256^2 free rolling: 6 instead of 7)."""
+    q = state.q
+    size = np.hypot(q[0], q[1])
+    loaded = g > 0
+    slip = loaded & (size > 0) & (size >= REACHES_BOUND * g)
+    state.state[:] = np.where(loaded, STICK, 0)
+    state.state[slip] = SLIP
+    state.e[:] = 0.0
+    state.e[:, slip] = q[:, slip] / size[slip]

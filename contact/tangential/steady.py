@@ -22,7 +22,7 @@ from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.influence import HalfSpacePair, PairConstants
 from contact.tangential.kinematics import Creepage, rigid_slip
-from contact.tangential.nested import CoarseStart, coarse_grid, prolong
+from contact.tangential.nested import CoarseStart, coarse_grid, prolong, restate
 from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult
 from contact.tangential.solver import TangentialState, solve_tangential
@@ -113,6 +113,8 @@ def steady_rolling(
     if np.any(p[:, -1] > 0):
         raise ContactInputError(
             "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    if start is not None:
+        restate(start.state, mu * p)
     st: list[TangentialState | None] = [None if start is None else start.state]
     xi = creep.xi if start is None else start.xi
     iterations = 0
