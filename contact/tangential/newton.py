@@ -18,9 +18,10 @@ then the influence by the inverse kernel spectrum.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
-from threadpoolctl import threadpool_limits
+from threadpoolctl import ThreadpoolController
 
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
@@ -43,8 +44,15 @@ def gmres(matvec, b: np.ndarray, precondition, rtol: float, restart: int = 100,
     a second thread gains little on an idle machine and, spinning for a busy core, costs
     ten to a hundred times the product itself on a loaded one (measured, issue 19).
     """
-    with threadpool_limits(limits=1, user_api="blas"):
+    with _blas_controller().limit(limits=1, user_api="blas"):
         return _gmres(matvec, b, precondition, rtol, restart, max_cycles)
+
+
+@lru_cache(maxsize=1)
+def _blas_controller() -> ThreadpoolController:
+    """One inspection of the loaded BLAS libraries (it reads files: a millisecond a call,
+    a tenth of a small GMRES solve, measured, issue 19)."""
+    return ThreadpoolController()
 
 
 def _gmres(matvec, b, precondition, rtol, restart, max_cycles) -> np.ndarray:
