@@ -173,12 +173,18 @@ def solve_tangential(
     polish = False
     moving = True
     change = 0.0
+    same = False
     for it in range(1, max_outer + 1):
         H, S = st.state == STICK, st.state == SLIP
-        q0 = np.zeros_like(st.q)
-        q0[:, H] = st.q[:, H]
-        q0[:, S] = g[S] * st.e[:, S]
-        s0 = slip_of(op, q0, w, u0, rolling)
+        if same:
+            # nothing changed since the slip was formed (3D: no state change, the
+            # directions only move in the Newton step): it is this step's residual
+            q0, s0 = st.q.copy(), st.s
+        else:
+            q0 = np.zeros_like(st.q)
+            q0[:, H] = st.q[:, H]
+            q0[:, S] = g[S] * st.e[:, S]
+            s0 = slip_of(op, q0, w, u0, rolling)
         residual = None if force is None else force / area - float(q0[0].sum())
         system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
         step = system.solve(polish_rtol if polish else MOVING_RTOL if moving else SETTLE_RTOL)
@@ -206,6 +212,7 @@ def solve_tangential(
             changes, _ = update_states(q[0], q[1], s[0], s[1], g, st.state, st.e[0],
                                        st.e[1], dxx, dyy, slack, 2 | aim)
         changes += entered
+        same = changes == 0 and ncomp == 2
         de = max(de, rot)
         moving = changes > 0 or change > 1e-3
         was_polished = polish
