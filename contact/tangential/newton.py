@@ -100,6 +100,15 @@ def flat_indices(mask: np.ndarray, ncomp: int) -> np.ndarray:
     return (idx[None, :] + mask.size * np.arange(ncomp)[:, None]).ravel()
 
 
+def diagonal(op: HalfSpacePair, rolling: bool) -> tuple[float, float]:
+    """The diagonal (x and y) of the slip operator: an element's slip per unit of its own
+    traction (m/Pa in a shift, 1/Pa in rolling)."""
+    kxx, kyy = op.real["xx"], op.real["yy"]
+    if not rolling:
+        return float(kxx[0, 0]), float(kyy[0, 0])
+    return (float(kxx[0, 0] - kxx[0, 1]) / op.dx, float(kyy[0, 0] - kyy[0, 1]) / op.dx)
+
+
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """z component of a x b for stacked 2-vectors."""
     return a[0] * b[1] - a[1] * b[0]
@@ -160,11 +169,7 @@ class NewtonSystem:
         Dividing by it (Jacobi) puts the slip rows' eigenvalues near 1 beside the
         adhesion rows' (whose FFT preconditioner does the same), instead of near a
         negative constant: two to six times fewer GMRES products (measured, issue 19)."""
-        kxx, kyy = op.real["xx"], op.real["yy"]
-        if rolling:
-            dxx, dyy = (kxx[0, 0] - kxx[0, 1]) / op.dx, (kyy[0, 0] - kyy[0, 1]) / op.dx
-        else:
-            dxx, dyy = kxx[0, 0], kyy[0, 0]
+        dxx, dyy = diagonal(op, rolling)
         own = self.G * (dxx * self.t[0] * self.e[1] - dyy * self.t[1] * self.e[0])
         return (own + self.se * self.G / self.gs) * self.row / self.sref
 

@@ -29,7 +29,7 @@ from contact.errors import ConvergenceError
 from contact.tangential.influence import HalfSpacePair
 from contact.tangential.kernels import SLIP, STICK, update_states
 from contact.tangential.kinematics import rolling_slip
-from contact.tangential.newton import NewtonSystem, cross
+from contact.tangential.newton import NewtonSystem, cross, diagonal
 
 # relative tolerances of the inner (GMRES) solves of an inexact Newton iteration
 # (Dembo, Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400): loose while elements
@@ -81,15 +81,6 @@ def slip_of(op: HalfSpacePair, q: np.ndarray, w: np.ndarray, u0: np.ndarray,
     """s = w + L(A q + u0)."""
     u = op.tangential(q[0], q[1]) + u0
     return w + (rolling_slip(u, op.dx) if rolling else u)
-
-
-def diagonal(op: HalfSpacePair, rolling: bool) -> tuple[float, float]:
-    """The diagonal (x and y) of the slip operator: an element's slip per unit of its own
-    traction (m/Pa in a shift, 1/Pa in rolling)."""
-    kxx, kyy = op.real["xx"], op.real["yy"]
-    if not rolling:
-        return float(kxx[0, 0]), float(kyy[0, 0])
-    return (float(kxx[0, 0] - kxx[0, 1]) / op.dx, float(kyy[0, 0] - kyy[0, 1]) / op.dx)
 
 
 def solve_tangential(
