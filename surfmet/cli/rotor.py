@@ -17,6 +17,7 @@ from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log
+from surfmet.mechanics.rotor_verdict import verdict_figure, verdict_lines, verdict_record
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
@@ -56,7 +57,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="leave-one-point-out errors from leverages (fast) or refits")
     p.add_argument("--threshold", type=float, default=4.0,
                    help="misread threshold in noise sigmas (default 4)")
-    p.add_argument("--plot", metavar="PATH", help="write the residual figure to PATH (.png/.pdf)")
+    p.add_argument("--plot", metavar="PATH", help="write the residual figure to PATH (.png/.pdf) "
+                   "and the verdict's figure beside it (PATH_verdict.png)")
+    p.add_argument("--rig", metavar="RIG.json",
+                   help="the rig (SI): ball_radius_m, mass_kg, axial_inertia_kg_m2, fps, "
+                   "step_deg, optional slope_rad, groups {NAME: {ball_loads_N: [N1, N2], "
+                   "columns: [...]}}; gives the verdict's lambda outputs and confounds "
+                   f"({PAPER_ALIAS} carries the paper's rig)")
     p.add_argument("--quiet", "-q", action="store_true",
                    help="no progress lines on stderr")
     add_json_flag(p)
@@ -432,6 +439,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(source)
+    verdict = _verdict(args, ks, cols)
     # progress on stderr, unless asked for quiet, or JSON goes to a pipe and stderr is not a
     # terminal (it may be the same pipe)
     show = not getattr(args, "quiet", False) and (not args.json or sys.stderr.isatty())
@@ -448,8 +456,38 @@ def run(args: argparse.Namespace) -> int:
 
         residual_figure(an, path=args.plot)
         log(f"residual figure written to {args.plot}")
+        vpath = _verdict_plot_path(args.plot)
+        verdict_figure(verdict, vpath)
+        log(f"verdict figure written to {vpath}")
     if args.json:
-        emit_json(analysis_record(an, source))
+        emit_json({"verdict": verdict_record(verdict), **analysis_record(an, source)})
     else:
+        print("\n".join(verdict_lines(verdict)))
+        print()
         _print_summary(an, source)
     return 0
+
+
+def _verdict_plot_path(plot: str) -> str:
+    p = Path(plot)
+    return str(p.with_name(p.stem + "_verdict" + p.suffix))
+
+
+def _verdict(args: argparse.Namespace, ks: list[int], cols: dict[str, list[float]]) -> Any:
+    """The joint model's verdict (:mod:`surfmet.mechanics.rotor_verdict`): the paper's rig for
+    ``paper2022``, ``--rig`` when given, else groups from the column prefixes and no rig."""
+    from contact.rotor.rig import paper_rig
+    from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict
+
+    if args.plot:
+        check_output(_verdict_plot_path(args.plot), "--plot (verdict figure)")
+    step = math.radians(args.step_deg)
+    if args.rig:
+        return judge(cols, ks, fps=args.fps, step=step, rig=load_rig(args.rig))
+    if args.file == PAPER_ALIAS and args.fps == FPS and step == MARK_STEP:
+        return paper_verdict()
+    rig = paper_rig() if args.file == PAPER_ALIAS else None
+    if rig is None:
+        log("note: no --rig: groups from the column names; the lambda outputs and the "
+            "confounds are left out")
+    return judge(cols, ks, fps=args.fps, step=step, rig=rig)

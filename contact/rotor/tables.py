@@ -1,0 +1,126 @@
+"""Whole tables of launches simulated by the ODE integrator (:mod:`contact.rotor.simulator`):
+the calibration and the tests of the joint model's verdict.
+
+A table is two groups of launches (the paper's asymmetric collar, ``as``, against the end of
+the rod and the symmetric one, ``s``) on a plate whose slope is a trend plus one wave; each
+launch has its own release point, release time, reading scatter and misread rows, and its own
+rolling-friction coefficient (the launch-to-launch spread). The stated prior of the
+calibration (:func:`draw_scenario`) is the paper's rig with accelerations of 1.5-2.8 rad/s²,
+slopes of 0.6-1.0 degrees and the scatter Table 3 shows.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.rotor.mechanics import G_STANDARD, MassProperties, mass_properties
+from contact.rotor.paper import FPS, MARK_STEP
+from contact.rotor.simulator import HiddenEffects, simulate_rotor
+
+__all__ = ["PlateTrack", "Scenario", "draw_scenario", "group_loads", "simulate_table"]
+
+GROUPS = {"as": "end", "s": "symmetric"}
+"""The paper's two collar positions, as :func:`~contact.rotor.mechanics.mass_properties`
+names them."""
+
+
+@dataclass(frozen=True)
+class PlateTrack:
+    """Equivalent slope along the track: ``S0 - kappa x`` plus a wave of ``wave_amplitude``
+    (rad/s² of acceleration), ``wave_period`` (rad of rotor turn) and ``wave_phase``."""
+
+    slope: float
+    slope_gradient: float = 0.0
+    wave_amplitude: float = 0.0
+    wave_period: float = 4 * math.pi
+    wave_phase: float = 0.0
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One simulated table's truth: per group its track and rolling-friction law
+    (``s_r``, ``lam``), the launch spread ``launch_sd`` (rad/s²), the reading scatter
+    ``reading_sd`` (rad) and the launches per group."""
+
+    tracks: dict[str, PlateTrack]
+    s_r: dict[str, float]
+    lam: float
+    launch_sd: float
+    reading_sd: float
+    launches: int = 3
+    n_marks: int = 25
+    misreads: bool = True
+
+
+def _props(group: str) -> MassProperties:
+    return mass_properties(collar_offset=GROUPS[group])
+
+
+def group_loads(group: str, g: float = G_STANDARD) -> tuple[float, float]:
+    """Ball loads (N) of a group of the paper's rotor on a level plate."""
+    p = _props(group)
+    mg = p.mass * g
+    return mg * p.d2 / (p.d1 + p.d2), mg * p.d1 / (p.d1 + p.d2)
+
+
+def draw_scenario(rng: np.random.Generator, *, offset: float = 0.0, track_differs: bool = False,
+                  lam: float = 1.0, slope_deg: tuple[float, float] = (0.6, 1.0)) -> Scenario:
+    """A table from the calibration's prior.
+
+    The symmetric group's acceleration exceeds the asymmetric one's by ``offset`` rad/s²
+    (through its rolling-friction coefficient); ``track_differs`` gives the groups tracks of
+    their own (another trend and another wave); ``lam`` the exponent of ``M_r = s_r N**lam``.
+    """
+    p = _props("s")
+    j = p.rolling_inertia
+    mgr = p.mass * G_STANDARD * p.ball_radius
+    slope = math.sin(math.radians(rng.uniform(*slope_deg)))
+    eps = rng.uniform(1.5, 2.8)
+    torque = mgr * slope - eps * j
+    n_s = group_loads("s")
+    s_r_s = torque / (n_s[0] ** lam + n_s[1] ** lam)
+    # the groups' load sums are equal (M g), so at lam = 1 one s_r gives one torque
+    s_r = {"s": s_r_s - offset * j / (n_s[0] ** lam + n_s[1] ** lam), "as": s_r_s}
+    # eta (rad/s² per rad of turn) = M g R^2 kappa / (J + M R^2)
+    to_kappa = j / (p.mass * G_STANDARD * p.ball_radius**2)
+
+    def track() -> PlateTrack:
+        return PlateTrack(slope, rng.uniform(-0.02, 0.06) * to_kappa, rng.uniform(0.0, 0.4),
+                          rng.uniform(1.5, 6.0) * 2 * math.pi, rng.uniform(0, 2 * math.pi))
+
+    shared = track()
+    tracks = {"as": shared, "s": track() if track_differs else shared}
+    return Scenario(tracks, s_r, lam, rng.uniform(0.01, 0.06), rng.uniform(0.02, 0.08))
+
+
+def simulate_table(scn: Scenario, rng: np.random.Generator, fps: float = FPS,
+                   step: float = MARK_STEP) -> dict[str, np.ndarray]:
+    """Frame columns ``as1..`` and ``s1..`` of one simulated table."""
+    cols: dict[str, np.ndarray] = {}
+    for group in ("as", "s"):
+        p = _props(group)
+        n = group_loads(group)
+        tr = scn.tracks[group]
+        for i in range(1, scn.launches + 1):
+            d_eps = scn.launch_sd * rng.standard_normal()
+            s_r = scn.s_r[group] + d_eps * p.rolling_inertia / (n[0] ** scn.lam + n[1] ** scn.lam)
+            mis = ()
+            by = ()
+            if scn.misreads and rng.random() < 0.5:
+                mis = (int(rng.integers(4, scn.n_marks + 1)),)
+                by = (int(rng.choice([-1, 1]) * rng.integers(3, 6)),)
+            hidden = HiddenEffects(
+                effect="decaying", decay_form="position", slope=tr.slope,
+                slope_gradient=tr.slope_gradient, viscous=0.0, com_offset=0.0, com_phase=0.0,
+                s_r=s_r, lam=scn.lam, start_angle=-rng.uniform(0.001, 0.1),
+                start_time=rng.uniform(0.0, 0.5), misread=mis, misread_by=by,
+                reading_sd=scn.reading_sd, eps0=math.nan, eta=math.nan, gamma=0.0,
+                amplitude=0.0, wave_amplitude=tr.wave_amplitude, wave_period=tr.wave_period,
+                wave_phase=tr.wave_phase)
+            run = simulate_rotor(hidden, n_marks=scn.n_marks, fps=fps, step=step, props=p,
+                                 seed=int(rng.integers(2**31)))
+            cols[f"{group}{i}"] = np.asarray(run.frames, dtype=float)
+    return cols

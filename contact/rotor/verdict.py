@@ -1,0 +1,247 @@
+"""The paper's question answered once: is the difference between the two groups of a rotor
+table evidence that ``M_r`` is not linear in ``N``, and if not, what made it?
+
+:func:`judge_table` fits all launches jointly (:mod:`contact.rotor.joint`), tests one shared
+track against group-specific ones (the F statistic's null distribution calibrated by
+simulation, :mod:`contact.rotor.tables`, ``verdict_calibration.json``), and gives one code:
+
+- ``undetermined``: no shared track explains both groups (they did not run under the same
+  conditions: another lane, slope, launch direction or run-in state), so the offset cannot be
+  laid to rolling friction; what differs (trend or waviness) and where is said;
+- ``difference``: a constant offset on a shared track, ``|offset| / stderr`` beyond Student's
+  t at 2 % two-sided (its false-alarm rate measured on simulated tables without an offset);
+- ``no_difference``: the groups agree on a shared track: nothing here contradicts
+  ``lambda = 1``.
+
+With a rig (:mod:`contact.rotor.rig`) the offset becomes a torque, a change of slope and the
+``lambda`` it needs, with the largest offset ``lambda = 4/3`` could give and the launches per
+group that would tell 4/3 from 1; and a budget of confounds (:mod:`contact.rotor.confounds`).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+from scipy.stats import t as student_t
+
+from contact.errors import ContactInputError
+from contact.rotor.confounds import Confound, confound_budget
+from contact.rotor.joint import (
+    GroupOffset,
+    JointFit,
+    TableData,
+    fit_table,
+    group_offset,
+    prepare_table,
+    shared_track_f,
+)
+from contact.rotor.mechanics import G_STANDARD
+from contact.rotor.rig import (
+    UPPER_SLOPE,
+    Rig,
+    launches_needed,
+    offset_for_lambda,
+    slope_lower_bound,
+    solve_lambda,
+)
+from contact.rotor.track import track_acceleration, track_basis
+
+__all__ = ["CODES", "ExponentNeeded", "RotorVerdict", "TrackDifference", "calibration",
+           "judge_table"]
+
+CODES = ("no_difference", "difference", "undetermined")
+CALIBRATION_FILE = Path(__file__).with_name("verdict_calibration.json")
+
+
+@lru_cache(maxsize=1)
+def calibration() -> dict:
+    """The simulation calibration (``benchmarks/rotor_verdict_calibration.py``)."""
+    return json.loads(CALIBRATION_FILE.read_text())
+
+
+@dataclass(frozen=True)
+class TrackDifference:
+    """How the group-specific tracks differ (minuend - subtrahend): ``trend`` (rad/s² per m
+    of track), ``waviness_rms`` (rad/s², what the trend leaves), ``regions`` ((start, end) m
+    of track where the difference exceeds two standard errors), ``start``/``end`` its value at
+    both ends (rad/s²)."""
+
+    trend: float
+    waviness_rms: float
+    regions: tuple[tuple[float, float], ...]
+    start: float
+    end: float
+
+
+@dataclass(frozen=True)
+class ExponentNeeded:
+    """What ``lambda`` the offset needs at ``slope`` (rad; ``slope_basis`` says whether it was
+    given or assumed), over the offset's interval; ``offset_lambda_4_3``: the largest offset
+    ``lambda = 4/3`` gives there (rad/s²); ``launches``: launches per group that tell 4/3 from
+    1 with 90 % power at 2 %; ``slope_lower_bound``: the slope the mean acceleration needs."""
+
+    value: float
+    ci_low: float
+    ci_high: float
+    slope: float
+    slope_basis: str
+    slope_lower_bound: float
+    offset_lambda_4_3: float
+    launches: int | None
+
+
+@dataclass(frozen=True)
+class RotorVerdict:
+    """The answer: ``code`` (one of :data:`CODES`) and ``sentence``, with everything behind it."""
+
+    code: str
+    sentence: str
+    offset: GroupOffset
+    shared_track_adequate: bool
+    shared_track_p: float
+    f_statistic: float
+    f_critical: float
+    difference: TrackDifference | None
+    exponent: ExponentNeeded | None
+    confounds: tuple[Confound, ...]
+    mean_acceleration: float
+    data: TableData
+    shared: JointFit
+    groupwise: JointFit
+    rig: Rig | None
+
+    @property
+    def misread_rows(self) -> tuple[tuple[str, int], ...]:
+        bad = self.data.mask & ~self.shared.used
+        return tuple((self.data.names[i], int(self.data.k[i, j])) for i, j in np.argwhere(bad))
+
+
+def _p_value(f: float) -> float:
+    null = calibration()["shared_track_test"]["null_f_sorted"]
+    return (1 + sum(v >= f for v in null)) / (len(null) + 1)
+
+
+def _difference(data: TableData, fit: JointFit, mi: int, si: int,
+                radius: float) -> TrackDifference:
+    """The minuend's model acceleration minus the subtrahend's along the track."""
+    lay = fit.layout
+    s = np.linspace(0.0, float(np.max(data.angles)), 241)
+    beta, delta, _, _ = lay.split(fit.x)
+    g = data.group_of_launch
+    d = (delta[g == mi].mean() + track_acceleration(s, beta[mi], lay.span)
+         - delta[g == si].mean() - track_acceleration(s, beta[si], lay.span))
+    m, nb = lay.degree, lay.n_tracks * lay.degree
+    grad = np.zeros((s.size, lay.n_params))
+    vals = track_basis(s, lay.span, m)[0]
+    grad[:, mi * m : (mi + 1) * m] = vals
+    grad[:, si * m : (si + 1) * m] = -vals
+    grad[:, nb : nb + lay.n_launches] = np.where(g == mi, 1.0 / np.sum(g == mi), 0.0) - np.where(
+        g == si, 1.0 / np.sum(g == si), 0.0)
+    scale = max(fit.chi2 / max(fit.n_used - lay.n_params, 1), 1.0)
+    se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, fit.cov, grad) * scale, 0.0))
+    x = s * radius
+    coef = np.polyfit(x, d, 1)
+    wav = float(np.sqrt(np.mean((d - np.polyval(coef, x)) ** 2)))
+    out = np.abs(d) > 2 * se
+    regions, start = [], None
+    for i, flag in enumerate(out):
+        if flag and start is None:
+            start = i
+        if start is not None and (not flag or i == out.size - 1):
+            end = i if flag else i - 1
+            regions.append((float(x[start]), float(x[end])))
+            start = None
+    return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]))
+
+
+def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
+    low = slope_lower_bound(rig, mean_acc)
+    slope, basis = (rig.slope, "given") if rig.slope is not None else (
+        max(UPPER_SLOPE, low), "assumed: the paper's slopes are under 1 degree")
+    args = (rig, off.minuend, off.subtrahend, slope, mean_acc)
+    lam = [solve_lambda(v, *args) for v in (off.value, off.ci_low, off.ci_high)]
+    lo, hi = (min(lam[1], lam[2]), max(lam[1], lam[2])) if not any(map(math.isnan, lam[1:])) \
+        else (math.nan, math.nan)
+    eff = offset_for_lambda(4 / 3, *args)
+    return ExponentNeeded(lam[0], lo, hi, slope, basis, low, eff,
+                          launches_needed(eff, off.launch_sd))
+
+
+def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Sequence[str]],
+                *, fps: float, step: float, k: Sequence[int] | None = None,
+                rig: Rig | None = None,
+                mechanisms: Mapping[str, float] | None = None) -> RotorVerdict:
+    """The verdict on a table: ``groups`` ({name: columns}, two groups; the offset is the
+    second minus the first), ``rig`` for the exponent and the confounds, ``mechanisms``
+    ({name: implied offset, rad/s²}) to put into the confound budget."""
+    data = prepare_table(columns, groups, fps, step, k)
+    if len(data.group_names) != 2:
+        raise ContactInputError(f"the verdict compares two groups; the table has "
+                                f"{len(data.group_names)} ({', '.join(data.group_names)})")
+    shared, groupwise = fit_table(data)
+    cal = calibration()
+    f = shared_track_f(shared, groupwise)
+    f_crit = float(cal["shared_track_test"]["critical_f"])
+    adequate = bool(f <= f_crit)
+    off = group_offset(data, shared, minuend=1, subtrahend=0)
+    diff = None if adequate else _difference(data, groupwise, 1, 0,
+                                             rig.ball_radius if rig else 0.02)
+    beta, delta, _, _ = shared.layout.split(shared.x)
+    s = np.linspace(0.0, float(np.max(data.angles)), 241)
+    prof = track_acceleration(s, beta[0], shared.layout.span)
+    mean_acc = float(np.mean(delta) + np.mean(prof))
+    t_crit = float(student_t.ppf(0.5 + cal["offset_test"]["t_level"] / 2, max(off.dof, 1)))
+    code = "undetermined" if not adequate else (
+        "difference" if abs(off.t_statistic) > t_crit else "no_difference")
+    exponent = _exponent(rig, off, mean_acc) if rig is not None else None
+    confounds: tuple[Confound, ...] = ()
+    if rig is not None:
+        smallest = 0.0 if off.ci_low <= 0 <= off.ci_high else min(abs(off.ci_low),
+                                                                  abs(off.ci_high))
+        confounds = confound_budget(rig, off.value, max(smallest, 1e-300), exponent.slope,
+                                    mean_acc, float(np.ptp(prof)), float(np.max(s)),
+                                    off.minuend, off.subtrahend, mechanisms)
+    sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig)
+    return RotorVerdict(code, sentence, off, adequate, _p_value(f), f, f_crit, diff, exponent,
+                        confounds, mean_acc, data, shared, groupwise, rig)
+
+
+def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDifference | None,
+              exponent: ExponentNeeded | None, rig: Rig | None) -> str:
+    pair = f"{off.minuend} - {off.subtrahend}"
+    ci = f"[{off.ci_low:+.3f}, {off.ci_high:+.3f}] rad/s² ({off.level:.0%})"
+    if code == "undetermined":
+        where = ", ".join(f"{a * 1e3:.0f}-{b * 1e3:.0f} mm" for a, b in diff.regions) or "nowhere"
+        kind = "trend" if abs(diff.end - diff.start) > 2 * diff.waviness_rms else "waviness"
+        return (f"undetermined: no shared track explains both groups (F = {f:.1f}, calibrated "
+                f"p = {p:.2g}); the groups' accelerations differ by a {kind} along the track "
+                f"({pair}: {diff.start:+.3f} rad/s² at the release, {diff.end:+.3f} at the last "
+                f"mark, trend {diff.trend:+.3g} rad/s² per m, waviness {diff.waviness_rms:.3f} "
+                f"rad/s² rms), beyond two standard errors at {where} of track; they did not "
+                f"run under the same conditions, so the offset {off.value:+.3f} rad/s² cannot "
+                f"be laid to rolling friction.")
+    if code == "no_difference":
+        tail = ""
+        if exponent is not None:
+            tail = (f" At the slope used, lambda = 4/3 would give at most "
+                    f"{exponent.offset_lambda_4_3:+.4f} rad/s²; telling it from 1 needs "
+                    f"{exponent.launches or 'more than 100000'} launches per group.")
+        return (f"no_difference: the groups agree on a shared track ({pair} = {off.value:+.3f} "
+                f"rad/s², {ci}): nothing here contradicts lambda = 1.{tail}")
+    text = (f"difference: a constant offset on a shared track, {pair} = {off.value:+.3f} rad/s² "
+            f"{ci}")
+    if rig is not None and exponent is not None:
+        torque = off.value * rig.rolling_inertia
+        dslope = torque / (rig.mass * G_STANDARD * rig.ball_radius)
+        lam = (f"lambda = {exponent.value:.3g} [{exponent.ci_low:.3g}, {exponent.ci_high:.3g}]"
+               if math.isfinite(exponent.value) else "no lambda in 0.05-20")
+        text += (f", a torque of {torque:+.3g} N m or a slope change of "
+                 f"{math.degrees(dslope):+.3g} deg; at a slope of "
+                 f"{math.degrees(exponent.slope):.3g} deg ({exponent.slope_basis}) it needs {lam}")
+    return text + "."

@@ -1,0 +1,168 @@
+"""The rotor verdict (:mod:`contact.rotor.verdict`) as every entry point shows it: computed
+once per table, printed first by ``surfmet rotor``, carried by ``surfmet rolling --model
+all``, the demo and the report, in the same words and numbers.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Mapping, Sequence
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.units import quantity
+
+__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "verdict_figure",
+           "verdict_lines", "verdict_record"]
+
+
+def load_rig(path: str | Path) -> Any:
+    """A :class:`contact.rotor.rig.Rig` from a rig JSON file (one line on any error)."""
+    from contact.errors import ContactInputError
+    from contact.rotor.rig import rig_from_mapping
+
+    try:
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise SurfmetInputError(f"--rig {path}: no such file") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise SurfmetInputError(f"--rig {path}: not a JSON rig file ({exc})") from None
+    try:
+        return rig_from_mapping(data)
+    except ContactInputError as exc:
+        raise SurfmetInputError(f"--rig {path}: {exc}") from None
+
+
+def column_groups(names: Sequence[str]) -> dict[str, list[str]]:
+    """Groups from the column names' prefixes (``as1, as2`` -> ``as``), in order of first
+    appearance."""
+    out: dict[str, list[str]] = {}
+    for n in names:
+        out.setdefault(re.sub(r"\d+$", "", n) or n, []).append(n)
+    return out
+
+
+def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps: float,
+          step: float, rig: Any = None, mechanisms: Mapping[str, float] | None = None) -> Any:
+    """The verdict on a table; with a rig its groups, fps and step, else the column prefixes."""
+    from contact.errors import ContactInputError
+    from contact.rotor.verdict import judge_table
+
+    groups = ({g.name: list(g.columns) for g in rig.groups} if rig is not None
+              else column_groups(list(cols)))
+    if rig is not None:
+        fps, step = rig.fps, rig.step
+    try:
+        return judge_table(cols, groups, fps=fps, step=step, k=ks, rig=rig,
+                           mechanisms=mechanisms)
+    except ContactInputError as exc:
+        raise SurfmetInputError(str(exc)) from None
+
+
+@lru_cache(maxsize=1)
+def paper_verdict() -> Any:
+    """The verdict on the paper's Table 3 with the paper's rig (cached: one answer)."""
+    from contact.rotor.rig import paper_rig
+    from surfmet.data import path as data_path
+    from surfmet.frames import read_frames_table
+
+    ks, cols = read_frames_table(data_path("table3_frames.tsv"))
+    rig = paper_rig()
+    return judge(cols, ks, fps=rig.fps, step=rig.step, rig=rig)
+
+
+def offset_record(v: Any) -> dict[str, Any]:
+    o = v.offset
+    return {"value": o.value, "unit": "rad/s²", "ci_low": o.ci_low, "ci_high": o.ci_high,
+            "level": o.level, "minuend": o.minuend, "subtrahend": o.subtrahend,
+            "stderr": quantity(o.stderr, "rad/s²"), "dof": o.dof,
+            "launch_sd": quantity(o.launch_sd, "rad/s²")}
+
+
+def verdict_record(v: Any) -> dict[str, Any]:
+    """The JSON ``verdict`` object (the issue's schema, every value with its unit)."""
+    from contact.rotor.verdict import calibration
+
+    cal = calibration()
+    rec: dict[str, Any] = {
+        "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
+        "shared_track": {"adequate": v.shared_track_adequate, "p_value": v.shared_track_p,
+                         "f_statistic": v.f_statistic, "f_critical": v.f_critical,
+                         "track_degree": v.shared.layout.degree,
+                         "false_alarm_rate": cal["shared_track_test"]["false_alarm_held_out"],
+                         "power_group_specific_tracks":
+                             cal["shared_track_test"]["power_group_specific_tracks"]},
+        "offset_test": {"false_alarm_zero_offset": cal["offset_test"]["false_alarm_zero_offset"],
+                        "power_by_offset": cal["offset_test"]["power_by_offset"]},
+        "mean_acceleration": quantity(v.mean_acceleration, "rad/s²"),
+        "misread_rows": [{"column": c, "k": k} for c, k in v.misread_rows],
+        "lambda_needed": None, "launches_needed": None, "confounds": [],
+    }
+    d = v.difference
+    if d is not None:
+        rec["track_difference"] = {
+            "trend": quantity(d.trend, "rad/s² per m"),
+            "waviness_rms": quantity(d.waviness_rms, "rad/s²"),
+            "at_release": quantity(d.start, "rad/s²"), "at_last_mark": quantity(d.end, "rad/s²"),
+            "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")} for a, b in d.regions]}
+    e = v.exponent
+    if e is not None:
+        rec["lambda_needed"] = {
+            "value": e.value, "ci_low": e.ci_low, "ci_high": e.ci_high, "unit": "",
+            "slope": quantity(e.slope, "rad"), "slope_basis": e.slope_basis,
+            "slope_lower_bound": quantity(e.slope_lower_bound, "rad"),
+            "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s²")}
+        rec["launches_needed"] = {"value": e.launches, "unit": "launches per group",
+                                  "to_tell": "lambda 4/3 from 1", "power": 0.9, "alpha": 0.02}
+        rec["confounds"] = [{"name": c.name,
+                             "equivalent_acceleration": quantity(c.equivalent_acceleration,
+                                                                 "rad/s²"),
+                             "can_explain": c.can_explain, "formula": c.formula,
+                             "assumption": c.assumption, "source": c.source}
+                            for c in v.confounds]
+    else:
+        rec["note"] = "no rig: the lambda outputs and the confounds need --rig RIG.json"
+    return rec
+
+
+def verdict_lines(v: Any) -> list[str]:
+    """The verdict in words, first thing every entry point prints."""
+    o = v.offset
+    lines = [f"VERDICT  {v.sentence}",
+             f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s2, "
+             f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (launch-to-launch sd "
+             f"{o.launch_sd:.4f} rad/s2, t on {o.dof} dof)",
+             f"  shared track ({v.shared.layout.degree}-term profile): "
+             f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
+             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g}"]
+    if v.misread_rows:
+        lines.append("  misread rows left out by the joint model: "
+                     + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
+    e = v.exponent
+    if e is None:
+        lines.append("  (no rig: the lambda outputs and the confounds need --rig RIG.json)")
+        return lines
+    lam = (f"{e.value:.3g} [{e.ci_low:.3g}, {e.ci_high:.3g}]" if math.isfinite(e.value)
+           else "none in 0.05-20")
+    lines += [f"  lambda needed at slope {math.degrees(e.slope):.3g} deg ({e.slope_basis}; the "
+              f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam}",
+              f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s2; "
+              f"launches per group to tell 4/3 from 1 (90 % power, 2 %): "
+              f"{e.launches if e.launches is not None else 'more than 100000'}",
+              "  confounds (equivalent acceleration, rad/s2; can it make the offset?):"]
+    for c in v.confounds:
+        lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
+                     f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
+    return lines
+
+
+def verdict_figure(v: Any, path: str | Path) -> None:
+    """Local accelerations from the frames against track position, per group, with the
+    joint model; and the lambda needed against the assumed slope."""
+    from surfmet.plots.rotor_verdict import draw_verdict
+
+    draw_verdict(v, path)
