@@ -17,8 +17,8 @@ from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log
-from surfmet.mechanics.rotor_verdict import verdict_figure, verdict_lines, verdict_record
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.rotor_verdict import verdict_figure, verdict_lines, verdict_record
 from surfmet.units import quantity
 
 PAPER_ALIAS = "paper2022"
