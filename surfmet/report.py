@@ -368,9 +368,10 @@ def _overview(sections: Sequence[ScanSection]) -> str:
 
 
 def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report",
-                options: dict[str, Any] | None = None, hertz: HertzOptions | None = None
-                ) -> str:
-    """The report page for computed sections (see :func:`scan_section`)."""
+                options: dict[str, Any] | None = None, hertz: HertzOptions | None = None,
+                rotor: Any = None) -> str:
+    """The report page for computed sections (see :func:`scan_section`); ``rotor``: a rotor
+    verdict (:mod:`contact.rotor.verdict`) to put first."""
     from surfmet import __version__
 
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
@@ -381,7 +382,12 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
              f"<h1>{esc(title)}</h1>",
              f'<p class="small">surfmet {esc(__version__)}, {esc(now)}; options: '
              f"{esc(json.dumps(_jsonable(opts), ensure_ascii=False) if opts else 'defaults')}"
-             "</p>", _overview(sections)]
+             "</p>"]
+    if rotor is not None:
+        from surfmet.report_rotor import rotor_html
+
+        parts.append(rotor_html(rotor))
+    parts.append(_overview(sections))
     parts.extend(_section_html(k, s, hertz) for k, s in enumerate(sections))
     parts.append("</body></html>")
     return "\n".join(parts)
@@ -396,6 +402,7 @@ def write_report(
     include_3d: bool = True,
     hertz: HertzOptions | None = None,
     progress: bool | None = None,
+    rotor: Any = None,
 ) -> list[ScanSection]:
     """Evaluate each scan and write the self-contained HTML report to ``out``.
 
@@ -411,6 +418,8 @@ def write_report(
         Render the 3D views (the slowest part; off-screen pyvista).
     hertz : HertzOptions, optional
         Add the Hertz-check section to each scan.
+    rotor : RotorVerdict, optional
+        The rotor verdict, first on the page.
     progress : bool, optional
         Progress bar on stderr (default: when stderr is a terminal).
 
@@ -432,6 +441,7 @@ def write_report(
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)
-    out.write_text(render_html(sections, title=title, options=options, hertz=hertz),
+    out.write_text(render_html(sections, title=title, options=options, hertz=hertz,
+                               rotor=rotor),
                    encoding="utf-8")
     return sections

@@ -53,12 +53,17 @@ def paper(paperdata):
     return json.loads(paperdata("paper_values.json").read_text(encoding="utf-8"))
 
 
+_INTERVAL = {"value", "unit", "ci_low", "ci_high", "level", "minuend", "subtrahend"}
+
+
 def _floats_outside_quantities(obj, path="$"):
     """Paths of numbers that are not the value of a {"value", "unit"} quantity."""
     bad = []
     if isinstance(obj, dict):
         if "value" in obj:
-            if set(obj) != {"value", "unit"} or not isinstance(obj["unit"], str):
+            # a quantity, or an interval quantity (the rotor verdict's offset and exponent)
+            if not ({"value", "unit"} <= set(obj) <= _INTERVAL) or not isinstance(
+                    obj["unit"], str):
                 bad.append(f"{path}: {sorted(obj)}")
             return bad
         for k, v in obj.items():
@@ -199,6 +204,18 @@ def test_contact_and_rolling_are_sound(demo):
     assert ro["lambda_eff"]["value"] == pytest.approx(fit.slope, rel=1e-12)
     assert ro["lambda_ci"]["value"] == pytest.approx(
         [fit.slope - t * fit.stderr, fit.slope + t * fit.stderr], rel=1e-9)
+
+
+def test_the_verdict_comes_first_and_equals_the_rotor_commands(demo):
+    """The paper's question is answered first, with the numbers of `surfmet rotor`."""
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+
+    got = demo["summary"]["verdict"]
+    want = json.loads(json.dumps(verdict_record(paper_verdict())))
+    assert got["code"] == want["code"] and got["group_offset"] == want["group_offset"]
+    lines = [ln for ln in demo["stdout"].splitlines() if ln.strip()]
+    assert lines[0].startswith("The paper's question")
+    assert got["sentence"][:60] in " ".join(demo["stdout"].split())
 
 
 def test_every_figure_is_a_non_blank_png(demo):

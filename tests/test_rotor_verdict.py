@@ -151,7 +151,9 @@ def test_paper_table_verdict_through_the_cli(capsys) -> None:
     assert go["unit"] == "rad/s²" and go["minuend"] == "s" and go["subtrahend"] == "as"
     assert go["ci_low"] < go["value"] < go["ci_high"]
     assert set(v["shared_track"]) >= {"adequate", "p_value"}
-    assert v["lambda_needed"]["slope"]["unit"] == "rad"
+    assert v["lambda_assumptions"]["slope"]["unit"] == "rad"
+    assert v["lambda_needed"]["ci_low"] <= v["lambda_needed"]["value"] <= v["lambda_needed"][
+        "ci_high"]
     assert {c["name"] for c in v["confounds"]} >= {
         "launch_direction", "plate_flatness", "collar_unbalance", "run_in", "lateral_creep",
         "air_drag"}

@@ -182,6 +182,25 @@ def _rotor(t: _Text, summary: dict[str, Any]) -> None:
            f"{q_frames:.2f} frame. 'surfmet rotor paper2022' prints the full analysis.", "  ")
 
 
+def _verdict(t: _Text, summary: dict[str, Any]) -> None:
+    """The paper's question first: the rotor verdict (surfmet rotor paper2022 says the same)."""
+    v = summary.get("verdict")
+    if v is None:
+        return
+    t.head("The paper's question: is M_r linear in N? (the rotor verdict)")
+    t.para(v["sentence"], "  ")
+    o = v["group_offset"]
+    t.add(f"  group offset {o['minuend']} - {o['subtrahend']}: {o['value']:+.4f} rad/s², "
+          f"{o['level']:.0%} CI [{o['ci_low']:+.4f}, {o['ci_high']:+.4f}]")
+    lam = v.get("lambda_needed")
+    if lam and lam["value"] is not None:
+        la = v["lambda_assumptions"]
+        t.add(f"  lambda the offset would need at {math.degrees(_v(la['slope'])):.2g}° "
+              f"({la['slope_basis']}): {lam['value']:.3g}; lambda = 4/3 gives at most "
+              f"{_v(la['largest_offset_lambda_4_3']):+.4f} rad/s² there")
+    t.add("  'surfmet rotor paper2022' prints the joint model, the confounds and the tests.")
+
+
 def _files(t: _Text, summary: dict[str, Any]) -> None:
     t.head("Files")
     out = summary.get("out_dir", ".")
@@ -196,6 +215,7 @@ def _files(t: _Text, summary: dict[str, Any]) -> None:
 def story(summary: dict[str, Any]) -> str:
     """The demo's findings as text for a terminal (from the summary alone)."""
     t = _Text()
-    for section in (_scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor, _files):
+    for section in (_verdict, _scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor,
+                    _files):
         section(t, summary)
     return "\n".join(t.lines)
