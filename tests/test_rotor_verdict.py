@@ -190,3 +190,30 @@ def test_bad_rig_is_one_line(tmp_path, capsys, groups, message) -> None:
 def test_rig_keys_are_exactly_the_documented_ones() -> None:
     with pytest.raises(ContactInputError, match="unknown keys"):
         rig_from_mapping({**json.loads(json.dumps({"ball_radius_m": 0.02})), "colour": 1})
+
+
+def test_readme_quotes_the_paper_verdict() -> None:
+    """The README's paragraph on the paper's question quotes the verdict's own numbers."""
+    import re
+    from pathlib import Path
+
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+
+    text = " ".join((Path(__file__).resolve().parents[1] / "README.md").read_text(
+        encoding="utf-8").split())
+    m = re.search(r"The group offset s − as is \+(\d\.\d+) rad/s² \(95 % CI (\d\.\d+) to "
+                  r"(\d\.\d+) rad/s².*?the verdict is \*\*(\w+)\*\*.*?\(F = (\d+\.\d)"
+                  r".*?need λ = (\d\.\d+) \((\d\.\d+) to (\d\.\d+)\) at a slope of 1°; λ = 4/3 "
+                  r"gives at most (\d\.\d+) rad/s² there, and telling 4/3 from 1 would take "
+                  r"(\d+) launches per group", text)
+    assert m, "the README no longer quotes the rotor verdict"
+    v = paper_verdict()
+    o, e = v.offset, v.exponent
+    assert [float(g) for g in m.groups()[:3]] == [round(o.value, 3), round(o.ci_low, 3),
+                                                   round(o.ci_high, 3)]
+    assert m.group(4) == v.code
+    assert float(m.group(5)) == round(v.f_statistic, 1)
+    assert [float(g) for g in m.groups()[5:8]] == [round(e.value, 2), round(e.ci_low, 2),
+                                                    round(e.ci_high, 2)]
+    assert float(m.group(9)) == round(e.offset_lambda_4_3, 3)
+    assert int(m.group(10)) == e.launches

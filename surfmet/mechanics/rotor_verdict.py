@@ -16,8 +16,8 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
-__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "verdict_figure",
-           "verdict_lines", "verdict_record"]
+__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "table_verdict",
+           "verdict_figure", "verdict_lines", "verdict_plot_path", "verdict_record"]
 
 
 def load_rig(path: str | Path) -> Any:
@@ -174,6 +174,35 @@ def verdict_lines(v: Any) -> list[str]:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
     return lines
+
+
+def verdict_plot_path(plot: str | Path) -> str:
+    """Where ``--plot PATH`` puts the verdict's figure: ``PATH_verdict`` beside it."""
+    p = Path(plot)
+    return str(p.with_name(p.stem + "_verdict" + p.suffix))
+
+
+def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, paper: bool,
+                  fps: float, step: float, rig_path: str | None = None
+                  ) -> tuple[Any, list[str]]:
+    """The verdict ``surfmet rotor`` prints, and notes: the paper's rig for the paper's table,
+    the rig file when given, else groups from the column prefixes and no rig (None when such
+    a table has no two groups of two launches: the per-launch analysis still stands)."""
+    from contact.rotor.paper import FPS, MARK_STEP
+    from contact.rotor.rig import paper_rig
+
+    if rig_path:
+        return judge(cols, ks, fps=fps, step=step, rig=load_rig(rig_path)), []
+    if paper:
+        if fps == FPS and step == MARK_STEP:
+            return paper_verdict(), []
+        return judge(cols, ks, fps=fps, step=step, rig=paper_rig()), []
+    notes = ["no --rig: groups from the column names; the lambda outputs and the confounds "
+             "are left out"]
+    try:
+        return judge(cols, ks, fps=fps, step=step), notes
+    except SurfmetInputError as exc:
+        return None, [*notes, f"no verdict: {exc}"]
 
 
 def verdict_figure(v: Any, path: str | Path) -> None:
