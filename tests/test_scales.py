@@ -200,3 +200,19 @@ def test_equal_votes_per_measurement():
     both = a.contributors("slope").all(axis=0)
     mean = 0.5 * (a.measurements[0].variance_slope + a.measurements[1].variance_slope)
     np.testing.assert_allclose(a.rms_slope[both] ** 2, mean[both], rtol=1e-12)
+
+
+@pytest.mark.realdata
+def test_container_slope_and_curvature_at_five_per_decade_match_the_peer(realdata):
+    # Reference numbers from SurfaceTopography 1.27.1, provenance in the JSON file.
+    import json
+    from pathlib import Path
+
+    ref = json.loads((Path(__file__).parent / "data" / "scales_container2_st.json")
+                     .read_text(encoding="utf-8"))
+    a = analyze_scales(read_container(realdata("container-2.zip")), per_decade=5)
+    for key, mine in (("variance_slope", a.rms_slope**2),
+                      ("variance_curvature", a.rms_curvature**2)):
+        sel = np.isfinite(mine)
+        np.testing.assert_allclose(a.distance[sel], ref[key]["distance_m"], rtol=1e-12)
+        np.testing.assert_allclose(mine[sel], ref[key]["value"], rtol=1e-9)
