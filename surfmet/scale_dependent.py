@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
 
@@ -246,36 +245,3 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     return ScaleAnalysis(d, np.sqrt(vs), np.sqrt(vc), _mean([m.acf for m in ms]),
                          _mean([m.vbm for m in ms]), 2 * np.pi / d, _mean([m.psd for m in ms]),
                          tuple(ms), per_decade)
-
-
-def scales_record(a: ScaleAnalysis) -> dict[str, Any]:
-    """The JSON record of ``surfmet scales`` (SI, every value with its unit)."""
-
-    def q(values: Any, unit: str) -> dict[str, Any]:
-        return {"value": [None if not np.isfinite(v) else float(v) for v in values],
-                "unit": unit}
-
-    slope_votes, curv_votes = a.contributors("slope"), a.contributors("curvature")
-    band = a.psd_band()
-    return {
-        "scale_dependent": {"distance": q(a.distance, "m"), "rms_slope": q(a.rms_slope, "1"),
-                            "rms_curvature": q(a.rms_curvature, "1/m"),
-                            "points_per_decade": a.per_decade},
-        "height_difference_acf": {"distance": q(a.distance, "m"), "A": q(a.acf, "m^2")},
-        "variable_bandwidth": {"bandwidth": q(a.distance, "m"),
-                               "rms_height": q(a.vbm_rms_height, "m")},
-        "psd": {"q": q(a.q, "rad/m"), "C": q(a.psd, "m^3"),
-                "window": "hann (non-periodic data), mean removed; maps: mean of the rows",
-                "measured_band": None if band is None else q(band, "rad/m")},
-        "measurements": [{
-            "file": m.file, "kind": m.kind, "pixel": {"value": m.pixel, "unit": "m"},
-            "size": {"value": m.size, "unit": "m"},
-            "reliability_cutoff": {"value": m.cutoff, "unit": "m"},
-            "cutoff_source": m.cutoff_source,
-            "tip_radius": {"value": m.tip_radius, "unit": "m"},
-            "rms_slope": q(np.sqrt(m.variance_slope), "1"),
-            "rms_curvature": q(np.sqrt(m.variance_curvature), "1/m"),
-            "contributes_slope": [bool(v) for v in slope_votes[i]],
-            "contributes_curvature": [bool(v) for v in curv_votes[i]],
-        } for i, m in enumerate(a.measurements)],
-    }

@@ -26,7 +26,7 @@ def test_container_json_shape_units_and_contributions(realdata, capsys):
     assert main(["scales", str(realdata("container-2.zip")), "--per-decade", "1", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     sd = rec["scale_dependent"]
-    assert sd["distance"]["unit"] == "m" and sd["rms_slope"]["unit"] == "1"
+    assert sd["distance"]["unit"] == "m" and sd["rms_slope"]["unit"] == ""
     assert sd["rms_curvature"]["unit"] == "1/m"
     d = np.array([np.nan if v is None else v for v in sd["distance"]["value"]])
     slope = np.array([np.nan if v is None else v for v in sd["rms_slope"]["value"]])
@@ -39,6 +39,8 @@ def test_container_json_shape_units_and_contributions(realdata, capsys):
     assert len(ms) == 3 and {"file", "kind", "reliability_cutoff"} <= set(ms[0])
     assert ms[1]["kind"] == "map" and ms[1]["reliability_cutoff"] == {"value": None, "unit": "m"}
     assert ms[2]["contributes_slope"][j] and not ms[0]["contributes_slope"][j]
+    assert ms[0]["reliable_from"]["value"] == pytest.approx(228.9070382e-9 / 75, rel=1e-9)
+    assert len(ms[1]["contributes_psd"]) == len(rec["psd"]["q"]["value"])
 
 
 @pytest.mark.realdata

@@ -61,7 +61,8 @@ def read_measurements(files: list[str]) -> list[Any]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.scale_dependent import analyze_scales, scales_record
+    from surfmet.records.scales import scales_record
+    from surfmet.scale_dependent import analyze_scales
 
     check_output(args.plot, "--plot")
     scans = read_measurements(args.files)
