@@ -103,6 +103,26 @@ class ScaleAnalysis:
         return float(self.q[good].min()), float(self.q[good].max())
 
 
+def level_as_stated(m: Profile | Topography) -> Profile | Topography:
+    """Apply the measurement's ``metadata["detrend_mode"]`` (a container's ``meta.yml``):
+    ``center`` the mean, ``height`` a least-squares line or plane, ``curvature`` a
+    least-squares quadratic; nothing for a scan that states none."""
+    mode = m.metadata.get("detrend_mode")
+    degree = {"center": 0, "height": 1, "curvature": 2}.get(mode or "")
+    if degree is None:
+        if mode not in (None, "", "none"):
+            raise SurfmetInputError(f"detrend_mode {mode!r} (center, height or curvature "
+                                    "expected)")
+        return m
+    if isinstance(m, Profile):
+        from profiles.form import remove_form
+
+        return m.replace(z=remove_form(m.z, m.dx, x=m.x, degree=degree).residuals)
+    from surfmet.areal.form import remove_form as remove_areal_form
+
+    return remove_areal_form(m, {0: "mean", 1: "plane", 2: "poly:2"}[degree])[0]
+
+
 def to_scan(m: Profile | Topography) -> Scan:
     """The engine's view of a measurement (SI arrays)."""
     if isinstance(m, Topography):
@@ -221,7 +241,9 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     Parameters
     ----------
     scans : list of Profile or Topography
-        The measurements (already levelled as their source prescribes; containers are).
+        The measurements; each is first levelled as its metadata's ``detrend_mode`` says
+        (containers state it per measurement; plain files state none and are used as read:
+        the statistics do not depend on a tilt).
     tip_radius : float, optional
         Probe radius (m) for the measurements whose file states none.
     per_decade : int
@@ -236,6 +258,7 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
         raise SurfmetInputError("no measurement to analyse")
     if tip_radius is not None and not (math.isfinite(tip_radius) and tip_radius > 0):
         raise SurfmetInputError(f"--tip-radius must be a positive length, got {tip_radius!r}")
+    scans = [level_as_stated(s) for s in scans]
     bands = [to_scan(s).bandwidth() for s in scans]
     d = distance_grid(min(b[0] for b in bands), max(b[1] for b in bands), per_decade)
     ms = [_measure(s, d, tip_radius) for s in scans]

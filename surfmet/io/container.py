@@ -18,8 +18,10 @@ Each measurement is decoded by the registry (format detection as for a lone file
 prepared as SurfaceTopography's ``CEReader`` prepares it, so that the scale-dependent
 statistics reproduce SurfaceTopography's asserted values: the heights are multiplied by
 ``height_scale`` (also when the data file calibrates its own heights, as the peer does),
-and detrended (``center``: mean; ``height``: least-squares line or plane; ``curvature``:
-least-squares quadratic). A two-column text profile is uniform when no step differs from
+and their ``detrend_mode`` is kept in the metadata: the analysis applies it
+(:func:`surfmet.scale_dependent.level_as_stated`; ``center``: mean, ``height``: least-squares
+line or plane, ``curvature``: least-squares quadratic), since loading a file never runs
+analysis code. A two-column text profile is uniform when no step differs from
 the mean step by more than 1e-6 in the file's unit (the peer's XYZ rule), with the pixel
 ``(x[-1] - x[0]) / (n - 1)``.
 
@@ -47,6 +49,7 @@ _MAX_META = 8 << 20
 _MAX_DATA = 1 << 31
 _TEXT_FORMATS = ("xyz",)
 _XYZ_TOL = 1e-6
+_DETREND_MODES = (None, "", "none", "center", "height", "curvature")
 
 
 def _is_container(buf: bytes) -> bool:
@@ -99,24 +102,6 @@ def _uniform_text_profile(scan: Profile, unit_factor: float) -> Profile:
     return scan
 
 
-def _detrend(scan: Profile | Topography, mode: str, name: str) -> Profile | Topography:
-    if mode in ("", "none", None):
-        return scan
-    degree = {"center": 0, "height": 1, "curvature": 2}.get(mode)
-    if degree is None:
-        raise format_error(name, FORMAT, f"detrend_mode {mode!r} (center, height or "
-                           "curvature expected)")
-    if isinstance(scan, Profile):
-        from profiles.form import remove_form
-
-        fit = remove_form(scan.z, scan.dx, x=scan.x, degree=degree)
-        return scan.replace(z=fit.residuals)
-    from surfmet.areal.form import remove_form as remove_areal_form
-
-    method = {0: "mean", 1: "plane", 2: "poly:2"}[degree]
-    return remove_areal_form(scan, method)[0]
-
-
 def _measurement(zf: Any, entry: dict[str, Any], index: int, name: str
                  ) -> Profile | Topography:
     member = _datafile(entry, name)
@@ -137,13 +122,15 @@ def _measurement(zf: Any, entry: dict[str, Any], index: int, name: str
         scan = read_bytes(data, format=fmt, name=label, channel=int(entry["data_source"]))
     if isinstance(scan, Profile) and fmt in _TEXT_FORMATS:
         scan = _uniform_text_profile(scan, length_factor(unit) if isinstance(unit, str) else 1)
+    if entry.get("detrend_mode") not in _DETREND_MODES:
+        raise format_error(name, FORMAT, f"detrend_mode {entry.get('detrend_mode')!r} of "
+                           f"{member!r} (center, height or curvature expected)")
     scale = float(entry.get("height_scale", 1.0) or 1.0)
     if scale != 1.0:
         if isinstance(scan, Profile):
             scan = scan.replace(z=scan.z * scale)
         else:
             scan = scan.replace(heights=scan.heights * scale)
-    scan = _detrend(scan, entry.get("detrend_mode"), name)
     md: dict[str, Any] = {**scan.metadata, "format": FORMAT, "measurement_format": fmt,
                           "container": name, "member": member,
                           "measurement": index, "name": entry.get("name", member),
