@@ -148,6 +148,21 @@ def test_self_affine_slope_at_distance_and_psd_level_and_slope():
     assert slope == pytest.approx(-1 - 2 * hurst, abs=0.06)
 
 
+@pytest.mark.parametrize("hurst", [0.3, 0.8])
+def test_variable_bandwidth_grows_as_the_hurst_power(hurst):
+    # Self-affine: the rms height over a window of width ℓ scales as ℓ^H (Jacobs, Junge &
+    # Pastewka 2017, sec. 3.3); a tilted line leaves nothing once each segment loses its line.
+    from profiles.scales import variable_bandwidth
+
+    z = _self_affine(4096, hurst, 1e-8, 1)[0][:4096]
+    w, r = variable_bandwidth(make_scan(z, 1e-8))
+    assert w[0] == pytest.approx(4096e-8) and np.allclose(w[1:] / w[:-1], 0.5)
+    sel = (w >= 32e-8) & (w <= 1024e-8)
+    assert np.polyfit(np.log(w[sel]), np.log(r[sel]), 1)[0] == pytest.approx(hurst, abs=0.05)
+    x = np.arange(100) * 1e-8
+    assert np.all(variable_bandwidth(make_scan(3e-3 * x + 1e-9, 1e-8))[1] < 1e-20)
+
+
 def test_parseval_psd_against_rms_height_and_slope():
     from surfmet.psd import profile_psd
 
