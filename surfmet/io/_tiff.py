@@ -57,6 +57,21 @@ def is_tiff(buf: bytes) -> bool:
     return buf[:4] in (b"II*\0", b"MM\0*")
 
 
+def first_ifd_tags(buf: bytes) -> set[int]:
+    """The tag numbers of the first IFD (empty when the bytes do not hold one); for magic
+    checks, so it never raises."""
+    if not is_tiff(buf) or len(buf) < 8:
+        return set()
+    order = "<" if buf[:2] == b"II" else ">"
+    (pos,) = struct.unpack_from(order + "I", buf, 4)
+    if pos + 2 > len(buf):
+        return set()
+    (n,) = struct.unpack_from(order + "H", buf, pos)
+    if pos + 2 + 12 * n > len(buf):
+        return set()
+    return {struct.unpack_from(order + "H", buf, pos + 2 + 12 * k)[0] for k in range(n)}
+
+
 def read_ifds(buf: bytes, name: str, fmt: str) -> list[Ifd]:
     """Every IFD of the chain, in file order."""
     r = ByteReader(buf, name, fmt)

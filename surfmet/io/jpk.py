@@ -27,7 +27,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.io._binary import ByteReader, channel_index, check_step, format_error
-from surfmet.io._tiff import Ifd, is_tiff, read_ifds, strip_image
+from surfmet.io._tiff import Ifd, first_ifd_tags, read_ifds, strip_image
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -41,12 +41,8 @@ _UNIT, _SCALING, _MULTIPLY, _OFFSET = 0x12, 0x13, 0x14, 0x15
 
 
 def _is_jpk(buf: bytes) -> bool:
-    # A TIFF whose first directory carries JPK's grid-length tag.
-    if not is_tiff(buf):
-        return False
-    order = b"<" if buf[:2] == b"II" else b">"
-    tag = _GRID_U.to_bytes(2, "little" if order == b"<" else "big")
-    return tag + b"\x0c\x00" in buf[:65536] or tag + b"\x00\x0c" in buf[:65536]
+    # A TIFF whose first directory carries JPK's grid-length tags.
+    return {_GRID_U, _GRID_I} <= first_ifd_tags(buf)
 
 
 def _slot(ifd: Ifd, name: str, fname: str) -> tuple[str, float, float]:
