@@ -8,6 +8,7 @@ from __future__ import annotations
 import io
 import zipfile
 
+import numpy as np
 import pytest
 
 import surfmet
@@ -52,3 +53,22 @@ def test_missing_member_and_bad_index_are_one_line(realdata):
         read_bytes(broken, name="c.zip")
     with pytest.raises(SurfmetFormatError, match="measurement 5 does not exist"):
         read_bytes(buf, name="c.zip", measurement=5)
+
+
+def test_units_scale_and_tip_radius_from_meta_yml():
+    # A container written here: one text profile in µm with a 2x height scale and a tip.
+    rng = np.random.default_rng(3)
+    z = np.cumsum(rng.normal(size=400)) * 1e-3
+    text = "\n".join(f"{0.05 * i:.4f}\t{v:.6f}" for i, v in enumerate(z))
+    meta = ("surfaces:\n- topographies:\n  - datafile: {original: p.txt}\n    unit: um\n"
+            "    height_scale: 2.0\n    detrend_mode: center\n"
+            "    instrument: {parameters: {tip_radius: {value: 40, unit: nm}}}\n")
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w") as zf:
+        zf.writestr("meta.yml", meta)
+        zf.writestr("p.txt", text)
+    (p,) = [read_bytes(out.getvalue(), name="c.zip")]
+    assert p.is_uniform and p.dx == pytest.approx(0.05e-6, rel=1e-9)
+    assert np.allclose(p.z, 2 * np.round(z, 6) * 1e-6, rtol=1e-9, atol=1e-18)
+    assert p.metadata["tip_radius"] == {"value": pytest.approx(40e-9), "unit": "m"}
+    assert p.metadata["detrend_mode"] == "center"
