@@ -86,7 +86,8 @@ def _print(a: Any) -> None:
     from surfmet.units import format_length
 
     for m in a.measurements:
-        cut = "none" if m.cutoff is None else format_length(m.cutoff)
+        cut = format_length(m.cutoff) if m.cutoff is not None else (
+            "none, every scale reliable" if m.tip_radius else "none")
         print(f"{m.file}  {m.kind}, pixel {format_length(m.pixel)}, size "
               f"{format_length(m.size)}, cut-off {cut} ({m.cutoff_source})")
     votes = a.contributors("slope")
