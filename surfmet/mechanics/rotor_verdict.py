@@ -145,6 +145,12 @@ def verdict_record(v: Any) -> dict[str, Any]:
     return rec
 
 
+def _p_floor() -> float:
+    from contact.rotor.verdict import calibration
+
+    return 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
+
+
 def verdict_lines(v: Any) -> list[str]:
     """The verdict in words, first thing every entry point prints."""
     o = v.offset
@@ -154,7 +160,8 @@ def verdict_lines(v: Any) -> list[str]:
              f"{o.launch_sd:.4f} rad/s2, t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
-             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g}"]
+             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g} "
+             f"(the smallest it can resolve: {_p_floor():.2g})"]
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
