@@ -112,14 +112,14 @@ def test_persson_from_three_measurements_matches_the_known_spectrum(hurst, seed)
     assert hi == pytest.approx(np.pi / 2e-8, rel=0.26)
     e = 2 - 2 * hurst
     slope = math.sqrt(c0 / (2 * math.pi) * (hi**e - lo**e) / e)  # closed form over the band
-    # aliasing in each measurement's top octave and the Hann window's lobe at its first
-    # wavevectors bias the averaged PSD: over 10 realisations (H = 0.5, 0.8) the rms slope
-    # came out -0.7 % .. +4.5 % from the closed form; the tolerance is 6 %
-    assert s.slope_rms == pytest.approx(slope, rel=0.06)
+    # every measurement is sampled, so its top octave holds aliased power: over 10
+    # realisations (benchmarks/all_scales_persson.py, H = 0.5 and 0.8) the rms slope came
+    # out +0.4 % .. +5.6 % from the closed form, the area -5.3 % .. -0.4 %; tolerance 7 %
+    assert s.slope_rms == pytest.approx(slope, rel=0.07)
     p, e_star = np.array([0.05, 0.2]) * slope * 1e10, 1e10
     curve = persson_all_scales(s, p, e_star)
     np.testing.assert_allclose(curve.area_fraction,
-                               erf(math.sqrt(2) * p / (e_star * slope)), rtol=0.06)
+                               erf(math.sqrt(2) * p / (e_star * slope)), rtol=0.07)
 
 
 def test_profiles_alone_give_a_spectrum_too():
