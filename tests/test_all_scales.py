@@ -194,6 +194,16 @@ def test_spectrum_several(files, tmp_path, capsys):
     assert out.stat().st_size > 1000
     assert main(["spectrum", files["fine"], files["coarse"]]) == 0
     assert "contributes over" in capsys.readouterr().out
+    assert main(["spectrum", files["fine"], files["coarse"], "--json", "--materials",
+                 "steel,aluminium", "--hardness", "1GPa"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["materials"] == ["steel", "aluminium"] and rec["hardness"]["value"] == 1e9
+    sm = rec["summits"]
+    assert sm["radius"]["unit"] == "m" and sm["density"]["unit"] == "1/m^2"
+    # ψ = (E*/H) √(σ_s/R_s) (Greenwood & Williamson 1966) from the record's own numbers
+    assert rec["plasticity_index"] == pytest.approx(
+        rec["e_star"]["value"] / 1e9 * math.sqrt(sm["sigma_s"]["value"] / sm["radius"]["value"]),
+        rel=1e-12)
 
 
 @pytest.mark.parametrize("cmd", [["spectrum"], ["flat-contact", "--e-star", "1GPa",

@@ -125,6 +125,13 @@ def print_all_scales(r: dict[str, Any]) -> None:
     print(f"  h_rms {format_length(r['h_rms']['value'])}, h'_rms {r['slope_rms']['value']:.5g}, "
           f"curvature rms {r['curvature_rms']['value']:.5g} 1/m"
           + ("" if h is None else f", Hurst H {h['value']:.4f}") + " (of the band)")
+    if r.get("summits"):
+        sm = r["summits"]
+        print(f"  Nayak alpha {sm['nayak_alpha']:.4g}, summits: density "
+              f"{sm['density']['value'] * 1e-6:.5g} 1/mm², radius "
+              f"{format_length(sm['radius']['value'])}"
+              + (f", plasticity psi {r['plasticity_index']:.4g}" if "plasticity_index" in r
+                 else ""))
     if "persson" in r:
         print(f"  {'p (MPa)':>9} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} {'K (MPa/um)':>11}"
               "   Persson, all scales")

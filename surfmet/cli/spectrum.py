@@ -23,7 +23,8 @@ Several FILEs (or a contact.engineering container) are measurements of one surfa
   surfmet spectrum afm.jpk stylus.csv --tip-radius 20nm --json
 their profile PSD is averaged as `surfmet scales` does, turned into the isotropic PSD, and
 the rms values of the band where it is measured are given with that band, per measurement
-and in all (--periodic, --materials and --hardness apply to one scan only).
+and in all, with the band's summit statistics and, with --materials, its plasticity index
+(--periodic applies to one scan only).
 """
 
 
@@ -119,9 +120,16 @@ def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
     from surfmet.scale_dependent import analyze_scales
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
+    e_star = hard = None
+    names: list[str] = []
+    if args.materials:
+        e_star, hard, names = materials_e_star(args.materials, args.hardness)
     a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
     s = all_scales_spectrum(a)
-    rec = {"files": args.files, **all_scales_record(s)}
+    rec = {"files": args.files, **({"materials": names} if names else {}),
+           **all_scales_record(s, e_star=e_star, hardness=hard)}
+    if args.periodic != "auto":
+        rec["notes"].append("--periodic applies to one scan: the averaged PSD is Hann-windowed")
     if args.plot:
         from surfmet.plots.spectrum import all_scales_figure
 

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.roughcontact import ModelCurve
+from contact.roughcontact import ModelCurve, SummitParameters
 from surfmet.errors import SurfmetInputError
 from surfmet.psd import PSD, HurstFit, fit_hurst
 from surfmet.scale_dependent import ScaleAnalysis
@@ -48,8 +48,11 @@ class AllScalesSpectrum:
         Of the roughness in the band (m, -, 1/m): √m0, √(2 m2), √(8 m4/3).
     hurst : HurstFit or None
         Power law fitted to the averaged 1D PSD over the band (None: too few points).
+    summits : SummitParameters or None
+        Nayak/McCool summit statistics of the band (None where its moments give α < 1.5).
     notes : tuple of str
-        What the conversion had to do (negative ``C^iso`` set to zero).
+        What the conversion had to do (negative ``C^iso`` set to zero), or why there are no
+        summit statistics.
     """
 
     analysis: ScaleAnalysis
@@ -62,6 +65,7 @@ class AllScalesSpectrum:
     slope_rms: float
     curvature_rms: float
     hurst: HurstFit | None
+    summits: SummitParameters | None = None
     notes: tuple[str, ...] = ()
 
     def measurement_bands(self) -> list[tuple[float, float] | None]:
@@ -100,7 +104,7 @@ def all_scales_spectrum(analysis: ScaleAnalysis, per_decade: int = QUAD_PER_DECA
         Fewer than two points of measured PSD, or a profile PSD with no isotropic inverse.
     """
     from contact.errors import ContactInputError
-    from contact.roughcontact import isotropic_moments
+    from contact.roughcontact import isotropic_moments, summit_parameters
     from contact.roughcontact.isotropic import iso_from_profile_psd, log_quadrature
 
     good = np.isfinite(analysis.psd) & (analysis.psd > 0)
@@ -123,10 +127,15 @@ def all_scales_spectrum(analysis: ScaleAnalysis, per_decade: int = QUAD_PER_DECA
     if not m2 > 0:
         raise SurfmetInputError("the averaged PSD gives no isotropic roughness (C_iso ≤ 0 "
                                 "over the whole band)")
+    try:
+        summits = summit_parameters(m0, m2, m4)
+    except ContactInputError as exc:
+        summits = None
+        notes.append(f"no summit statistics for the band: {exc}")
     return AllScalesSpectrum(analysis=analysis, band=band, q=q, c_iso=c_iso, weights=w, dq=dq,
                              h_rms=math.sqrt(m0), slope_rms=math.sqrt(2.0 * m2),
                              curvature_rms=math.sqrt(8.0 * m4 / 3.0), hurst=_hurst(q1, c1),
-                             notes=tuple(notes))
+                             summits=summits, notes=tuple(notes))
 
 
 def _negative_note(q: np.ndarray, raw: np.ndarray, w: np.ndarray) -> str:

@@ -26,11 +26,13 @@ def _band(b: tuple[float, float] | None) -> dict[str, Any]:
             "wavelength": {"value": [2 * math.pi / b[1], 2 * math.pi / b[0]], "unit": "m"}}
 
 
-def all_scales_record(s: Any, curve: Any = None, e_star: float | None = None
-                      ) -> dict[str, Any]:
-    """Record of an :class:`~surfmet.mechanics.all_scales.AllScalesSpectrum` and, with
+def all_scales_record(s: Any, curve: Any = None, e_star: float | None = None,
+                      hardness: float | None = None) -> dict[str, Any]:
+    """Record of an :class:`~surfmet.mechanics.all_scales.AllScalesSpectrum`; with
     ``curve`` (a :class:`contact.roughcontact.ModelCurve`) and ``e_star``, Persson's
-    theory on it."""
+    theory on it; with ``e_star`` and ``hardness``, the plasticity index of the band."""
+    from contact.roughcontact import plasticity_index
+
     a = s.analysis
     order = np.argsort(a.q)
     meas = scales_record(a)["measurements"]
@@ -56,12 +58,22 @@ def all_scales_record(s: Any, curve: Any = None, e_star: float | None = None
         "hurst": None if h is None else {
             "value": h.hurst, "q_range": quantity(list(h.q_range), "rad/m"),
             "fit_residual_rms_decades": h.residual_rms},
+        "summits": None if s.summits is None else {
+            "nayak_alpha": s.summits.alpha, "density": quantity(s.summits.density, "1/m^2"),
+            "radius": quantity(s.summits.radius, "m"),
+            "sigma_s": quantity(s.summits.sigma_s, "m")},
         "measurements": meas,
-        "notes": ["rms values and Persson's theory are those of the roughness in the measured "
-                  "band; scales outside it are not included", *s.notes],
+        "notes": ["rms values, summit statistics and Persson's theory are those of the "
+                  "roughness in the measured band (slope, curvature, summits and the plasticity "
+                  "index grow as its shortest wavelength shrinks); scales outside it are not "
+                  "included", *s.notes],
     }
-    if curve is not None and e_star is not None:
+    if e_star is not None:
         rec["e_star"] = quantity(e_star, "Pa")
+    if e_star is not None and hardness is not None and s.summits is not None:
+        rec["hardness"] = quantity(hardness, "Pa")
+        rec["plasticity_index"] = plasticity_index(e_star, hardness, s.summits)
+    if curve is not None and e_star is not None:
         rec["persson"] = [{
             "pressure": quantity(float(p), "Pa"),
             "area_fraction": float(curve.area_fraction[i]),
