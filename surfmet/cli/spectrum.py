@@ -7,6 +7,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log, pressure, save_figure
+from surfmet.cli.scales import add_measurement_arguments
 
 EPILOG = """examples:
   surfmet spectrum plate.x3p
@@ -56,8 +57,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--hardness", type=pressure, metavar="P", default=None,
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--plot", metavar="OUT.png", default=None, help="write the PSD plot")
-    from surfmet.cli.scales import add_measurement_arguments
-
     add_measurement_arguments(p, 10)
     add_json_flag(p)
     p.set_defaults(func=run)
