@@ -32,15 +32,20 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan files or containers")
-    p.add_argument("--tip-radius", type=length, metavar="R", default=None,
-                   help="probe tip radius for measurements whose file states none (e.g. 20nm)")
-    p.add_argument("--per-decade", type=int, metavar="N", default=5,
-                   help="points per decade of the distance grid (default 5)")
+    add_measurement_arguments(p, 5)
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="write the figure (one curve per measurement and the average)")
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
+
+
+def add_measurement_arguments(p: argparse.ArgumentParser, per_decade: int) -> None:
+    """``--tip-radius`` and ``--per-decade`` (shared by scales, spectrum and flat-contact)."""
+    p.add_argument("--tip-radius", type=length, metavar="R", default=None,
+                   help="probe tip radius for measurements whose file states none (e.g. 20nm)")
+    p.add_argument("--per-decade", type=int, metavar="N", default=per_decade,
+                   help=f"points per decade of the distance grid (default {per_decade})")
 
 
 def read_measurements(files: list[str]) -> list[Any]:
@@ -100,3 +105,39 @@ def _print(a: Any) -> None:
     band = a.psd_band()
     if band:
         print(f"PSD measured over q = {band[0]:.4g}..{band[1]:.4g} rad/m (Hann window)")
+
+
+def print_all_scales(r: dict[str, Any]) -> None:
+    """Text of an all-scales record: bands, rms values and Persson (when present)."""
+    from surfmet.units import format_length
+
+    def band(b: dict[str, Any]) -> str:
+        w = b["wavelength"]["value"]
+        return "none" if w is None else (f"wavelengths {format_length(w[0])}..{format_length(w[1])}"
+                                         f" (q = {b['q']['value'][0]:.4g}..{b['q']['value'][1]:.4g}"
+                                         " rad/m)")
+
+    print("all scales: PSD averaged over the measurements (profile PSD -> isotropic)")
+    for i, m in enumerate(r["measurements"]):
+        print(f"  [{i + 1}] {m['file']}  {m['kind']}, contributes over {band(m['psd_band'])}")
+    print(f"  measured band  {band(r['psd']['measured_band'])}")
+    h = r["hurst"]
+    print(f"  h_rms {format_length(r['h_rms']['value'])}, h'_rms {r['slope_rms']['value']:.5g}, "
+          f"curvature rms {r['curvature_rms']['value']:.5g} 1/m"
+          + ("" if h is None else f", Hurst H {h['value']:.4f}") + " (of the band)")
+    if r.get("summits"):
+        sm = r["summits"]
+        print(f"  Nayak alpha {sm['nayak_alpha']:.4g}, summits: density "
+              f"{sm['density']['value'] * 1e-6:.5g} 1/mm², radius "
+              f"{format_length(sm['radius']['value'])}"
+              + (f", plasticity psi {r['plasticity_index']:.4g}" if "plasticity_index" in r
+                 else ""))
+    if "persson" in r:
+        print(f"  {'p (MPa)':>9} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} {'K (MPa/um)':>11}"
+              "   Persson, all scales")
+        for row in r["persson"]:
+            print(f"  {row['pressure']['value'] / 1e6:9.4g} {row['area_fraction']:10.4g} "
+                  f"{row['kappa']:7.3f} {row['mean_gap']['value'] * 1e6:9.4g} "
+                  f"{row['stiffness']['value'] / 1e12:11.4g}")
+    for note in r["notes"]:
+        log(f"  note: {note}")

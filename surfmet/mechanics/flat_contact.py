@@ -135,26 +135,34 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                              settings={"pressures": p.tolist()}, preparation=preparation)
 
 
-def plot(rep: FlatContactReport, path: Any = None) -> Any:
-    """A/A0 and ū against p for the BEM and the three theories."""
+def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve | None = None
+         ) -> Any:
+    """A/A0 and ū against p for the BEM and the three theories, and Persson's theory from
+    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone."""
     from surfmet.plots._style import finish, new_figure
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
-    p = rep.bem.pressure
-    a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
-    a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
-              label="BEM, perimeter-corrected")
-    a2.semilogx(p, rep.bem.mean_gap * 1e6, "ko-", label="BEM")
-    styles = {"persson": "C0", "gw": "C1", "bgt": "C2"}
-    for name, m in rep.models.items():
-        a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
-        if m.mean_gap is not None:
-            a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+    if rep is not None:
+        p = rep.bem.pressure
+        a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
+        a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
+                  label="BEM, perimeter-corrected")
+        a2.semilogx(p, rep.bem.mean_gap * 1e6, "ko-", label="BEM")
+        styles = {"persson": "C0", "gw": "C1", "bgt": "C2"}
+        for name, m in rep.models.items():
+            a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
+            if m.mean_gap is not None:
+                a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+        a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
+    if all_scales is not None:
+        a1.loglog(all_scales.pressure, all_scales.area_fraction, "s:", color="C3",
+                  label="PERSSON, all scales")
+        a2.semilogx(all_scales.pressure, all_scales.mean_gap * 1e6, "s:", color="C3",
+                    label="PERSSON, all scales")
     a1.set_xlabel("nominal pressure p (Pa)")
     a1.set_ylabel("A/A0")
     a2.set_xlabel("nominal pressure p (Pa)")
     a2.set_ylabel("mean gap ū (µm)")
-    a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     for ax in (a1, a2):
         ax.legend(fontsize=8)
     return finish(fig, path)
