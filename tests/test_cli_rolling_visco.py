@@ -62,3 +62,10 @@ def test_all_mechanisms_json(capsys) -> None:
     for m in out["mechanisms"].values():
         assert m["delta_eps"]["unit"] == "rad/s^2"
         assert m["delta_eps"]["value"] < 1e-3  # none comes near the measurement
+
+
+def test_all_mechanisms_refuse_scans_they_would_ignore(capsys) -> None:
+    rc = main(["rolling", "--radius", "20mm", "--materials", "steel,aluminium", "--loads",
+               "2N:12N:4", "--model", "all", "--plate", "surfmet/data/paper_plate.x3p"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1 and "takes no scans" in err[0]

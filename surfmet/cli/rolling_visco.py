@@ -52,10 +52,15 @@ def run_visco(args: argparse.Namespace) -> int:
     if args.model == "all":
         from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
 
-        if not (args.mu > 0 and args.mu < float("inf")):
-            from surfmet.errors import SurfmetInputError
+        from surfmet.errors import SurfmetInputError
 
+        if not (args.mu > 0 and args.mu < float("inf")):
             raise SurfmetInputError("--mu must be a positive number")
+        if args.plate or args.ball:
+            # the comparison is of the smooth pair; a scan given here would be ignored
+            raise SurfmetInputError(
+                "--model all sets the mechanisms side by side on the smooth pair and takes no "
+                "scans; run --model plastic or hysteresis with --plate/--ball for the scans")
         rep = rolling_mechanisms(radius=args.radius, materials=args.materials,
                                  loads=(lo, hi, n), speed=speed, loss=_loss(args.loss),
                                  hardness=args.hardness, grid=args.grid or 128,
