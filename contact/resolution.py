@@ -76,7 +76,7 @@ FAILURE_SURVIVES = {"alpha": "σ can only grow as the pixel shrinks, so this fai
 CRITERION_QUANTITY = {
     "alpha": "sigma", "profile": "profile_deviation", "radius": "a_star",
     "approach": "approach", "yield": "yielded_fraction", "first_yield": None,
-    "peak": "pmax_elastic", "area": "area",
+    "peak": "pmax_elastic", "area": "area", "resolution": None,
 }
 
 
@@ -317,7 +317,7 @@ def sphere_study(
             plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
                                     tol=tol)
         comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
-                                  hardness=hardness)
+                                  hardness=hardness, scan_pixel=max(px, rough.dy))
         main = plastic if plastic is not None else elastic
         if problem.domain.n != n:
             notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")

@@ -187,7 +187,7 @@ def test_to_json_has_exactly_the_issue_keys():
                       materials="steel,aluminium", grid=64).to_json()
     # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits), plus
     # issue 16's grid, scan preparation and warnings
-    assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
+    assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
                         "scan_preparation", "warnings"}
     assert set(rec["hertz"]) == {"a", "delta", "p0"}

@@ -155,16 +155,30 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             text += (f"; removes {100 * g_r:.3g} % of Hertz's radius error and "
                      f"{100 * g_p:.3g} % of its profile error")
         reasons.append(text)
-    if verdict == "hertz":
-        head = "Hertz holds (α, profile, radius, approach and yield within their limits)"
-    elif verdict == "bem":
-        head = ("no model of the hierarchy is within tolerance: only the boundary elements "
-                "describe this contact")
-    else:
-        head = (f"{verdict} is the simplest model within tolerance "
-                + ("(Hertz fails: " + "; ".join(c.name for c in comp.criteria
-                                                if c.decisive and not c.passed) + ")"))
+    head = _headline(comp, models, verdict)
     return ModelHierarchy(models=models, verdict=verdict, reasons=(head, *reasons))
+
+
+def _headline(comp: HertzComparison, models: dict[str, ModelPrediction], verdict: str
+              ) -> str:
+    """Why this model was named, in agreement with the Hertz verdict's own criteria."""
+    failed = [c for c in comp.criteria if c.decisive and not c.passed]
+    if not comp.judged:
+        res = comp.criterion("resolution")
+        return (f"the scans do not resolve the contact ({res.value:.2g} pixels per Hertz "
+                f"radius, at least {res.limit:g}): no model can be judged against the "
+                "boundary elements, which see the scan interpolated between its points")
+    if verdict == "hertz":
+        return "Hertz holds (α, profile, radius, approach and yield within their limits)"
+    fails = "; ".join(c.name for c in failed)
+    if verdict != "bem":
+        return f"{verdict} is the simplest model within tolerance (Hertz fails: {fails})"
+    if models["hertz"].within_tolerance:
+        return (f"hertz is within tolerance of the boundary elements on a* and profile but "
+                f"fails the verdict's other criteria ({fails}), and no extended model is "
+                "within tolerance: the boundary elements describe this contact")
+    return ("no model of the hierarchy is within tolerance: only the boundary elements "
+            "describe this contact")
 
 
 def gains(h: ModelHierarchy, name: str) -> tuple[float, float]:

@@ -96,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     c = check.comparison
     hz = c.hertz
-    print(f"{'Hertz holds' if c.hertz_holds else 'Hertz does not hold'} "
+    print(f"{c.headline} "
           f"(α = {c.alpha:.3g}, σ = {format_length(c.sigma)})")
     for reason in c.reasons:
         print(f"  - {reason}")

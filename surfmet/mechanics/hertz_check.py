@@ -13,7 +13,8 @@ plate, best-fit sphere for the ball), over the whole scan: non-measured points n
 count nor are replaced by anything in sigma (the contact solver sees them filled with the
 nearest measured value, which the notes report).
 
-``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``alpha``, ``sigma``,
+``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``judged`` (false: the scan's pixel
+does not resolve the contact, no verdict), ``alpha``, ``sigma``,
 ``hertz`` {a, delta, p0}, ``bem`` {pmax, contact_radius, approach, area_fraction,
 plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and (issue 11) ``models``
 {hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``contact_radius``,
@@ -102,10 +103,13 @@ class HertzCheck:
     def warnings(self) -> list[str]:
         """A grid too coarse for the contact (fewer cells per Hertz radius than
         :data:`surfmet.mechanics.ball_contact.MIN_CELLS_PER_RADIUS`): the verdict rests
-        on an unresolved solution."""
+        on an unresolved solution; a scan whose pixel does not resolve the contact
+        (:data:`contact.hertzcheck.MIN_SCAN_PIXELS_PER_RADIUS`): no verdict."""
         from surfmet.mechanics.ball_contact import grid_warnings
 
-        return grid_warnings(self.result)
+        c = self.comparison
+        scan = [] if c.judged else [c.criterion("resolution").reason]
+        return [*scan, *grid_warnings(self.result)]
 
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see

@@ -42,8 +42,7 @@ def hertz_check_figure(check: Any, path: str | Path | None = None, *,
     radial_pressure(prof.r, prof.p, prof.p_hertz, comp.hertz.a, ax=ax_prof,
                     normalise=normalise,
                     title=f"azimuthal average about the apex (α = {comp.alpha:.3g})")
-    verdict = "Hertz holds" if comp.hertz_holds else "Hertz does not hold"
-    fig.suptitle(f"{verdict} at W = {res.load:.4g} N", fontsize=12)
+    fig.suptitle(f"{comp.headline} at W = {res.load:.4g} N", fontsize=12)
     return finish(fig, path)
 
 

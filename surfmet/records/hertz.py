@@ -18,6 +18,7 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
     prof = c.profile
     return {
         "hertz_holds": bool(c.hertz_holds),
+        "judged": bool(c.judged),
         "alpha": _q(c.alpha, ""),
         "sigma": _q(c.sigma, "m"),
         "hertz": {"a": _q(hz.a, "m"), "delta": _q(hz.delta, "m"), "p0": _q(hz.p0, "Pa")},
