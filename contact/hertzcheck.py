@@ -117,8 +117,9 @@ class HertzComparison:
         Peak pressure of the (elastic-plastic, when a hardness was given) solution (Pa).
     elastic_pmax : float
         Peak pressure of the purely elastic solution (Pa).
-    contact_radius : float
-        Effective (second-moment) contact radius a* (m).
+    effective_radius : float
+        Effective (second-moment) contact radius a* (m); not the real-area radius
+        sqrt(A/pi), which is the result's ``contact_radius``.
     approach : float
         Approach from first touch (m).
     area_fraction : float
@@ -139,7 +140,7 @@ class HertzComparison:
     alpha: float
     pmax: float
     elastic_pmax: float
-    contact_radius: float
+    effective_radius: float
     approach: float
     area_fraction: float
     plastic_fraction: float
@@ -247,7 +248,7 @@ def compare_with_hertz(
     holds = all(c.passed for c in crit if c.decisive)
     return HertzComparison(
         hertz=hz, sigma=float(sigma), alpha=alpha, pmax=float(main.pmax), elastic_pmax=e_pmax,
-        contact_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
+        effective_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
         plastic_fraction=plastic_frac, profile=prof, profile_deviation=dev, hardness=hardness,
         criteria=tuple(crit), hertz_holds=bool(holds),
     )

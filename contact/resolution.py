@@ -205,7 +205,7 @@ def _level_values(res: Any, comp: Any, pmax_elastic: float, level_z: np.ndarray,
     nominal = math.pi * comp.hertz.a**2
     yielded = (res.plastic_area / nominal) if hardness is not None else 0.0
     return {
-        "a_star": float(comp.contact_radius), "approach": float(comp.approach),
+        "a_star": float(comp.effective_radius), "approach": float(comp.approach),
         "area": float(res.contact_area),
         "corrected_area": corrected_area(res.contact, res.dx, res.dy),
         "yielded_fraction": float(yielded), "pmax": float(res.pmax),

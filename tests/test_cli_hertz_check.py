@@ -50,7 +50,7 @@ def test_verdicts_and_json(plates, capsys):
     assert rec["grid"]["nx"] == 96 and rec["grid"]["pixel_source"] == "--grid 96"
     hz = hertz_sphere(R, W, E_STAR)
     assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
-    assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
+    assert rec["bem"]["effective_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
     assert not err.strip().startswith("{")
 
     assert main(_args(plates["rough"], "--json")) == 0
@@ -63,10 +63,10 @@ def test_verdicts_and_json(plates, capsys):
         prof = m["radial_profile"]
         assert prof["r"]["unit"] == "m" and prof["p"]["unit"] == "Pa"
         assert len(prof["r"]["value"]) == len(prof["p"]["value"]) > 5
-        assert m["contact_radius"]["unit"] == "m" and m["approach"]["unit"] == "m"
+        assert m["effective_radius"]["unit"] == "m" and m["approach"]["unit"] == "m"
     # the errors are the Hertz comparison's own numbers for Hertz, 0 for the reference
     hz = hertz_sphere(R, W, E_STAR)
-    a_bem = rec["bem"]["contact_radius"]["value"]
+    a_bem = rec["bem"]["effective_radius"]["value"]
     assert models["hertz"]["radius_error"]["value"] == pytest.approx(hz.a / a_bem - 1, rel=1e-9)
     assert models["bem"]["profile_error"]["value"] == 0
     # α = 1.5: Hertz fails, and Greenwood-Tripp (the spectrum's summits) does better

@@ -79,7 +79,7 @@ def test_smooth_ball_hertz_holds():
     assert c.hertz_holds
     assert c.alpha == 0.0 and c.plastic_fraction == 0.0
     assert c.profile_deviation < 0.01
-    assert c.contact_radius / c.hertz.a == pytest.approx(1.0, abs=0.01)
+    assert c.effective_radius / c.hertz.a == pytest.approx(1.0, abs=0.01)
     assert c.approach / c.hertz.delta == pytest.approx(1.0, abs=0.01)
     assert c.pmax / c.hertz.p0 == pytest.approx(1.0, abs=0.01)
     names = {k.name for k in c.criteria}
@@ -176,7 +176,7 @@ def test_paper_rough_plate_fails_with_reasons():
     assert chk.reasons[0].startswith("α") and "≫" in chk.reasons[0]
     c = chk.comparison
     assert c.plastic_fraction > 0.01  # the asperities yield (Fig. 17)
-    assert c.contact_radius > 1.3 * hz.a and c.approach > 1.5 * hz.delta
+    assert c.effective_radius > 1.3 * hz.a and c.approach > 1.5 * hz.delta
     failed = {k.name for k in c.criteria if k.decisive and not k.passed}
     assert {"alpha", "profile", "radius", "approach", "yield"} <= failed
 
@@ -191,12 +191,13 @@ def test_to_json_has_exactly_the_issue_keys():
                         "radial_profile", "models", "verdict", "summits", "grid",
                         "scan_preparation", "warnings"}
     assert set(rec["hertz"]) == {"a", "delta", "p0"}
-    assert set(rec["bem"]) == {"pmax", "contact_radius", "approach", "area_fraction",
-                               "plastic_fraction"}
+    assert set(rec["bem"]) == {"pmax", "effective_radius", "contact_radius", "approach",
+                               "area_fraction", "plastic_fraction"}
     assert set(rec["radial_profile"]) == {"r", "p_bem", "p_hertz"}
     units = {("alpha",): "", ("sigma",): "m", ("hertz", "a"): "m", ("hertz", "p0"): "Pa",
              ("hertz", "delta"): "m", ("bem", "pmax"): "Pa", ("bem", "approach"): "m",
-             ("bem", "contact_radius"): "m", ("bem", "area_fraction"): "",
+             ("bem", "contact_radius"): "m", ("bem", "effective_radius"): "m",
+             ("bem", "area_fraction"): "",
              ("bem", "plastic_fraction"): "", ("radial_profile", "r"): "m",
              ("radial_profile", "p_bem"): "Pa", ("radial_profile", "p_hertz"): "Pa"}
     for path, unit in units.items():

@@ -99,7 +99,7 @@ def _measure(name: str, comp: HertzComparison, ref: Any, model_pressure: Any, a_
     err = profile_deviation(avg, hz.p0, PROFILE_EXTENT * hz.a)
     return ModelPrediction(name=name, a_star=float(a_star), approach=float(approach),
                            peak=float(peak), r=np.asarray(r, float), p=np.asarray(p, float),
-                           radius_error=float(a_star / comp.contact_radius - 1.0),
+                           radius_error=float(a_star / comp.effective_radius - 1.0),
                            profile_error=float(err), **_limits(comp))
 
 
@@ -129,7 +129,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             models[name] = _measure(name, comp, reference, sol.pressure, sol.a_star,
                                     sol.approach, sol.peak, sol.r, sol.p)
     models["bem"] = ModelPrediction(
-        name="bem", a_star=comp.contact_radius, approach=comp.approach, peak=comp.pmax,
+        name="bem", a_star=comp.effective_radius, approach=comp.approach, peak=comp.pmax,
         r=prof.r, p=prof.p, radius_error=0.0, profile_error=0.0, **_limits(comp))
     if comp.hertz_holds:
         verdict = "hertz"
@@ -144,7 +144,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             continue
         ok = m.within_tolerance
         text = (f"{name}: a* = {m.a_star * 1e6:.4g} µm against the BEM's "
-                f"{comp.contact_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
+                f"{comp.effective_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
                 f"profile off the BEM by {100 * m.profile_error:.3g} % of p0 "
                 f"({'within' if ok else 'beyond'} {100 * lim['radius_limit']:g} % / "
                 f"{100 * lim['profile_limit']:g} %)")

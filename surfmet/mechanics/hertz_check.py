@@ -15,16 +15,19 @@ nearest measured value, which the notes report).
 
 ``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``judged`` (false: the scan's pixel
 does not resolve the contact, no verdict), ``alpha``, ``sigma``,
-``hertz`` {a, delta, p0}, ``bem`` {pmax, contact_radius, approach, area_fraction,
-plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and (issue 11) ``models``
-{hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``contact_radius``,
+``hertz`` {a, delta, p0}, ``bem`` {pmax, effective_radius, contact_radius, approach,
+area_fraction, plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz},
+and (issue 11) ``models``
+{hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
 tolerance, :mod:`contact.roughcontact.hierarchy`) and ``summits`` (the combined spectral
 summit parameters; absent for smooth scans); every
 dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 ``plastic_fraction`` are fractions of the nominal Hertz area pi a0^2;
-``contact_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`).
+``effective_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`;
+``contact_radius`` is sqrt(A_real/pi), the same quantity under the same name as in
+``surfmet contact``).
 """
 
 from __future__ import annotations
