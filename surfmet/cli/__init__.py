@@ -47,7 +47,9 @@ EPILOG = """examples:
   surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
   surfmet demo --out demo_out
 
-Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
+accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
+(steel:E=200GPa); a name not in the table with E and nu given is a custom material.
 """
 
 
