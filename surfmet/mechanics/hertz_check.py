@@ -32,7 +32,6 @@ dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 
 from __future__ import annotations
 
-import contextlib
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -217,8 +216,8 @@ def hertz_check(
                                   hardness=hardness)
     if summits is None:
         notes.append("no usable roughness spectrum: Greenwood-Tripp not evaluated")
-    elif len(hierarchy.models) < (4 if hardness is not None else 3):
-        notes.append("a Greenwood-Tripp solve did not converge: left out of the models")
+    notes += [f"{name} left out of the models: {why}"
+              for name, why in hierarchy.left_out.items()]
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
@@ -254,20 +253,23 @@ def scan_summits(prep: PreparedScans) -> Any:
 def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
                       e_star: float, hardness: float | None) -> Any:
     """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
-    from contact.errors import ConvergenceError
+    from contact.errors import ContactInputError, ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy
 
     extended: dict[str, Any] = {}
+    left_out: dict[str, str] = {}
     if summits is not None:
         kw = dict(sigma_s=summits.sigma_s, density=summits.density,
                   summit_radius=summits.radius)
-        # a model that cannot be solved is left out of the hierarchy, not fatal to the check
-        with contextlib.suppress(ConvergenceError):
-            extended["greenwood_tripp"] = greenwood_tripp(load, radius, e_star, **kw)
-        if hardness is not None:
-            with contextlib.suppress(ConvergenceError):
-                extended["greenwood_tripp_plastic"] = greenwood_tripp(
-                    load, radius, e_star, hardness=hardness, **kw)
+        # a model that cannot be solved is left out of the hierarchy with its reason, not
+        # fatal to the check
+        for name, h in (("greenwood_tripp", None), ("greenwood_tripp_plastic", hardness)):
+            if name.endswith("plastic") and hardness is None:
+                continue
+            try:
+                extended[name] = greenwood_tripp(load, radius, e_star, hardness=h, **kw)
+            except (ConvergenceError, ContactInputError) as exc:
+                left_out[name] = str(exc)
     ref = check.plastic if check.plastic is not None else check.elastic
-    return model_hierarchy(check.comparison, ref, extended)
+    return model_hierarchy(check.comparison, ref, extended, left_out)
