@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet.model import Profile, Topography, require_measurement
 from surfmet.units import jsonable, parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
@@ -199,11 +199,11 @@ def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
 
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
     if isinstance(scan, (Topography, Profile)):
-        return scan, scan.metadata.get("source")
+        return require_measurement(scan), scan.metadata.get("source")
     if isinstance(scan, (str, os.PathLike)):
         from surfmet.io import read
 
-        return read(scan), str(scan)
+        return require_measurement(read(scan)), str(scan)
     raise SurfmetInputError(
         f"roughness needs a Topography, a Profile or a file path, got {type(scan).__name__}"
     )

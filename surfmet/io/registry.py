@@ -22,7 +22,13 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet.model import (
+    MAX_HEIGHT_SPAN,
+    MAX_NUMERIC_SPAN,
+    Profile,
+    Topography,
+    height_span_error,
+)
 
 Scan = Topography | Profile
 Decoder = Callable[..., Scan]
@@ -221,6 +227,15 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     if np.isinf(values).any():
         raise SurfmetFormatError(f"{name}: the scan holds infinite heights")
     md = dict(scan.metadata)
+    # flagged, not refused: the file still reads (and writes back exactly), every analysis
+    # refuses it (surfmet.model.require_measurement). Heights in no stated unit are
+    # numbers, not metres: only the numeric limit applies to them.
+    uncalibrated = md.get("units_missing") or md.get("height_unit") == ""
+    span = height_span_error(values, MAX_NUMERIC_SPAN if uncalibrated else MAX_HEIGHT_SPAN)
+    if span is not None:
+        md["height_range"] = (f"{name}: {span}: the file is damaged (one flipped exponent bit "
+                              "turns 2 µm into 1e302 m) or its height unit is wrong (for a "
+                              "bare array, pass height_unit=)")
     md.setdefault("format", fmt)
     return scan.replace(metadata=md)
 
