@@ -307,7 +307,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
     from surfmet.areal.filters import l_filter, s_filter
-    from surfmet.areal.form import remove_form
+    from surfmet.areal.form import dominant_form, remove_form
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
@@ -349,7 +349,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
 
         settings["edge"] = {"value": edge, "meaning": EDGE_MEANING.get(edge, "")}
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
-    caveats = unit_caveats(topo.metadata)
+    caveats = unit_caveats(topo.metadata) + [c for c in [dominant_form(topo, form)] if c]
     if caveats:
         settings["caveats"] = caveats
     params = areal_parameters(surface, which)

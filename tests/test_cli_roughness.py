@@ -275,3 +275,21 @@ def test_heights_beyond_any_surface_are_refused_by_the_statistics():
     z = np.random.default_rng(6).normal(size=(32, 32)) * 1e294
     with pytest.raises(SurfmetInputError, match="not a surface measurement"):
         roughness(Topography(z, 1e-6, 1e-6))
+
+
+def test_a_ball_levelled_by_a_plane_is_said_to_be_dominated_by_its_form(capsys):
+    """Issue 25 item 6: the paper's ball read with the default plane gives Sa ~ 124 µm of
+    spherical cap; the output says a curved form dominates and how to remove it, and says
+    nothing of the kind once the sphere is removed, nor for the (flat) paper plate."""
+    from pathlib import Path
+
+    data = Path(surfmet.__file__).parent / "data"
+    assert main(["roughness", str(data / "paper_ball.x3p"), "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    caveats = rec["settings"].get("caveats", [])
+    assert any("a curved form dominates" in c and "--level sphere" in c for c in caveats)
+    assert rec["parameters"]["Sa"]["value"] > 50e-6  # the premise: Sa is the cap's
+    for argv in (["paper_ball.x3p", "--level", "sphere"], ["paper_plate.x3p"]):
+        assert main(["roughness", str(data / argv[0]), *argv[1:], "--json"]) == 0
+        rec = json.loads(capsys.readouterr().out)
+        assert not any("form dominates" in c for c in rec["settings"].get("caveats", []))
