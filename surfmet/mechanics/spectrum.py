@@ -325,7 +325,10 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     """Level a scan for spectral or contact analysis: (scan, periodic, levelling).
 
     A periodic scan (detected on the raw heights, or declared) only loses its mean, since a
-    fitted plane would break its periodicity; any other scan loses its least-squares plane.
+    fitted plane would break its periodicity; any other scan loses its least-squares plane,
+    or its second-order surface when a curved form dominates what the plane leaves
+    (:func:`surfmet.areal.form.dominant_form`: a ball's cap is form, not roughness; the
+    levelling is then ``"poly:2"``).
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"an areal scan is needed, got "
@@ -335,9 +338,12 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
         z = np.asarray(topo.heights, float)
         out, how = Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), "mean"
     else:
-        from surfmet.areal.form import remove_form
+        from surfmet.areal.form import dominant_form, remove_form
 
-        out, how = remove_form(topo, "plane")[0], "plane"
+        out, fit = remove_form(topo, "plane")
+        how = "plane"
+        if dominant_form(topo, fit):
+            out, how = remove_form(topo, "poly:2")[0], "poly:2"
     # what levelling leaves of constant or planar heights is rounding (1e-16 of them)
     if not np.nanmax(np.abs(out.heights)) > 1e-12 * np.nanmax(np.abs(topo.heights)):
         raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"
