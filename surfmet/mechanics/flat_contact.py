@@ -28,7 +28,7 @@ import numpy as np
 from contact.roughcontact import ModelCurve
 from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
+from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
 
@@ -118,14 +118,13 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     from contact.errors import ContactInputError
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
     from contact.setups.flat import flat_contact as bem_sweep
-    from surfmet.mechanics.spectrum import prepare, spectrum
+    from surfmet.mechanics.spectrum import prepared_scan, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
-    topo, preparation = prepare_flat(topo, spikes=spikes)
-    scan, per, level = prepare(topo, periodic)
+    scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
     spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
                     hardness=hardness)
     try:
