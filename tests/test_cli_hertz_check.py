@@ -163,3 +163,15 @@ def test_hierarchy_head_never_denies_a_model_within_tolerance():
     assert h.models["hertz"].within_tolerance
     assert "no model of the hierarchy is within tolerance" not in h.reasons[0]
     assert "hertz is within tolerance" in h.reasons[0] and "alpha" in h.reasons[0]
+
+
+def test_report_and_demo_say_an_unresolved_scan_has_no_verdict():
+    """Issue 25 item 1: every entry point gives the same answer: the report and the demo's
+    story do not print "does not hold" for a scan that cannot be judged."""
+    from surfmet.report_hertz import hertz_html
+
+    html = hertz_html({"hertz_holds": False, "judged": False, "alpha": None}, None, None)
+    assert "no verdict: the scan's pixel does not resolve the contact" in html
+    assert "does not hold" not in html
+    html = hertz_html({"hertz_holds": False, "judged": True, "alpha": None}, None, None)
+    assert "Hertz does not hold" in html

@@ -99,7 +99,9 @@ def _hertz(t: _Text, summary: dict[str, Any]) -> None:
     t.add(f"  Hertz: δ0 = {_um(h['hertz']['delta'])} (paper {_um(h['paper']['delta'])}), "
           f"a0 = {_um(h['hertz']['a'], 1)} (paper {_um(h['paper']['a'], 1)}), p0 = "
           f"{_v(h['hertz']['p0']) / 1e6:.0f} MPa")
-    verdict = "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold"
+    verdict = ("Hertz cannot be judged (the scan's pixel does not resolve the contact)"
+               if h.get("judged") is False else
+               "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold")
     t.add(f"  verdict: {verdict} (α = {_v(h['alpha']):.3g}, σ = {_um(h['sigma'])})")
     for reason in h["reasons"]:
         t.para(f"- {reason}", "    ")
