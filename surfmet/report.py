@@ -125,8 +125,7 @@ def _view_installed() -> bool:
 
 def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
                    ) -> list[tuple[str, bytes]]:
-    from surfmet.plots.areal import abbott_firestone, height_map, psd_figure
-    from surfmet.psd import fit_hurst, psd
+    from surfmet.plots.areal import abbott_firestone, height_map
 
     figs: list[tuple[str, bytes]] = []
     if include_3d and _view_installed():
@@ -139,14 +138,27 @@ def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
     figs.append(("Abbott–Firestone curve with the ISO 13565-2 / 25178-2 Sk construction",
                  figure_png(abbott_firestone(surface, parameters=params))))
     if surface.nx >= 16 and surface.ny >= 16:
-        spec = psd(surface)
-        try:
-            fit = fit_hurst(spec)
-        except SurfmetInputError:
-            fit = None
-        figs.append(("radially averaged PSD (Hann window) with a self-affine fit",
-                     figure_png(psd_figure(spec, fits=[fit] if fit else None))))
+        figs.append(_spectrum_figure(surface))
     return figs
+
+
+def _spectrum_figure(surface: Topography) -> tuple[str, bytes]:
+    """The PSD as ``surfmet spectrum`` describes it: the power law fitted between the
+    spectrum's cut-offs and below its noise floor, never across a plateau."""
+    from surfmet.mechanics.spectrum import spectrum
+    from surfmet.plots.areal import psd_figure
+    from surfmet.plots.spectrum import spectrum_figure
+    from surfmet.psd import psd
+
+    try:
+        s = spectrum(surface)
+    except SurfmetInputError:
+        return ("radially averaged PSD (Hann window; no power-law band to fit)",
+                figure_png(psd_figure(psd(surface))))
+    caveats = [c for c in s.settings.get("caveats", []) if "Hurst" in c]
+    return ("radially averaged PSD with the power law fitted over its band, as "
+            "surfmet spectrum gives it" + (f" (caveat: {caveats[0]})" if caveats else ""),
+            figure_png(spectrum_figure(s)))
 
 
 def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:

@@ -63,3 +63,18 @@ def test_bad_input_is_one_line(capsys, args, message):
     assert main([*BASE, *args]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0]
+
+
+def test_speed_takes_units_like_every_quantity(capsys):
+    """Issue 25 item 10: ``--speed 2km/h`` is 2/3.6 m/s (a bare number stays m/s)."""
+    from surfmet.units import parse_speed
+
+    assert parse_speed("1m/s") == 1.0 and parse_speed("0.1") == 0.1
+    assert parse_speed("50mm/s") == pytest.approx(0.05, rel=1e-15)
+    assert main(["rolling-contact", "--radius", "20mm", "--load", "5N", "--materials",
+                 "steel,aluminium", "--mu", "0.3", "--speed", "2km/h", "--grid", "16",
+                 "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["speed"] == {"value": pytest.approx(2 / 3.6, rel=1e-12), "unit": "m/s"}
+    assert rec["frictional_power_at_speed"]["value"] == pytest.approx(
+        rec["frictional_power"]["value"] * 2 / 3.6, rel=1e-12)

@@ -257,3 +257,24 @@ def test_reuses_a_previous_demo_folder(tmp_path):
     assert names == ["notes.txt", SUMMARY]  # its own old figure removed, nothing else
     assert (tmp_path.parent / "x.png").exists()
     assert json.loads((tmp_path / SUMMARY).read_text())["status"] == "running"
+
+
+def test_rolling_section_states_its_assumptions_and_notes(demo):
+    """Issue 25 item 5: the rolling section's α_h = 1 (all input work lost) is said where
+    the moments are, with μ_r = M_r/(N R) computed from them; the elastic solve is set
+    against section 4's plastic regime; the sweep's resolution notes are in the text, not
+    only in summary.json."""
+    s = demo["summary"]
+    ro, st = s["rolling"], s["rolling"]["settings"]
+    flat = " ".join(demo["stdout"].split())
+    assert st["alpha_h"]["value"] == 1.0
+    assert "Assumed: α_h = 1" in flat and "an upper bound" in flat
+    radius = st["radius"]["value"]
+    for w, m in zip(ro["loads"]["value"], ro["moments"]["value"]):
+        assert f"{m / (w * radius):.3g}" in flat
+    if s["contact"]["regime"].startswith("plastic"):
+        assert "solves the contact elastically" in flat
+    prepared = set(st.get("scan_preparation", {}).get("notes", []))
+    for note in st["notes"]:
+        if note not in prepared:
+            assert " ".join(note.split()) in flat

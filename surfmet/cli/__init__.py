@@ -49,7 +49,9 @@ EPILOG = """examples:
   surfmet scales surface.zip --tip-radius 20nm --plot scales.png
   surfmet demo --out demo_out
 
-Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
+accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
+(steel:E=200GPa); a name not in the table with E and nu given is a custom material.
 """
 
 

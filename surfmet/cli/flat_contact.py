@@ -89,15 +89,17 @@ def run(args: argparse.Namespace) -> int:
         e_star, hard, names = args.e_star, args.hardness, []
     else:
         e_star, hard, names = materials_e_star(args.materials, args.hardness)
-        if args.hardness is None:
-            hard = None  # the BEM stays elastic unless a hardness is asked for
+    material_hardness = hard
+    if args.hardness is None:
+        hard = None  # the BEM stays elastic unless a hardness is asked for
     scans = read_measurements(args.files)
     if len(scans) > 1:
         return _run_several(args, scans, pressures, e_star, hard, names)
     bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
     rep = flat_contact(scans[0], e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
-                       progress=lambda done, total: bar.update(1), spikes=args.spikes)
+                       progress=lambda done, total: bar.update(1), spikes=args.spikes,
+                       material_hardness=material_hardness)
     bar.close()
     rec = {"file": args.files[0], **({"materials": names} if names else {}),
            **flat_contact_record(rep)}
@@ -162,7 +164,8 @@ def _print(rec: dict[str, Any]) -> None:
     print(f"  scan: {spikes}, {100 * prep['filled_fraction']['value']:.3g} % of the points "
           "filled")
     g = rec["grid"]
-    print(f"  {rec['boundary']} boundary, {g['nx']} x {g['ny']} cells, "
+    print(f"  {rec['boundary']} boundary, levelling {rec['levelling']}, "
+          f"{g['nx']} x {g['ny']} cells, "
           f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
           f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
     print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} "

@@ -10,8 +10,8 @@ from typing import Any
 def add_visco_arguments(p: argparse.ArgumentParser) -> None:
     """--speed, --loss, --viscoelastic (used by --model viscoelastic and all)."""
     p.add_argument("--speed", default="0.1", metavar="V",
-                   help="rolling speed in m/s for the viscoelastic model (default 0.1, the "
-                   "rotor's mid-run speed)")
+                   help="rolling speed for the viscoelastic model, e.g. 0.1m/s or 100mm/s "
+                   "(a bare number is m/s; default 0.1 m/s, the rotor's mid-run speed)")
     p.add_argument("--loss", default=None, metavar="ETA_BALL,ETA_PLATE",
                    help="loss factors tan(delta); each body's SLS puts its loss peak at the "
                    "contact frequency V/a (an upper bound). Default for --model all: the "
@@ -50,9 +50,8 @@ def run_visco(args: argparse.Namespace) -> int:
     n = 9 if n is None else n
     speed = speed_value(args.speed)
     if args.model == "all":
-        from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
-
         from surfmet.errors import SurfmetInputError
+        from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
 
         if not (args.mu > 0 and args.mu < float("inf")):
             raise SurfmetInputError("--mu must be a positive number")

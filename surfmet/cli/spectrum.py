@@ -6,7 +6,15 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, check_output, emit_json, log, pressure, save_figure
+from surfmet.cli._common import (
+    add_json_flag,
+    add_spikes_argument,
+    check_output,
+    emit_json,
+    log,
+    pressure,
+    save_figure,
+)
 from surfmet.cli.scales import add_measurement_arguments
 
 EPILOG = """examples:
@@ -52,6 +60,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("files", nargs="+", metavar="FILE",
                    help="areal scan file; or several measurements of one surface")
     add_periodic_argument(p)
+    add_spikes_argument(p)
     p.add_argument("--materials", metavar="A,B", default=None,
                    help="scan and counter-body materials for the plasticity index")
     p.add_argument("--hardness", type=pressure, metavar="P", default=None,
@@ -82,20 +91,22 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.cli.scales import read_measurements
-    from surfmet.mechanics.spectrum import prepare, spectrum
+    from surfmet.mechanics.spectrum import prepared_scan, spectrum
     from surfmet.records import spectrum_record
 
     check_output(args.plot, "--plot")
     scans = read_measurements(args.files)
     if len(scans) > 1:
         return _run_several(args, scans)
-    scan, per, level = prepare(scans[0], periodic_flag(args.periodic))
+    scan, per, level, preparation = prepared_scan(scans[0], periodic=periodic_flag(args.periodic),
+                                                  spikes=args.spikes)
     e_star = hard = None
     names: list[str] = []
     if args.materials:
         e_star, hard, names = materials_e_star(args.materials, args.hardness)
     s = spectrum(scan, periodic=per, e_star=e_star, hardness=hard)
-    rec = {"file": args.files[0], "levelling": level, **spectrum_record(s)}
+    rec = {"file": args.files[0], "levelling": level, "scan_preparation": preparation,
+           **spectrum_record(s)}
     if names:
         rec["materials"] = names
         rec["e_star"] = {"value": e_star, "unit": "Pa"}
@@ -149,6 +160,9 @@ def _print(rec: dict[str, Any], s: Any) -> None:
         return "none" if not q else f"{format_length(2 * math.pi / q)} (q = {q:.4g} rad/m)"
 
     print(f"file  {rec['file']}")
+    prep = rec["scan_preparation"]
+    for note in prep["notes"]:
+        print(f"  scan: {note}")
     print(f"  {'periodic, unwindowed' if s.periodic else 'not periodic, Hann window'}"
           f" (levelling: {rec['levelling']})")
     lo, hi = s.hurst.q_range

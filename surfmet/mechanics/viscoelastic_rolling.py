@@ -24,8 +24,8 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.material_spec import poisson_ratio, spec_options
-from surfmet.units import parse_pressure, quantity
+from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
+from surfmet.units import quantity
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
 
@@ -62,7 +62,7 @@ def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
     kw: dict[str, float] = {}
     for key, value in spec_options(opts, "viscoelastic"):
         if key in ("eg", "er"):
-            kw[key] = parse_pressure(value)
+            kw[key] = material_constant(value, f"{body}: {key}")
         elif key in ("tau", "tau_c", "tc"):
             kw["tau"] = _parse_time(value)
         elif key == "nu":
