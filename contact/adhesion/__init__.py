@@ -1,0 +1,1 @@
+"""Adhesive normal contact: interaction laws, the adhesive solve, approach-retraction cycles."""
