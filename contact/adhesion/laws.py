@@ -71,6 +71,11 @@ class DugdaleLaw:
         """The largest tension (Pa)."""
         return self.sigma0
 
+    @property
+    def reach(self) -> float:
+        """The gap beyond which the surfaces no longer attract (m): h0."""
+        return self.range
+
     def potential(self, g: np.ndarray | float) -> np.ndarray:
         """phi(g) = -sigma0 (h0 - g)_+ (J/m^2)."""
         return -self.sigma0 * np.maximum(self.range - np.asarray(g, dtype=float), 0.0)
@@ -112,6 +117,11 @@ class ExponentialLaw:
     def peak(self) -> float:
         """The largest tension w / rho (Pa), at contact."""
         return self.work / self.rho
+
+    @property
+    def reach(self) -> float:
+        """The gap at which the tension has fallen to 5 % of its peak (m): rho ln 20."""
+        return self.rho * math.log(20.0)
 
     def potential(self, g: np.ndarray | float) -> np.ndarray:
         """phi(g) = -w exp(-g / rho) (J/m^2)."""
