@@ -69,6 +69,11 @@ PRESSURE_UNITS: Mapping[str, float] = {
     "N/mm^2": 1e6,
     "N/mm²": 1e6,
 }
+#: Work of adhesion (surface energy per area); N/m is the same unit (a line tension).
+SURFACE_ENERGY_UNITS: Mapping[str, float] = {
+    "J/m2": 1.0, "J/m^2": 1.0, "J/m²": 1.0, "mJ/m2": 1e-3, "mJ/m^2": 1e-3, "mJ/m²": 1e-3,
+    "N/m": 1.0, "mN/m": 1e-3,
+}
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY_RE = re.compile(rf"^\s*({_NUMBER})\s*([^\s\d].*?)?\s*$")
@@ -148,6 +153,11 @@ def parse_force(text: str | float) -> float:
 def parse_pressure(text: str | float) -> float:
     """Parse a pressure such as ``"1.2GPa"`` or ``"300 MPa"`` to pascals."""
     return _parse(text, PRESSURE_UNITS, "pressure", "MPa")
+
+
+def parse_surface_energy(text: str | float) -> float:
+    """Parse a work of adhesion such as ``"0.05J/m2"``, ``"50 mJ/m^2"`` to J/m^2."""
+    return _parse(text, SURFACE_ENERGY_UNITS, "work of adhesion", "J/m2")
 
 
 def parse_length_range(text: str) -> tuple[float, float]:

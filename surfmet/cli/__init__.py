@@ -34,6 +34,7 @@ SUBCOMMANDS = (
     "spectrum",
     "flat_contact",
     "rolling_contact",
+    "adhesion",
 )
 
 EPILOG = """examples:
@@ -45,6 +46,7 @@ EPILOG = """examples:
   surfmet rotor table3_frames.tsv
   surfmet spectrum plate.x3p --plot psd.png
   surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
   surfmet demo --out demo_out
 
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.
