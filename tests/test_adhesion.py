@@ -12,13 +12,15 @@ import math
 
 import numpy as np
 import pytest
+from contact_synth import rough_surface
 from maugis_reference import md_pull_off
 
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.cycle import refine_pull_off, run_branch
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw, maugis_parameter
 from contact.adhesion.solver import adhesive_problem, solve_adhesive
-from contact.errors import ContactInputError
+from contact.bem import solve_normal
+from contact.errors import ContactInputError, ConvergenceError
 
 # Units in which K = 4 E* / 3 = 1, R = 1 and the Maugis length (pi w R^2 / K)^(1/3) = 0.1.
 R, E_STAR, W = 1.0, 0.75, 1e-3 / math.pi
@@ -139,3 +141,43 @@ def test_energy_balance_along_the_branches():
         work = 0.5 * (leg.load[1:] + leg.load[:-1]) * np.diff(leg.surface_approach)
         assert np.abs(np.diff(leg.energy) - work).max() < 0.01 * np.abs(work).max()
     assert ball.cycle.hysteresis_energy >= -1e-3 * np.abs(work).max()
+
+
+def _rough(n: int = 64, dx: float = 1e-6) -> np.ndarray:
+    z = rough_surface(n, dx, 0.2e-6, seed=3, corr=8e-6)
+    return z.max() - z
+
+
+def test_without_adhesion_it_is_the_periodic_bem():
+    """Negligible w on a rough periodic surface: the same load, pressure and contact as the
+    Polonsky-Keer solver (contact.bem.solve_normal), a separate algorithm, at 1e-5."""
+    h, dx, e_star = _rough(), 1e-6, 1e11
+    law = ExponentialLaw(1e-12, 1e-12)
+    st = solve_adhesive(adhesive_problem(h, dx, e_star, law), 0.25e-6, tol=1e-7)
+    ref = solve_normal(h, dx, e_star=e_star, approach=st.approach, periodic=True, tol=1e-10,
+                       precision="double")
+    assert st.load == pytest.approx(ref.load, rel=1e-5)
+    p = np.asarray(ref.pressure)
+    assert np.abs(st.pressure - p).max() < 1e-5 * p.max()
+    assert np.array_equal(st.gap <= 0, p > 0)
+
+
+def test_adhesion_on_a_rough_flat_touches_more():
+    """A rough, nominally flat periodic scan: at the same approach adhesion pulls more of
+    the surface into contact than contact.bem.solve_normal finds without it."""
+    h, dx, e_star = _rough(), 1e-6, 1e9  # a soft polymer
+    law = DugdaleLaw.from_range(0.1, 5e-9)
+    prob = adhesive_problem(h, dx, e_star, law)
+    steps = np.linspace(-0.02e-6, 0.5e-6, 8)
+    leg_in, _ = run_branch(prob, steps, tol=1e-6)
+    bare = [solve_normal(h, dx, e_star=e_star, approach=d, periodic=True)
+            for d in leg_in.surface_approach[-3:]]
+    bare_area = np.array([b.contact_area for b in bare])
+    assert np.all(leg_in.contact_area[-3:] >= bare_area + 5 * dx * dx)  # 5 more pixels
+
+
+def test_non_convergence_is_one_error():
+    law = dugdale(1.0)
+    h, dx = _sphere(32, 0.6)
+    with pytest.raises(ConvergenceError, match="adhesive solve stopped"):
+        solve_adhesive(adhesive_problem(h, dx, E_STAR, law), 0.01, max_iter=2)

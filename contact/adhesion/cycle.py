@@ -73,21 +73,51 @@ class Cycle:
     hysteresis_energy: float
 
 
+#: A step that changes the touching area by more than this share of it is split in two,
+#: so that the solution follows its branch quasi-statically instead of leaping off it.
+MAX_AREA_CHANGE = 0.1
+#: Halvings allowed per step (the finest step is 2**-MAX_SPLITS of the one asked for).
+MAX_SPLITS = 5
+
+
+def _advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
+             target: float, tol: float, depth: int = 0) -> list[tuple[float, AdhesiveState]]:
+    """Solve at ``target`` from ``previous``; split the step while the area leaps."""
+    st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
+                        tol=tol)
+    if previous is None or depth >= MAX_SPLITS:
+        return [(target, st)]
+    a0, a1 = previous[1].contact_area, st.contact_area
+    if abs(a1 - a0) <= MAX_AREA_CHANGE * max(a0, a1):
+        return [(target, st)]
+    middle = _advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1)
+    return middle + _advance(problem, middle[-1], target, tol, depth + 1)
+
+
 def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
-               initial: np.ndarray | None = None, *, tol: float = 1e-7,
+               initial: tuple[float, np.ndarray] | None = None, *, tol: float = 1e-7,
                progress: Callable[[int, int], None] | None = None,
                ) -> tuple[Branch, list[np.ndarray]]:
-    """Solve at each approach in turn, warm-started; the branch and every step's gap."""
-    states: list[AdhesiveState] = []
-    g = initial
+    """Solve at each approach in turn, warm-started; the branch and every step's gap.
+
+    ``initial`` is (approach, gap) of the state to start from. A step over which the
+    touching area changes by more than :data:`MAX_AREA_CHANGE` is halved (up to
+    :data:`MAX_SPLITS` times), so the branch holds the approaches asked for and the
+    intermediate ones.
+    """
+    done: list[tuple[float, AdhesiveState]] = []
+    previous = None
+    if initial is not None:
+        d0, g0 = initial
+        previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
     for k, d in enumerate(approaches):
-        st = solve_adhesive(problem, float(d), g, tol=tol)
-        states.append(st)
-        g = st.gap
+        done += _advance(problem, previous, float(d), tol)
+        previous = done[-1]
         if progress is not None:
             progress(k + 1, len(approaches))
+    states = [st for _, st in done]
     branch = Branch(
-        approach=np.asarray(approaches, dtype=float),
+        approach=np.array([d for d, _ in done]),
         surface_approach=np.array([s.approach for s in states]),
         load=np.array([s.load for s in states]),
         contact_area=np.array([s.contact_area for s in states]),
@@ -176,7 +206,7 @@ def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
         return None if progress is None else (lambda k, _m: progress(offset + k, n))
 
     leg_in, gaps_in = run_branch(problem, steps, tol=tol, progress=half(0))
-    leg_out, gaps_out = run_branch(problem, steps[::-1], gaps_in[-1], tol=tol,
+    leg_out, gaps_out = run_branch(problem, steps[::-1], (steps[-1], gaps_in[-1]), tol=tol,
                                    progress=half(len(steps)))
     force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol)
     return Cycle(

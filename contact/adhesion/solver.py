@@ -53,7 +53,8 @@ class AdhesiveState:
         Elastic plus interaction energy (J), the potential whose derivative in the
         approach is the load.
     residual : float
-        Largest violation of equilibrium, relative to the law's peak tension.
+        Largest violation of equilibrium, relative to the larger of the law's peak
+        tension and the largest compressive pressure.
     iterations : int
         L-BFGS-B iterations.
     """
@@ -124,7 +125,8 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
     initial : ndarray, optional
         Warm start: a gap field (e.g. the previous step's); default the rigid gap.
     tol : float
-        Largest projected gradient, relative to the law's peak tension.
+        Largest violation of equilibrium (projected gradient), relative to the larger of
+        the law's peak tension and the largest compressive pressure.
     max_iter : int
         L-BFGS-B iteration limit.
 
@@ -140,7 +142,7 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
     for it in range(1, max_iter + 1):
         p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(y - h + approach), s=h.shape)
         grad = p + law.traction(y)
-        if _violation(y, grad).max() <= tol * law.peak:
+        if _violation(y, grad).max() <= tol * max(law.peak, float(p.max())):
             return _state(problem, y, approach, it, tol)
         g_new = np.maximum(y - step * grad, 0.0)
         if np.vdot(grad, g_new - g) > 0.0:  # momentum points uphill: restart it
@@ -164,10 +166,10 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
     p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
     t = law.traction(g)
     touching = g <= 0.0
-    residual = float(_violation(g, p + t).max()) / law.peak
+    residual = float(_violation(g, p + t).max()) / max(law.peak, float(p.max()))
     if residual > tol:
         raise ConvergenceError(
-            f"the adhesive solve stopped at residual {residual:.3g} of the peak tension "
+            f"the adhesive solve stopped at residual {residual:.3g} of the pressure scale "
             f"(approach {approach:.4g} m); refine the approach steps or the grid",
             residual=residual, iterations=nit)
     area = problem.cell_area
