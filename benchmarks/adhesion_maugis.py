@@ -20,13 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
-
-from maugis_reference import md_pull_off
-
-from contact.adhesion.cycle import refine_pull_off, run_branch
-from contact.adhesion.laws import DugdaleLaw
-from contact.adhesion.solver import adhesive_problem
+ROOT = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT), str(ROOT / "tests")]  # this checkout's packages and test truths
 
 R, E_STAR, W = 1.0, 0.75, 1e-3 / math.pi
 K = 4 * E_STAR / 3
@@ -36,6 +31,10 @@ D_SCALE = (math.pi ** 2 * W * W * R / K ** 2) ** (1 / 3)
 
 def pull_off(lam: float, n: int, steps: int) -> tuple[float, float]:
     """(pull-off / pi w R, cohesive zone in pixels) at Maugis parameter ``lam``."""
+    from contact.adhesion.cycle import refine_pull_off, run_branch
+    from contact.adhesion.laws import DugdaleLaw
+    from contact.adhesion.solver import adhesive_problem
+
     law = DugdaleLaw(W, 0.5 * lam * (math.pi * W * K * K / R) ** (1 / 3))
     ell = max(A_SCALE * 6 ** (1 / 3), math.sqrt(2 * R * law.range))
     dx = 4 * ell / n
@@ -54,6 +53,8 @@ def main() -> None:
     ap.add_argument("--grids", default="64,128")
     ap.add_argument("--steps", type=int, default=24)
     args = ap.parse_args()
+    from maugis_reference import md_pull_off
+
     print("lambda  n    zone_px  pull_off  maugis  error_%  time_s")
     for lam in (float(s) for s in args.lambdas.split(",")):
         truth = md_pull_off(lam)
