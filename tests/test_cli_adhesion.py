@@ -93,3 +93,12 @@ def test_plot_path_checked_before_the_work(capsys, tmp_path):
     bad = tmp_path / "missing" / "cycle.png"
     assert main([*BASE, "--work-of-adhesion", "50mJ/m2", *FAST, "--plot", str(bad)]) == 1
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_plot_is_written(capsys, tmp_path):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "cycle.png"
+    argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "6",
+            "--quiet", "--plot", str(out)]
+    assert main(argv) == 0
+    assert out.stat().st_size > 1000 and out.read_bytes()[:4] == b"\x89PNG"
