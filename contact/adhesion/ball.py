@@ -10,11 +10,11 @@ about l_pz = pi E* w / (4 sigma0^2) wide in the JKR limit (the small-zone limit 
 Maugis' 1992 equations; sigma0 the law's peak tension). On a coarser grid the contact
 edge is pinned by the pixels and the pull-off comes out too large. Measured against
 Maugis' curve (benchmarks/adhesion_maugis.py: cell 4 x the larger of the JKR radius and
-the zone reach, 24 retraction steps): lambda = 1 gives +9.7 %, +3.6 %, +1.6 % at
-l_pz = 6.6, 13, 26 pixels (fixed steps); lambda = 5 gives +81 % at 0.53 pixel (with the
-step halving of :mod:`contact.adhesion.cycle`). Below :data:`MIN_ZONE_PIXELS` a
-warning is issued. The contact itself must span several pixels too: the JKR radius at
-zero load should be eight pixels or more.
+the zone reach, 24 retraction steps, step halving of :mod:`contact.adhesion.cycle`):
+lambda = 1 gives +11.8 % and +5.3 % at l_pz = 6.6 and 13 pixels (64^2, 128^2), an error
+that halves with the pixel; lambda = 5 gives +81 % at 0.53 pixel (128^2). Below
+:data:`MIN_ZONE_PIXELS` a warning is issued. The contact itself must span several pixels
+too: the JKR radius at zero load should be eight pixels or more.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from contact.adhesion.laws import InteractionLaw, tabor_parameter
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
 
-#: A cohesive zone narrower than this many pixels is under-resolved: about 5 % on the
+#: A cohesive zone narrower than this many pixels is under-resolved: about 7 % on the
 #: pull-off at lambda = 1 (see the module notes).
 MIN_ZONE_PIXELS = 10.0
 #: A JKR contact radius at zero load of fewer pixels than this is under-resolved.
