@@ -191,6 +191,12 @@ def test_adhesion_on_a_rough_flat_touches_more():
     assert np.all(leg_in.contact_area[-3:] >= bare_area + 5 * dx * dx)  # 5 more pixels
 
 
+def test_warm_start_of_another_grid_is_one_input_error():
+    h, dx = _sphere(32, 0.6)
+    with pytest.raises(ContactInputError, match="warm-start gap"):
+        solve_adhesive(adhesive_problem(h, dx, E_STAR, dugdale(1.0)), 0.01, np.zeros((16, 16)))
+
+
 def test_non_convergence_is_one_error():
     law = dugdale(1.0)
     h, dx = _sphere(32, 0.6)

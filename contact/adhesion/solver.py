@@ -136,6 +136,9 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
         When L-BFGS-B stops before the tolerance.
     """
     h, law = problem.gap0, problem.law
+    if initial is not None and np.shape(initial) != h.shape:
+        raise ContactInputError(
+            f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
     g = np.maximum(h - approach if initial is None else np.asarray(initial, dtype=float), 0.0)
     step = 1.0 / problem.spring  # 1 / the largest stiffness: the quadratic's Lipschitz constant
     y, theta = g.copy(), 1.0
