@@ -33,11 +33,12 @@ def test_json_record(capsys):
     f = rec["pull_off_force"]
     assert f["unit"] == "N"
     # Maugis-Dugdale at lambda 0.33 gives 1.80 pi w R (tests/maugis_reference.py)
-    assert f["value"] == pytest.approx(md_pull_off(rec["maugis_parameter"]) * math.pi * w * r,
-                                       rel=0.03)
+    lam = rec["maugis_parameter"]
+    assert lam["unit"] == "" and rec["tabor_parameter"]["unit"] == ""
+    assert f["value"] == pytest.approx(md_pull_off(lam["value"]) * math.pi * w * r, rel=0.03)
     # Maugis' lambda = 2 sigma0 (R / (pi w K^2))^(1/3), sigma0 = w / h0, by hand
     k = 4e9 / 3
-    assert rec["maugis_parameter"] == pytest.approx(
+    assert lam["value"] == pytest.approx(
         2 * (w / h0) * (r / (math.pi * w * k * k)) ** (1 / 3), rel=1e-12)
     assert rec["hysteresis_energy"]["unit"] == "J" and rec["hysteresis_energy"]["value"] > 0
     for leg in ("in", "out"):
