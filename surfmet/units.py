@@ -69,6 +69,11 @@ PRESSURE_UNITS: Mapping[str, float] = {
     "N/mm^2": 1e6,
     "N/mm²": 1e6,
 }
+#: Work of adhesion (surface energy per area); N/m is the same unit (a line tension).
+SURFACE_ENERGY_UNITS: Mapping[str, float] = {
+    "J/m2": 1.0, "J/m^2": 1.0, "J/m²": 1.0, "mJ/m2": 1e-3, "mJ/m^2": 1e-3, "mJ/m²": 1e-3,
+    "N/m": 1.0, "mN/m": 1e-3,
+}
 
 SPEED_UNITS: Mapping[str, float] = {
     "m/s": 1.0, "cm/s": 1e-2, "mm/s": 1e-3, "um/s": 1e-6, "µm/s": 1e-6, "km/h": 1 / 3.6,
@@ -167,6 +172,11 @@ def parse_pressure(text: str | float, *, unit_required: bool = False) -> float:
 def parse_speed(text: str | float) -> float:
     """Parse a speed such as ``"1m/s"``, ``"50 mm/s"`` or ``"0.1"`` (m/s) to m/s."""
     return _parse(text, SPEED_UNITS, "speed", "m/s")
+
+
+def parse_surface_energy(text: str | float) -> float:
+    """Parse a work of adhesion such as ``"0.05J/m2"``, ``"50 mJ/m^2"`` to J/m^2."""
+    return _parse(text, SURFACE_ENERGY_UNITS, "work of adhesion", "J/m2")
 
 
 def parse_length_range(text: str) -> tuple[float, float]:

@@ -35,6 +35,7 @@ SUBCOMMANDS = (
     "flat_contact",
     "rolling_contact",
     "scales",
+    "adhesion",
 )
 
 EPILOG = """examples:
@@ -47,6 +48,7 @@ EPILOG = """examples:
   surfmet spectrum plate.x3p --plot psd.png
   surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
   surfmet scales surface.zip --tip-radius 20nm --plot scales.png
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
   surfmet demo --out demo_out
 
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds

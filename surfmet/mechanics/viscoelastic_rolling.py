@@ -332,7 +332,9 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         from surfmet.mechanics.scan_preparation import prepare_scans
 
         pair = prepare_scans(plate, ball, spikes=spikes).pair
-        half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
+        from contact.viscoelastic.window import sphere_window
+
+        half = sphere_window(load, radius, creep.relaxed)
         z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
     res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
     if mu is None:
