@@ -63,3 +63,35 @@ def test_bad_input_is_one_line(capsys, args, message):
     assert main([*BASE, *args]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0]
+
+
+PAIR = ["--plate", "surfmet/data/paper_plate.x3p", "--ball", "surfmet/data/paper_ball.x3p"]
+ROUGH = ["rolling-contact", *PAIR, "--radius", "20mm", "--load", "5N",
+         "--materials", "steel,aluminium", "--mu", "0.3"]
+
+
+def test_rough_domain_is_sized_from_the_scans(capsys):
+    """The help's own example on the bundled pair: rough contact spreads beyond 1.5 Hertz
+    radii, so the domain comes from the roughness (as for ``contact``) and holds the whole
+    contact: no loaded element on the domain's edge, and the load carried in full."""
+    from contact.geometry import contact_extent
+
+    assert main([*ROUGH, "--grid", "32", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    e_star = composite_modulus(material("steel"), material("aluminium"))
+    side = rec["grid"]["domain_side"]
+    assert side["unit"] == "m"
+    a = (3 * 5.0 * 0.02 / (4 * e_star)) ** (1 / 3)
+    assert side["value"] > 2 * 1.5 * a  # main's fixed 1.5 a_Hertz did not hold it
+    assert side["value"] >= 2 * 1.25 * contact_extent(0.02, 5.0, e_star, 0.0)
+    assert rec["contact_area"]["value"] > 0
+    assert abs(rec["fx"]["value"]) < 1e-6 * 5.0  # free rolling
+
+
+def test_too_small_a_size_names_the_option(capsys):
+    """A user-fixed domain the contact outgrows is refused in one line naming --size
+    (after the notes on the scans' preparation)."""
+    assert main([*ROUGH, "--grid", "16", "--size", "150um"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert not any(line.startswith("note") for line in err[-1:])
+    assert "--size" in err[-1] and "leading edge" in err[-1]

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from contact.errors import ContactInputError, ConvergenceError
+from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.influence import HalfSpacePair, PairConstants
@@ -111,7 +111,7 @@ def steady_rolling(
     else:
         p, delta = solve_pressure(op, grid.h, load)
     if np.any(p[:, -1] > 0):
-        raise ContactInputError(
+        raise EdgeContactError(
             "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
     if start is not None:
         restate(start.state, mu * p)

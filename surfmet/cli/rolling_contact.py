@@ -11,6 +11,7 @@ from surfmet.cli._common import (
     add_spikes_argument,
     emit_json,
     log,
+    positive_length,
     spike_summary,
 )
 from surfmet.cli.rolling_contact_visco import add_visco_options, run_viscoelastic
@@ -54,6 +55,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="rolling speed in m/s (adds the frictional power in W)")
     p.add_argument("--grid", type=int, metavar="N",
                    help="elements per side (default 64; 256 with --line)")
+    p.add_argument("--size", type=positive_length, metavar="L",
+                   help="domain side (default: automatic from Hertz and the scans' "
+                   "roughness, as for `surfmet contact`, enlarged if the contact outgrows it)")
     add_spikes_argument(p)
     add_visco_options(p)
     add_json_flag(p)
@@ -77,6 +81,9 @@ def run(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.mu) and args.mu > 0):
         raise SurfmetInputError("--mu must be a positive number")
     if args.viscoelastic:
+        if args.size is not None:
+            raise SurfmetInputError("--size sets the elastic solver's domain; the "
+                                    "viscoelastic model sizes its own")
         return run_viscoelastic(args)
     load = parse_line_load(args.load) if args.line else units.parse_force(args.load)
     if not load > 0:
@@ -96,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
         roughness = (pair.roughness, pair.dx, pair.dy)
     rc = solve_rolling_contact(args.radius, load, args.materials, args.mu,
                                creepage=args.creepage, line=args.line, speed=args.speed,
-                               grid=args.grid, roughness=roughness)
+                               grid=args.grid, roughness=roughness, size=args.size)
     rec = rolling_contact_record(rc)
     if args.json:
         emit_json(rec)
