@@ -95,3 +95,56 @@ def test_too_small_a_size_names_the_option(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert not any(line.startswith("note") for line in err[-1:])
     assert "--size" in err[-1] and "leading edge" in err[-1]
+
+
+@pytest.mark.parametrize("extra, shape", [
+    (["--load", "5N", "--grid", "100000"], "x"),
+    (["--load", "5N/mm", "--line", "--grid", "100000000"], None),
+    (["--load", "5N", "--grid", "100000", "--viscoelastic",
+      "plate:Eg=3GPa:Er=1GPa:tau=1ms", "--speed", "1"], "x"),
+])
+def test_grid_beyond_memory_is_refused_in_one_line(capsys, monkeypatch, extra, shape):
+    """As ``contact`` and ``hertz-check`` do: a grid that cannot fit is refused before
+    anything is allocated, in one line naming the largest grid that fits (here with 2 GB
+    available; the named grid's estimate fits, the next even one's does not)."""
+    import re
+
+    from contact.bem.memory import SAFETY
+    from contact.tangential import memory
+
+    monkeypatch.setattr(memory, "available_bytes", lambda: 2 * 10**9)
+    assert main([*BASE, "--mu", "0.3", *extra]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "largest grid that fits" in err[0]
+    best = int(re.search(r"--grid (\d+)", err[0]).group(1))
+    if shape:
+        assert f"{best} x {best} elements" in err[0]
+    line = "--line" in extra
+    budget = SAFETY * 2e9
+    assert memory.estimate_rolling_bytes(best, line=line) <= budget
+    assert memory.estimate_rolling_bytes(best + 2, line=line) > budget
+
+
+def test_memory_estimate_bounds_the_measured_peak():
+    """The estimate is an upper bound of what a 3D solve adds to the peak resident set,
+    measured in a fresh interpreter after a small warm-up solve; the peak is reset after
+    the warm-up (Linux ``clear_refs``), so that compiling the kernels does not hide it."""
+    import subprocess
+    import sys
+
+    from contact.tangential.memory import estimate_rolling_bytes
+
+    code = (
+        "from surfmet.mechanics.rolling_contact import solve_rolling_contact as s\n"
+        "def kb(key):\n"
+        "    return next(int(x.split()[1]) for x in open('/proc/self/status')\n"
+        "                if x.startswith(key))\n"
+        "s(0.02, 5.0, 'steel,aluminium', 0.3, grid=16)\n"
+        "open('/proc/self/clear_refs', 'w').write('5')\n"
+        "r = kb('VmRSS:')\n"
+        "s(0.02, 5.0, 'steel,aluminium', 0.3, grid=192)\n"
+        "print((kb('VmHWM:') - r) * 1024)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    added = int(out.stdout.split()[-1])
+    assert 0 < added <= estimate_rolling_bytes(192)

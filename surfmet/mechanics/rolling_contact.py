@@ -112,6 +112,7 @@ def solve_rolling_contact(
     """
     from contact.errors import EdgeContactError
     from contact.tangential import Creepage, pair_constants, steady_rolling
+    from contact.tangential.memory import check_rolling_memory
     from surfmet.mechanics.material_spec import parse_materials
 
     ball_m, plate_m = parse_materials(materials)
@@ -121,6 +122,8 @@ def solve_rolling_contact(
     n = grid or (256 if line else 64)
     if n < 8:
         raise SurfmetInputError("--grid needs at least 8 elements a side")
+    # before anything of the grid's size is allocated
+    check_rolling_memory(n, line=line)
     if size is not None and not (math.isfinite(size) and size > 0):
         raise SurfmetInputError("--size must be a positive length")
     half = 0.5 * size if size is not None else _half_width(radius, load, constants.e_star,
