@@ -148,3 +148,33 @@ def test_memory_estimate_bounds_the_measured_peak():
                          check=True)
     added = int(out.stdout.split()[-1])
     assert 0 < added <= estimate_rolling_bytes(192)
+
+
+def test_dissipation_is_never_negative_and_convergence_is_stated(capsys):
+    """mu = 1e9: every element sticks, nothing slips, so nothing dissipates (main gave a
+    negative frictional power: -q . s of the solver's tolerance-level stick slip); the
+    record states its convergence as ``contact`` does (iterations, residual, converged)."""
+    assert main([*BASE, "--load", "5N", "--materials", "steel,aluminium", "--mu", "1e9",
+                 "--grid", "32", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["slip_area"]["value"] == 0.0
+    assert rec["frictional_power"]["value"] == 0.0
+    assert rec["converged"] is True and rec["iterations"] >= 1
+    assert 0 <= rec["residual"]["value"] < 1e-3
+    assert rec["solver"]["tolerance"] == 1e-6
+
+
+def test_slip_elements_dissipate_mu_p_slip():
+    """With slip, the dissipation is the sum over the slip elements of mu p |s| dA (the
+    traction opposes the slip there), and positive."""
+    import numpy as np
+
+    from contact.tangential.kernels import SLIP
+    from surfmet.mechanics.rolling_contact import solve_rolling_contact
+
+    r = solve_rolling_contact(0.02, 5.0, "steel,aluminium", 0.3, creepage=2e-4,
+                              grid=32).result
+    slip = r.state == SLIP
+    expected = float((0.3 * r.p * np.hypot(r.s[0], r.s[1]))[slip].sum() * r.grid.area)
+    assert slip.any() and expected > 0
+    assert r.frictional_power == pytest.approx(expected, rel=1e-9)

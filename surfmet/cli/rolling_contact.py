@@ -124,6 +124,8 @@ def _print_summary(rec: dict) -> None:
         print(f"  {key:32s} {fmt(key)}")
     if "frictional_power_at_speed" in rec:
         print(f"  {'frictional_power_at_speed':32s} {fmt('frictional_power_at_speed')}")
+    print(f"  {'solver':32s} {rec['iterations']} iterations, residual "
+          f"{rec['residual']['value']:.2e}, converged")
     for note in rec.get("notes", []):
         print(f"  note: {note}")
     log(f"sign convention: {rec['sign_convention']}")

@@ -185,6 +185,7 @@ def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
     """The JSON record of a solve: every value with its unit."""
     from contact.tangential.results import edge_note
+    from contact.tangential.steady import rolling_residual
     from surfmet.units import quantity
 
     r = rc.result
@@ -211,6 +212,13 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "edge_dissipation_share": quantity(r.edge_dissipation_share, "1"),
         "rolling_resistance_coefficient": quantity(
             r.rolling_resistance_coefficient(rc.radius), "1"),
+        # convergence, stated as ``contact`` states it (a solve that does not converge
+        # raises instead of returning)
+        "iterations": r.outer,
+        "residual": quantity(rolling_residual(r), "1"),
+        "converged": True,
+        "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
+                   "operator_products": r.matvecs},
         "kalker_K": r.constants.K,
         "dundurs_beta": r.constants.beta,
     }
