@@ -424,14 +424,14 @@ def write_report(
     paths = [str(p) for p in paths]
     if not paths:
         raise SurfmetInputError("the report needs at least one scan file")
+    from surfmet.atomic import check_writable, write_text
+
     out = Path(out)
-    if not out.parent.exists():
-        raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
+    check_writable(out, "report")
     sections = []
     with progress_bar(len(paths), "report", progress) as bar:
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)
-    out.write_text(render_html(sections, title=title, options=options, hertz=hertz),
-                   encoding="utf-8")
+    write_text(out, render_html(sections, title=title, options=options, hertz=hertz))
     return sections

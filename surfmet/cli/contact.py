@@ -119,8 +119,11 @@ def run(args: argparse.Namespace) -> int:
     rec = sol.to_json()
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
-        np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
-                            summary=json.dumps(jsonable(rec)))
+        from surfmet.atomic import atomic_open
+
+        with atomic_open(args.out, "wb") as fh:  # a file object: numpy adds no suffix
+            np.savez_compressed(fh, **res.arrays(), dx=res.dx, dy=res.dy,
+                                summary=json.dumps(jsonable(rec)))
     if args.json:
         emit_json(rec)
         return 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
 import sys
 from typing import Any
@@ -201,8 +202,10 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
                 units[sym] = q["unit"]
     cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
              "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
-    fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
-    try:
+    from surfmet.atomic import atomic_open
+
+    with (contextlib.nullcontext(sys.stdout) if out == "-"
+          else atomic_open(out, "w", newline="", encoding="utf-8")) as fh:
         w = csv.writer(fh)
         w.writerow(cols)
         for rec in records:
@@ -213,9 +216,6 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))
             w.writerow(row)
-    finally:
-        if fh is not sys.stdout:
-            fh.close()
 
 
 def run(args: argparse.Namespace) -> int:
