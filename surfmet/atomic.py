@@ -20,7 +20,8 @@ from typing import IO, Any
 
 from surfmet.errors import SurfmetWriteError
 
-__all__ = ["atomic_open", "atomic_path", "check_writable", "write_bytes", "write_text"]
+__all__ = ["atomic_open", "atomic_path", "check_writable", "output_lock", "write_bytes",
+           "write_text"]
 
 
 def check_writable(path: str | os.PathLike[str] | None, what: str = "output") -> None:
@@ -130,3 +131,49 @@ def write_text(path: str | os.PathLike[str], text: str, encoding: str = "utf-8")
     with atomic_open(path, "w", encoding=encoding, newline="") as fh:
         fh.write(text)
     return Path(path)
+
+
+@contextlib.contextmanager
+def output_lock(path: str | os.PathLike[str]) -> Iterator[None]:
+    """Hold an exclusive lock on the output ``path`` for the block, so that two runs
+    never write one file at once (POSIX ``flock`` on a hidden ``.NAME.lock`` beside it,
+    removed at the end; released by the kernel if the process dies).
+
+    Raises
+    ------
+    SurfmetInputError
+        Another process holds the lock (its id is named).
+    """
+    import fcntl
+
+    from surfmet.errors import SurfmetInputError
+
+    target = Path(path)
+    lock = target.with_name(f".{target.name}.lock")
+    while True:
+        fd = os.open(lock, os.O_CREAT | os.O_RDWR, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = os.read(fd, 32).decode("ascii", "replace").strip() or "another process"
+            os.close(fd)
+            raise SurfmetInputError(
+                f"{target} is being written by another run (process {holder}); wait for it "
+                "to finish or write to another file") from None
+        try:
+            # a run that just finished may have removed the file we opened: lock the
+            # file that is there now
+            same = os.fstat(fd).st_ino == os.stat(lock).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        os.close(fd)
+    try:
+        os.ftruncate(fd, 0)
+        os.write(fd, str(os.getpid()).encode("ascii"))
+        yield
+    finally:
+        with contextlib.suppress(OSError):
+            lock.unlink()
+        os.close(fd)
