@@ -207,6 +207,61 @@ def _serial_map(func, items, on_error, progress, desc, done) -> list[Any]:
     return out
 
 
+#: How often (s) a worker process checks that the process that started it is alive.
+WATCH_INTERVAL = 0.5
+
+
+def _start_time(pid: int) -> str | None:
+    """A process's start time as the kernel states it (Linux ``/proc``), to tell it from a
+    later process given the same id; None where it cannot be read."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    if started is not None:
+        return _start_time(pid) == started
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _follow_owner(pid: int, started: str | None) -> None:
+    """Worker initializer: end this worker when the process that owns the pool is gone.
+
+    A pool's workers are children of the forkserver, not of the owner, so when the owner
+    is killed (SIGKILL, the out-of-memory killer) nothing tells them: they would finish
+    their item, wait for the next one for ever, and keep the forkserver alive with them.
+    A daemon thread checks the owner every :data:`WATCH_INTERVAL` s and exits the worker
+    at once (``os._exit``: nothing to flush; the owner is the one that writes results).
+    """
+    import threading
+    import time
+
+    def watch() -> None:
+        while _alive(pid, started):
+            time.sleep(WATCH_INTERVAL)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="surfmet-owner-watch", daemon=True).start()
+
+
+def _pool(n: int) -> Any:
+    """A process pool of ``n`` workers that end with the process that made it."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    me = os.getpid()
+    return ProcessPoolExecutor(max_workers=n, mp_context=_mp_context(),
+                               initializer=_follow_owner, initargs=(me, _start_time(me)))
+
+
 def _mp_context() -> Any:
     import multiprocessing as mp
 
@@ -216,7 +271,7 @@ def _mp_context() -> Any:
 
 def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
     import pickle
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import as_completed
     from concurrent.futures.process import BrokenProcessPool
 
     try:
@@ -229,7 +284,7 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
     results: list[Any] = [None] * len(items)
     broken: list[int] = []
     with progress_bar(len(items), desc, progress) as bar:
-        pool = ProcessPoolExecutor(max_workers=n, mp_context=_mp_context())
+        pool = _pool(n)
         try:
             futures = {pool.submit(func, item): k for k, item in enumerate(items)}
             for fut in as_completed(futures):
@@ -252,7 +307,7 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
         # one per fresh single-process pool: the innocent ones succeed, the item that
         # kills its process again gets the error row.
         for k in sorted(broken):
-            with ProcessPoolExecutor(max_workers=1, mp_context=_mp_context()) as solo:
+            with _pool(1) as solo:
                 try:
                     results[k] = solo.submit(func, items[k]).result()
                 except BrokenProcessPool:

@@ -3,6 +3,7 @@ incremental files that survive a kill, --resume, and the CLI's refusals."""
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import os
@@ -263,3 +264,65 @@ def test_a_full_disk_keeps_whole_rows_and_resume_finishes(tmp_path):
     _, rows, recs = _tables(c, j)
     assert sorted(int(r[0]) for r in rows) == sorted(r["index"] for r in recs) == \
         list(range(6))
+
+
+def _descendants(root: int) -> set[int]:
+    """Ids of the live (non-zombie) processes below ``root`` (Linux /proc)."""
+    parent = {}
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if stat[0] != "Z":
+                parent[int(d.name)] = int(stat[1])
+    found, frontier = set(), {root}
+    while frontier:
+        frontier = {p for p, pp in parent.items() if pp in frontier} - found
+        found |= frontier
+    return found
+
+
+def _live(pids: set[int]) -> set[int]:
+    out = set()
+    for p in pids:
+        try:
+            state = Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if state != "Z":
+            out.add(p)
+    return out
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads Linux /proc")
+def test_killing_the_sweep_ends_its_workers(tmp_path):
+    """SIGKILL to the main process of ``sweep --workers 2``: its two workers and the
+    forkserver end within seconds (main: they ran on indefinitely, ~220 MB each)."""
+    cmd = [sys.executable, "-m", "surfmet", "sweep", "--plates", PLATE, "--radius", "20mm",
+           "--loads", "1N:20N:8", "--grid", "128", "--workers", "2", "--quiet",
+           "--csv", str(tmp_path / "s.csv")]
+    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        below: set[int] = set()
+        while time.monotonic() < deadline and proc.poll() is None:
+            below = _descendants(proc.pid)
+            if len(below) >= 4:  # resource tracker, forkserver, two workers
+                break
+            time.sleep(0.1)
+        assert proc.poll() is None and len(below) >= 4, "the workers never started"
+        time.sleep(1.0)  # the workers are inside their first item
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+        deadline = time.monotonic() + 20
+        while _live(below) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert not _live(below), f"left running: {sorted(_live(below))}"
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)  # only this test's processes
