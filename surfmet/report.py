@@ -45,6 +45,7 @@ from surfmet.report_html import (
     kv_table,
     quantity_text,
 )
+from surfmet.units import valid_text
 
 # Display units of the parameter table: (SI unit) -> (factor to divide by, shown unit).
 DISPLAY_UNITS: dict[str, tuple[float, str]] = {
@@ -199,7 +200,7 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         sec.kind = res.kind  # "profile" also for a row of an areal scan
         sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
         sec.settings = res.settings
-        name = Path(str(path)).name
+        name = valid_text(Path(str(path)).name)
         if res.kind == "areal":
             sec.figures = _figures_areal(res.surface, res.parameters, include_3d)
         else:

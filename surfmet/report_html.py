@@ -15,8 +15,11 @@ from surfmet.errors import SurfmetInputError
 
 
 def esc(value: Any) -> str:
-    """HTML-escaped text of any value (quotes too, so it is safe in attributes)."""
-    return html.escape(str(value), quote=True)
+    """HTML-escaped text of any value (quotes too, so it is safe in attributes), valid
+    Unicode (:func:`surfmet.units.valid_text`: a file name that is not UTF-8)."""
+    from surfmet.units import valid_text
+
+    return html.escape(valid_text(str(value)), quote=True)
 
 
 def png_data_uri(png: bytes) -> str:

@@ -241,6 +241,7 @@ class RowWriter:
     def write(self, row: dict[str, tuple[Any, str]]) -> None:
         """Append one row to every open file and flush it to disk (all or nothing)."""
         from surfmet.errors import SurfmetWriteError
+        from surfmet.units import jsonable
 
         texts = {}
         if "csv" in self._files:
@@ -250,7 +251,7 @@ class RowWriter:
                 vals.append("" if v is None else (repr(v) if isinstance(v, float) else v))
             texts["csv"] = _csv_line(vals)
         if "json" in self._files:
-            texts["json"] = json.dumps(json_row(row), allow_nan=False, default=str) + "\n"
+            texts["json"] = json.dumps(jsonable(json_row(row)), allow_nan=False) + "\n"
         marks = {kind: self._files[kind].seek(0, os.SEEK_END) for kind in texts}
         try:
             for kind, text in texts.items():
@@ -280,8 +281,11 @@ class RowWriter:
 
 
 def _csv_line(values: Sequence[Any]) -> str:
+    from surfmet.units import valid_text
+
     buf = io.StringIO()
-    csv.writer(buf, lineterminator="\n").writerow(values)
+    csv.writer(buf, lineterminator="\n").writerow(
+        [valid_text(v) if isinstance(v, str) else v for v in values])
     return buf.getvalue()
 
 

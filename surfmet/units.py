@@ -187,19 +187,33 @@ def quantity(value: Any, unit: str) -> dict[str, Any]:
     return {"value": jsonable(value), "unit": unit}
 
 
+def valid_text(text: str) -> str:
+    """``text`` as valid Unicode: the bytes of a file name that are not UTF-8 (which
+    Python holds as lone surrogates, PEP 383) written as ``\\xNN`` escapes, as Python's
+    ``repr`` and ``ls -b`` show them, so that JSON, CSV and HTML outputs stay valid UTF-8
+    and the name can still be read. Text without such bytes is returned unchanged."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return text.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
+    return text
+
+
 def jsonable(obj: Any) -> Any:
     """Convert ``obj`` recursively into plain JSON types.
 
     Mappings become dicts, sequences and arrays become lists, NumPy scalars become Python
-    numbers, NaN and inf become ``None``, bytes are decoded, anything else unknown is
-    turned into its ``str``.
+    numbers, NaN and inf become ``None``, bytes are decoded, text is made valid Unicode
+    (:func:`valid_text`), anything else unknown is turned into its ``str``.
     """
     import numpy as np
 
-    if obj is None or isinstance(obj, (bool, str)):
+    if obj is None or isinstance(obj, bool):
         return obj
+    if isinstance(obj, str):
+        return valid_text(obj)
     if isinstance(obj, Mapping):
-        return {str(k): jsonable(v) for k, v in obj.items()}
+        return {valid_text(str(k)): jsonable(v) for k, v in obj.items()}
     if isinstance(obj, np.ndarray):
         return [jsonable(v) for v in obj.tolist()]
     if isinstance(obj, (list, tuple)):
@@ -214,7 +228,7 @@ def jsonable(obj: Any) -> Any:
         return bytes(obj).decode("utf-8", errors="replace")
     if hasattr(obj, "isoformat"):
         return obj.isoformat()
-    return str(obj)
+    return valid_text(str(obj))
 
 
 def format_length(value: float, digits: int = 4) -> str:

@@ -203,6 +203,7 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
     cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
              "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
     from surfmet.atomic import atomic_open
+    from surfmet.units import valid_text
 
     with (contextlib.nullcontext(sys.stdout) if out == "-"
           else atomic_open(out, "w", newline="", encoding="utf-8")) as fh:
@@ -210,7 +211,8 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
         w.writerow(cols)
         for rec in records:
             params = rec.get("parameters", {})
-            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec),
+            row = [valid_text(rec["file"]), rec["status"], valid_text(rec.get("error", "")),
+                   *_condition_cells(rec),
                    " | ".join(rec.get("settings", {}).get("caveats", []))]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")

@@ -15,6 +15,7 @@ import numpy as np
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Profile, Topography
 from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
+from surfmet.units import valid_text
 
 HEIGHT_LABEL = "height (µm)"
 
@@ -80,7 +81,7 @@ def height_map(
 def _scan_title(scan: Topography | Profile) -> str:
     from surfmet.units import format_length
 
-    name = Path(str(scan.metadata.get("source", ""))).name
+    name = valid_text(Path(str(scan.metadata.get("source", ""))).name)
     if isinstance(scan, Topography):
         size = f"{format_length(scan.size_x)} × {format_length(scan.size_y)}"
     else:
