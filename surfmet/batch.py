@@ -253,6 +253,54 @@ def _follow_owner(pid: int, started: str | None) -> None:
     threading.Thread(target=watch, name="surfmet-owner-watch", daemon=True).start()
 
 
+def _is_main_test(test: Any) -> bool:
+    """Whether an ``if`` test is ``__name__ == "__main__"`` (either way round)."""
+    import ast
+
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1
+            and isinstance(test.ops[0], ast.Eq)):
+        return False
+    sides = {type(n).__name__ + ":" + str(getattr(n, "id", getattr(n, "value", "")))
+             for n in (test.left, test.comparators[0])}
+    return sides == {"Name:__name__", "Constant:__main__"}
+
+
+def unguarded_main() -> tuple[str, int] | None:
+    """(script, line) when this call comes from a script's top level outside
+    ``if __name__ == "__main__":``, else None.
+
+    Worker processes are started by ``forkserver`` or ``spawn``, which import the main
+    script again in the new process (Python's "safe importing of the main module"): an
+    unguarded script starts its work again there, and the pool's workers die
+    bootstrapping. A script run as ``python -m package`` (``package.__main__``) and
+    interactive sessions are not imported again, and pass.
+    """
+    import ast
+
+    main = sys.modules.get("__main__")
+    file = getattr(main, "__file__", None)
+    spec = getattr(main, "__spec__", None)
+    if not file or (spec is not None and spec.name.rpartition(".")[2] == "__main__"):
+        return None
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_code.co_name == "<module>"
+                                     and frame.f_globals is vars(main)):
+        frame = frame.f_back
+    if frame is None:
+        return None
+    line = frame.f_lineno
+    try:
+        with open(file, encoding="utf-8") as fh:
+            tree = ast.parse(fh.read())
+    except (OSError, SyntaxError, ValueError):
+        return None
+    for node in tree.body:
+        if isinstance(node, ast.If) and _is_main_test(node.test) and \
+                node.lineno <= line <= (node.end_lineno or line):
+            return None
+    return file, line
+
+
 def _pool(n: int) -> Any:
     """A process pool of ``n`` workers that end with the process that made it."""
     from concurrent.futures import ProcessPoolExecutor
@@ -281,6 +329,13 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
             f"the batch function cannot be sent to worker processes ({exc}); use a "
             "module-level function or a functools.partial of one, or workers=1"
         ) from None
+    where = unguarded_main()
+    if where is not None:
+        raise SurfmetInputError(
+            f"{where[0]}, line {where[1]}: worker processes import this script again and "
+            "it would start them again there (every row would read 'worker process "
+            "died'): put the script's work under `if __name__ == \"__main__\":` (see "
+            "docs/quickstart.md, section 3), or use workers=1")
     results: list[Any] = [None] * len(items)
     broken: list[int] = []
     with progress_bar(len(items), desc, progress) as bar:
