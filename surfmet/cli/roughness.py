@@ -174,8 +174,10 @@ def _conditions_line(cond: dict[str, Any]) -> str:
 
     std = cond["standard"]
     n = cond["n_sampling"]
+    rk = cond.get("rk_line")
     return (f"standard {std['name']} ({std['why']}); λc {length(cond['lc'])}; "
-            f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})")
+            f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})"
+            + (f"; Rk construction {rk['value']} ({rk['why']})" if rk else ""))
 
 
 def _condition_cells(rec: dict[str, Any]) -> list[str]:
@@ -231,9 +233,9 @@ def run(args: argparse.Namespace) -> int:
     if len(args.files) == 1 and not args.csv:
         # One file: errors propagate, so the CLI prints one line and exits 1.
         res = roughness(args.files[0], **opts)
-        rec = {"file": args.files[0], **res.to_json()}
+        rec = {"file": args.files[0], "status": "ok", **res.to_json()}
         if args.json:
-            emit_json(rec)
+            emit_json([rec])  # one shape whatever the number of files: a list of records
         else:
             _print_table(rec)
         return 0
