@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
-import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -46,14 +45,6 @@ from surfmet.report_html import (
     quantity_text,
 )
 from surfmet.units import valid_text
-
-# Display units of the parameter table: (SI unit) -> (factor to divide by, shown unit).
-DISPLAY_UNITS: dict[str, tuple[float, str]] = {
-    "m": (1e-6, "µm"),
-    "1/m²": (1e6, "1/mm²"),
-    "1/m": (1e6, "1/µm"),
-    "m·%": (1e-6, "µm·%"),
-}
 
 _CSS = """
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
@@ -75,10 +66,9 @@ pre{background:#f6f6f6;padding:.6em;overflow:auto;font-size:.8em;max-height:30em
 
 def display_value(value: Any, unit: str) -> tuple[str, str]:
     """``(number text, unit text)`` of an SI parameter value for the table."""
-    if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        return "n/a", unit
-    factor, shown = DISPLAY_UNITS.get(unit, (1.0, unit))
-    return f"{value / factor:.5g}", shown
+    from surfmet.units import split_quantity
+
+    return split_quantity(value, unit, digits=5)
 
 
 @dataclass

@@ -231,12 +231,55 @@ def jsonable(obj: Any) -> Any:
     return valid_text(str(obj))
 
 
-def format_length(value: float, digits: int = 4) -> str:
-    """Human display of a length in the most readable of nm, µm, mm, m."""
+#: The display units of each JSON unit (largest first): text shows a value in the first
+#: whose factor it reaches (else the last), so that it reads as 3.725 nm, 203.8 MPa,
+#: 12.5 µm². JSON states every value in SI with the ASCII unit on the left (powers
+#: as ``^``: ``m^2``, ``1/m^2``; ``""`` for a dimensionless value); text and figures show
+#: it through :func:`split_quantity` / :func:`format_quantity`, in these units.
+DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
+    "m": (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)),
+    "m^2": (("m²", 1.0), ("mm²", 1e-6), ("µm²", 1e-12), ("nm²", 1e-18)),
+    "1/m": (("1/µm", 1e6), ("1/mm", 1e3), ("1/m", 1.0)),
+    "1/m^2": (("1/µm²", 1e12), ("1/mm²", 1e6), ("1/m²", 1.0)),
+    "Pa": (("GPa", 1e9), ("MPa", 1e6), ("kPa", 1e3), ("Pa", 1.0)),
+    "N": (("kN", 1e3), ("N", 1.0), ("mN", 1e-3), ("µN", 1e-6), ("nN", 1e-9)),
+    "N/m": (("N/mm", 1e3), ("N/m", 1.0)),
+    "W": (("W", 1.0), ("mW", 1e-3), ("µW", 1e-6), ("nW", 1e-9)),
+}
+
+
+def display_unit(unit: str) -> str:
+    """A JSON unit as text shows it: powers as superscripts, no unit for ``""``/``"1"``."""
+    if unit in ("", "1"):
+        return ""
+    return unit.replace("^-1", "⁻¹").replace("^2", "²").replace("^3", "³")
+
+
+def split_quantity(value: float | None, unit: str, digits: int = 4) -> tuple[str, str]:
+    """``(number, unit)`` text of an SI value in its most readable display unit
+    (:data:`DISPLAY_UNITS`); ``("n/a", unit)`` for a missing or non-finite value."""
+    if value is None or not math.isfinite(value):
+        return "n/a", display_unit(unit)
+    scales = DISPLAY_UNITS.get(unit)
+    if scales is None:
+        return f"{value:.{digits}g}", display_unit(unit)
+    a = abs(value)
+    shown, f = next(((u, f) for u, f in scales if a >= f), scales[-1])
+    x = value / f
+    # 37267 µm², not 3.727e+04 µm²: whole digits are never cut to an exponent
+    whole = int(math.log10(abs(x))) + 1 if abs(x) >= 1 else 0
+    return f"{x:.{max(digits, whole)}g}", shown
+
+
+def format_quantity(value: float | None, unit: str, digits: int = 4) -> str:
+    """One value with its unit for text output (:func:`split_quantity`), e.g.
+    ``format_quantity(2.037e8, "Pa") == "203.7 MPa"``."""
     if value is None or not math.isfinite(value):
         return "n/a"
-    a = abs(value)
-    for unit, f in (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)):
-        if a >= f or unit == "nm":
-            return f"{value / f:.{digits}g} {unit}"
-    return f"{value:g} m"  # pragma: no cover
+    number, shown = split_quantity(value, unit, digits)
+    return f"{number} {shown}".rstrip()
+
+
+def format_length(value: float, digits: int = 4) -> str:
+    """Human display of a length in the most readable of nm, µm, mm, m."""
+    return format_quantity(value, "m", digits)

@@ -20,9 +20,12 @@ from surfmet.roughness import roughness
 
 EVIL = '<script>alert("x")</script> & <img src=x onerror=alert(1)>'
 
-# shown unit of each SI unit (what a metrologist expects to read)
-SHOWN = {"m": "µm", "m·%": "µm·%", "1/m²": "1/mm²", "1/m": "1/µm", "%": "%", "°": "°", "": ""}
-FACTOR = {"m": 1e-6, "m·%": 1e-6, "1/m²": 1e6, "1/m": 1e6, "%": 1.0, "°": 1.0, "": 1.0}
+# the units a value may be shown in, for each SI unit, with their factors: the most
+# readable of them (1 <= number < 1000 unless it is the largest or smallest)
+SHOWN = {"m": {"m": 1.0, "mm": 1e-3, "µm": 1e-6, "nm": 1e-9},
+         "1/m^2": {"1/µm²": 1e12, "1/mm²": 1e6, "1/m²": 1.0},
+         "1/m": {"1/µm": 1e6, "1/mm": 1e3, "1/m": 1.0},
+         "%": {"%": 1.0}, "°": {"°": 1.0}, "": {"": 1.0}}
 
 
 class Page(HTMLParser):
@@ -100,8 +103,14 @@ def check_parameters(page: Page, res) -> None:
             continue
         assert float(r["si"]) == value  # the exact SI value, bit for bit
         name, shown, unit_text = r["cells"]
-        assert name == sym and unit_text == SHOWN[unit]
-        assert float(shown) * FACTOR[unit] == pytest.approx(value, rel=1e-4, abs=1e-300)
+        assert name == sym and unit_text in SHOWN[unit]
+        factors = SHOWN[unit]
+        assert float(shown) * factors[unit_text] == pytest.approx(value, rel=1e-4,
+                                                                  abs=1e-300)
+        f = factors[unit_text]
+        if 0 < abs(value) and f not in (max(factors.values()), min(factors.values())):
+            step = min(g for g in factors.values() if g > f) / f  # to the next unit up
+            assert 1 <= abs(float(shown)) < step, (sym, shown, unit_text)
 
 
 @pytest.fixture

@@ -113,9 +113,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _print_summary(rec: dict) -> None:
+    from surfmet.units import format_quantity
+
     def fmt(key: str) -> str:
-        q = rec[key]
-        return f"{q['value']:.6g} {q['unit']}"
+        return format_quantity(rec[key]["value"], rec[key]["unit"], digits=5)
 
     print(f"rolling contact ({rec['geometry']}, "
           f"{'free rolling' if rec['free_rolling'] else 'prescribed creepage'})")

@@ -120,17 +120,9 @@ def _options(args: argparse.Namespace) -> dict[str, Any]:
 
 
 def _display(value: Any, unit: str) -> str:
-    from surfmet.units import format_length
+    from surfmet.units import format_quantity
 
-    if value is None:
-        return "n/a"
-    if unit == "m":
-        return format_length(value)
-    if unit == "1/m²":
-        return f"{value * 1e-6:.5g} 1/mm²"
-    if unit == "1/m":
-        return f"{value * 1e-3:.5g} 1/mm"
-    return f"{value:.5g} {unit}".rstrip()
+    return format_quantity(value, unit, digits=5)
 
 
 def _print_table(rec: dict[str, Any]) -> None:

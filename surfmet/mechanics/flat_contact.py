@@ -140,7 +140,7 @@ def plot(rep: FlatContactReport, path: Any = None) -> Any:
     from surfmet.plots._style import finish, new_figure
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
-    p = rep.bem.pressure
+    p = np.asarray(rep.bem.pressure) / 1e6  # MPa, as every surfmet figure
     a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
     a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
               label="BEM, perimeter-corrected")
@@ -150,9 +150,9 @@ def plot(rep: FlatContactReport, path: Any = None) -> Any:
         a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
         if m.mean_gap is not None:
             a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
-    a1.set_xlabel("nominal pressure p (Pa)")
+    a1.set_xlabel("nominal pressure p (MPa)")
     a1.set_ylabel("A/A0")
-    a2.set_xlabel("nominal pressure p (Pa)")
+    a2.set_xlabel("nominal pressure p (MPa)")
     a2.set_ylabel("mean gap ū (µm)")
     a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     for ax in (a1, a2):

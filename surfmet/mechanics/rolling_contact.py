@@ -190,7 +190,7 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
 
     r = rc.result
     per = "/m" if rc.line else ""
-    area = "m" if rc.line else "m^2"
+    area = "m" if rc.line else "m^2"  # units as surfmet.units.DISPLAY_UNITS spells them
     rec: dict[str, Any] = {
         "sign_convention": SIGN_CONVENTION,
         "geometry": "cylinder on flat, plane strain" if rc.line else "sphere on flat",
@@ -200,7 +200,7 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "mu": r.mu,
         "grid": {"elements": rc.grid, "element_size": quantity(r.grid.dx, "m"),
                  "domain_side": quantity(rc.side, "m")},
-        "creepage": quantity(r.creepage.xi, "1"),
+        "creepage": quantity(r.creepage.xi, ""),
         "fx": quantity(r.fx, "N" + per),
         "fy": quantity(r.fy, "N" + per),
         "pmax": quantity(r.pmax, "Pa"),
@@ -209,13 +209,13 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "stick_area": quantity(r.stick_area, area),
         "slip_area": quantity(r.slip_area, area),
         "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
-        "edge_dissipation_share": quantity(r.edge_dissipation_share, "1"),
+        "edge_dissipation_share": quantity(r.edge_dissipation_share, ""),
         "rolling_resistance_coefficient": quantity(
-            r.rolling_resistance_coefficient(rc.radius), "1"),
+            r.rolling_resistance_coefficient(rc.radius), ""),
         # convergence, stated as ``contact`` states it (a solve that does not converge
         # raises instead of returning)
         "iterations": r.outer,
-        "residual": quantity(rolling_residual(r), "1"),
+        "residual": quantity(rolling_residual(r), ""),
         "converged": True,
         "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
                    "operator_products": r.matvecs},
