@@ -242,3 +242,28 @@ def test_hertz_options_on_the_command_line(tmp_path, evil_scan, capsys):
     assert 2e-7 * 2e-3 / a0**2 > 20 * 0.05
     assert "Hertz check" in body and "Hertz does not hold" in body
     assert "Hertz holds" not in body
+
+
+def test_hertz_table_puts_each_pair_side_by_side():
+    """a beside the contact radius, δ beside the approach, p0 beside pmax, each with the
+    difference (main: the keys sorted apart, no row held both)."""
+    from surfmet.report_hertz import hertz_html
+
+    check = {"hertz_holds": True, "alpha": {"value": 0.01, "unit": ""},
+             "hertz": {"a": {"value": 1.368e-4, "unit": "m"},
+                       "delta": {"value": 9.356e-7, "unit": "m"},
+                       "p0": {"value": 2.552e8, "unit": "Pa"}},
+             "bem": {"contact_radius": {"value": 1.40e-4, "unit": "m"},
+                     "approach": {"value": 1.0e-6, "unit": "m"},
+                     "pmax": {"value": 3.0e8, "unit": "Pa"},
+                     "area_fraction": {"value": 0.3, "unit": ""}}}
+    body = hertz_html(check, None, None)
+    rows = [r for r in body.split("<tr>") if "</td>" in r]
+    text = {r.split("</td>")[0].replace("<td>", ""): r for r in rows}
+    pairs = (("contact radius", "136.8 µm", "140 µm", "+2.3 %"),
+             ("approach", "935.6 nm", "1 µm", "+6.9 %"),
+             ("peak pressure", "255.2 MPa", "300 MPa", "+17.6 %"))
+    for name, hz, bem, diff in pairs:
+        (row,) = [r for k, r in text.items() if k.startswith(name)]
+        assert hz in row and bem in row and diff in row
+    assert any(k.startswith("area_fraction") for k in text)
