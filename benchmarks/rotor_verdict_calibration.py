@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 import time
 from multiprocessing import get_context
 from pathlib import Path
@@ -33,7 +34,7 @@ from contact.rotor.paper import FPS, MARK_STEP
 from contact.rotor.tables import draw_scenario, simulate_table
 
 GROUPS = {"as": ["as1", "as2", "as3"], "s": ["s1", "s2", "s3"]}
-KINDS = {"null0": 160, "offset": 160, "track": 80, "lam43": 40}
+KINDS = {"null0": 120, "offset": 120, "track": 60, "lam43": 30}
 T_LEVEL = 0.99  # two-sided 2 %
 
 
@@ -61,8 +62,13 @@ def main() -> None:
     a = ap.parse_args()
     jobs = [(k, i) for k, n in KINDS.items() for i in range(max(int(n * a.scale), 4))]
     t0 = time.time()
+    rows = []
     with get_context("spawn").Pool(a.workers) as pool:
-        rows = pool.map(one, jobs, chunksize=4)
+        for i, r in enumerate(pool.imap(one, jobs, chunksize=2)):
+            rows.append(r)
+            if (i + 1) % 10 == 0:
+                print(f"{i + 1}/{len(jobs)} tables, {time.time() - t0:.0f} s", file=sys.stderr,
+                      flush=True)
     null = [r for r in rows if r["kind"] in ("null0", "offset")]
     f_ref = np.sort([r["f"] for i, r in enumerate(null) if i % 2 == 0])
     f_crit = float(np.quantile(f_ref, 0.98))

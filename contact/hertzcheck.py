@@ -27,11 +27,18 @@ Hertz at the same load:
   solution) as a fraction of the nominal Hertz area pi a0^2, and whether the Hertz peak
   pressure itself exceeds first yield below the surface, p0 = 1.60 Y for nu = 0.3 (Johnson
   sec. 6.2) with Y ~ H / 2.8 (Tabor 1951), i.e. p0 > 0.57 H;
-- the peak pressure and the real contact area (fraction of pi a0^2).
+- the peak pressure and the real contact area (fraction of pi a0^2);
+- whether the scan resolves the contact at all: its pixel against the Hertz radius. A scan
+  with fewer than :data:`MIN_SCAN_PIXELS_PER_RADIUS` measured points per a0 holds (almost)
+  no measured asperity inside the contact: the boundary elements then see the
+  interpolation between the scan's points, a smooth surface, and their agreement with
+  Hertz is no evidence either way. The verdict is then "cannot be judged" (``hertz_holds``
+  false, ``judged`` false).
 
-Verdict: Hertz holds when alpha < 0.05 *and* the measured macroscopic comparison agrees
-(profile within 10 % of p0, effective radius and approach within 10 %, yield on at most 1 %
-of the nominal area and no first yield at the Hertz scale). The peak pressure and the real
+Verdict: Hertz holds when the scan resolves the contact, alpha < 0.05 *and* the measured
+macroscopic comparison agrees (profile within 10 % of p0, effective radius and approach
+within 10 %, yield on at most 1 % of the nominal area and no first yield at the Hertz
+scale). The peak pressure and the real
 contact area are reported with their numbers but do not decide: they are asperity-scale
 quantities that grow (pmax) or shrink (area) as the lateral resolution of the scan is
 refined (self-affine roughness has no smallest asperity), so no resolution-independent
@@ -72,6 +79,11 @@ PLASTIC_LIMIT = 0.01
 #: First yield below the surface of a Hertz contact: p0 = 1.60 Y (nu = 0.3, Johnson
 #: sec. 6.2) with Y = H / 2.8 (Tabor): p0 / H = 1.60 / 2.8.
 FIRST_YIELD_P0_OVER_H = 1.60 / 2.8
+#: Fewest scan pixels per Hertz radius for the scan to resolve the contact: 4 puts about
+#: 50 measured points (pi 4^2) inside the contact circle; with fewer, the contact sees the
+#: interpolation between a handful of points, not the asperities (judgment: Gwyddion and
+#: MountainsMap users expect a few measured points per feature before a statistic on it).
+MIN_SCAN_PIXELS_PER_RADIUS = 4.0
 
 
 @dataclass(frozen=True)
@@ -105,8 +117,9 @@ class HertzComparison:
         Peak pressure of the (elastic-plastic, when a hardness was given) solution (Pa).
     elastic_pmax : float
         Peak pressure of the purely elastic solution (Pa).
-    contact_radius : float
-        Effective (second-moment) contact radius a* (m).
+    effective_radius : float
+        Effective (second-moment) contact radius a* (m); not the real-area radius
+        sqrt(A/pi), which is the result's ``contact_radius``.
     approach : float
         Approach from first touch (m).
     area_fraction : float
@@ -127,7 +140,7 @@ class HertzComparison:
     alpha: float
     pmax: float
     elastic_pmax: float
-    contact_radius: float
+    effective_radius: float
     approach: float
     area_fraction: float
     plastic_fraction: float
@@ -138,9 +151,24 @@ class HertzComparison:
     hertz_holds: bool
 
     @property
+    def judged(self) -> bool:
+        """False when the scan does not resolve the contact (its ``resolution`` criterion
+        failed): neither the boundary elements nor alpha can then decide."""
+        return all(c.passed for c in self.criteria if c.name == "resolution")
+
+    @property
+    def headline(self) -> str:
+        """The verdict in words: holds, does not hold, or cannot be judged."""
+        if not self.judged:
+            return "Hertz cannot be judged from this scan (its pixel does not resolve the contact)"
+        return "Hertz holds" if self.hertz_holds else "Hertz does not hold"
+
+    @property
     def reasons(self) -> tuple[str, ...]:
-        """The criteria's sentences: failed decisive ones first, then the others."""
-        order = sorted(self.criteria, key=lambda c: (c.passed or not c.decisive, not c.decisive))
+        """The criteria's sentences: failed decisive ones first (an unresolved scan before
+        all), then the others."""
+        order = sorted(self.criteria, key=lambda c: (c.passed or not c.decisive,
+                                                     c.name != "resolution", not c.decisive))
         return tuple(c.reason for c in order)
 
     def criterion(self, name: str) -> Criterion:
@@ -167,6 +195,7 @@ def compare_with_hertz(
     sigma: float,
     plastic: Any = None,
     hardness: float | None = None,
+    scan_pixel: float | None = None,
 ) -> HertzComparison:
     """Compare a ball-on-plate contact solution with Hertz and give the verdict.
 
@@ -184,6 +213,9 @@ def compare_with_hertz(
         ``hardness``); when given, it is the solution the comparison is made on.
     hardness : float, optional
         The hardness (Pa) of the softer body; default ``plastic.hardness``.
+    scan_pixel : float, optional
+        The measured roughness's pixel (m), before any refinement of the contact grid;
+        adds the decisive ``resolution`` criterion (None: smooth surfaces, no criterion).
 
     Returns
     -------
@@ -211,10 +243,12 @@ def compare_with_hertz(
     if hardness is not None:
         crit += _yield_criteria(hardness, hz.p0, None if plastic is None else plastic_frac)
     crit += _asperity_criteria(main, e_pmax, hz.p0, area_frac, plastic is not None)
+    if scan_pixel is not None:
+        crit.append(resolution_criterion(scan_pixel, hz.a))
     holds = all(c.passed for c in crit if c.decisive)
     return HertzComparison(
         hertz=hz, sigma=float(sigma), alpha=alpha, pmax=float(main.pmax), elastic_pmax=e_pmax,
-        contact_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
+        effective_radius=a_star, approach=float(main.approach), area_fraction=area_frac,
         plastic_fraction=plastic_frac, profile=prof, profile_deviation=dev, hardness=hardness,
         criteria=tuple(crit), hertz_holds=bool(holds),
     )
@@ -233,6 +267,23 @@ def _radial_profile(main: Any, hz: HertzSphere) -> tuple[RadialProfile, float]:
     width = max(main.dx, main.dy, a0 / 30.0, r_max / 120.0)
     prof = radial_average(p, main.x, main.y, width=width, r_max=r_max, hertz=hz)
     return prof, profile_deviation(prof, hz.p0, PROFILE_EXTENT * a0)
+
+
+def resolution_criterion(pixel: float, a0: float) -> Criterion:
+    """Does a scan of this pixel (m) resolve a contact of Hertz radius ``a0`` (m)?"""
+    cells = a0 / pixel
+    ok = cells >= MIN_SCAN_PIXELS_PER_RADIUS
+    if ok:
+        text = (f"the scan resolves the contact: pixel {_um(pixel)}, {cells:.3g} pixels per "
+                f"Hertz radius a0 = {_um(a0)} (at least {MIN_SCAN_PIXELS_PER_RADIUS:g})")
+    else:
+        text = (f"the scan's pixel {_um(pixel)} does not resolve the contact: {cells:.2g} "
+                f"pixels per Hertz radius a0 = {_um(a0)} (at least "
+                f"{MIN_SCAN_PIXELS_PER_RADIUS:g} needed); the boundary elements see the "
+                "interpolation between the scan's points, not its asperities, so neither "
+                "their agreement with Hertz nor α decides: measure with a pixel below "
+                f"{_um(a0 / MIN_SCAN_PIXELS_PER_RADIUS)}")
+    return Criterion("resolution", cells, MIN_SCAN_PIXELS_PER_RADIUS, ok, True, text)
 
 
 def _alpha_criterion(alpha: float, sigma: float, d0: float) -> Criterion:
@@ -378,6 +429,7 @@ def check_sphere(
     from contact.geometry import remove_plane
     from contact.setups.ball_on_plate import SphereContact
 
+    scan_pixel = None if roughness is None else max(roughness.dx, roughness.dy)
     if sigma is None:
         if roughness is None:
             sigma = 0.0
@@ -398,11 +450,10 @@ def check_sphere(
                                 tol=tol)
         notes += [n for n in plastic.notes if n not in notes]
     comp = compare_with_hertz(elastic, radius=radius, sigma=float(sigma), plastic=plastic,
-                              hardness=hardness)
+                              hardness=hardness, scan_pixel=scan_pixel)
     return SphereCheck(comparison=comp, elastic=elastic, plastic=plastic, notes=tuple(notes))
 
 
 def summary_lines(comp: HertzComparison) -> Sequence[str]:
     """Human-readable lines: the verdict and its reasons."""
-    head = "Hertz holds" if comp.hertz_holds else "Hertz does not hold"
-    return [head, *(f"- {r}" for r in comp.reasons)]
+    return [comp.headline, *(f"- {r}" for r in comp.reasons)]

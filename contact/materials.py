@@ -139,18 +139,26 @@ def material(
     name : str
         Table name or alias (case-insensitive; ``-`` and spaces read as ``_``).
     E, nu, hardness : float, optional
-        User values (Pa, -, Pa) that replace the table's.
+        User values (Pa, -, Pa) that replace the table's. A name not in the table with
+        both ``E`` and ``nu`` given is a custom material (hardness optional): a material
+        given with all its elastic constants needs no table entry.
 
     Raises
     ------
     ContactInputError
-        If the name is unknown or an override is out of range.
+        If the name is unknown and its constants are not all given, or an override is out
+        of range.
     """
     key = name.strip().lower().replace("-", "_").replace(" ", "_")
     key = ALIASES.get(key, key)
     if key not in MATERIALS:
+        if E is not None and nu is not None:
+            return Material(name.strip(), E, nu, hardness,
+                            "user-defined (constants given by the user)")
         known = ", ".join(sorted(MATERIALS))
-        raise ContactInputError(f"unknown material {name!r}; known materials: {known}")
+        raise ContactInputError(
+            f"unknown material {name!r}; known materials: {known}; or define it by giving "
+            "its Young's modulus and Poisson's ratio (and optionally its hardness)")
     base = MATERIALS[key]
     changes = {k: v for k, v in (("E", E), ("nu", nu), ("hardness", hardness)) if v is not None}
     if not changes:

@@ -76,7 +76,7 @@ FAILURE_SURVIVES = {"alpha": "σ can only grow as the pixel shrinks, so this fai
 CRITERION_QUANTITY = {
     "alpha": "sigma", "profile": "profile_deviation", "radius": "a_star",
     "approach": "approach", "yield": "yielded_fraction", "first_yield": None,
-    "peak": "pmax_elastic", "area": "area",
+    "peak": "pmax_elastic", "area": "area", "resolution": None,
 }
 
 
@@ -205,7 +205,7 @@ def _level_values(res: Any, comp: Any, pmax_elastic: float, level_z: np.ndarray,
     nominal = math.pi * comp.hertz.a**2
     yielded = (res.plastic_area / nominal) if hardness is not None else 0.0
     return {
-        "a_star": float(comp.contact_radius), "approach": float(comp.approach),
+        "a_star": float(comp.effective_radius), "approach": float(comp.approach),
         "area": float(res.contact_area),
         "corrected_area": corrected_area(res.contact, res.dx, res.dy),
         "yielded_fraction": float(yielded), "pmax": float(res.pmax),
@@ -317,7 +317,7 @@ def sphere_study(
             plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
                                     tol=tol)
         comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
-                                  hardness=hardness)
+                                  hardness=hardness, scan_pixel=max(px, rough.dy))
         main = plastic if plastic is not None else elastic
         if problem.domain.n != n:
             notes.append(f"x{k}: the domain was enlarged to {problem.domain.n} cells")

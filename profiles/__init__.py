@@ -14,6 +14,9 @@ material_ratio_height   ISO 21920-2 Rcm(p), the level at material ratio p below 
 rk_parameters, probability_parameters   ISO 13565-2 Rk family, ISO 13565-3 Rpq, Rvq, Rmq
 feature_parameters   ISO 21920-2 Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z (Wolf pruning)
 remove_form          least-squares line / polynomial removal
+
+Scale-dependent statistics (slope and curvature over a distance, tip-radius cut-off,
+variable bandwidth) live in :mod:`profiles.scales`, imported on demand.
 """
 
 from profiles.analysis import ProfileAnalysis, analyze_profile

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet.model import Topography, require_measurement
 
 _LOSSES = ("linear", "huber", "soft_l1", "cauchy", "arctan")
 
@@ -133,7 +133,7 @@ class CylinderFit:
 
 
 def _valid_points(topo: Topography, mask: np.ndarray | None):
-    z = topo.heights
+    z = require_measurement(topo).heights
     valid = np.isfinite(z)
     if mask is not None:
         m = np.asarray(mask, dtype=bool)

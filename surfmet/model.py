@@ -252,3 +252,45 @@ class Profile:
 
 
 Scan = Topography | Profile
+
+
+#: The largest peak-to-valley height span (m) of anything measured as a surface: stylus
+#: and optical profilers span at most tens of millimetres, road profiles metres; 1 km is far
+#: above all of them. A wider span in a calibrated file is damage (one flipped exponent bit
+#: turns 2 µm into 1e302 m) or a wrong height unit, never a surface.
+MAX_HEIGHT_SPAN = 1e3
+#: The largest span any height statistic can be computed on, calibrated or not: Sku sums
+#: fourth powers, which overflow beyond about 1e77.
+MAX_NUMERIC_SPAN = 1e60
+
+
+def height_span_error(values: np.ndarray, limit: float = MAX_HEIGHT_SPAN) -> str | None:
+    """Why ``values`` (m, NaN for non-measured) cannot be measured heights: a peak-to-valley
+    span beyond ``limit`` (:data:`MAX_HEIGHT_SPAN` for calibrated heights,
+    :data:`MAX_NUMERIC_SPAN` for any), as a sentence; None when they can."""
+    v = np.asarray(values, dtype=float)
+    finite = v[np.isfinite(v)] if not np.isfinite(v).all() else v.ravel()
+    if finite.size == 0:
+        return None
+    span = float(finite.max()) - float(finite.min())  # Python floats: overflow gives inf
+    if span <= limit:
+        return None
+    what = ("any surface's" if limit == MAX_HEIGHT_SPAN
+            else "what statistics can be computed on")
+    return (f"the heights span {span:.3g} m peak to valley, beyond {what} range "
+            f"({limit:g} m)")
+
+
+def require_measurement(scan: Topography | Profile) -> Topography | Profile:
+    """``scan`` if its heights can be analysed, else one clear error: the reader's flag
+    (``metadata["height_range"]``: heights beyond any surface's range, a damaged file) or
+    a span no statistic survives (:data:`MAX_NUMERIC_SPAN`)."""
+    flag = scan.metadata.get("height_range")
+    if flag:
+        raise SurfmetInputError(str(flag))
+    values = scan.heights if isinstance(scan, Topography) else scan.z
+    problem = height_span_error(values, MAX_NUMERIC_SPAN)
+    if problem:
+        raise SurfmetInputError(f"{problem}: not a surface measurement (damaged data or a "
+                                "wrong height unit)")
+    return scan

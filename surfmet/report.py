@@ -116,8 +116,7 @@ def _view_installed() -> bool:
 
 def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
                    ) -> list[tuple[str, bytes]]:
-    from surfmet.plots.areal import abbott_firestone, height_map, psd_figure
-    from surfmet.psd import fit_hurst, psd
+    from surfmet.plots.areal import abbott_firestone, height_map
 
     figs: list[tuple[str, bytes]] = []
     if include_3d and _view_installed():
@@ -130,14 +129,27 @@ def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
     figs.append(("Abbott–Firestone curve with the ISO 13565-2 / 25178-2 Sk construction",
                  figure_png(abbott_firestone(surface, parameters=params))))
     if surface.nx >= 16 and surface.ny >= 16:
-        spec = psd(surface)
-        try:
-            fit = fit_hurst(spec)
-        except SurfmetInputError:
-            fit = None
-        figs.append(("radially averaged PSD (Hann window) with a self-affine fit",
-                     figure_png(psd_figure(spec, fits=[fit] if fit else None))))
+        figs.append(_spectrum_figure(surface))
     return figs
+
+
+def _spectrum_figure(surface: Topography) -> tuple[str, bytes]:
+    """The PSD as ``surfmet spectrum`` describes it: the power law fitted between the
+    spectrum's cut-offs and below its noise floor, never across a plateau."""
+    from surfmet.mechanics.spectrum import spectrum
+    from surfmet.plots.areal import psd_figure
+    from surfmet.plots.spectrum import spectrum_figure
+    from surfmet.psd import psd
+
+    try:
+        s = spectrum(surface)
+    except SurfmetInputError:
+        return ("radially averaged PSD (Hann window; no power-law band to fit)",
+                figure_png(psd_figure(psd(surface))))
+    caveats = [c for c in s.settings.get("caveats", []) if "Hurst" in c]
+    return ("radially averaged PSD with the power law fitted over its band, as "
+            "surfmet spectrum gives it" + (f" (caveat: {caveats[0]})" if caveats else ""),
+            figure_png(spectrum_figure(s)))
 
 
 def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
@@ -359,9 +371,10 @@ def _overview(sections: Sequence[ScanSection]) -> str:
 
 
 def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report",
-                options: dict[str, Any] | None = None, hertz: HertzOptions | None = None
-                ) -> str:
-    """The report page for computed sections (see :func:`scan_section`)."""
+                options: dict[str, Any] | None = None, hertz: HertzOptions | None = None,
+                rotor: Any = None) -> str:
+    """The report page for computed sections (see :func:`scan_section`); ``rotor``: a rotor
+    verdict (:mod:`contact.rotor.verdict`) to put first."""
     from surfmet import __version__
 
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
@@ -372,7 +385,12 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
              f"<h1>{esc(title)}</h1>",
              f'<p class="small">surfmet {esc(__version__)}, {esc(now)}; options: '
              f"{esc(json.dumps(_jsonable(opts), ensure_ascii=False) if opts else 'defaults')}"
-             "</p>", _overview(sections)]
+             "</p>"]
+    if rotor is not None:
+        from surfmet.report_rotor import rotor_html
+
+        parts.append(rotor_html(rotor))
+    parts.append(_overview(sections))
     parts.extend(_section_html(k, s, hertz) for k, s in enumerate(sections))
     parts.append("</body></html>")
     return "\n".join(parts)
@@ -387,6 +405,7 @@ def write_report(
     include_3d: bool = True,
     hertz: HertzOptions | None = None,
     progress: bool | None = None,
+    rotor: Any = None,
 ) -> list[ScanSection]:
     """Evaluate each scan and write the self-contained HTML report to ``out``.
 
@@ -402,6 +421,8 @@ def write_report(
         Render the 3D views (the slowest part; off-screen pyvista).
     hertz : HertzOptions, optional
         Add the Hertz-check section to each scan.
+    rotor : RotorVerdict, optional
+        The rotor verdict, first on the page.
     progress : bool, optional
         Progress bar on stderr (default: when stderr is a terminal).
 
@@ -424,5 +445,6 @@ def write_report(
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)
-    write_text(out, render_html(sections, title=title, options=options, hertz=hertz))
+    write_text(out, render_html(sections, title=title, options=options, hertz=hertz,
+                                rotor=rotor))
     return sections

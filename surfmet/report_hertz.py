@@ -112,9 +112,12 @@ def _comparison_rows(hertz: dict[str, Any], bem: dict[str, Any]) -> list[str]:
 
 def hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None) -> str:
     holds = check.get("hertz_holds")
+    if check.get("judged") is False:  # the scan's pixel does not resolve the contact
+        holds = None
     verdict = ('<span class="ok">Hertz holds</span>' if holds else
                '<span class="error">Hertz does not hold</span>' if holds is not None else
-               "no verdict")
+               "no verdict: the scan's pixel does not resolve the contact"
+               if check.get("judged") is False else "no verdict")
     parts = ["<h3>Hertz check</h3>", f'<p class="verdict">{verdict}'
              f" (α = {esc(quantity_text(check.get('alpha')))})</p>"]
     if hz is not None:

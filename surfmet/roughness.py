@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet.model import Profile, Topography, require_measurement
 from surfmet.units import jsonable, parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
@@ -199,11 +199,11 @@ def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
 
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
     if isinstance(scan, (Topography, Profile)):
-        return scan, scan.metadata.get("source")
+        return require_measurement(scan), scan.metadata.get("source")
     if isinstance(scan, (str, os.PathLike)):
         from surfmet.io import read
 
-        return read(scan), str(scan)
+        return require_measurement(read(scan)), str(scan)
     raise SurfmetInputError(
         f"roughness needs a Topography, a Profile or a file path, got {type(scan).__name__}"
     )
@@ -307,7 +307,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
     from surfmet.areal.filters import l_filter, s_filter
-    from surfmet.areal.form import remove_form
+    from surfmet.areal.form import dominant_form, remove_form
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
@@ -349,7 +349,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
 
         settings["edge"] = {"value": edge, "meaning": EDGE_MEANING.get(edge, "")}
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
-    caveats = unit_caveats(topo.metadata)
+    caveats = unit_caveats(topo.metadata) + [c for c in [dominant_form(topo, form)] if c]
     if caveats:
         settings["caveats"] = caveats
     params = areal_parameters(surface, which)

@@ -46,12 +46,12 @@ BASE_COLUMNS: tuple[tuple[str, str], ...] = (
 RESULT_COLUMNS: dict[str, tuple[tuple[str, str], ...]] = {
     "contact": (
         ("grid", ""), ("pixel", "m"), ("max_pressure", "Pa"), ("contact_radius", "m"),
-        ("approach", "m"), ("real_area", "m^2"), ("n_clusters", ""),
+        ("effective_radius", "m"), ("approach", "m"), ("real_area", "m^2"), ("n_clusters", ""),
         ("plastic_area", "m^2"), ("hertz_p0", "Pa"), ("hertz_a", "m"), ("warnings", ""),
     ),
     "hertz-check": (
         ("grid", ""), ("pixel", "m"), ("hertz_holds", ""), ("model", ""), ("alpha", ""),
-        ("max_pressure", "Pa"), ("contact_radius", "m"), ("approach", "m"),
+        ("max_pressure", "Pa"), ("effective_radius", "m"), ("approach", "m"),
         ("yielded_fraction", ""), ("hertz_p0", "Pa"), ("hertz_a", "m"),
     ),
 }
@@ -145,7 +145,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),
             "hertz_holds": (bool(c.hertz_holds), ""), "model": (model, ""),
             "alpha": (float(c.alpha), ""), "max_pressure": (float(c.pmax), "Pa"),
-            "contact_radius": (float(c.contact_radius), "m"),
+            "effective_radius": (float(c.effective_radius), "m"),
             "approach": (float(c.approach), "m"),
             "yielded_fraction": (float(c.plastic_fraction), ""),
             "hertz_p0": (float(c.hertz.p0), "Pa"), "hertz_a": (float(c.hertz.a), "m"),
@@ -161,6 +161,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "grid": (int(res.shape[1]), ""), "pixel": (float(res.dx), "m"),
             "max_pressure": (float(res.pmax), "Pa"),
             "contact_radius": (float(res.contact_radius), "m"),
+            "effective_radius": (float(res.effective_radius), "m"),
             "approach": (float(res.approach), "m"),
             "real_area": (float(res.contact_area), "m^2"),
             "n_clusters": (int(res.n_clusters), ""),

@@ -69,6 +69,15 @@ PRESSURE_UNITS: Mapping[str, float] = {
     "N/mm^2": 1e6,
     "N/mm²": 1e6,
 }
+#: Work of adhesion (surface energy per area); N/m is the same unit (a line tension).
+SURFACE_ENERGY_UNITS: Mapping[str, float] = {
+    "J/m2": 1.0, "J/m^2": 1.0, "J/m²": 1.0, "mJ/m2": 1e-3, "mJ/m^2": 1e-3, "mJ/m²": 1e-3,
+    "N/m": 1.0, "mN/m": 1e-3,
+}
+
+SPEED_UNITS: Mapping[str, float] = {
+    "m/s": 1.0, "cm/s": 1e-2, "mm/s": 1e-3, "um/s": 1e-6, "µm/s": 1e-6, "km/h": 1 / 3.6,
+}
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY_RE = re.compile(rf"^\s*({_NUMBER})\s*([^\s\d].*?)?\s*$")
@@ -111,7 +120,8 @@ def _typed_factor(unit: str, table: Mapping[str, float], kind: str, text: str) -
     raise SurfmetInputError(f"unknown unit {unit!r} in {kind} {text!r}; accepted: {accepted}")
 
 
-def _parse(text: str, table: Mapping[str, float], kind: str, default: str) -> float:
+def _parse(text: str, table: Mapping[str, float], kind: str, default: str,
+           unit_required: bool = False) -> float:
     if not isinstance(text, str):
         value = float(text)
         if not math.isfinite(value):
@@ -125,6 +135,10 @@ def _parse(text: str, table: Mapping[str, float], kind: str, default: str) -> fl
         )
     number = float(m.group(1))
     unit = (m.group(2) or "").strip()
+    if unit_required and not unit:
+        raise SurfmetInputError(
+            f"{kind} {text!r} has no unit: write it with one, e.g. '{text.strip()}{default}'; "
+            f"accepted: {', '.join(table)}")
     factor = _typed_factor(unit, table, kind, text) if unit else 1.0
     value = number * factor
     if not math.isfinite(value):
@@ -145,9 +159,24 @@ def parse_force(text: str | float) -> float:
     return _parse(text, FORCE_UNITS, "force", "N")
 
 
-def parse_pressure(text: str | float) -> float:
-    """Parse a pressure such as ``"1.2GPa"`` or ``"300 MPa"`` to pascals."""
-    return _parse(text, PRESSURE_UNITS, "pressure", "MPa")
+def parse_pressure(text: str | float, *, unit_required: bool = False) -> float:
+    """Parse a pressure such as ``"1.2GPa"`` or ``"300 MPa"`` to pascals.
+
+    A bare number is pascals, unless ``unit_required`` (moduli and hardnesses, where a
+    bare ``200`` meant as GPa would be read 1e9 times too small): then it is refused.
+    """
+    return _parse(text, PRESSURE_UNITS, "pressure", "GPa" if unit_required else "MPa",
+                  unit_required)
+
+
+def parse_speed(text: str | float) -> float:
+    """Parse a speed such as ``"1m/s"``, ``"50 mm/s"`` or ``"0.1"`` (m/s) to m/s."""
+    return _parse(text, SPEED_UNITS, "speed", "m/s")
+
+
+def parse_surface_energy(text: str | float) -> float:
+    """Parse a work of adhesion such as ``"0.05J/m2"``, ``"50 mJ/m^2"`` to J/m^2."""
+    return _parse(text, SURFACE_ENERGY_UNITS, "work of adhesion", "J/m2")
 
 
 def parse_length_range(text: str) -> tuple[float, float]:

@@ -174,3 +174,28 @@ def test_real_scan_too_small_for_the_contact(realdata, capsys):
     rec = _json(capsys, [*argv, "--on-edge", "warn", "--json"])
     assert rec["touches_edge"] is True
     assert any("truncated" in note for note in rec["notes"])
+
+
+def test_one_name_one_radius_across_contact_and_hertz_check(capsys):
+    """Issue 25 item 2: ``contact_radius`` is sqrt(A_real/pi) in both commands, and the
+    second-moment radius a* is ``effective_radius`` in both, for the same solve."""
+    from pathlib import Path
+
+    plate = str(Path(surfmet.__file__).parent / "data" / "paper_plate.x3p")
+    common = ["--radius", "20mm", "--load", "10N", "--materials", "steel,aluminium",
+              "--grid", "64", "--json"]
+    assert main(["contact", "--plate", plate, *common]) == 0
+    con = json.loads(capsys.readouterr().out)
+    assert main(["hertz-check", plate, "--elastic", *common]) == 0
+    chk = json.loads(capsys.readouterr().out)
+    bem = chk["bem"]
+    # the real-area radius against its definition, in each record
+    assert con["contact_radius"]["value"] == pytest.approx(
+        math.sqrt(con["contact_area"]["value"] / math.pi), rel=1e-12)
+    assert bem["contact_radius"]["value"] == pytest.approx(
+        math.sqrt(bem["area_fraction"]["value"]) * chk["hertz"]["a"]["value"], rel=1e-9)
+    # same solve, same names, same numbers
+    for key in ("contact_radius", "effective_radius"):
+        assert con[key]["value"] == pytest.approx(bem[key]["value"], rel=1e-6), key
+    # on this rough plate the two radii are different quantities
+    assert con["effective_radius"]["value"] > 2 * con["contact_radius"]["value"]

@@ -47,6 +47,7 @@ INVOCATIONS = {
     "report": ["report", "{scan}", "-o", "{tmp}/report.html", "--no-3d", "--json"],
     "demo": ["demo", "--out", "{tmp}/demo", "--quick", "--json"],
     "spectrum": ["spectrum", "{scan}", "--json"],
+    "scales": ["scales", "{scan}", "--json"],
     "sweep": ["sweep", "--radius", "20mm", "--loads", "5N", "--grid", "32", "--workers", "1",
               "--json"],
     "flat-contact": ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "1MPa",

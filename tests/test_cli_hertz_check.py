@@ -41,7 +41,7 @@ def test_verdicts_and_json(plates, capsys):
     out, err = capsys.readouterr()
     rec = json.loads(out)
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
-    assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
+    assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
                         "scan_preparation", "warnings"}
     assert rec["verdict"]["model"] == "hertz"
@@ -50,7 +50,7 @@ def test_verdicts_and_json(plates, capsys):
     assert rec["grid"]["nx"] == 96 and rec["grid"]["pixel_source"] == "--grid 96"
     hz = hertz_sphere(R, W, E_STAR)
     assert rec["hertz"]["a"] == {"value": pytest.approx(hz.a, rel=1e-12), "unit": "m"}
-    assert rec["bem"]["contact_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
+    assert rec["bem"]["effective_radius"]["value"] == pytest.approx(hz.a, rel=0.05)
     assert not err.strip().startswith("{")
 
     assert main(_args(plates["rough"], "--json")) == 0
@@ -63,10 +63,10 @@ def test_verdicts_and_json(plates, capsys):
         prof = m["radial_profile"]
         assert prof["r"]["unit"] == "m" and prof["p"]["unit"] == "Pa"
         assert len(prof["r"]["value"]) == len(prof["p"]["value"]) > 5
-        assert m["contact_radius"]["unit"] == "m" and m["approach"]["unit"] == "m"
+        assert m["effective_radius"]["unit"] == "m" and m["approach"]["unit"] == "m"
     # the errors are the Hertz comparison's own numbers for Hertz, 0 for the reference
     hz = hertz_sphere(R, W, E_STAR)
-    a_bem = rec["bem"]["contact_radius"]["value"]
+    a_bem = rec["bem"]["effective_radius"]["value"]
     assert models["hertz"]["radius_error"]["value"] == pytest.approx(hz.a / a_bem - 1, rel=1e-9)
     assert models["bem"]["profile_error"]["value"] == 0
     # α = 1.5: Hertz fails, and Greenwood-Tripp (the spectrum's summits) does better
@@ -121,3 +121,57 @@ def test_smooth_scan_is_checked_without_scan_noise(tmp_path, capsys):
     assert rec["alpha"]["value"] == 0 and rec["hertz_holds"] is True
     assert rec["bem"]["pmax"]["value"] == pytest.approx(hz.p0, rel=5e-3)
     assert rec["bem"]["approach"]["value"] == pytest.approx(hz.delta, rel=5e-3)
+
+
+def test_a_scan_coarser_than_the_contact_gets_no_verdict(realdata, capsys):
+    """Issue 25 item 1: frt-2's 200 µm pixel against a 137 µm Hertz radius. The boundary
+    elements agree with Hertz only because they see the interpolation between scan points:
+    the verdict, ``hertz_holds``, the model hierarchy and the warnings must all say so."""
+    path = realdata("frt-2.frt")
+    assert main(["hertz-check", str(path), "--radius", "20mm", "--load", "10N",
+                 "--materials", "steel,aluminium", "--grid", "64", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    a0 = rec["hertz"]["a"]["value"]
+    assert a0 < 200e-6  # the premise: the file's pixel is coarser than the contact radius
+    assert rec["hertz_holds"] is False and rec["judged"] is False
+    assert any("does not resolve the contact" in w for w in rec["warnings"])
+    assert "does not resolve the contact" in rec["reasons"][0]
+    head = rec["verdict"]["reasons"][0]
+    assert "do not resolve the contact" in head
+    assert "no model of the hierarchy is within tolerance" not in head
+    # the text output leads with the same verdict
+    main(["hertz-check", str(path), "--radius", "20mm", "--load", "10N",
+          "--materials", "steel,aluminium", "--grid", "64"])
+    out = capsys.readouterr().out
+    assert out.startswith("Hertz cannot be judged")
+
+
+def test_hierarchy_head_never_denies_a_model_within_tolerance():
+    """Issue 25 item 1: when Hertz matches the boundary elements on a* and profile but
+    fails another criterion (here α), the named model's reason says which, instead of
+    "no model of the hierarchy is within tolerance"."""
+    from contact.hertzcheck import compare_with_hertz
+    from contact.roughcontact.hierarchy import model_hierarchy
+    from contact.setups.ball_on_plate import SphereContact
+
+    e_star = composite_modulus(material("steel"), material("aluminium"))
+    res = SphereContact(0.02, e_star, 10.0, grid=64).solve(10.0)
+    # a smooth solve with a large σ: every measured criterion passes, α alone fails
+    comp = compare_with_hertz(res, radius=0.02, sigma=5e-6, scan_pixel=1e-6)
+    assert comp.judged and not comp.hertz_holds
+    h = model_hierarchy(comp, res, {})
+    assert h.models["hertz"].within_tolerance
+    assert "no model of the hierarchy is within tolerance" not in h.reasons[0]
+    assert "hertz is within tolerance" in h.reasons[0] and "alpha" in h.reasons[0]
+
+
+def test_report_and_demo_say_an_unresolved_scan_has_no_verdict():
+    """Issue 25 item 1: every entry point gives the same answer: the report and the demo's
+    story do not print "does not hold" for a scan that cannot be judged."""
+    from surfmet.report_hertz import hertz_html
+
+    html = hertz_html({"hertz_holds": False, "judged": False, "alpha": None}, None, None)
+    assert "no verdict: the scan's pixel does not resolve the contact" in html
+    assert "does not hold" not in html
+    html = hertz_html({"hertz_holds": False, "judged": True, "alpha": None}, None, None)
+    assert "Hertz does not hold" in html

@@ -178,3 +178,18 @@ def test_slip_elements_dissipate_mu_p_slip():
     expected = float((0.3 * r.p * np.hypot(r.s[0], r.s[1]))[slip].sum() * r.grid.area)
     assert slip.any() and expected > 0
     assert r.frictional_power == pytest.approx(expected, rel=1e-9)
+
+
+def test_speed_takes_units_like_every_quantity(capsys):
+    """Issue 25 item 10: ``--speed 2km/h`` is 2/3.6 m/s (a bare number stays m/s)."""
+    from surfmet.units import parse_speed
+
+    assert parse_speed("1m/s") == 1.0 and parse_speed("0.1") == 0.1
+    assert parse_speed("50mm/s") == pytest.approx(0.05, rel=1e-15)
+    assert main(["rolling-contact", "--radius", "20mm", "--load", "5N", "--materials",
+                 "steel,aluminium", "--mu", "0.3", "--speed", "2km/h", "--grid", "16",
+                 "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["speed"] == {"value": pytest.approx(2 / 3.6, rel=1e-12), "unit": "m/s"}
+    assert rec["frictional_power_at_speed"]["value"] == pytest.approx(
+        rec["frictional_power"]["value"] * 2 / 3.6, rel=1e-12)

@@ -51,8 +51,21 @@ def test_all_mechanisms_json(capsys) -> None:
     ns, n1, n2 = out["rotor_loads"]["value"]
     assert min(n1, n2) < ns < max(n1, n2)
     assert 3.9 < min(n1, n2) < 4.0 and 5.3 < max(n1, n2) < 5.4  # the paper's 3.97-5.36 N
-    # Table 3: the symmetric rotor accelerates faster (eps_s - eps_a ~ 0.26 rad/s^2)
-    assert 0.15 < out["measured_delta_eps"]["value"] < 0.35
+    # the rotor verdict's group offset, the same numbers as `surfmet rotor paper2022 --json`
+    from surfmet.mechanics.rotor_verdict import offset_record, paper_verdict
+
+    v = paper_verdict()
+    assert out["group_offset"] == json.loads(json.dumps(offset_record(v)))
+    assert out["verdict"]["code"] == v.code
+    for m in out["mechanisms"].values():
+        assert m["raw_second_difference"]["unit"] == "N m"
     for m in out["mechanisms"].values():
         assert m["delta_eps"]["unit"] == "rad/s^2"
         assert m["delta_eps"]["value"] < 1e-3  # none comes near the measurement
+
+
+def test_all_mechanisms_refuse_scans_they_would_ignore(capsys) -> None:
+    rc = main(["rolling", "--radius", "20mm", "--materials", "steel,aluminium", "--loads",
+               "2N:12N:4", "--model", "all", "--plate", "surfmet/data/paper_plate.x3p"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1 and "takes no scans" in err[0]

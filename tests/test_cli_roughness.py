@@ -250,3 +250,59 @@ def test_json_has_one_shape_for_one_file_or_several(capsys, scan):
     one, two = json.loads(one), json.loads(two)
     assert isinstance(one, list) and len(one) == 1 and len(two) == 2
     assert one[0] == two[0] == two[1]
+
+
+def _flip_exponent_bit(path, index):
+    """Flip bit 62 (the exponent's top bit) of float64 number ``index`` of a .npy file."""
+    raw = bytearray(path.read_bytes())
+    start = len(raw) - 8 * int(np.load(path).size) + 8 * index
+    raw[start + 7] ^= 0x40  # little-endian: byte 7 holds the sign and the top exponent bits
+    path.write_bytes(bytes(raw))
+
+
+def test_one_flipped_bit_is_refused_not_summarised(tmp_path, capsys):
+    """Issue 25 item 12: one flipped exponent bit turns a 2 µm height into ~1e302 m; the
+    reader flags the file (it still reads, and writes back exactly) and the analysis
+    refuses it in one line (exit 1) instead of printing Sa = 2e301 m and "Sq n/a" with
+    exit 0."""
+    z = np.random.default_rng(5).normal(scale=1e-6, size=(32, 32)) + 2e-6
+    path = tmp_path / "flipped.npy"
+    np.save(path, z)
+    _flip_exponent_bit(path, 100)
+    assert abs(np.load(path).ravel()[100]) > 1e300  # the premise: one damaged height
+    assert main(["roughness", str(path)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "peak to valley" in err and "damaged" in err
+    assert "peak to valley" in surfmet.read(path).metadata["height_range"]
+    # an intact file of the same heights carries no flag
+    np.save(path, z)
+    assert "height_range" not in surfmet.read(path).metadata
+
+
+def test_heights_beyond_any_surface_are_refused_by_the_statistics():
+    """Issue 25 items 11-12: a Topography built in memory with heights x 1e300 is refused
+    by the parameters themselves (no OverflowError, no non-finite Sq)."""
+    from surfmet.errors import SurfmetInputError
+    from surfmet.roughness import roughness
+
+    z = np.random.default_rng(6).normal(size=(32, 32)) * 1e294
+    with pytest.raises(SurfmetInputError, match="not a surface measurement"):
+        roughness(Topography(z, 1e-6, 1e-6))
+
+
+def test_a_ball_levelled_by_a_plane_is_said_to_be_dominated_by_its_form(capsys):
+    """Issue 25 item 6: the paper's ball read with the default plane gives Sa ~ 124 µm of
+    spherical cap; the output says a curved form dominates and how to remove it, and says
+    nothing of the kind once the sphere is removed, nor for the (flat) paper plate."""
+    from pathlib import Path
+
+    data = Path(surfmet.__file__).parent / "data"
+    assert main(["roughness", str(data / "paper_ball.x3p"), "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)[0]
+    caveats = rec["settings"].get("caveats", [])
+    assert any("a curved form dominates" in c and "--level sphere" in c for c in caveats)
+    assert rec["parameters"]["Sa"]["value"] > 50e-6  # the premise: Sa is the cap's
+    for argv in (["paper_ball.x3p", "--level", "sphere"], ["paper_plate.x3p"]):
+        assert main(["roughness", str(data / argv[0]), *argv[1:], "--json"]) == 0
+        rec = json.loads(capsys.readouterr().out)[0]
+        assert not any("form dominates" in c for c in rec["settings"].get("caveats", []))

@@ -62,3 +62,59 @@ def test_bad_input_exits_1(argv, scan, tmp_path, capsys):
     assert main(argv) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "Traceback" not in err[0]
+
+
+def _spectrum_json(capsys, *argv):
+    assert main(["spectrum", *argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_spectrum_prepares_the_scan_as_every_contact_command(capsys):
+    """Issue 25 item 3: the quickstart's plate has 60 spikes; ``spectrum`` removed none (its
+    "noise floor" was the spikes). It now goes through the shared preparation and says so:
+    the same spikes as flat-contact removes, and --spikes keep keeps them."""
+    from pathlib import Path
+
+    plate = str(Path(surfmet.__file__).parent / "data" / "paper_plate.x3p")
+    rec = _spectrum_json(capsys, plate)
+    prep = rec["scan_preparation"]
+    assert prep["spikes"] == "remove" and prep["spikes_removed"]["scan"] > 0
+    assert main(["flat-contact", plate, "--e-star", "50GPa", "--pressures", "10MPa",
+                 "--json", "--quiet"]) == 0
+    flat = json.loads(capsys.readouterr().out)["scan_preparation"]
+    assert flat["spikes_removed"] == prep["spikes_removed"]
+    assert flat["levelling"] == prep["levelling"] == rec["levelling"]
+    kept = _spectrum_json(capsys, plate, "--spikes", "keep")
+    assert kept["scan_preparation"]["spikes_removed"]["scan"] == 0
+    assert kept["h_rms"]["real_space"]["value"] > rec["h_rms"]["real_space"]["value"]
+
+
+def test_doubtful_spectra_carry_caveats(realdata, capsys):
+    """Issue 25 item 3: nms-1's spectral h_rms is 2.5 x its real-space one and its Hurst
+    band spans half a decade; both are said. A clean synthetic self-affine scan has none."""
+    rec = _spectrum_json(capsys, str(realdata("nms-1.nms")))
+    h = rec["h_rms"]
+    assert h["spectrum"]["value"] > 1.25 * h["real_space"]["value"]  # the premise
+    assert any("h_rms from the spectrum" in c for c in rec["caveats"])
+    lo, hi = (q["value"] for q in rec["hurst"]["q_range"])
+    assert np.log10(hi / lo) < 1
+    assert any("decades of wavevector only" in c for c in rec["caveats"])
+
+
+def test_clean_self_affine_scan_has_no_spectrum_caveat(scan, capsys):
+    rec = _spectrum_json(capsys, str(scan))
+    assert not [c for c in rec["caveats"] if "Hurst" in c or "h_rms" in c]
+
+
+def test_report_psd_is_the_spectrum_commands(tmp_path):
+    """Issue 25 item 3: the report's PSD figure is fitted as ``spectrum`` fits it (on the
+    quickstart's plate its own fit crossed the plateau, H = -0.479) and carries its caveat."""
+    from pathlib import Path
+
+    from surfmet.mechanics.spectrum import prepared_scan
+    from surfmet.report import _spectrum_figure
+
+    plate = surfmet.read(Path(surfmet.__file__).parent / "data" / "paper_plate.x3p")
+    caption, png = _spectrum_figure(prepared_scan(plate)[0])
+    assert png.startswith(b"\x89PNG")
+    assert "as surfmet spectrum gives it" in caption and "Hurst" in caption

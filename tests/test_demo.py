@@ -53,12 +53,17 @@ def paper(paperdata):
     return json.loads(paperdata("paper_values.json").read_text(encoding="utf-8"))
 
 
+_INTERVAL = {"value", "unit", "ci_low", "ci_high", "level", "minuend", "subtrahend"}
+
+
 def _floats_outside_quantities(obj, path="$"):
     """Paths of numbers that are not the value of a {"value", "unit"} quantity."""
     bad = []
     if isinstance(obj, dict):
         if "value" in obj:
-            if set(obj) != {"value", "unit"} or not isinstance(obj["unit"], str):
+            # a quantity, or an interval quantity (the rotor verdict's offset and exponent)
+            if not ({"value", "unit"} <= set(obj) <= _INTERVAL) or not isinstance(
+                    obj["unit"], str):
                 bad.append(f"{path}: {sorted(obj)}")
             return bad
         for k, v in obj.items():
@@ -201,6 +206,18 @@ def test_contact_and_rolling_are_sound(demo):
         [fit.slope - t * fit.stderr, fit.slope + t * fit.stderr], rel=1e-9)
 
 
+def test_the_verdict_comes_first_and_equals_the_rotor_commands(demo):
+    """The paper's question is answered first, with the numbers of `surfmet rotor`."""
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+
+    got = demo["summary"]["verdict"]
+    want = json.loads(json.dumps(verdict_record(paper_verdict())))
+    assert got["code"] == want["code"] and got["group_offset"] == want["group_offset"]
+    lines = [ln for ln in demo["stdout"].splitlines() if ln.strip()]
+    assert lines[0].startswith("The paper's question")
+    assert got["sentence"][:60] in " ".join(demo["stdout"].split())
+
+
 def test_every_figure_is_a_non_blank_png(demo):
     from matplotlib.image import imread
 
@@ -240,3 +257,24 @@ def test_reuses_a_previous_demo_folder(tmp_path):
     assert names == ["notes.txt", SUMMARY]  # its own old figure removed, nothing else
     assert (tmp_path.parent / "x.png").exists()
     assert json.loads((tmp_path / SUMMARY).read_text())["status"] == "running"
+
+
+def test_rolling_section_states_its_assumptions_and_notes(demo):
+    """Issue 25 item 5: the rolling section's α_h = 1 (all input work lost) is said where
+    the moments are, with μ_r = M_r/(N R) computed from them; the elastic solve is set
+    against section 4's plastic regime; the sweep's resolution notes are in the text, not
+    only in summary.json."""
+    s = demo["summary"]
+    ro, st = s["rolling"], s["rolling"]["settings"]
+    flat = " ".join(demo["stdout"].split())
+    assert st["alpha_h"]["value"] == 1.0
+    assert "Assumed: α_h = 1" in flat and "an upper bound" in flat
+    radius = st["radius"]["value"]
+    for w, m in zip(ro["loads"]["value"], ro["moments"]["value"]):
+        assert f"{m / (w * radius):.3g}" in flat
+    if s["contact"]["regime"].startswith("plastic"):
+        assert "solves the contact elastically" in flat
+    prepared = set(st.get("scan_preparation", {}).get("notes", []))
+    for note in st["notes"]:
+        if note not in prepared:
+            assert " ".join(note.split()) in flat

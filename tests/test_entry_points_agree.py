@@ -38,7 +38,7 @@ def test_hertz_check_cli_and_api_agree(capsys, api_check):
     api = api_check.to_json()
     assert api["grid"] == cli["grid"]  # the API states its grid too
     assert api["grid"]["pixel_source"] == "the scans' own pixel"
-    for key in ("approach", "contact_radius", "pmax"):
+    for key in ("approach", "effective_radius", "contact_radius", "pmax"):
         assert api["bem"][key] == cli["bem"][key]
     assert api["hertz_holds"] == cli["hertz_holds"]
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -155,3 +157,20 @@ def test_demo_and_fit_state_the_same_form_deviation(capsys):
     assert demo_um == round(rec["form_pv"]["value"] * 1e6, 2)
     # the residual PV is set by the ball's spikes, an order of magnitude above the form
     assert rec["pv_form_deviation"]["value"] > 5 * rec["form_pv"]["value"]
+
+
+def test_heights_beyond_any_surface_are_refused_in_one_line(tmp_path, capsys):
+    """Issue 25 item 11: ``fit`` on a ball scan with heights x 1e300 (OverflowError, exit 2,
+    on main) is one line, exit 1, through the API and the CLI."""
+    import surfmet
+    from surfmet.cli import main
+
+    ball = surfmet.read(Path(surfmet.__file__).parent / "data" / "paper_ball.x3p")
+    huge = ball.replace(heights=np.asarray(ball.heights) * 1e300)
+    with pytest.raises(SurfmetInputError, match="peak to valley"):
+        fit_sphere(huge)
+    path = tmp_path / "huge.npz"
+    surfmet.write(huge, path)
+    assert main(["fit", str(path), "--shape", "sphere"]) == 1
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "peak to valley" in err

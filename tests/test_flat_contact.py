@@ -161,3 +161,37 @@ def test_the_engine_names_a_flat_surface():
     q = np.linspace(1e4, 1e6, 20)
     with pytest.raises(ContactInputError, match="flat"):
         persson([1e6], 1e9, q, np.zeros_like(q), np.ones_like(q), 1e4)
+
+
+def test_curve_stiffness_never_reports_a_negative_stiffness():
+    """Issue 25 item 4: three pressures a decade apart on a non-exponential curve bend the
+    quadratic the wrong way at the first point (K < 0 on main); the secant through the
+    neighbours is given there, and the point is named."""
+    from contact.setups.flat import bent_points, curve_stiffness
+
+    p = np.array([1e6, 1e7, 1e8])
+    u = np.array([5.781e-6, 1.507e-6, 0.2468e-6])  # the paper ball's BEM gaps
+    k = curve_stiffness(p, u)
+    assert np.all(k > 0)
+    assert bent_points(p, u).tolist() == [True, False, False]
+    assert k[0] == pytest.approx(-p[0] * math.log(10) / (u[1] - u[0]), rel=1e-12)
+
+
+def test_a_ball_on_flat_contact_loses_its_form_and_says_so(capsys):
+    """Issue 25 item 4: the paper's ball, plane-levelled, gave a mean gap of 232 µm (its
+    cap) and a negative stiffness without a caveat. Its second-order form is removed and
+    said; the gap is the texture's, every stiffness positive; a pressure above the
+    hardness gets a caveat."""
+    from pathlib import Path
+
+    ball = Path(surfmet.__file__).parent / "data" / "paper_ball.x3p"
+    assert main(["flat-contact", str(ball), "--materials", "steel,aluminium",
+                 "--pressures", "1MPa,100MPa,2GPa", "--json", "--quiet"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["levelling"] == "poly:2"
+    assert any("curved form dominated" in c for c in rec["caveats"])
+    assert any("at or above the hardness" in c and "2000 MPa" in c for c in rec["caveats"])
+    bem = [r["bem"] for r in rec["results"]]
+    # the ball's roughness is microns (Sq after the sphere ~ 1 µm), not its 150 µm cap
+    assert bem[0]["mean_gap"]["value"] < 20e-6
+    assert all(b["stiffness"]["value"] > 0 for b in bem)

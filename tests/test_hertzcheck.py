@@ -79,7 +79,7 @@ def test_smooth_ball_hertz_holds():
     assert c.hertz_holds
     assert c.alpha == 0.0 and c.plastic_fraction == 0.0
     assert c.profile_deviation < 0.01
-    assert c.contact_radius / c.hertz.a == pytest.approx(1.0, abs=0.01)
+    assert c.effective_radius / c.hertz.a == pytest.approx(1.0, abs=0.01)
     assert c.approach / c.hertz.delta == pytest.approx(1.0, abs=0.01)
     assert c.pmax / c.hertz.p0 == pytest.approx(1.0, abs=0.01)
     names = {k.name for k in c.criteria}
@@ -176,7 +176,7 @@ def test_paper_rough_plate_fails_with_reasons():
     assert chk.reasons[0].startswith("α") and "≫" in chk.reasons[0]
     c = chk.comparison
     assert c.plastic_fraction > 0.01  # the asperities yield (Fig. 17)
-    assert c.contact_radius > 1.3 * hz.a and c.approach > 1.5 * hz.delta
+    assert c.effective_radius > 1.3 * hz.a and c.approach > 1.5 * hz.delta
     failed = {k.name for k in c.criteria if k.decisive and not k.passed}
     assert {"alpha", "profile", "radius", "approach", "yield"} <= failed
 
@@ -187,16 +187,17 @@ def test_to_json_has_exactly_the_issue_keys():
                       materials="steel,aluminium", grid=64).to_json()
     # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits), plus
     # issue 16's grid, scan preparation and warnings
-    assert set(rec) == {"hertz_holds", "alpha", "sigma", "hertz", "bem", "reasons",
+    assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
                         "scan_preparation", "warnings"}
     assert set(rec["hertz"]) == {"a", "delta", "p0"}
-    assert set(rec["bem"]) == {"pmax", "contact_radius", "approach", "area_fraction",
-                               "plastic_fraction"}
+    assert set(rec["bem"]) == {"pmax", "effective_radius", "contact_radius", "approach",
+                               "area_fraction", "plastic_fraction"}
     assert set(rec["radial_profile"]) == {"r", "p_bem", "p_hertz"}
     units = {("alpha",): "", ("sigma",): "m", ("hertz", "a"): "m", ("hertz", "p0"): "Pa",
              ("hertz", "delta"): "m", ("bem", "pmax"): "Pa", ("bem", "approach"): "m",
-             ("bem", "contact_radius"): "m", ("bem", "area_fraction"): "",
+             ("bem", "contact_radius"): "m", ("bem", "effective_radius"): "m",
+             ("bem", "area_fraction"): "",
              ("bem", "plastic_fraction"): "", ("radial_profile", "r"): "m",
              ("radial_profile", "p_bem"): "Pa", ("radial_profile", "p_hertz"): "Pa"}
     for path, unit in units.items():
@@ -225,3 +226,31 @@ def test_bad_inputs_are_refused_clearly():
     # a 64 µm scan cannot hold the ~1 mm contact of a 20 mm ball at 10 N
     with pytest.raises(ContactError, match=r"larger scan|too small"):
         hertz_check(scan, radius=0.02, load=10.0)
+
+
+def test_models_that_cannot_be_evaluated_are_left_out_with_their_reason():
+    """Issue 25 item 11: heights of a few pm leave the Greenwood-Tripp population no summit
+    that responds (its Newton matrix is singular): the check still answers, and names the
+    models it left out and why, instead of a LinAlgError."""
+    z = rough_surface(128, 5e-6, 3e-12, seed=7, corr=20e-6)
+    chk = hertz_check(Topography(z, 5e-6, 5e-6), radius=0.02, load=10.0,
+                      materials="steel,aluminium", grid=48)
+    h = chk.hierarchy
+    assert set(h.left_out) == {"greenwood_tripp", "greenwood_tripp_plastic"}
+    assert all("no summit" in why for why in h.left_out.values())
+    assert any(r.startswith("greenwood_tripp: not evaluated (") for r in h.reasons)
+    assert any("greenwood_tripp left out of the models" in n for n in chk.notes)
+    assert chk.hertz_holds  # a smooth plate: the answer itself is Hertz
+
+
+def test_a_reference_loaded_on_one_cell_has_no_radius_error():
+    """Issue 25 item 11: a 0/1 (bool) height map of 1 m pixels on a coarse grid loads a
+    single cell; a* = 0 is no radius to measure a model against (NaN, not a division by
+    zero), and no model is within tolerance of it."""
+    z = (np.random.default_rng(3).normal(size=(64, 64)) > 0).astype(float)
+    chk = hertz_check(Topography(z, 1.0, 1.0), radius=0.02, load=10.0,
+                      materials="steel,aluminium", grid=32)
+    assert chk.comparison.effective_radius == 0.0
+    hz = chk.hierarchy.models["hertz"]
+    assert math.isnan(hz.radius_error) and not hz.within_tolerance
+    assert not chk.comparison.judged and not chk.hertz_holds

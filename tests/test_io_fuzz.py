@@ -81,6 +81,10 @@ FILES = {
     "example_ps.tiff": ("park", 160),
     "synthetic-profile.smd": ("smd", 300),
     "mnt-1.mnt": ("mnt", 120),
+    "jpk-afmreader-0.jpk": ("jpk", 120),
+    "h5-multiple.h5": ("h5", 120),
+    "zon-surfalize-1.zon": ("zon", 60),
+    "container-2.zip": ("ce", 30),
 }
 TEXT_FORMATS = {"sdf", "asc", "dektak", "hfm", "xyz", "smd"}
 _NUMBER_RE = re.compile(rb"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")

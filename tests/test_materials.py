@@ -87,3 +87,32 @@ def test_displacement_shares_and_softer_hardness():
     assert s2 > s1  # the softer aluminium takes most of the deflection
     assert contact_hardness(steel, al) == al.hardness
     assert contact_hardness(Material("a", 1e9, 0.3), Material("b", 1e9, 0.3)) is None
+
+
+def test_a_material_with_all_its_constants_needs_no_table_entry():
+    """Issue 25 item 10: ``polymer:E=3000MPa:nu=0.35`` is a custom material."""
+    m = material("polymer", E=3e9, nu=0.35)
+    assert (m.name, m.E, m.nu, m.hardness) == ("polymer", 3e9, 0.35, None)
+    assert "user" in m.source
+    with pytest.raises(ContactInputError, match="Poisson"):
+        material("polymer", E=3e9)  # an unknown name without nu is still unknown
+
+
+@pytest.mark.parametrize("spec, needle", [
+    ("steel:E=200,aluminium", "has no unit"),
+    ("steel,aluminium:H=1.1", "has no unit"),
+])
+def test_a_modulus_without_its_unit_is_refused(spec, needle):
+    from surfmet.errors import SurfmetInputError
+    from surfmet.mechanics.material_spec import parse_materials
+
+    with pytest.raises(SurfmetInputError, match=needle):
+        parse_materials(spec)
+
+
+def test_custom_material_from_text_and_units():
+    from surfmet.mechanics.material_spec import parse_materials
+
+    ball, plate = parse_materials("steel,polymer:E=3000MPa:nu=0.35:H=200MPa")
+    assert ball is MATERIALS["steel"]
+    assert (plate.name, plate.E, plate.nu, plate.hardness) == ("polymer", 3e9, 0.35, 2e8)

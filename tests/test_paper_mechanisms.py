@@ -42,13 +42,17 @@ def test_readme_table(report) -> None:
     assert name == "hysteresis" and factor == pytest.approx(2.4, abs=0.05)
 
 
-def test_every_mechanism_falls_short_of_table3(report) -> None:
-    measured, se = report.measured_delta_eps
-    assert measured == pytest.approx(0.257, abs=0.0005)
-    assert se == pytest.approx(0.047, abs=0.0005)
-    # the README: short by a factor of 300 (plastic on the scans) to 1e5 (smooth pair)
+def test_every_mechanism_falls_short_of_the_verdicts_offset(report) -> None:
+    """The mechanisms are set beside the joint model's group offset (the rotor verdict), not
+    beside the constant-acceleration fits' 0.257 rad/s² that the rotor analysis rejects."""
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+
+    value, lo, hi = report.group_offset
+    o = paper_verdict().offset
+    assert (value, lo, hi) == (o.value, o.ci_low, o.ci_high)
+    assert value != pytest.approx(0.257, abs=0.01)
     for m in report.comparison.mechanisms:
-        assert m.delta_eps < measured / 300
+        assert m.delta_eps < lo / 300
 
 
 def test_readme_table_side_figures(report) -> None:

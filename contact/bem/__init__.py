@@ -94,7 +94,8 @@ What makes it fast
 - Kernel spectra and convolution plans are cached by (grid, pitch, periodicity).
 """
 
+from contact.bem.bounds import PressureBounds
 from contact.bem.solver import solve_normal
 from contact.bem.state import SolverStats
 
-__all__ = ["SolverStats", "solve_normal"]
+__all__ = ["PressureBounds", "SolverStats", "solve_normal"]

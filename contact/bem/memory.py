@@ -41,9 +41,9 @@ out-of-memory killer never has to choose this process.
 from __future__ import annotations
 
 import math
-import os
 
 from contact.errors import ContactMemoryError
+from contact.sysmem import SAFETY, available_bytes
 
 #: Peak bytes per grid cell of one elastic solve (measured; see the module notes).
 BYTES_PER_CELL = 200
@@ -53,8 +53,8 @@ PLASTIC_EXTRA_PER_CELL = 48
 RESULT_BYTES_PER_CELL = 32
 #: Fixed overhead of a solve beyond the interpreter (bytes): FFT plans, small arrays.
 BASE_BYTES = 64 * 2**20
-#: Fraction of the available memory a solve may plan to use.
-SAFETY = 0.8
+# SAFETY (the fraction of the available memory a solve may plan to use) and
+# available_bytes live in contact.sysmem, light enough for a file reader to import.
 
 
 def estimate_peak_bytes(n: int, *, ny: int | None = None, plastic: bool = False,
@@ -76,45 +76,6 @@ def estimate_peak_bytes(n: int, *, ny: int | None = None, plastic: bool = False,
     per = BYTES_PER_CELL + (PLASTIC_EXTRA_PER_CELL if plastic else 0)
     per += RESULT_BYTES_PER_CELL * max(int(results) - 1, 0)
     return BASE_BYTES + per * cells
-
-
-def _meminfo_available() -> int | None:
-    try:
-        with open("/proc/meminfo", encoding="ascii") as fh:
-            for line in fh:
-                if line.startswith("MemAvailable:"):
-                    return int(line.split()[1]) * 1024
-    except (OSError, ValueError, IndexError):
-        return None
-    return None
-
-
-def _cgroup_available() -> int | None:
-    try:
-        with open("/sys/fs/cgroup/memory.max", encoding="ascii") as fh:
-            limit = fh.read().strip()
-        if limit == "max":
-            return None
-        with open("/sys/fs/cgroup/memory.current", encoding="ascii") as fh:
-            used = int(fh.read().strip())
-        return max(int(limit) - used, 0)
-    except (OSError, ValueError):
-        return None
-
-
-def available_bytes() -> int | None:
-    """Memory available to this process now (bytes), or None where it cannot be read.
-
-    ``MemAvailable`` of ``/proc/meminfo`` (free memory plus reclaimable caches), bounded by
-    the cgroup v2 limit; elsewhere the free physical pages (``sysconf``).
-    """
-    found = [v for v in (_meminfo_available(), _cgroup_available()) if v is not None]
-    if not found:
-        try:
-            found = [os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")]
-        except (ValueError, OSError, AttributeError):
-            return None
-    return min(found)
 
 
 def largest_grid(budget: float, *, plastic: bool = False, results: int = 1) -> int:

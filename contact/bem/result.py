@@ -36,7 +36,9 @@ class ContactResult:
     approach : rigid-body approach delta (m) in the gap equation g = h + u - delta.
     pmax : maximum pressure (Pa).
     contact_area : area of the cells with p > 0 (m^2); area_fraction = that / domain area.
-    contact_radius : sqrt(contact_area / pi) (m).
+    contact_radius : sqrt(contact_area / pi) (m): the radius of a disc of the real contact
+        area. Not the macroscopic radius of a rough contact: that is
+        :attr:`effective_radius` (a*), a different name for a different quantity.
     radius_95 : radius about the pressure centroid of the disc holding 95 % of the load (m).
     centroid : (x, y) of the pressure centroid (m).
     n_clusters : number of contact spots (4-connected cells with p > 0; in a periodic domain
@@ -103,6 +105,15 @@ class ContactResult:
         if p0 is not None and p0 < self.hardness:
             return "plastic at the asperity scale"
         return "plastic at the Hertz scale"
+
+    @property
+    def effective_radius(self) -> float:
+        """Second-moment radius a* = sqrt(5/2 <r^2>_p) about the pressure centroid (m):
+        the radius of the Hertz distribution with the same spread of load, comparable
+        with the Hertz a for a rough contact (:func:`contact.fields.effective_radius`)."""
+        from contact.fields import effective_radius
+
+        return effective_radius(self.pressure, self.x, self.y)
 
     @property
     def mean_pressure(self) -> float:

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from contact._validate import positive
+from contact.bem.bounds import PressureBounds
 from contact.bem.iteration import iterate, start
 from contact.bem.nested import can_nest, coarsen, prolong
 from contact.bem.result import ContactResult, build_result
@@ -35,6 +36,7 @@ def solve_normal(
     approach: float | None = None,
     periodic: bool = False,
     hardness: float | None = None,
+    bounds: PressureBounds | None = None,
     initial: np.ndarray | None = None,
     tol: float = 1e-6,
     max_iter: int = 2000,
@@ -63,7 +65,12 @@ def solve_normal(
     periodic : bool
         Periodic domain (else a free boundary: no pressure outside the grid).
     hardness : float, optional
-        Pressure cap (Pa) for an elastic-perfectly-plastic contact.
+        Pressure cap (Pa) for an elastic-perfectly-plastic contact; shorthand for
+        ``bounds=PressureBounds.elastic(hardness)``.
+    bounds : PressureBounds, optional
+        The pressure bounds (give ``hardness`` or ``bounds``, not both). Adhesive bounds
+        (a tension or an interaction law) are refused here with a pointer to
+        :func:`contact.adhesion.solve_adhesive`: this iteration keeps p >= 0.
     initial : ndarray, optional
         Warm start: a pressure field on the same grid (e.g. the solution at a nearby load);
         it is rescaled to the load.
@@ -104,6 +111,8 @@ def solve_normal(
         iterations) of every grid solved, coarsest first.
     """
     dy = dx if dy is None else dy
+    bounds = _resolve_bounds(hardness, bounds)
+    hardness = bounds.hardness if bounds.plastic else None
     h = _check_inputs(gap0, dx, dy, e_star, load, approach, hardness)
     if precision not in ("mixed", "double"):
         raise ContactInputError("precision must be 'mixed' or 'double'")
@@ -112,14 +121,14 @@ def solve_normal(
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     stats = stats if stats is not None else SolverStats()
     ny, nx = h.shape
-    cap = math.inf if hardness is None else float(hardness)
+    cap = bounds.hardness
 
     if initial is not None:
         p_init = _warm_start(initial, h.shape, cap)
     elif nested and can_nest(ny, nx):
         coarse = solve_normal(
             coarsen(h), 2 * dx, 2 * dy, e_star=e_star, load=load, approach=approach,
-            periodic=periodic, hardness=hardness, tol=max(tol, 1e-4), max_iter=max_iter,
+            periodic=periodic, bounds=bounds, tol=max(tol, 1e-4), max_iter=max_iter,
             precision=precision, nested=True, precondition=precondition, workers=workers,
             strict=False, edge="ignore", stats=stats,
         )
@@ -133,7 +142,7 @@ def solve_normal(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
         gap=(h * e_star).ravel(), ny=ny, nx=nx, operator=operator,
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
-        cap=cap, single=precision == "mixed", precondition=precondition, workers=workers,
+        bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
         tol=tol, max_iter=max_iter,
     )
     try:
@@ -161,6 +170,22 @@ def solve_normal(
             residual=res, iterations=it,
         )
     return result
+
+
+def _resolve_bounds(hardness: float | None,
+                    bounds: PressureBounds | None) -> PressureBounds:
+    """The one set of bounds from the ``hardness`` shorthand or ``bounds``."""
+    if bounds is None:
+        if hardness is not None:
+            positive(hardness, "the hardness", "Pa")
+        return PressureBounds.elastic(hardness)
+    if hardness is not None:
+        raise ContactInputError("give the hardness either as hardness= or in bounds=, not both")
+    if bounds.is_adhesive:
+        raise ContactInputError(
+            "adhesive pressure bounds (a tension or an interaction law) are solved by "
+            "contact.adhesion.solve_adhesive, not by the non-adhesive solve_normal")
+    return bounds
 
 
 def _check_inputs(gap0: np.ndarray, dx: float, dy: float, e_star: float,

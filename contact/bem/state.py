@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from contact.bem.bounds import PressureBounds
 from contact.halfspace.convolution import Convolution
 
 #: Direct summation of a corrected cell costs about 1/SPARSE_FACTOR / log2(4 n) of one
@@ -48,9 +49,9 @@ class Problem:
     """One solve's fixed data, in units where E* = 1.
 
     ``gap`` is E* h, flattened; ``target`` the prescribed sum of the cell pressures (the
-    load over the cell area) in load control, 0 in approach control; ``cap`` the hardness
-    (``inf`` for an elastic contact); ``single`` runs the search-direction convolutions
-    in float32.
+    load over the cell area) in load control, 0 in approach control; ``bounds`` the
+    pressure bounds (non-adhesive here: 0 <= p <= hardness); ``single`` runs the
+    search-direction convolutions in float32.
     """
 
     gap: np.ndarray
@@ -59,7 +60,7 @@ class Problem:
     operator: Convolution
     load_control: bool
     target: float
-    cap: float
+    bounds: PressureBounds
     single: bool
     precondition: bool
     workers: int
@@ -72,9 +73,14 @@ class Problem:
         return self.ny * self.nx
 
     @property
+    def cap(self) -> float:
+        """The upper pressure bound (Pa) handed to the kernels: the hardness, or inf."""
+        return self.bounds.hardness
+
+    @property
     def plastic(self) -> bool:
         """A finite pressure cap: the elastic-perfectly-plastic path."""
-        return math.isfinite(self.cap)
+        return self.bounds.plastic
 
 
 @dataclass(eq=False)

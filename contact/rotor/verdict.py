@@ -70,13 +70,14 @@ class TrackDifference:
     """How the group-specific tracks differ (minuend - subtrahend): ``trend`` (rad/s² per m
     of track), ``waviness_rms`` (rad/s², what the trend leaves), ``regions`` ((start, end) m
     of track where the difference exceeds two standard errors), ``start``/``end`` its value at
-    both ends (rad/s²)."""
+    the release and the last mark (rad/s²), ``length`` the track covered (m)."""
 
     trend: float
     waviness_rms: float
     regions: tuple[tuple[float, float], ...]
     start: float
     end: float
+    length: float
 
 
 @dataclass(frozen=True)
@@ -122,6 +123,12 @@ class RotorVerdict:
         return tuple((self.data.names[i], int(self.data.k[i, j])) for i, j in np.argwhere(bad))
 
 
+def _p_text(p: float) -> str:
+    """``= p``, or ``<= p`` at the calibration's floor (no simulated null table beyond)."""
+    floor = 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
+    return f"<= {floor:.2g} (the calibration's floor)" if p <= floor else f"= {p:.2g}"
+
+
 def _p_value(f: float) -> float:
     null = calibration()["shared_track_test"]["null_f_sorted"]
     return (1 + sum(v >= f for v in null)) / (len(null) + 1)
@@ -157,7 +164,8 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
             end = i if flag else i - 1
             regions.append((float(x[start]), float(x[end])))
             start = None
-    return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]))
+    return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]),
+                           float(x[-1]))
 
 
 def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
@@ -218,11 +226,12 @@ def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDiffer
     ci = f"[{off.ci_low:+.3f}, {off.ci_high:+.3f}] rad/s² ({off.level:.0%})"
     if code == "undetermined":
         where = ", ".join(f"{a * 1e3:.0f}-{b * 1e3:.0f} mm" for a, b in diff.regions) or "nowhere"
-        kind = "trend" if abs(diff.end - diff.start) > 2 * diff.waviness_rms else "waviness"
+        length = diff.length
+        kind = "trend" if abs(diff.trend) * length > 2 * diff.waviness_rms else "waviness"
         return (f"undetermined: no shared track explains both groups (F = {f:.1f}, calibrated "
-                f"p = {p:.2g}); the groups' accelerations differ by a {kind} along the track "
-                f"({pair}: {diff.start:+.3f} rad/s² at the release, {diff.end:+.3f} at the last "
-                f"mark, trend {diff.trend:+.3g} rad/s² per m, waviness {diff.waviness_rms:.3f} "
+                f"p {_p_text(p)}); the groups' accelerations differ by a {kind} along the track "
+                f"({pair}: {diff.start:+.3f} rad/s² at the release, trend {diff.trend:+.3g} "
+                f"rad/s² per m over {length * 1e3:.0f} mm, waviness {diff.waviness_rms:.3f} "
                 f"rad/s² rms), beyond two standard errors at {where} of track; they did not "
                 f"run under the same conditions, so the offset {off.value:+.3f} rad/s² cannot "
                 f"be laid to rolling friction.")

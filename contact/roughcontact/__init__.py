@@ -1,7 +1,8 @@
 """contact.roughcontact: rough-contact theories, measured against the boundary elements.
 
 The room for the statistical and spectral models of rough contact (Greenwood-Williamson,
-Bush-Gibson-Thomas, Persson, Greenwood-Tripp) and the spectral summit parameters they take.
+Bush-Gibson-Thomas, Persson, Greenwood-Tripp), the spectral summit parameters they take and
+the isotropic PSD from a profile PSD (:mod:`~contact.roughcontact.isotropic`).
 Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
@@ -9,6 +10,11 @@ from contact.roughcontact.bgt import KAPPA_BGT, bush_gibson_thomas
 from contact.roughcontact.greenwood_tripp import GreenwoodTripp, greenwood_tripp
 from contact.roughcontact.gw import greenwood_williamson, gw_integral, gw_state
 from contact.roughcontact.hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
+from contact.roughcontact.isotropic import (
+    iso_from_profile_psd,
+    log_quadrature,
+    self_affine_factor,
+)
 from contact.roughcontact.persson import KAPPA_PERSSON, ModelCurve, kappa, persson
 from contact.roughcontact.summits import (
     SummitParameters,
@@ -30,10 +36,13 @@ __all__ = [
     "greenwood_williamson",
     "gw_integral",
     "gw_state",
+    "iso_from_profile_psd",
     "isotropic_moments",
     "kappa",
+    "log_quadrature",
     "model_hierarchy",
     "persson",
     "plasticity_index",
+    "self_affine_factor",
     "summit_parameters",
 ]

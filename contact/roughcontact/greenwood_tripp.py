@@ -377,14 +377,22 @@ def _solve(law: _AsperityLaw, hz, radius: float, e_star: float, load: float, r_m
     res, dP = residual(x)
     norm = float(np.linalg.norm(res, np.inf))
     its = 0
-    for its in range(1, max_iter + 1):  # noqa: B007 (reported)
+    for its in range(1, max_iter + 1):
         if norm < tol:
             break
         J = np.zeros((n + 1, n + 1))
         J[:n, :n] = np.eye(n) - dP[:, None] * K
         J[:n, n] = dP * hz.delta / p0
         J[n, :n] = area * p0 / load
-        step = np.linalg.solve(J, -res)
+        try:
+            step = np.linalg.solve(J, -res)
+        except np.linalg.LinAlgError:
+            # no ring's summits respond to the separation (dP = 0 everywhere): the
+            # population cannot carry the load, the model has no solution here
+            raise ConvergenceError(
+                "Greenwood-Tripp has no solution: no summit of the population responds at "
+                f"this load (sigma_s = {law.sigma:.3g} m against the Hertz approach "
+                f"{hz.delta:.3g} m)", residual=norm, iterations=its) from None
         lam = 1.0
         while True:
             trial = x + lam * step

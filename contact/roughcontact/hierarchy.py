@@ -20,7 +20,7 @@ itself.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -67,6 +67,7 @@ class ModelHierarchy:
     models: dict[str, ModelPrediction]
     verdict: str
     reasons: tuple[str, ...]
+    left_out: dict[str, str] = field(default_factory=dict)
 
     def gain(self, name: str, metric: str = "radius") -> float:
         """Fraction of Hertz's error that model ``name`` removes (1 = all, < 0 = worse)."""
@@ -97,14 +98,18 @@ def _measure(name: str, comp: HertzComparison, ref: Any, model_pressure: Any, a_
     avg = radial_average(np.asarray(ref.pressure), ref.x, ref.y, width=prof.width,
                          r_max=r_max, hertz=_Tabulated(model_pressure))
     err = profile_deviation(avg, hz.p0, PROFILE_EXTENT * hz.a)
+    # a reference loaded on a single cell has a* = 0: no radius to measure against (NaN,
+    # never within tolerance)
+    a_ref = comp.effective_radius
+    radius_error = float(a_star / a_ref - 1.0) if a_ref > 0 else math.nan
     return ModelPrediction(name=name, a_star=float(a_star), approach=float(approach),
                            peak=float(peak), r=np.asarray(r, float), p=np.asarray(p, float),
-                           radius_error=float(a_star / comp.contact_radius - 1.0),
+                           radius_error=radius_error,
                            profile_error=float(err), **_limits(comp))
 
 
-def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, Any]
-                    ) -> ModelHierarchy:
+def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, Any],
+                    left_out: dict[str, str] | None = None) -> ModelHierarchy:
     """Measure Hertz and the extended models against the BEM solution and name the simplest.
 
     Parameters
@@ -116,6 +121,9 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
     extended : dict
         ``{"greenwood_tripp": GreenwoodTripp, "greenwood_tripp_plastic": ...}`` (either may
         be absent).
+    left_out : dict, optional
+        ``{name: reason}`` of the models that could not be evaluated; each is named in
+        the reasons with why.
     """
     hz = comp.hertz
     prof = comp.profile
@@ -129,7 +137,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             models[name] = _measure(name, comp, reference, sol.pressure, sol.a_star,
                                     sol.approach, sol.peak, sol.r, sol.p)
     models["bem"] = ModelPrediction(
-        name="bem", a_star=comp.contact_radius, approach=comp.approach, peak=comp.pmax,
+        name="bem", a_star=comp.effective_radius, approach=comp.approach, peak=comp.pmax,
         r=prof.r, p=prof.p, radius_error=0.0, profile_error=0.0, **_limits(comp))
     if comp.hertz_holds:
         verdict = "hertz"
@@ -144,7 +152,7 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             continue
         ok = m.within_tolerance
         text = (f"{name}: a* = {m.a_star * 1e6:.4g} µm against the BEM's "
-                f"{comp.contact_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
+                f"{comp.effective_radius * 1e6:.4g} µm ({100 * m.radius_error:+.3g} %), "
                 f"profile off the BEM by {100 * m.profile_error:.3g} % of p0 "
                 f"({'within' if ok else 'beyond'} {100 * lim['radius_limit']:g} % / "
                 f"{100 * lim['profile_limit']:g} %)")
@@ -155,16 +163,33 @@ def model_hierarchy(comp: HertzComparison, reference: Any, extended: dict[str, A
             text += (f"; removes {100 * g_r:.3g} % of Hertz's radius error and "
                      f"{100 * g_p:.3g} % of its profile error")
         reasons.append(text)
+    left_out = dict(left_out or {})
+    reasons += [f"{name}: not evaluated ({why})" for name, why in left_out.items()]
+    head = _headline(comp, models, verdict)
+    return ModelHierarchy(models=models, verdict=verdict, reasons=(head, *reasons),
+                          left_out=left_out)
+
+
+def _headline(comp: HertzComparison, models: dict[str, ModelPrediction], verdict: str
+              ) -> str:
+    """Why this model was named, in agreement with the Hertz verdict's own criteria."""
+    failed = [c for c in comp.criteria if c.decisive and not c.passed]
+    if not comp.judged:
+        res = comp.criterion("resolution")
+        return (f"the scans do not resolve the contact ({res.value:.2g} pixels per Hertz "
+                f"radius, at least {res.limit:g}): no model can be judged against the "
+                "boundary elements, which see the scan interpolated between its points")
     if verdict == "hertz":
-        head = "Hertz holds (α, profile, radius, approach and yield within their limits)"
-    elif verdict == "bem":
-        head = ("no model of the hierarchy is within tolerance: only the boundary elements "
-                "describe this contact")
-    else:
-        head = (f"{verdict} is the simplest model within tolerance "
-                + ("(Hertz fails: " + "; ".join(c.name for c in comp.criteria
-                                                if c.decisive and not c.passed) + ")"))
-    return ModelHierarchy(models=models, verdict=verdict, reasons=(head, *reasons))
+        return "Hertz holds (α, profile, radius, approach and yield within their limits)"
+    fails = "; ".join(c.name for c in failed)
+    if verdict != "bem":
+        return f"{verdict} is the simplest model within tolerance (Hertz fails: {fails})"
+    if models["hertz"].within_tolerance:
+        return (f"hertz is within tolerance of the boundary elements on a* and profile but "
+                f"fails the verdict's other criteria ({fails}), and no extended model is "
+                "within tolerance: the boundary elements describe this contact")
+    return ("no model of the hierarchy is within tolerance: only the boundary elements "
+            "describe this contact")
 
 
 def gains(h: ModelHierarchy, name: str) -> tuple[float, float]:

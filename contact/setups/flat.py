@@ -205,8 +205,15 @@ def flat_contact(
         if progress is not None:
             progress(k + 1, p.size)
     if not by_solve:
-        k = curve_stiffness(p, np.array([pt.mean_gap for pt in points]))
+        gaps = np.array([pt.mean_gap for pt in points])
+        k = curve_stiffness(p, gaps)
         points = [replace(pt, stiffness=float(kk)) for pt, kk in zip(points, k)]
+        bent = bent_points(p, gaps)
+        if bent.any():
+            notes.append("stiffness at " + ", ".join(f"{pk:.3g} Pa" for pk in p[bent])
+                         + ": the quadratic through the neighbouring pressures bends the "
+                         "wrong way (pressures too few or too far apart), so the secant is "
+                         "given; add pressures or use stiffness='solve' (--stiffness solve)")
     return FlatContact(points=tuple(points), periodic=periodic, e_star=float(e_star),
                        hardness=hardness, shape=(int(z.shape[0]), int(z.shape[1])),
                        dx=float(dx), dy=float(dy), notes=tuple(notes))
@@ -224,16 +231,40 @@ def curve_stiffness(pressure: np.ndarray, mean_gap: np.ndarray) -> np.ndarray:
     ``d(ln p)/dū`` is the derivative at each point of the quadratic (Lagrange) through the
     point and its two neighbours in ``(ū, ln p)``, one-sided at the ends, the secant with
     two points; exact whenever ``ln p`` is quadratic in ū, the exponential law of rough
-    contact included. Points whose gap does not decrease give ``inf``.
+    contact included. Where pressures too few or too far apart make that quadratic bend
+    the wrong way (a stiffness <= 0, which no contact has), the secant through the
+    neighbouring points is used instead (:func:`bent_points` says where). Points whose
+    gap does not decrease give ``inf``.
     """
     p = np.asarray(pressure, dtype=float)
     u = np.asarray(mean_gap, dtype=float)
-    y = np.log(p)
-    n = p.size
-    if n < 2:
+    if p.size < 2:
         raise ContactInputError("the curve stiffness needs at least two pressures")
     if np.any(np.diff(u) >= 0):
-        return np.full(n, math.inf)
+        return np.full(p.size, math.inf)
+    out = _quadratic_stiffness(p, u)
+    bent = ~(out > 0)
+    if bent.any():
+        y = np.log(p)
+        lo = np.maximum(np.arange(p.size) - 1, 0)
+        hi = np.minimum(np.arange(p.size) + 1, p.size - 1)
+        secant = -p * (y[hi] - y[lo]) / (u[hi] - u[lo])
+        out = np.where(bent, secant, out)
+    return out
+
+
+def bent_points(pressure: np.ndarray, mean_gap: np.ndarray) -> np.ndarray:
+    """Where :func:`curve_stiffness` fell back to the secant (boolean per point)."""
+    p = np.asarray(pressure, dtype=float)
+    u = np.asarray(mean_gap, dtype=float)
+    if p.size < 3 or np.any(np.diff(u) >= 0):
+        return np.zeros(p.size, dtype=bool)
+    return ~(_quadratic_stiffness(p, u) > 0)
+
+
+def _quadratic_stiffness(p: np.ndarray, u: np.ndarray) -> np.ndarray:
+    y = np.log(p)
+    n = p.size
     if n == 2:
         slope = (y[1] - y[0]) / (u[1] - u[0])
         return -p * slope

@@ -39,6 +39,7 @@ from contact.errors import ContactInputError, ConvergenceError
 from contact.setups.line import line_column, solve_active_set
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
+from contact.viscoelastic.window import cylinder_window
 
 
 def _logsafe(v: np.ndarray) -> np.ndarray:
@@ -160,8 +161,7 @@ def rolling_cylinder(radius: float, load: float, creep: CreepSeries, speed: floa
     """
     R = positive(radius, "the radius", "m")
     W = positive(load, "the load per unit length", "N/m")
-    a_r = math.sqrt(4.0 * W * R * creep.relaxed / math.pi)
-    L = half_length if half_length is not None else 1.6 * a_r
+    L = half_length if half_length is not None else cylinder_window(W, R, creep.relaxed)
     dx = 2.0 * L / n
     x = -L + dx / 2 + np.arange(n) * dx
     h = x**2 / (2 * R)

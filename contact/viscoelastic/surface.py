@@ -50,6 +50,7 @@ from contact.halfspace.influence import love_coefficients
 from contact.viscoelastic.kernels import creep_filter_rows
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
+from contact.viscoelastic.window import sphere_window
 
 
 class RollingOperator:
@@ -275,8 +276,7 @@ def rolling_sphere(radius: float, load: float, creep: CreepSeries, speed: float,
     """
     R = positive(radius, "the radius", "m")
     W = positive(load, "the load", "N")
-    a_r = (3.0 * W * R * creep.relaxed / 4.0) ** (1.0 / 3.0)
-    L = half_width if half_width is not None else 1.6 * a_r
+    L = half_width if half_width is not None else sphere_window(W, R, creep.relaxed)
     dx = 2.0 * L / n
     x = -L + dx / 2 + np.arange(n) * dx
     h = (x[None, :] ** 2 + x[:, None] ** 2) / (2 * R)

@@ -26,6 +26,7 @@ import numpy as np
 from contact.errors import ContactInputError
 from contact.viscoelastic.rheology import CreepSeries, pair_creep
 from contact.viscoelastic.surface import rolling_sphere
+from contact.viscoelastic.window import sphere_window
 
 
 def roughness_window(roughness: np.ndarray, dx: float, dy: float,
@@ -82,7 +83,7 @@ def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[flo
 
     w = sweep_loads(loads)
     creep = pair_creep(ball, plate)
-    half = 1.6 * (3.0 * w[-1] * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
+    half = sphere_window(w[-1], radius, creep.relaxed)
     z = None
     if roughness is not None:
         if roughness_dx is None:

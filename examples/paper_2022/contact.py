@@ -319,7 +319,7 @@ def main(argv: list[str]) -> int:
         f"Hertz does not hold for this pair: α = {c10.alpha:.2f} at 10 N and {c1.alpha:.2f} at "
         f"{n1:.2f} N (GJM limit 0.05): the roughness is {c10.alpha:.1f} × the Hertz approach. "
         f"The averaged pressure departs from Hertz by {100 * c10.profile_deviation:.0f} % of "
-        f"p0 and the load spreads to {c10.contact_radius / c10.hertz.a:.1f} a0.",
+        f"p0 and the load spreads to {c10.effective_radius / c10.hertz.a:.1f} a0.",
         f"The asperities yield at the experiment's loads: {100 * c1.plastic_fraction:.0f} % of "
         f"the nominal area at {n1:.2f} N, although the Hertz p0 ({c1.hertz.p0 / 1e6:.0f} MPa) is "
         f"only {c1.hertz.p0 / hardness:.2f} H. The elastic asperity pressures reach "

@@ -48,15 +48,15 @@ def smooth(grid: int) -> None:
             ("highest eta, V = 0.1 m/s", (steel.high, alu.high), 0.1, None)):
         rep = rolling_mechanisms(radius=RADIUS, loads=(2.0, 12.0, 7), speed=speed, loss=loss,
                                  grid=grid, mu=mu)
-        measured, se = rep.measured_delta_eps
+        measured, lo, hi = rep.group_offset
         for m in rep.comparison.mechanisms:
             ratio = measured / m.delta_eps if m.delta_eps > 0 else float("inf")
             print(f"{label:34}{m.name:>13}{m.rotor_moments[0]:13.3g}"
                   f"{m.sweep.lambda_eff:8.3f}{m.delta_eps:13.3g}{ratio:13.3g}")
         name, factor = rep.comparison.dominant()
         print(f"{'':34}dominant: {name} ({factor:.3g} x the next)")
-    print(f"Table 3 (constant-acceleration parabolas): eps_s - eps_a = {measured:.3f} "
-          f"+- {se:.3f} rad/s^2")
+    print(f"Table 3 (the rotor verdict's joint model): eps_s - eps_a = {measured:.3f} "
+          f"rad/s^2, 95 % CI [{lo:.3f}, {hi:.3f}]")
 
 
 def scans(grid: int) -> None:

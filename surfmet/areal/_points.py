@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet.model import Topography, require_measurement
 
 
 def heights_of(topo: Topography) -> np.ndarray:
@@ -18,7 +18,7 @@ def heights_of(topo: Topography) -> np.ndarray:
             f"areal parameters need a Topography, got {type(topo).__name__}; for a profile "
             "use surfmet.roughness or profiles.analyze_profile"
         )
-    return topo.heights
+    return require_measurement(topo).heights
 
 
 def valid_values(z: np.ndarray) -> np.ndarray:

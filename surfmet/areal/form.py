@@ -277,3 +277,34 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
     fit = FormFit(method=fit.method, coefficients=fit.coefficients, terms=fit.terms,
                   shape=fit.shape, residual_rms=rms, n_points=fit.n_points)
     return topo.replace(heights=res).with_metadata(form=fit.method), fit
+
+
+#: A curved form dominates a levelled scan when a second-order surface removes more than
+#: three quarters of what the plane left (its Sq falls below half): the parameters would
+#: then describe the shape (a ball's cap, a cylinder's flank), not the texture. A textured
+#: flat plate keeps more than 80 % of its Sq under a second-order surface.
+DOMINANT_FORM_SQ_RATIO = 0.5
+
+
+def dominant_form(topo: Topography, fit: FormFit) -> str | None:
+    """A caveat when a curved form dominates what a ``none``, ``mean`` or ``plane``
+    F-operator (``fit``) left of ``topo``; None otherwise (or for any other F-operator).
+
+    The test: the rms residual of a least-squares second-order polynomial against that of
+    ``fit`` (:data:`DOMINANT_FORM_SQ_RATIO`), as a Gwyddion or MountainsMap user would
+    check by eye on the levelled map before reading its parameters.
+    """
+    from surfmet.units import format_length
+
+    if fit.method not in ("none", "mean", "plane") or not fit.residual_rms > 0:
+        return None
+    _, quad = remove_form(topo, "poly:2")
+    ratio = quad.residual_rms / fit.residual_rms
+    if ratio >= DOMINANT_FORM_SQ_RATIO:
+        return None
+    return (f"a curved form dominates this scan: a second-order surface leaves "
+            f"{100 * ratio:.2g} % of the Sq the {fit.method} F-operator left "
+            f"({format_length(quad.residual_rms)} of {format_length(fit.residual_rms)}), so "
+            "these parameters "
+            "describe the form, not the texture; remove it first (--level sphere for a "
+            "ball, cylinder for a cylinder, poly:2 otherwise)")

@@ -87,16 +87,20 @@ def decay_lengths(topo: Topography, s: float = ACF_THRESHOLD, angle_step: float 
     hx, hy = 0.5 * (nx - 1) * dx, 0.5 * (ny - 1) * dy  # rays reach half the scan size
     with np.errstate(divide="ignore"):
         rmax = np.minimum(hx / np.abs(np.cos(th)), hy / np.abs(np.sin(th)))
-    step = 0.5 * min(dx, dy)
-    nstep = int(np.ceil(rmax.max() / step)) + 1
-    r = np.arange(nstep) * step
-    cols = (nx - 1) + np.outer(np.cos(th), r) / dx
-    rows = (ny - 1) + np.outer(np.sin(th), r) / dy
+    # each ray is sampled every half cell of the grid along its own direction (half a
+    # pixel for square pixels): a step set by the smaller pixel alone would sample the
+    # rays along the larger one (dx/dy) times too finely, and a 1 mm x 0.1 µm pixel would
+    # ask for 1e4 x more samples (memory and time growing with the anisotropy)
+    step = 0.5 / np.hypot(np.cos(th) / dx, np.sin(th) / dy)
+    nstep = int(np.ceil((rmax / step).max())) + 1
+    r = np.arange(nstep)[None, :] * step[:, None]
+    cols = (nx - 1) + np.cos(th)[:, None] * r / dx
+    rows = (ny - 1) + np.sin(th)[:, None] * r / dy
     # NaN (too few overlapping valid pairs) propagates through the bilinear weights and
     # ends a ray there, like the half-scan limit.
     vals = map_coordinates(acf, [rows.ravel(), cols.ravel()], order=1, mode="nearest")
     vals = vals.reshape(th.size, nstep)
-    vals[r[None, :] > rmax[:, None]] = np.nan
+    vals[r > rmax[:, None]] = np.nan
     length = rmax.copy()
     decayed = np.zeros(th.size, dtype=bool)
     for k in range(th.size):
@@ -105,11 +109,11 @@ def decay_lengths(topo: Topography, s: float = ACF_THRESHOLD, angle_step: float 
         end = bad[0] if bad.size else nstep
         idx = np.flatnonzero(row[:end] <= s)
         if idx.size == 0 or idx[0] == 0:
-            length[k] = min(rmax[k], r[max(end - 1, 0)])
+            length[k] = min(rmax[k], r[k, max(end - 1, 0)])
             continue
         i = idx[0]
         v0, v1 = row[i - 1], row[i]
-        length[k] = r[i - 1] + (v0 - s) / (v0 - v1) * step
+        length[k] = r[k, i - 1] + (v0 - s) / (v0 - v1) * step[k]
         decayed[k] = True
     return angles, length, decayed
 

@@ -34,6 +34,8 @@ SUBCOMMANDS = (
     "spectrum",
     "flat_contact",
     "rolling_contact",
+    "scales",
+    "adhesion",
 )
 
 EPILOG = """examples:
@@ -45,9 +47,13 @@ EPILOG = """examples:
   surfmet rotor table3_frames.tsv
   surfmet spectrum plate.x3p --plot psd.png
   surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
+  surfmet scales surface.zip --tip-radius 20nm --plot scales.png
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
   surfmet demo --out demo_out
 
-Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres.
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
+accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
+(steel:E=200GPa); a name not in the table with E and nu given is a custom material.
 """
 
 

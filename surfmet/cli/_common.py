@@ -28,6 +28,7 @@ def _argtype(parse: Any, what: str) -> Any:
 length = _argtype(units.parse_length, "length")
 force = _argtype(units.parse_force, "force")
 pressure = _argtype(units.parse_pressure, "pressure")
+speed = _argtype(units.parse_speed, "speed")
 length_range = _argtype(units.parse_length_range, "length range")
 force_range = _argtype(units.parse_force_range, "load range")
 

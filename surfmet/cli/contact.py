@@ -146,9 +146,10 @@ def _print(sol: Any, args: argparse.Namespace) -> None:
           f"{format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
     print(f"load           {res.load:.6g} N")
     print(f"max pressure   {res.pmax / 1e6:.6g} MPa   (Hertz p0 {hz.p0 / 1e6:.6g} MPa)")
-    print(f"contact radius {format_length(res.contact_radius)} = sqrt(A/pi)   "
-          f"(Hertz a {format_length(hz.a)}; 95 % of the load within "
-          f"{format_length(res.radius_95)})")
+    print(f"contact radius {format_length(res.contact_radius)} = sqrt(A/pi), real area   "
+          f"(95 % of the load within {format_length(res.radius_95)})")
+    print(f"effective a*   {format_length(res.effective_radius)} = sqrt(5/2 <r^2>_p)   "
+          f"(Hertz a {format_length(hz.a)})")
     print(f"approach       {format_length(res.approach)}   (Hertz delta "
           f"{format_length(hz.delta)})")
     print(f"area fraction  {res.area_fraction:.4g}   clusters {res.n_clusters}")

@@ -1,4 +1,5 @@
-"""``surfmet flat-contact FILE``: the scan on a flat, BEM against Persson, GW and BGT."""
+"""``surfmet flat-contact FILE...``: the scan on a flat, BEM against Persson, GW and BGT;
+with several measurements of one surface, Persson's theory from their averaged PSD too."""
 
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from surfmet.cli._common import (
     save_figure,
     show_progress,
 )
+from surfmet.cli.scales import add_measurement_arguments, print_all_scales, read_measurements
 from surfmet.cli.spectrum import add_periodic_argument, materials_e_star, periodic_flag
 
 EPILOG = """examples:
@@ -25,9 +27,19 @@ EPILOG = """examples:
   surfmet flat-contact plate.x3p --materials steel,aluminium --hardness 0.9GPa \\
       --pressures 20MPa --periodic no
 
+  surfmet flat-contact afm.jpk stylus.csv --e-star 70GPa --pressures 10MPa --tip-radius 20nm
+  surfmet flat-contact surface.zip --materials steel,aluminium --pressures 1MPa:100MPa:3
+
 --materials A presses the scan (material A) on a rigid flat; A,B on an elastic flat of B.
 The BEM is periodic when the scan is (opposite edges match, or --periodic yes) and has a
 free boundary otherwise; the output says which. Errors are model/BEM - 1.
+
+Several FILEs (or a contact.engineering container) are measurements of one surface: their
+profile PSD is averaged as `surfmet scales` does (each where it is reliable), turned into
+the isotropic PSD and Persson's theory is evaluated on it over the band where it is
+measured (stated). The BEM needs one height map: it runs on the first areal map named
+(as for one file, with GW and BGT on that map's spectrum), and is left out when there is
+none.
 """
 
 
@@ -40,7 +52,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("file", metavar="FILE", help="areal scan of the rough surface")
+    p.add_argument("files", nargs="+", metavar="FILE",
+                   help="areal scan of the rough surface; or several measurements of it")
     mod = p.add_mutually_exclusive_group(required=True)
     mod.add_argument("--materials", metavar="A[,B]", help="scan material [, flat material]")
     mod.add_argument("--e-star", type=pressure, metavar="E", help="composite modulus E*")
@@ -55,6 +68,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "no extra solve) or from one more solve at p(1+1%%) per pressure")
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="plot A/A0 and the mean gap against p for all four")
+    add_measurement_arguments(p, 10)
     add_json_flag(p)
     add_quiet_flag(p)
     p.set_defaults(func=run)
@@ -62,7 +76,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    import surfmet
     from surfmet.batch import progress_bar
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.flat_contact import flat_contact, parse_pressures, plot
@@ -76,21 +89,70 @@ def run(args: argparse.Namespace) -> int:
         e_star, hard, names = args.e_star, args.hardness, []
     else:
         e_star, hard, names = materials_e_star(args.materials, args.hardness)
-        if args.hardness is None:
-            hard = None  # the BEM stays elastic unless a hardness is asked for
-    topo = surfmet.read(args.file)
+    material_hardness = hard
+    if args.hardness is None:
+        hard = None  # the BEM stays elastic unless a hardness is asked for
+    scans = read_measurements(args.files)
+    if len(scans) > 1:
+        return _run_several(args, scans, pressures, e_star, hard, names)
     bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
-    rep = flat_contact(topo, e_star=e_star, pressures=pressures, hardness=hard,
+    rep = flat_contact(scans[0], e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
-                       progress=lambda done, total: bar.update(1), spikes=args.spikes)
+                       progress=lambda done, total: bar.update(1), spikes=args.spikes,
+                       material_hardness=material_hardness)
     bar.close()
-    rec = {"file": args.file, **({"materials": names} if names else {}), **flat_contact_record(rep)}
+    rec = {"file": args.files[0], **({"materials": names} if names else {}),
+           **flat_contact_record(rep)}
     if args.plot:
         save_figure(plot(rep, args.plot), args.plot)
     if args.json:
         emit_json(rec)
         return 0
     _print(rec)
+    return 0
+
+
+def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, e_star: float,
+                 hard: float | None, names: list[str]) -> int:
+    """Persson from the averaged PSD of all measurements; the BEM on the first map."""
+    from surfmet.batch import progress_bar
+    from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
+    from surfmet.mechanics.flat_contact import flat_contact, plot
+    from surfmet.model import Topography
+    from surfmet.records import flat_contact_record
+    from surfmet.records.all_scales import all_scales_record
+    from surfmet.scale_dependent import analyze_scales
+
+    log(f"{len(scans)} measurements from {len(args.files)} file(s)")
+    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
+    s = all_scales_spectrum(a)
+    curve = persson_all_scales(s, pressures, e_star)
+    first = next((k for k, m in enumerate(scans) if isinstance(m, Topography)), None)
+    rep = None
+    rec: dict[str, Any] = {"files": args.files, **({"materials": names} if names else {}),
+                           "all_scales": all_scales_record(s, curve, e_star)}
+    if first is None:
+        rec["bem_scan"] = None
+        rec["all_scales"]["notes"].append("no BEM: none of the measurements is a height map")
+    else:
+        bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
+        rep = flat_contact(scans[first], e_star=e_star, pressures=pressures, hardness=hard,
+                           periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
+                           progress=lambda done, total: bar.update(1), spikes=args.spikes)
+        bar.close()
+        rec["bem_scan"] = {"file": a.measurements[first].file, **flat_contact_record(rep)}
+        rec["all_scales"]["notes"].append(
+            f"the BEM, GW and BGT see only {a.measurements[first].file} (its own band); "
+            "Persson in all_scales sees every measurement's band")
+    if args.plot:
+        save_figure(plot(rep, args.plot, all_scales=curve), args.plot)
+    if args.json:
+        emit_json(rec)
+        return 0
+    if rep is not None:
+        print(f"BEM on {rec['bem_scan']['file']}:")
+        _print({"file": rec["bem_scan"]["file"], **rec["bem_scan"]})
+    print_all_scales(rec["all_scales"])
     return 0
 
 
@@ -102,7 +164,8 @@ def _print(rec: dict[str, Any]) -> None:
     print(f"  scan: {spikes}, {100 * prep['filled_fraction']['value']:.3g} % of the points "
           "filled")
     g = rec["grid"]
-    print(f"  {rec['boundary']} boundary, {g['nx']} x {g['ny']} cells, "
+    print(f"  {rec['boundary']} boundary, levelling {rec['levelling']}, "
+          f"{g['nx']} x {g['ny']} cells, "
           f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
           f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
     print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} "

@@ -96,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     c = check.comparison
     hz = c.hertz
-    print(f"{'Hertz holds' if c.hertz_holds else 'Hertz does not hold'} "
+    print(f"{c.headline} "
           f"(α = {c.alpha:.3g}, σ = {format_length(c.sigma)})")
     for reason in c.reasons:
         print(f"  - {reason}")
@@ -106,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'':16}{'Hertz':>14}{'BEM':>14}")
     rows = [
         ("peak pressure", f"{hz.p0 / 1e6:.4g} MPa", f"{c.pmax / 1e6:.4g} MPa"),
-        ("contact radius", format_length(hz.a), format_length(c.contact_radius)),
+        ("radius a, a*", format_length(hz.a), format_length(c.effective_radius)),
         ("approach", format_length(hz.delta), format_length(c.approach)),
         ("area / πa0²", "1", f"{c.area_fraction:.3g}"),
         ("yielded / πa0²", "0", f"{c.plastic_fraction:.3g}"),

@@ -53,6 +53,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
     p.add_argument("--no-3d", dest="no_3d", action="store_true",
                    help="leave out the 3D views (faster)")
+    p.add_argument("--rotor", metavar="TABLE", help="put the rotor verdict on a frame table "
+                   "first (as 'surfmet rotor TABLE'; 'paper2022' for the paper's Table 3)")
+    p.add_argument("--rig", metavar="RIG.json", help="the rotor's rig, with --rotor")
     hz = p.add_argument_group("Hertz check (all three to enable)")
     hz.add_argument("--radius", type=positive_length, metavar="L", help="ball radius, e.g. 10mm")
     hz.add_argument("--load", type=force, metavar="F", help="normal load, e.g. 4.7N")
@@ -89,9 +92,10 @@ def run(args: argparse.Namespace) -> int:
                 "is missing); leave out --radius/--load/--materials")
         hertz = HertzOptions(radius=args.radius, load=args.load, materials=args.materials,
                              ball=args.ball)
+    rotor = _rotor_verdict(args)
     sections = write_report(args.files, args.output, options, title=args.title,
                             include_3d=not args.no_3d, hertz=hertz,
-                            progress=show_progress(args))
+                            progress=show_progress(args), rotor=rotor)
     failed = [s for s in sections if s.status != "ok"]
     for s in failed:
         msg = s.error or ""
@@ -104,3 +108,25 @@ def run(args: argparse.Namespace) -> int:
     else:
         log(f"wrote {args.output} ({len(sections) - len(failed)} of {len(sections)} scans)")
     return 1 if failed or any(s.hertz_error for s in sections) else 0
+
+
+def _rotor_verdict(args: argparse.Namespace) -> Any:
+    """The verdict ``surfmet rotor`` gives on ``--rotor`` (with ``--rig``), or None."""
+    from surfmet.errors import SurfmetInputError
+
+    if args.rotor is None:
+        if args.rig:
+            raise SurfmetInputError("--rig goes with --rotor TABLE")
+        return None
+    from contact.rotor.paper import FPS, MARK_STEP
+    from surfmet.cli.rotor import PAPER_ALIAS, _paper_path
+    from surfmet.frames import read_frames_table
+    from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict
+
+    if args.rotor == PAPER_ALIAS and not args.rig:
+        return paper_verdict()
+    ks, cols = read_frames_table(_paper_path() if args.rotor == PAPER_ALIAS else args.rotor)
+    rig = load_rig(args.rig) if args.rig else None
+    if rig is None:
+        log("note: no --rig: the rotor verdict's lambda outputs and confounds are left out")
+    return judge(cols, ks, fps=FPS, step=MARK_STEP, rig=rig)

@@ -12,6 +12,7 @@ from surfmet.cli._common import (
     emit_json,
     log,
     positive_length,
+    speed,
     spike_summary,
 )
 from surfmet.cli.rolling_contact_visco import add_visco_options, run_viscoelastic
@@ -51,8 +52,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="longitudinal creepage xi (default: free rolling, fx = 0)")
     p.add_argument("--line", action="store_true",
                    help="plane strain line contact (a roller), load per unit length")
-    p.add_argument("--speed", type=float, metavar="V",
-                   help="rolling speed in m/s (adds the frictional power in W)")
+    p.add_argument("--speed", type=speed, metavar="V",
+                   help="rolling speed, e.g. 1m/s or 50mm/s (a bare number is m/s; adds "
+                   "the frictional power in W)")
     p.add_argument("--grid", type=int, metavar="N",
                    help="elements per side (default 64; 256 with --line)")
     p.add_argument("--size", type=positive_length, metavar="L",

@@ -39,12 +39,12 @@ def load_value(text: Any, line: bool) -> float:
 
 
 def speed_value(value: Any) -> float:
-    """V in m/s, positive."""
-    try:
-        v = float(str(value).removesuffix("m/s"))
-    except (TypeError, ValueError):
-        raise SurfmetInputError(f"--speed must be a number in m/s, got {value!r}") from None
-    if not (v > 0 and v != float("inf")):
+    """V in m/s, positive, from a speed with or without its unit (``1m/s``, ``50mm/s``,
+    ``0.1``; :func:`surfmet.units.parse_speed`)."""
+    from surfmet.units import parse_speed
+
+    v = value if isinstance(value, float) else parse_speed(str(value))
+    if not v > 0:
         raise SurfmetInputError(f"--speed must be positive (m/s), got {value!r}")
     return v
 

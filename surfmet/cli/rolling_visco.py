@@ -10,8 +10,8 @@ from typing import Any
 def add_visco_arguments(p: argparse.ArgumentParser) -> None:
     """--speed, --loss, --viscoelastic (used by --model viscoelastic and all)."""
     p.add_argument("--speed", default="0.1", metavar="V",
-                   help="rolling speed in m/s for the viscoelastic model (default 0.1, the "
-                   "rotor's mid-run speed)")
+                   help="rolling speed for the viscoelastic model, e.g. 0.1m/s or 100mm/s "
+                   "(a bare number is m/s; default 0.1 m/s, the rotor's mid-run speed)")
     p.add_argument("--loss", default=None, metavar="ETA_BALL,ETA_PLATE",
                    help="loss factors tan(delta); each body's SLS puts its loss peak at the "
                    "contact frequency V/a (an upper bound). Default for --model all: the "
@@ -50,12 +50,16 @@ def run_visco(args: argparse.Namespace) -> int:
     n = 9 if n is None else n
     speed = speed_value(args.speed)
     if args.model == "all":
+        from surfmet.errors import SurfmetInputError
         from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
 
         if not (args.mu > 0 and args.mu < float("inf")):
-            from surfmet.errors import SurfmetInputError
-
             raise SurfmetInputError("--mu must be a positive number")
+        if args.plate or args.ball:
+            # the comparison is of the smooth pair; a scan given here would be ignored
+            raise SurfmetInputError(
+                "--model all sets the mechanisms side by side on the smooth pair and takes no "
+                "scans; run --model plastic or hysteresis with --plate/--ball for the scans")
         rep = rolling_mechanisms(radius=args.radius, materials=args.materials,
                                  loads=(lo, hi, n), speed=speed, loss=_loss(args.loss),
                                  hardness=args.hardness, grid=args.grid or 128,
@@ -100,6 +104,8 @@ def _print_sweep(s: Any, speed: float) -> None:
 
 
 def _print_all(rep: Any) -> None:
+    from surfmet.mechanics.viscoelastic_rolling import reaches_offset
+
     c = rep.comparison
     ns, n1, n2 = c.rotor_loads
     a = c.assumptions
@@ -110,20 +116,27 @@ def _print_all(rep: Any) -> None:
           f"{a['hardness'] / 1e9:.3g} GPa, smooth pair")
     for m in c.mechanisms:
         print(f"  {m.name:13s} {m.assumption}")
-    print(f"{'mechanism':>13}{'M_r(Ns) N m':>14}{'lambda':>9}{'95 % CI':>19}"
-          f"{'eps_s-eps_a':>14}")
+    v = rep.verdict
+    o = v.offset
+    print(f"VERDICT            {v.sentence}")
+    print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s2, "
+          f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (joint model of Table 3, "
+          "surfmet rotor paper2022)")
+    print(f"{'mechanism':>13}{'M_r(Ns)':>12}{'M_r(N1)':>12}{'M_r(N2)':>12}{'2nd diff':>12}"
+          f"{'lambda':>9}{'95 % CI':>19}{'eps_s-eps_a':>13}  reaches the offset?")
+    print(f"{'':13}{'N m':>12}{'N m':>12}{'N m':>12}{'N m':>12}")
     for m in c.mechanisms:
         lo_ci, hi_ci = m.sweep.lambda_ci
-        print(f"{m.name:>13}{m.rotor_moments[0]:14.4g}{m.sweep.lambda_eff:9.4f}"
-              f"   [{lo_ci:.4f}, {hi_ci:.4f}]{m.delta_eps:14.3g}")
-    d, se = rep.measured_delta_eps
+        ms, m1, m2 = m.rotor_moments
+        fit = (f"{m.sweep.lambda_eff:9.4f}   [{lo_ci:.4f}, {hi_ci:.4f}]"
+               if m.sweep.fit is not None else f"{'not fitted':>28}")
+        print(f"{m.name:>13}{ms:12.4g}{m1:12.4g}{m2:12.4g}{m1 + m2 - 2 * ms:12.3g}{fit}"
+              f"{m.delta_eps:13.3g}  {'yes' if reaches_offset(m.delta_eps, o) else 'no'}")
     name, factor = c.dominant()
-    print(f"measured (Table 3, constant-acceleration fits): eps_s - eps_a = {d:.3g} "
-          f"+- {se:.2g} rad/s^2")
     print(f"dominant           {name}, {factor:.3g}x the next mechanism")
-    top = max(c.mechanisms, key=lambda m: m.delta_eps)
-    if top.delta_eps > 0:
+    top = max(c.mechanisms, key=lambda m: abs(m.delta_eps))
+    if top.delta_eps:
         print(f"                   the largest implied difference ({top.name}) is "
-              f"{d / top.delta_eps:.3g}x smaller than measured")
+              f"{abs(o.value / top.delta_eps):.3g}x smaller than the verdict's offset")
     for note in rep.notes:
         print(f"note: {note}")

@@ -17,8 +17,14 @@ from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log
-from surfmet.mechanics.rotor_verdict import verdict_figure, verdict_lines, verdict_record
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.rotor_verdict import (
+    table_verdict,
+    verdict_figure,
+    verdict_lines,
+    verdict_plot_path,
+    verdict_record,
+)
 from surfmet.units import quantity
 
 PAPER_ALIAS = "paper2022"
@@ -439,7 +445,12 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(source)
-    verdict = _verdict(args, ks, cols)
+    if args.plot:
+        check_output(verdict_plot_path(args.plot), "--plot (verdict figure)")
+    verdict, notes = table_verdict(ks, cols, paper=args.file == PAPER_ALIAS, fps=args.fps,
+                                   step=math.radians(args.step_deg), rig_path=args.rig)
+    for note in notes:
+        log(f"note: {note}")
     # progress on stderr, unless asked for quiet, or JSON goes to a pipe and stderr is not a
     # terminal (it may be the same pipe)
     show = not getattr(args, "quiet", False) and (not args.json or sys.stderr.isatty())
@@ -456,38 +467,16 @@ def run(args: argparse.Namespace) -> int:
 
         residual_figure(an, path=args.plot)
         log(f"residual figure written to {args.plot}")
-        vpath = _verdict_plot_path(args.plot)
-        verdict_figure(verdict, vpath)
-        log(f"verdict figure written to {vpath}")
+        if verdict is not None:
+            vpath = verdict_plot_path(args.plot)
+            verdict_figure(verdict, vpath)
+            log(f"verdict figure written to {vpath}")
     if args.json:
-        emit_json({"verdict": verdict_record(verdict), **analysis_record(an, source)})
+        emit_json({"verdict": None if verdict is None else verdict_record(verdict),
+                   **analysis_record(an, source)})
     else:
-        print("\n".join(verdict_lines(verdict)))
-        print()
+        if verdict is not None:
+            print("\n".join(verdict_lines(verdict)))
+            print()
         _print_summary(an, source)
     return 0
-
-
-def _verdict_plot_path(plot: str) -> str:
-    p = Path(plot)
-    return str(p.with_name(p.stem + "_verdict" + p.suffix))
-
-
-def _verdict(args: argparse.Namespace, ks: list[int], cols: dict[str, list[float]]) -> Any:
-    """The joint model's verdict (:mod:`surfmet.mechanics.rotor_verdict`): the paper's rig for
-    ``paper2022``, ``--rig`` when given, else groups from the column prefixes and no rig."""
-    from contact.rotor.rig import paper_rig
-    from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict
-
-    if args.plot:
-        check_output(_verdict_plot_path(args.plot), "--plot (verdict figure)")
-    step = math.radians(args.step_deg)
-    if args.rig:
-        return judge(cols, ks, fps=args.fps, step=step, rig=load_rig(args.rig))
-    if args.file == PAPER_ALIAS and args.fps == FPS and step == MARK_STEP:
-        return paper_verdict()
-    rig = paper_rig() if args.file == PAPER_ALIAS else None
-    if rig is None:
-        log("note: no --rig: groups from the column names; the lambda outputs and the "
-            "confounds are left out")
-    return judge(cols, ks, fps=args.fps, step=step, rig=rig)

@@ -1,11 +1,21 @@
-"""``surfmet spectrum FILE``: PSD, Hurst exponent, cut-offs, rms values, GW summits."""
+"""``surfmet spectrum FILE...``: PSD, Hurst exponent, cut-offs, rms values, GW summits; with
+several measurements of one surface, their averaged PSD as Persson's theory takes it."""
 
 from __future__ import annotations
 
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, check_output, emit_json, log, pressure, save_figure
+from surfmet.cli._common import (
+    add_json_flag,
+    add_spikes_argument,
+    check_output,
+    emit_json,
+    log,
+    pressure,
+    save_figure,
+)
+from surfmet.cli.scales import add_measurement_arguments
 
 EPILOG = """examples:
   surfmet spectrum plate.x3p
@@ -17,6 +27,13 @@ A periodic scan (opposite edges match, or --periodic yes) keeps its mean-removed
 and is transformed unwindowed; any other scan loses its plane and is Hann-windowed.
 Slope, curvature, Nayak's alpha and the summit parameters depend on the scan's
 resolution (they grow as the pixel shrinks); h_rms and the Hurst exponent hardly do.
+
+Several FILEs (or a contact.engineering container) are measurements of one surface:
+  surfmet spectrum afm.jpk stylus.csv --tip-radius 20nm --json
+their profile PSD is averaged as `surfmet scales` does, turned into the isotropic PSD, and
+the rms values of the band where it is measured are given with that band, per measurement
+and in all, with the band's summit statistics and, with --materials, its plasticity index
+(--periodic applies to one scan only).
 """
 
 
@@ -40,13 +57,16 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("file", metavar="FILE", help="areal scan file")
+    p.add_argument("files", nargs="+", metavar="FILE",
+                   help="areal scan file; or several measurements of one surface")
     add_periodic_argument(p)
+    add_spikes_argument(p)
     p.add_argument("--materials", metavar="A,B", default=None,
                    help="scan and counter-body materials for the plasticity index")
     p.add_argument("--hardness", type=pressure, metavar="P", default=None,
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--plot", metavar="OUT.png", default=None, help="write the PSD plot")
+    add_measurement_arguments(p, 10)
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
@@ -70,19 +90,23 @@ def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | 
 
 
 def run(args: argparse.Namespace) -> int:
-    import surfmet
-    from surfmet.mechanics.spectrum import prepare, spectrum
+    from surfmet.cli.scales import read_measurements
+    from surfmet.mechanics.spectrum import prepared_scan, spectrum
     from surfmet.records import spectrum_record
 
     check_output(args.plot, "--plot")
-    topo = surfmet.read(args.file)
-    scan, per, level = prepare(topo, periodic_flag(args.periodic))
+    scans = read_measurements(args.files)
+    if len(scans) > 1:
+        return _run_several(args, scans)
+    scan, per, level, preparation = prepared_scan(scans[0], periodic=periodic_flag(args.periodic),
+                                                  spikes=args.spikes)
     e_star = hard = None
     names: list[str] = []
     if args.materials:
         e_star, hard, names = materials_e_star(args.materials, args.hardness)
     s = spectrum(scan, periodic=per, e_star=e_star, hardness=hard)
-    rec = {"file": args.file, "levelling": level, **spectrum_record(s)}
+    rec = {"file": args.files[0], "levelling": level, "scan_preparation": preparation,
+           **spectrum_record(s)}
     if names:
         rec["materials"] = names
         rec["e_star"] = {"value": e_star, "unit": "Pa"}
@@ -98,6 +122,35 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
+    """The averaged PSD of several measurements and the rms values of its band."""
+    from surfmet.cli.scales import print_all_scales
+    from surfmet.mechanics.all_scales import all_scales_spectrum
+    from surfmet.records.all_scales import all_scales_record
+    from surfmet.scale_dependent import analyze_scales
+
+    log(f"{len(scans)} measurements from {len(args.files)} file(s)")
+    e_star = hard = None
+    names: list[str] = []
+    if args.materials:
+        e_star, hard, names = materials_e_star(args.materials, args.hardness)
+    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
+    s = all_scales_spectrum(a)
+    rec = {"files": args.files, **({"materials": names} if names else {}),
+           **all_scales_record(s, e_star=e_star, hardness=hard)}
+    if args.periodic != "auto":
+        rec["notes"].append("--periodic applies to one scan: the averaged PSD is Hann-windowed")
+    if args.plot:
+        from surfmet.plots.spectrum import all_scales_figure
+
+        save_figure(all_scales_figure(s, args.plot), args.plot)
+    if args.json:
+        emit_json(rec)
+        return 0
+    print_all_scales(rec)
+    return 0
+
+
 def _print(rec: dict[str, Any], s: Any) -> None:
     from surfmet.units import format_length, format_quantity
 
@@ -107,6 +160,9 @@ def _print(rec: dict[str, Any], s: Any) -> None:
         return "none" if not q else f"{format_length(2 * math.pi / q)} (q = {q:.4g} rad/m)"
 
     print(f"file  {rec['file']}")
+    prep = rec["scan_preparation"]
+    for note in prep["notes"]:
+        print(f"  scan: {note}")
     print(f"  {'periodic, unwindowed' if s.periodic else 'not periodic, Hann window'}"
           f" (levelling: {rec['levelling']})")
     lo, hi = s.hurst.q_range

@@ -28,6 +28,7 @@ FIGURES = {
     "hertz_check": "hertz_check.png",
     "contact_pressure": "contact_pressure.png",
     "rolling": "rolling.png",
+    "rotor_verdict": "rotor_verdict.png",
     "rotor_law_of_motion": "rotor_law_of_motion.png",
     "rotor_residuals": "rotor_residuals.png",
 }

@@ -114,6 +114,10 @@ def _mechanics(st: _Steps, summary: dict[str, Any], plate: Any, ball: Any,
 def _rotor(st: _Steps, summary: dict[str, Any]) -> None:
     st.start("rotor", "law of motion of the rotor (the paper's Table 3)")
     summary["rotor"], an = rotor_step()
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_figure, verdict_record
+
+    summary["verdict"] = verdict_record(paper_verdict())
+    st.figure("rotor_verdict", lambda p: verdict_figure(paper_verdict(), p))
     st.figure("rotor_law_of_motion", lambda p: fig.law_of_motion(an, p))
     st.figure("rotor_residuals", lambda p: fig.residuals(an, p))
     st.done()

@@ -99,7 +99,9 @@ def _hertz(t: _Text, summary: dict[str, Any]) -> None:
     t.add(f"  Hertz: δ0 = {_um(h['hertz']['delta'])} (paper {_um(h['paper']['delta'])}), "
           f"a0 = {_um(h['hertz']['a'], 1)} (paper {_um(h['paper']['a'], 1)}), p0 = "
           f"{_v(h['hertz']['p0']) / 1e6:.0f} MPa")
-    verdict = "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold"
+    verdict = ("Hertz cannot be judged (the scan's pixel does not resolve the contact)"
+               if h.get("judged") is False else
+               "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold")
     t.add(f"  verdict: {verdict} (α = {_v(h['alpha']):.3g}, σ = {_um(h['sigma'])})")
     for reason in h["reasons"]:
         t.para(f"- {reason}", "    ")
@@ -126,16 +128,33 @@ def _contact(t: _Text, summary: dict[str, Any]) -> None:
 
 def _rolling(t: _Text, summary: dict[str, Any]) -> None:
     ro = summary["rolling"]
+    st = ro["settings"]
     lo, hi = ro["lambda_ci"]["value"]
+    alpha = _v(st["alpha_h"])
+    radius = _v(st["radius"])
     t.head("5. Rolling resistance M_r = s_r N^λ (hysteresis model, one track position)")
     t.add(f"  λ_eff = {_v(ro['lambda_eff']):.3f}, "
-          f"{100 * _v(ro['settings']['confidence']):.0f} % CI [{lo:.3f}, {hi:.3f}]   "
+          f"{100 * _v(st['confidence']):.0f} % CI [{lo:.3f}, {hi:.3f}]   "
           "(smooth Hertz contact: 4/3)")
-    t.add(f"  {'load (N)':>10}{'M_r (N m)':>13}{'local λ':>10}")
+    t.para(f"Assumed: α_h = {alpha:g}, the fraction of the work done on the material that "
+           f"is lost{' (all of it: an upper bound)' if alpha == 1 else ''}. M_r and "
+           "μ_r = M_r/(N R) scale with α_h, λ does not: a measured μ_r divided by the one "
+           "below is the α_h of the pair.", "  ")
+    t.add(f"  {'load (N)':>10}{'M_r (N m)':>13}{'μ_r':>11}{'local λ':>10}"
+          f"   (at α_h = {alpha:g})")
     for w, m, lam in zip(ro["loads"]["value"], ro["moments"]["value"],
                          ro["local_lambda"]["value"]):
         lam_s = f"{lam:10.3f}" if lam is not None else f"{'-':>10}"
-        t.add(f"  {w:10.3g}{m:13.4g}{lam_s}")
+        t.add(f"  {w:10.3g}{m:13.4g}{m / (w * radius):11.3g}{lam_s}")
+    regime = summary.get("contact", {}).get("regime", "")
+    if regime.startswith("plastic"):
+        t.para(f"The hysteresis sweep solves the contact elastically, while section 4 finds "
+               f"it {regime}: the work of plastic flow is not in these moments "
+               "('surfmet rolling --model plastic' counts it).", "  ")
+    prepared = set(st.get("scan_preparation", {}).get("notes", []))
+    for note in st.get("notes", []):
+        if note not in prepared:
+            t.para(f"note: {note}", "  ")
 
 
 def _rotor_parabolas(t: _Text, rt: dict[str, Any]) -> None:
@@ -182,6 +201,25 @@ def _rotor(t: _Text, summary: dict[str, Any]) -> None:
            f"{q_frames:.2f} frame. 'surfmet rotor paper2022' prints the full analysis.", "  ")
 
 
+def _verdict(t: _Text, summary: dict[str, Any]) -> None:
+    """The paper's question first: the rotor verdict (surfmet rotor paper2022 says the same)."""
+    v = summary.get("verdict")
+    if v is None:
+        return
+    t.head("The paper's question: is M_r linear in N? (the rotor verdict)")
+    t.para(v["sentence"], "  ")
+    o = v["group_offset"]
+    t.add(f"  group offset {o['minuend']} - {o['subtrahend']}: {o['value']:+.4f} rad/s², "
+          f"{o['level']:.0%} CI [{o['ci_low']:+.4f}, {o['ci_high']:+.4f}]")
+    lam = v.get("lambda_needed")
+    if lam and lam["value"] is not None:
+        la = v["lambda_assumptions"]
+        t.add(f"  lambda the offset would need at {math.degrees(_v(la['slope'])):.2g}° "
+              f"({la['slope_basis']}): {lam['value']:.3g}; lambda = 4/3 gives at most "
+              f"{_v(la['largest_offset_lambda_4_3']):+.4f} rad/s² there")
+    t.add("  'surfmet rotor paper2022' prints the joint model, the confounds and the tests.")
+
+
 def _files(t: _Text, summary: dict[str, Any]) -> None:
     t.head("Files")
     out = summary.get("out_dir", ".")
@@ -196,6 +234,7 @@ def _files(t: _Text, summary: dict[str, Any]) -> None:
 def story(summary: dict[str, Any]) -> str:
     """The demo's findings as text for a terminal (from the summary alone)."""
     t = _Text()
-    for section in (_scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor, _files):
+    for section in (_verdict, _scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor,
+                    _files):
         section(t, summary)
     return "\n".join(t.lines)

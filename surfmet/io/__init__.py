@@ -53,6 +53,10 @@ FORMAT_MODULES = (
     "hfm",
     "xyz",
     "npy",
+    "jpk",
+    "h5",
+    "zon",
+    "container",
 )
 
 for _mod in FORMAT_MODULES:
@@ -62,6 +66,13 @@ for _mod in FORMAT_MODULES:
         if _exc.name != f"surfmet.io.{_mod}":
             raise
 
+def read_container(path):
+    """Every measurement of a contact.engineering container (see :mod:`surfmet.io.container`)."""
+    from surfmet.io.container import read_container as _read
+
+    return _read(path)
+
+
 __all__ = [
     "FORMAT_MODULES",
     "FormatSpec",
@@ -70,6 +81,7 @@ __all__ = [
     "formats",
     "read",
     "read_bytes",
+    "read_container",
     "register_reader",
     "register_writer",
     "write",

@@ -36,30 +36,36 @@ def _is_surfmet_npz(buf: bytes) -> bool:
     return buf.startswith(ZIP_MAGIC) and b"kind.npy" in buf[-4096:]
 
 
-def _check_header(buf: bytes, name: str) -> None:
-    # np.load trusts the shape in the header; refuse shapes the bytes cannot hold before
-    # numpy tries to allocate them.
+def _check_header(buf: bytes, name: str) -> tuple[tuple[int, ...], bool, np.dtype, int, int]:
+    """(shape, fortran order, dtype, count, data offset) of a .npy header.
+
+    np.load trusts the shape in the header; shapes the bytes cannot hold are refused here,
+    before numpy tries to allocate them."""
     try:
         f = io.BytesIO(buf)
         version = np.lib.format.read_magic(f)
         if version == (1, 0):
-            shape, _, dtype = np.lib.format.read_array_header_1_0(f)
+            shape, fortran, dtype = np.lib.format.read_array_header_1_0(f)
         else:
-            shape, _, dtype = np.lib.format.read_array_header_2_0(f)
+            shape, fortran, dtype = np.lib.format.read_array_header_2_0(f)
     except Exception as exc:
         raise format_error(name, "npy", f"unreadable header ({exc})") from None
     count = int(np.prod(shape, dtype=np.int64)) if shape else 1
-    if count > MAX_POINTS or count * dtype.itemsize > len(buf):
+    if count > MAX_POINTS or count * dtype.itemsize > len(buf) - f.tell():
         raise format_error(
             name, "npy", f"truncated: header says shape {shape} but the file has {len(buf)} bytes"
         )
+    return shape, bool(fortran), dtype, count, f.tell()
 
 
 def _load_npy(buf: bytes, name: str) -> np.ndarray:
-    _check_header(buf, name)
-    arr = np.load(io.BytesIO(buf), allow_pickle=False)
-    if arr.dtype.kind not in "fiub":
-        raise format_error(name, "npy", f"heights must be numeric, got {arr.dtype}")
+    shape, fortran, dtype, count, offset = _check_header(buf, name)
+    if dtype.kind not in "fiub" or dtype.hasobject:
+        raise format_error(name, "npy", f"heights must be numeric, got {dtype}")
+    # a view of the file's bytes, not np.load's copy of them: reading holds the bytes and
+    # the float64 heights, never a third copy
+    flat = np.frombuffer(buf, dtype=dtype, count=count, offset=offset)
+    arr = flat.reshape(shape, order="F" if fortran else "C")
     return arr.astype(np.float64)
 
 
@@ -68,7 +74,11 @@ def _load_npy(buf: bytes, name: str) -> np.ndarray:
 def decode_npy(buf: bytes, name: str, dx: float | None = None, dy: float | None = None,
                height_unit: str = "m") -> Topography | Profile:
     """Read a bare NumPy array: 2D becomes a Topography, 1D a Profile."""
-    z = _load_npy(buf, name) * length_factor(height_unit)
+    z = _load_npy(buf, name)
+    factor = length_factor(height_unit)
+    if factor != 1.0:
+        z *= factor  # in place: the heights are the one copy a read makes
+    z.flags.writeable = False  # the model keeps a read-only float64 array as it is
     md: dict[str, Any] = {"height_unit": height_unit, "lateral_calibrated": dx is not None}
     if z.ndim == 2:
         sx = 1.0 if dx is None else float(dx)

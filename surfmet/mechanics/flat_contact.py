@@ -28,7 +28,7 @@ import numpy as np
 from contact.roughcontact import ModelCurve
 from contact.setups.flat import FlatContact
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
+from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
 
@@ -43,6 +43,7 @@ class FlatContactReport:
     levelling: str
     settings: dict[str, Any] = field(default_factory=dict)
     preparation: dict[str, Any] = field(default_factory=dict)
+    caveats: tuple[str, ...] = ()
 
     @property
     def periodic(self) -> bool:
@@ -80,7 +81,8 @@ def parse_pressures(text: str) -> np.ndarray:
 def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
                  stiffness: str = "curve", progress: Any = None,
-                 spikes: Any = SPIKES) -> FlatContactReport:
+                 spikes: Any = SPIKES, material_hardness: float | None = None
+                 ) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -100,6 +102,13 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     spikes : {"remove", "keep"} or bool
         The scan's spikes, removed by default; non-measured points are filled with the
         nearest measured value (:func:`surfmet.mechanics.scan_preparation.prepare_flat`).
+    material_hardness : float, optional
+        The softer body's hardness (Pa) when the BEM stays elastic: a nominal pressure
+        above it (or above ``hardness``) gets a caveat, since the whole nominal area
+        would flow there and no elastic theory holds.
+
+    A scan dominated by a curved form (a ball's cap) has its second-order surface removed,
+    and a caveat says so (:func:`surfmet.mechanics.spectrum.prepare`).
 
     Raises
     ------
@@ -109,14 +118,13 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     from contact.errors import ContactInputError
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
     from contact.setups.flat import flat_contact as bem_sweep
-    from surfmet.mechanics.spectrum import prepare, spectrum
+    from surfmet.mechanics.spectrum import prepared_scan, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
-    topo, preparation = prepare_flat(topo, spikes=spikes)
-    scan, per, level = prepare(topo, periodic)
+    scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
     spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
                     hardness=hardness)
     try:
@@ -131,30 +139,54 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         }
     except ContactInputError as exc:
         raise SurfmetInputError(str(exc)) from None
+    form = (("a curved form dominated the plane-levelled scan: its second-order surface "
+             "was removed (levelling poly:2), so this is the contact of its texture on a "
+             "flat; for the curved body itself use contact or hertz-check",)
+            if level == "poly:2" else ())
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
-                             settings={"pressures": p.tolist()}, preparation=preparation)
+                             settings={"pressures": p.tolist()}, preparation=preparation,
+                             caveats=form + _yield_caveats(p, hardness or material_hardness))
 
 
-def plot(rep: FlatContactReport, path: Any = None) -> Any:
-    """A/A0 and ū against p for the BEM and the three theories."""
+def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:
+    """A nominal pressure at or above the hardness: the nominal area flows (Tabor)."""
+    if hardness is None or not np.any(p >= hardness):
+        return ()
+    over = ", ".join(f"{v / 1e6:.4g} MPa" for v in p[p >= hardness])
+    return (f"nominal pressure {over} at or above the hardness H = {hardness / 1e6:.4g} MPa: "
+            "the whole nominal area would flow, so the contact is fully plastic and none of "
+            "the elastic theories (nor an elastic BEM) describes it",)
+
+
+def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve | None = None
+         ) -> Any:
+    """A/A0 and ū against p for the BEM and the three theories, and Persson's theory from
+    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone."""
     from surfmet.plots._style import finish, new_figure
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
-    p = np.asarray(rep.bem.pressure) / 1e6  # MPa, as every surfmet figure
-    a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
-    a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
-              label="BEM, perimeter-corrected")
-    a2.semilogx(p, rep.bem.mean_gap * 1e6, "ko-", label="BEM")
-    styles = {"persson": "C0", "gw": "C1", "bgt": "C2"}
-    for name, m in rep.models.items():
-        a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
-        if m.mean_gap is not None:
-            a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+    if rep is not None:
+        p = np.asarray(rep.bem.pressure) / 1e6  # MPa, as every surfmet figure
+        a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
+        a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
+                  label="BEM, perimeter-corrected")
+        a2.semilogx(p, rep.bem.mean_gap * 1e6, "ko-", label="BEM")
+        styles = {"persson": "C0", "gw": "C1", "bgt": "C2"}
+        for name, m in rep.models.items():
+            a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
+            if m.mean_gap is not None:
+                a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+        a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
+    if all_scales is not None:
+        ps = np.asarray(all_scales.pressure) / 1e6
+        a1.loglog(ps, all_scales.area_fraction, "s:", color="C3",
+                  label="PERSSON, all scales")
+        a2.semilogx(ps, all_scales.mean_gap * 1e6, "s:", color="C3",
+                    label="PERSSON, all scales")
     a1.set_xlabel("nominal pressure p (MPa)")
     a1.set_ylabel("A/A0")
     a2.set_xlabel("nominal pressure p (MPa)")
     a2.set_ylabel("mean gap ū (µm)")
-    a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     for ax in (a1, a2):
         ax.legend(fontsize=8)
     return finish(fig, path)

@@ -13,22 +13,25 @@ plate, best-fit sphere for the ball), over the whole scan: non-measured points n
 count nor are replaced by anything in sigma (the contact solver sees them filled with the
 nearest measured value, which the notes report).
 
-``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``alpha``, ``sigma``,
-``hertz`` {a, delta, p0}, ``bem`` {pmax, contact_radius, approach, area_fraction,
-plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and (issue 11) ``models``
-{hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``contact_radius``,
+``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``judged`` (false: the scan's pixel
+does not resolve the contact, no verdict), ``alpha``, ``sigma``,
+``hertz`` {a, delta, p0}, ``bem`` {pmax, effective_radius, contact_radius, approach,
+area_fraction, plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz},
+and (issue 11) ``models``
+{hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
 tolerance, :mod:`contact.roughcontact.hierarchy`) and ``summits`` (the combined spectral
 summit parameters; absent for smooth scans); every
 dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 ``plastic_fraction`` are fractions of the nominal Hertz area pi a0^2;
-``contact_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`).
+``effective_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`;
+``contact_radius`` is sqrt(A_real/pi), the same quantity under the same name as in
+``surfmet contact``).
 """
 
 from __future__ import annotations
 
-import contextlib
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -102,10 +105,13 @@ class HertzCheck:
     def warnings(self) -> list[str]:
         """A grid too coarse for the contact (fewer cells per Hertz radius than
         :data:`surfmet.mechanics.ball_contact.MIN_CELLS_PER_RADIUS`): the verdict rests
-        on an unresolved solution."""
+        on an unresolved solution; a scan whose pixel does not resolve the contact
+        (:data:`contact.hertzcheck.MIN_SCAN_PIXELS_PER_RADIUS`): no verdict."""
         from surfmet.mechanics.ball_contact import grid_warnings
 
-        return grid_warnings(self.result)
+        c = self.comparison
+        scan = [] if c.judged else [c.criterion("resolution").reason]
+        return [*scan, *grid_warnings(self.result)]
 
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
@@ -210,8 +216,8 @@ def hertz_check(
                                   hardness=hardness)
     if summits is None:
         notes.append("no usable roughness spectrum: Greenwood-Tripp not evaluated")
-    elif len(hierarchy.models) < (4 if hardness is not None else 3):
-        notes.append("a Greenwood-Tripp solve did not converge: left out of the models")
+    notes += [f"{name} left out of the models: {why}"
+              for name, why in hierarchy.left_out.items()]
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
@@ -247,20 +253,23 @@ def scan_summits(prep: PreparedScans) -> Any:
 def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
                       e_star: float, hardness: float | None) -> Any:
     """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
-    from contact.errors import ConvergenceError
+    from contact.errors import ContactInputError, ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy
 
     extended: dict[str, Any] = {}
+    left_out: dict[str, str] = {}
     if summits is not None:
         kw = dict(sigma_s=summits.sigma_s, density=summits.density,
                   summit_radius=summits.radius)
-        # a model that cannot be solved is left out of the hierarchy, not fatal to the check
-        with contextlib.suppress(ConvergenceError):
-            extended["greenwood_tripp"] = greenwood_tripp(load, radius, e_star, **kw)
-        if hardness is not None:
-            with contextlib.suppress(ConvergenceError):
-                extended["greenwood_tripp_plastic"] = greenwood_tripp(
-                    load, radius, e_star, hardness=hardness, **kw)
+        # a model that cannot be solved is left out of the hierarchy with its reason, not
+        # fatal to the check
+        for name, h in (("greenwood_tripp", None), ("greenwood_tripp_plastic", hardness)):
+            if name.endswith("plastic") and hardness is None:
+                continue
+            try:
+                extended[name] = greenwood_tripp(load, radius, e_star, hardness=h, **kw)
+            except (ConvergenceError, ContactInputError) as exc:
+                left_out[name] = str(exc)
     ref = check.plastic if check.plastic is not None else check.elastic
-    return model_hierarchy(check.comparison, ref, extended)
+    return model_hierarchy(check.comparison, ref, extended, left_out)

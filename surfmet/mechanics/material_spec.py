@@ -32,10 +32,23 @@ def poisson_ratio(value: str) -> float:
         raise SurfmetInputError(f"Poisson's ratio {value!r} is not a number") from None
 
 
+def material_constant(value: str, what: str) -> float:
+    """A modulus or hardness (Pa) from an option's text, with its unit required: ``E=200``
+    meant as GPa would otherwise be read as 200 Pa, a body 1e9 times too soft. No range is
+    imposed (a gel's kPa and a "rigid" ball's 1e24 Pa are both legitimate inputs)."""
+    try:
+        return parse_pressure(value, unit_required=True)
+    except SurfmetInputError as exc:
+        raise SurfmetInputError(f"{what}: {exc}") from None
+
+
 def parse_material(text: str) -> Any:
     """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact.materials.Material`.
 
-    ``E`` and ``H`` take pressure units (``200GPa``, ``1.1GPa``; a bare number is Pa).
+    ``E`` and ``H`` take pressure units (``200GPa``, ``1.1GPa``); a bare number is
+    refused. A name that is
+    not in the table is a custom material when ``E`` and ``nu`` are both given
+    (:func:`contact.materials.material`).
     """
     from contact.materials import material
 
@@ -43,11 +56,11 @@ def parse_material(text: str) -> Any:
     kw: dict[str, float] = {}
     for key, value in spec_options(opts, "material"):
         if key == "e":
-            kw["E"] = parse_pressure(value)
+            kw["E"] = material_constant(value, f"{name}: E")
         elif key in ("nu", "poisson"):
             kw["nu"] = poisson_ratio(value)
         elif key in ("h", "hardness"):
-            kw["hardness"] = parse_pressure(value)
+            kw["hardness"] = material_constant(value, f"{name}: H")
         else:
             raise SurfmetInputError(f"unknown material option {key!r}: use E, nu or H")
     return material(name, **kw)

@@ -16,8 +16,8 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
-__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "verdict_figure",
-           "verdict_lines", "verdict_record"]
+__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "table_verdict",
+           "verdict_figure", "verdict_lines", "verdict_plot_path", "verdict_record"]
 
 
 def load_rig(path: str | Path) -> Any:
@@ -76,28 +76,44 @@ def paper_verdict() -> Any:
 
 
 def offset_record(v: Any) -> dict[str, Any]:
+    """The group offset as an interval quantity (the one JSON form every entry point uses)."""
     o = v.offset
     return {"value": o.value, "unit": "rad/s²", "ci_low": o.ci_low, "ci_high": o.ci_high,
-            "level": o.level, "minuend": o.minuend, "subtrahend": o.subtrahend,
-            "stderr": quantity(o.stderr, "rad/s²"), "dof": o.dof,
-            "launch_sd": quantity(o.launch_sd, "rad/s²")}
+            "level": o.level, "minuend": o.minuend, "subtrahend": o.subtrahend}
 
 
-def verdict_record(v: Any) -> dict[str, Any]:
-    """The JSON ``verdict`` object (the issue's schema, every value with its unit)."""
+def _calibration_record() -> dict[str, Any]:
     from contact.rotor.verdict import calibration
 
     cal = calibration()
+    st, ot = cal["shared_track_test"], cal["offset_test"]
+    return {
+        "tables": cal["tables"], "generated_by": cal["generated_by"],
+        "shared_track_false_alarm": quantity(st["false_alarm_held_out"], ""),
+        "shared_track_power_group_specific_tracks": quantity(st["power_group_specific_tracks"],
+                                                             ""),
+        "difference_false_alarm_zero_offset": quantity(ot["false_alarm_zero_offset"], ""),
+        "difference_rate_lambda_4_3": quantity(ot["difference_rate_lambda_4_3"], ""),
+        "difference_power_by_offset": [
+            {"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s²"), "tables": r["n"],
+             "rate": quantity(r["rate"], "")} for r in ot["power_by_offset"]],
+    }
+
+
+def verdict_record(v: Any) -> dict[str, Any]:
+    """The JSON ``verdict`` object: every value a quantity with its unit (the group offset
+    and the exponent as interval quantities)."""
+    o = v.offset
     rec: dict[str, Any] = {
         "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
-        "shared_track": {"adequate": v.shared_track_adequate, "p_value": v.shared_track_p,
-                         "f_statistic": v.f_statistic, "f_critical": v.f_critical,
-                         "track_degree": v.shared.layout.degree,
-                         "false_alarm_rate": cal["shared_track_test"]["false_alarm_held_out"],
-                         "power_group_specific_tracks":
-                             cal["shared_track_test"]["power_group_specific_tracks"]},
-        "offset_test": {"false_alarm_zero_offset": cal["offset_test"]["false_alarm_zero_offset"],
-                        "power_by_offset": cal["offset_test"]["power_by_offset"]},
+        "group_offset_stderr": quantity(o.stderr, "rad/s²"), "dof": o.dof,
+        "launch_sd": quantity(o.launch_sd, "rad/s²"),
+        "shared_track": {"adequate": v.shared_track_adequate,
+                         "p_value": quantity(v.shared_track_p, ""),
+                         "f_statistic": quantity(v.f_statistic, ""),
+                         "f_critical": quantity(v.f_critical, ""),
+                         "track_degree": v.shared.layout.degree},
+        "calibration": _calibration_record(),
         "mean_acceleration": quantity(v.mean_acceleration, "rad/s²"),
         "misread_rows": [{"column": c, "k": k} for c, k in v.misread_rows],
         "lambda_needed": None, "launches_needed": None, "confounds": [],
@@ -110,23 +126,29 @@ def verdict_record(v: Any) -> dict[str, Any]:
             "at_release": quantity(d.start, "rad/s²"), "at_last_mark": quantity(d.end, "rad/s²"),
             "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")} for a, b in d.regions]}
     e = v.exponent
-    if e is not None:
-        rec["lambda_needed"] = {
-            "value": e.value, "ci_low": e.ci_low, "ci_high": e.ci_high, "unit": "",
-            "slope": quantity(e.slope, "rad"), "slope_basis": e.slope_basis,
-            "slope_lower_bound": quantity(e.slope_lower_bound, "rad"),
-            "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s²")}
-        rec["launches_needed"] = {"value": e.launches, "unit": "launches per group",
-                                  "to_tell": "lambda 4/3 from 1", "power": 0.9, "alpha": 0.02}
-        rec["confounds"] = [{"name": c.name,
-                             "equivalent_acceleration": quantity(c.equivalent_acceleration,
-                                                                 "rad/s²"),
-                             "can_explain": c.can_explain, "formula": c.formula,
-                             "assumption": c.assumption, "source": c.source}
-                            for c in v.confounds]
-    else:
+    if e is None:
         rec["note"] = "no rig: the lambda outputs and the confounds need --rig RIG.json"
+        return rec
+    rec["lambda_needed"] = {"value": e.value, "unit": "", "ci_low": e.ci_low,
+                            "ci_high": e.ci_high, "level": o.level}
+    rec["lambda_assumptions"] = {
+        "slope": quantity(e.slope, "rad"), "slope_basis": e.slope_basis,
+        "slope_lower_bound": quantity(e.slope_lower_bound, "rad"),
+        "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s²")}
+    rec["launches_needed"] = quantity(e.launches, "launches per group")
+    rec["launches_needed_for"] = "lambda 4/3 told from 1 with 90 % power at 2 % (two-sided)"
+    rec["confounds"] = [{"name": c.name,
+                         "equivalent_acceleration": quantity(c.equivalent_acceleration, "rad/s²"),
+                         "can_explain": c.can_explain, "formula": c.formula,
+                         "assumption": c.assumption, "source": c.source}
+                        for c in v.confounds]
     return rec
+
+
+def _p_floor() -> float:
+    from contact.rotor.verdict import calibration
+
+    return 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
 
 
 def verdict_lines(v: Any) -> list[str]:
@@ -138,7 +160,8 @@ def verdict_lines(v: Any) -> list[str]:
              f"{o.launch_sd:.4f} rad/s2, t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
-             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g}"]
+             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g} "
+             f"(the smallest it can resolve: {_p_floor():.2g})"]
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
@@ -158,6 +181,35 @@ def verdict_lines(v: Any) -> list[str]:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
     return lines
+
+
+def verdict_plot_path(plot: str | Path) -> str:
+    """Where ``--plot PATH`` puts the verdict's figure: ``PATH_verdict`` beside it."""
+    p = Path(plot)
+    return str(p.with_name(p.stem + "_verdict" + p.suffix))
+
+
+def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, paper: bool,
+                  fps: float, step: float, rig_path: str | None = None
+                  ) -> tuple[Any, list[str]]:
+    """The verdict ``surfmet rotor`` prints, and notes: the paper's rig for the paper's table,
+    the rig file when given, else groups from the column prefixes and no rig (None when such
+    a table has no two groups of two launches: the per-launch analysis still stands)."""
+    from contact.rotor.paper import FPS, MARK_STEP
+    from contact.rotor.rig import paper_rig
+
+    if rig_path:
+        return judge(cols, ks, fps=fps, step=step, rig=load_rig(rig_path)), []
+    if paper:
+        if fps == FPS and step == MARK_STEP:
+            return paper_verdict(), []
+        return judge(cols, ks, fps=fps, step=step, rig=paper_rig()), []
+    notes = ["no --rig: groups from the column names; the lambda outputs and the confounds "
+             "are left out"]
+    try:
+        return judge(cols, ks, fps=fps, step=step), notes
+    except SurfmetInputError as exc:
+        return None, [*notes, f"no verdict: {exc}"]
 
 
 def verdict_figure(v: Any, path: str | Path) -> None:

@@ -190,7 +190,7 @@ def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[s
     scan = read_areal(topo, "scan")
     if not np.isfinite(scan.heights).any():
         raise SurfmetInputError("the scan has no measured point")
-    scan, count, note = clean_spikes(scan, "scan", mode)
+    scan, count, note = clean_spikes(scan, "areal", mode)
     notes = [note] if note else []
     z, filled = fill_nearest(np.asarray(scan.heights, dtype=float))
     frac = float(filled.mean())

@@ -48,6 +48,13 @@ RESOLUTION_DEPENDENT = ("slope_rms", "curvature_rms", "nayak_alpha", "summit_den
 
 #: Minimum change of log-log slope for a knot to count as a cut-off.
 _KNOT_MIN = 1.0
+#: A Hurst exponent fitted over fewer decades of wavevector than this is not a measured
+#: self-affine range (a power law needs at least a decade to be told from a bend).
+MIN_HURST_DECADES = 1.0
+#: Largest relative difference between the spectral and the real-space h_rms before the
+#: spectrum is said not to represent the scan's heights (the spectral moments and summit
+#: values then rest on a window or a form, not on the surface).
+H_RMS_TOLERANCE = 0.25
 
 
 @dataclass(frozen=True, eq=False)
@@ -313,7 +320,8 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
 
     settings = {"window": spec.settings.get("window"), "periodic_detected": detected,
                 "dx": topo.dx, "dy": topo.dy, "nx": topo.nx, "ny": topo.ny,
-                "caveats": unit_caveats(topo.metadata)}
+                "caveats": [*unit_caveats(topo.metadata),
+                            *spectrum_caveats(hfit, summits.h_rms, h_r)]}
     return Spectrum(psd=spec, periodic=per, hurst=hfit, roll_off=roll, short_cutoff=short,
                     h_rms=summits.h_rms, slope_rms=summits.slope_rms,
                     curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,
@@ -321,11 +329,28 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
                     settings=settings, noise_floor=floor)
 
 
+def prepared_scan(topo: Any, *, periodic: bool | None = None, spikes: Any = None
+                  ) -> tuple[Topography, bool, str, dict[str, Any]]:
+    """The shared scan preparation for a spectrum or a flat contact: spikes removed (by
+    default) and non-measured points filled as every contact command does
+    (:func:`surfmet.mechanics.scan_preparation.prepare_flat`), then levelled
+    (:func:`prepare`). Returns (scan, periodic, levelling, preparation record)."""
+    from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
+
+    scan, record = prepare_flat(topo, spikes=SPIKES if spikes is None else spikes)
+    out, per, level = prepare(scan, periodic)
+    record["levelling"] = level
+    return out, per, level, record
+
+
 def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography, bool, str]:
     """Level a scan for spectral or contact analysis: (scan, periodic, levelling).
 
     A periodic scan (detected on the raw heights, or declared) only loses its mean, since a
-    fitted plane would break its periodicity; any other scan loses its least-squares plane.
+    fitted plane would break its periodicity; any other scan loses its least-squares plane,
+    or its second-order surface when a curved form dominates what the plane leaves
+    (:func:`surfmet.areal.form.dominant_form`: a ball's cap is form, not roughness; the
+    levelling is then ``"poly:2"``).
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"an areal scan is needed, got "
@@ -335,11 +360,37 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
         z = np.asarray(topo.heights, float)
         out, how = Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), "mean"
     else:
-        from surfmet.areal.form import remove_form
+        from surfmet.areal.form import dominant_form, remove_form
 
-        out, how = remove_form(topo, "plane")[0], "plane"
+        out, fit = remove_form(topo, "plane")
+        how = "plane"
+        if dominant_form(topo, fit):
+            out, how = remove_form(topo, "poly:2")[0], "poly:2"
     # what levelling leaves of constant or planar heights is rounding (1e-16 of them)
     if not np.nanmax(np.abs(out.heights)) > 1e-12 * np.nanmax(np.abs(topo.heights)):
         raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"
                                 "): it has no roughness")
     return out, per, how
+
+
+def spectrum_caveats(hfit: HurstFit, h_rms: float, h_rms_real: float) -> list[str]:
+    """What makes a spectrum's numbers doubtful: a Hurst exponent fitted over less than
+    :data:`MIN_HURST_DECADES`, or a spectral h_rms more than :data:`H_RMS_TOLERANCE` away
+    from the real-space one."""
+    from surfmet.units import format_length
+
+    out = []
+    lo, hi = hfit.q_range
+    decades = math.log10(hi / lo) if lo > 0 and hi > lo else 0.0
+    if decades < MIN_HURST_DECADES:
+        out.append(f"the Hurst exponent H = {hfit.hurst:.3g} is fitted over {decades:.2g} "
+                   f"decades of wavevector only (q = {lo:.4g}..{hi:.4g} rad/m; at least "
+                   f"{MIN_HURST_DECADES:g} needed to tell a power law from a bend): it is not "
+                   "a measured self-affine exponent")
+    if h_rms_real > 0 and abs(h_rms / h_rms_real - 1.0) > H_RMS_TOLERANCE:
+        out.append(f"h_rms from the spectrum ({format_length(h_rms)}) is "
+                   f"{h_rms / h_rms_real:.2g} x the real-space value "
+                   f"({format_length(h_rms_real)}): the spectrum does not represent this "
+                   "scan's heights (a window or a residual form dominates it), so its "
+                   "moments, summits and plasticity index are unreliable")
+    return out

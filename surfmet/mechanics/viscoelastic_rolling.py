@@ -24,8 +24,8 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.material_spec import poisson_ratio, spec_options
-from surfmet.units import parse_pressure, quantity
+from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
+from surfmet.units import quantity
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
 
@@ -62,7 +62,7 @@ def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
     kw: dict[str, float] = {}
     for key, value in spec_options(opts, "viscoelastic"):
         if key in ("eg", "er"):
-            kw[key] = parse_pressure(value)
+            kw[key] = material_constant(value, f"{body}: {key}")
         elif key in ("tau", "tau_c", "tc"):
             kw["tau"] = _parse_time(value)
         elif key == "nu":
@@ -148,39 +148,26 @@ def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
                               tuple(notes))
 
 
-def table3_accelerations() -> dict[str, float]:
-    """Constant-acceleration eps (rad/s^2) of each Table 3 column, parabola fits."""
-    from contact.rotor.frames import table3
-    from contact.rotor.paper import FPS, MARK_STEP
-
-    out = {}
-    for name, frames in table3().items():
-        f = np.asarray(frames, dtype=float)
-        t = (f - f[0]) / FPS
-        phi = np.arange(f.size) * MARK_STEP
-        out[name] = float(2.0 * np.polyfit(t, phi, 2)[0])
-    return out
-
-
 @dataclass(frozen=True, eq=False)
 class MechanismsReport:
     """Mechanisms side by side with what Table 3 measures (``--model all``)."""
 
     comparison: Any
-    measured: dict[str, float]
+    verdict: Any
     notes: tuple[str, ...] = field(default=())
 
     @property
-    def measured_delta_eps(self) -> tuple[float, float]:
-        """(mean eps_s - mean eps_a, its standard error) from Table 3 (rad/s^2)."""
-        s = np.array([v for k, v in self.measured.items() if k.startswith("s")])
-        a = np.array([v for k, v in self.measured.items() if k.startswith("as")])
-        se = math.sqrt(s.var(ddof=1) / s.size + a.var(ddof=1) / a.size)
-        return float(s.mean() - a.mean()), se
+    def group_offset(self) -> tuple[float, float, float]:
+        """The rotor verdict's group offset ``eps_s - eps_as`` and its interval (rad/s²):
+        the joint model of Table 3 (:func:`surfmet.mechanics.rotor_verdict.paper_verdict`),
+        never a constant-acceleration fit."""
+        o = self.verdict.offset
+        return o.value, o.ci_low, o.ci_high
 
     def to_json(self) -> dict[str, Any]:
+        from surfmet.mechanics.rotor_verdict import offset_record
+
         c = self.comparison
-        d, se = self.measured_delta_eps
         name, factor = c.dominant()
         rows = {}
         for m in c.mechanisms:
@@ -191,16 +178,18 @@ class MechanismsReport:
                 "local_lambda_rotor": quantity(m.local_lambda, ""),
                 "sweep_loads": quantity(m.sweep.loads, "N"),
                 "sweep_moments": quantity(m.sweep.moments, "N m"),
+                "raw_second_difference": quantity(
+                    m.rotor_moments[1] + m.rotor_moments[2] - 2 * m.rotor_moments[0], "N m"),
                 "delta_eps": quantity(m.delta_eps, "rad/s^2"),
+                "can_explain_offset": bool(reaches_offset(m.delta_eps, self.verdict.offset)),
                 "assumption": m.assumption,
             }
         return {"model": "all", "mechanisms": rows,
                 "rotor_loads": quantity(list(c.rotor_loads), "N"),
                 "rolling_inertia": quantity(c.rolling_inertia, "kg m^2"),
                 "dominant": name, "dominant_factor": quantity(factor, ""),
-                "measured_delta_eps": quantity(d, "rad/s^2"),
-                "measured_delta_eps_se": quantity(se, "rad/s^2"),
-                "measured_eps": quantity(self.measured, "rad/s^2"),
+                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence},
+                "group_offset": offset_record(self.verdict),
                 "assumptions": {k: quantity(v, _UNITS.get(k, "")) for k, v in
                                 c.assumptions.items()},
                 "notes": list(self.notes)}
@@ -263,7 +252,17 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
                               rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
                               hardness=hardness, grid=grid, microslip=ms)
     notes = () if mu is not None else ("micro-slip left out (no friction coefficient)",)
-    return MechanismsReport(comp, table3_accelerations(), notes)
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+
+    return MechanismsReport(comp, paper_verdict(), notes)
+
+
+def reaches_offset(delta_eps: float, offset: Any) -> bool:
+    """Whether an implied offset reaches the smallest one the verdict's interval allows."""
+    if offset.ci_low <= 0.0 <= offset.ci_high:
+        return abs(delta_eps) >= abs(offset.value)
+    return abs(delta_eps) >= min(abs(offset.ci_low), abs(offset.ci_high)) and \
+        math.copysign(1.0, delta_eps) == math.copysign(1.0, offset.value)
 
 
 def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
@@ -336,7 +335,9 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         from surfmet.mechanics.scan_preparation import prepare_scans
 
         pair = prepare_scans(plate, ball, spikes=spikes).pair
-        half = 1.6 * (3.0 * load * radius * creep.relaxed / 4.0) ** (1.0 / 3.0)
+        from contact.viscoelastic.window import sphere_window
+
+        half = sphere_window(load, radius, creep.relaxed)
         z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
     res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
     if mu is None:

@@ -42,8 +42,7 @@ def hertz_check_figure(check: Any, path: str | Path | None = None, *,
     radial_pressure(prof.r, prof.p, prof.p_hertz, comp.hertz.a, ax=ax_prof,
                     normalise=normalise,
                     title=f"azimuthal average about the apex (α = {comp.alpha:.3g})")
-    verdict = "Hertz holds" if comp.hertz_holds else "Hertz does not hold"
-    fig.suptitle(f"{verdict} at W = {res.load:.4g} N", fontsize=12)
+    fig.suptitle(f"{comp.headline} at W = {res.load:.4g} N", fontsize=12)
     return finish(fig, path)
 
 
@@ -60,7 +59,10 @@ def rolling_figure(sweeps: Any, path: str | Path | None = None, *,
     items = list(sweeps) if isinstance(sweeps, (list, tuple)) else [sweeps]
     if not items or not all(hasattr(s, "moments") and hasattr(s, "loads") for s in items):
         raise SurfmetInputError("rolling_figure needs contact.rolling.RollingSweep results")
-    labels = labels or [s.model for s in items]
+    # the hysteresis moments scale with the assumed loss fraction: the label says which
+    labels = labels or [s.model + (f" (α_h = {s.settings['alpha_h']:g})"
+                                   if s.settings.get("alpha_h") is not None else "")
+                        for s in items]
     fig, (ax, ax_l) = new_figure(1, 2, size=(11.0, 4.4))
     for k, (s, lab) in enumerate(zip(items, labels)):
         pos = s.moments > 0

@@ -56,3 +56,24 @@ def spectrum_figure(s: Any, path: str | Path | None = None) -> Any:
     ax.set_title("periodic, unwindowed" if s.periodic else "Hann-windowed", fontsize=10)
     ax.legend(fontsize=8)
     return finish(fig, path)
+
+
+def all_scales_figure(s: Any, path: str | Path | None = None) -> Any:
+    """Two log–log panels of an :class:`surfmet.mechanics.all_scales.AllScalesSpectrum`:
+    each measurement's profile PSD where it contributes and their average (left), the
+    isotropic PSD derived from the average over the measured band (right)."""
+    fig, (a1, a2) = new_figure(1, 2, size=(11.0, 4.4))
+    a = s.analysis
+    for m in a.measurements:
+        a1.loglog(a.q * UM, m.psd / UM**3, ".-", lw=1, ms=3, label=Path(m.file).name)
+    a1.loglog(a.q * UM, a.psd / UM**3, "k--", lw=1.5, label="average")
+    a1.set_ylabel(r"PSD $C^{1\mathrm{D}}(q)$ (µm$^3$)")
+    a2.loglog(s.q * UM, s.c_iso / UM**4, "k-", lw=1.5,
+              label="from the average (inverse Abel transform)")
+    a2.set_ylabel(C_ISO_LABEL)
+    for ax in (a1, a2):
+        ax.set_xlabel(Q_LABEL)
+        ax.axvspan(s.band[0] * UM, s.band[1] * UM, color="0.93", zorder=0)
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=8)
+    return finish(fig, path)

@@ -5,7 +5,9 @@ Every dimensional value is ``{"value": v, "unit": "..."}`` (dimensionless ratios
 of result: :mod:`~surfmet.records.scans` (scans and form fits),
 :mod:`~surfmet.records.contact` (a ball-on-plate contact solve),
 :mod:`~surfmet.records.hertz` (the Hertz check), :mod:`~surfmet.records.rolling`,
-:mod:`~surfmet.records.flat` (flat rough contact), :mod:`~surfmet.records.spectrum` and
+:mod:`~surfmet.records.flat` (flat rough contact), :mod:`~surfmet.records.spectrum`,
+:mod:`~surfmet.records.scales` (scale-dependent statistics of several measurements),
+:mod:`~surfmet.records.all_scales` (their averaged PSD for Persson's theory) and
 :mod:`~surfmet.records.resolution` (resolution studies).
 """
 

@@ -66,7 +66,7 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
         "hardness": quantity(bem.hardness, "Pa"),
         "spectrum": srec,
         "scan_preparation": rep.preparation,
-        "caveats": srec["caveats"],
+        "caveats": [*srec["caveats"], *rep.caveats],
         "results": results,
         "notes": [
             *bem.notes,

@@ -18,12 +18,14 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
     prof = c.profile
     return {
         "hertz_holds": bool(c.hertz_holds),
+        "judged": bool(c.judged),
         "alpha": _q(c.alpha, ""),
         "sigma": _q(c.sigma, "m"),
         "hertz": {"a": _q(hz.a, "m"), "delta": _q(hz.delta, "m"), "p0": _q(hz.p0, "Pa")},
         "bem": {
             "pmax": _q(c.pmax, "Pa"),
-            "contact_radius": _q(c.contact_radius, "m"),
+            "effective_radius": _q(c.effective_radius, "m"),
+            "contact_radius": _q(check.result.contact_radius, "m"),
             "approach": _q(c.approach, "m"),
             "area_fraction": _q(c.area_fraction, ""),
             "plastic_fraction": _q(c.plastic_fraction, ""),
@@ -43,7 +45,7 @@ def _models(check: Any) -> dict[str, Any]:
     if h is None:
         return {}
     models = {
-        name: {"contact_radius": _q(m.a_star, "m"), "approach": _q(m.approach, "m"),
+        name: {"effective_radius": _q(m.a_star, "m"), "approach": _q(m.approach, "m"),
                "peak_pressure": _q(m.peak, "Pa"),
                "radial_profile": {"r": _q(m.r, "m"), "p": _q(m.p, "Pa")},
                "radius_error": _q(m.radius_error, ""),

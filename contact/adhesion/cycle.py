@@ -1,0 +1,217 @@
+"""Displacement-controlled approach and retraction of an adhesive contact.
+
+The rigid approach is stepped in and back out, each solve warm-started from the last
+(:func:`contact.adhesion.solver.solve_adhesive`), so the solution follows one equilibrium
+branch until it ends and then jumps. From the two branches come the pull-off force (the
+largest tension on the way out, refined by a golden-section search between the samples
+around it), the jump-in and jump-out (where the touching area appears and vanishes) and
+the energy lost in the cycle, the work  -closed integral of P d(delta)  done by the
+machine (Greenwood & Johnson 1998, Phil. Mag. A 77:1491, for the loss in a cycle).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.adhesion.solver import AdhesiveProblem, AdhesiveState, solve_adhesive
+
+_GOLDEN = 0.5 * (math.sqrt(5.0) - 1.0)
+
+
+@dataclass(frozen=True)
+class Branch:
+    """One leg of the cycle, in the order it was run (SI units).
+
+    ``approach`` is the rigid approach imposed (m), ``surface_approach`` the approach of the
+    mean plane (m), ``load`` (N), ``contact_area`` (m^2), ``energy`` the elastic plus
+    interaction energy (J), ``iterations`` per step.
+    """
+
+    approach: np.ndarray
+    surface_approach: np.ndarray
+    load: np.ndarray
+    contact_area: np.ndarray
+    energy: np.ndarray
+    iterations: np.ndarray
+
+    @property
+    def contact_radius(self) -> np.ndarray:
+        """Radius of the disc of the touching area (m)."""
+        return np.sqrt(self.contact_area / math.pi)
+
+
+@dataclass(frozen=True)
+class Jump:
+    """Where the touching area appears (jump-in) or vanishes (jump-out).
+
+    ``approach`` is the middle of the two steps (m) between which it happens, ``step`` their
+    distance (the resolution), ``load_before``/``load_after`` the loads (N) on either
+    side; ``abrupt`` tells a jump of the load from a smooth transition.
+    """
+
+    approach: float
+    step: float
+    load_before: float
+    load_after: float
+    abrupt: bool
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """An approach-retraction cycle (SI units)."""
+
+    approach_leg: Branch
+    retraction_leg: Branch
+    pull_off_force: float
+    pull_off_approach: float
+    jump_in: Jump | None
+    jump_out: Jump | None
+    hysteresis_energy: float
+
+
+#: A step that changes the touching area by more than this share of it is split in two,
+#: so that the solution follows its branch quasi-statically instead of leaping off it.
+MAX_AREA_CHANGE = 0.1
+#: Halvings allowed per step (the finest step is 2**-MAX_SPLITS of the one asked for).
+MAX_SPLITS = 5
+
+
+def _advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
+             target: float, tol: float, depth: int = 0) -> list[tuple[float, AdhesiveState]]:
+    """Solve at ``target`` from ``previous``; split the step while the area leaps."""
+    st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
+                        tol=tol)
+    if previous is None or depth >= MAX_SPLITS:
+        return [(target, st)]
+    a0, a1 = previous[1].contact_area, st.contact_area
+    if abs(a1 - a0) <= MAX_AREA_CHANGE * max(a0, a1):
+        return [(target, st)]
+    middle = _advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1)
+    return middle + _advance(problem, middle[-1], target, tol, depth + 1)
+
+
+def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
+               initial: tuple[float, np.ndarray] | None = None, *, tol: float = 1e-7,
+               progress: Callable[[int, int], None] | None = None,
+               ) -> tuple[Branch, list[np.ndarray]]:
+    """Solve at each approach in turn, warm-started; the branch and every step's gap.
+
+    ``initial`` is (approach, gap) of the state to start from. A step over which the
+    touching area changes by more than :data:`MAX_AREA_CHANGE` is halved (up to
+    :data:`MAX_SPLITS` times), so the branch holds the approaches asked for and the
+    intermediate ones.
+    """
+    done: list[tuple[float, AdhesiveState]] = []
+    previous = None
+    if initial is not None:
+        d0, g0 = initial
+        previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
+    for k, d in enumerate(approaches):
+        done += _advance(problem, previous, float(d), tol)
+        previous = done[-1]
+        if progress is not None:
+            progress(k + 1, len(approaches))
+    states = [st for _, st in done]
+    branch = Branch(
+        approach=np.array([d for d, _ in done]),
+        surface_approach=np.array([s.approach for s in states]),
+        load=np.array([s.load for s in states]),
+        contact_area=np.array([s.contact_area for s in states]),
+        energy=np.array([s.energy for s in states]),
+        iterations=np.array([s.iterations for s in states]),
+    )
+    return branch, [s.gap for s in states]
+
+
+def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndarray],
+                    *, tol: float = 1e-7, rounds: int = 10) -> tuple[float, float]:
+    """The largest tension of a retraction and its approach, refined between samples.
+
+    A golden-section search on the load between the neighbours of the most tensile
+    sample, every solve warm-started from the neighbour met first on the way out, so it
+    stays on the retraction's branch. Returns (pull-off force > 0, approach).
+    """
+    k = int(np.argmin(branch.load))
+    best = (-float(branch.load[k]), float(branch.approach[k]))
+    if k == 0 or k == len(branch.load) - 1 or branch.load[k] >= 0.0:
+        return best
+    hi, lo, start = float(branch.approach[k - 1]), float(branch.approach[k + 1]), gaps[k - 1]
+
+    def tension(d: float) -> float:
+        return -solve_adhesive(problem, d, start, tol=tol).load
+
+    a, b = lo, hi
+    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+    fc, fd = tension(c), tension(d)
+    for _ in range(rounds):
+        if fc > fd:
+            b, d, fd = d, c, fc
+            c = b - _GOLDEN * (b - a)
+            fc = tension(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + _GOLDEN * (b - a)
+            fd = tension(d)
+    for f, x in ((fc, c), (fd, d)):
+        if f > best[0]:
+            best = (f, x)
+    return best
+
+
+def find_jump(branch: Branch, *, entering: bool) -> Jump | None:
+    """Where the touching area appears (``entering``) or vanishes along ``branch``."""
+    touching = branch.contact_area > 0.0
+    change = np.flatnonzero(touching[1:] != touching[:-1])
+    change = [i for i in change if touching[i + 1] == entering]
+    if not change:
+        return None
+    i = int(change[0])
+    steps = np.abs(np.diff(branch.load))
+    # the load's change across the transition against its changes one step either side
+    around = [steps[j] for j in (i - 1, i + 1) if 0 <= j < steps.size]
+    typical = float(max(around)) if around else 0.0
+    jump = float(steps[i])
+    return Jump(
+        approach=0.5 * float(branch.approach[i] + branch.approach[i + 1]),
+        step=abs(float(branch.approach[i + 1] - branch.approach[i])),
+        load_before=float(branch.load[i]), load_after=float(branch.load[i + 1]),
+        abrupt=jump > 3.0 * typical,
+    )
+
+
+def hysteresis(approach_leg: Branch, retraction_leg: Branch) -> float:
+    """Work done by the machine over the closed cycle (J), by the trapezoidal rule.
+
+    The legs must start and end at the same approach. Under rigid displacement control a
+    jump happens at a fixed approach and does no work, so the integral of P over the
+    imposed approach is the energy the cycle loses.
+    """
+    d = np.concatenate([approach_leg.approach, retraction_leg.approach])
+    p = np.concatenate([approach_leg.load, retraction_leg.load])
+    return float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(d)))
+
+
+def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
+                        tol: float = 1e-7,
+                        progress: Callable[[int, int], None] | None = None) -> Cycle:
+    """Run ``approaches`` (increasing) in, then back out, and read the cycle."""
+    steps = np.asarray(approaches, dtype=float)
+    n = 2 * len(steps)
+
+    def half(offset: int) -> Callable[[int, int], None] | None:
+        return None if progress is None else (lambda k, _m: progress(offset + k, n))
+
+    leg_in, gaps_in = run_branch(problem, steps, tol=tol, progress=half(0))
+    leg_out, gaps_out = run_branch(problem, steps[::-1], (steps[-1], gaps_in[-1]), tol=tol,
+                                   progress=half(len(steps)))
+    force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol)
+    return Cycle(
+        approach_leg=leg_in, retraction_leg=leg_out, pull_off_force=force,
+        pull_off_approach=where, jump_in=find_jump(leg_in, entering=True),
+        jump_out=find_jump(leg_out, entering=False),
+        hysteresis_energy=hysteresis(leg_in, leg_out),
+    )

@@ -1,0 +1,188 @@
+"""One adhesive normal solve at a prescribed approach, on a periodic grid.
+
+The unknown is the gap g >= 0 between the deformed surfaces, as in the primal
+formulation of Rey, Anciaux & Molinari (2017), Comput. Mech. 60:69. With the surface
+displacement u = g - h + delta (h the initial gap, delta the rigid-body approach) the
+total energy per cell area is
+
+    Pi(g) = 1/2 <u, S u> + sum_i phi(g_i),
+
+S the periodic half-space stiffness (the inverse of the core's periodic Love operator,
+:func:`contact.halfspace.influence.periodic_kernel_spectrum`, about E* |q| / 2) and phi the adhesion
+law's energy (:mod:`contact.adhesion.laws`). Its stationary points under g >= 0 are the
+equilibria: the pressure p = S u equals the attractive traction -t(g) where the surfaces
+are apart and p >= -t(0) where they touch, so the tensile tractions come out of the solve
+instead of being assumed. Pi is not convex (phi is concave), so a warm-started local
+minimiser follows one equilibrium branch under displacement control, and a branch that
+ends makes the next solve jump to another one: that is the jump-in and jump-out.
+
+The mean displacement (the q = 0 mode, free in a periodic body) is held by a spring as
+stiff as the stiffest Fourier mode, so that the conditioning is that of the elastic
+operator; the spring's stretch P / (k A) is removed from the reported approach, which is
+measured from the mean plane of the deformed surface. Pi is minimised with L-BFGS-B
+(Byrd, Lu, Nocedal & Zhu 1995, SIAM J. Sci. Comput. 16:1190) in units of the law's range
+and peak tension.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.adhesion.laws import InteractionLaw
+from contact.errors import ContactInputError, ConvergenceError
+from contact.halfspace.influence import periodic_kernel_spectrum
+
+
+@dataclass(frozen=True)
+class AdhesiveState:
+    """One equilibrium of an adhesive contact (SI units).
+
+    Attributes
+    ----------
+    gap, pressure : ndarray, shape (ny, nx)
+        Gap g >= 0 (m) and pressure p (Pa, compression positive, tension negative).
+    approach : float
+        Approach of the rigid bodies (m), from the mean plane of the deformed surface.
+    load : float
+        Total normal load (N; negative: the surfaces pull on each other).
+    contact_area : float
+        Area where the gap is zero (m^2).
+    energy : float
+        Elastic plus interaction energy (J), the potential whose derivative in the
+        approach is the load.
+    residual : float
+        Largest violation of equilibrium, relative to the larger of the law's peak
+        tension and the largest compressive pressure.
+    iterations : int
+        L-BFGS-B iterations.
+    """
+
+    gap: np.ndarray
+    pressure: np.ndarray
+    approach: float
+    load: float
+    contact_area: float
+    energy: float
+    residual: float
+    iterations: int
+
+
+@dataclass(frozen=True, eq=False)
+class AdhesiveProblem:
+    """The fixed data of a series of adhesive solves on one periodic grid.
+
+    Build with :func:`adhesive_problem`.
+    """
+
+    gap0: np.ndarray
+    dx: float
+    e_star: float
+    law: InteractionLaw
+    stiffness: np.ndarray  # E* |q| / 2 on the rfft grid, the q = 0 entry the mean spring
+
+    @property
+    def cell_area(self) -> float:
+        """Area of one cell (m^2)."""
+        return self.dx * self.dx
+
+    @property
+    def spring(self) -> float:
+        """Stiffness per area of the mean-displacement spring (Pa/m)."""
+        return float(self.stiffness[0, 0])
+
+
+def adhesive_problem(gap0: np.ndarray, dx: float, e_star: float,
+                     law: InteractionLaw) -> AdhesiveProblem:
+    """Check the input and precompute the periodic stiffness of a square-pitch grid."""
+    h = np.ascontiguousarray(gap0, dtype=float)
+    if h.ndim != 2 or min(h.shape) < 4 or not np.isfinite(h).all():
+        raise ContactInputError("the gap must be a finite 2D array of at least 4x4")
+    if not (dx > 0 and e_star > 0):
+        raise ContactInputError("the pitch and E* must be positive")
+    ny, nx = h.shape
+    # the inverse of the core's periodic Love operator (uniform pressure on each cell),
+    # the same influence as the periodic normal BEM's
+    with np.errstate(divide="ignore"):
+        s = e_star / np.asarray(periodic_kernel_spectrum(ny, nx, float(dx), float(dx)))
+    s[0, 0] = 0.0
+    s[0, 0] = s.max()
+    return AdhesiveProblem(h, float(dx), float(e_star), law, s)
+
+
+def solve_adhesive(problem: AdhesiveProblem, approach: float,
+                   initial: np.ndarray | None = None, *, tol: float = 1e-7,
+                   max_iter: int = 20000) -> AdhesiveState:
+    """The equilibrium nearest ``initial`` (a gap field) at rigid approach ``approach``.
+
+    Parameters
+    ----------
+    problem : AdhesiveProblem
+        Grid, stiffness and law (:func:`adhesive_problem`).
+    approach : float
+        Rigid-body approach delta (m) imposed on the spring-held mean plane.
+    initial : ndarray, optional
+        Warm start: a gap field (e.g. the previous step's); default the rigid gap.
+    tol : float
+        Largest violation of equilibrium (projected gradient), relative to the larger of
+        the law's peak tension and the largest compressive pressure.
+    max_iter : int
+        L-BFGS-B iteration limit.
+
+    Raises
+    ------
+    ConvergenceError
+        When L-BFGS-B stops before the tolerance.
+    """
+    h, law = problem.gap0, problem.law
+    if initial is not None and np.shape(initial) != h.shape:
+        raise ContactInputError(
+            f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
+    g = np.maximum(h - approach if initial is None else np.asarray(initial, dtype=float), 0.0)
+    step = 1.0 / problem.spring  # 1 / the largest stiffness: the quadratic's Lipschitz constant
+    y, theta = g.copy(), 1.0
+    for it in range(1, max_iter + 1):
+        p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(y - h + approach), s=h.shape)
+        grad = p + law.traction(y)
+        if _violation(y, grad).max() <= tol * max(law.peak, float(p.max())):
+            return _state(problem, y, approach, it, tol)
+        g_new = np.maximum(y - step * grad, 0.0)
+        if np.vdot(grad, g_new - g) > 0.0:  # momentum points uphill: restart it
+            theta = 1.0
+        theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
+        y = np.maximum(g_new + ((theta - 1.0) / theta_new) * (g_new - g), 0.0)
+        g, theta = g_new, theta_new
+    return _state(problem, y, approach, max_iter, tol)
+
+
+def _violation(g: np.ndarray, grad: np.ndarray) -> np.ndarray:
+    """Violation of equilibrium per cell (Pa): |p + t| apart, max(-(p + t), 0) touching."""
+    return np.where(g <= 0.0, np.maximum(-grad, 0.0), np.abs(grad))
+
+
+def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
+           tol: float) -> AdhesiveState:
+    """The equilibrium record of the gap ``g``, after checking its residual."""
+    h, law = problem.gap0, problem.law
+    u = g - h + approach
+    p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
+    t = law.traction(g)
+    touching = g <= 0.0
+    residual = float(_violation(g, p + t).max()) / max(law.peak, float(p.max()))
+    if residual > tol:
+        raise ConvergenceError(
+            f"the adhesive solve stopped at residual {residual:.3g} of the pressure scale "
+            f"(approach {approach:.4g} m); refine the approach steps or the grid",
+            residual=residual, iterations=nit)
+    area = problem.cell_area
+    pressure = np.where(touching, p, -t)
+    load = float(p.sum() * area)
+    mean_u = load / (problem.spring * h.size * area)
+    elastic = 0.5 * float(np.vdot(u, p)) - 0.5 * problem.spring * mean_u ** 2 * h.size
+    return AdhesiveState(
+        gap=g, pressure=pressure, approach=approach - mean_u, load=load,
+        contact_area=float(touching.sum() * area),
+        energy=(elastic + float(law.potential(g).sum())) * area,
+        residual=residual, iterations=int(nit),
+    )

@@ -1,0 +1,122 @@
+"""``surfmet adhesion``: approach and retraction of an adhesive sphere on a flat."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from surfmet.cli._common import (
+    _argtype,
+    add_json_flag,
+    add_quiet_flag,
+    check_output,
+    emit_json,
+    log,
+    positive_length,
+    pressure,
+    save_figure,
+    show_progress,
+)
+
+EPILOG = """examples:
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
+  surfmet adhesion --radius 5um --materials pmma,glass --work-of-adhesion 0.05J/m^2 \\
+      --range 1nm --interaction exponential --json
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 0.05J/m2 --range 5nm \\
+      --grid 192 --plot cycle.png
+
+The sphere is a paraboloid in the middle of a periodic cell (--size, default four times
+the larger of the JKR contact radius at zero load and the interaction zone). --range is
+h0 = w / sigma0 for the Dugdale (Maugis) law, rho for the exponential law
+t(g) = (w / rho) exp(-g / rho). The pull-off force is the largest tension on the way out
+(displacement control). A grid that leaves the cohesive zone pi E* w / (4 sigma0^2) fewer
+than ten pixels wide is warned about: the pull-off then comes out too large (+5 % at
+13 pixels, +12 % at 6.6, +81 % at half a pixel, measured at Maugis lambda 1 and 5).
+"""
+
+
+def add_parser(sub: Any) -> argparse.ArgumentParser:
+    from surfmet.mechanics.adhesion import INTERACTIONS
+    from surfmet.units import parse_surface_energy
+
+    p = sub.add_parser(
+        "adhesion",
+        help="pull-off, jumps and hysteresis of an adhesive sphere on a flat",
+        description="Approach an elastic sphere to a flat and retract it under displacement "
+        "control, with a Dugdale (Maugis) or exponential adhesion law solved on an FFT "
+        "boundary-element grid: pull-off force, jump-in and jump-out, energy lost in the "
+        "cycle, and the Maugis and Tabor parameters.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--radius", type=positive_length, required=True, metavar="R",
+                   help="sphere radius, e.g. 10um")
+    mod = p.add_mutually_exclusive_group(required=True)
+    mod.add_argument("--materials", metavar="A,B", help="sphere and flat materials")
+    mod.add_argument("--e-star", type=pressure, metavar="E", help="composite modulus E*")
+    p.add_argument("--work-of-adhesion", type=_argtype(parse_surface_energy, "work"),
+                   required=True, metavar="W", help="work of adhesion, e.g. 50mJ/m2")
+    p.add_argument("--range", type=positive_length, required=True, metavar="RHO",
+                   dest="range_", help="interaction range, e.g. 2nm")
+    p.add_argument("--interaction", choices=INTERACTIONS, default="dugdale",
+                   help="adhesion law (default dugdale)")
+    p.add_argument("--grid", type=int, default=128, metavar="N",
+                   help="cells per side (default 128)")
+    p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
+    p.add_argument("--steps", type=int, default=40, metavar="K",
+                   help="approach steps on each leg (default 40)")
+    p.add_argument("--plot", metavar="OUT.png", help="plot the load-approach cycle")
+    add_json_flag(p)
+    add_quiet_flag(p)
+    p.set_defaults(func=run)
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    from surfmet.batch import progress_bar
+    from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
+
+    check_output(args.plot, "--plot")
+    bar = progress_bar(2 * args.steps, "adhesion, steps", show_progress(args))
+    try:
+        ball = adhesion(args.radius, work=args.work_of_adhesion, range_=args.range_,
+                        materials=args.materials, e_star=args.e_star,
+                        interaction=args.interaction, grid=args.grid, size=args.size,
+                        steps=args.steps, progress=lambda done, total: bar.update(1))
+    finally:
+        bar.close()
+    if args.plot:
+        save_figure(plot(ball, args.plot), args.plot)
+    if args.json:
+        for w in ball.warnings:
+            log(f"warning: {w}")
+        emit_json(adhesion_record(ball))
+        return 0
+    _print(ball)
+    return 0
+
+
+def _print(ball: Any) -> None:
+    """The text summary of a cycle."""
+    from surfmet.units import format_length
+
+    cyc, law = ball.cycle, ball.law
+    print(f"sphere          R = {format_length(ball.radius)}, E* = {ball.e_star / 1e9:.4g} GPa")
+    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
+          f"peak tension {law.peak / 1e6:.4g} MPa")
+    print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
+    print(f"grid            {ball.grid} x {ball.grid} cells, "
+          f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
+    print(f"pull-off force  {cyc.pull_off_force * 1e6:.5g} uN = "
+          f"{cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius):.4g} pi w R "
+          f"(JKR 1.5, DMT 2)")
+    for name, jump in (("jump-in", cyc.jump_in), ("jump-out", cyc.jump_out)):
+        if jump is None:
+            print(f"{name:15s} none within the approach range")
+        else:
+            print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
+                  f"{format_length(jump.step / 2)}), load {jump.load_before * 1e6:.4g} -> "
+                  f"{jump.load_after * 1e6:.4g} uN{'' if jump.abrupt else ' (smooth)'}")
+    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle")
+    for w in ball.warnings:
+        print(f"warning         {w}")

@@ -1,0 +1,35 @@
+"""Maugis-Dugdale sphere theory, solved here independently of the package (test truth).
+
+Maugis (1992), J. Colloid Interface Sci. 150:243, in the notation of Johnson & Greenwood
+(1997), J. Colloid Interface Sci. 192:326: A = a (K / (pi w R^2))^(1/3),
+P = P / (pi w R), m = c / a, K = 4 E* / 3, lambda = 2 sigma0 (R / (pi w K^2))^(1/3).
+For each m > 1 the cohesive-zone condition is a quadratic in A; the load follows.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import optimize
+
+
+def md_curve(lam: float, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(A, P) of the Maugis-Dugdale solution at the ratios ``m`` = c / a > 1."""
+    s = np.sqrt(m * m - 1.0)
+    at = np.arctan(s)
+    alpha = 0.5 * lam * (s + (m * m - 2.0) * at)
+    beta = 4.0 * lam * lam / 3.0 * (s * at - m + 1.0)
+    a = (-beta + np.sqrt(beta * beta + 4.0 * alpha)) / (2.0 * alpha)
+    p = a ** 3 - lam * a * a * (s + m * m * at)
+    return a, p
+
+
+def md_pull_off(lam: float) -> float:
+    """Largest tension of the Maugis-Dugdale curve, over pi w R (a positive number)."""
+    m = 1.0 + np.logspace(-8, 4, 20001)
+    _, p = md_curve(lam, m)
+    k = int(np.argmin(p))
+    if 0 < k < m.size - 1:  # polish the sampled minimum
+        res = optimize.minimize_scalar(lambda x: md_curve(lam, np.array([x]))[1][0],
+                                       bracket=(m[k - 1], m[k], m[k + 1]))
+        return -float(res.fun)
+    return -float(p[k])

@@ -1,0 +1,105 @@
+"""``surfmet adhesion`` end to end: JSON record, units, bad input, resolution warning."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from maugis_reference import md_pull_off
+
+from contact import composite_modulus, material
+from surfmet.cli import main
+from surfmet.errors import SurfmetInputError
+from surfmet.units import parse_surface_energy
+
+BASE = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--range", "2nm"]
+FAST = ["--grid", "64", "--steps", "8", "--quiet"]
+
+
+def _json(capsys, argv):
+    assert main(argv) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_json_record(capsys):
+    # range 10 nm: lambda 0.33, a cohesive zone of about 60 pixels (no warning)
+    rec = _json(capsys, ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--range", "10nm",
+                         "--work-of-adhesion", "50mJ/m2", *FAST, "--json"])
+    w, r, h0 = 0.05, 10e-6, 10e-9
+    assert rec["work_of_adhesion"] == {"value": pytest.approx(w), "unit": "J/m^2"}
+    assert rec["range"] == {"value": pytest.approx(h0), "unit": "m"}
+    assert rec["interaction"] == "dugdale"
+    f = rec["pull_off_force"]
+    assert f["unit"] == "N"
+    # Maugis-Dugdale at lambda 0.33 gives 1.80 pi w R (tests/maugis_reference.py)
+    lam = rec["maugis_parameter"]
+    assert lam["unit"] == "" and rec["tabor_parameter"]["unit"] == ""
+    assert f["value"] == pytest.approx(md_pull_off(lam["value"]) * math.pi * w * r, rel=0.03)
+    # Maugis' lambda = 2 sigma0 (R / (pi w K^2))^(1/3), sigma0 = w / h0, by hand
+    k = 4e9 / 3
+    assert lam["value"] == pytest.approx(
+        2 * (w / h0) * (r / (math.pi * w * k * k)) ** (1 / 3), rel=1e-12)
+    assert rec["hysteresis_energy"]["unit"] == "J" and rec["hysteresis_energy"]["value"] > 0
+    for leg in ("in", "out"):
+        curve = rec["curve"][leg]
+        assert {curve[k]["unit"] for k in ("approach", "load", "contact_radius")} == \
+            {"m", "N"}
+        assert len(curve["approach"]["value"]) == len(curve["load"]["value"]) >= 8
+    assert min(rec["curve"]["out"]["load"]["value"]) >= -f["value"] * (1 + 1e-12)
+    assert rec["jump_in"]["approach"]["unit"] == "m"
+    assert rec["grid"]["cells"] == 64 and rec["warnings"] == []
+
+
+@pytest.mark.parametrize("text", ["0.05J/m2", "0.05J/m^2", "50mJ/m2", "50 mJ/m^2", "0.05"])
+def test_work_of_adhesion_units(text):
+    assert parse_surface_energy(text) == pytest.approx(0.05, rel=1e-15)
+
+
+def test_prefixes_are_case_sensitive():
+    with pytest.raises(SurfmetInputError, match="case-sensitive"):
+        parse_surface_energy("50MJ/m2")
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--work-of-adhesion", "0J/m2"], "work of adhesion must be positive"),
+    (["--work-of-adhesion", "-5mJ/m2"], "work of adhesion must be positive"),
+    (["--work-of-adhesion", "50mJ/m2", "--range", "0nm"], "must be positive"),
+    (["--work-of-adhesion", "50MJ/m2"], "case-sensitive"),
+    (["--work-of-adhesion", "50mJ/m2", "--grid", "4"], "grid must be an integer of at least"),
+])
+def test_bad_input_is_one_line(capsys, argv, words):
+    assert main([*BASE, *argv, "--quiet"]) == 1
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err and "Traceback" not in err
+
+
+def test_coarse_grid_warns_in_text_and_json(capsys):
+    argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "8", "--quiet"]
+    assert main(argv) == 0
+    assert "grid too coarse for the interaction" in capsys.readouterr().out
+    rec = _json(capsys, [*argv, "--json"])
+    assert any("grid too coarse for the interaction" in w for w in rec["warnings"])
+
+
+def test_materials_give_the_composite_modulus(capsys):
+    rec = _json(capsys, ["adhesion", "--radius", "1um", "--materials", "steel,aluminium",
+                         "--work-of-adhesion", "0.5J/m2", "--range", "0.3nm",
+                         "--grid", "16", "--steps", "6", "--quiet", "--json"])
+    e = composite_modulus(material("steel"), material("aluminium"))
+    assert rec["e_star"] == {"value": pytest.approx(e, rel=1e-12), "unit": "Pa"}
+
+
+def test_plot_path_checked_before_the_work(capsys, tmp_path):
+    bad = tmp_path / "missing" / "cycle.png"
+    assert main([*BASE, "--work-of-adhesion", "50mJ/m2", *FAST, "--plot", str(bad)]) == 1
+    assert "does not exist" in capsys.readouterr().err
+
+
+def test_plot_is_written(capsys, tmp_path):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "cycle.png"
+    argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "6",
+            "--quiet", "--plot", str(out)]
+    assert main(argv) == 0
+    assert out.stat().st_size > 1000 and out.read_bytes()[:4] == b"\x89PNG"
