@@ -207,6 +207,109 @@ def _serial_map(func, items, on_error, progress, desc, done) -> list[Any]:
     return out
 
 
+#: How often (s) a worker process checks that the process that started it is alive.
+WATCH_INTERVAL = 0.5
+
+
+def _start_time(pid: int) -> str | None:
+    """A process's start time as the kernel states it (Linux ``/proc``), to tell it from a
+    later process given the same id; None where it cannot be read."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    if started is not None:
+        return _start_time(pid) == started
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _follow_owner(pid: int, started: str | None) -> None:
+    """Worker initializer: end this worker when the process that owns the pool is gone.
+
+    A pool's workers are children of the forkserver, not of the owner, so when the owner
+    is killed (SIGKILL, the out-of-memory killer) nothing tells them: they would finish
+    their item, wait for the next one for ever, and keep the forkserver alive with them.
+    A daemon thread checks the owner every :data:`WATCH_INTERVAL` s and exits the worker
+    at once (``os._exit``: nothing to flush; the owner is the one that writes results).
+    """
+    import threading
+    import time
+
+    def watch() -> None:
+        while _alive(pid, started):
+            time.sleep(WATCH_INTERVAL)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="surfmet-owner-watch", daemon=True).start()
+
+
+def _is_main_test(test: Any) -> bool:
+    """Whether an ``if`` test is ``__name__ == "__main__"`` (either way round)."""
+    import ast
+
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1
+            and isinstance(test.ops[0], ast.Eq)):
+        return False
+    sides = {type(n).__name__ + ":" + str(getattr(n, "id", getattr(n, "value", "")))
+             for n in (test.left, test.comparators[0])}
+    return sides == {"Name:__name__", "Constant:__main__"}
+
+
+def unguarded_main() -> tuple[str, int] | None:
+    """(script, line) when this call comes from a script's top level outside
+    ``if __name__ == "__main__":``, else None.
+
+    Worker processes are started by ``forkserver`` or ``spawn``, which import the main
+    script again in the new process (Python's "safe importing of the main module"): an
+    unguarded script starts its work again there, and the pool's workers die
+    bootstrapping. A script run as ``python -m package`` (``package.__main__``) and
+    interactive sessions are not imported again, and pass.
+    """
+    import ast
+
+    main = sys.modules.get("__main__")
+    file = getattr(main, "__file__", None)
+    spec = getattr(main, "__spec__", None)
+    if not file or (spec is not None and spec.name.rpartition(".")[2] == "__main__"):
+        return None
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_code.co_name == "<module>"
+                                     and frame.f_globals is vars(main)):
+        frame = frame.f_back
+    if frame is None:
+        return None
+    line = frame.f_lineno
+    try:
+        with open(file, encoding="utf-8") as fh:
+            tree = ast.parse(fh.read())
+    except (OSError, SyntaxError, ValueError):
+        return None
+    for node in tree.body:
+        if isinstance(node, ast.If) and _is_main_test(node.test) and \
+                node.lineno <= line <= (node.end_lineno or line):
+            return None
+    return file, line
+
+
+def _pool(n: int) -> Any:
+    """A process pool of ``n`` workers that end with the process that made it."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    me = os.getpid()
+    return ProcessPoolExecutor(max_workers=n, mp_context=_mp_context(),
+                               initializer=_follow_owner, initargs=(me, _start_time(me)))
+
+
 def _mp_context() -> Any:
     import multiprocessing as mp
 
@@ -216,7 +319,7 @@ def _mp_context() -> Any:
 
 def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
     import pickle
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import as_completed
     from concurrent.futures.process import BrokenProcessPool
 
     try:
@@ -226,10 +329,17 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
             f"the batch function cannot be sent to worker processes ({exc}); use a "
             "module-level function or a functools.partial of one, or workers=1"
         ) from None
+    where = unguarded_main()
+    if where is not None:
+        raise SurfmetInputError(
+            f"{where[0]}, line {where[1]}: worker processes import this script again and "
+            "it would start them again there (every row would read 'worker process "
+            "died'): put the script's work under `if __name__ == \"__main__\":` (see "
+            "docs/quickstart.md, section 3), or use workers=1")
     results: list[Any] = [None] * len(items)
     broken: list[int] = []
     with progress_bar(len(items), desc, progress) as bar:
-        pool = ProcessPoolExecutor(max_workers=n, mp_context=_mp_context())
+        pool = _pool(n)
         try:
             futures = {pool.submit(func, item): k for k, item in enumerate(items)}
             for fut in as_completed(futures):
@@ -252,7 +362,7 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
         # one per fresh single-process pool: the innocent ones succeed, the item that
         # kills its process again gets the error row.
         for k in sorted(broken):
-            with ProcessPoolExecutor(max_workers=1, mp_context=_mp_context()) as solo:
+            with _pool(1) as solo:
                 try:
                     results[k] = solo.submit(func, items[k]).result()
                 except BrokenProcessPool:

@@ -9,6 +9,9 @@ single line on stderr and exit status 1:
 ``SurfmetInputError``
     A bad argument at the surfmet layer: unknown unit, malformed range, scan too short for a
     cut-off, all-NaN topography handed to an analysis.
+``SurfmetWriteError``
+    An output the operating system would not take: disk full, file size limit, no
+    permission (nothing is half-written: :mod:`surfmet.atomic`).
 ``profiles.ProfileError``
     The same family inside the 1D engine (``profiles`` never imports ``surfmet``).
 ``contact.ContactInputError``, ``contact.ConvergenceError``, ``contact.EdgeContactError``
@@ -35,6 +38,11 @@ class SurfmetFormatError(SurfmetError, ValueError):
 
 class SurfmetInputError(SurfmetError, ValueError):
     """An argument is unusable: wrong unit, malformed range, all-NaN data, too short a scan."""
+
+
+class SurfmetWriteError(SurfmetError, OSError):
+    """An output file could not be written (disk full, size limit, permission); the
+    message names the file. Nothing was half-written and an earlier file is kept."""
 
 
 def user_error_types() -> tuple[type[BaseException], ...]:

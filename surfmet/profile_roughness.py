@@ -115,7 +115,11 @@ def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: 
     if rk_line is not None:
         line, why["rk_line"] = str(rk_line), FROM_USER
     elif stated.get("rk_line"):
-        line, why["rk_line"] = str(stated["rk_line"]), FROM_FILE
+        # the instrument's construction, which goes with the conditions the file states
+        line = str(stated["rk_line"])
+        why["rk_line"] = (f"the instrument's own Rk construction ({stated['source']}), part "
+                          "of the evaluation the file states" if stated.get("source")
+                          else FROM_FILE)
     else:
         line, why["rk_line"] = "secant", FROM_DEFAULT
     return Conditions(std, lc_v, ls_v, n, prefiltered, why, line)
@@ -160,6 +164,7 @@ def conditions_record(cond: Conditions, settings: dict[str, Any],
         "lc": lc_block,
         "ls": ls_block,
         "n_sampling": {"value": settings.get("n_sampling"), "why": cond.why["n_sampling"]},
+        "rk_line": {"value": cond.rk_line, "why": cond.why["rk_line"]},
     }
 
 

@@ -206,4 +206,7 @@ def render_3d(
 def _write_png(img: np.ndarray, path: Path) -> None:
     import matplotlib.image as mpimg
 
-    mpimg.imsave(path, img)
+    from surfmet.atomic import atomic_path
+
+    with atomic_path(path) as tmp:
+        mpimg.imsave(tmp, img)

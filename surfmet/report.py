@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
-import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -45,14 +44,7 @@ from surfmet.report_html import (
     kv_table,
     quantity_text,
 )
-
-# Display units of the parameter table: (SI unit) -> (factor to divide by, shown unit).
-DISPLAY_UNITS: dict[str, tuple[float, str]] = {
-    "m": (1e-6, "µm"),
-    "1/m²": (1e6, "1/mm²"),
-    "1/m": (1e6, "1/µm"),
-    "m·%": (1e-6, "µm·%"),
-}
+from surfmet.units import valid_text
 
 _CSS = """
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
@@ -74,10 +66,9 @@ pre{background:#f6f6f6;padding:.6em;overflow:auto;font-size:.8em;max-height:30em
 
 def display_value(value: Any, unit: str) -> tuple[str, str]:
     """``(number text, unit text)`` of an SI parameter value for the table."""
-    if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        return "n/a", unit
-    factor, shown = DISPLAY_UNITS.get(unit, (1.0, unit))
-    return f"{value / factor:.5g}", shown
+    from surfmet.units import split_quantity
+
+    return split_quantity(value, unit, digits=5)
 
 
 @dataclass
@@ -211,7 +202,7 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         sec.kind = res.kind  # "profile" also for a row of an areal scan
         sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
         sec.settings = res.settings
-        name = Path(str(path)).name
+        name = valid_text(Path(str(path)).name)
         if res.kind == "areal":
             sec.figures = _figures_areal(res.surface, res.parameters, include_3d)
         else:
@@ -445,15 +436,15 @@ def write_report(
     paths = [str(p) for p in paths]
     if not paths:
         raise SurfmetInputError("the report needs at least one scan file")
+    from surfmet.atomic import check_writable, write_text
+
     out = Path(out)
-    if not out.parent.exists():
-        raise SurfmetInputError(f"cannot write {out}: folder {out.parent} does not exist")
+    check_writable(out, "report")
     sections = []
     with progress_bar(len(paths), "report", progress) as bar:
         for p in paths:
             sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
             bar.update(1)
-    out.write_text(render_html(sections, title=title, options=options, hertz=hertz,
-                               rotor=rotor),
-                   encoding="utf-8")
+    write_text(out, render_html(sections, title=title, options=options, hertz=hertz,
+                                rotor=rotor))
     return sections

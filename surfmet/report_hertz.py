@@ -71,6 +71,45 @@ def hertz_figure(check: dict[str, Any]) -> bytes | None:
     return figure_png(radial_pressure(r, pb, ph, float(a0)))
 
 
+# Hertz's quantity and the boundary elements' answer to the same question, side by side:
+# (row name, Hertz key, BEM keys in order of preference)
+PAIRS = (
+    ("contact radius", "a", ("contact_radius_second_moment", "a_star", "contact_radius")),
+    ("approach", "delta", ("approach",)),
+    ("peak pressure", "p0", ("pmax",)),
+)
+
+
+def _is_quantity(q: Any) -> bool:
+    return isinstance(q, dict) and "value" in q
+
+
+def _comparison_rows(hertz: dict[str, Any], bem: dict[str, Any]) -> list[str]:
+    """Table rows: each Hertz quantity beside the BEM's answer to the same question and
+    their relative difference, then what only one side has."""
+    rows, used = [], set()
+
+    def row(name: str, h: Any, b: Any) -> str:
+        diff = ""
+        if _is_quantity(h) and _is_quantity(b) and h["value"] and b["value"] is not None:
+            diff = f"{100 * (b['value'] / h['value'] - 1):+.1f} %"
+        return (f"<tr><td>{esc(name)}</td><td>{esc(quantity_text(h))}</td>"
+                f"<td>{esc(quantity_text(b))}</td><td>{esc(diff)}</td></tr>")
+
+    for name, hkey, bkeys in PAIRS:
+        bkey = next((k for k in (*bkeys, hkey) if _is_quantity(bem.get(k))), None)
+        if hkey in hertz or bkey is not None:
+            label = name + (f" ({hkey} / {bkey})" if bkey not in (None, hkey) else f" ({hkey})")
+            rows.append(row(label, hertz.get(hkey, ""), bem.get(bkey, "") if bkey else ""))
+            used.update({hkey, bkey})
+    for key in [k for k in hertz if k not in used] + [k for k in bem if k not in used]:
+        h, b = hertz.get(key, ""), bem.get(key, "")
+        if (key in hertz and not _is_quantity(h)) or (key in bem and not _is_quantity(b)):
+            continue
+        rows.append(row(key, h, b))
+    return rows
+
+
 def hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None) -> str:
     holds = check.get("hertz_holds")
     if check.get("judged") is False:  # the scan's pixel does not resolve the contact
@@ -92,17 +131,11 @@ def hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None
     reasons = check.get("reasons") or []
     if reasons:
         parts.append("<ul>" + "".join(f"<li>{esc(r)}</li>" for r in reasons) + "</ul>")
-    rows = []
-    hertz, bem = check.get("hertz") or {}, check.get("bem") or {}
-    for key in sorted(set(hertz) | set(bem)):
-        if isinstance(hertz.get(key), (list, dict)) and not (
-                isinstance(hertz.get(key), dict) and "value" in hertz[key]):
-            continue
-        rows.append(f"<tr><td>{esc(key)}</td><td>{esc(quantity_text(hertz.get(key, '')))}</td>"
-                    f"<td>{esc(quantity_text(bem.get(key, '')))}</td></tr>")
+    rows = _comparison_rows(check.get("hertz") or {}, check.get("bem") or {})
     if rows:
         parts.append('<table class="hertz"><tr><th>quantity</th><th>Hertz</th>'
-                     "<th>boundary elements</th></tr>" + "".join(rows) + "</table>")
+                     "<th>boundary elements</th><th>difference</th></tr>"
+                     + "".join(rows) + "</table>")
     if fig is not None:
         parts.append(figures_html([("radial pressure: Hertz against boundary elements",
                                      fig)]).replace("<h3>Pictures</h3>", ""))

@@ -15,8 +15,11 @@ from surfmet.errors import SurfmetInputError
 
 
 def esc(value: Any) -> str:
-    """HTML-escaped text of any value (quotes too, so it is safe in attributes)."""
-    return html.escape(str(value), quote=True)
+    """HTML-escaped text of any value (quotes too, so it is safe in attributes), valid
+    Unicode (:func:`surfmet.units.valid_text`: a file name that is not UTF-8)."""
+    from surfmet.units import valid_text
+
+    return html.escape(valid_text(str(value)), quote=True)
 
 
 def png_data_uri(png: bytes) -> str:
@@ -53,17 +56,16 @@ def kv_table(rows: Iterable[tuple[str, Any]], cls: str = "meta") -> str:
 
 
 def quantity_text(q: Any) -> str:
-    """Human text of a ``{"value", "unit"}`` quantity (lengths in µm)."""
-    from surfmet.units import format_length
+    """Human text of a ``{"value", "unit"}`` quantity
+    (:func:`surfmet.units.format_quantity`)."""
+    from surfmet.units import format_quantity
 
     if isinstance(q, dict) and "value" in q:
         v, u = q["value"], q.get("unit", "")
         if v is None:
             return "n/a"
-        if u == "m" and isinstance(v, (int, float)):
-            return format_length(v)
-        if isinstance(v, (int, float)):
-            return f"{v:.5g} {u}".rstrip()
+        if isinstance(v, (int, float)) and not isinstance(v, bool):
+            return format_quantity(float(v), u)
         return f"{v} {u}".rstrip()
     return str(q)
 

@@ -11,11 +11,12 @@ as ``surfmet contact`` or ``surfmet hertz-check`` would and returns a flat row o
 * a failed item becomes a row with ``status = "error"`` and its message, and the sweep goes
   on;
 * every finished row is appended to the output files and flushed at once
-  (:class:`RowWriter`): CSV (a header, then one line per row) and JSON Lines (one JSON
-  object per line, every dimensional value as ``{"value", "unit"}``). A sweep that stops,
-  whatever the reason, leaves files whose every complete line is a valid row; ``resume``
-  reads the keys already written and runs only the rest. Rows are written in completion
-  order and carry their ``index`` in the product.
+  (:class:`RowWriter`), whole in every file or in none: CSV (a header, then one line per
+  row) and JSON Lines (one JSON object per line, every dimensional value as
+  ``{"value", "unit"}``). A sweep that stops, whatever the reason, leaves at most a cut
+  last line; ``resume`` validates the files (:func:`valid_rows`), keeps the rows whole
+  in all of them and runs only the rest. The outputs are locked while a run writes them.
+  Rows are written in completion order and carry their ``index`` in the product.
 """
 
 from __future__ import annotations
@@ -192,61 +193,86 @@ def json_row(row: dict[str, tuple[Any, str]]) -> dict[str, Any]:
 
 
 class RowWriter:
-    """Appends rows to a CSV and/or a JSON Lines file, one flushed line per row.
+    """Appends rows to a CSV and/or a JSON Lines file, each row whole or not at all.
 
-    The files are opened (and created) at construction, so that an unwritable path fails
-    before any work. With ``resume`` an existing file is appended to (its header kept);
-    otherwise it is started afresh.
+    The outputs are locked (:func:`surfmet.atomic.output_lock`: a second run on the same
+    file is refused) and opened (created) at construction, so that an unwritable path
+    fails before any work. Each row goes to every file in one write per file, flushed to
+    disk; a write the disk refuses is undone in every file (they keep exactly the rows
+    before it) and raised as one :class:`~surfmet.errors.SurfmetWriteError`.
+
+    With ``resume`` the existing files are validated first (:func:`valid_rows`): a line
+    cut short by a stop and anything after it are dropped, and a row that reached only
+    one of the two files is dropped from the other, so that both hold the same rows;
+    their keys are :attr:`done`. Otherwise the files are started afresh.
     """
 
     def __init__(self, task: str, csv_path: str | Path | None = None,
                  json_path: str | Path | None = None, *, resume: bool = False) -> None:
+        import contextlib
+
+        from surfmet.atomic import output_lock
+
         self.cols = columns(task)
-        self._files: list[Any] = []
-        self._csv = self._json = None
+        self.done: set[str] = set()
+        self._paths = {"csv": csv_path, "json": json_path}
+        self._files: dict[str, Any] = {}
+        self._locks = contextlib.ExitStack()
         try:
-            if csv_path is not None:
-                fresh = not (resume and Path(csv_path).exists()
-                             and Path(csv_path).stat().st_size > 0)
-                self._csv = open(csv_path, "w" if fresh else "a", newline="",
-                                 encoding="utf-8")
-                self._files.append(self._csv)
-                if fresh:
-                    self._write_csv_line([f"{n} [{u}]" if u else n for n, u in self.cols])
-            if json_path is not None:
-                self._json = open(json_path, "a" if resume else "w",
-                                  encoding="utf-8")
-                self._files.append(self._json)
+            for path in (csv_path, json_path):
+                if path is not None:
+                    self._locks.enter_context(output_lock(path))
+            if resume:
+                self.done = _restore(self.cols, csv_path, json_path)
+            header = _csv_line([f"{n} [{u}]" if u else n for n, u in self.cols])
+            for kind, path in self._paths.items():
+                if path is None:
+                    continue
+                keep = resume and Path(path).exists()
+                self._files[kind] = open(path, "ab" if keep else "wb", buffering=0)
+                if kind == "csv" and not (keep and Path(path).stat().st_size > 0):
+                    _append(self._files[kind], header.encode("utf-8"))
         except OSError as exc:
             self.close()
             raise SurfmetInputError(f"cannot write the sweep output: {exc}") from None
-
-    def _write_csv_line(self, values: Sequence[Any]) -> None:
-        buf = io.StringIO()
-        csv.writer(buf, lineterminator="\n").writerow(values)
-        # one write call per row: a stop between rows never leaves half a line behind
-        self._csv.write(buf.getvalue())
-        self._csv.flush()
-        os.fsync(self._csv.fileno())
+        except BaseException:
+            self.close()
+            raise
 
     def write(self, row: dict[str, tuple[Any, str]]) -> None:
-        """Append one row to every open file and flush it to disk."""
-        if self._csv is not None:
+        """Append one row to every open file and flush it to disk (all or nothing)."""
+        from surfmet.errors import SurfmetWriteError
+        from surfmet.units import jsonable
+
+        texts = {}
+        if "csv" in self._files:
             vals = []
             for name, _ in self.cols:
                 v = row.get(name, (None, ""))[0]
                 vals.append("" if v is None else (repr(v) if isinstance(v, float) else v))
-            self._write_csv_line(vals)
-        if self._json is not None:
-            self._json.write(json.dumps(json_row(row), allow_nan=False,
-                                        default=str) + "\n")
-            self._json.flush()
-            os.fsync(self._json.fileno())
+            texts["csv"] = _csv_line(vals)
+        if "json" in self._files:
+            texts["json"] = json.dumps(jsonable(json_row(row)), allow_nan=False) + "\n"
+        marks = {kind: self._files[kind].seek(0, os.SEEK_END) for kind in texts}
+        try:
+            for kind, text in texts.items():
+                _append(self._files[kind], text.encode("utf-8"))
+        except OSError as exc:
+            for kind, pos in marks.items():  # undo the row in every file
+                try:
+                    self._files[kind].truncate(pos)
+                except OSError:
+                    continue
+            raise SurfmetWriteError(
+                f"cannot write row {row.get('index', ('?', ''))[0]} of the sweep to "
+                f"{self._paths[kind]}: {exc.strerror or exc}; the files hold every row "
+                "before it: free some space and run again with --resume") from None
 
     def close(self) -> None:
-        for f in self._files:
+        for f in self._files.values():
             f.close()
-        self._files = []
+        self._files = {}
+        self._locks.close()
 
     def __enter__(self) -> RowWriter:
         return self
@@ -255,23 +281,107 @@ class RowWriter:
         self.close()
 
 
-def done_keys(csv_path: str | Path | None = None,
-              json_path: str | Path | None = None) -> set[str]:
-    """Keys of the rows already written (ok or error) in existing output files; a last line
-    cut short by a stop is ignored."""
-    keys: set[str] = set()
-    if json_path is not None and Path(json_path).exists():
-        for line in Path(json_path).read_text(encoding="utf-8").splitlines():
+def _csv_line(values: Sequence[Any]) -> str:
+    from surfmet.units import valid_text
+
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="\n").writerow(
+        [valid_text(v) if isinstance(v, str) else v for v in values])
+    return buf.getvalue()
+
+
+def _append(fh: Any, data: bytes) -> None:
+    """Write ``data`` at the end of an unbuffered file and force it to disk."""
+    view = memoryview(data)
+    while view:
+        view = view[fh.write(view):]
+    os.fsync(fh.fileno())
+
+
+def _complete(path: str | Path | None) -> str | None:
+    """A file's text up to its last complete line (None when there is no file)."""
+    if path is None or not Path(path).exists():
+        return None
+    text = Path(path).read_bytes().decode("utf-8", errors="replace")
+    return text[:text.rfind("\n") + 1]
+
+
+def _row_ok(key: Any, status: Any) -> bool:
+    return isinstance(key, str) and bool(key) and status in ("ok", "error")
+
+
+def valid_rows(cols: Sequence[tuple[str, str]], csv_path: str | Path | None = None,
+               json_path: str | Path | None = None) -> dict[str, dict[str, str]]:
+    """The whole rows of existing output files: ``{"csv": {key: line}, "json": {...}}``
+    for each file given that exists, in file order.
+
+    A row is whole when its line is complete (ends with a newline), parses, has every
+    column (CSV) or is a JSON object, and has a key and a status; the first row that is
+    not, and everything after it, is dropped (what a stop or a full disk leaves). A
+    repeated key keeps its first row.
+    """
+    out: dict[str, dict[str, str]] = {}
+    text = _complete(csv_path)
+    if text is not None:
+        rows: dict[str, str] = {}
+        header = _csv_line([f"{n} [{u}]" if u else n for n, u in cols])
+        reader = csv.reader(io.StringIO(text))
+        names = [n for n, _ in cols]
+        key, status = names.index("key"), names.index("status")
+        try:
+            first = next(reader, None)
+            if first is not None and _csv_line(first) != header:
+                raise SurfmetInputError(
+                    f"{csv_path}: its columns are not those of this sweep's task; give "
+                    "another file or leave out --resume")
+            for rec in reader:
+                if len(rec) != len(cols) or not _row_ok(rec[key], rec[status]):
+                    break
+                rows.setdefault(rec[key], _csv_line(rec))
+        except csv.Error:
+            pass  # a quoted field cut short: the rows before it stand
+        out["csv"] = rows
+    text = _complete(json_path)
+    if text is not None:
+        rows = {}
+        for line in text.splitlines():
             try:
-                keys.add(json.loads(line)["key"])
-            except (ValueError, KeyError, TypeError):
-                continue
-    if csv_path is not None and Path(csv_path).exists():
-        with open(csv_path, newline="", encoding="utf-8") as fh:
-            for rec in csv.DictReader(fh):
-                if rec.get("key") and rec.get("status") in ("ok", "error"):
-                    keys.add(rec["key"])
-    return keys
+                rec = json.loads(line)
+            except ValueError:
+                break
+            if not (isinstance(rec, dict) and _row_ok(rec.get("key"), rec.get("status"))):
+                break
+            rows.setdefault(rec["key"], line + "\n")
+        out["json"] = rows
+    return out
+
+
+def done_keys(csv_path: str | Path | None = None,
+              json_path: str | Path | None = None, task: str = "contact") -> set[str]:
+    """Keys of the rows already written whole to every output given (:func:`valid_rows`);
+    a row missing from either file is not done."""
+    found = valid_rows(columns(task), csv_path, json_path)
+    given = [k for k, p in (("csv", csv_path), ("json", json_path)) if p is not None]
+    keys = [set(found.get(k, {})) for k in given]
+    return set.intersection(*keys) if keys else set()
+
+
+def _restore(cols: Sequence[tuple[str, str]], csv_path: str | Path | None,
+             json_path: str | Path | None) -> set[str]:
+    """Rewrite the existing outputs (atomically) with only the rows whole in all of them;
+    their keys."""
+    from surfmet.atomic import write_text
+
+    found = valid_rows(cols, csv_path, json_path)
+    paths = {"csv": csv_path, "json": json_path}
+    given = [k for k, p in paths.items() if p is not None]
+    done = set.intersection(*(set(found.get(k, {})) for k in given)) if given else set()
+    for kind, rows in found.items():
+        head = _csv_line([f"{n} [{u}]" if u else n for n, u in cols]) if kind == "csv" else ""
+        text = head + "".join(line for key, line in rows.items() if key in done)
+        if Path(paths[kind]).read_text(encoding="utf-8", errors="replace") != text:
+            write_text(paths[kind], text)
+    return done
 
 
 def run_sweep(items: Iterable[SweepItem], *, workers: int | None = None,

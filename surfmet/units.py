@@ -216,19 +216,33 @@ def quantity(value: Any, unit: str) -> dict[str, Any]:
     return {"value": jsonable(value), "unit": unit}
 
 
+def valid_text(text: str) -> str:
+    """``text`` as valid Unicode: the bytes of a file name that are not UTF-8 (which
+    Python holds as lone surrogates, PEP 383) written as ``\\xNN`` escapes, as Python's
+    ``repr`` and ``ls -b`` show them, so that JSON, CSV and HTML outputs stay valid UTF-8
+    and the name can still be read. Text without such bytes is returned unchanged."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return text.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
+    return text
+
+
 def jsonable(obj: Any) -> Any:
     """Convert ``obj`` recursively into plain JSON types.
 
     Mappings become dicts, sequences and arrays become lists, NumPy scalars become Python
-    numbers, NaN and inf become ``None``, bytes are decoded, anything else unknown is
-    turned into its ``str``.
+    numbers, NaN and inf become ``None``, bytes are decoded, text is made valid Unicode
+    (:func:`valid_text`), anything else unknown is turned into its ``str``.
     """
     import numpy as np
 
-    if obj is None or isinstance(obj, (bool, str)):
+    if obj is None or isinstance(obj, bool):
         return obj
+    if isinstance(obj, str):
+        return valid_text(obj)
     if isinstance(obj, Mapping):
-        return {str(k): jsonable(v) for k, v in obj.items()}
+        return {valid_text(str(k)): jsonable(v) for k, v in obj.items()}
     if isinstance(obj, np.ndarray):
         return [jsonable(v) for v in obj.tolist()]
     if isinstance(obj, (list, tuple)):
@@ -243,15 +257,58 @@ def jsonable(obj: Any) -> Any:
         return bytes(obj).decode("utf-8", errors="replace")
     if hasattr(obj, "isoformat"):
         return obj.isoformat()
-    return str(obj)
+    return valid_text(str(obj))
+
+
+#: The display units of each JSON unit (largest first): text shows a value in the first
+#: whose factor it reaches (else the last), so that it reads as 3.725 nm, 203.8 MPa,
+#: 12.5 µm². JSON states every value in SI with the ASCII unit on the left (powers
+#: as ``^``: ``m^2``, ``1/m^2``; ``""`` for a dimensionless value); text and figures show
+#: it through :func:`split_quantity` / :func:`format_quantity`, in these units.
+DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
+    "m": (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)),
+    "m^2": (("m²", 1.0), ("mm²", 1e-6), ("µm²", 1e-12), ("nm²", 1e-18)),
+    "1/m": (("1/µm", 1e6), ("1/mm", 1e3), ("1/m", 1.0)),
+    "1/m^2": (("1/µm²", 1e12), ("1/mm²", 1e6), ("1/m²", 1.0)),
+    "Pa": (("GPa", 1e9), ("MPa", 1e6), ("kPa", 1e3), ("Pa", 1.0)),
+    "N": (("kN", 1e3), ("N", 1.0), ("mN", 1e-3), ("µN", 1e-6), ("nN", 1e-9)),
+    "N/m": (("N/mm", 1e3), ("N/m", 1.0)),
+    "W": (("W", 1.0), ("mW", 1e-3), ("µW", 1e-6), ("nW", 1e-9)),
+}
+
+
+def display_unit(unit: str) -> str:
+    """A JSON unit as text shows it: powers as superscripts, no unit for ``""``/``"1"``."""
+    if unit in ("", "1"):
+        return ""
+    return unit.replace("^-1", "⁻¹").replace("^2", "²").replace("^3", "³")
+
+
+def split_quantity(value: float | None, unit: str, digits: int = 4) -> tuple[str, str]:
+    """``(number, unit)`` text of an SI value in its most readable display unit
+    (:data:`DISPLAY_UNITS`); ``("n/a", unit)`` for a missing or non-finite value."""
+    if value is None or not math.isfinite(value):
+        return "n/a", display_unit(unit)
+    scales = DISPLAY_UNITS.get(unit)
+    if scales is None:
+        return f"{value:.{digits}g}", display_unit(unit)
+    a = abs(value)
+    shown, f = next(((u, f) for u, f in scales if a >= f), scales[-1])
+    x = value / f
+    # 37267 µm², not 3.727e+04 µm²: whole digits are never cut to an exponent
+    whole = int(math.log10(abs(x))) + 1 if abs(x) >= 1 else 0
+    return f"{x:.{max(digits, whole)}g}", shown
+
+
+def format_quantity(value: float | None, unit: str, digits: int = 4) -> str:
+    """One value with its unit for text output (:func:`split_quantity`), e.g.
+    ``format_quantity(2.037e8, "Pa") == "203.7 MPa"``."""
+    if value is None or not math.isfinite(value):
+        return "n/a"
+    number, shown = split_quantity(value, unit, digits)
+    return f"{number} {shown}".rstrip()
 
 
 def format_length(value: float, digits: int = 4) -> str:
     """Human display of a length in the most readable of nm, µm, mm, m."""
-    if value is None or not math.isfinite(value):
-        return "n/a"
-    a = abs(value)
-    for unit, f in (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)):
-        if a >= f or unit == "nm":
-            return f"{value / f:.{digits}g} {unit}"
-    return f"{value:g} m"  # pragma: no cover
+    return format_quantity(value, "m", digits)

@@ -90,7 +90,7 @@ def test_units_table_covers_every_parameter():
     p = areal_parameters(_sine_grid(4, 64, 1e-6, ny=64))
     assert set(p.as_dict()) == set(PARAMETER_UNITS)
     assert PARAMETER_UNITS["Sa"] == "m" and PARAMETER_UNITS["Ssk"] == ""
-    assert PARAMETER_UNITS["Spd"] == "1/m²" and PARAMETER_UNITS["Sdr"] == "%"
+    assert PARAMETER_UNITS["Spd"] == "1/m^2" and PARAMETER_UNITS["Sdr"] == "%"
 
 
 # --- real files -------------------------------------------------------------------------

@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import os
 from functools import partial
+from pathlib import Path
 
 import pytest
 
 from surfmet.batch import batch_map, default_workers
 from surfmet.errors import SurfmetInputError
 from surfmet.roughness import roughness_file
+
+ROOT = Path(__file__).resolve().parents[1]
 
 # real files of several formats, profiles and areal scans, one with 27 % NaN; x3p-2 is a
 # complete 650 x 650 grid, large enough for a multi-threaded BLAS to split its sums (which
@@ -152,3 +155,42 @@ def test_cli_workers_and_scheduler(files, dask_address, capsys):
     assert [r["file"] for r in serial] == paths
     assert runs["--workers2"] == serial
     _close(serial, runs["--schedulertcp"])
+
+
+_SCRIPT = """
+import sys
+from surfmet.sweep import run_sweep, sweep_items
+
+print("BODY", file=sys.stderr)
+items = sweep_items(task="contact", loads=[2.0, 5.0], radius=0.02, grid=16)
+{call}
+"""
+_SHOW = "print([r['status'][0] for r in rows])"
+
+
+@pytest.mark.parametrize("call, ok", [
+    (f"rows = run_sweep(items, workers=2)\n{_SHOW}", False),
+    (f"rows = run_sweep(items, workers=1)\n{_SHOW}", True),
+    ("def main():\n    return run_sweep(items, workers=2)\n\n\n"
+     f"if __name__ == '__main__':\n    rows = main()\n    {_SHOW}", True),
+], ids=["unguarded", "serial", "guarded"])
+def test_an_unguarded_script_is_told_the_cause(tmp_path, call, ok):
+    """A script that starts worker processes at its top level, without the __main__
+    guard, is refused at once with the cause and the line, its body run once (main: the
+    body ran five times and every row read "worker process died"); guarded or serial,
+    it runs."""
+    import subprocess
+    import sys
+
+    script = tmp_path / "my_sweep.py"
+    script.write_text(_SCRIPT.format(call=call))
+    run = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                         cwd=tmp_path, timeout=300,
+                         env={**os.environ, "PYTHONPATH": str(ROOT)})
+    if ok:
+        assert run.returncode == 0 and "['ok', 'ok']" in run.stdout, run.stderr
+    else:
+        assert run.stderr.count("BODY") == 1, run.stderr
+        assert run.returncode != 0
+        assert f"{script}, line 7" in run.stderr
+        assert 'if __name__ == "__main__":' in run.stderr

@@ -29,7 +29,7 @@ def test_line_contact_matches_carter(capsys):
     assert rec["fx"]["value"] == pytest.approx(-mu * load * (1 - c**2 / a**2), rel=0.01)
     assert rec["stick_area"]["value"] == pytest.approx(2 * c, rel=0.03)
     assert rec["stick_area"]["unit"] == "m"
-    assert rec["creepage"] == {"value": xi, "unit": "1"}
+    assert rec["creepage"] == {"value": xi, "unit": ""}
     assert "positive creepage gives negative fx" in rec["sign_convention"]
 
 
@@ -39,10 +39,10 @@ def test_json_fields_and_free_rolling_of_identical_bodies(capsys):
     assert main([*BASE, "--load", "5N", "--mu", "0.3", "--grid", "24", "--speed", "2",
                  "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
-    for key, unit in (("creepage", "1"), ("fx", "N"), ("fy", "N"), ("pmax", "Pa"),
+    for key, unit in (("creepage", ""), ("fx", "N"), ("fy", "N"), ("pmax", "Pa"),
                       ("approach", "m"), ("contact_area", "m^2"), ("stick_area", "m^2"),
                       ("slip_area", "m^2"), ("frictional_power", "W/(m/s)"),
-                      ("rolling_resistance_coefficient", "1"),
+                      ("rolling_resistance_coefficient", ""),
                       ("frictional_power_at_speed", "W")):
         assert rec[key]["unit"] == unit, key
     assert rec["creepage"]["value"] == 0.0
@@ -63,6 +63,121 @@ def test_bad_input_is_one_line(capsys, args, message):
     assert main([*BASE, *args]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0]
+
+
+PAIR = ["--plate", "surfmet/data/paper_plate.x3p", "--ball", "surfmet/data/paper_ball.x3p"]
+ROUGH = ["rolling-contact", *PAIR, "--radius", "20mm", "--load", "5N",
+         "--materials", "steel,aluminium", "--mu", "0.3"]
+
+
+def test_rough_domain_is_sized_from_the_scans(capsys):
+    """The help's own example on the bundled pair: rough contact spreads beyond 1.5 Hertz
+    radii, so the domain comes from the roughness (as for ``contact``) and holds the whole
+    contact: no loaded element on the domain's edge, and the load carried in full."""
+    from contact.geometry import contact_extent
+
+    assert main([*ROUGH, "--grid", "32", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    e_star = composite_modulus(material("steel"), material("aluminium"))
+    side = rec["grid"]["domain_side"]
+    assert side["unit"] == "m"
+    a = (3 * 5.0 * 0.02 / (4 * e_star)) ** (1 / 3)
+    assert side["value"] > 2 * 1.5 * a  # main's fixed 1.5 a_Hertz did not hold it
+    assert side["value"] >= 2 * 1.25 * contact_extent(0.02, 5.0, e_star, 0.0)
+    assert rec["contact_area"]["value"] > 0
+    assert abs(rec["fx"]["value"]) < 1e-6 * 5.0  # free rolling
+
+
+def test_too_small_a_size_names_the_option(capsys):
+    """A user-fixed domain the contact outgrows is refused in one line naming --size
+    (after the notes on the scans' preparation)."""
+    assert main([*ROUGH, "--grid", "16", "--size", "150um"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert not any(line.startswith("note") for line in err[-1:])
+    assert "--size" in err[-1] and "leading edge" in err[-1]
+
+
+@pytest.mark.parametrize("extra, shape", [
+    (["--load", "5N", "--grid", "100000"], "x"),
+    (["--load", "5N/mm", "--line", "--grid", "100000000"], None),
+    (["--load", "5N", "--grid", "100000", "--viscoelastic",
+      "plate:Eg=3GPa:Er=1GPa:tau=1ms", "--speed", "1"], "x"),
+])
+def test_grid_beyond_memory_is_refused_in_one_line(capsys, monkeypatch, extra, shape):
+    """As ``contact`` and ``hertz-check`` do: a grid that cannot fit is refused before
+    anything is allocated, in one line naming the largest grid that fits (here with 2 GB
+    available; the named grid's estimate fits, the next even one's does not)."""
+    import re
+
+    from contact.bem.memory import SAFETY
+    from contact.tangential import memory
+
+    monkeypatch.setattr(memory, "available_bytes", lambda: 2 * 10**9)
+    assert main([*BASE, "--mu", "0.3", *extra]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "largest grid that fits" in err[0]
+    best = int(re.search(r"--grid (\d+)", err[0]).group(1))
+    if shape:
+        assert f"{best} x {best} elements" in err[0]
+    line = "--line" in extra
+    budget = SAFETY * 2e9
+    assert memory.estimate_rolling_bytes(best, line=line) <= budget
+    assert memory.estimate_rolling_bytes(best + 2, line=line) > budget
+
+
+def test_memory_estimate_bounds_the_measured_peak():
+    """The estimate is an upper bound of what a 3D solve adds to the peak resident set,
+    measured in a fresh interpreter after a small warm-up solve; the peak is reset after
+    the warm-up (Linux ``clear_refs``), so that compiling the kernels does not hide it."""
+    import subprocess
+    import sys
+
+    from contact.tangential.memory import estimate_rolling_bytes
+
+    code = (
+        "from surfmet.mechanics.rolling_contact import solve_rolling_contact as s\n"
+        "def kb(key):\n"
+        "    return next(int(x.split()[1]) for x in open('/proc/self/status')\n"
+        "                if x.startswith(key))\n"
+        "s(0.02, 5.0, 'steel,aluminium', 0.3, grid=16)\n"
+        "open('/proc/self/clear_refs', 'w').write('5')\n"
+        "r = kb('VmRSS:')\n"
+        "s(0.02, 5.0, 'steel,aluminium', 0.3, grid=192)\n"
+        "print((kb('VmHWM:') - r) * 1024)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    added = int(out.stdout.split()[-1])
+    assert 0 < added <= estimate_rolling_bytes(192)
+
+
+def test_dissipation_is_never_negative_and_convergence_is_stated(capsys):
+    """mu = 1e9: every element sticks, nothing slips, so nothing dissipates (main gave a
+    negative frictional power: -q . s of the solver's tolerance-level stick slip); the
+    record states its convergence as ``contact`` does (iterations, residual, converged)."""
+    assert main([*BASE, "--load", "5N", "--materials", "steel,aluminium", "--mu", "1e9",
+                 "--grid", "32", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["slip_area"]["value"] == 0.0
+    assert rec["frictional_power"]["value"] == 0.0
+    assert rec["converged"] is True and rec["iterations"] >= 1
+    assert 0 <= rec["residual"]["value"] < 1e-3
+    assert rec["solver"]["tolerance"] == 1e-6
+
+
+def test_slip_elements_dissipate_mu_p_slip():
+    """With slip, the dissipation is the sum over the slip elements of mu p |s| dA (the
+    traction opposes the slip there), and positive."""
+    import numpy as np
+
+    from contact.tangential.kernels import SLIP
+    from surfmet.mechanics.rolling_contact import solve_rolling_contact
+
+    r = solve_rolling_contact(0.02, 5.0, "steel,aluminium", 0.3, creepage=2e-4,
+                              grid=32).result
+    slip = r.state == SLIP
+    expected = float((0.3 * r.p * np.hypot(r.s[0], r.s[1]))[slip].sum() * r.grid.area)
+    assert slip.any() and expected > 0
+    assert r.frictional_power == pytest.approx(expected, rel=1e-9)
 
 
 def test_speed_takes_units_like_every_quantity(capsys):

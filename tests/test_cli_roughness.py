@@ -46,8 +46,8 @@ def ball(tmp_path):
 def test_one_file_json_shape(capsys, scan):
     rc, out, _ = _run(capsys, "roughness", str(scan), "--json")
     assert rc == 0
-    rec = json.loads(out)
-    assert set(rec) == {"file", "parameters", "settings"}
+    rec = json.loads(out)[0]
+    assert set(rec) == {"file", "status", "parameters", "settings"}
     assert rec["file"] == str(scan)
     for sym, q in rec["parameters"].items():
         assert set(q) == {"value", "unit"}
@@ -73,7 +73,7 @@ def test_filters_and_spikes_are_recorded(capsys, scan):
     rc, out, _ = _run(capsys, "roughness", str(scan), "--lc", "50um", "--ls", "2um",
                       "--spikes", "--level", "poly:2", "--json")
     assert rc == 0
-    s = json.loads(out)["settings"]
+    s = json.loads(out)[0]["settings"]
     assert s["lc"] == {"value": pytest.approx(50e-6), "unit": "m"}
     assert s["ls"] == {"value": pytest.approx(2e-6), "unit": "m"}
     assert [f["kind"] for f in s["filters"]] == ["S", "L"]
@@ -100,7 +100,7 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc_m", "ls_m",
                                   "n_sampling", "conditions", "caveats", "Sa_m"]
     assert rows[0]["standard"].startswith("ISO 25178-2")
-    assert "Ssk" in rows[0] and "Spd_1/m²" in rows[0]
+    assert "Ssk" in rows[0] and "Spd_1/m^2" in rows[0]
 
 
 def test_human_table(capsys, scan):
@@ -153,7 +153,7 @@ def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, t
     path = str(realdata("test.gwy"))
     rc, out, _ = _run(capsys, "roughness", path, "--json")
     assert rc == 0
-    caveats = json.loads(out)["settings"]["caveats"]
+    caveats = json.loads(out)[0]["settings"]["caveats"]
     assert any("lateral unit" in c for c in caveats)
     assert any("height unit" in c for c in caveats)
     rc, out, _ = _run(capsys, "roughness", path)
@@ -164,7 +164,7 @@ def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, t
     assert "uncalibrated lateral unit" in row["caveats"]
     # a calibrated file has none
     rc, out, _ = _run(capsys, "roughness", str(realdata("x3p-2.x3p")), "--json")
-    assert "caveats" not in json.loads(out)["settings"]
+    assert "caveats" not in json.loads(out)[0]["settings"]
 
 
 def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp_path):
@@ -181,7 +181,7 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "none", "--level", "none",
                       "--json")
     assert rc == 0
-    rec = json.loads(out)
+    rec = json.loads(out)[0]
     rku = rec["parameters"]["Rku"]["value"]
     # numpy truth: the kurtosis about the mean line (z = 0), as ISO defines Rku
     assert rku == pytest.approx(np.mean(z**4) / np.mean(z**2) ** 2, rel=1e-9)
@@ -197,7 +197,7 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     surfmet.write(Topography(zz, 1e-6, 1e-6), scan)
     rc, out, _ = _run(capsys, "roughness", str(scan), "--spikes", "--json")
     assert rc == 0
-    s = json.loads(out)["settings"]
+    s = json.loads(out)[0]["settings"]
     assert s["spikes"]["count"] > 0 and s["spike_diagnosis"]["suspected"]
     assert "--spikes" not in s["spike_diagnosis"]["message"]
     assert "after removing" in s["spike_diagnosis"]["message"]
@@ -226,7 +226,7 @@ def test_areal_default_leaves_out_the_filter_edges_and_gets_the_closed_form_sq(c
     rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "0.8mm", "--level", "none",
                       "--json")
     assert rc == 0
-    rec = json.loads(out)
+    rec = json.loads(out)[0]
     band = rec["settings"]["filters"][0]["discarded_points_each_edge"]["rows"]
     assert band == 100  # λc/2 = 400 µm = 100 points
     inner = filtered[band:n - band, band:n - band]
@@ -235,8 +235,21 @@ def test_areal_default_leaves_out_the_filter_edges_and_gets_the_closed_form_sq(c
     # keeping the bands with the moment correction misses the whole surface's Sq by > 1 %
     rc, out, _ = _run(capsys, "roughness", str(path), "--lc", "0.8mm", "--level", "none",
                       "--edge", "moment", "--json")
-    kept = json.loads(out)["parameters"]["Sq"]["value"]
+    kept = json.loads(out)[0]["parameters"]["Sq"]["value"]
     assert kept < 0.99 * filtered.std()
+
+
+def test_json_has_one_shape_for_one_file_or_several(capsys, scan):
+    """A list of per-file records whatever the number of files, so that a script reading
+    ``roughness *.x3p --json`` does not break when the glob matches one file (main: an
+    object for one file, a list for several)."""
+    rc, one, _ = _run(capsys, "roughness", str(scan), "--json")
+    assert rc == 0
+    rc, two, _ = _run(capsys, "roughness", str(scan), str(scan), "--json", "--workers", "1")
+    assert rc == 0
+    one, two = json.loads(one), json.loads(two)
+    assert isinstance(one, list) and len(one) == 1 and len(two) == 2
+    assert one[0] == two[0] == two[1]
 
 
 def _flip_exponent_bit(path, index):
@@ -285,11 +298,11 @@ def test_a_ball_levelled_by_a_plane_is_said_to_be_dominated_by_its_form(capsys):
 
     data = Path(surfmet.__file__).parent / "data"
     assert main(["roughness", str(data / "paper_ball.x3p"), "--json"]) == 0
-    rec = json.loads(capsys.readouterr().out)
+    rec = json.loads(capsys.readouterr().out)[0]
     caveats = rec["settings"].get("caveats", [])
     assert any("a curved form dominates" in c and "--level sphere" in c for c in caveats)
     assert rec["parameters"]["Sa"]["value"] > 50e-6  # the premise: Sa is the cap's
     for argv in (["paper_ball.x3p", "--level", "sphere"], ["paper_plate.x3p"]):
         assert main(["roughness", str(data / argv[0]), *argv[1:], "--json"]) == 0
-        rec = json.loads(capsys.readouterr().out)
+        rec = json.loads(capsys.readouterr().out)[0]
         assert not any("form dominates" in c for c in rec["settings"].get("caveats", []))

@@ -59,7 +59,7 @@ def test_stated_conditions_reproduce_the_printout_without_flags(capsys, mitutoyo
                                                                 printout):
     rc, out, _ = _run(capsys, "roughness", str(mitutoyo_npz), "--json")
     assert rc == 0
-    rec = json.loads(out)
+    rec = json.loads(out)[0]
     cond = rec["settings"]["conditions"]
     assert cond["standard"]["value"] == "iso4287" and "file" in cond["standard"]["why"]
     assert cond["lc"]["value"] == 2.5e-3 and cond["lc"]["applied"] is False
@@ -73,7 +73,32 @@ def test_stated_conditions_reproduce_the_printout_without_flags(capsys, mitutoyo
     for sym in ("A1", "A2"):
         assert got[sym]["unit"] == "m"
         assert abs(got[sym]["value"] * 1e8 - printout.results[sym]) <= printout.digits[sym]
-    assert rec["settings"]["rk_line"] == {"value": "levels", "why": cond["lc"]["why"]}
+    assert rec["settings"]["rk_line"]["value"] == "levels"
+    assert "instrument's own Rk construction" in rec["settings"]["rk_line"]["why"]
+    assert cond["rk_line"] == rec["settings"]["rk_line"]
+
+
+@pytest.mark.realdata
+def test_the_export_itself_gives_the_printed_rk_family(capsys, printout):
+    """The Mitutoyo export read directly: its Rk construction is part of the evaluation
+    it states, so the defaults reproduce the printed Rpk, Rvk, Mr1, Mr2, A1, A2 to the
+    printed digits, and the output says which construction and why (main: the secant
+    construction, Rpk 2.731 against the printed 2.912 µm, Mr1 6.77 against 5.822 %)."""
+    from conftest import REALDATA, shared_file
+
+    path = str(shared_file(REALDATA / "mitutoyo_2_mock.xlsx"))
+    rc, out, _ = _run(capsys, "roughness", path, "--json")
+    assert rc == 0
+    rec = json.loads(out)[0]
+    got = rec["parameters"]
+    for sym in ("Rpk", "Rvk", "Mr1", "Mr2"):
+        assert abs(got[sym]["value"] - printout.results[sym]) <= 1.01 * printout.digits[sym]
+    for sym in ("A1", "A2"):
+        assert abs(got[sym]["value"] * 1e8 - printout.results[sym]) <= printout.digits[sym]
+    rk = rec["settings"]["conditions"]["rk_line"]
+    assert rk["value"] == "levels" and "Mitutoyo" in rk["why"]
+    rc, text, _ = _run(capsys, "roughness", path)
+    assert "Rk construction levels" in text
 
 
 def test_standard_flag_and_lc_none(capsys, sine_profile):
@@ -84,7 +109,7 @@ def test_standard_flag_and_lc_none(capsys, sine_profile):
                           "--level", "none",
                           "--n-sampling", "4", "--json")
         assert rc == 0
-        rec = json.loads(out)
+        rec = json.loads(out)[0]
         s = rec["settings"]
         assert s["conditions"]["standard"]["value"] == std
         assert s["conditions"]["standard"]["why"] == "given by the user"

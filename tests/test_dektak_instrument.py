@@ -89,7 +89,7 @@ def test_the_cli_command_reproduces_the_numbers_in_the_file_header(realdata, cap
     stated = surfmet.read(path).metadata["instrument_results"]
     assert main(["roughness", str(path), "--window", "468um:733um", "--level", "plane",
                  "--json"]) == 0
-    got = json.loads(capsys.readouterr().out)["parameters"]
+    got = json.loads(capsys.readouterr().out)[0]["parameters"]
     for ours, theirs, half_digit in (("Ra", "Ra", 0.000005e-6), ("Rq", "Rq", 0.000005e-6),
                                      ("Rsk", "Skew", 0.005)):
         assert got[ours]["unit"] == stated[theirs]["unit"]

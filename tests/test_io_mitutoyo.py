@@ -52,8 +52,29 @@ def test_the_23_printed_results_in_si(mit2):
     assert list(res) == [RENAMED.get(k, k) for k, _, _ in PRINTED]
     for key, value, unit in PRINTED:
         q = res[RENAMED.get(key, key)]
-        assert q["value"] == pytest.approx(value * SI[unit], rel=1e-12)
-        assert q["unit"] == ("m" if unit == "µm" else "")
+        if key in ("A1", "A2"):  # printed in µm·%, stated in m as surfmet's A1, A2
+            assert q == {"value": pytest.approx(value * 1e-8, rel=1e-12), "unit": "m"}
+        elif unit == "%":  # as surfmet states Mr1, Mr2
+            assert q == {"value": value, "unit": "%"}
+        else:
+            assert q["value"] == pytest.approx(value * SI[unit], rel=1e-12)
+            assert q["unit"] == ("m" if unit == "µm" else "")
+
+
+@pytest.mark.realdata
+def test_printed_areas_in_the_units_surfmet_uses(mit2):
+    """The printout's A1, A2 (no unit printed) are Rpk Mr1 / 2 and Rvk (100 % - Mr2) / 2
+    of its own printed values (ISO 13565-2) to the printed digits: read in metres, they
+    equal those products with Mr in % over 100, surfmet's own definition and units."""
+    from surfmet.roughness import roughness
+
+    ours = roughness(mit2).parameters  # name -> (value, unit)
+    res = mit2.metadata["instrument_results"]
+    v = {k: res[k]["value"] for k in ("Rpk", "Rvk", "Mr1", "Mr2", "A1", "A2")}
+    assert v["A1"] == pytest.approx(v["Rpk"] * v["Mr1"] / 100 / 2, rel=1e-3)
+    assert v["A2"] == pytest.approx(v["Rvk"] * (100 - v["Mr2"]) / 100 / 2, rel=1e-3)
+    for key in ("Mr1", "Mr2", "A1", "A2", "Rpk"):
+        assert res[key]["unit"] == ours[key][1], key
 
 
 @pytest.mark.realdata

@@ -84,6 +84,28 @@ def test_abbott_firestone_of_uniform_heights_is_a_line():
     close(fig)
 
 
+def test_abbott_firestone_frames_the_curve_not_its_spikes():
+    """Gaussian heights (Sq 1 µm) with a few spikes of +-100 µm kept: the height axis
+    frames the curve (main: -100...150 µm, the curve a flat line) and says it is clipped;
+    without the spikes nothing is clipped."""
+    from surfmet.plots.areal import abbott_firestone
+
+    rng = np.random.default_rng(5)
+    z = rng.standard_normal((200, 200)) * 1e-6
+    fig = abbott_firestone(Topography(z, 1e-6, 1e-6))
+    lo, hi = fig.axes[0].get_ylim()
+    assert lo <= z.min() * 1e6 and hi >= z.max() * 1e6  # the whole curve
+    assert not any("clipped" in t.get_text() for t in fig.axes[0].texts)
+    close(fig)
+    z[rng.random(z.shape) < 2e-4] = 150e-6
+    z[rng.random(z.shape) < 2e-4] = -100e-6
+    fig = abbott_firestone(Topography(z, 1e-6, 1e-6))
+    lo, hi = fig.axes[0].get_ylim()
+    assert -12 < lo < -2.5 and 2.5 < hi < 12  # µm: the core and its tails, visible
+    assert any("clipped" in t.get_text() for t in fig.axes[0].texts)
+    close(fig)
+
+
 def test_abbott_firestone_draws_the_sk_construction():
     from surfmet.plots.areal import abbott_firestone
     from surfmet.roughness import roughness
@@ -207,7 +229,7 @@ def test_pressure_map_numbers_every_cluster(tmp_path, seed):
     assert np.array_equal(np.ma.getmaskarray(drawn), p <= 0)  # no contact: blank
     assert np.allclose(drawn.filled(0.0), p / 1e6)
     assert f"{k} contact clusters" in ax.get_title()
-    # "1" sits on the cluster carrying the most load
+    # "1" names the cluster carrying the most load, from its bounding box's top right
     from skimage.measure import label
 
     lab = label(p > 0, connectivity=1)
@@ -215,13 +237,40 @@ def test_pressure_map_numbers_every_cluster(tmp_path, seed):
     biggest = np.argmax(loads) + 1
     jj, ii = np.nonzero(lab == biggest)
     one = next(t for t in ax.texts if t.get_text() == "1")
-    assert one.get_position()[0] * 1e-6 == pytest.approx(res.x[ii].mean())
-    assert one.get_position()[1] * 1e-6 == pytest.approx(res.y[jj].mean())
+    assert one.xy[0] * 1e-6 == pytest.approx(res.x[ii].max() + res.dx / 2)
+    assert one.xy[1] * 1e-6 == pytest.approx(res.y[jj].max() + res.dy / 2)
     assert_not_blank(fig)
     close(fig)
     # with a label budget, only the largest are numbered and the title says so
     fig = pressure_map(res, max_labels=2)
     assert fig.surfmet_labelled == 2 and "largest 2 numbered" in fig.axes[0].get_title()
+    close(fig)
+
+
+def test_pressure_map_labels_leave_small_clusters_visible():
+    """Clusters of 2 x 2 cells (the 3-4 cell clusters of the demo's maps): no number
+    covers a loaded cell (main: each number sat on the cluster it named, hiding it)."""
+    from surfmet.plots.contact import pressure_map
+
+    p = np.zeros((40, 40))
+    for cy, cx in ((8, 8), (8, 28), (20, 18), (30, 8), (31, 30)):
+        p[cy:cy + 2, cx:cx + 2] = 1e8 * (1 + 0.1 * cx)
+    res = _result(p)
+    fig = pressure_map(res, zoom=False)
+    ax = fig.axes[0]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    labels = [t.get_window_extent(renderer) for t in ax.texts if t.get_text().isdigit()]
+    assert len(labels) == 5
+    jj, ii = np.nonzero(p > 0)
+    for j, i in zip(jj, ii):
+        x0, y0 = ax.transData.transform(((res.x[i] - res.dx / 2) * 1e6,
+                                         (res.y[j] - res.dy / 2) * 1e6))
+        x1, y1 = ax.transData.transform(((res.x[i] + res.dx / 2) * 1e6,
+                                         (res.y[j] + res.dy / 2) * 1e6))
+        for b in labels:
+            overlap = min(x1, b.x1) - max(x0, b.x0) > 0.5 and min(y1, b.y1) - max(y0, b.y0) > 0.5
+            assert not overlap, ((j, i), b)
     close(fig)
 
 

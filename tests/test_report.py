@@ -20,9 +20,12 @@ from surfmet.roughness import roughness
 
 EVIL = '<script>alert("x")</script> & <img src=x onerror=alert(1)>'
 
-# shown unit of each SI unit (what a metrologist expects to read)
-SHOWN = {"m": "µm", "m·%": "µm·%", "1/m²": "1/mm²", "1/m": "1/µm", "%": "%", "°": "°", "": ""}
-FACTOR = {"m": 1e-6, "m·%": 1e-6, "1/m²": 1e6, "1/m": 1e6, "%": 1.0, "°": 1.0, "": 1.0}
+# the units a value may be shown in, for each SI unit, with their factors: the most
+# readable of them (1 <= number < 1000 unless it is the largest or smallest)
+SHOWN = {"m": {"m": 1.0, "mm": 1e-3, "µm": 1e-6, "nm": 1e-9},
+         "1/m^2": {"1/µm²": 1e12, "1/mm²": 1e6, "1/m²": 1.0},
+         "1/m": {"1/µm": 1e6, "1/mm": 1e3, "1/m": 1.0},
+         "%": {"%": 1.0}, "°": {"°": 1.0}, "": {"": 1.0}}
 
 
 class Page(HTMLParser):
@@ -100,8 +103,14 @@ def check_parameters(page: Page, res) -> None:
             continue
         assert float(r["si"]) == value  # the exact SI value, bit for bit
         name, shown, unit_text = r["cells"]
-        assert name == sym and unit_text == SHOWN[unit]
-        assert float(shown) * FACTOR[unit] == pytest.approx(value, rel=1e-4, abs=1e-300)
+        assert name == sym and unit_text in SHOWN[unit]
+        factors = SHOWN[unit]
+        assert float(shown) * factors[unit_text] == pytest.approx(value, rel=1e-4,
+                                                                  abs=1e-300)
+        f = factors[unit_text]
+        if 0 < abs(value) and f not in (max(factors.values()), min(factors.values())):
+            step = min(g for g in factors.values() if g > f) / f  # to the next unit up
+            assert 1 <= abs(float(shown)) < step, (sym, shown, unit_text)
 
 
 @pytest.fixture
@@ -233,3 +242,28 @@ def test_hertz_options_on_the_command_line(tmp_path, evil_scan, capsys):
     assert 2e-7 * 2e-3 / a0**2 > 20 * 0.05
     assert "Hertz check" in body and "Hertz does not hold" in body
     assert "Hertz holds" not in body
+
+
+def test_hertz_table_puts_each_pair_side_by_side():
+    """a beside the contact radius, δ beside the approach, p0 beside pmax, each with the
+    difference (main: the keys sorted apart, no row held both)."""
+    from surfmet.report_hertz import hertz_html
+
+    check = {"hertz_holds": True, "alpha": {"value": 0.01, "unit": ""},
+             "hertz": {"a": {"value": 1.368e-4, "unit": "m"},
+                       "delta": {"value": 9.356e-7, "unit": "m"},
+                       "p0": {"value": 2.552e8, "unit": "Pa"}},
+             "bem": {"contact_radius": {"value": 1.40e-4, "unit": "m"},
+                     "approach": {"value": 1.0e-6, "unit": "m"},
+                     "pmax": {"value": 3.0e8, "unit": "Pa"},
+                     "area_fraction": {"value": 0.3, "unit": ""}}}
+    body = hertz_html(check, None, None)
+    rows = [r for r in body.split("<tr>") if "</td>" in r]
+    text = {r.split("</td>")[0].replace("<td>", ""): r for r in rows}
+    pairs = (("contact radius", "136.8 µm", "140 µm", "+2.3 %"),
+             ("approach", "935.6 nm", "1 µm", "+6.9 %"),
+             ("peak pressure", "255.2 MPa", "300 MPa", "+17.6 %"))
+    for name, hz, bem, diff in pairs:
+        (row,) = [r for k, r in text.items() if k.startswith(name)]
+        assert hz in row and bem in row and diff in row
+    assert any(k.startswith("area_fraction") for k in text)

@@ -3,6 +3,7 @@ incremental files that survive a kill, --resume, and the CLI's refusals."""
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import os
@@ -185,3 +186,143 @@ def test_rolling_cli_positions_json(capsys):
     assert len(rec["tracks"]) == 2 and rec["tracks"][1]["offset"]["value"] == [-1e-4, 1e-4]
     assert rec["mean_moments"]["unit"] == "N m" and rec["loads"]["unit"] == "N"
     assert np.isfinite(rec["lambda_eff"]["value"])
+
+
+SMOOTH = ["sweep", "--task", "contact", "--radius", "20mm", "--loads", "1N:10N:6",
+          "--grid", "32", "--workers", "1", "--quiet"]
+
+
+def _tables(c, j):
+    with open(c, newline="") as fh:
+        rows = list(csv.reader(fh))
+    recs = [json.loads(line) for line in j.read_text().splitlines()]
+    return rows[0], rows[1:], recs
+
+
+def test_resume_drops_a_cut_row_and_completes_both_files(tmp_path, capsys):
+    """A stop mid-write leaves the CSV's last row cut after its status and the JSON one
+    row behind, its last line cut too. --resume runs the cut row and the row the JSON
+    lacks again, so that both files hold every row once, whole (main counted both rows
+    done: 2 rows lost in JSON, the cut CSV row merged with the next one)."""
+    c, j = tmp_path / "s.csv", tmp_path / "s.jsonl"
+    assert main([*SMOOTH, "--csv", str(c), "--json", str(j)]) == 0
+    header, _, recs = _tables(c, j)
+    whole = {r["index"]: r for r in recs}
+    lines = c.read_text().splitlines(keepends=True)
+    cut = lines[5][:lines[5].index(",ok,") + 4]  # row 4 cut after its status
+    c.write_text("".join(lines[:5]) + cut)
+    jl = j.read_text().splitlines(keepends=True)
+    j.write_text("".join(jl[:3]) + jl[3][:40])  # rows 0-2, then half of row 3
+    capsys.readouterr()
+    assert main([*SMOOTH, "--csv", str(c), "--json", str(j), "--resume"]) == 0
+    assert "3 of 6 items already written" in capsys.readouterr().err
+    header2, rows2, recs2 = _tables(c, j)
+    assert header2 == header
+    assert all(len(r) == len(header) for r in rows2)
+    assert sorted(int(r[0]) for r in rows2) == list(range(6))
+    assert sorted(r["index"] for r in recs2) == list(range(6))
+    for r in recs2:  # the rerun rows equal the first run's (the solve is deterministic)
+        assert r == whole[r["index"]]
+
+
+def test_two_runs_on_one_file_are_refused(tmp_path, capsys):
+    """While one run writes a file, a second (e.g. another --resume) is refused in one
+    line instead of interleaving rows (main: duplicated rows and a garbled line)."""
+    c = tmp_path / "s.csv"
+    with RowWriter("contact", c):
+        assert main([*SMOOTH, "--csv", str(c), "--resume"]) == 1
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and "being written by another run" in err[0]
+        assert str(os.getpid()) in err[0]
+    # released at the end: the next run may write
+    assert main([*SMOOTH, "--csv", str(c), "--resume"]) == 0
+
+
+def test_a_full_disk_keeps_whole_rows_and_resume_finishes(tmp_path):
+    """The disk refuses a row half-way (file size capped): one line, exit 1, both files
+    hold the same whole rows; a --resume with room finishes the sweep."""
+    import resource
+
+    c, j = tmp_path / "s.csv", tmp_path / "s.jsonl"
+    cmd = [sys.executable, "-m", "surfmet", *SMOOTH, "--csv", str(c), "--json", str(j)]
+
+    def cap():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (3000, 3000))
+
+    run = subprocess.run(cmd, capture_output=True, text=True, preexec_fn=cap, cwd=ROOT,
+                         timeout=300)
+    lines = [ln for ln in run.stderr.splitlines() if ln.startswith("surfmet:")]
+    assert run.returncode == 1 and len(lines) == 1 and "cannot write row" in lines[0], \
+        run.stderr
+    _, rows, recs = _tables(c, j)
+    assert 0 < len(rows) < 6 and all(len(r) == len(_tables(c, j)[0]) for r in rows)
+    assert [int(r[0]) for r in rows] == [r["index"] for r in recs]
+    done = subprocess.run([*cmd, "--resume"], capture_output=True, text=True, cwd=ROOT,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    _, rows, recs = _tables(c, j)
+    assert sorted(int(r[0]) for r in rows) == sorted(r["index"] for r in recs) == \
+        list(range(6))
+
+
+def _descendants(root: int) -> set[int]:
+    """Ids of the live (non-zombie) processes below ``root`` (Linux /proc)."""
+    parent = {}
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if stat[0] != "Z":
+                parent[int(d.name)] = int(stat[1])
+    found, frontier = set(), {root}
+    while frontier:
+        frontier = {p for p, pp in parent.items() if pp in frontier} - found
+        found |= frontier
+    return found
+
+
+def _live(pids: set[int]) -> set[int]:
+    out = set()
+    for p in pids:
+        try:
+            state = Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if state != "Z":
+            out.add(p)
+    return out
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads Linux /proc")
+def test_killing_the_sweep_ends_its_workers(tmp_path):
+    """SIGKILL to the main process of ``sweep --workers 2``: its two workers and the
+    forkserver end within seconds (main: they ran on indefinitely, ~220 MB each)."""
+    cmd = [sys.executable, "-m", "surfmet", "sweep", "--plates", PLATE, "--radius", "20mm",
+           "--loads", "1N:20N:8", "--grid", "128", "--workers", "2", "--quiet",
+           "--csv", str(tmp_path / "s.csv")]
+    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        below: set[int] = set()
+        while time.monotonic() < deadline and proc.poll() is None:
+            below = _descendants(proc.pid)
+            if len(below) >= 4:  # resource tracker, forkserver, two workers
+                break
+            time.sleep(0.1)
+        assert proc.poll() is None and len(below) >= 4, "the workers never started"
+        time.sleep(1.0)  # the workers are inside their first item
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+        deadline = time.monotonic() + 20
+        while _live(below) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert not _live(below), f"left running: {sorted(_live(below))}"
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)  # only this test's processes

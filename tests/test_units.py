@@ -121,3 +121,51 @@ def test_cli_refuses_a_load_in_meganewtons(capsys):
                "steel,aluminium"])
     err = capsys.readouterr().err
     assert rc == 1 and "case-sensitive" in err and len(err.strip().splitlines()) == 1
+
+
+# issue 25, item 19: one formatter for text, one unit vocabulary for JSON
+@pytest.mark.parametrize(("value", "unit", "text"), [
+    (2.03719e8, "Pa", "203.7 MPa"), (0.0037246e-6, "m", "3.725 nm"),
+    (3.7267e-8, "m^2", "37267 µm²"), (2.7466e9, "1/m^2", "2747 1/mm²"),
+    (5.44e6, "1/m", "5.44 1/µm"), (1.781e-10, "N", "0.1781 nN"), (0.2, "", "0.2"),
+    (float("nan"), "Pa", "n/a"), (2e11, "Pa", "200 GPa"),
+])
+def test_format_quantity_reads_as_a_metrologist_writes(value, unit, text):
+    from surfmet.units import format_quantity
+
+    assert format_quantity(value, unit) == text
+
+
+def test_json_units_share_one_vocabulary(capsys):
+    """Every unit in the JSON of roughness, spectrum, contact and rolling-contact is
+    spelled in the one ASCII vocabulary (``m^2``, ``1/m^2``, ``""`` for a ratio): no
+    superscripts, no ``um``, no ``"1"`` (main: ``1/m²`` in roughness, ``1/m^2`` in
+    spectrum, ``"1"`` and ``""`` side by side)."""
+    import json
+
+    from surfmet.cli import main
+
+    plate = "surfmet/data/paper_plate.x3p"
+    runs = [["roughness", plate, "--json"], ["spectrum", plate, "--json"],
+            ["contact", "--radius", "20mm", "--load", "5N", "--materials",
+             "steel,aluminium", "--grid", "32", "--json"],
+            ["rolling-contact", "--radius", "20mm", "--load", "5N", "--materials",
+             "steel,aluminium", "--mu", "0.3", "--grid", "16", "--json"]]
+    units: set[str] = set()
+
+    def collect(obj):
+        if isinstance(obj, dict):
+            if set(obj) >= {"value", "unit"} and isinstance(obj["unit"], str):
+                units.add(obj["unit"])
+            for v in obj.values():
+                collect(v)
+        elif isinstance(obj, list):
+            for v in obj:
+                collect(v)
+
+    for argv in runs:
+        assert main(argv) == 0, argv
+        collect(json.loads(capsys.readouterr().out))
+    assert {"m", "m^2", "1/m^2", "Pa", ""} <= units
+    bad = {u for u in units if u == "1" or "um" in u or any(c in u for c in "²³⁻¹µ")}
+    assert not bad, bad

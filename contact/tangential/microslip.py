@@ -119,7 +119,7 @@ def microslip_sweep(
         r = microslip_dissipation(radius, ball, plate, float(w[k]), mu,
                                   traction_ratio=traction_ratio, roughness=roughness,
                                   grid=grid, half_width=half)
-        forces[k] = max(r.frictional_power, 0.0)
+        forces[k] = r.frictional_power  # never negative: only slip elements dissipate
         creep[k] = r.creepage.xi
         slip_fraction[k] = r.slip_area / max(r.contact_area, 1e-300)
         edge[k] = r.edge_dissipation_share

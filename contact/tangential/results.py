@@ -59,6 +59,11 @@ class TangentialResult:
     iterations : int
         Normal-tangential (Panagiotopoulos) iterations; in 3D steady rolling of
         dissimilar bodies, the pressure solves done inside the Newton loop.
+    outer, matvecs : int
+        Active-set iterations of the last tangential solve and the FFT operator products
+        it used (0 where not recorded).
+    tol : float
+        The tolerance it was solved to (NaN where not recorded).
     """
 
     grid: Grid
@@ -72,6 +77,9 @@ class TangentialResult:
     approach: float
     rolling: bool
     iterations: int
+    outer: int = 0
+    matvecs: int = 0
+    tol: float = float("nan")
 
     @property
     def fn(self) -> float:
@@ -118,11 +126,22 @@ class TangentialResult:
         """Number of slip elements."""
         return int(np.count_nonzero(self.state == SLIP))
 
+    def _dissipation(self) -> np.ndarray:
+        """Frictional dissipation per element over dA, -q . s on the slip elements (Pa).
+
+        Only slip elements dissipate: there the traction opposes the slip, so each term
+        is mu p |s| >= 0. On adhesion elements the slip is zero up to the solver's
+        tolerance, and -q . s of that remainder (of either sign, and large when mu is)
+        is not dissipation."""
+        w = -(self.q * self.s).sum(axis=0)
+        return np.where(self.state == SLIP, w, 0.0)
+
     @property
     def frictional_power(self) -> float:
-        """Frictional dissipation per unit rolling speed, -sum(q . s) dA (N = J/m rolled;
-        N/m = J/m^2 in plane strain). In a shift, the frictional work of the step (J)."""
-        return float(-(self.q * self.s).sum() * self.grid.area)
+        """Frictional dissipation per unit rolling speed, -sum(q . s) dA over the slip
+        elements (N = J/m rolled; N/m = J/m^2 in plane strain); never negative. In a
+        shift, the frictional work of the step (J)."""
+        return float(self._dissipation().sum() * self.grid.area)
 
     @property
     def edge_dissipation_share(self) -> float:
@@ -143,7 +162,7 @@ class TangentialResult:
         core[:, [0, -1]] = False
         if inside.shape[0] > 1:
             core[[0, -1], :] = False
-        w = -(self.q * self.s).sum(axis=0)
+        w = self._dissipation()
         total = float(w.sum())
         return float(w[inside & ~core].sum() / total) if total > 0 else 0.0
 

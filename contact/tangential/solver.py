@@ -20,6 +20,7 @@ have settled.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -230,19 +231,25 @@ def solve_tangential(
 def small_residual(s: np.ndarray, state: np.ndarray, e: np.ndarray, w: np.ndarray,
                    u0: np.ndarray, g: np.ndarray, dx: float, rolling: bool,
                    tol: float) -> bool:
-    """Whether the slip on the adhesion elements and the slip across the traction on the
-    slip elements are all below ``tol`` times the driving slip, the slip the tractions
-    have to cancel (rigid slip plus the pressure's, the largest over the contact)."""
+    """Whether :func:`slip_residual` is below ``tol``."""
+    return slip_residual(s, state, e, w, u0, g, dx, rolling) <= tol
+
+
+def slip_residual(s: np.ndarray, state: np.ndarray, e: np.ndarray, w: np.ndarray,
+                  u0: np.ndarray, g: np.ndarray, dx: float, rolling: bool) -> float:
+    """The largest slip on the adhesion elements and slip across the traction on the
+    slip elements, over the driving slip, the slip the tractions have to cancel (rigid
+    slip plus the pressure's, the largest over the contact); inf when nothing drives."""
     drive = w + (rolling_slip(u0, dx) if rolling else u0)
     loaded = g > 0
     scale = float(np.hypot(drive[0], drive[1])[loaded].max()) if loaded.any() else 0.0
     if scale == 0.0:
-        return False
+        return math.inf
     stick, slip = state == STICK, state == SLIP
     worst = float(np.hypot(s[0, stick], s[1, stick]).max()) if stick.any() else 0.0
     if slip.any():
         worst = max(worst, float(np.abs(cross(e[:, slip], s[:, slip])).max()))
-    return worst <= tol * scale
+    return worst / scale
 
 
 def _follow_bound(st: TangentialState, q: np.ndarray,

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from contact.errors import ContactInputError, ConvergenceError
+from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.influence import HalfSpacePair, PairConstants
@@ -111,7 +111,7 @@ def steady_rolling(
     else:
         p, delta = solve_pressure(op, grid.h, load)
     if np.any(p[:, -1] > 0):
-        raise ContactInputError(
+        raise EdgeContactError(
             "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
     if start is not None:
         restate(start.state, mu * p)
@@ -174,7 +174,25 @@ def steady_rolling(
     s = st[0]
     return TangentialResult(grid=grid, constants=constants, mu=mu, p=p, q=s.q, s=s.s,
                             state=s.state, creepage=Creepage(xi, creep.eta, creep.phi),
-                            approach=delta, rolling=True, iterations=iterations)
+                            approach=delta, rolling=True, iterations=iterations,
+                            outer=s.outer, matvecs=s.matvecs, tol=tol)
+
+
+def rolling_residual(r: TangentialResult) -> float:
+    """The relative residual of a steady-rolling answer, formed afresh from it: the
+    largest slip left on the adhesion elements and slip across the traction on the slip
+    elements, over the slip the tractions cancel (:func:`contact.tangential.solver.
+    slip_residual`; inf when nothing drives a slip, e.g. free rolling of identical
+    bodies, where the tractions vanish)."""
+    from contact.tangential.solver import slip_residual
+
+    op = operator_for(r.grid, r.constants)
+    u0 = op.tangential_from_normal(r.p)
+    w = rigid_slip(r.grid.x, r.grid.y, r.creepage)
+    norm = np.hypot(r.q[0], r.q[1])
+    e = np.divide(r.q, norm, out=np.zeros_like(r.q), where=norm > 0)
+    res = slip_residual(r.s, r.state, e, w, u0, r.mu * r.p, r.grid.dx, True)
+    return 0.0 if math.isinf(res) and not np.any(r.s) else res
 
 
 def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,

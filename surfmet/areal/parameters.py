@@ -37,7 +37,7 @@ PARAMETER_UNITS: dict[str, str] = {
     "Sal": "m",
     "Str": "",
     "Std": "°",
-    "Spd": "1/m²",
+    "Spd": "1/m^2",
     "Spc": "1/m",
     "Sk": "m",
     "Spk": "m",

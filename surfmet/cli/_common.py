@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import contextlib
 import json
 import sys
 from collections.abc import Iterable, Iterator
@@ -77,33 +76,11 @@ def spike_summary(prep: Any) -> str:
 
 
 def check_output(path: Any, option: str) -> None:
-    """Refuse, before any work, an output path that cannot be written (a missing folder, a
-    folder in its place, no permission), so that a long computation is not lost at the end.
+    """Refuse, before any work, an output path that cannot be written
+    (:func:`surfmet.atomic.check_writable`)."""
+    from surfmet.atomic import check_writable
 
-    The file is opened for appending and, if it did not exist, removed again: whatever
-    the operating system would refuse at the end is refused now, in one line.
-    """
-    import os
-    from pathlib import Path
-
-    if path is None:
-        return
-    p = Path(path)
-    if p.is_dir():
-        raise SurfmetInputError(f"{option} {path}: is a folder; give a file name")
-    parent = p.parent if str(p.parent) else Path(".")
-    if not parent.is_dir():
-        raise SurfmetInputError(f"{option} {path}: folder {parent} does not exist")
-    existed = p.exists()
-    try:
-        with open(p, "ab"):
-            pass
-    except OSError as exc:
-        raise SurfmetInputError(f"{option} {path}: cannot write there "
-                                f"({exc.strerror or type(exc).__name__})") from None
-    if not existed:
-        with contextlib.suppress(OSError):
-            os.remove(p)
+    check_writable(path, option)
 
 
 def save_figure(fig: Any, path: str) -> None:

@@ -119,8 +119,11 @@ def run(args: argparse.Namespace) -> int:
     rec = sol.to_json()
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
-        np.savez_compressed(args.out, **res.arrays(), dx=res.dx, dy=res.dy,
-                            summary=json.dumps(jsonable(rec)))
+        from surfmet.atomic import atomic_open
+
+        with atomic_open(args.out, "wb") as fh:  # a file object: numpy adds no suffix
+            np.savez_compressed(fh, **res.arrays(), dx=res.dx, dy=res.dy,
+                                summary=json.dumps(jsonable(rec)))
     if args.json:
         emit_json(rec)
         return 0
@@ -130,7 +133,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _print(sol: Any, args: argparse.Namespace) -> None:
     """The text table of a solved contact."""
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity
 
     res, pair = sol.result, sol.pair
     ball_m, plate_m = sol.ball_material, sol.plate_material
@@ -151,8 +154,8 @@ def _print(sol: Any, args: argparse.Namespace) -> None:
           f"{format_length(hz.delta)})")
     print(f"area fraction  {res.area_fraction:.4g}   clusters {res.n_clusters}")
     if res.hardness is not None:
-        print(f"plastic area   {res.plastic_area * 1e12:.6g} um^2   ({res.regime}; hardness "
-              f"{res.hardness / 1e6:.5g} MPa)")
+        print(f"plastic area   {format_quantity(res.plastic_area, 'm^2', 6)}   ({res.regime}; "
+              f"hardness {format_quantity(res.hardness, 'Pa', 5)})")
     print(f"solver         {res.iterations} iterations, residual {res.residual:.2e}, "
           f"{'converged' if res.converged else 'NOT converged'}"
           f"{', touches the edge' if res.touches_edge else ''}")

@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_json_flag,
     add_quiet_flag,
+    check_output,
     emit_json,
     force,
     log,
@@ -68,6 +69,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
+
+    check_output(args.output, "-o")
     from surfmet.report import write_report
     from surfmet.report_hertz import HertzOptions, hertz_check_available
 

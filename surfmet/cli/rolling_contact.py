@@ -11,6 +11,7 @@ from surfmet.cli._common import (
     add_spikes_argument,
     emit_json,
     log,
+    positive_length,
     speed,
     spike_summary,
 )
@@ -56,6 +57,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "the frictional power in W)")
     p.add_argument("--grid", type=int, metavar="N",
                    help="elements per side (default 64; 256 with --line)")
+    p.add_argument("--size", type=positive_length, metavar="L",
+                   help="domain side (default: automatic from Hertz and the scans' "
+                   "roughness, as for `surfmet contact`, enlarged if the contact outgrows it)")
     add_spikes_argument(p)
     add_visco_options(p)
     add_json_flag(p)
@@ -79,6 +83,9 @@ def run(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.mu) and args.mu > 0):
         raise SurfmetInputError("--mu must be a positive number")
     if args.viscoelastic:
+        if args.size is not None:
+            raise SurfmetInputError("--size sets the elastic solver's domain; the "
+                                    "viscoelastic model sizes its own")
         return run_viscoelastic(args)
     load = parse_line_load(args.load) if args.line else units.parse_force(args.load)
     if not load > 0:
@@ -98,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
         roughness = (pair.roughness, pair.dx, pair.dy)
     rc = solve_rolling_contact(args.radius, load, args.materials, args.mu,
                                creepage=args.creepage, line=args.line, speed=args.speed,
-                               grid=args.grid, roughness=roughness)
+                               grid=args.grid, roughness=roughness, size=args.size)
     rec = rolling_contact_record(rc)
     if args.json:
         emit_json(rec)
@@ -108,9 +115,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _print_summary(rec: dict) -> None:
+    from surfmet.units import format_quantity
+
     def fmt(key: str) -> str:
-        q = rec[key]
-        return f"{q['value']:.6g} {q['unit']}"
+        return format_quantity(rec[key]["value"], rec[key]["unit"], digits=5)
 
     print(f"rolling contact ({rec['geometry']}, "
           f"{'free rolling' if rec['free_rolling'] else 'prescribed creepage'})")
@@ -119,6 +127,8 @@ def _print_summary(rec: dict) -> None:
         print(f"  {key:32s} {fmt(key)}")
     if "frictional_power_at_speed" in rec:
         print(f"  {'frictional_power_at_speed':32s} {fmt('frictional_power_at_speed')}")
+    print(f"  {'solver':32s} {rec['iterations']} iterations, residual "
+          f"{rec['residual']['value']:.2e}, converged")
     for note in rec.get("notes", []):
         print(f"  note: {note}")
     log(f"sign convention: {rec['sign_convention']}")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
 import sys
 from typing import Any
@@ -119,17 +120,9 @@ def _options(args: argparse.Namespace) -> dict[str, Any]:
 
 
 def _display(value: Any, unit: str) -> str:
-    from surfmet.units import format_length
+    from surfmet.units import format_quantity
 
-    if value is None:
-        return "n/a"
-    if unit == "m":
-        return format_length(value)
-    if unit == "1/m²":
-        return f"{value * 1e-6:.5g} 1/mm²"
-    if unit == "1/m":
-        return f"{value * 1e-3:.5g} 1/mm"
-    return f"{value:.5g} {unit}".rstrip()
+    return format_quantity(value, unit, digits=5)
 
 
 def _print_table(rec: dict[str, Any]) -> None:
@@ -173,8 +166,10 @@ def _conditions_line(cond: dict[str, Any]) -> str:
 
     std = cond["standard"]
     n = cond["n_sampling"]
+    rk = cond.get("rk_line")
     return (f"standard {std['name']} ({std['why']}); λc {length(cond['lc'])}; "
-            f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})")
+            f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})"
+            + (f"; Rk construction {rk['value']} ({rk['why']})" if rk else ""))
 
 
 def _condition_cells(rec: dict[str, Any]) -> list[str]:
@@ -201,21 +196,22 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
                 units[sym] = q["unit"]
     cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
              "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
-    fh = sys.stdout if out == "-" else open(out, "w", newline="", encoding="utf-8")
-    try:
+    from surfmet.atomic import atomic_open
+    from surfmet.units import valid_text
+
+    with (contextlib.nullcontext(sys.stdout) if out == "-"
+          else atomic_open(out, "w", newline="", encoding="utf-8")) as fh:
         w = csv.writer(fh)
         w.writerow(cols)
         for rec in records:
             params = rec.get("parameters", {})
-            row = [rec["file"], rec["status"], rec.get("error", ""), *_condition_cells(rec),
+            row = [valid_text(rec["file"]), rec["status"], valid_text(rec.get("error", "")),
+                   *_condition_cells(rec),
                    " | ".join(rec.get("settings", {}).get("caveats", []))]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))
             w.writerow(row)
-    finally:
-        if fh is not sys.stdout:
-            fh.close()
 
 
 def run(args: argparse.Namespace) -> int:
@@ -229,9 +225,9 @@ def run(args: argparse.Namespace) -> int:
     if len(args.files) == 1 and not args.csv:
         # One file: errors propagate, so the CLI prints one line and exits 1.
         res = roughness(args.files[0], **opts)
-        rec = {"file": args.files[0], **res.to_json()}
+        rec = {"file": args.files[0], "status": "ok", **res.to_json()}
         if args.json:
-            emit_json(rec)
+            emit_json([rec])  # one shape whatever the number of files: a list of records
         else:
             _print_table(rec)
         return 0

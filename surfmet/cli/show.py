@@ -117,8 +117,9 @@ def run(args: argparse.Namespace) -> int:
 
 def _save(fig: Any, out: Path) -> None:
     from surfmet.errors import SurfmetInputError
+    from surfmet.plots._style import save
 
     try:
-        fig.savefig(out, dpi=120)
+        save(fig, out, dpi=120)
     except ValueError as exc:  # matplotlib: unknown extension
         raise SurfmetInputError(f"cannot write {out.name}: {exc}") from None

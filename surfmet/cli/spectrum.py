@@ -152,7 +152,7 @@ def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
 
 
 def _print(rec: dict[str, Any], s: Any) -> None:
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity
 
     def wl(q: float | None) -> str:
         import math
@@ -178,7 +178,7 @@ def _print(rec: dict[str, Any], s: Any) -> None:
           f"{s.curvature_rms_real:.5g} 1/m (real space)")
     sm = s.summits
     print(f"  Nayak alpha *    {sm.alpha:.4g}")
-    print(f"  summits *        density {sm.density * 1e-6:.5g} 1/mm², radius "
+    print(f"  summits *        density {format_quantity(sm.density, '1/m^2', 5)}, radius "
           f"{format_length(sm.radius)}, sigma_s {format_length(sm.sigma_s)}")
     if s.plasticity is not None:
         print(f"  plasticity psi * {s.plasticity:.4g}")

@@ -30,8 +30,11 @@ Every item is a fresh solve with single-threaded BLAS, so the rows are bitwise t
 the serial run whatever the engine (--workers 1, local processes, or Dask). A failed item
 gets its own row (status error, with the message) and the sweep goes on. Rows are
 appended and flushed as they finish: CSV with units in the headers, and JSON Lines (one
-object per line, values as {"value", "unit"}). --resume skips the items whose key is
-already in the output. --positions are apex offsets x:y from the middle of the scans.
+object per line, values as {"value", "unit"}), each row whole in every file or in none.
+--resume first checks the files: a row cut short by a stop (or a full disk) is dropped,
+and so is a row that reached only one of --csv and --json; then it runs every item
+whose row is not in all of them. Two runs never write one file at once (a lock).
+--positions are apex offsets x:y from the middle of the scans.
 """
 
 
@@ -100,7 +103,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
-    from surfmet.sweep import RowWriter, done_keys, run_sweep, sweep_items
+    from surfmet.sweep import RowWriter, run_sweep, sweep_items
 
     if args.csv is None and args.json is None:
         raise SurfmetInputError("give --csv OUT and/or --json [OUT] for the rows")
@@ -115,8 +118,8 @@ def run(args: argparse.Namespace) -> int:
                         materials=args.materials or ["steel,aluminium"],
                         positions=args.positions or [None], grid=args.grid,
                         hardness=args.hardness, spikes=args.spikes)
-    skip = done_keys(args.csv, json_path) if args.resume else set()
     with RowWriter(args.task, args.csv, json_path, resume=args.resume) as writer:
+        skip = writer.done
         todo = sum(1 for it in items if it.key not in skip)
         if skip:
             log(f"resume: {len(items) - todo} of {len(items)} items already written")

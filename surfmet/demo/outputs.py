@@ -89,11 +89,10 @@ def prepare_output(out_dir: str | os.PathLike) -> Path:
 
 
 def write_json(path: Path, obj: Any) -> None:
-    """Write ``obj`` as JSON to ``path`` at once (through a ``.part`` file)."""
+    """Write ``obj`` as JSON to ``path`` whole or not at all (:mod:`surfmet.atomic`)."""
+    from surfmet.atomic import write_text
     from surfmet.units import jsonable
 
-    tmp = path.with_name(path.name + ".part")
-    tmp.write_text(json.dumps(jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False)
-                   + "\n", encoding="utf-8")
-    tmp.replace(path)
+    write_text(path, json.dumps(jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False)
+               + "\n")
 

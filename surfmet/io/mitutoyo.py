@@ -18,13 +18,20 @@ Metadata (SI values; the keys agreed with ``roughness``, see docs/formats.md):
 
 ``evaluation_conditions``  ``{"standard": "iso4287", "standard_text": "ISO 1997",
                            "lc": 0.0025, "ls": 8e-06, "n_sampling": 4, "profile": "R",
-                           "filter": "gaussian", "source": "Mitutoyo SurfTest export"}``;
+                           "filter": "gaussian", "rk_line": "levels",
+                           "source": "Mitutoyo SurfTest export"}``;
                            a key is absent when the file does not state it
 ``instrument_results``     the printed results in print order, ``{"Ra": {"value": 3.308e-06,
                            "unit": "m"}, "Rsk": {"value": -0.144, "unit": ""}, "Mr1":
-                           {"value": 0.05822, "unit": ""}, ...}``: lengths in metres,
-                           percentages as fractions; ``Rkµ``, ``RDq``, ``RSm`` are renamed
-                           ``Rku``, ``Rdq``, ``Rsm``
+                           {"value": 5.822, "unit": "%"}, "A1": {"value": 8.48e-08,
+                           "unit": "m"}, ...}``: in the units surfmet states the same
+                           parameters in (lengths in metres, ratios in %); ``A1``, ``A2``,
+                           printed without a unit, are Rpk Mr1 / 2 and Rvk (100 % - Mr2) / 2
+                           in µm·% (ISO 13565-2; the printed Rpk, Mr1, Rvk and Mr2 give
+                           them to the printed digits), so in metres they are the printed
+                           value x 1e-6 x 1e-2, as surfmet's A1 = Rpk Mr1 / 2 with Mr1 a
+                           fraction; ``Rkµ``, ``RDq``, ``RSm`` are
+                           renamed ``Rku``, ``Rdq``, ``Rsm``
 """
 
 from __future__ import annotations
@@ -47,6 +54,10 @@ FORMAT = "mitutoyo"
 _RESULT_RE = re.compile(r"^\s*(\S+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S*)\s*$")
 _LENGTH_RE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*([^\s\d]+)\s*$")
 _RENAME = {"Rkµ": "Rku", "Rkμ": "Rku", "RDq": "Rdq", "RSm": "Rsm"}
+#: The Rk construction of the SurfTest (:data:`profiles.rk.CONSTRUCTIONS`).
+RK_LINE = "levels"
+# ISO 13565-2 areas, printed without a unit in (height unit) x %
+_AREAS = ("A1", "A2")
 _STANDARDS = {"iso 1997": "iso4287", "iso1997": "iso4287", "iso 4287": "iso4287",
               "iso 2021": "iso21920", "iso 21920": "iso21920"}
 # Codes of the DATA sheet's column B -> the Certificate sheet's labels.
@@ -81,7 +92,10 @@ def _results(data: Cells) -> tuple[dict[str, Any], str | None]:
         key, value, unit = m.group(1), float(m.group(2)), m.group(3)
         key = _RENAME.get(key, key)
         if unit == "%":
-            out[key] = quantity(value / 100.0, "")
+            out[key] = quantity(value, "%")  # as surfmet states Mr1, Mr2, Rmr
+        elif key in _AREAS and not unit and height_unit is not None:
+            # printed in (height unit) x %: Rpk Mr1 / 2 with Mr1 in %
+            out[key] = quantity(value * length_factor(height_unit) / 100.0, "m")
         elif unit:
             try:
                 out[key] = quantity(value * length_factor(unit), "m")
@@ -153,6 +167,11 @@ def _evaluation(found: dict[str, str], name: str) -> tuple[dict[str, Any], str |
         ev["filter"] = "gaussian" if word in ("gauss", "gaussian") else word
     ev = dict(sorted(ev.items(), key=lambda kv: _ORDER.index(kv[0])))
     if ev:
+        # the instrument's Rk construction is part of how it evaluated: SurfTest reads
+        # Rk, Rpk, Rvk, Mr1, Mr2, A1, A2 off the material-ratio curve tabulated at 1 %
+        # levels (reproduced to the printed digits on the realdata export; the secant
+        # construction differs by 6 % in Rpk, 16 % in Mr1)
+        ev["rk_line"] = RK_LINE
         ev["source"] = "Mitutoyo SurfTest export"
     return ev, (cut[1] if cut is not None else None)
 

@@ -331,8 +331,7 @@ def write(
 ) -> Path:
     """Write a scan; the format comes from ``format=`` or the file extension.
 
-    The file is written to a temporary name and renamed, so a failed write never leaves a
-    half-written file behind.
+    The file is written whole or not at all (:mod:`surfmet.atomic`).
     """
     _load_all()
     p = Path(path)
@@ -344,8 +343,6 @@ def write(
                 f"{p}: cannot tell the output format from the extension {ext!r}"
             )
         format = candidates[0]
-    data = encode(scan, format, **options)
-    tmp = p.with_name(p.name + ".part")
-    tmp.write_bytes(data)
-    os.replace(tmp, p)
-    return p
+    from surfmet.atomic import write_bytes
+
+    return write_bytes(p, encode(scan, format, **options))

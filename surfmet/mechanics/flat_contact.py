@@ -166,7 +166,7 @@ def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
     if rep is not None:
-        p = rep.bem.pressure
+        p = np.asarray(rep.bem.pressure) / 1e6  # MPa, as every surfmet figure
         a1.loglog(p, rep.bem.area_fraction, "ko-", label="BEM")
         a1.loglog(p, [pt.corrected_area_fraction for pt in rep.bem.points], "k^--",
                   label="BEM, perimeter-corrected")
@@ -178,13 +178,14 @@ def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve
                 a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
         a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     if all_scales is not None:
-        a1.loglog(all_scales.pressure, all_scales.area_fraction, "s:", color="C3",
+        ps = np.asarray(all_scales.pressure) / 1e6
+        a1.loglog(ps, all_scales.area_fraction, "s:", color="C3",
                   label="PERSSON, all scales")
-        a2.semilogx(all_scales.pressure, all_scales.mean_gap * 1e6, "s:", color="C3",
+        a2.semilogx(ps, all_scales.mean_gap * 1e6, "s:", color="C3",
                     label="PERSSON, all scales")
-    a1.set_xlabel("nominal pressure p (Pa)")
+    a1.set_xlabel("nominal pressure p (MPa)")
     a1.set_ylabel("A/A0")
-    a2.set_xlabel("nominal pressure p (Pa)")
+    a2.set_xlabel("nominal pressure p (MPa)")
     a2.set_ylabel("mean gap ū (µm)")
     for ax in (a1, a2):
         ax.legend(fontsize=8)

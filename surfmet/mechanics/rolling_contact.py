@@ -39,6 +39,8 @@ class RollingContact:
     speed: float | None
     free_rolling: bool
     grid: int
+    side: float = math.nan
+    notes: tuple[str, ...] = ()
 
 
 def parse_line_load(text: str) -> float:
@@ -55,6 +57,13 @@ def parse_line_load(text: str) -> float:
     return value
 
 
+#: Half-width of a rough contact's domain over the radius within which it may touch
+#: (:func:`contact.geometry.contact_extent`), the margin ``surfmet contact`` takes.
+ROUGH_MARGIN = 1.25
+#: How often a domain the contact outgrows is enlarged (1.5x each time) before giving up.
+ENLARGEMENTS = 3
+
+
 def solve_rolling_contact(
     radius: float,
     load: float,
@@ -66,8 +75,16 @@ def solve_rolling_contact(
     speed: float | None = None,
     grid: int | None = None,
     roughness: Any = None,
+    size: float | None = None,
 ) -> RollingContact:
     """Solve one steady-rolling case.
+
+    The domain is sized as for ``surfmet contact``: 1.25 Hertz radii for a smooth ball;
+    for a rough one, 1.25 times the radius within which asperities up to three standard
+    deviations high may touch (:func:`contact.geometry.contact_extent`), since rough
+    contact spreads well beyond the Hertz radius. A contact that still reaches the
+    leading edge enlarges the domain (1.5x, up to :data:`ENLARGEMENTS` times, said in
+    the notes) unless ``size`` fixes it.
 
     Parameters
     ----------
@@ -90,16 +107,12 @@ def solve_rolling_contact(
     roughness : (ndarray, dx, dy), optional
         Composite roughness map and its pitch (m), e.g. from
         :func:`surfmet.pairing.prepare_pair`.
+    size : float, optional
+        Side of the (square) domain (m); default: automatic, as above.
     """
-    from contact.hertz import hertz_cylinder, hertz_sphere
-    from contact.tangential import (
-        Creepage,
-        cylinder_grid,
-        pair_constants,
-        sphere_grid,
-        steady_rolling,
-    )
-    from contact.tangential.grid import sample_roughness
+    from contact.errors import EdgeContactError
+    from contact.tangential import Creepage, pair_constants, steady_rolling
+    from contact.tangential.memory import check_rolling_memory
     from surfmet.mechanics.material_spec import parse_materials
 
     ball_m, plate_m = parse_materials(materials)
@@ -109,11 +122,56 @@ def solve_rolling_contact(
     n = grid or (256 if line else 64)
     if n < 8:
         raise SurfmetInputError("--grid needs at least 8 elements a side")
+    # before anything of the grid's size is allocated
+    check_rolling_memory(n, line=line)
+    if size is not None and not (math.isfinite(size) and size > 0):
+        raise SurfmetInputError("--size must be a positive length")
+    half = 0.5 * size if size is not None else _half_width(radius, load, constants.e_star,
+                                                           line, roughness)
+    notes: list[str] = []
+    for attempt in range(ENLARGEMENTS + 1):
+        g = _grid(radius, half, n, line, roughness)
+        try:
+            res = steady_rolling(g, constants, load, mu,
+                                 Creepage(xi=0.0 if creepage is None else creepage),
+                                 fx=0.0 if creepage is None else None)
+            break
+        except EdgeContactError:
+            if size is not None or attempt == ENLARGEMENTS:
+                raise EdgeContactError(
+                    f"the contact reaches the leading edge of the {2e3 * half:.4g} mm domain: "
+                    f"give a larger --size (e.g. --size {3e3 * half:.3g}mm)") from None
+            half *= 1.5
+            notes.append(f"the contact reached the domain's edge: domain enlarged to "
+                         f"{2e3 * half:.4g} mm")
+    return RollingContact(result=res, radius=radius, load=load, line=line, speed=speed,
+                          free_rolling=creepage is None, grid=n, side=2.0 * half,
+                          notes=tuple(notes))
+
+
+def _half_width(radius: float, load: float, e_star: float, line: bool,
+                roughness: Any) -> float:
+    """The automatic half-width of the domain (m): see :func:`solve_rolling_contact`."""
+    import numpy as np
+
+    from contact.geometry import contact_extent
+    from contact.hertz import hertz_cylinder, hertz_sphere
+
     if line:
-        a = hertz_cylinder(radius, load, constants.e_star).a
-    else:
-        a = hertz_sphere(radius, load, constants.e_star).a
-    half = (1.5 if roughness is not None else 1.25) * a
+        return (1.5 if roughness is not None else 1.25) * hertz_cylinder(radius, load,
+                                                                         e_star).a
+    if roughness is None:
+        return 1.25 * hertz_sphere(radius, load, e_star).a
+    z = np.asarray(roughness[0], dtype=float)
+    rms = float(np.nanstd(z)) if np.isfinite(z).any() else 0.0
+    return ROUGH_MARGIN * contact_extent(radius, load, e_star, rms)
+
+
+def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any:
+    """The tangential grid of half-width ``half``, with the roughness sampled onto it."""
+    from contact.tangential import cylinder_grid, sphere_grid
+    from contact.tangential.grid import sample_roughness
+
     make = cylinder_grid if line else sphere_grid
     z = None
     if roughness is not None:
@@ -121,22 +179,18 @@ def solve_rolling_contact(
         x = make(radius, half, n).x
         z = sample_roughness(zmap, zdx, zdy, x, [0.0] if line else x)
         z = z - z.max()  # the highest summit touches first; only differences matter
-    g = make(radius, half, n, roughness=z)
-    res = steady_rolling(g, constants, load, mu,
-                         Creepage(xi=0.0 if creepage is None else creepage),
-                         fx=0.0 if creepage is None else None)
-    return RollingContact(result=res, radius=radius, load=load, line=line, speed=speed,
-                          free_rolling=creepage is None, grid=n)
+    return make(radius, half, n, roughness=z)
 
 
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
     """The JSON record of a solve: every value with its unit."""
     from contact.tangential.results import edge_note
+    from contact.tangential.steady import rolling_residual
     from surfmet.units import quantity
 
     r = rc.result
     per = "/m" if rc.line else ""
-    area = "m" if rc.line else "m^2"
+    area = "m" if rc.line else "m^2"  # units as surfmet.units.DISPLAY_UNITS spells them
     rec: dict[str, Any] = {
         "sign_convention": SIGN_CONVENTION,
         "geometry": "cylinder on flat, plane strain" if rc.line else "sphere on flat",
@@ -144,8 +198,9 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "radius": quantity(rc.radius, "m"),
         "load": quantity(rc.load, "N" + per),
         "mu": r.mu,
-        "grid": {"elements": rc.grid, "element_size": quantity(r.grid.dx, "m")},
-        "creepage": quantity(r.creepage.xi, "1"),
+        "grid": {"elements": rc.grid, "element_size": quantity(r.grid.dx, "m"),
+                 "domain_side": quantity(rc.side, "m")},
+        "creepage": quantity(r.creepage.xi, ""),
         "fx": quantity(r.fx, "N" + per),
         "fy": quantity(r.fy, "N" + per),
         "pmax": quantity(r.pmax, "Pa"),
@@ -154,15 +209,25 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "stick_area": quantity(r.stick_area, area),
         "slip_area": quantity(r.slip_area, area),
         "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
-        "edge_dissipation_share": quantity(r.edge_dissipation_share, "1"),
+        "edge_dissipation_share": quantity(r.edge_dissipation_share, ""),
         "rolling_resistance_coefficient": quantity(
-            r.rolling_resistance_coefficient(rc.radius), "1"),
+            r.rolling_resistance_coefficient(rc.radius), ""),
+        # convergence, stated as ``contact`` states it (a solve that does not converge
+        # raises instead of returning)
+        "iterations": r.outer,
+        "residual": quantity(rolling_residual(r), ""),
+        "converged": True,
+        "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
+                   "operator_products": r.matvecs},
         "kalker_K": r.constants.K,
         "dundurs_beta": r.constants.beta,
     }
+    notes = list(rc.notes)
     note = edge_note(r.edge_dissipation_share)
     if note is not None:
-        rec["notes"] = [note]
+        notes.append(note)
+    if notes:
+        rec["notes"] = notes
     if rc.line:
         rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
                                 "2D displacement and is given for the grid's own datum")

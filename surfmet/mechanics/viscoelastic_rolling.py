@@ -302,6 +302,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
     (contact.viscoelastic.RollingResult, TractionResult (line), TangentialResult (ball)
     or None)
     """
+    from contact.tangential.memory import check_rolling_memory
     from contact.viscoelastic import pair_creep
     from contact.viscoelastic.line import rolling_cylinder
     from contact.viscoelastic.surface import rolling_sphere
@@ -316,6 +317,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
     if line:
         if plate is not None or ball is not None:
             raise SurfmetInputError("--line takes no scans")
+        check_rolling_memory(grid or 1024, line=True, dense=True)
         res = rolling_cylinder(radius, load, creep, speed, n=grid or 1024)
         if mu is None:
             return res, None
@@ -326,6 +328,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         A = influence_matrix(res.x.size, dx, creep, speed)
         return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
     n = grid or 128
+    check_rolling_memory(n)
     z = None
     if plate is not None or ball is not None:
         from contact.viscoelastic.sweep import roughness_window

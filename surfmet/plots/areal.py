@@ -15,6 +15,7 @@ import numpy as np
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Profile, Topography
 from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
+from surfmet.units import valid_text
 
 HEIGHT_LABEL = "height (µm)"
 
@@ -80,7 +81,7 @@ def height_map(
 def _scan_title(scan: Topography | Profile) -> str:
     from surfmet.units import format_length
 
-    name = Path(str(scan.metadata.get("source", ""))).name
+    name = valid_text(Path(str(scan.metadata.get("source", ""))).name)
     if isinstance(scan, Topography):
         size = f"{format_length(scan.size_x)} × {format_length(scan.size_y)}"
     else:
@@ -161,8 +162,31 @@ def abbott_firestone(
                     f"{names[4]} = {m2:.3g} %", xy=(0.5, 0.97), xycoords="axes fraction",
                     ha="center", va="top", fontsize=8)
         ax.legend(loc="lower left", fontsize=8)
+    _frame_heights(ax, z, h, (upper + pk, lower - vk) if names is not None else ())
     ax.set_title(title if title is not None else "Abbott–Firestone curve")
     return finish(fig, path)
+
+
+def _frame_heights(ax: Any, z: np.ndarray, h: np.ndarray, keep: Sequence[float]) -> None:
+    """Height axis of an Abbott–Firestone curve: the heights between 0.5 % and 99.5 %
+    material ratio with half their span as margin (and the construction), so that a few
+    extreme points (spikes, outliers) do not squeeze the curve into a line; when the
+    curve runs beyond, the axis is clipped and the figure says how far it runs."""
+    from profiles import height_at_ratio
+
+    hi, lo = float(height_at_ratio(z, 0.005)), float(height_at_ratio(z, 0.995))
+    margin = 0.5 * max(hi - lo, 1e-300)
+    top = max([hi + margin, *keep])
+    bottom = min([lo - margin, *keep])
+    full_top, full_bottom = float(np.max(h)), float(np.min(h))
+    if full_top <= top and full_bottom >= bottom:
+        return
+    top, bottom = min(top, full_top), max(bottom, full_bottom)
+    pad = 0.03 * (top - bottom)
+    ax.set_ylim((bottom - pad) / UM, (top + pad) / UM)
+    ax.annotate(f"axis clipped: the curve runs from {full_bottom / UM:.4g} to "
+                f"{full_top / UM:.4g} µm (extreme points: spikes?)", xy=(0.98, 0.03),
+                xycoords="axes fraction", ha="right", va="bottom", fontsize=7, color="0.3")
 
 
 def psd_figure(

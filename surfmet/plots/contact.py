@@ -29,10 +29,12 @@ def pressure_map(
     """Contact pressure (MPa) with the contact clusters outlined and numbered.
 
     Clusters (4-connected cells with p > 0, as :attr:`contact.ContactResult.n_clusters`
-    counts them) are numbered by decreasing load (1 carries the most); when there are more
-    than ``max_labels`` only the largest are numbered and the title says so. The colour
-    scale ends at the 99.5th percentile of the loaded cells when more than 200 cells carry
-    load (rough contacts have a few extreme asperity pressures); the title gives pmax.
+    counts them) are numbered by decreasing load (1 carries the most), each number just
+    off the top right corner of its cluster, so that it never hides the cells it names;
+    when there are more than ``max_labels`` only the largest are numbered and the title
+    says so. The colour scale ends at the 99.5th percentile of the loaded cells when more
+    than 200 cells carry load (rough contacts have a few extreme asperity pressures); the
+    title gives pmax.
     With more than 50 clusters only the numbered ones are outlined.
 
     Parameters
@@ -95,11 +97,9 @@ def pressure_map(
     if n:
         load = np.bincount(labels.ravel(), weights=p.ravel(), minlength=n + 1)[1:]
         order = np.argsort(-load, kind="stable")[: max(0, int(max_labels))]
-        yy, xx = np.nonzero(labels)
-        lab = labels[yy, xx]
-        cnt = np.bincount(lab, minlength=n + 1)
-        cx = np.bincount(lab, weights=x[xx], minlength=n + 1) / np.maximum(cnt, 1)
-        cy = np.bincount(lab, weights=y[yy], minlength=n + 1) / np.maximum(cnt, 1)
+        from scipy.ndimage import find_objects
+
+        boxes = find_objects(labels)
         if outline:
             # all spots when they are few; otherwise the numbered ones only, so that the
             # outlines do not bury the pressure field
@@ -107,9 +107,14 @@ def pressure_map(
             ax.contour(x / scale, y / scale, mask.astype(float), levels=[0.5],
                        colors="tab:blue", linewidths=0.8, alpha=0.9)
         for rank, k in enumerate(order, start=1):
-            ax.text(cx[k + 1] / scale, cy[k + 1] / scale, str(rank), color="white",
-                    fontsize=7, ha="center", va="center", fontweight="bold",
-                    path_effects=[pe.withStroke(linewidth=1.5, foreground="black")])
+            # beside the cluster, just off the top right corner of its bounding box: a
+            # label on the centre would hide a cluster of a few cells
+            rows, cols = boxes[k]
+            corner = ((x[cols.stop - 1] + result.dx / 2) / scale,
+                      (y[rows.stop - 1] + result.dy / 2) / scale)
+            ax.annotate(str(rank), xy=corner, xytext=(1.5, 1.5), textcoords="offset points",
+                        color="white", fontsize=7, ha="left", va="bottom", fontweight="bold",
+                        path_effects=[pe.withStroke(linewidth=1.5, foreground="black")])
             labelled += 1
     ax.set_xlabel(f"x ({unit})")
     ax.set_ylabel(f"y ({unit})")
