@@ -48,6 +48,8 @@ INVOCATIONS = {
     "demo": ["demo", "--out", "{tmp}/demo", "--quick", "--json"],
     "spectrum": ["spectrum", "{scan}", "--json"],
     "scales": ["scales", "{scan}", "--json"],
+    "adhesion": ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhesion",
+                 "50mJ/m2", "--range", "2nm", "--grid", "32", "--steps", "10", "--json"],
     "sweep": ["sweep", "--radius", "20mm", "--loads", "5N", "--grid", "32", "--workers", "1",
               "--json"],
     "flat-contact": ["flat-contact", "{scan}", "--e-star", "1GPa", "--pressures", "1MPa",
