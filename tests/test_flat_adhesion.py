@@ -151,3 +151,20 @@ def test_cli_bad_adhesion_input_exits_1(extra, scan, capsys):
     assert main(["flat-contact", scan, "--e-star", "1GPa", "--pressures", "1MPa", *extra]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "Traceback" not in err[0]
+
+
+@pytest.mark.parametrize(("stretch", "rc"), [(1.0001, 0), (1.01, 1)])
+def test_cli_pixels_square_within_a_tenth_of_a_percent(tmp_path, capsys, stretch, rc):
+    """Instruments' calibrated pitches differ by ~1e-4 (KautschukInfiniteFocus: 2.27998 and
+    2.27979 um): taken as square; 1 % apart is one line."""
+    topo = self_affine(32, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
+    path = surfmet.write(surfmet.model.Topography(topo.heights, 1e-6, stretch * 1e-6),
+                         tmp_path / "s.npz")
+    assert main(["flat-contact", str(path), "--e-star", "1GPa", "--pressures", "1MPa",
+                 "--periodic", "yes", "--work-of-adhesion", "50mJ/m2", "--range", "5nm",
+                 "--json"]) == rc
+    out, err = capsys.readouterr()
+    if rc:
+        assert len(err.strip().splitlines()) == 1 and "square pixels" in err
+    else:
+        assert json.loads(out)["results"][0]["adhesive"]["mean_gap"]["unit"] == "m"

@@ -157,14 +157,19 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                              adhesion=adhesive)
 
 
+#: Pixels whose sides differ by less than this share are square for the adhesive solve,
+#: which takes their geometric mean (instruments' calibrated pitches differ by ~1e-4).
+SQUARE_PIXEL = 1e-3
+
+
 def adhesive_sweep(scan: Topography, bem: FlatContact, law: Any) -> Any:
     """The scan pressed with adhesion at the BEM's pressures, started from its solves
     (:func:`contact.adhesion.flat.adhesive_flat`: periodic, square pixels, elastic)."""
     from contact.adhesion.flat import adhesive_flat
 
     z = np.asarray(scan.heights, dtype=float)
-    return adhesive_flat(z.max() - z, scan.dx, bem.e_star, law, bem.pressure, bem.mean_gap,
-                         bem.stiffness)
+    return adhesive_flat(z.max() - z, math.sqrt(scan.dx * scan.dy), bem.e_star, law,
+                         bem.pressure, bem.mean_gap, bem.stiffness)
 
 
 def _check_adhesive(scan: Topography, periodic: bool, hardness: float | None) -> None:
@@ -175,7 +180,7 @@ def _check_adhesive(scan: Topography, periodic: bool, hardness: float | None) ->
             "pass --periodic yes to take it as periodic (its seams then carry a step)")
     if hardness is not None:
         raise SurfmetInputError("the adhesive solve is elastic: leave out --hardness")
-    if not math.isclose(scan.dx, scan.dy, rel_tol=1e-9):
+    if not math.isclose(scan.dx, scan.dy, rel_tol=SQUARE_PIXEL):
         raise SurfmetInputError(f"the adhesive solve needs square pixels, the scan's are "
                                 f"{scan.dx:.4g} m x {scan.dy:.4g} m: resample it")
 
