@@ -69,3 +69,24 @@ def test_all_mechanisms_refuse_scans_they_would_ignore(capsys) -> None:
                "2N:12N:4", "--model", "all", "--plate", "surfmet/data/paper_plate.x3p"])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 1 and len(err) == 1 and "takes no scans" in err[0]
+
+
+def test_all_mechanisms_adhesion_hysteresis(capsys) -> None:
+    """The adhesion-hysteresis row: with the default w = Delta_w = 0.1 J/m^2 and with a
+    given Delta_w, whose moment it scales in proportion (Kendall 1975: F_r = Delta_w 2a at
+    a fixed JKR radius); a Delta_w above w is one line."""
+    base = ["rolling", "--radius", "20mm", "--materials", "steel,aluminium", "--loads",
+            "2N:12N:4", "--model", "all", "--grid", "32", "--no-microslip", "--json"]
+    assert main(base) == 0
+    full = json.loads(capsys.readouterr().out)["mechanisms"]["adhesion_hysteresis"]
+    assert full["ranked"] is False and full["moments_at_rotor_loads"]["unit"] == "N m"
+    assert main([*base, "--adhesion-hysteresis", "25mJ/m2"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    quarter = out["mechanisms"]["adhesion_hysteresis"]
+    for a, b in zip(quarter["moments_at_rotor_loads"]["value"],
+                    full["moments_at_rotor_loads"]["value"]):
+        assert a == pytest.approx(b / 4, rel=1e-12)
+    assert out["mechanisms"]["hysteresis"]["ranked"] is True
+    rc = main([*base, "--adhesion-hysteresis", "0.2J/m2"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1 and "hysteresis" in err[0]

@@ -67,3 +67,33 @@ def test_readme_table_side_figures(report) -> None:
     p0 = hertz_sphere(0.02, 4.665, composite_modulus(steel, alu)).p0
     hardness = contact_hardness(steel, alu)
     assert round(p0 / 1e9, 2) == 0.20 and round(hardness / 1e9, 2) == 1.05
+
+
+def test_adhesion_hysteresis_row(report) -> None:
+    """Kendall (1975): F_r = Delta_w 2a with JKR's radius, M_r = F_r R; computed here from
+    the closed forms, at steel on aluminium in air (w = Delta_w = 0.1 J/m^2, the stated
+    upper bound). It is listed but not ranked, so the dominant mechanism stays hysteresis."""
+    import math
+
+    from contact import composite_modulus, hertz_sphere, material
+    from contact.adhesion.rolling import STEEL_ALUMINIUM_AIR, jkr_radius
+
+    got = {m.name: m for m in report.comparison.mechanisms}
+    m = got["adhesion_hysteresis"]
+    w, dw = STEEL_ALUMINIUM_AIR[:2]
+    assert (w, dw) == (0.1, 0.1)
+    e_star = composite_modulus(material("steel"), material("aluminium"))
+    r = 0.02
+    for n, moment in zip(report.comparison.rotor_loads, m.rotor_moments):
+        p_a = 3 * math.pi * w * r
+        a = (3 * r / (4 * e_star) * (n + p_a + math.sqrt(6 * math.pi * w * r * n + p_a ** 2))
+             ) ** (1 / 3)
+        assert moment == pytest.approx(dw * 2 * a * r, rel=1e-12)
+    # weak adhesion: JKR's radius is Hertz's
+    assert jkr_radius(4.665, r, e_star, 1e-20) == pytest.approx(
+        hertz_sphere(r, 4.665, e_star).a, rel=1e-9)
+    # a contact width growing as N^(1/3), a little slower with adhesion: concave, so the
+    # implied eps_s - eps_a is negative
+    assert 0.30 < m.sweep.lambda_eff < 1 / 3 and m.delta_eps < 0
+    assert report.comparison.dominant()[0] == "hysteresis"
+    assert any("Israelachvili" in n for n in report.notes)

@@ -6,7 +6,11 @@
   grid, tensile tractions solved (:func:`solve_adhesive`);
 - :mod:`contact.adhesion.cycle`: displacement-controlled approach and retraction, pull-off,
   jumps and hysteresis;
-- :mod:`contact.adhesion.ball`: the sphere on a flat (:func:`adhesive_ball`).
+- :mod:`contact.adhesion.ball`: the sphere on a flat (:func:`adhesive_ball`);
+- :mod:`contact.adhesion.flat`: a rough periodic surface on a flat at prescribed nominal
+  pressures (load control around the solve);
+- :mod:`contact.adhesion.stickiness`: Pastewka & Robbins' stickiness criterion;
+- :mod:`contact.adhesion.rolling`: adhesion hysteresis as a rolling-resistance mechanism.
 
 The pressure bounds that carry a law into a normal solve are
 :class:`contact.bem.bounds.PressureBounds`.

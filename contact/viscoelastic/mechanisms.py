@@ -23,6 +23,11 @@ principles except the hysteresis rule's loss fraction):
 - ``plastic``: first-pass plastic work at the softer body's hardness (:mod:`contact.rolling`).
 - ``microslip``: frictional dissipation of free rolling between the dissimilar elastic
   bodies (Bentall & Johnson 1967), from a tangential solver passed as ``microslip=``.
+- ``adhesion_hysteresis``: the work of adhesion lost between the sealing front and the
+  peeling rear of the contact, Delta_w 2a per unit distance (Kendall 1975;
+  :mod:`contact.adhesion.rolling`), when ``adhesion=(w, Delta_w)`` is given. Its Delta_w
+  is an upper bound, not a measurement, so it is listed but not ranked by
+  :meth:`MechanismComparison.dominant`.
 """
 
 from __future__ import annotations
@@ -35,6 +40,9 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
+
+#: Mechanisms whose number is a bound on an unmeasured parameter: listed, not ranked.
+BOUNDS_ONLY = ("adhesion_hysteresis",)
 
 
 @dataclass(frozen=True)
@@ -87,8 +95,10 @@ class MechanismComparison:
     assumptions: dict = field(default_factory=dict)
 
     def dominant(self) -> tuple[str, float]:
-        """(name of the largest symmetric-rotor torque, factor over the next one)."""
-        ranked = sorted(self.mechanisms, key=lambda m: m.torque_symmetric, reverse=True)
+        """(name of the largest symmetric-rotor torque, factor over the next one), among
+        the mechanisms estimated from their materials (:data:`BOUNDS_ONLY` left out)."""
+        ranked = sorted((m for m in self.mechanisms if m.name not in BOUNDS_ONLY),
+                        key=lambda m: m.torque_symmetric, reverse=True)
         top = ranked[0].torque_symmetric
         nxt = ranked[1].torque_symmetric if len(ranked) > 1 else 0.0
         return ranked[0].name, (top / nxt if nxt > 0 else math.inf)
@@ -112,7 +122,8 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
                        rotor_loads: tuple[float, float, float], rolling_inertia: float,
                        speed: float, loss: tuple[float, float], hardness: float,
                        grid: int = 128,
-                       microslip: Callable[[Sequence[float]], Any] | None = None
+                       microslip: Callable[[Sequence[float]], Any] | None = None,
+                       adhesion: tuple[float, float] | None = None
                        ) -> MechanismComparison:
     """M_r per mechanism over ``loads`` and at the rotor's ball loads.
 
@@ -135,6 +146,8 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
         Flow pressure of the softer body (Pa).
     microslip : callable, optional
         loads -> RollingSweep of the micro-slip mechanism (the tangential solver).
+    adhesion : (w, Delta_w), optional
+        Work of adhesion and its hysteresis (J/m^2): the adhesion-hysteresis mechanism.
     """
     from contact.hertz import hertz_sphere
     from contact.materials import composite_modulus, displacement_shares
@@ -168,6 +181,9 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
         mu = ms.settings.get("mu")
         out.append(_with_rotor("microslip", ms, _lookup(ms), rotor_loads, rolling_inertia,
                                f"tangential solver, free rolling, mu = {mu}"))
+    if adhesion is not None:
+        out.append(_adhesion_mechanism(radius, e_star, every, adhesion, rotor_loads,
+                                       rolling_inertia))
     assumptions = {"speed": speed, "loss_ball": loss[0], "loss_plate": loss[1],
                    "alpha_h": alpha, "hardness": hardness, "peak_time": t_peak,
                    "contact_radius_symmetric": a_s, "grid": grid}
@@ -186,3 +202,20 @@ def _lookup(sweep: Any) -> Callable[[float], float]:
         return float(moments[k])
 
     return at
+
+
+def _adhesion_mechanism(radius: float, e_star: float, loads: np.ndarray,
+                        adhesion: tuple[float, float], rotor_loads: tuple[float, float, float],
+                        inertia: float) -> Mechanism:
+    """Adhesion hysteresis over the sweep (:mod:`contact.adhesion.rolling`)."""
+    from contact.adhesion.rolling import adhesion_hysteresis_forces
+    from contact.viscoelastic.sweep import sweep_record
+
+    w, dw = adhesion
+    forces = adhesion_hysteresis_forces(loads, radius, e_star, w, dw)
+    sweep = sweep_record("adhesion_hysteresis", loads, forces, radius,
+                         {"model": "adhesion_hysteresis", "work_of_adhesion": w,
+                          "adhesion_hysteresis": dw})
+    return _with_rotor("adhesion_hysteresis", sweep, _lookup(sweep), rotor_loads, inertia,
+                       f"Delta_w 2a (Kendall 1975), w = {w:g} J/m^2, Delta_w = {dw:g} J/m^2 "
+                       "(an upper bound, smooth pair; not ranked)")

@@ -7,12 +7,14 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import (
+    _argtype,
     add_json_flag,
     add_quiet_flag,
     add_spikes_argument,
     check_output,
     emit_json,
     log,
+    positive_length,
     pressure,
     save_figure,
     show_progress,
@@ -33,6 +35,17 @@ EPILOG = """examples:
 --materials A presses the scan (material A) on a rigid flat; A,B on an elastic flat of B.
 The BEM is periodic when the scan is (opposite edges match, or --periodic yes) and has a
 free boundary otherwise; the output says which. Errors are model/BEM - 1.
+
+With --work-of-adhesion W --range RHO the scan is also pressed with adhesion
+(--interaction exponential, the default, t(g) = (w/rho) exp(-g/rho); or dugdale, tension
+w/h0 up to the gap h0 = RHO) at each pressure, beside the non-adhesive BEM: the contact
+area fraction (gap zero), the mean gap and the attractive pressure (the law's tension
+averaged over the nominal area, touching points included; the nominal pressure is the
+repulsive mean minus it). The adhesive solve is periodic and elastic: a non-periodic scan
+needs --periodic yes, and --hardness is refused. With several FILEs it runs on the BEM's
+map.
+  surfmet flat-contact synthetic.npz --e-star 1GPa --pressures 0.1MPa:1MPa:3 \
+      --work-of-adhesion 50mJ/m2 --range 5nm
 
 Several FILEs (or a contact.engineering container) are measurements of one surface: their
 profile PSD is averaged as `surfmet scales` does (each where it is reliable), turned into
@@ -68,11 +81,42 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "no extra solve) or from one more solve at p(1+1%%) per pressure")
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="plot A/A0 and the mean gap against p for all four")
+    add_adhesion_arguments(p)
     add_measurement_arguments(p, 10)
     add_json_flag(p)
     add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
+
+
+def add_adhesion_arguments(p: argparse.ArgumentParser) -> None:
+    """--work-of-adhesion, --range and --interaction of an adhesive flat contact."""
+    from surfmet.mechanics.adhesion import INTERACTIONS
+    from surfmet.units import parse_surface_energy
+
+    g = p.add_argument_group("adhesion (a periodic scan, elastic)")
+    g.add_argument("--work-of-adhesion", type=_argtype(parse_surface_energy, "work"),
+                   metavar="W", help="also press with adhesion of this work, e.g. 50mJ/m2")
+    g.add_argument("--range", type=positive_length, metavar="RHO", dest="range_",
+                   help="interaction range (rho of the exponential law, h0 = w/sigma0 of "
+                   "the Dugdale law), e.g. 2nm; needed with --work-of-adhesion")
+    g.add_argument("--interaction", choices=INTERACTIONS, default="exponential",
+                   help="adhesion law (default exponential)")
+
+
+def adhesion_law(args: argparse.Namespace) -> Any:
+    """The adhesion law the arguments ask for, or None."""
+    from surfmet.errors import SurfmetInputError
+    from surfmet.mechanics.adhesion import interaction_law
+
+    if (args.work_of_adhesion is None) != (args.range_ is None):
+        raise SurfmetInputError("--work-of-adhesion and --range go together: give both")
+    if args.work_of_adhesion is None:
+        return None
+    if not args.work_of_adhesion > 0:
+        raise SurfmetInputError(f"--work-of-adhesion must be positive, got "
+                                f"{args.work_of_adhesion!r} J/m^2")
+    return interaction_law(args.interaction, args.work_of_adhesion, args.range_)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -82,6 +126,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.records import flat_contact_record
 
     pressures = parse_pressures(args.pressures)
+    law = adhesion_law(args)
     check_output(args.plot, "--plot")
     if args.e_star is not None:
         if not args.e_star > 0:
@@ -94,12 +139,12 @@ def run(args: argparse.Namespace) -> int:
         hard = None  # the BEM stays elastic unless a hardness is asked for
     scans = read_measurements(args.files)
     if len(scans) > 1:
-        return _run_several(args, scans, pressures, e_star, hard, names)
+        return _run_several(args, scans, pressures, e_star, hard, names, law)
     bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
     rep = flat_contact(scans[0], e_star=e_star, pressures=pressures, hardness=hard,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
                        progress=lambda done, total: bar.update(1), spikes=args.spikes,
-                       material_hardness=material_hardness)
+                       material_hardness=material_hardness, adhesion=law)
     bar.close()
     rec = {"file": args.files[0], **({"materials": names} if names else {}),
            **flat_contact_record(rep)}
@@ -113,7 +158,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, e_star: float,
-                 hard: float | None, names: list[str]) -> int:
+                 hard: float | None, names: list[str], law: Any) -> int:
     """Persson from the averaged PSD of all measurements; the BEM on the first map."""
     from surfmet.batch import progress_bar
     from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
@@ -138,7 +183,8 @@ def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, e_s
         bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
         rep = flat_contact(scans[first], e_star=e_star, pressures=pressures, hardness=hard,
                            periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
-                           progress=lambda done, total: bar.update(1), spikes=args.spikes)
+                           progress=lambda done, total: bar.update(1), spikes=args.spikes,
+                           adhesion=law)
         bar.close()
         rec["bem_scan"] = {"file": a.measurements[first].file, **flat_contact_record(rep)}
         rec["all_scales"]["notes"].append(
@@ -186,7 +232,27 @@ def _print(rec: dict[str, Any]) -> None:
                   f"{'-' if k is None else f'{k / 1e12:.4g}':>11} "
                   f"{'-' if ea is None else f'{100 * ea:+.1f}%':>8} "
                   f"{'-' if eg is None else f'{100 * eg:+.1f}%':>8}")
+    if "adhesion" in rec:
+        _print_adhesion(rec)
     for note in rec["notes"]:
         log(f"  note: {note}")
     for caveat in rec["caveats"]:
         print(f"  CAVEAT: {caveat}")
+
+
+def _print_adhesion(rec: dict[str, Any]) -> None:
+    """The adhesive solve beside the non-adhesive one, per pressure."""
+    ad = rec["adhesion"]
+    print(f"  adhesion: {ad['interaction']} law, w = {ad['work_of_adhesion']['value'] * 1e3:.4g} "
+          f"mJ/m^2, range {ad['range']['value'] * 1e9:.4g} nm, peak tension "
+          f"{ad['peak_tension']['value'] / 1e6:.4g} MPa (periodic solve)")
+    print(f"  {'p (MPa)':>9} {'A/A0 bare':>10} {'A/A0 adh':>10} {'gap bare':>9} {'gap adh':>9} "
+          f"{'attractive (MPa)':>17}")
+    for r in rec["results"]:
+        a, b = r["adhesive"], r["bem"]
+        print(f"  {r['pressure']['value'] / 1e6:9.4g} {b['area_fraction']:10.4g} "
+              f"{a['contact_area_fraction']['value']:10.4g} "
+              f"{b['mean_gap']['value'] * 1e6:9.4g} {a['mean_gap']['value'] * 1e6:9.4g} "
+              f"{a['attractive_pressure']['value'] / 1e6:17.4g}")
+    for w in ad["warnings"]:
+        print(f"  WARNING: {w}")

@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import (
+    _argtype,
     add_ball_arguments,
     add_json_flag,
     add_spikes_argument,
@@ -13,6 +14,7 @@ from surfmet.cli._common import (
     emit_json,
     force,
     log,
+    positive_length,
     pressure,
     save_figure,
 )
@@ -36,10 +38,19 @@ yield at the softer material's hardness. Spikes are removed from the scans first
 The verdict names the simplest model within tolerance of the boundary elements: hertz,
 greenwood_tripp (GW asperities from the scans' spectra under the Hertz body), its
 elastic-plastic variant capped at the hardness, or the BEM itself (JSON: models, verdict).
+
+With --work-of-adhesion W (and --range Z0, default 0.3 nm) it states Tabor's parameter
+(R w^2 / (E*^2 Z0^3))^(1/3) of the contact (R the ball's radius) and of a typical asperity
+(the spectral summit radius), Pastewka & Robbins' (2014, PNAS 111:3298, eq. 10)
+stickiness parameter of the roughness (sticky below 1), the smooth-ball pull-offs
+against the load, and whether adhesion changes the contact (JSON: adhesion). Without W
+the section is left out (no default work of adhesion is assumed).
 """
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
+    from surfmet.units import parse_surface_energy
+
     p = sub.add_parser(
         "hertz-check",
         help="does Hertz hold for this rough contact? (GJM alpha and boundary elements)",
@@ -61,6 +72,12 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                       "native resolution, when it fits in memory)")
     add_on_edge_argument(p, "contact reaching the domain edge: enlarge (default), warn, fail")
     add_resolution_study_flag(p)
+    g = p.add_argument_group("adhesion (Tabor and Pastewka-Robbins parameters)")
+    g.add_argument("--work-of-adhesion", type=_argtype(parse_surface_energy, "work"),
+                   metavar="W", help="work of adhesion, e.g. 0.1J/m2: adds the adhesion "
+                   "assessment (left out without it)")
+    g.add_argument("--range", type=positive_length, metavar="Z0", dest="range_",
+                   help="interaction range (default 0.3 nm, an interatomic spacing)")
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)
@@ -84,7 +101,8 @@ def run(args: argparse.Namespace) -> int:
     check = hertz_check(args.plate, radius=args.radius, load=args.load,
                         materials=args.materials, ball=args.ball, hardness=args.hardness,
                         plastic=not args.elastic, spikes=args.spikes, grid=args.grid,
-                        on_edge=args.on_edge)
+                        on_edge=args.on_edge, work_of_adhesion=args.work_of_adhesion,
+                        adhesion_range=args.range_)
     res = check.result
     source = pixel_source(res.dx, check.scans.pair, args.grid)
     for note in check.notes:
@@ -121,8 +139,24 @@ def run(args: argparse.Namespace) -> int:
         for name, m in h.models.items():
             print(f"{name:26}{format_length(m.a_star):>12}{100 * m.radius_error:>9.3g}%"
                   f"{100 * m.profile_error:>13.3g}%")
+    if check.adhesion is not None:
+        _print_adhesion(check.adhesion)
     print(f"grid {res.shape[1]} x {res.shape[0]} cells, pixel {format_length(res.dx)} "
           f"({source}); "
           f"load {check.load:.4g} N, R = {format_length(check.radius)}, "
           f"{check.ball_material.name} on {check.plate_material.name}")
     return 0
+
+
+def _print_adhesion(a: Any) -> None:
+    """The adhesion assessment in text."""
+    from surfmet.units import format_length
+
+    print()
+    print(f"adhesion: w = {a.work:.4g} J/m^2, range {format_length(a.range)}: "
+          f"{'changes' if a.changes_contact else 'does not change'} the contact")
+    print(f"  Tabor parameter  contact {a.tabor_contact:.3g}"
+          + ("" if a.tabor_asperity is None else
+             f", asperity {a.tabor_asperity:.3g} (summit radius "
+             f"{format_length(a.summit_radius)})"))
+    print(f"  {a.reason}")

@@ -21,6 +21,15 @@ def add_visco_arguments(p: argparse.ArgumentParser) -> None:
                    "--model microslip and all (default 0.3, dry steel on aluminium)")
     p.add_argument("--no-microslip", action="store_true",
                    help="--model all without micro-slip (one 3D frictional solve per load)")
+    from surfmet.cli._common import _argtype
+    from surfmet.units import parse_surface_energy
+
+    energy = _argtype(parse_surface_energy, "work")
+    p.add_argument("--work-of-adhesion", type=energy, default=None, metavar="W",
+                   help="--model all: work of adhesion of the adhesion-hysteresis mechanism "
+                   "(default for steel on aluminium in air 0.1 J/m2, contact.adhesion.rolling)")
+    p.add_argument("--adhesion-hysteresis", type=energy, default=None, metavar="DW",
+                   help="--model all: w_sep - w_app (default W itself, the upper bound)")
     p.add_argument("--viscoelastic", action="append", default=None,
                    metavar="BODY:Eg=..:Er=..:tau=..",
                    help="a standard linear solid for ball or plate (creep time tau, CONTACT's "
@@ -63,7 +72,8 @@ def run_visco(args: argparse.Namespace) -> int:
         rep = rolling_mechanisms(radius=args.radius, materials=args.materials,
                                  loads=(lo, hi, n), speed=speed, loss=_loss(args.loss),
                                  hardness=args.hardness, grid=args.grid or 128,
-                                 mu=None if args.no_microslip else args.mu)
+                                 mu=None if args.no_microslip else args.mu,
+                                 adhesion=(args.work_of_adhesion, args.adhesion_hysteresis))
         if args.json:
             emit_json(rep.to_json())
             return 0
@@ -115,25 +125,32 @@ def _print_all(rep: Any) -> None:
           f"plate {a['loss_plate']:g} (alpha_h = {a['alpha_h']:.3g}), H = "
           f"{a['hardness'] / 1e9:.3g} GPa, smooth pair")
     for m in c.mechanisms:
-        print(f"  {m.name:13s} {m.assumption}")
+        print(f"  {m.name:19s} {m.assumption}")
     v = rep.verdict
     o = v.offset
     print(f"VERDICT            {v.sentence}")
     print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s2, "
           f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (joint model of Table 3, "
           "surfmet rotor paper2022)")
-    print(f"{'mechanism':>13}{'M_r(Ns)':>12}{'M_r(N1)':>12}{'M_r(N2)':>12}{'2nd diff':>12}"
+    print(f"{'mechanism':>19}{'M_r(Ns)':>12}{'M_r(N1)':>12}{'M_r(N2)':>12}{'2nd diff':>12}"
           f"{'lambda':>9}{'95 % CI':>19}{'eps_s-eps_a':>13}  reaches the offset?")
-    print(f"{'':13}{'N m':>12}{'N m':>12}{'N m':>12}{'N m':>12}")
+    print(f"{'':19}{'N m':>12}{'N m':>12}{'N m':>12}{'N m':>12}")
     for m in c.mechanisms:
         lo_ci, hi_ci = m.sweep.lambda_ci
         ms, m1, m2 = m.rotor_moments
         fit = (f"{m.sweep.lambda_eff:9.4f}   [{lo_ci:.4f}, {hi_ci:.4f}]"
                if m.sweep.fit is not None else f"{'not fitted':>28}")
-        print(f"{m.name:>13}{ms:12.4g}{m1:12.4g}{m2:12.4g}{m1 + m2 - 2 * ms:12.3g}{fit}"
+        print(f"{m.name:>19}{ms:12.4g}{m1:12.4g}{m2:12.4g}{m1 + m2 - 2 * ms:12.3g}{fit}"
               f"{m.delta_eps:13.3g}  {'yes' if reaches_offset(m.delta_eps, o) else 'no'}")
     name, factor = c.dominant()
     print(f"dominant           {name}, {factor:.3g}x the next mechanism")
+    from contact.viscoelastic.mechanisms import BOUNDS_ONLY
+
+    top_ranked = next(m for m in c.mechanisms if m.name == name).torque_symmetric
+    for m in c.mechanisms:
+        if m.name in BOUNDS_ONLY and top_ranked > 0:
+            print(f"                   {m.name} (an upper bound, not ranked) reaches "
+                  f"{m.torque_symmetric / top_ranked:.3g}x the dominant one")
     top = max(c.mechanisms, key=lambda m: abs(m.delta_eps))
     if top.delta_eps:
         print(f"                   the largest implied difference ({top.name}) is "

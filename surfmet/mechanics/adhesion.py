@@ -18,6 +18,23 @@ from surfmet.units import quantity
 INTERACTIONS = ("dugdale", "exponential")
 
 
+def interaction_law(interaction: str, work: float, range_: float) -> Any:
+    """The adhesion law named ``interaction`` of work ``work`` (J/m^2) and range ``range_``
+    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``."""
+    from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
+
+    if interaction not in INTERACTIONS:
+        raise SurfmetInputError(f"unknown interaction {interaction!r}: use "
+                                f"{' or '.join(INTERACTIONS)}")
+    return (DugdaleLaw.from_range(work, range_) if interaction == "dugdale"
+            else ExponentialLaw(work, range_))
+
+
+def interaction_name(law: Any) -> str:
+    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law."""
+    return "dugdale" if hasattr(law, "sigma0") else "exponential"
+
+
 def adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
              e_star: float | None = None, interaction: str = "dugdale", grid: int = 128,
              size: float | None = None, steps: int = 40,
@@ -28,7 +45,6 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     (Pa). Returns a :class:`contact.adhesion.ball.AdhesiveBall`.
     """
     from contact.adhesion.ball import adhesive_ball
-    from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
     from contact.materials import composite_modulus
     from surfmet.mechanics.material_spec import parse_materials
 
@@ -36,11 +52,7 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
         raise SurfmetInputError("give exactly one of the materials and E*")
     if e_star is None:
         e_star = composite_modulus(*parse_materials(materials))
-    if interaction not in INTERACTIONS:
-        raise SurfmetInputError(f"unknown interaction {interaction!r}: use "
-                                f"{' or '.join(INTERACTIONS)}")
-    law = (DugdaleLaw.from_range(work, range_) if interaction == "dugdale"
-           else ExponentialLaw(work, range_))
+    law = interaction_law(interaction, work, range_)
     return adhesive_ball(radius, e_star, law, grid=grid, size=size, steps=steps,
                          progress=progress)
 
@@ -65,7 +77,7 @@ def adhesion_record(ball: Any) -> dict[str, Any]:
     return {
         "radius": quantity(ball.radius, "m"),
         "e_star": quantity(ball.e_star, "Pa"),
-        "interaction": "dugdale" if hasattr(law, "sigma0") else "exponential",
+        "interaction": interaction_name(law),
         "work_of_adhesion": quantity(law.work, "J/m^2"),
         "range": quantity(law.range, "m"),
         "peak_tension": quantity(law.peak, "Pa"),

@@ -44,6 +44,7 @@ class FlatContactReport:
     settings: dict[str, Any] = field(default_factory=dict)
     preparation: dict[str, Any] = field(default_factory=dict)
     caveats: tuple[str, ...] = ()
+    adhesion: Any = None  # contact.adhesion.flat.AdhesiveFlat, when a law was given
 
     @property
     def periodic(self) -> bool:
@@ -81,8 +82,8 @@ def parse_pressures(text: str) -> np.ndarray:
 def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
                  stiffness: str = "curve", progress: Any = None,
-                 spikes: Any = SPIKES, material_hardness: float | None = None
-                 ) -> FlatContactReport:
+                 spikes: Any = SPIKES, material_hardness: float | None = None,
+                 adhesion: Any = None) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -106,6 +107,10 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         The softer body's hardness (Pa) when the BEM stays elastic: a nominal pressure
         above it (or above ``hardness``) gets a caveat, since the whole nominal area
         would flow there and no elastic theory holds.
+    adhesion : InteractionLaw, optional
+        An adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`): the scan is
+        also pressed with adhesion at each pressure (:func:`adhesive_sweep`), beside the
+        non-adhesive BEM.
 
     A scan dominated by a curved form (a ball's cap) has its second-order surface removed,
     and a caveat says so (:func:`surfmet.mechanics.spectrum.prepare`).
@@ -125,6 +130,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
     scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
+    if adhesion is not None:
+        _check_adhesive(scan, per, hardness)
     spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
                     hardness=hardness)
     try:
@@ -137,6 +144,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
             "gw": greenwood_williamson(p, e_star, spec.summits),
             "bgt": bush_gibson_thomas(p, e_star, spec.slope_rms),
         }
+        adhesive = None if adhesion is None else adhesive_sweep(scan, bem, adhesion)
     except ContactInputError as exc:
         raise SurfmetInputError(str(exc)) from None
     form = (("a curved form dominated the plane-levelled scan: its second-order surface "
@@ -145,7 +153,36 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
             if level == "poly:2" else ())
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
                              settings={"pressures": p.tolist()}, preparation=preparation,
-                             caveats=form + _yield_caveats(p, hardness or material_hardness))
+                             caveats=form + _yield_caveats(p, hardness or material_hardness),
+                             adhesion=adhesive)
+
+
+#: Pixels whose sides differ by less than this share are square for the adhesive solve,
+#: which takes their geometric mean (instruments' calibrated pitches differ by ~1e-4).
+SQUARE_PIXEL = 1e-3
+
+
+def adhesive_sweep(scan: Topography, bem: FlatContact, law: Any) -> Any:
+    """The scan pressed with adhesion at the BEM's pressures, started from its solves
+    (:func:`contact.adhesion.flat.adhesive_flat`: periodic, square pixels, elastic)."""
+    from contact.adhesion.flat import adhesive_flat
+
+    z = np.asarray(scan.heights, dtype=float)
+    return adhesive_flat(z.max() - z, math.sqrt(scan.dx * scan.dy), bem.e_star, law,
+                         bem.pressure, bem.mean_gap, bem.stiffness)
+
+
+def _check_adhesive(scan: Topography, periodic: bool, hardness: float | None) -> None:
+    """What the adhesive solve needs, checked before any work."""
+    if not periodic:
+        raise SurfmetInputError(
+            "the adhesive solve is periodic and this scan is not (its opposite edges differ): "
+            "pass --periodic yes to take it as periodic (its seams then carry a step)")
+    if hardness is not None:
+        raise SurfmetInputError("the adhesive solve is elastic: leave out --hardness")
+    if not math.isclose(scan.dx, scan.dy, rel_tol=SQUARE_PIXEL):
+        raise SurfmetInputError(f"the adhesive solve needs square pixels, the scan's are "
+                                f"{scan.dx:.4g} m x {scan.dy:.4g} m: resample it")
 
 
 def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:

@@ -71,6 +71,7 @@ class HertzCheck:
     hierarchy: Any = None
     summits: Any = None
     grid: int | None = None
+    adhesion: Any = None  # surfmet.mechanics.hertz_adhesion.HertzAdhesion
 
     @property
     def verdict(self) -> str:
@@ -147,6 +148,8 @@ def hertz_check(
     max_grid: int | None = MAX_GRID,
     on_edge: str = "enlarge",
     offset: tuple[float, float] | None = None,
+    work_of_adhesion: float | None = None,
+    adhesion_range: float | None = None,
 ) -> HertzCheck:
     """Does Hertz hold for this plate (and ball) at this load?
 
@@ -177,6 +180,11 @@ def hertz_check(
     offset : (float, float), optional
         Apex position (x, y) relative to the middle of the paired roughness map (m): a
         track position. Default the middle.
+    work_of_adhesion, adhesion_range : float, optional
+        Work of adhesion (J/m^2) and interaction range (m, default
+        :data:`surfmet.mechanics.hertz_adhesion.DEFAULT_RANGE`): adds the adhesion
+        assessment (:mod:`surfmet.mechanics.hertz_adhesion`); without a work of adhesion it
+        is left out, with a note.
 
     Raises
     ------
@@ -195,6 +203,9 @@ def hertz_check(
         raise SurfmetInputError(f"the load must be a positive force in N, got {load!r}")
     ball_m, plate_m = parse_materials(materials)
     e_star = composite_modulus(ball_m, plate_m)
+    if adhesion_range is not None and work_of_adhesion is None:
+        raise SurfmetInputError("an interaction range needs a work of adhesion "
+                                "(--work-of-adhesion)")
     if hardness is None and plastic:
         hardness = contact_hardness(ball_m, plate_m)
     if not plastic:
@@ -218,10 +229,27 @@ def hertz_check(
         notes.append("no usable roughness spectrum: Greenwood-Tripp not evaluated")
     notes += [f"{name} left out of the models: {why}"
               for name, why in hierarchy.left_out.items()]
+    adhesion = _adhesion(summits, radius, load, e_star, work_of_adhesion, adhesion_range)
+    if adhesion is None:
+        notes.append("adhesion not assessed: give a work of adhesion (--work-of-adhesion W, "
+                     "and --range, default 0.3 nm) for the Tabor and Pastewka-Robbins "
+                     "parameters")
     return HertzCheck(comparison=check.comparison, elastic=check.elastic,
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
-                      notes=tuple(notes), hierarchy=hierarchy, summits=summits, grid=grid)
+                      notes=tuple(notes), hierarchy=hierarchy, summits=summits, grid=grid,
+                      adhesion=adhesion)
+
+
+def _adhesion(summits: Any, radius: float, load: float, e_star: float, work: float | None,
+              range_: float | None) -> Any:
+    """The adhesion assessment, or None without a work of adhesion."""
+    from surfmet.mechanics.hertz_adhesion import DEFAULT_RANGE, assess_adhesion
+
+    if work is None:
+        return None
+    return assess_adhesion(summits, radius=radius, load=load, e_star=e_star, work=work,
+                           range_=DEFAULT_RANGE if range_ is None else range_)
 
 
 def scan_summits(prep: PreparedScans) -> Any:

@@ -165,6 +165,7 @@ class MechanismsReport:
         return o.value, o.ci_low, o.ci_high
 
     def to_json(self) -> dict[str, Any]:
+        from contact.viscoelastic.mechanisms import BOUNDS_ONLY
         from surfmet.mechanics.rotor_verdict import offset_record
 
         c = self.comparison
@@ -183,6 +184,7 @@ class MechanismsReport:
                 "delta_eps": quantity(m.delta_eps, "rad/s^2"),
                 "can_explain_offset": bool(reaches_offset(m.delta_eps, self.verdict.offset)),
                 "assumption": m.assumption,
+                "ranked": m.name not in BOUNDS_ONLY,
             }
         return {"model": "all", "mechanisms": rows,
                 "rotor_loads": quantity(list(c.rotor_loads), "N"),
@@ -222,12 +224,17 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
                        loads: Any = (2.0, 12.0, 7), speed: float = 0.1,
                        loss: tuple[float, float] | None = None,
                        hardness: float | None = None, grid: int = 128,
-                       mu: float | None = 0.3) -> MechanismsReport:
+                       mu: float | None = 0.3,
+                       adhesion: tuple[float | None, float | None] = (None, None)
+                       ) -> MechanismsReport:
     """Mechanisms at the rotor's ball loads (smooth pair) beside Table 3's measurement.
 
     ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic.loss`;
     ``mu`` (assumed; dry steel on aluminium) sets the micro-slip mechanism, None leaves it
-    out (it costs one 3D frictional solve per load).
+    out (it costs one 3D frictional solve per load). ``adhesion`` = (w, Delta_w) (J/m^2)
+    sets the adhesion-hysteresis mechanism; None entries take steel on aluminium in air
+    (:data:`contact.adhesion.rolling.STEEL_ALUMINIUM_AIR`, Delta_w = w), and another pair
+    without a w leaves it out with a note.
     """
     from contact.materials import contact_hardness
     from contact.rolling import log_loads
@@ -248,13 +255,38 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     n1, n2 = normal_reactions(asym)
     sweep = log_loads(*loads) if isinstance(loads, tuple) else np.asarray(loads, float)
     ms = None if mu is None else microslip_sweep(radius, (ball_m, plate_m), mu)
+    adh, adh_notes = _adhesion_numbers(ball_m.name, plate_m.name, *adhesion)
     comp = compare_mechanisms(radius, ball_m, plate_m, loads=sweep, rotor_loads=(ns, n1, n2),
                               rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
-                              hardness=hardness, grid=grid, microslip=ms)
-    notes = () if mu is not None else ("micro-slip left out (no friction coefficient)",)
+                              hardness=hardness, grid=grid, microslip=ms, adhesion=adh)
+    notes = (() if mu is not None else ("micro-slip left out (no friction coefficient)",)) \
+        + adh_notes
     from surfmet.mechanics.rotor_verdict import paper_verdict
 
     return MechanismsReport(comp, paper_verdict(), notes)
+
+
+def _adhesion_numbers(ball: str, plate: str, work: float | None, hysteresis: float | None
+                      ) -> tuple[tuple[float, float] | None, tuple[str, ...]]:
+    """(w, Delta_w) of the adhesion-hysteresis mechanism, and the notes saying whence."""
+    from contact.adhesion.rolling import STEEL_ALUMINIUM_AIR
+
+    if work is None:
+        if {ball, plate} != {"steel", "aluminium"}:
+            return None, ("adhesion hysteresis left out: no work of adhesion known for "
+                          f"{ball} on {plate} (give --work-of-adhesion)",)
+        work = STEEL_ALUMINIUM_AIR[0]
+        source = f"adhesion hysteresis: {STEEL_ALUMINIUM_AIR[2]}"
+    else:
+        source = f"adhesion hysteresis: w = {work:g} J/m^2 as given"
+    if not work > 0:
+        raise SurfmetInputError(f"the work of adhesion must be positive, got {work!r}")
+    dw = work if hysteresis is None else hysteresis
+    if not 0 <= dw <= work:
+        raise SurfmetInputError(f"the adhesion hysteresis must lie between 0 and the work of "
+                                f"adhesion {work:g} J/m^2, got {dw!r}")
+    return (work, dw), (source + "; an upper bound on the smooth pair, listed but not "
+                        "ranked among the mechanisms",)
 
 
 def reaches_offset(delta_eps: float, offset: Any) -> bool:

@@ -56,8 +56,10 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
                     "stiffness": _rel(k, pt.stiffness),
                 },
             }
+        if rep.adhesion is not None:
+            row["adhesive"] = _adhesive_row(rep.adhesion.points[i], pt)
         results.append(row)
-    return {
+    rec = {
         "boundary": "periodic" if bem.periodic else "free",
         "levelling": rep.levelling,
         "grid": {"nx": bem.shape[1], "ny": bem.shape[0], "dx": quantity(bem.dx, "m"),
@@ -74,4 +76,43 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
             "relative_error = model / BEM - 1; the BEM area counts whole cells, the "
             "corrected area removes the perimeter bias (Yastrebov et al. 2015)",
         ],
+    }
+    if rep.adhesion is not None:
+        rec["adhesion"] = _adhesion_header(rep.adhesion)
+    return rec
+
+
+def _adhesion_header(ad: Any) -> dict[str, Any]:
+    """The law and resolution of an adhesive sweep."""
+    from surfmet.mechanics.adhesion import interaction_name
+
+    law = ad.law
+    return {
+        "interaction": interaction_name(law),
+        "work_of_adhesion": quantity(law.work, "J/m^2"),
+        "range": quantity(law.range, "m"),
+        "peak_tension": quantity(law.peak, "Pa"),
+        "process_zone": quantity(ad.process_zone, "m"),
+        "process_zone_pixels": quantity(ad.process_zone / ad.dx, ""),
+        "warnings": list(ad.warnings),
+        "notes": ["per pressure, 'adhesive' is the periodic adhesive solve and 'bem' the "
+                  "non-adhesive one; attractive_pressure is the law's tension averaged over "
+                  "the nominal area, touching points included: pressure = repulsive - "
+                  "attractive"],
+    }
+
+
+def _adhesive_row(a: Any, bare: Any) -> dict[str, Any]:
+    """One pressure of an adhesive sweep, with its change from the non-adhesive solve."""
+    return {
+        "pressure": quantity(a.pressure, "Pa"),
+        "contact_area_fraction": quantity(a.area_fraction, ""),
+        "mean_gap": quantity(a.mean_gap, "m"),
+        "attractive_pressure": quantity(a.attractive_pressure, "Pa"),
+        "repulsive_pressure": quantity(a.repulsive_pressure, "Pa"),
+        "approach": quantity(a.approach, "m"),
+        "relative_change": {"contact_area_fraction": _rel(a.area_fraction, bare.area_fraction),
+                            "mean_gap": _rel(a.mean_gap, bare.mean_gap)},
+        "solves": a.solves,
+        "iterations": a.iterations,
     }

@@ -38,7 +38,17 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
         "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
                            "p_hertz": _q(prof.p_hertz, "Pa")},
         **_models(check),
+        **_adhesion(check),
     }
+
+
+def _adhesion(check: Any) -> dict[str, Any]:
+    """The adhesion section, when a work of adhesion was given."""
+    if getattr(check, "adhesion", None) is None:
+        return {}
+    from surfmet.mechanics.hertz_adhesion import hertz_adhesion_record
+
+    return {"adhesion": hertz_adhesion_record(check.adhesion)}
 
 def _models(check: Any) -> dict[str, Any]:
     h = check.hierarchy
