@@ -21,7 +21,9 @@ Numbers for steel on aluminium in air (:data:`STEEL_ALUMINIUM_AIR`): in air both
 carry oxide and adsorbed films, and their adhesion is that of van der Waals forces across
 the films, w = A / (12 pi D0^2) with D0 = 0.165 nm (Israelachvili 2011, Intermolecular
 and Surface Forces, 3rd ed., ch. 13) and Hamaker constants of the oxides about
-1e-19 to 1.5e-19 J, giving w of about 0.1 to 0.15 J/m^2; 0.1 J/m^2 is taken. No measured
+1e-19 to 1.5e-19 J (Al2O3 across vacuum: Bergstrom 1997, Adv. Colloid Interface Sci.
+70:125; Ackler, French & Chiang 1996, J. Colloid Interface Sci. 179:460), giving w of about
+0.1 to 0.15 J/m^2; 0.1 J/m^2 is taken. No measured
 hysteresis of this pair is known to the project: Delta_w = w (the surfaces approach with
 no adhesion and part with all of it) is the largest it can be, so the mechanism is an
 upper bound for a smooth pair, and a rough pair that Pastewka & Robbins' criterion finds
@@ -41,8 +43,8 @@ from contact._validate import positive
 #: aluminium in air; Delta_w = w is an upper bound (see the module notes).
 STEEL_ALUMINIUM_AIR = (
     0.1, 0.1,
-    "w = A / (12 pi D0^2), D0 = 0.165 nm, A ~ 1e-19 J of the oxide films (Israelachvili "
-    "2011, ch. 13): about 0.1 J/m^2; Delta_w = w is the upper bound (complete hysteresis; "
+    "w = A / (12 pi D0^2), D0 = 0.165 nm (Israelachvili 2011, ch. 13), A ~ 1e-19 J of the "
+    "oxide films (Al2O3: Bergstrom 1997; Ackler, French & Chiang 1996): about 0.1 J/m^2; Delta_w = w is the upper bound (complete hysteresis; "
     "none measured for this pair)")
 
 
