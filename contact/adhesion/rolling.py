@@ -44,7 +44,8 @@ from contact._validate import positive
 STEEL_ALUMINIUM_AIR = (
     0.1, 0.1,
     "w = A / (12 pi D0^2), D0 = 0.165 nm (Israelachvili 2011, ch. 13), A ~ 1e-19 J of the "
-    "oxide films (Al2O3: Bergstrom 1997; Ackler, French & Chiang 1996): about 0.1 J/m^2; Delta_w = w is the upper bound (complete hysteresis; "
+    "oxide films (Al2O3: Bergstrom 1997; Ackler, French & Chiang 1996): about 0.1 J/m^2; "
+    "Delta_w = w is the upper bound (complete hysteresis; "
     "none measured for this pair)")
 
 
