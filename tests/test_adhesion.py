@@ -133,6 +133,7 @@ def test_pull_off_converges_with_the_grid():
 
 
 @pytest.mark.slow
+@pytest.mark.campaign
 @pytest.mark.parametrize("lam", [0.3, 0.5, 1.0])
 def test_maugis_pull_off_across_the_transition(lam):
     """Maugis-Dugdale pull-off to 2 % in the continuum limit: the error is first order in

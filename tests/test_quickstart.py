@@ -111,6 +111,7 @@ def test_the_quickstart_has_code_and_only_justified_skips():
 
 
 @pytest.mark.slow
+@pytest.mark.campaign
 def test_the_quickstart_runs_as_written(tmp_path, monkeypatch):
     import matplotlib
 

@@ -72,6 +72,7 @@ def test_first_order_wave_response_matches_finite_differences():
             assert np.max(np.abs(resp[:, col] - fd)) < 0.03 * np.max(np.abs(fd))
 
 
+@pytest.mark.campaign
 @settings(deadline=None, derandomize=True, max_examples=8)
 @given(seed=st.integers(0, 2**32 - 1))
 def test_clean_columns_are_adequate_at_the_calibrated_rate(seed):
@@ -120,6 +121,7 @@ def test_a_hidden_plate_wave_is_flagged_or_named(band, seed, log_factor, effect)
     assert not (rep.effect in IN_FAMILY and rep.adequacy.adequate)
 
 
+@pytest.mark.campaign
 @settings(deadline=None, derandomize=True, max_examples=2)
 @given(seed=st.integers(0, 2**31), log_factor=st.floats(0.0, math.log(1.3)))
 def test_a_short_hidden_plate_wave_is_mostly_flagged_or_named(seed, log_factor):

@@ -32,6 +32,7 @@ def test_release_late_in_the_step(x):
     assert rep.eps0 == pytest.approx(c.eps0, rel=0.01)
 
 
+@pytest.mark.campaign
 @settings(deadline=None, derandomize=True, max_examples=44)
 @given(seed=st.integers(0, 2**32 - 1))
 def test_clean_columns_from_the_declared_range_report_nothing(seed):

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from contact.rotor.adequacy import WaveScan
 from contact.rotor.analysis import analyse_test
@@ -44,6 +45,7 @@ def _summary(rep):
             {m: round(f.bic, 6) for m, f in rep.fits.items()})
 
 
+@pytest.mark.campaign
 def test_table3_selections_are_reproducible():
     # the forward model keeps caches (grid layout, speed-term buffers) between calls: a
     # second pass, in the reverse order, must give the same selections and the same BICs
