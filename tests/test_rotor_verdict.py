@@ -217,3 +217,13 @@ def test_readme_quotes_the_paper_verdict() -> None:
                                                     round(e.ci_high, 2)]
     assert float(m.group(9)) == round(e.offset_lambda_4_3, 3)
     assert int(m.group(10)) == e.launches
+
+
+def test_verdict_lines_say_the_floor_and_one_unit_spelling() -> None:
+    """The text never prints a p-value finer than the calibration can resolve, and spells
+    the acceleration unit one way."""
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_lines
+
+    text = "\n".join(verdict_lines(paper_verdict()))
+    assert "calibrated p <= 0.0083" in text and "p = 0.00826" not in text
+    assert "rad/s2" not in text and "rad/s²" in text

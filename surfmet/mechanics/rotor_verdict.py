@@ -151,17 +151,22 @@ def _p_floor() -> float:
     return 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
 
 
+def _p_shown(p: float) -> str:
+    floor = _p_floor()
+    return (f"<= {floor:.2g} (the calibration's floor)" if p <= floor * (1 + 1e-9)
+            else f"= {p:.3g}")
+
+
 def verdict_lines(v: Any) -> list[str]:
     """The verdict in words, first thing every entry point prints."""
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
-             f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s2, "
+             f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s², "
              f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (launch-to-launch sd "
-             f"{o.launch_sd:.4f} rad/s2, t on {o.dof} dof)",
+             f"{o.launch_sd:.4f} rad/s², t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
-             f"(critical {v.f_critical:.2f} at 2 %), calibrated p = {v.shared_track_p:.3g} "
-             f"(the smallest it can resolve: {_p_floor():.2g})"]
+             f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
@@ -173,10 +178,10 @@ def verdict_lines(v: Any) -> list[str]:
            else "none in 0.05-20")
     lines += [f"  lambda needed at slope {math.degrees(e.slope):.3g} deg ({e.slope_basis}; the "
               f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam}",
-              f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s2; "
+              f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s²; "
               f"launches per group to tell 4/3 from 1 (90 % power, 2 %): "
               f"{e.launches if e.launches is not None else 'more than 100000'}",
-              "  confounds (equivalent acceleration, rad/s2; can it make the offset?):"]
+              "  confounds (equivalent acceleration, rad/s²; can it make the offset?):"]
     for c in v.confounds:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
