@@ -227,3 +227,15 @@ def test_verdict_lines_say_the_floor_and_one_unit_spelling() -> None:
     text = "\n".join(verdict_lines(paper_verdict()))
     assert "calibrated p <= 0.0083" in text and "p = 0.00826" not in text
     assert "rad/s2" not in text and "rad/s²" in text
+
+
+def test_report_puts_the_same_verdict_first() -> None:
+    import html
+
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.report import render_html
+
+    v = paper_verdict()
+    page = html.unescape(render_html([], rotor=v))
+    assert v.sentence in page
+    assert page.index("The paper's question") < page.index('class="overview"')
