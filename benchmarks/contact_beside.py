@@ -15,7 +15,7 @@ Mapping of the case onto CONTACT (module 3, non-Hertzian, ``IPOTCN = 1``, ``IBAS
 
 - body 1 (the upper body, which receives the tractions and whose slip relative to body 2
   defines the creepage) is the steel ball, body 2 the aluminium flat: the same as our
-  body 1 (:mod:`contact.tangential.influence`), so Kalker's K has the same sign (-0.0791);
+  body 1 (:mod:`contact.halfspace.cerruti`), so Kalker's K has the same sign (-0.0791);
 - rolling direction ``CHI = 0`` (the contact moves along +x, the leading edge is at the
   largest x), the step ``DQ = DX``: CONTACT's steady-state slip is then
   s_I = w + (u_I - u_{I+1})/dx, the same upwind difference as

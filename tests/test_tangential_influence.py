@@ -13,13 +13,9 @@ import numpy as np
 import pytest
 from scipy.integrate import dblquad, quad
 
+from contact.halfspace.cerruti import element_integrals, line_integrals
+from contact.halfspace.constants import pair_constants, shear_modulus
 from contact.materials import composite_modulus, material
-from contact.tangential.influence import (
-    element_integrals,
-    line_integrals,
-    pair_constants,
-    shear_modulus,
-)
 from contact.tangential.kernels import update_states
 
 KERNELS = {

@@ -182,7 +182,7 @@ def test_bad_input_one_error_line_each():
 
 def _one_problem():
     c = pair_constants_from(80e9, 0.3, 80e9, 0.3)
-    from contact.tangential.influence import HalfSpacePair
+    from contact.halfspace.pair import HalfSpacePair
 
     op = HalfSpacePair(16, 16, 1e-5, 1e-5, c)
     x = (np.arange(16) - 7.5) * 1e-5

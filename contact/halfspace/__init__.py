@@ -1,9 +1,18 @@
-"""The elastic half-space: how a pressure on a grid of cells displaces the surface.
+"""The elastic half-space: the one operator family under every contact solver.
 
 - :mod:`contact.halfspace.influence`: Love's influence coefficients of a uniformly loaded
-  rectangle, their free-boundary layout and spectrum, and the periodised Love spectrum;
-- :mod:`contact.halfspace.convolution`: the FFT convolution u = K * p (free boundary by
-  DC-FFT, or periodic), cached per grid.
+  rectangle (the normal block), their free-boundary layout and spectrum, the periodised
+  Love spectrum, and the Love spectrum of a grid extended ahead;
+- :mod:`contact.halfspace.cerruti`: Boussinesq, Cerruti and Kalker's coupling on elements
+  and, in plane strain, on strips (the blocks of the pair operator);
+- :mod:`contact.halfspace.constants`: the pair's combined constants G, nu, K;
+- :mod:`contact.halfspace.padding`: the zero-padded layouts (free, extended ahead, plane
+  strain) and the pruned FFTs that every operator runs on, in float64 or float32;
+- :mod:`contact.halfspace.convolution`: u = K * p for the normal solvers (free boundary
+  by DC-FFT, periodic, or extended ahead for viscoelastic rolling), cached per grid;
+- :mod:`contact.halfspace.pair`: u = A t for the tractions (p, q_x, q_y) of two bodies
+  (free, plane strain, extended ahead), for the tangential and viscoelastic solvers.
 
-All kernels are for a composite modulus E* = 1: divide by E* for a displacement in metres.
+The Love kernels are for a composite modulus E* = 1 (divide by E* for metres); the pair's
+blocks carry the pair's constants (m/Pa).
 """

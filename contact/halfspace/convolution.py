@@ -1,10 +1,14 @@
 """FFT convolution with the half-space kernel: the displacement u = K * p of a pressure grid.
 
-Two boundary conditions, with the kernels of :mod:`contact.halfspace.influence`:
+Three domains, with the kernels of :mod:`contact.halfspace.influence` and the padded
+transforms of :mod:`contact.halfspace.padding`:
 
 - **free boundary** (DC-FFT; Liu, Wang & Liu 2000, Wear 243:101): the pressure is
   zero-padded to a grid of twice the size and the first quadrant of the cyclic
   convolution is the exact linear convolution;
+- **extended ahead** (``ahead = m`` cells): the same, with the displacement also on the
+  m cells beyond the last column (+x), which the steady-rolling operators of
+  :mod:`contact.viscoelastic` integrate along the rolling direction;
 - **periodic**: the unpadded cyclic convolution with the periodised Love kernel.
 
 What keeps a convolution cheap inside an iterative solver:
@@ -27,14 +31,16 @@ import threading
 from functools import lru_cache
 
 import numpy as np
-import scipy.fft as sfft
 
+from contact.errors import ContactInputError
 from contact.halfspace.influence import (
+    extended_kernel_spectrum,
     free_kernel_quadrant,
     free_kernel_spectrum,
     periodic_kernel_real,
     periodic_kernel_spectrum,
 )
+from contact.halfspace.padding import forward, inverse, padded_shape, real_types
 
 
 class Convolution:
@@ -48,27 +54,40 @@ class Convolution:
         Cell pitch (m).
     periodic : bool
         Periodic domain instead of a free (zero-padded) boundary.
+    ahead : int
+        Free boundary only: the displacement is also wanted on this many cells beyond the
+        last column (+x); the result then has nx + ahead columns.
     """
 
-    def __init__(self, ny: int, nx: int, dx: float, dy: float, periodic: bool):
+    def __init__(self, ny: int, nx: int, dx: float, dy: float, periodic: bool,
+                 ahead: int = 0):
         self.ny, self.nx = int(ny), int(nx)
         self.dx, self.dy = float(dx), float(dy)
         self.periodic = bool(periodic)
+        self.ahead = int(ahead)
+        if self.ahead < 0 or (periodic and self.ahead):
+            raise ContactInputError("the grid extends ahead by a whole number of cells >= 0, "
+                                    "and only with a free boundary")
+        self.shape = (self.ny, self.nx) if periodic else padded_shape(self.ny, self.nx,
+                                                                       self.ahead)
         if periodic:
             self.spec64 = periodic_kernel_spectrum(self.ny, self.nx, self.dx, self.dy)
             self.real = periodic_kernel_real(self.ny, self.nx, self.dx, self.dy)
         else:
-            self.spec64 = free_kernel_spectrum(self.ny, self.nx, self.dx, self.dy)
+            self.spec64 = (extended_kernel_spectrum(self.ny, self.nx, self.ahead, self.dx,
+                                                    self.dy) if self.ahead else
+                           free_kernel_spectrum(self.ny, self.nx, self.dx, self.dy))
             self.real = free_kernel_quadrant(self.ny, self.nx, self.dx, self.dy)
-        self.spec32 = self.spec64.astype(np.float32)
+        self.spec32 = self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
+                                         else np.float32)
         # displacement of a cell per unit pressure on itself (the kernel at offset 0)
         self.self_influence = float(self.real[0, 0])
         self._stiff: dict[bool, np.ndarray] = {}
         # one spectral work buffer per thread, kept during a solve (see _buffer)
         self._work = threading.local()
 
-    def _buffer(self, rows: int, cols: int, complex_type: type, lo: int, hi: int) -> np.ndarray:
-        """A (rows, cols) complex work array, zero outside rows [lo, hi).
+    def _buffer(self, rows: int, cols: int, complex_type: type) -> np.ndarray:
+        """A (rows, cols) complex work array (its content is left as it was).
 
         Fresh arrays of this size come from the kernel as untouched pages: every
         convolution would page-fault its buffer in again (a third of the wall time of a
@@ -76,14 +95,11 @@ class Convolution:
         grid and viewed as complex64 for the float32 transforms, is kept per thread while
         a solve runs (:meth:`release` drops it): no more memory than one transient.
         """
-        nbytes = (2 * self.ny if not self.periodic else self.ny) * (self.nx + 1) * 16
+        nbytes = self.shape[0] * (self.shape[1] // 2 + 1) * 16
         raw = getattr(self._work, "raw", None)
         if raw is None or raw.size < nbytes:
             raw = self._work.raw = np.empty(nbytes, dtype=np.uint8)
-        buf = np.ndarray((rows, cols), dtype=complex_type, buffer=raw)
-        buf[:lo] = 0
-        buf[hi:] = 0
-        return buf
+        return np.ndarray((rows, cols), dtype=complex_type, buffer=raw)
 
     def release(self) -> None:
         """Drop this thread's work buffer (the end of a solve)."""
@@ -103,32 +119,27 @@ class Convolution:
         """The unpadded cyclic convolution: irfft2(rfft2(x) * multiplier), pruned to ``rows``."""
         ny, nx = self.ny, self.nx
         lo, hi = rows
-        real_type, complex_type = _types(single)
+        real_type, complex_type = real_types(single)
         if hi <= lo:
             return np.zeros((ny, nx), dtype=real_type)
-        buf = self._buffer(ny, nx // 2 + 1, complex_type, lo, hi)
-        buf[lo:hi] = sfft.rfft(np.asarray(x[lo:hi], dtype=real_type), axis=1, workers=workers)
-        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
+        buf = forward(x, (ny, nx), rows, single, workers,
+                      out=self._buffer(ny, nx // 2 + 1, complex_type))
         buf *= multiplier
-        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
-        return sfft.irfft(buf, n=nx, axis=1, overwrite_x=True, workers=workers)
+        return inverse(buf, ny, nx, nx, workers)
 
     def _padded(self, x: np.ndarray, rows: tuple[int, int], single: bool,
                 workers: int) -> np.ndarray:
-        """The free-boundary (DC-FFT) convolution: x zero-padded to (2ny, 2nx)."""
-        ny, nx = self.ny, self.nx
+        """The free-boundary (DC-FFT) convolution: x zero-padded to the cyclic grid."""
         lo, hi = rows
-        real_type, complex_type = _types(single)
+        keep = self.nx + self.ahead
+        real_type, complex_type = real_types(single)
         if hi <= lo:
-            return np.zeros((ny, nx), dtype=real_type)
-        buf = self._buffer(2 * ny, nx + 1, complex_type, lo, hi)
-        buf[lo:hi] = sfft.rfft(np.asarray(x[lo:hi], dtype=real_type), n=2 * nx, axis=1,
-                               workers=workers)
-        buf = sfft.fft(buf, axis=0, overwrite_x=True, workers=workers)
+            return np.zeros((self.ny, keep), dtype=real_type)
+        py, px = self.shape
+        buf = forward(x, self.shape, rows, single, workers,
+                      out=self._buffer(py, px // 2 + 1, complex_type))
         buf *= self.spec32 if single else self.spec64
-        buf = sfft.ifft(buf, axis=0, overwrite_x=True, workers=workers)
-        out = sfft.irfft(buf[:ny], n=2 * nx, axis=1, overwrite_x=True, workers=workers)
-        return np.ascontiguousarray(out[:, :nx])
+        return np.ascontiguousarray(inverse(buf, self.ny, px, keep, workers))
 
     def precondition(self, x: np.ndarray, rows: tuple[int, int], single: bool = False,
                      workers: int = -1) -> np.ndarray:
@@ -143,7 +154,7 @@ class Convolution:
         single: bool = False,
         workers: int = -1,
     ) -> np.ndarray:
-        """K * x on the grid, shape (ny, nx), C-contiguous.
+        """K * x on the grid, shape (ny, nx + ahead), C-contiguous.
 
         ``rows=(lo, hi)`` says that x is zero outside rows [lo, hi) (only those rows are
         transformed). ``single`` computes in float32 and returns float32.
@@ -155,12 +166,8 @@ class Convolution:
         return self._padded(x, span, single, workers)
 
 
-def _types(single: bool) -> tuple[type, type]:
-    """The real and complex dtypes of a float32 (``single``) or float64 transform."""
-    return (np.float32, np.complex64) if single else (np.float64, np.complex128)
-
-
 @lru_cache(maxsize=6)
-def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool) -> Convolution:
+def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool,
+                ahead: int = 0) -> Convolution:
     """The cached :class:`Convolution` of a grid (kept between calls)."""
-    return Convolution(ny, nx, dx, dy, periodic)
+    return Convolution(ny, nx, dx, dy, periodic, ahead)

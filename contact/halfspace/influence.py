@@ -43,14 +43,26 @@ import numba as nb
 import numpy as np
 import scipy.fft as sfft
 
+from contact.halfspace.padding import padded_shape, wrapped_offsets
 
-def _corner(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+
+def love_corner(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Love's corner function x asinh(y/|x|) + y asinh(x/|y|) (the 1/rho integral)."""
     ax = np.abs(x)
     ay = np.abs(y)
     with np.errstate(divide="ignore", invalid="ignore"):
         t1 = np.where(ax > 0, x * np.arcsinh(y / np.where(ax > 0, ax, 1.0)), 0.0)
         t2 = np.where(ay > 0, y * np.arcsinh(x / np.where(ay > 0, ay, 1.0)), 0.0)
     return t1 + t2
+
+
+def corner_sum(fun, x: np.ndarray, y: np.ndarray, hx: float, hy: float) -> np.ndarray:
+    """F(x+hx, y+hy) - F(x+hx, y-hy) - F(x-hx, y+hy) + F(x-hx, y-hy) of a corner function F.
+
+    The integral over the rectangle [-hx, hx] x [-hy, hy] of a kernel k(x - s, y - t) is
+    this sum when d^2 F / dx dy = k.
+    """
+    return fun(x + hx, y + hy) - fun(x + hx, y - hy) - fun(x - hx, y + hy) + fun(x - hx, y - hy)
 
 
 def love_coefficients(x: np.ndarray, y: np.ndarray, dx: float, dy: float) -> np.ndarray:
@@ -67,14 +79,7 @@ def love_coefficients(x: np.ndarray, y: np.ndarray, dx: float, dy: float) -> np.
     """
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
-    hx, hy = 0.5 * dx, 0.5 * dy
-    k = (
-        _corner(x + hx, y + hy)
-        - _corner(x + hx, y - hy)
-        - _corner(x - hx, y + hy)
-        + _corner(x - hx, y - hy)
-    )
-    return k / math.pi
+    return corner_sum(love_corner, x, y, 0.5 * dx, 0.5 * dy) / math.pi
 
 
 def self_influence(dx: float, dy: float) -> float:
@@ -119,6 +124,27 @@ def free_kernel_spectrum(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
     out = np.ascontiguousarray(spec.real)
     out.setflags(write=False)
     return out
+
+
+@lru_cache(maxsize=8)
+def extended_kernel_spectrum(ny: int, nx: int, ahead: int, dx: float,
+                             dy: float) -> np.ndarray:
+    """Complex spectrum of the Love kernel laid out for a grid extended ``ahead`` cells.
+
+    On the cyclic grid of :func:`contact.halfspace.padding.padded_shape`,
+    ``irfft2(rfft2(p, s) * spectrum)[:ny, :nx + ahead]`` is the displacement of the
+    pressure ``p`` (ny, nx) on the grid and ``ahead`` cells beyond its last column (E* = 1).
+    The layout is not symmetric in x, so the spectrum is complex.
+    """
+    py, px = padded_shape(ny, nx, ahead)
+    ox, _ = wrapped_offsets(nx, px, dx, ahead)
+    oy, _ = wrapped_offsets(ny, py, dy)
+    # K everywhere, the offsets no product uses included (unlike the free layout, which
+    # leaves the cell at +-n zero): either is exact, and this is the layout the rolling
+    # solver has always used, so its answers stay bitwise
+    spec = sfft.rfft2(love_coefficients(ox[None, :], oy[:, None], dx, dy))
+    spec.setflags(write=False)
+    return spec
 
 
 @nb.njit(cache=True)

@@ -27,11 +27,11 @@ import numpy as np
 
 from contact.errors import ContactInputError
 from contact.exponent import fit_exponent, local_exponent
+from contact.halfspace.constants import pair_constants
 from contact.hertz import hertz_sphere
 from contact.materials import Material
 from contact.rolling import RollingSweep
 from contact.tangential.grid import sample_roughness, sphere_grid
-from contact.tangential.influence import pair_constants
 from contact.tangential.kinematics import Creepage
 from contact.tangential.results import edge_note
 from contact.tangential.steady import check_friction, steady_rolling

@@ -23,7 +23,7 @@ from functools import lru_cache
 import numpy as np
 from threadpoolctl import ThreadpoolController
 
-from contact.tangential.influence import HalfSpacePair
+from contact.halfspace.pair import HalfSpacePair
 from contact.tangential.kinematics import rolling_slip
 
 PRECONDITIONER = "continuum"

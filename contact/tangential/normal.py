@@ -1,7 +1,7 @@
 """The normal contact problem on the tangential solver's grid, with an extra gap.
 
 For dissimilar bodies the tangential tractions displace the surfaces normally
-(u_n = A_nt q, :mod:`contact.tangential.influence`), so the pressure has to be solved
+(u_n = A_nt q, :mod:`contact.halfspace.pair`), so the pressure has to be solved
 again with that displacement added to the gap; this module does it with the same
 influence operator as the tangential problem, so that the two stay consistent.
 
@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from contact.errors import ContactInputError, ConvergenceError
-from contact.tangential.influence import HalfSpacePair
+from contact.halfspace.pair import HalfSpacePair
 
 
 def _initial(h: np.ndarray, load: float, area: float) -> np.ndarray:

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact.halfspace.constants import PairConstants
 from contact.tangential.grid import Grid
-from contact.tangential.influence import PairConstants
 from contact.tangential.kernels import SLIP, STICK
 from contact.tangential.kinematics import Creepage
 

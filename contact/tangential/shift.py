@@ -16,9 +16,9 @@ from collections.abc import Sequence
 import numpy as np
 
 from contact.errors import ConvergenceError
+from contact.halfspace.constants import PairConstants
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
-from contact.tangential.influence import PairConstants
 from contact.tangential.kinematics import Creepage
 from contact.tangential.normal import solve_pressure
 from contact.tangential.results import TangentialResult

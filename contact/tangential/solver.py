@@ -8,7 +8,7 @@ with Coulomb's law (Kalker 1990, sec. 2.1):
 
 s = w + L(A q + u0) the slip, L the upwind difference of steady rolling or the identity of
 a shift (:mod:`contact.tangential.kinematics`) and A the Cerruti operator
-(:mod:`contact.tangential.influence`).
+(:mod:`contact.halfspace.pair`).
 
 Algorithm (the active-set idea of Kalker's TANG, 1990 sec. 2.2): with the adhesion set H,
 the slip set S and the slip directions e fixed, the problem is linear: q = g e on S and
@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.errors import ConvergenceError
-from contact.tangential.influence import HalfSpacePair
+from contact.halfspace.pair import HalfSpacePair
 from contact.tangential.kernels import SLIP, STICK, update_states
 from contact.tangential.kinematics import rolling_slip
 from contact.tangential.newton import NewtonSystem, cross, diagonal

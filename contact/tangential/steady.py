@@ -18,9 +18,10 @@ import math
 import numpy as np
 
 from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
+from contact.halfspace.constants import PairConstants
+from contact.halfspace.pair import HalfSpacePair
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
-from contact.tangential.influence import HalfSpacePair, PairConstants
 from contact.tangential.kinematics import Creepage, rigid_slip
 from contact.tangential.nested import CoarseStart, coarse_grid, prolong, restate
 from contact.tangential.normal import solve_pressure

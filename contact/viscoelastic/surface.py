@@ -3,7 +3,8 @@
 Operator. Cell (i, j) carries a uniform pressure; on a half-space of unit compliance it
 makes the surface displacement K(x, y) of Love's rectangle (Johnson 1985, *Contact
 Mechanics*, eq. 3.25; :func:`contact.halfspace.influence.love_coefficients`),
-and w = K * p is a free-boundary (zero-padded FFT) convolution. The contact moves at V
+and w = K * p is the free-boundary FFT convolution of :mod:`contact.halfspace.convolution`
+on the grid extended ahead. The contact moves at V
 towards +x; with the pair's creep series (:mod:`contact.viscoelastic.rheology`) the
 displacement is the steady-state hereditary integral along x (Carbone & Putignano 2013,
 J. Mech. Phys. Solids 61:1822, eq. 10; Persson 2010, Eur. Phys. J. E 33:327):
@@ -46,7 +47,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
-from contact.halfspace.influence import love_coefficients
+from contact.halfspace.convolution import Convolution
 from contact.viscoelastic.kernels import creep_filter_rows
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
@@ -72,37 +73,20 @@ class RollingOperator:
 
     def __init__(self, ny: int, nx: int, dx: float, dy: float, creep: CreepSeries,
                  speed: float, ahead: float = 0.5):
-        from scipy import fft
-
         self.ny, self.nx, self.dx, self.dy = ny, nx, dx, dy
         self.creep, self.speed = creep, speed
         self.m = math.ceil(ahead * nx) if creep.amplitudes else 0
-        self.Nx = fft.next_fast_len(2 * nx + self.m)
-        self.Ny = fft.next_fast_len(2 * ny)
-        ox = np.arange(self.Nx)
-        ox = np.where(ox < nx + self.m, ox, ox - self.Nx) * dx
-        oy = np.arange(self.Ny)
-        oy = np.where(oy < ny, oy, oy - self.Ny) * dy
-        self._kf = fft.rfft2(love_coefficients(ox[None, :], oy[:, None], dx, dy))
+        self._conv = Convolution(ny, nx, dx, dy, periodic=False, ahead=self.m)
         self._lag_x, self._lag_w = np.polynomial.laguerre.laggauss(32)
 
     def elastic(self, p: np.ndarray) -> np.ndarray:
         """w = K * p on the grid extended ahead, shape (ny, nx + m) (unit compliance)."""
-        from scipy import fft
-
         # the transforms along x run only over the rows that carry pressure (forward) and
         # the rows kept (inverse): the zero padding in y would double their cost
         rows = np.nonzero(p.any(axis=1))[0]
-        out = np.zeros((self.ny, self.nx + self.m))
         if rows.size == 0:
-            return out
-        lo, hi = int(rows[0]), int(rows[-1]) + 1
-        pf = np.zeros(self._kf.shape, dtype=complex)
-        pf[lo:hi] = fft.rfft(p[lo:hi], n=self.Nx, axis=1)
-        pf = fft.fft(pf, axis=0, overwrite_x=True)
-        pf *= self._kf
-        pf = fft.ifft(pf, axis=0, overwrite_x=True)[: self.ny]
-        return fft.irfft(pf, n=self.Nx, axis=1)[:, : self.nx + self.m]
+            return np.zeros((self.ny, self.nx + self.m))
+        return self._conv(p, rows=(int(rows[0]), int(rows[-1]) + 1), workers=1)
 
     def _tail(self, w: np.ndarray, p: np.ndarray, ell: float) -> np.ndarray:
         """F at the last extended column from the monopole decay of w beyond it."""

@@ -8,7 +8,7 @@ influence operator differs.
 
 Operator. Poisson's ratio is constant in time (CONTACT's convention, see
 :mod:`contact.viscoelastic.rheology`), so every Cerruti kernel of
-:mod:`contact.tangential.influence` (Johnson 1985, *Contact Mechanics*, eqs. 3.86-3.87)
+:mod:`contact.halfspace.cerruti` (Johnson 1985, *Contact Mechanics*, eqs. 3.86-3.87)
 carries the time dependence of 1/G(t), i.e. of the pair's creep compliance
 C(t) = C_g + sum dC_m (1 - exp(-t/theta_m)). This is exact for one viscoelastic body
 against a rigid one, or for two bodies with the same nu (quasi-identical: no
@@ -38,8 +38,9 @@ import math
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.halfspace.constants import PairConstants
+from contact.halfspace.pair import HalfSpacePair
 from contact.tangential.grid import Grid
-from contact.tangential.influence import HalfSpacePair, PairConstants
 from contact.tangential.kinematics import Creepage, rigid_slip
 from contact.tangential.results import TangentialResult
 from contact.tangential.solver import solve_tangential
@@ -107,7 +108,9 @@ class ViscoHalfSpacePair(HalfSpacePair):
         super().__init__(ny, nx, dx, dy, constants_at(0.5 * (creep.glassy + creep.relaxed), nu))
         self.creep, self.speed = creep, float(speed)
         self.m = math.ceil(ahead * nx) if creep.amplitudes else 0
-        self._ext = HalfSpacePair(ny, nx + self.m, dx, dy, constants_at(creep.glassy, nu))
+        # the glassy pair on the grid extended ahead (the tractions are zero there)
+        self._ext = HalfSpacePair(ny, nx, dx, dy, constants_at(creep.glassy, nu),
+                                  ahead=self.m)
         lag_x, lag_w = np.polynomial.laguerre.laggauss(32)
         # distances from the grid centre of the last extended column and of the tail
         yc = (np.arange(ny) - 0.5 * (ny - 1)) * dy
@@ -123,14 +126,7 @@ class ViscoHalfSpacePair(HalfSpacePair):
                    single: bool = False) -> np.ndarray:
         """(u_x, u_y), shape (2, ny, nx), of the tractions in steady rolling (m);
         ``single``: float32 transforms of the elastic part (for loose inner solves)."""
-        ext = (self.ny, self.nx + self.m)
-        qxe = np.zeros(ext)
-        qxe[:, : self.nx] = qx
-        qye = None
-        if qy is not None and np.any(qy):
-            qye = np.zeros(ext)
-            qye[:, : self.nx] = qy
-        w = self._ext.tangential(qxe, qye, single)
+        w = self._ext.tangential(qx, qy if qy is not None and np.any(qy) else None, single)
         u = w.copy()
         cg = self.creep.glassy
         for dc, th, tail in zip(self.creep.amplitudes, self.creep.times, self._tails):

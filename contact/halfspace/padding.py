@@ -1,0 +1,95 @@
+"""The zero-padded FFT of a grid: where a kernel's offsets sit, and the pruned transforms.
+
+A linear convolution u = K * t over a grid of n cells is the cyclic convolution over a
+longer, zero-padded grid of L cells, provided every offset it needs maps to its own
+cell of the cyclic grid (Liu, Wang & Liu 2000, Wear 243:101, the DC-FFT). Offsets
+0 .. n+m-1 sit at cells 0 .. n+m-1 and offsets -1, -2, ... at L-1, L-2, ... The domains
+(the periodic one needs no padding):
+
+- **free**: L = 2n, displacements on the n cells; the cell at L/2 (offset +-n, which no
+  product uses) is left zero (:func:`wrapped_offsets` marks it unused);
+- **plane strain**: one row, padded along x only;
+- **extended ahead**: displacements also on m cells beyond the last column (+x), for the
+  hereditary integrals of steady rolling, which look ahead. Two paddings of it are in
+  use, both exact: the compact one, L = the next fast FFT length of 2n + m along x (and
+  of 2n along y), with the kernel evaluated in every cell (the normal operator,
+  :class:`contact.halfspace.convolution.Convolution` with ``ahead``); and the free
+  padding of the grid extended by m cells, L = 2(n + m) (the tangential pair,
+  :class:`contact.halfspace.pair.HalfSpacePair` with ``ahead``). They differ in roundoff
+  only, and the viscoelastic solvers amplify that to about 1e-11 of their answers
+  (measured, issue 26), so each operator keeps the padding its answers were made with.
+
+The transforms are pruned: forward, only the rows that carry data are transformed along
+x (the padding rows stay zero); backward, only the rows kept are transformed along x.
+Both run on stacked inputs (leading axes), in float64 or float32.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.fft as sfft
+
+
+def padded_shape(ny: int, nx: int, ahead: int = 0, line: bool = False) -> tuple[int, int]:
+    """The (rows, columns) of the cyclic grid of a (ny, nx) grid extended ``ahead`` cells.
+
+    Free (``ahead = 0``): exactly (2 ny, 2 nx); extended ahead, compact: the next fast FFT
+    lengths of 2 ny and 2 nx + ahead; plane strain (``line``): a single row.
+    """
+    if ahead == 0:
+        px = 2 * nx
+        py = 2 * ny
+    else:
+        px = sfft.next_fast_len(2 * nx + ahead)
+        py = sfft.next_fast_len(2 * ny)
+    return (1 if line else py), px
+
+
+def wrapped_offsets(n: int, length: int, pitch: float, ahead: int = 0) -> tuple[np.ndarray,
+                                                                               np.ndarray]:
+    """Offsets (m) of the cells of a cyclic grid of ``length``, and which of them are used.
+
+    Cell k holds offset k for k < n + ahead and k - length otherwise; ``used`` is False
+    where the offset lies outside -(n-1) .. n+ahead-1 (never in the linear convolution).
+    """
+    k = np.arange(length)
+    cells = np.where(k < n + ahead, k, k - length)
+    used = (cells > -n) & (cells < n + ahead)
+    return cells.astype(float) * pitch, used
+
+
+def real_types(single: bool) -> tuple[type, type]:
+    """The real and complex dtypes of a float32 (``single``) or float64 transform."""
+    return (np.float32, np.complex64) if single else (np.float64, np.complex128)
+
+
+def forward(x: np.ndarray, shape: tuple[int, int], rows: tuple[int, int] | None = None,
+            single: bool = False, workers: int = -1,
+            out: np.ndarray | None = None) -> np.ndarray:
+    """Spectrum (..., py, px//2 + 1) of x (..., ny, nx) zero-padded to ``shape`` = (py, px).
+
+    ``rows = (lo, hi)`` says x is zero outside rows [lo, hi): only those are transformed
+    along x. ``out`` is an optional complex work array of the spectrum's shape (its rows
+    outside [lo, hi) are zeroed here); ``single`` transforms in float32.
+    """
+    py, px = shape
+    lo, hi = (0, x.shape[-2]) if rows is None else rows
+    real_type, complex_type = real_types(single)
+    if out is None:
+        out = np.zeros((*x.shape[:-2], py, px // 2 + 1), dtype=complex_type)
+    else:
+        out[..., :lo, :] = 0
+        out[..., hi:, :] = 0
+    out[..., lo:hi, :] = sfft.rfft(np.asarray(x[..., lo:hi, :], dtype=real_type), n=px,
+                                   axis=-1, workers=workers)
+    return sfft.fft(out, axis=-2, overwrite_x=True, workers=workers)
+
+
+def inverse(spec: np.ndarray, ny: int, px: int, keep: int, workers: int = -1) -> np.ndarray:
+    """The first ``ny`` rows and ``keep`` columns of the real inverse of ``spec``.
+
+    The inverse along y runs first, so that only the ``ny`` rows kept go through the real
+    inverse along x (``spec`` is overwritten).
+    """
+    b = sfft.ifft(spec, axis=-2, overwrite_x=True, workers=workers)[..., :ny, :]
+    return sfft.irfft(b, n=px, axis=-1, overwrite_x=True, workers=workers)[..., :keep]
