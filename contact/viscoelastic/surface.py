@@ -53,6 +53,23 @@ from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
 from contact.viscoelastic.window import sphere_window
 
+_LAGUERRE = np.polynomial.laguerre.laggauss(32)
+
+
+def monopole_tail(x_end: float, x_centre: float, dy: np.ndarray, ell: float) -> np.ndarray:
+    """The creep filter's tail beyond the last column, per unit displacement there.
+
+    Beyond the grid extended ahead, a displacement decays as the monopole 1/r from the
+    load centre, so for each row (offset ``dy`` from the centre along y)
+    (1/l) int_0^inf e^{-xi/l} w(x_e + xi) dxi = w(x_e) * (1/l) int e^{-xi/l} r_e/r(xi) dxi,
+    computed by 32-point Gauss-Laguerre quadrature (``x_end``, ``x_centre``: x of the last
+    column and of the centre, m; ``ell`` = V theta, m).
+    """
+    lag_x, lag_w = _LAGUERRE
+    re = np.hypot(x_end - x_centre, dy)
+    r = np.hypot(x_end + ell * lag_x[None, :] - x_centre, dy[:, None])
+    return (re[:, None] / r) @ lag_w
+
 
 class RollingOperator:
     """u(p) of a pressure grid (ny, nx) rolling towards +x (see the module notes).
@@ -77,7 +94,6 @@ class RollingOperator:
         self.creep, self.speed = creep, speed
         self.m = math.ceil(ahead * nx) if creep.amplitudes else 0
         self._conv = Convolution(ny, nx, dx, dy, periodic=False, ahead=self.m)
-        self._lag_x, self._lag_w = np.polynomial.laguerre.laggauss(32)
 
     def elastic(self, p: np.ndarray) -> np.ndarray:
         """w = K * p on the grid extended ahead, shape (ny, nx + m) (unit compliance)."""
@@ -95,12 +111,7 @@ class RollingOperator:
         ys = np.arange(self.ny) * self.dy
         xc = float((p.sum(axis=0) * xs).sum() / tot) if tot > 0 else 0.0
         yc = float((p.sum(axis=1) * ys).sum() / tot) if tot > 0 else 0.0
-        xe = (self.nx + self.m - 1) * self.dx
-        dyc = ys - yc
-        re = np.hypot(xe - xc, dyc)
-        xi = ell * self._lag_x
-        r = np.hypot(xe + xi[None, :] - xc, dyc[:, None])
-        return w[:, -1] * ((re[:, None] / r) @ self._lag_w)
+        return w[:, -1] * monopole_tail((self.nx + self.m - 1) * self.dx, xc, ys - yc, ell)
 
     def apply(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(u, w) on the (ny, nx) grid: viscoelastic and unit-compliance displacement (m, m Pa)."""

@@ -47,6 +47,7 @@ from contact.tangential.solver import solve_tangential
 from contact.tangential.steady import check_friction
 from contact.viscoelastic.kernels import creep_filter_rows
 from contact.viscoelastic.rheology import CreepSeries, pair_creep
+from contact.viscoelastic.surface import monopole_tail
 
 
 def constants_at(compliance: float, nu: float) -> PairConstants:
@@ -111,16 +112,11 @@ class ViscoHalfSpacePair(HalfSpacePair):
         # the glassy pair on the grid extended ahead (the tractions are zero there)
         self._ext = HalfSpacePair(ny, nx, dx, dy, constants_at(creep.glassy, nu),
                                   ahead=self.m)
-        lag_x, lag_w = np.polynomial.laguerre.laggauss(32)
-        # distances from the grid centre of the last extended column and of the tail
+        # the tail from a point force at the grid centre (not the tractions' centroid),
+        # which keeps the operator linear in q
         yc = (np.arange(ny) - 0.5 * (ny - 1)) * dy
         xe = (nx + self.m - 1 - 0.5 * (nx - 1)) * dx
-        re = np.hypot(xe, yc)
-        self._tails = []
-        for th in creep.times:
-            ell = self.speed * th
-            r = np.hypot(xe + ell * lag_x[None, :], yc[:, None])
-            self._tails.append((re[:, None] / r) @ lag_w)
+        self._tails = [monopole_tail(xe, 0.0, yc, self.speed * th) for th in creep.times]
 
     def tangential(self, qx: np.ndarray, qy: np.ndarray | None = None,
                    single: bool = False) -> np.ndarray:
