@@ -13,7 +13,9 @@ Truths:
 - direct dense sums over the grid of the element coefficients, with no FFT and no
   padding: the free, the extended-ahead and the plane-strain products must equal them;
 - the pair's normal block against the normal Convolution (the same Love coefficients over
-  E*), on the free grid and on the grid extended ahead (two different paddings).
+  E*), on the free grid and on the grid extended ahead (two different paddings);
+- periodic: the normal block against the compiled periodic Love spectrum, and every
+  block against the continuum half-space under a sinusoidal traction.
 """
 
 from __future__ import annotations
@@ -163,3 +165,45 @@ def test_pair_normal_block_is_the_normal_convolution(ahead):
     assert np.abs(got - ref).max() <= 1e-12 * np.abs(ref).max()
     assert op.self_normal() * STEEL_AL.e_star == pytest.approx(conv.self_influence, rel=1e-13,
                                                                abs=0)
+
+
+def test_periodic_pair_normal_block_is_the_periodic_love_spectrum():
+    """The periodised normal block over (1 - nu)/G is the periodic Love spectrum of
+    contact.halfspace.influence (its own compiled alias sum) to 1e-12."""
+    from contact.halfspace.influence import periodic_kernel_spectrum
+
+    ny, nx = 12, 16
+    op = HalfSpacePair(ny, nx, DX, DY, STEEL_AL, periodic=True)
+    ref = periodic_kernel_spectrum(ny, nx, DX, DY)
+    got = op.spec["nn"] * STEEL_AL.e_star
+    assert np.abs(got - ref).max() <= 1e-12 * np.abs(ref).max()
+
+
+def test_periodic_pair_on_a_sinusoid_is_the_continuum_solution():
+    """q_x = cos(k.x) and p = cos(k.x) on the periodic 64 x 48 grid, k = (2, 1) periods:
+    every block's response within 1 % of the continuum half-space (Cerruti and
+    Boussinesq under a sinusoidal traction; Johnson 1985 sec. 13.2 for the normal one),
+    u_x = 2/(G|k|) [(1 - nu) + nu ky^2/|k|^2] cos, u_y = -2 nu kx ky/(G|k|^3) cos,
+    u_n from q_x = 2 K kx/(G|k|^2) sin, (u_x, u_y) from p = -2 K (kx, ky)/(G|k|^2) sin
+    (measured: 0.2 to 0.6 %, the piecewise-constant tractions at k dx = 0.2)."""
+    ny, nx = 48, 64
+    c = STEEL_AL
+    x = np.arange(nx) * DX
+    y = np.arange(ny) * DY
+    kx, ky = 2 * np.pi * 2 / (nx * DX), 2 * np.pi / (ny * DY)
+    k = math.hypot(kx, ky)
+    phase = kx * x[None, :] + ky * y[:, None]
+    t = np.cos(phase)
+    op = HalfSpacePair(ny, nx, DX, DY, c, periodic=True)
+    u = op.tangential(t)
+    un = op.normal_from_tangential(t, 0 * t)
+    ut = op.tangential_from_normal(t)
+    g = c.G
+    refs = [(u[0], 2 / (g * k) * ((1 - c.nu) + c.nu * ky**2 / k**2) * t),
+            (u[1], -2 * c.nu * kx * ky / (g * k**3) * t),
+            (un, 2 * c.K * kx / (g * k**2) * np.sin(phase)),
+            (ut[0], -2 * c.K * kx / (g * k**2) * np.sin(phase)),
+            (ut[1], -2 * c.K * ky / (g * k**2) * np.sin(phase)),
+            (op.normal(t), 2 / (c.e_star * k) * t)]
+    for got, ref in refs:
+        assert np.abs(got - ref).max() <= 0.01 * np.abs(ref).max()

@@ -120,3 +120,51 @@ def influence_blocks(x, y, dx, dy, c: PairConstants, line: bool = False) -> dict
             "xy": f * c.nu * e["xy"],
             "nx": f * c.K * e["x"], "xn": -f * c.K * e["x"],
             "ny": f * c.K * e["y"], "yn": -f * c.K * e["y"]}
+
+
+def periodic_spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants,
+                     n_alias: int = 8) -> dict[str, np.ndarray]:
+    """Spectra, shape (ny, nx//2 + 1), of the blocks periodised over the (ny, nx) grid.
+
+    As Love's periodic spectrum (:func:`contact.halfspace.influence.periodic_kernel_spectrum`):
+    the alias sums over q' = q + G_mn, |m|, |n| <= ``n_alias``, of the continuum symbols
+    times the transform of the uniform element, sinc(qx' dx/2) sinc(qy' dy/2). The symbols
+    are the Fourier transforms (e^{-i q.x}) of the point-load kernels over pi
+    (Johnson 1985, eqs. 3.19, 3.86-3.87; Kalker 1990 sec. 1.5)::
+
+        1/rho -> 2/|q|,  x^2/rho^3 -> 2 qy^2/|q|^3,  y^2/rho^3 -> 2 qx^2/|q|^3,
+        x y/rho^3 -> -2 qx qy/|q|^3,  x/rho^2 -> -2i qx/|q|^2,  y/rho^2 -> -2i qy/|q|^2
+
+    (from FT(1/rho) = 2 pi/|q|, FT(rho) = -2 pi/|q|^3, FT(ln rho) = -2 pi/|q|^2 and their
+    derivatives). q = 0 (a rigid displacement of a periodic problem) is zero. The truncated
+    sums are made Hermitian, so that the real-space kernels are real.
+    """
+    qx0 = 2 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
+    qy0 = 2 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
+    acc = {k: np.zeros((ny, nx // 2 + 1)) for k in ("one", "xx", "yy", "xy", "x", "y")}
+    for mx in range(-n_alias, n_alias + 1):
+        qx = qx0 + 2 * np.pi * mx / dx
+        sx = np.sinc(qx * dx / (2 * np.pi))
+        for my in range(-n_alias, n_alias + 1):
+            qy = qy0 + 2 * np.pi * my / dy
+            q2 = qx * qx + qy * qy
+            with np.errstate(divide="ignore", invalid="ignore"):
+                w = np.where(q2 > 0, sx * np.sinc(qy * dy / (2 * np.pi)) / q2, 0.0)
+            q = np.sqrt(q2)
+            acc["one"] += 2 * q * w
+            with np.errstate(divide="ignore", invalid="ignore"):
+                wq = np.where(q2 > 0, w / np.where(q2 > 0, q, 1.0), 0.0)
+            acc["xx"] += 2 * qy * qy * wq
+            acc["yy"] += 2 * qx * qx * wq
+            acc["xy"] -= 2 * qx * qy * wq
+            acc["x"] -= 2 * qx * w
+            acc["y"] -= 2 * qy * w
+    f = 1.0 / c.G
+    blocks = {"nn": f * (1 - c.nu) * acc["one"],
+              "xx": f * ((1 - c.nu) * acc["one"] + c.nu * acc["xx"]),
+              "yy": f * ((1 - c.nu) * acc["one"] + c.nu * acc["yy"]),
+              "xy": f * c.nu * acc["xy"] + 0j,
+              "nx": 1j * f * c.K * acc["x"], "xn": -1j * f * c.K * acc["x"],
+              "ny": 1j * f * c.K * acc["y"], "yn": -1j * f * c.K * acc["y"]}
+    # the projection irfft2 -> rfft2 drops the anti-Hermitian rest of the truncation
+    return {k: np.fft.rfft2(np.fft.irfft2(v, s=(ny, nx))) for k, v in blocks.items()}

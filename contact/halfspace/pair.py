@@ -5,9 +5,10 @@ The blocks of A are the influence coefficients of :mod:`contact.halfspace.cerrut
 E*, Cerruti's tangential blocks and Kalker's coupling K), applied by FFT on the
 zero-padded grids of :mod:`contact.halfspace.padding` (DC-FFT; Liu, Wang & Liu 2000, Wear
 243:101): the linear convolution over the grid, with no dense matrix. Domains: the free
-boundary in 3D, plane strain (one row, a line contact along y), and the grid extended
+boundary in 3D, plane strain (one row, a line contact along y), the grid extended
 ``ahead`` cells in +x (displacements also beyond the last column, for the hereditary
-integrals of steady rolling on a viscoelastic body, :mod:`contact.viscoelastic`).
+integrals of steady rolling on a viscoelastic body, :mod:`contact.viscoelastic`), and
+the periodic grid in 3D (the unpadded cyclic product with the periodised blocks).
 
 The float32 products (``single``) serve the loose inner solves of the tangential solver:
 relative error about 1e-7, two to three times faster than float64.
@@ -21,7 +22,7 @@ import numpy as np
 import scipy.fft as sfft
 
 from contact.errors import ContactInputError
-from contact.halfspace.cerruti import influence_blocks
+from contact.halfspace.cerruti import influence_blocks, periodic_spectra
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.padding import forward, inverse, padded_shape, wrapped_offsets
 
@@ -43,6 +44,13 @@ def _spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants, line: boo
     return spec, blocks
 
 
+@lru_cache(maxsize=8)
+def _periodic(ny: int, nx: int, dx: float, dy: float, c: PairConstants):
+    """The periodised blocks' spectra and their real-space kernels (offsets wrapped)."""
+    spec = periodic_spectra(ny, nx, dx, dy, c)
+    return spec, {k: sfft.irfft2(v, s=(ny, nx)) for k, v in spec.items()}
+
+
 class HalfSpacePair:
     """u = A t for the tractions t = (p, q_x, q_y) on a regular grid (free boundary).
 
@@ -59,14 +67,19 @@ class HalfSpacePair:
     ahead : int
         Displacements also on this many cells beyond the last column (+x): the products
         then have nx + ahead columns (the tractions are zero there).
+    periodic : bool
+        Periodic domain (3D only): the tractions repeat with the grid
+        (:func:`contact.halfspace.cerruti.periodic_spectra`).
     """
 
     def __init__(self, ny: int, nx: int, dx: float, dy: float, constants: PairConstants,
-                 line: bool = False, ahead: int = 0):
+                 line: bool = False, ahead: int = 0, periodic: bool = False):
         if line and ny != 1:
             raise ContactInputError("a plane-strain grid has a single row")
         if int(ahead) != ahead or ahead < 0:
             raise ContactInputError("the grid extends ahead by a whole number of cells >= 0")
+        if periodic and (line or ahead):
+            raise ContactInputError("a periodic pair is 3D, with nothing ahead of the grid")
         self.ny, self.nx, self.dx, self.dy = int(ny), int(nx), float(dx), float(dy)
         self.c = constants
         self.line = bool(line)
@@ -77,9 +90,14 @@ class HalfSpacePair:
         # ahead: the free layout of the grid extended by ``ahead`` columns (the tractions
         # are zero there), not the compact one of the normal Convolution; see
         # contact.halfspace.padding for why both are kept
-        self._pad = padded_shape(self.ny, self.nx + self.ahead, 0, self.line)
-        self.spec, self.real = _spectra(self.ny, self.nx + self.ahead, self.dx, self.dy,
-                                        constants, self.line)
+        self.periodic = bool(periodic)
+        if self.periodic:
+            self._pad = self.shape
+            self.spec, self.real = _periodic(self.ny, self.nx, self.dx, self.dy, constants)
+        else:
+            self._pad = padded_shape(self.ny, self.nx + self.ahead, 0, self.line)
+            self.spec, self.real = _spectra(self.ny, self.nx + self.ahead, self.dx, self.dy,
+                                            constants, self.line)
         self.coupled = constants.K != 0.0
         # threads pay off only on large transforms (their start-up dominates small ones)
         self._inv_spec: tuple[np.ndarray, ...] | None = None
