@@ -52,7 +52,8 @@ def _periodic(ny: int, nx: int, dx: float, dy: float, c: PairConstants):
 
 
 class HalfSpacePair:
-    """u = A t for the tractions t = (p, q_x, q_y) on a regular grid (free boundary).
+    """u = A t for the tractions t = (p, q_x, q_y) on a regular grid: free boundary, plane
+    strain, extended ahead or periodic.
 
     Parameters
     ----------
