@@ -19,11 +19,12 @@ import numpy as np
 from contact._validate import positive
 from contact.bem.bounds import PressureBounds
 from contact.bem.iteration import iterate, start
-from contact.bem.nested import can_nest, coarsen, prolong
 from contact.bem.result import ContactResult, build_result
 from contact.bem.state import IterationState, Problem, SolverStats, workspace
 from contact.errors import ContactInputError, ConvergenceError, EdgeContactWarning
+from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import convolution
+from contact.nesting import can_nest, coarsen, prolong
 
 
 def solve_normal(
@@ -137,10 +138,11 @@ def solve_normal(
     else:
         p_init = None
 
-    operator = convolution(ny, nx, float(dx), float(dy), bool(periodic))
+    grid = scan_grid((ny, nx), dx, dy, origin=origin, periodic=bool(periodic))
+    operator = convolution(ny, nx, float(dx), float(dy), grid.periodic)
     problem = Problem(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
-        gap=(h * e_star).ravel(), ny=ny, nx=nx, operator=operator,
+        gap=(h * e_star).ravel(), grid=grid, operator=operator,
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
         bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
         tol=tol, max_iter=max_iter,
@@ -156,7 +158,7 @@ def solve_normal(
     stats.levels.append((ny, nx, it))
     stats.iterations = it
 
-    result = _assemble(h, state, e_star, hardness, dx, dy, periodic, origin, ok,
+    result = _assemble(h, state, e_star, hardness, grid, ok,
                        {"levels": list(stats.levels), "tol": tol, "precision": precision})
     if edge == "warn" and result.touches_edge and not periodic:
         msg = ("contact pressure reaches the edge of the domain: the free-boundary solution "
@@ -232,8 +234,7 @@ def _warm_start(initial: np.ndarray, shape: tuple[int, ...], cap: float) -> np.n
 
 
 def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: float | None,
-              dx: float, dy: float, periodic: bool, origin: tuple[float, float], ok: bool,
-              extra: dict[str, Any]) -> ContactResult:
+              grid: Grid, ok: bool, extra: dict[str, Any]) -> ContactResult:
     """The result of a finished iteration, back in SI units."""
     ny, nx = h.shape
     p = state.pressure.reshape(ny, nx)
@@ -246,10 +247,9 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
         plastic = np.zeros_like(p)
     gap = np.maximum(g, 0.0)
     gap[p > 0] = 0.0
-    x = origin[0] + np.arange(nx) * dx
-    y = origin[1] + np.arange(ny) * dy
     return build_result(
-        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=x, y=y,
-        dx=dx, dy=dy, e_star=e_star, hardness=hardness, periodic=periodic, approach=delta,
+        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=grid.x,
+        y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
+        periodic=grid.periodic, approach=delta,
         iterations=state.iteration, residual=state.residual, converged=ok, extra=extra,
     )

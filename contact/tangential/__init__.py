@@ -7,7 +7,7 @@ prescribed creepages or tangential force, shifts (Cattaneo-Mindlin) and stepwise
 compression (Spence); plane strain and 3D, smooth or rough.
 
 Modules: :mod:`~contact.tangential.influence` (kernels, FFT operator),
-:mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`~contact.tangential.grid`,
+:mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`contact.grid` (the grid),
 :mod:`~contact.tangential.normal` (pressure with an extra gap),
 :mod:`~contact.tangential.solver` (active-set iteration), :mod:`~contact.tangential.kernels`
 (compiled loops), :mod:`~contact.tangential.forcecontrol`, :mod:`~contact.tangential.steady`
@@ -15,7 +15,7 @@ Modules: :mod:`~contact.tangential.influence` (kernels, FFT operator),
 :mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
 """
 
-from contact.tangential.grid import Grid, cylinder_grid, sphere_grid
+from contact.grid import Grid, cylinder_grid, sphere_grid
 from contact.tangential.influence import PairConstants, pair_constants, pair_constants_from
 from contact.tangential.kinematics import Creepage
 from contact.tangential.results import TangentialResult
