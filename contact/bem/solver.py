@@ -28,8 +28,8 @@ from contact.nesting import can_nest, coarsen, prolong
 
 
 def solve_normal(
-    gap0: np.ndarray,
-    dx: float,
+    gap0: np.ndarray | Grid,
+    dx: float | None = None,
     dy: float | None = None,
     *,
     e_star: float,
@@ -55,8 +55,10 @@ def solve_normal(
 
     Parameters
     ----------
-    gap0 : ndarray, shape (ny, nx)
-        Initial gap h (m) between the undeformed surfaces (see the module conventions).
+    gap0 : ndarray, shape (ny, nx), or Grid
+        Initial gap h (m) between the undeformed surfaces (see the module conventions),
+        or a :class:`contact.grid.Grid` carrying it with its pitch, origin and boundary
+        (then ``dx``, ``dy``, ``origin`` and ``periodic`` are not given).
     dx, dy : float
         Cell pitch (m); ``dy`` defaults to ``dx``.
     e_star : float
@@ -111,6 +113,11 @@ def solve_normal(
         ``iterations`` counts the finest grid; ``extra["levels"]`` lists (ny, nx,
         iterations) of every grid solved, coarsest first.
     """
+    given = gap0 if isinstance(gap0, Grid) else None
+    if given is not None:
+        gap0, dx, dy, origin, periodic = _unpack_grid(given, dx, dy, origin, periodic)
+    if dx is None:
+        raise ContactInputError("give the cell pitch dx (m), or the gap as a contact.grid.Grid")
     dy = dx if dy is None else dy
     bounds = _resolve_bounds(hardness, bounds)
     hardness = bounds.hardness if bounds.plastic else None
@@ -138,7 +145,8 @@ def solve_normal(
     else:
         p_init = None
 
-    grid = scan_grid((ny, nx), dx, dy, origin=origin, periodic=bool(periodic))
+    grid = given if given is not None else scan_grid((ny, nx), dx, dy, origin=origin,
+                                                     periodic=bool(periodic))
     operator = convolution(ny, nx, float(dx), float(dy), grid.periodic)
     problem = Problem(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
@@ -172,6 +180,19 @@ def solve_normal(
             residual=res, iterations=it,
         )
     return result
+
+
+def _unpack_grid(grid: Grid, dx: float | None, dy: float | None,
+                 origin: tuple[float, float], periodic: bool
+                 ) -> tuple[np.ndarray, float, float, tuple[float, float], bool]:
+    """The gap, pitch, origin and boundary of a Grid given in place of loose arrays."""
+    if grid.h is None or grid.line:
+        raise ContactInputError("the grid must carry a gap (Grid.h) and be 3D, not a line")
+    if dx is not None or dy is not None or tuple(origin) != (0.0, 0.0) or periodic:
+        raise ContactInputError(
+            "a Grid carries its pitch, origin and boundary: do not give dx, dy, origin or "
+            "periodic with it")
+    return grid.h, grid.dx, grid.dy, grid.origin, grid.periodic
 
 
 def _resolve_bounds(hardness: float | None,

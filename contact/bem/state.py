@@ -50,7 +50,7 @@ class Problem:
     """One solve's fixed data, in units where E* = 1.
 
     ``gap`` is E* h, flattened; ``grid`` the cells (:class:`contact.grid.Grid`: shape,
-    pitch, origin, periodic or free boundary; its gap, in metres, is not kept there);
+    pitch, origin, periodic or free boundary; its gap, in metres, is not used here);
     ``target`` the prescribed sum of the cell pressures (the load over the cell area) in
     load control, 0 in approach control; ``bounds`` the pressure bounds (non-adhesive
     here: 0 <= p <= hardness); ``single`` runs the search-direction convolutions in float32.
