@@ -2,8 +2,9 @@
 
 Conventions: the grid has ``n`` cells of pitch ``dx`` per side; cell ``(i, j)`` has its
 centre at ``x = (j - n//2) dx``, ``y = (i - n//2) dy``, so the sphere apex sits on the
-centre of cell ``(n//2, n//2)``. Roughness arrays follow the surfmet layout: row ``i`` at
-``Y = i dy``, column ``j`` at ``X = j dx`` (scan coordinates, metres).
+centre of cell ``(n//2, n//2)`` (:func:`contact.grid.centred_grid`). Roughness arrays
+follow the surfmet layout: row ``i`` at ``Y = i dy``, column ``j`` at ``X = j dx`` (scan
+coordinates, metres); :func:`contact.sampling.sample_roughness` puts them on the grid.
 
 The composite roughness ``z`` is the sum of the two surfaces' heights, each measured
 outward from its own body, so that it *closes* the gap: ``h = x^2/(2R) - z``.
@@ -19,12 +20,8 @@ import scipy.fft as sfft
 
 from contact._validate import positive
 from contact.errors import ContactInputError
+from contact.grid import Grid, centred_coordinates, centred_grid
 from contact.hertz import hertz_sphere
-
-
-def centred_coordinates(n: int, d: float) -> np.ndarray:
-    """Cell-centre coordinates of an n-cell axis with the origin on cell n//2."""
-    return (np.arange(n) - n // 2) * d
 
 
 def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
@@ -73,26 +70,6 @@ def remove_plane(z: np.ndarray, dx: float = 1.0, dy: float = 1.0) -> tuple[np.nd
     return z - plane, (c, bx, by)
 
 
-def fill_nan(z: np.ndarray) -> tuple[np.ndarray, float]:
-    """Fill non-measured points with the nearest measured value; return the filled fraction.
-
-    Raises
-    ------
-    ContactInputError
-        If nothing is measured.
-    """
-    from scipy.ndimage import distance_transform_edt
-
-    z = np.asarray(z, dtype=float)
-    bad = ~np.isfinite(z)
-    if not bad.any():
-        return z, 0.0
-    if bad.all():
-        raise ContactInputError("the roughness map is NaN everywhere: nothing was measured")
-    idx = distance_transform_edt(bad, return_distances=False, return_indices=True)
-    return z[tuple(idx)], float(bad.mean())
-
-
 def fast_even(n: int) -> int:
     """The smallest even n' >= n whose FFTs (of n' and 2n') are fast."""
     m = max(2, int(n))
@@ -105,9 +82,10 @@ def fast_even(n: int) -> int:
 
 @dataclass(frozen=True)
 class Domain:
-    """A square computational domain: ``n`` cells of pitch ``dx`` per side.
+    """The choice of a square computational domain: ``n`` cells of pitch ``dx`` per side.
 
-    ``reason`` says how it was chosen (shown to the user).
+    ``reason`` says how it was chosen (shown to the user); :attr:`grid` is the grid it
+    describes.
     """
 
     n: int
@@ -118,6 +96,11 @@ class Domain:
     def size(self) -> float:
         """Side length n dx (m)."""
         return self.n * self.dx
+
+    @property
+    def grid(self) -> Grid:
+        """The n x n grid of pitch dx, the origin on the centre of cell (n//2, n//2)."""
+        return centred_grid(self.n, self.dx)
 
 
 def contact_extent(radius: float, load: float, e_star: float, roughness_rms: float = 0.0,
@@ -198,44 +181,6 @@ def auto_domain(
         n = fast_even(max_grid) if fast_even(max_grid) <= max_grid else max_grid
         return Domain(n, side / n, f"{why}; capped at {n} cells (coarser than the scan)")
     return Domain(n, side / n, f"{why}; pitch of the roughness data")
-
-
-def sample_roughness(
-    z: np.ndarray,
-    zdx: float,
-    zdy: float,
-    centre: tuple[float, float],
-    n: int,
-    dx: float,
-) -> np.ndarray:
-    """Resample the roughness onto the n x n contact grid centred on ``centre`` (X, Y).
-
-    Bilinear interpolation; when the contact grid is coarser than the data, the data are
-    first averaged over one contact cell (box filter) so that the grid sees the cell-mean
-    roughness instead of an aliased sample.
-
-    Raises
-    ------
-    ContactInputError
-        If the grid reaches outside the roughness data.
-    """
-    from scipy.ndimage import map_coordinates, uniform_filter
-
-    ny_r, nx_r = z.shape
-    X = centre[0] + centred_coordinates(n, dx)
-    Y = centre[1] + centred_coordinates(n, dx)
-    tol = 1e-9 * max(zdx, zdy)
-    inside = (X[0] >= -tol and Y[0] >= -tol and X[-1] <= (nx_r - 1) * zdx + tol
-              and Y[-1] <= (ny_r - 1) * zdy + tol)
-    if not inside:
-        raise ContactInputError("the contact grid reaches outside the roughness data")
-    data = z
-    fx, fy = dx / zdx, dx / zdy
-    if fx > 1.5 or fy > 1.5:
-        data = uniform_filter(z, size=(max(1, round(fy)), max(1, round(fx))), mode="nearest")
-    ci = np.clip(Y / zdy, 0, ny_r - 1)
-    cj = np.clip(X / zdx, 0, nx_r - 1)
-    return map_coordinates(data, np.meshgrid(ci, cj, indexing="ij"), order=1, mode="nearest")
 
 
 def max_centred_cells(shape: tuple[int, int], zdx: float, zdy: float,

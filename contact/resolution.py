@@ -233,7 +233,8 @@ def _coarse_maps(z: np.ndarray, dx: float, dy: float, centre: tuple[int, int], n
 
 def _levels(roughness: np.ndarray, dx: float, dy: float | None, factors: Sequence[int]
             ) -> tuple[np.ndarray, float, tuple[int, int]]:
-    from contact.geometry import fill_nan, remove_plane
+    from contact.geometry import remove_plane
+    from contact.sampling import fill_nan
 
     z = np.array(roughness, dtype=float)
     if z.ndim != 2:

@@ -8,7 +8,7 @@ The package's public entry is :func:`solve_normal` (with :class:`SolverStats`); 
   gradient step and the mixed-precision re-sync, each a function of the iteration state;
 - :mod:`contact.bem.state`: the problem, the work arrays, the iteration state, the counters;
 - :mod:`contact.bem.kernels`: the numba kernels of the steps;
-- :mod:`contact.bem.nested`: grid transfer for the nested (coarse-to-fine) solve;
+- :mod:`contact.nesting`: grid transfer for the nested (coarse-to-fine) solve;
 - :mod:`contact.bem.result`: :class:`~contact.bem.result.ContactResult` and its derived
   quantities;
 - :mod:`contact.bem.memory`: the memory model (peak bytes per cell) and the grid check.

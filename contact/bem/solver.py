@@ -19,16 +19,17 @@ import numpy as np
 from contact._validate import positive
 from contact.bem.bounds import PressureBounds
 from contact.bem.iteration import iterate, start
-from contact.bem.nested import can_nest, coarsen, prolong
 from contact.bem.result import ContactResult, build_result
 from contact.bem.state import IterationState, Problem, SolverStats, workspace
 from contact.errors import ContactInputError, ConvergenceError, EdgeContactWarning
+from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import convolution
+from contact.nesting import can_nest, coarsen, prolong
 
 
 def solve_normal(
-    gap0: np.ndarray,
-    dx: float,
+    gap0: np.ndarray | Grid,
+    dx: float | None = None,
     dy: float | None = None,
     *,
     e_star: float,
@@ -54,8 +55,10 @@ def solve_normal(
 
     Parameters
     ----------
-    gap0 : ndarray, shape (ny, nx)
-        Initial gap h (m) between the undeformed surfaces (see the module conventions).
+    gap0 : ndarray, shape (ny, nx), or Grid
+        Initial gap h (m) between the undeformed surfaces (see the module conventions),
+        or a :class:`contact.grid.Grid` carrying it with its pitch, origin and boundary
+        (then ``dx``, ``dy``, ``origin`` and ``periodic`` are not given).
     dx, dy : float
         Cell pitch (m); ``dy`` defaults to ``dx``.
     e_star : float
@@ -110,6 +113,11 @@ def solve_normal(
         ``iterations`` counts the finest grid; ``extra["levels"]`` lists (ny, nx,
         iterations) of every grid solved, coarsest first.
     """
+    given = gap0 if isinstance(gap0, Grid) else None
+    if given is not None:
+        gap0, dx, dy, origin, periodic = _unpack_grid(given, dx, dy, origin, periodic)
+    if dx is None:
+        raise ContactInputError("give the cell pitch dx (m), or the gap as a contact.grid.Grid")
     dy = dx if dy is None else dy
     bounds = _resolve_bounds(hardness, bounds)
     hardness = bounds.hardness if bounds.plastic else None
@@ -137,10 +145,12 @@ def solve_normal(
     else:
         p_init = None
 
-    operator = convolution(ny, nx, float(dx), float(dy), bool(periodic))
+    grid = given if given is not None else scan_grid((ny, nx), dx, dy, origin=origin,
+                                                     periodic=bool(periodic))
+    operator = convolution(ny, nx, float(dx), float(dy), grid.periodic)
     problem = Problem(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
-        gap=(h * e_star).ravel(), ny=ny, nx=nx, operator=operator,
+        gap=(h * e_star).ravel(), grid=grid, operator=operator,
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
         bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
         tol=tol, max_iter=max_iter,
@@ -156,7 +166,7 @@ def solve_normal(
     stats.levels.append((ny, nx, it))
     stats.iterations = it
 
-    result = _assemble(h, state, e_star, hardness, dx, dy, periodic, origin, ok,
+    result = _assemble(h, state, e_star, hardness, grid, ok,
                        {"levels": list(stats.levels), "tol": tol, "precision": precision})
     if edge == "warn" and result.touches_edge and not periodic:
         msg = ("contact pressure reaches the edge of the domain: the free-boundary solution "
@@ -170,6 +180,19 @@ def solve_normal(
             residual=res, iterations=it,
         )
     return result
+
+
+def _unpack_grid(grid: Grid, dx: float | None, dy: float | None,
+                 origin: tuple[float, float], periodic: bool
+                 ) -> tuple[np.ndarray, float, float, tuple[float, float], bool]:
+    """The gap, pitch, origin and boundary of a Grid given in place of loose arrays."""
+    if grid.h is None or grid.line:
+        raise ContactInputError("the grid must carry a gap (Grid.h) and be 3D, not a line")
+    if dx is not None or dy is not None or tuple(origin) != (0.0, 0.0) or periodic:
+        raise ContactInputError(
+            "a Grid carries its pitch, origin and boundary: do not give dx, dy, origin or "
+            "periodic with it")
+    return grid.h, grid.dx, grid.dy, grid.origin, grid.periodic
 
 
 def _resolve_bounds(hardness: float | None,
@@ -232,8 +255,7 @@ def _warm_start(initial: np.ndarray, shape: tuple[int, ...], cap: float) -> np.n
 
 
 def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: float | None,
-              dx: float, dy: float, periodic: bool, origin: tuple[float, float], ok: bool,
-              extra: dict[str, Any]) -> ContactResult:
+              grid: Grid, ok: bool, extra: dict[str, Any]) -> ContactResult:
     """The result of a finished iteration, back in SI units."""
     ny, nx = h.shape
     p = state.pressure.reshape(ny, nx)
@@ -246,10 +268,9 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
         plastic = np.zeros_like(p)
     gap = np.maximum(g, 0.0)
     gap[p > 0] = 0.0
-    x = origin[0] + np.arange(nx) * dx
-    y = origin[1] + np.arange(ny) * dy
     return build_result(
-        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=x, y=y,
-        dx=dx, dy=dy, e_star=e_star, hardness=hardness, periodic=periodic, approach=delta,
+        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=grid.x,
+        y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
+        periodic=grid.periodic, approach=delta,
         iterations=state.iteration, residual=state.residual, converged=ok, extra=extra,
     )

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from contact.bem.bounds import PressureBounds
+from contact.grid import Grid
 from contact.halfspace.convolution import Convolution
 
 #: Direct summation of a corrected cell costs about 1/SPARSE_FACTOR / log2(4 n) of one
@@ -48,15 +49,15 @@ class SolverStats:
 class Problem:
     """One solve's fixed data, in units where E* = 1.
 
-    ``gap`` is E* h, flattened; ``target`` the prescribed sum of the cell pressures (the
-    load over the cell area) in load control, 0 in approach control; ``bounds`` the
-    pressure bounds (non-adhesive here: 0 <= p <= hardness); ``single`` runs the
-    search-direction convolutions in float32.
+    ``gap`` is E* h, flattened; ``grid`` the cells (:class:`contact.grid.Grid`: shape,
+    pitch, origin, periodic or free boundary; its gap, in metres, is not used here);
+    ``target`` the prescribed sum of the cell pressures (the load over the cell area) in
+    load control, 0 in approach control; ``bounds`` the pressure bounds (non-adhesive
+    here: 0 <= p <= hardness); ``single`` runs the search-direction convolutions in float32.
     """
 
     gap: np.ndarray
-    ny: int
-    nx: int
+    grid: Grid
     operator: Convolution
     load_control: bool
     target: float
@@ -66,6 +67,16 @@ class Problem:
     workers: int
     tol: float
     max_iter: int
+
+    @property
+    def ny(self) -> int:
+        """Cells along y."""
+        return self.grid.ny
+
+    @property
+    def nx(self) -> int:
+        """Cells along x."""
+        return self.grid.nx
 
     @property
     def size(self) -> int:

@@ -42,13 +42,12 @@ from contact.geometry import (
     centred_coordinates,
     contact_extent,
     fast_even,
-    fill_nan,
     max_centred_cells,
     remove_plane,
-    sample_roughness,
     sphere_gap,
 )
 from contact.hertz import hertz_sphere
+from contact.sampling import fill_nan, sample_roughness
 from contact.setups.composite import CompositeRoughness
 
 _ON_EDGE = ("enlarge", "warn", "raise")
@@ -172,7 +171,7 @@ class SphereContact:
         n, dx = dom.n, dom.dx
         h = sphere_gap(n, dx, self.radius, exact=self.exact_sphere)
         if self._z is not None:
-            h = h - sample_roughness(self._z, self.zdx, self.zdy, self.centre, n, dx)
+            h = h - sample_roughness(self._z, self.zdx, self.zdy, dom.grid, centre=self.centre)
         # Approach counted from the first touch: offsets of the data drop out.
         self.gap0 = h - h.min()
 

@@ -8,7 +8,7 @@ compression (Spence); plane strain and 3D, smooth or rough.
 
 The influence operator and the pair's constants are those of :mod:`contact.halfspace`
 (:mod:`~contact.halfspace.pair`, :mod:`~contact.halfspace.constants`, re-exported here).
-Modules: :mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`~contact.tangential.grid`,
+Modules: :mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`contact.grid` (the grid),
 :mod:`~contact.tangential.normal` (pressure with an extra gap),
 :mod:`~contact.tangential.solver` (active-set iteration), :mod:`~contact.tangential.kernels`
 (compiled loops), :mod:`~contact.tangential.forcecontrol`, :mod:`~contact.tangential.steady`
@@ -16,8 +16,8 @@ Modules: :mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`~contact.
 :mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
 """
 
+from contact.grid import Grid, cylinder_grid, sphere_grid
 from contact.halfspace.constants import PairConstants, pair_constants, pair_constants_from
-from contact.tangential.grid import Grid, cylinder_grid, sphere_grid
 from contact.tangential.kinematics import Creepage
 from contact.tangential.results import TangentialResult
 from contact.tangential.shift import compress_in_steps, shift

@@ -27,11 +27,12 @@ import numpy as np
 
 from contact.errors import ContactInputError
 from contact.exponent import fit_exponent, local_exponent
+from contact.grid import sphere_grid
 from contact.halfspace.constants import pair_constants
 from contact.hertz import hertz_sphere
 from contact.materials import Material
 from contact.rolling import RollingSweep
-from contact.tangential.grid import sample_roughness, sphere_grid
+from contact.sampling import sample_roughness
 from contact.tangential.kinematics import Creepage
 from contact.tangential.results import edge_note
 from contact.tangential.steady import check_friction, steady_rolling
@@ -56,8 +57,8 @@ def microslip_dissipation(radius: float, ball: Material, plate: Material, load: 
     half = half_width or (1.5 if roughness is not None else 1.25) * a
     z = None
     if roughness is not None:
-        x = sphere_grid(radius, half, grid).x
-        z = sample_roughness(roughness[0], roughness[1], roughness[2], x, x)
+        z = sample_roughness(roughness[0], roughness[1], roughness[2],
+                             sphere_grid(radius, half, grid), average=False)
         z = z - z.max()
     g = sphere_grid(radius, half, grid, roughness=z)
     return steady_rolling(g, constants, load, mu, Creepage(), fx=-traction_ratio * load)

@@ -3,10 +3,11 @@
 Most of a cold steady-rolling solve goes into finding the stick and slip areas, the slip
 directions, the creepage of a prescribed force and the coupled pressure; all of these are
 already close on a grid of half the resolution. The fine solve therefore starts from the
-coarse answer, each coarse element's state, traction and pressure copied to the 2 x 2
-fine elements it covers (the nested iteration of multigrid practice; Brandt 1977,
-Math. Comp. 31:333). Only the start changes: the fine solve keeps its own convergence
-tests, so the answer is that of the fine grid.
+coarse answer: each coarse element's state copied to the 2 x 2 fine elements it covers,
+the traction and pressure interpolated with the stencil of :mod:`contact.nesting` (the
+nested iteration of multigrid practice; Brandt 1977, Math. Comp. 31:333). Only the start
+changes: the fine solve keeps its own convergence tests, so the answer is that of the
+fine grid.
 """
 
 from __future__ import annotations
@@ -15,7 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.tangential.grid import Grid
+from contact import nesting
+from contact.grid import Grid
 from contact.tangential.kernels import SLIP, STICK
 from contact.tangential.solver import TangentialState
 
@@ -34,13 +36,8 @@ class CoarseStart:
 
 def coarse_grid(grid: Grid) -> Grid | None:
     """The grid of twice the pitch over the same area (3D, even sides of at least
-    2 SMALLEST), or None where nesting does not pay."""
-    ny, nx = grid.h.shape
-    if grid.line or ny % 2 or nx % 2 or min(ny, nx) < 2 * SMALLEST:
-        return None
-    h = grid.h.reshape(ny // 2, 2, nx // 2, 2).mean(axis=(1, 3))
-    return Grid(x=0.5 * (grid.x[0::2] + grid.x[1::2]), y=0.5 * (grid.y[0::2] + grid.y[1::2]),
-                h=h, line=False)
+    2 SMALLEST), or None where nesting does not pay (:func:`contact.nesting.coarse_grid`)."""
+    return nesting.coarse_grid(grid, SMALLEST)
 
 
 def _fine(a: np.ndarray) -> np.ndarray:
@@ -48,25 +45,16 @@ def _fine(a: np.ndarray) -> np.ndarray:
     return np.repeat(np.repeat(a, 2, axis=-1), 2, axis=-2)
 
 
-def _linear(a: np.ndarray, axis: int) -> np.ndarray:
-    """Linear interpolation to the two half-pitch points of each element along ``axis``
-    (weights 3/4 and 1/4; the edges take their own value)."""
-    a = np.moveaxis(a, axis, -1)
-    lo = np.concatenate([a[..., :1], a[..., :-1]], axis=-1)
-    hi = np.concatenate([a[..., 1:], a[..., -1:]], axis=-1)
-    out = np.empty((*a.shape[:-1], 2 * a.shape[-1]))
-    out[..., 0::2] = 0.75 * a + 0.25 * lo
-    out[..., 1::2] = 0.75 * a + 0.25 * hi
-    return np.moveaxis(out, -1, axis)
-
-
 def _smooth(a: np.ndarray) -> np.ndarray:
-    """Bilinear interpolation of a coarse field to the fine grid."""
-    return _linear(_linear(a, -1), -2)
+    """Bilinear interpolation of a coarse field to the fine grid; the passes run along x
+    first (the reverse of :func:`contact.nesting.prolong`), which keeps the rounding, and
+    so the answers, of steady rolling as they were."""
+    return nesting.prolong_axis(nesting.prolong_axis(a, -1), -2)
 
 
 def prolong(p: np.ndarray, q: np.ndarray, state: np.ndarray, xi: float) -> CoarseStart:
-    """Copy a coarse answer to the fine grid (each element to the 2 x 2 it covers)."""
+    """A coarse answer on the fine grid: states to the 2 x 2 elements each covers, the
+    traction and pressure interpolated bilinearly (:mod:`contact.nesting`)."""
     qf = _smooth(q)
     st = _fine(state).astype(np.int8)
     norm = np.hypot(qf[0], qf[1])

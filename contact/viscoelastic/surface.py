@@ -224,7 +224,7 @@ def _coarse_start(h: np.ndarray, dx: float, dy: float, W: float, creep: CreepSer
     The discretisation difference between the grids (a few per cent of pmax at the
     contact edges) dominates the start's error, so a loose coarse tolerance suffices.
     """
-    from contact.bem.nested import can_nest, coarsen, prolong
+    from contact.nesting import can_nest, coarsen, prolong
 
     if not creep.amplitudes or not can_nest(*h.shape):
         return None

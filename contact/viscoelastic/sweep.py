@@ -24,6 +24,8 @@ from typing import Any
 import numpy as np
 
 from contact.errors import ContactInputError
+from contact.grid import Grid
+from contact.sampling import sample_roughness
 from contact.viscoelastic.rheology import CreepSeries, pair_creep
 from contact.viscoelastic.surface import rolling_sphere
 from contact.viscoelastic.window import sphere_window
@@ -31,23 +33,17 @@ from contact.viscoelastic.window import sphere_window
 
 def roughness_window(roughness: np.ndarray, dx: float, dy: float,
                      centre: tuple[float, float] | None, half: float, n: int) -> np.ndarray:
-    """The roughness (m) on an n x n grid of half-width ``half`` centred on ``centre``."""
-    from scipy.ndimage import map_coordinates
-
+    """The roughness (m) on an n x n grid of half-width ``half`` centred on ``centre``
+    (default the middle of the map), sampled by :func:`contact.sampling.sample_roughness`."""
     z = np.asarray(roughness, dtype=float)
     if z.ndim != 2:
         raise ContactInputError("the roughness must be a 2D map")
-    z = np.where(np.isfinite(z), z, np.nanmean(z))
     ny, nx = z.shape
     cx, cy = centre if centre is not None else ((nx - 1) * dx / 2, (ny - 1) * dy / 2)
     step = 2 * half / n
     s = -half + step / 2 + np.arange(n) * step
-    if cx + s[0] < 0 or cx + s[-1] > (nx - 1) * dx or cy + s[0] < 0 or cy + s[-1] > (ny - 1) * dy:
-        raise ContactInputError("the roughness map is smaller than the contact domain")
-    cols = (cx + s) / dx
-    rows = (cy + s) / dy
-    rr, cc = np.meshgrid(rows, cols, indexing="ij")
-    return map_coordinates(z, [rr, cc], order=1)
+    grid = Grid(x=s, y=s, pitch=(step, step))
+    return sample_roughness(z, dx, dy, grid, centre=(cx, cy), average=False)
 
 
 def viscoelastic_sweep(radius: float, ball: Any, plate: Any, loads: Iterable[float],

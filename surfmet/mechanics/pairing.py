@@ -104,23 +104,22 @@ def fill_nearest(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _resample(z: np.ndarray, dx: float, dy: float, nx: int, ny: int, pitch: float
               ) -> tuple[np.ndarray, np.ndarray]:
-    """Bilinear resampling of a centred (ny, nx) window of pitch ``pitch``; also returns
-    where the source was not measured (nearest-neighbour of the NaN mask)."""
-    from scipy.ndimage import map_coordinates, uniform_filter
+    """Resampling of a centred (ny, nx) window of pitch ``pitch``
+    (:func:`contact.sampling.sample_roughness`); also returns where the source was not
+    measured (nearest-neighbour of the NaN mask)."""
+    from scipy.ndimage import map_coordinates
+
+    from contact.grid import Grid
+    from contact.sampling import sample_roughness
 
     filled, bad = fill_nearest(z)
     sy, sx = z.shape
     cx, cy = 0.5 * (sx - 1) * dx, 0.5 * (sy - 1) * dy
-    X = cx + (np.arange(nx) - 0.5 * (nx - 1)) * pitch
-    Y = cy + (np.arange(ny) - 0.5 * (ny - 1)) * pitch
-    ci = np.clip(Y / dy, 0, sy - 1)
-    cj = np.clip(X / dx, 0, sx - 1)
-    coords = np.meshgrid(ci, cj, indexing="ij")
-    fy, fx = pitch / dy, pitch / dx
-    if fx > 1.5 or fy > 1.5:  # coarser target grid: average over a target cell first
-        filled = uniform_filter(filled, size=(max(1, round(fy)), max(1, round(fx))),
-                                mode="nearest")
-    out = map_coordinates(filled, coords, order=1, mode="nearest")
+    grid = Grid(x=(np.arange(nx) - 0.5 * (nx - 1)) * pitch,
+                y=(np.arange(ny) - 0.5 * (ny - 1)) * pitch, pitch=(pitch, pitch))
+    out = sample_roughness(filled, dx, dy, grid, centre=(cx, cy))
+    coords = np.meshgrid(np.clip((cy + grid.y) / dy, 0, sy - 1),
+                         np.clip((cx + grid.x) / dx, 0, sx - 1), indexing="ij")
     holes = map_coordinates(bad.astype(float), coords, order=0, mode="nearest") > 0.5
     return out, holes
 

@@ -169,15 +169,14 @@ def _half_width(radius: float, load: float, e_star: float, line: bool,
 
 def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any:
     """The tangential grid of half-width ``half``, with the roughness sampled onto it."""
-    from contact.tangential import cylinder_grid, sphere_grid
-    from contact.tangential.grid import sample_roughness
+    from contact.grid import cylinder_grid, sphere_grid
+    from contact.sampling import sample_roughness
 
     make = cylinder_grid if line else sphere_grid
     z = None
     if roughness is not None:
         zmap, zdx, zdy = roughness
-        x = make(radius, half, n).x
-        z = sample_roughness(zmap, zdx, zdy, x, [0.0] if line else x)
+        z = sample_roughness(zmap, zdx, zdy, make(radius, half, n), average=False)
         z = z - z.max()  # the highest summit touches first; only differences matter
     return make(radius, half, n, roughness=z)
 

@@ -374,7 +374,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
     res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
     if mu is None:
         return res, None
-    from contact.tangential.grid import Grid
+    from contact.grid import Grid
     from contact.viscoelastic.traction3d import pair_poisson, visco_steady_tractions
 
     x, y = np.asarray(res.x), np.asarray(res.y)

@@ -1,0 +1,68 @@
+"""Coarse-to-fine nesting: the one grid-transfer stencil of every solver.
+
+A solve without a warm start may first solve the problem on a grid of twice the pitch
+over the same area (recursively) and start the fine solve from that answer,
+interpolated: the nested iteration of multigrid practice (Brandt 1977, Math. Comp.
+31:333). Only the start changes; the fine solve keeps its own convergence tests, so the
+answer is that of the fine grid. The normal BEM (:mod:`contact.bem.solver`), the
+viscoelastic rolling solve (:mod:`contact.viscoelastic.surface`) and steady rolling
+(:mod:`contact.tangential.nested`) all use this stencil:
+
+- :func:`coarsen`: the mean of each 2 x 2 block (a gap, a coarse cell's mean height);
+- :func:`prolong`: bilinear interpolation from the coarse centres to the fine ones (two
+  passes of :func:`prolong_axis`);
+- :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from contact.grid import Grid
+
+#: Grids smaller than this (in either direction) are solved directly by the normal BEM.
+MIN_COARSE = 64
+
+
+def coarsen(field: np.ndarray) -> np.ndarray:
+    """The mean of each 2 x 2 block of cells over the last two axes (both even)."""
+    *lead, ny, nx = field.shape
+    return field.reshape(*lead, ny // 2, 2, nx // 2, 2).mean(axis=(-3, -1))
+
+
+def prolong_axis(a: np.ndarray, axis: int) -> np.ndarray:
+    """Linear interpolation along ``axis`` to the grid twice as fine (one pass of
+    :func:`prolong`)."""
+    # Linear interpolation from coarse cell centres to the two fine centres of each cell:
+    # fine 2I sits a quarter cell before coarse I, fine 2I+1 a quarter cell after it; the
+    # edge cells keep their own value outward.
+    a = np.moveaxis(a, axis, 0)
+    prev = np.concatenate((a[:1], a[:-1]))
+    nxt = np.concatenate((a[1:], a[-1:]))
+    out = np.empty((2 * a.shape[0], *a.shape[1:]), dtype=a.dtype)
+    out[0::2] = 0.75 * a + 0.25 * prev
+    out[1::2] = 0.75 * a + 0.25 * nxt
+    return np.moveaxis(out, 0, axis)
+
+
+def prolong(field: np.ndarray) -> np.ndarray:
+    """Bilinear interpolation of a cell field (last two axes) onto the grid twice as fine."""
+    return prolong_axis(prolong_axis(field, -2), -1)
+
+
+def can_nest(ny: int, nx: int, smallest: int = MIN_COARSE) -> bool:
+    """True if the grid halves evenly into one still at least ``smallest`` a side."""
+    return ny % 2 == 0 and nx % 2 == 0 and min(ny, nx) >= 2 * smallest
+
+
+def coarse_grid(grid: Grid, smallest: int = MIN_COARSE) -> Grid | None:
+    """The grid of twice the pitch over the same area, its gap coarsened; None where the
+    grid does not halve (:func:`can_nest`) or is a line contact."""
+    if grid.line or not can_nest(grid.ny, grid.nx, smallest):
+        return None
+    pitch = None if grid.pitch is None else (2 * grid.pitch[0], 2 * grid.pitch[1])
+    return replace(grid, x=0.5 * (grid.x[0::2] + grid.x[1::2]),
+                   y=0.5 * (grid.y[0::2] + grid.y[1::2]),
+                   h=None if grid.h is None else coarsen(grid.h), pitch=pitch)

@@ -1,0 +1,96 @@
+"""A measured height map sampled onto a solver's grid: the one ``sample_roughness``.
+
+Every solver family puts a scan (or a composite of two) under its grid the same way:
+non-measured points take the nearest measured value, the map is averaged over one grid
+cell where the grid is coarser than the data (a box filter, so that the grid sees the
+cell-mean roughness instead of an aliased sample), and the map is interpolated
+bilinearly at the element centres.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from contact.errors import ContactInputError
+from contact.grid import Grid
+
+#: A grid this many times coarser than the data (either way) is averaged before sampling.
+COARSER = 1.5
+
+
+def fill_nan(z: np.ndarray) -> tuple[np.ndarray, float]:
+    """Fill non-measured points with the nearest measured value; return the filled fraction.
+
+    Raises
+    ------
+    ContactInputError
+        If nothing is measured.
+    """
+    from scipy.ndimage import distance_transform_edt
+
+    z = np.asarray(z, dtype=float)
+    bad = ~np.isfinite(z)
+    if not bad.any():
+        return z, 0.0
+    if bad.all():
+        raise ContactInputError("the roughness map is NaN everywhere: nothing was measured")
+    idx = distance_transform_edt(bad, return_distances=False, return_indices=True)
+    return z[tuple(idx)], float(bad.mean())
+
+
+def sample_roughness(z: np.ndarray, zdx: float, zdy: float, grid: Grid, *,
+                     centre: tuple[float, float] | None = None,
+                     average: bool = True) -> np.ndarray:
+    """The height map ``z`` (pitch zdx, zdy) at the element centres of ``grid``.
+
+    Parameters
+    ----------
+    z : ndarray, shape (ny, nx)
+        Heights (m); row i at Y = i zdy, column j at X = j zdx. NaN marks points not
+        measured: they take the nearest measured value.
+    zdx, zdy : float
+        The map's pitch (m).
+    grid : Grid
+        The solver's grid; its coordinates are relative to the point ``centre`` of the map.
+    centre : (float, float), optional
+        Map coordinates (X, Y) of the grid's origin (m); default the middle of the map.
+    average : bool
+        Average the map over one grid cell first where the grid is more than
+        :data:`COARSER` times coarser than the data.
+
+    Returns
+    -------
+    ndarray, shape grid.shape
+        Bilinear interpolation of the (averaged) map at the centres.
+
+    Raises
+    ------
+    ContactInputError
+        If the map has no measured point or does not cover the grid.
+    """
+    from scipy.ndimage import map_coordinates, uniform_filter
+
+    z = np.asarray(z, dtype=float)
+    if z.ndim != 2:
+        raise ContactInputError("the roughness must be a 2D map")
+    z, _ = fill_nan(z)
+    ny_r, nx_r = z.shape
+    x, y = np.asarray(grid.x, dtype=float), np.asarray(grid.y, dtype=float)
+    if centre is None:
+        cols = x / zdx + 0.5 * (nx_r - 1)
+        rows = y / zdy + 0.5 * (ny_r - 1)
+    else:
+        cols = (centre[0] + x) / zdx
+        rows = (centre[1] + y) / zdy
+    # a grid that ends on the map's last point within rounding still fits
+    tol = 1e-9 * max(zdx, zdy, grid.dx, 1.0 if grid.line else grid.dy)
+    if (cols.min() < -tol / zdx or rows.min() < -tol / zdy or cols.max() > nx_r - 1 + tol / zdx
+            or rows.max() > ny_r - 1 + tol / zdy):
+        raise ContactInputError("the roughness data do not cover the contact grid: use "
+                                "larger scans or a smaller grid")
+    fx = grid.dx / zdx
+    fy = 1.0 if grid.line else grid.dy / zdy
+    if average and (fx > COARSER or fy > COARSER):
+        z = uniform_filter(z, size=(max(1, round(fy)), max(1, round(fx))), mode="nearest")
+    rr, cc = np.meshgrid(np.clip(rows, 0, ny_r - 1), np.clip(cols, 0, nx_r - 1), indexing="ij")
+    return map_coordinates(z, [rr, cc], order=1, mode="nearest")
