@@ -157,12 +157,12 @@ class NewtonSystem:
         self._dq = np.zeros_like(q0)
         self._ih = flat_indices(H, ncomp)
         self._is = flat_indices(S, 2)
+        self._inverse = (op.tangential_stiffness if PRECONDITIONER == "continuum"
+                         else op.tangential_inverse)
         self.matvecs = 0
         self.single = False
         # the products only ever see tractions on, and slips read on, loaded elements
         self._box = BoxProducts(op, g > 0)
-        self._inverse = (op.tangential_stiffness if PRECONDITIONER == "continuum"
-                         else op.tangential_inverse)
         self._slip_diag = self._slip_diagonal(op, rolling) if self.ns else None
 
     def _slip_diagonal(self, op: HalfSpacePair, rolling: bool) -> np.ndarray:

@@ -8,7 +8,10 @@ CONTACT; Kalker 1990 sec. 2.3). In 3D the pressure is solved again after every N
 step of the tangential problem instead, warm-started, so that pressure, tractions, slip
 areas and (under force control) the creepage converge together in one loop rather than
 the tangential problem being converged in full for each pressure (about half the FFT
-products at 256^2; the answer is the same to the solvers' tolerances).
+products at 256^2; the answer is the same to the solvers' tolerances). Those pressures
+are solved inexactly, to a residual that follows their change, and only the last ones
+to the final tolerance, and after a coarse start the first Newton step keeps the start's
+pressure (:mod:`contact.tangential.coupling`).
 """
 
 from __future__ import annotations
