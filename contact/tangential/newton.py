@@ -24,6 +24,7 @@ import numpy as np
 from threadpoolctl import ThreadpoolController
 
 from contact.halfspace.pair import HalfSpacePair
+from contact.tangential.cropped import BoxProducts
 from contact.tangential.kinematics import rolling_slip
 
 PRECONDITIONER = "continuum"
@@ -160,6 +161,8 @@ class NewtonSystem:
                          else op.tangential_inverse)
         self.matvecs = 0
         self.single = False
+        # the products only ever see tractions on, and slips read on, loaded elements
+        self._box = BoxProducts(op, g > 0)
         self._slip_diag = self._slip_diagonal(op, rolling) if self.ns else None
 
     def _slip_diagonal(self, op: HalfSpacePair, rolling: bool) -> np.ndarray:
@@ -186,7 +189,7 @@ class NewtonSystem:
         self.matvecs += 1
         k = self.ncomp * self.nh
         d = self.increments(x)
-        u = self.op.tangential(d[0], d[1] if self.ncomp == 2 else None, self.single)
+        u = self._box.tangential(d[0], d[1] if self.ncomp == 2 else None, self.single)
         r = rolling_slip(u, self.op.dx) if self.rolling else u
         z = x[-1] * self.sref if self.aug else 0.0  # rigid slip increment along x
         rh = np.take(r, self._ih)

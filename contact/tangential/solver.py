@@ -28,6 +28,7 @@ import numpy as np
 
 from contact.errors import ConvergenceError
 from contact.halfspace.pair import HalfSpacePair
+from contact.tangential.cropped import BoxProducts
 from contact.tangential.kernels import SLIP, STICK, update_states
 from contact.tangential.kinematics import rolling_slip
 from contact.tangential.newton import NewtonSystem, cross, diagonal
@@ -78,9 +79,10 @@ def initial_state(g: np.ndarray) -> TangentialState:
 
 
 def slip_of(op: HalfSpacePair, q: np.ndarray, w: np.ndarray, u0: np.ndarray,
-            rolling: bool) -> np.ndarray:
-    """s = w + L(A q + u0)."""
-    u = op.tangential(q[0], q[1]) + u0
+            rolling: bool, products: BoxProducts | None = None) -> np.ndarray:
+    """s = w + L(A q + u0); with ``products`` (the box of the loaded elements, which
+    holds q) exact on the loaded elements only."""
+    u = (op if products is None else products).tangential(q[0], q[1]) + u0
     return w + (rolling_slip(u, op.dx) if rolling else u)
 
 
@@ -164,6 +166,7 @@ def solve_tangential(
     limit = float(g.sum()) * area
     polish = False
     moving = True
+    box = BoxProducts(op, g > 0)
     change = 0.0
     same = False
     for it in range(1, max_outer + 1):
@@ -176,7 +179,7 @@ def solve_tangential(
             q0 = np.zeros_like(st.q)
             q0[:, H] = st.q[:, H]
             q0[:, S] = g[S] * st.e[:, S]
-            s0 = slip_of(op, q0, w, u0, rolling)
+            s0 = slip_of(op, q0, w, u0, rolling, box)
         residual = None if force is None else force / area - float(q0[0].sum())
         system = NewtonSystem(op, g, s0, q0, st.e, H, S, rolling, ncomp, d_shift, residual)
         step = system.solve(polish_rtol if polish else MOVING_RTOL if moving else SETTLE_RTOL)
@@ -189,7 +192,8 @@ def solve_tangential(
             g, u0, change = recouple(q)
             entered, new = _follow_bound(st, q, g)
             limit = float(g.sum()) * area
-        s = slip_of(op, q, w, u0, rolling)
+            box = BoxProducts(op, g > 0)
+        s = slip_of(op, q, w, u0, rolling, box)
         if entered:
             _aim_new(st, q, s, g, new)
         st.q, st.s = q, s
@@ -221,6 +225,9 @@ def solve_tangential(
             done = change <= 1e-3
         if changes == 0 and settled and done:
             st.outer, st.matvecs, st.dw = it, counter[0], dw_total
+            if box.box is not None:
+                # the slip off the contact too, as the answer's slip field
+                st.s = slip_of(op, q, w, u0, rolling)
             st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
             return st
     raise ConvergenceError(

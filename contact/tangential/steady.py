@@ -8,7 +8,10 @@ CONTACT; Kalker 1990 sec. 2.3). In 3D the pressure is solved again after every N
 step of the tangential problem instead, warm-started, so that pressure, tractions, slip
 areas and (under force control) the creepage converge together in one loop rather than
 the tangential problem being converged in full for each pressure (about half the FFT
-products at 256^2; the answer is the same to the solvers' tolerances).
+products at 256^2; the answer is the same to the solvers' tolerances). Those pressures
+are solved inexactly, to a residual that follows their change, and only the last ones
+to the final tolerance, and after a coarse start the first Newton step keeps the start's
+pressure (:mod:`contact.tangential.coupling`).
 """
 
 from __future__ import annotations
@@ -20,6 +23,13 @@ import numpy as np
 from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.pair import HalfSpacePair
+from contact.tangential.coupling import (
+    LAG,
+    LOOSEST,
+    PRESSURE_TOL,
+    Recoupling,
+    solve_pressure_to,
+)
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.kinematics import Creepage, rigid_slip
@@ -33,6 +43,8 @@ from contact.tangential.solver import TangentialState, solve_tangential
 # ends with stick-zone slips below 1e-9 of the creepage (measured on the benchmark ball
 # at 64^2, 128^2 and 256^2: 5e-10, 3e-12, 4e-11)
 POLISH_RTOL = 1e-2
+# residual of the normal solves of a coarse grid whose answer is only a start
+COARSE_PRESSURE_TOL = LOOSEST
 
 
 def check_friction(mu: float) -> float:
@@ -103,9 +115,16 @@ def steady_rolling(
     op = operator_for(grid, constants)
     start = _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol, max_coupling) \
         if nested and pressure is None else None
+    # 3D: the pressure is solved again after every Newton step of the tangential problem
+    # (one loop); plane strain keeps the outer loop around the force's root search
+    fold = coupled and op.coupled and not grid.line and pressure is None
     if pressure is not None:
         p, delta = np.asarray(pressure, float), float("nan")
         coupled = False
+    elif start is not None and fold:
+        # solved again, to its final tolerance, with the tractions of the Newton steps
+        extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
+        p, delta = solve_pressure_to(op, grid.h, load, LOOSEST, extra, start.p)
     elif start is not None:
         extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
         p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
@@ -119,10 +138,9 @@ def steady_rolling(
     st: list[TangentialState | None] = [None if start is None else start.state]
     xi = creep.xi if start is None else start.xi
     iterations = 0
-    # 3D: the pressure is solved again after every Newton step of the tangential problem
-    # (one loop); plane strain keeps the outer loop around the force's root search
-    fold = coupled and op.coupled and not grid.line
-    pressure_now = _Recoupling(op, grid.h, load, mu, p, delta) if fold else None
+    pressure_now = Recoupling(op, grid.h, load, mu, p, delta, tol,
+                              COARSE_PRESSURE_TOL if start_only else PRESSURE_TOL,
+                              0 if start is None else LAG) if fold else None
     # inexact outer iteration: while the pressure still moves by more than 1e-3, the
     # tangential problems are solved loosely (their exact answer is for a pressure that is
     # about to change); the last ones, which decide convergence, are solved tight
@@ -206,23 +224,3 @@ def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
     r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
                        tol=max(tol, 1e-3), max_coupling=max_coupling, start_only=True)
     return prolong(r.p, r.q, r.state, r.creepage.xi)
-
-
-class _Recoupling:
-    """The pressure solved again for the tractions of each Newton step (3D, K != 0):
-    ``q -> (mu p, u0 of p, relative change of p)``, keeping the latest p and approach."""
-
-    def __init__(self, op: HalfSpacePair, h: np.ndarray, load: float, mu: float,
-                 p: np.ndarray, delta: float):
-        self.op, self.h, self.load, self.mu = op, h, load, mu
-        self.p, self.delta = p, delta
-        self.solves = 0
-
-    def __call__(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
-        extra = self.op.normal_from_tangential(q[0], q[1])
-        p_new, self.delta = solve_pressure(self.op, self.h, self.load, extra=extra,
-                                           start=self.p)
-        change = float(np.abs(p_new - self.p).sum() / p_new.sum())
-        self.p = p_new
-        self.solves += 1
-        return self.mu * p_new, self.op.tangential_from_normal(p_new), change
