@@ -1,0 +1,187 @@
+"""Adhesive rough flat contact at a mean pressure: ours against our non-adhesive solve and Tamaas.
+
+The issue's speed targets (issue 26): on 512^2, the adhesive solve of a nominally flat
+rough surface at a mean pressure within 5x the non-adhesive solve of the same surface
+and pressure, and within Tamaas' CPU time on the same case. Tamaas is not imported here:
+its CPU times and answers are read from ``tests/data/tamaas_adhesion.json``, written on
+this kind of machine by ``benchmarks/tamaas_adhesion.py`` from the surfaces this script
+writes (``--write-surfaces``). Every time is ``time.process_time`` of one process with one
+FFT worker and one BLAS thread (``--blas-threads`` leaves BLAS at its default; Tamaas'
+wheel has the serial C++ backend).
+
+Timed, per size, each a cold start at the same surface and pressure:
+
+- ``non-adhesive``: :func:`contact.bem.solve_normal` at the load p A (periodic);
+- ``adhesive``: :func:`contact.adhesion.flat.adhesive_flat`, the load-controlled adhesive
+  solve of ``surfmet flat-contact --work-of-adhesion``, started as that command starts it
+  from the non-adhesive solve's mean gap and contact stiffness; the stiffness costs one
+  more warm-started non-adhesive solve at 1.01 p, reported on its own line.
+
+The answers (contact fraction, mean gap, attractive and repulsive pressure) are printed
+beside Tamaas' stored ones::
+
+    python3 benchmarks/adhesion_flat.py --sizes 256,512
+
+Measured 2026-11-27 on the shared 2-core AMD EPYC sandbox (CPU s, one BLAS thread; Tamaas
+2.9.0 in the same session, OMP_NUM_THREADS=1):
+
+    size  ours bare  ours adhesive  ratio  Tamaas adhesive  (gap imposed)  Tamaas bare
+    256    0.27        1.53         5.6        6.05            1.57           1.04
+    512    1.43       11.91         8.3       78.01           11.47           7.27
+
+With OpenBLAS' default threads ours adhesive takes 25.8 s at 512^2: the solver's
+np.vdot wakes the BLAS threads, whose spinning bills as CPU time on a loaded machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import time
+from pathlib import Path
+
+# One BLAS thread unless --blas-threads: on a shared machine OpenBLAS' worker threads spin
+# in np.vdot and would bill their waiting as CPU time (measured: 8 ms per 128^2 vdot).
+if "--blas-threads" not in sys.argv:
+    for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ[_var] = "1"
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # this checkout's packages
+
+#: The case, in reduced units (lengths in the box side L, stresses in E*): a self-affine
+#: surface of rms slope 0.1 on a unit periodic box, the exponential law t = (w/rho)
+#: exp(-g/rho) of peak tension w/rho = 2x the mean pressure. The cohesive zone
+#: pi E* rho^2 / (4 w) = 0.0785 L spans 10 pixels at 128^2 and 40 at 512^2.
+CASE = {"box_side": 1.0, "hurst": 0.8, "slope_rms": 0.1, "roll_off": 0.25, "seed": 2026,
+        "e_star": 1.0, "work_of_adhesion": 1e-5, "range": 1e-3, "mean_pressure": 5e-3,
+        "tolerance": 1e-6}
+DATA = ROOT / "tests" / "data" / "tamaas_adhesion.json"
+
+
+def surface(n: int) -> np.ndarray:
+    """The case's heights on an n x n grid (surfmet's seeded random-phase generator)."""
+    from surfmet.synth import self_affine
+
+    return np.asarray(self_affine(n, CASE["box_side"] / n, hurst=CASE["hurst"],
+                                  slope_rms=CASE["slope_rms"], roll_off=CASE["roll_off"],
+                                  seed=CASE["seed"]).heights)
+
+
+def write_surfaces(folder: Path, sizes: list[int]) -> None:
+    """z<N>.npy per size and case.json (values with units) for the Tamaas driver."""
+    folder.mkdir(parents=True, exist_ok=True)
+    units = {"box_side": "m", "roll_off": "m", "e_star": "Pa", "work_of_adhesion": "J/m^2",
+             "range": "m", "mean_pressure": "Pa", "slope_rms": "1", "hurst": "1"}
+    case = {k: ({"value": v, "unit": units[k]} if k in units else {"value": v})
+            for k, v in CASE.items()}
+    case["generator"] = ("surfmet.synth.self_affine(n, box_side / n, hurst, slope_rms, "
+                         "roll_off, seed): random-phase, periodic, no short cut-off")
+    case["units_note"] = "reduced units: lengths in the box side, stresses in E*"
+    case["tolerance"]["note"] = ("ours: equilibrium violation relative to max(w/rho, pmax); "
+                                 "Tamaas: its PolonskyKeerRey error")
+    case["surfaces"] = {}
+    for n in sizes:
+        z = surface(n)
+        np.save(folder / f"z{n}.npy", z)
+        # fingerprints, so that a test can tell it regenerated the very array Tamaas got
+        case["surfaces"][str(n)] = {"rms": {"value": float(np.sqrt(np.mean(z * z))),
+                                            "unit": "m"},
+                                    "max": {"value": float(z.max()), "unit": "m"},
+                                    "z00": {"value": float(z[0, 0]), "unit": "m"}}
+    (folder / "case.json").write_text(json.dumps(case, indent=1) + "\n")
+
+
+def run_ours(n: int) -> dict:
+    """CPU times and answers of our non-adhesive and adhesive solves at size n."""
+    from contact.adhesion import ExponentialLaw
+    from contact.adhesion.flat import adhesive_flat
+    from contact.bem import solve_normal
+
+    z = surface(n)
+    dx, p0, tol = CASE["box_side"] / n, CASE["mean_pressure"], CASE["tolerance"]
+    h, e_star = z.max() - z, CASE["e_star"]
+    load = p0 * z.size * dx * dx
+    kw = dict(e_star=e_star, periodic=True, tol=tol, workers=1, edge="ignore")
+    t0 = time.process_time()
+    bare = solve_normal(h, dx, load=load, **kw)
+    t_bare = time.process_time() - t0
+    gap = float(np.mean(np.asarray(bare.gap)))
+    t0 = time.process_time()
+    more = solve_normal(h, dx, load=1.01 * load, initial=bare.pressure, **kw)
+    t_stiff = time.process_time() - t0
+    stiffness = 0.01 * p0 / (gap - float(np.mean(np.asarray(more.gap))))
+    law = ExponentialLaw(CASE["work_of_adhesion"], CASE["range"])
+    t0 = time.process_time()
+    ad = adhesive_flat(h, dx, e_star, law, [p0], [gap], [stiffness], tol=tol)
+    t_adh = time.process_time() - t0
+    pt = ad.points[0]
+    return {"bare_s": t_bare, "stiff_s": t_stiff, "adh_s": t_adh,
+            "bare": {"area_fraction": float(bare.area_fraction), "mean_gap": gap},
+            "adh": {"area_fraction": pt.area_fraction, "mean_gap": pt.mean_gap,
+                    "attractive_pressure": pt.attractive_pressure,
+                    "repulsive_pressure": pt.repulsive_pressure},
+            "solves": pt.solves, "iterations": pt.iterations,
+            "bare_iterations": int(bare.iterations), "warnings": ad.warnings}
+
+
+def _row(name: str, ours: float, theirs: float | None) -> str:
+    if theirs is None:
+        return f"  {name:<22} {ours:>12.6g} {'-':>12}"
+    return f"  {name:<22} {ours:>12.6g} {theirs:>12.6g} {ours / theirs - 1:>+9.2%}"
+
+
+def report(n: int, r: dict, ref: dict | None) -> None:
+    """The timing table and the answers of one size."""
+    tm = ref["results"].get(str(n), {}).get("omp1") if ref else None
+    t_tm = tm["adhesive_pressure_controlled"]["cpu_s"]["value"] if tm else math.nan
+    t_tm_gap = tm["adhesive_gap_controlled"]["cpu_s"]["value"] if tm else math.nan
+    t_tm_bare = tm["non_adhesive"]["cpu_s"]["value"] if tm else math.nan
+    threads = os.environ.get("OPENBLAS_NUM_THREADS", "default")
+    print(f"\n{n}^2  CPU s (process_time; BLAS threads: {threads})")
+    print(f"  ours non-adhesive      {r['bare_s']:8.2f}   ({r['bare_iterations']} iterations)")
+    print(f"  ours adhesive          {r['adh_s']:8.2f}   ({r['solves']} solves, "
+          f"{r['iterations']} iterations; + {r['stiff_s']:.2f} s for the start's stiffness)")
+    print(f"  Tamaas adhesive        {t_tm:8.2f}   (mean pressure imposed; stored)")
+    print(f"  Tamaas adhesive, gap   {t_tm_gap:8.2f}   (its mean gap imposed, one solve; stored)")
+    print(f"  Tamaas non-adhesive    {t_tm_bare:8.2f}   (stored)")
+    print(f"  ours adhesive / ours non-adhesive: {r['adh_s'] / r['bare_s']:.2f}  (target <= 5); "
+          f"with the stiffness solve {(r['adh_s'] + r['stiff_s']) / r['bare_s']:.2f}")
+    print(f"  ours adhesive / Tamaas adhesive:   {r['adh_s'] / t_tm:.2f}  (target <= 1); "
+          f"against its gap-imposed solve {r['adh_s'] / t_tm_gap:.2f}")
+    print(f"  {'answer':<22} {'ours':>12} {'Tamaas':>12} {'ours/T-1':>9}")
+    ta = tm["adhesive_pressure_controlled"] if tm else {}
+    tb = tm["non_adhesive"] if tm else {}
+    for key in ("area_fraction", "mean_gap", "attractive_pressure", "repulsive_pressure"):
+        print(_row(f"adhesive {key}", r["adh"][key], ta[key]["value"] if ta else None))
+    for key in ("area_fraction", "mean_gap"):
+        print(_row(f"bare {key}", r["bare"][key], tb[key]["value"] if tb else None))
+    for w in r["warnings"]:
+        print(f"  warning: {w}")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sizes", default="512", help="comma-separated grid sizes")
+    ap.add_argument("--blas-threads", action="store_true",
+                    help="leave the BLAS/OpenMP thread counts at their defaults")
+    ap.add_argument("--write-surfaces", type=Path, metavar="DIR",
+                    help="write z<N>.npy and case.json for benchmarks/tamaas_adhesion.py")
+    args = ap.parse_args()
+    sizes = [int(s) for s in args.sizes.split(",")]
+    if args.write_surfaces:
+        write_surfaces(args.write_surfaces, sizes)
+        return
+    ref = json.loads(DATA.read_text()) if DATA.exists() else None
+    run_ours(64)  # compile and warm the kernels, untimed
+    for n in sizes:
+        report(n, run_ours(n), ref)
+
+
+if __name__ == "__main__":
+    main()
