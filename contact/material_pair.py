@@ -63,7 +63,7 @@ class MaterialPair:
     def _bodies(self, what: str) -> tuple[Material, Material]:
         if self.body1 is None or self.body2 is None:
             raise ContactInputError(
-                f"{what} needs both bodies' materials (E and nu), not a composite modulus "
+                f"{what} need both bodies' materials (E and nu), not a composite modulus "
                 "or a rigid body; give the materials")
         return self.body1, self.body2
 

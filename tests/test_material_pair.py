@@ -85,7 +85,9 @@ def test_the_surfmet_spelling_resolves_through_the_same_pair():
     assert (pair.hardness, pair.hardness_source) == (0.9e9, "material: aluminium")
     assert material_pair(pair) is pair
     assert material_pair(pair, hardness=1e9).hardness_source == "given"
-    assert material_pair("aluminium").body2 is None
+    assert material_pair("aluminium", rigid_flat=True).body2 is None
+    with pytest.raises(SurfmetInputError, match="two names"):
+        material_pair("aluminium")  # a ball needs a plate
     assert material_pair(e_star=3e9).e_star == 3e9
     with pytest.raises(SurfmetInputError):
         material_pair("steel,aluminium", e_star=3e9)

@@ -81,7 +81,7 @@ def materials_e_star(text: str | None, hardness: float | None,
 
     if text is not None and len([s for s in str(text).split(",") if s.strip()]) not in (1, 2):
         raise SurfmetInputError(f"--materials takes A or A,B; got {text!r}")
-    pair = material_pair(text, e_star=e_star, hardness=hardness)
+    pair = material_pair(text, e_star=e_star, hardness=hardness, rigid_flat=True)
     return pair.e_star, pair.hardness, [m.name for m in (pair.body1, pair.body2) if m]
 
 

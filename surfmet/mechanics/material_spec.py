@@ -89,12 +89,13 @@ def parse_materials(materials: Any) -> tuple[Any, Any]:
 
 
 def material_pair(materials: Any = None, *, e_star: float | None = None,
-                  hardness: float | None = None) -> Any:
+                  hardness: float | None = None, rigid_flat: bool = False) -> Any:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`) of the user's materials.
 
-    ``materials`` is ``"A"`` (on a rigid flat) or ``"BALL,PLATE"`` text, a pair of
-    :class:`contact.materials.Material`, or an already resolved pair; or give ``e_star``
-    (Pa) instead. ``hardness`` (Pa) replaces the softer body's table value.
+    ``materials`` is ``"BALL,PLATE"`` text (or ``"A"``, a body on a rigid flat, where
+    ``rigid_flat`` allows it), a pair of :class:`contact.materials.Material`, or an already
+    resolved pair; or give ``e_star`` (Pa) instead. ``hardness`` (Pa) replaces the softer
+    body's table value.
     """
     from contact.material_pair import MaterialPair, resolve_pair
 
@@ -108,6 +109,7 @@ def material_pair(materials: Any = None, *, e_star: float | None = None,
         return resolve_pair(e_star=e_star, hardness=hardness)
     if e_star is not None:
         raise SurfmetInputError("give the materials or E*, not both")
-    if isinstance(materials, str) and len([s for s in materials.split(",") if s.strip()]) == 1:
+    if (rigid_flat and isinstance(materials, str)
+            and len([s for s in materials.split(",") if s.strip()]) == 1):
         return resolve_pair(parse_material(materials.strip(" ,")), hardness=hardness)
     return resolve_pair(*parse_materials(materials), hardness=hardness)
