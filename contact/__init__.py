@@ -56,6 +56,8 @@ from contact.materials import (
 )
 
 _LAZY = {
+    "MaterialPair": "contact.material_pair",
+    "resolve_pair": "contact.material_pair",
     "CompositeRoughness": "contact.setups.composite",
     "flat_contact": "contact.setups.flat",
     "solve_normal": "contact.bem",
@@ -100,6 +102,7 @@ __all__ = [
     "HertzCylinder",
     "HertzSphere",
     "Material",
+    "MaterialPair",
     "SolverStats",
     "SphereContact",
     "analyse_table",
@@ -121,6 +124,7 @@ __all__ = [
     "hertz_sphere_from_approach",
     "mass_properties",
     "material",
+    "resolve_pair",
     "solve_cylinder",
     "solve_normal",
     "solve_sphere",

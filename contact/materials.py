@@ -82,6 +82,11 @@ class Material:
         """E / (1 - nu^2) in Pa."""
         return self.E / (1.0 - self.nu**2)
 
+    @property
+    def shear_modulus(self) -> float:
+        """The modulus of rigidity G = E / (2 (1 + nu)) in Pa."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
 
 _CALLISTER = "Callister & Rethwisch (2014) Table 6.1"
 
@@ -191,3 +196,4 @@ def displacement_shares(m1: Material, m2: Material) -> tuple[float, float]:
     """
     p = compliance(m1, m2)
     return ((1.0 - m1.nu**2) / m1.E / p, (1.0 - m2.nu**2) / m2.E / p)
+

@@ -52,8 +52,8 @@ class PairConstants:
 
 
 def shear_modulus(m: Material) -> float:
-    """G = E / (2 (1 + nu)) in Pa."""
-    return m.E / (2.0 * (1.0 + m.nu))
+    """G in Pa: the material's own :attr:`~contact.materials.Material.shear_modulus`."""
+    return m.shear_modulus
 
 
 def pair_constants(body1: Material, body2: Material) -> PairConstants:

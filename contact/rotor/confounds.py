@@ -13,7 +13,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from contact.hertz import hertz_sphere
-from contact.materials import composite_modulus, material
+from contact.material_pair import resolve_pair
+from contact.materials import material
 from contact.rotor.mechanics import G_STANDARD
 from contact.rotor.rig import Rig, offset_for_lambda
 
@@ -45,11 +46,10 @@ class Confound:
 def _lateral_creep(rig: Rig) -> float:
     """Torque (N m) of lateral creep of both balls at yaw ``LATERAL_CREEP``: the creep force
     ``min(G a² C22 nu, mu N)`` times the lateral slip ``nu`` per unit rolled, times ``R``."""
-    steel, alu = material("steel"), material("aluminium")
-    g1 = steel.E / (2 * (1 + steel.nu))
-    g2 = alu.E / (2 * (1 + alu.nu))
+    pair = resolve_pair(material("steel"), material("aluminium"))
+    g1, g2 = pair.shear_moduli
     g_mix = 2.0 / (1.0 / g1 + 1.0 / g2)
-    e_star = composite_modulus(steel, alu)
+    e_star = pair.e_star
     torque = 0.0
     for load in rig.groups[0].ball_loads:
         a = hertz_sphere(rig.ball_radius, load, e_star).a

@@ -4,24 +4,11 @@ Why a 1D solver rather than the 3D one with a periodic direction: the 3D FFT sol
 periodic in both directions or in neither, so a long cylinder would come with periodic
 images along the rolling direction too, whose interaction changes the pressure by
 O((a/L)^2) and the load exponent with it. The plane-strain problem is one-dimensional,
-small (a few hundred unknowns) and exact: it is solved here directly, with dense influence
+small (a few hundred unknowns) and exact: it is solved directly, with dense influence
 coefficients and an active-set iteration.
 
-Conventions (those of :mod:`contact.bem`, in one dimension): cell ``j`` is centred at
-``x[j] = x0 + j dx`` and carries a uniform pressure; ``u`` is the combined normal
-displacement of both surfaces, positive into the bodies; the deformed gap is
-``g = h + u - delta``.
-
-A 2D half-plane has no displacement datum: under a strip pressure the surface
-displacement grows like log(distance) (Johnson 1985, *Contact Mechanics*, eq. 2.25b,
-sec. 4.3). The influence coefficients below take the displacement as zero one metre from
-a unit line load; ``approach`` is measured against that datum, so only differences of
-``displacement`` and ``approach`` are physical.
-
-Influence coefficient of a uniform pressure on cell j at the centre of cell i
-(Johnson eq. 2.25b integrated over the cell)::
-
-    K_ij = -(2 / (pi E*)) [F(d + dx/2) - F(d - dx/2)],  F(v) = v ln|v| - v,  d = x_i - x_j
+The solve itself, and the conventions and influence coefficients it uses, are those of
+:mod:`contact.bem.line` (the package's one plane-strain normal solve).
 """
 
 from __future__ import annotations
@@ -33,75 +20,9 @@ from typing import Any
 import numpy as np
 
 from contact._validate import frozen, positive
-from contact.errors import ContactInputError, ConvergenceError
+from contact.bem.line import solve_line_pressure
+from contact.errors import ContactInputError
 from contact.hertz import hertz_cylinder
-
-
-def _prim(v: np.ndarray) -> np.ndarray:
-    """F(v) = v ln|v| - v (0 at v = 0)."""
-    av = np.abs(v)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.where(av > 0, v * np.log(np.where(av > 0, av, 1.0)) - v, 0.0)
-    return out
-
-
-def line_column(d: np.ndarray, dx: float) -> np.ndarray:
-    """Displacement at offsets ``d`` (m) from a uniform-pressure cell of width ``dx`` on a
-    half-plane, E* = 1 (m per Pa; the datum of the module notes)."""
-    return -(2.0 / math.pi) * (_prim(d + dx / 2) - _prim(d - dx / 2))
-
-
-def line_influence(n: int, dx: float) -> np.ndarray:
-    """Dense (n, n) influence matrix of a uniform-pressure cell on a half-plane, E* = 1.
-
-    ``u = K @ p`` gives the combined displacement (m per Pa of pressure, times 1/E*).
-    """
-    if n < 1 or not (math.isfinite(dx) and dx > 0):
-        raise ContactInputError("the line grid needs n >= 1 cells of positive pitch")
-    col = line_column(np.arange(n) * dx, dx)
-    idx = np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])
-    return col[idx]
-
-
-def solve_active_set(A: np.ndarray, h: np.ndarray, weight: float, target: float,
-                     active: np.ndarray, tol: float,
-                     max_iter: int) -> tuple[np.ndarray, float, int] | None:
-    """Dense active-set solution of a line contact under a load: p >= 0, gap >= 0.
-
-    On the contact set the pressures and the approach solve ``h + A p - delta = 0`` with
-    ``weight * sum(p) = target``; cells with negative pressure leave the set, cells whose
-    gap is below ``-tol`` enter it, until neither happens. ``active`` (bool, changed in
-    place) is the starting set. Returns (p, delta, iterations), or None when the set has
-    not settled after ``max_iter`` steps.
-    """
-    n = h.size
-    p = np.zeros(n)
-    for it in range(1, max_iter + 1):
-        idx = np.flatnonzero(active)
-        m = idx.size
-        M = np.empty((m + 1, m + 1))
-        M[:m, :m] = A[np.ix_(idx, idx)]
-        M[:m, m] = -1.0
-        M[m, :m] = weight
-        M[m, m] = 0.0
-        rhs = np.empty(m + 1)
-        rhs[:m] = -h[idx]
-        rhs[m] = target
-        sol = np.linalg.solve(M, rhs)
-        p[:] = 0.0
-        p[idx] = sol[:m]
-        delta = float(sol[m])
-        neg = idx[sol[:m] < 0]
-        if neg.size:
-            active[neg] = False
-            if not active.any():  # pragma: no cover - cannot happen with a positive load
-                active[int(np.argmin(h))] = True
-            continue
-        enter = (~active) & (h + A @ p - delta < -tol)
-        if not enter.any():
-            return p, delta, it
-        active |= enter
-    return None
 
 
 @dataclass(frozen=True, eq=False)
@@ -203,17 +124,9 @@ def solve_line(
     e_star = positive(e_star, "E*", "Pa")
     load = positive(load, "the load per length", "N/m")
     n = h.size
-    K = line_influence(n, dx) / e_star
-    active = np.zeros(n, dtype=bool)
-    active[int(np.argmin(h))] = True
-    tol = 1e-12 * max(float(np.ptp(h)), 1e-12) + 1e-15
-    found = solve_active_set(K, h, 1.0, load / dx, active, tol, max_iter)
-    if found is None:
-        raise ConvergenceError(
-            f"the line-contact active set did not settle in {max_iter} iterations; refine the "
-            "grid or smooth the profile", iterations=max_iter,
-        )
-    p, delta, it = found
+    sol = solve_line_pressure(h, dx, e_star, load, max_iter=max_iter)
+    p, delta, it, K, active = (sol.pressure, sol.approach, sol.iterations, sol.influence,
+                               sol.active)
     u = K @ p
     gap = np.maximum(h + u - delta, 0.0)
     gap[active] = 0.0

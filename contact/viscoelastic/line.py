@@ -35,8 +35,8 @@ import math
 import numpy as np
 
 from contact._validate import positive
+from contact.bem.line import line_column, solve_active_set
 from contact.errors import ContactInputError, ConvergenceError
-from contact.setups.line import line_column, solve_active_set
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
 from contact.viscoelastic.window import cylinder_window

@@ -150,19 +150,20 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
         Work of adhesion and its hysteresis (J/m^2): the adhesion-hysteresis mechanism.
     """
     from contact.hertz import hertz_sphere
-    from contact.materials import composite_modulus, displacement_shares
+    from contact.material_pair import resolve_pair
     from contact.rolling import sphere_sweep
     from contact.viscoelastic.loss import sls_from_loss
     from contact.viscoelastic.sweep import viscoelastic_sweep
 
     if not all(math.isfinite(v) and v > 0 for v in (*loss, speed, rolling_inertia)):
         raise ContactInputError("loss factors, speed and inertia must be positive")
-    e_star = composite_modulus(ball, plate)
+    pair = resolve_pair(ball, plate)
+    e_star = pair.e_star
     a_s = hertz_sphere(radius, rotor_loads[0], e_star).a
     t_peak = a_s / speed
     vb = sls_from_loss(ball.E, ball.nu, loss[0], t_peak)
     vp = sls_from_loss(plate.E, plate.nu, loss[1], t_peak)
-    share = displacement_shares(ball, plate)
+    share = pair.shares
     alpha = 2 * math.pi * (share[0] * loss[0] + share[1] * loss[1])
     every = np.unique(np.concatenate((np.asarray(loads, float), rotor_loads)))
     out = []

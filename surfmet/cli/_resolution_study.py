@@ -22,8 +22,7 @@ def add_resolution_study_flag(parser: Any) -> None:
 
 def run_study(args: argparse.Namespace, command: str) -> int:
     """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
-    from contact.materials import contact_hardness
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair
     from surfmet.mechanics.resolution_study import contact_study, rolling_study, study_lines
     from surfmet.records import study_record
 
@@ -40,34 +39,32 @@ def run_study(args: argparse.Namespace, command: str) -> int:
 
     if command == "rolling":
         from contact.rolling import log_loads
-        from surfmet.mechanics.material_spec import parse_materials as pm
 
         lo, hi, n = args.loads
-        from contact.materials import displacement_shares
-
+        mats = material_pair(args.materials, hardness=args.hardness)
         kwargs: dict[str, Any] = {"model": args.model, "alpha_h": args.alpha_h,
                                   "kinematics": args.kinematics}
         if args.lossy != "both":  # the lossy body's share of the displacement scales M_r
-            shares = displacement_shares(*pm(args.materials))
+            shares = mats.shares
             kwargs["share"] = shares[0] if args.lossy == "ball" else shares[1]
         if args.model == "plastic":
-            h = args.hardness or contact_hardness(*pm(args.materials))
+            h = mats.hardness
             if h is None:
                 raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
             kwargs["hardness"] = h
         study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
                                  loads=log_loads(lo, hi, 9 if n is None else n),
-                                 materials=args.materials, spikes=args.spikes,
+                                 materials=mats, spikes=args.spikes,
                                  progress=progress, **kwargs)
     else:
-        hardness = getattr(args, "hardness", None)
-        if command == "contact" and args.plastic:
-            hardness = contact_hardness(*parse_materials(args.materials))
-        if command == "hertz-check" and not args.elastic and hardness is None:
-            hardness = contact_hardness(*parse_materials(args.materials))
+        mats = material_pair(args.materials, hardness=getattr(args, "hardness", None))
+        hardness = mats.hardness if mats.hardness_source == "given" else None
+        if (command == "contact" and args.plastic) or (command == "hertz-check"
+                                                       and not args.elastic):
+            hardness = mats.hardness
         plate = args.plate
         study, _ = contact_study(plate, args.ball, radius=args.radius, load=args.load,
-                                 materials=args.materials, hardness=hardness,
+                                 materials=mats, hardness=hardness,
                                  spikes=getattr(args, "spikes", "remove"),
                                  progress=progress)
     if args.json:

@@ -128,12 +128,9 @@ def run(args: argparse.Namespace) -> int:
     pressures = parse_pressures(args.pressures)
     law = adhesion_law(args)
     check_output(args.plot, "--plot")
-    if args.e_star is not None:
-        if not args.e_star > 0:
-            raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
-        e_star, hard, names = args.e_star, args.hardness, []
-    else:
-        e_star, hard, names = materials_e_star(args.materials, args.hardness)
+    if args.e_star is not None and not args.e_star > 0:
+        raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
+    e_star, hard, names = materials_e_star(args.materials, args.hardness, args.e_star)
     material_hardness = hard
     if args.hardness is None:
         hard = None  # the BEM stays elastic unless a hardness is asked for

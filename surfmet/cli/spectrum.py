@@ -72,21 +72,17 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def materials_e_star(text: str, hardness: float | None) -> tuple[float, float | None, list[str]]:
-    """``A`` (against a rigid body) or ``A,B`` -> (E*, hardness, names)."""
-    from contact.materials import contact_hardness
+def materials_e_star(text: str | None, hardness: float | None,
+                     e_star: float | None = None) -> tuple[float, float | None, list[str]]:
+    """``A`` (against a rigid body) or ``A,B``, or E*, -> (E*, hardness, names), resolved
+    once by :func:`surfmet.mechanics.material_spec.material_pair`."""
     from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.material_spec import parse_material
+    from surfmet.mechanics.material_spec import material_pair
 
-    parts = [s for s in str(text).split(",") if s.strip()]
-    if len(parts) not in (1, 2):
+    if text is not None and len([s for s in str(text).split(",") if s.strip()]) not in (1, 2):
         raise SurfmetInputError(f"--materials takes A or A,B; got {text!r}")
-    mats = [parse_material(s) for s in parts]
-    inv = sum((1.0 - m.nu**2) / m.E for m in mats)
-    h = hardness
-    if h is None:
-        h = contact_hardness(mats[0], mats[-1]) if len(mats) == 2 else mats[0].hardness
-    return 1.0 / inv, h, [m.name for m in mats]
+    pair = material_pair(text, e_star=e_star, hardness=hardness, rigid_flat=True)
+    return pair.e_star, pair.hardness, [m.name for m in (pair.body1, pair.body2) if m]
 
 
 def run(args: argparse.Namespace) -> int:

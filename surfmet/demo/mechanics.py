@@ -40,11 +40,11 @@ def rotor_loads() -> dict[str, float]:
 def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
     """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness
     (:mod:`surfmet.mechanics.ball_contact`)."""
-    from contact.materials import contact_hardness
+    from contact.material_pair import resolve_pair
     from surfmet.mechanics.ball_contact import BallContact, solve_on_pair
 
     pair = check.scans.pair
-    hardness = contact_hardness(check.ball_material, check.plate_material)
+    hardness = resolve_pair(check.ball_material, check.plate_material).hardness
     res, found = solve_on_pair(pair, radius=RADIUS, load=load, e_star=check.e_star,
                                hardness=hardness)
     sol = BallContact(result=res, ball_material=check.ball_material,

@@ -45,13 +45,12 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     (Pa). Returns a :class:`contact.adhesion.ball.AdhesiveBall`.
     """
     from contact.adhesion.ball import adhesive_ball
-    from contact.materials import composite_modulus
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair
 
     if (materials is None) == (e_star is None):
         raise SurfmetInputError("give exactly one of the materials and E*")
     if e_star is None:
-        e_star = composite_modulus(*parse_materials(materials))
+        e_star = material_pair(materials).e_star
     law = interaction_law(interaction, work, range_)
     return adhesive_ball(radius, e_star, law, grid=grid, size=size, steps=steps,
                          progress=progress)

@@ -80,15 +80,12 @@ class BallContact:
         return pressure_map(self.result, path)
 
 
-def _hardness(hardness: float | None, plastic: bool, ball_m: Any, plate_m: Any
-              ) -> float | None:
-    from contact.materials import contact_hardness
-
+def _hardness(hardness: float | None, plastic: bool, mats: Any) -> float | None:
     if hardness is not None and plastic:
         raise SurfmetInputError("give a hardness or plastic=True, not both")
     if not plastic:
         return hardness
-    h = contact_hardness(ball_m, plate_m)
+    h = mats.hardness
     if h is None:
         raise SurfmetInputError("--plastic: neither material has a hardness; give --hardness")
     return h
@@ -115,7 +112,7 @@ def grid_warnings(res: Any) -> list[str]:
             "scans' own pixel"]
 
 
-def solution_warnings(res: Any, ball_m: Any, plate_m: Any) -> list[str]:
+def solution_warnings(res: Any, mats: Any) -> list[str]:
     """What makes a solved contact's answer doubtful, as sentences.
 
     - an elastic solution whose peak pressure exceeds the softer body's hardness (or, with
@@ -126,12 +123,11 @@ def solution_warnings(res: Any, ball_m: Any, plate_m: Any) -> list[str]:
     - a grid with fewer than :data:`MIN_CELLS_PER_RADIUS` cells per Hertz radius
       (:func:`grid_warnings`).
     """
-    from contact.materials import contact_hardness
     from surfmet.units import format_length
 
     out = []
     if res.hardness is None:
-        h = contact_hardness(ball_m, plate_m)
+        h = mats.hardness
         limit, what = (h, "the softer body's hardness") if h else (res.e_star, "E*")
         if res.pmax > limit:
             out.append(f"max pressure {res.pmax / 1e6:.4g} MPa exceeds {what} "
@@ -220,13 +216,13 @@ def ball_contact(
     -------
     BallContact
     """
-    from contact.materials import composite_modulus
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
-    ball_m, plate_m = parse_materials(materials)
-    e_star = composite_modulus(ball_m, plate_m)
-    cap = _hardness(hardness, plastic, ball_m, plate_m)
+    mats = material_pair(materials)
+    ball_m, plate_m = parse_materials(mats)
+    e_star = mats.e_star
+    cap = _hardness(hardness, plastic, mats)
     if not (tol > 0):
         raise SurfmetInputError("--tol must be positive")
     prep = None
@@ -242,7 +238,7 @@ def ball_contact(
                                periodic=periodic, grid=grid, size=size, max_grid=max_grid,
                                tol=tol, max_iter=max_iter, callback=callback,
                                on_edge=on_edge)
-    found = (*found, *solution_warnings(res, ball_m, plate_m))
+    found = (*found, *solution_warnings(res, mats))
     return BallContact(result=res, ball_material=ball_m, plate_material=plate_m, pair=pair,
                        radius=radius, plate_file=_file(plate), ball_file=_file(ball),
                        warnings=found, preparation=prep)

@@ -192,7 +192,7 @@ def hertz_check(
         Bad inputs, a scan too small for the contact, a solver failure.
     """
     from contact.hertzcheck import check_sphere
-    from contact.materials import composite_modulus, contact_hardness
+    from surfmet.mechanics.material_spec import material_pair
     from surfmet.units import parse_force, parse_length
 
     radius = parse_length(radius) if isinstance(radius, str) else float(radius)
@@ -201,13 +201,14 @@ def hertz_check(
         raise SurfmetInputError(f"the ball radius must be a positive length, got {radius!r}")
     if not (math.isfinite(load) and load > 0):
         raise SurfmetInputError(f"the load must be a positive force in N, got {load!r}")
-    ball_m, plate_m = parse_materials(materials)
-    e_star = composite_modulus(ball_m, plate_m)
+    mats = material_pair(materials)
+    ball_m, plate_m = parse_materials(mats)
+    e_star = mats.e_star
     if adhesion_range is not None and work_of_adhesion is None:
         raise SurfmetInputError("an interaction range needs a work of adhesion "
                                 "(--work-of-adhesion)")
     if hardness is None and plastic:
-        hardness = contact_hardness(ball_m, plate_m)
+        hardness = mats.hardness
     if not plastic:
         hardness = None
     if hardness is not None and not (math.isfinite(hardness) and hardness > 0):

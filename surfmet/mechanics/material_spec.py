@@ -67,10 +67,16 @@ def parse_material(text: str) -> Any:
 
 
 def parse_materials(materials: Any) -> tuple[Any, Any]:
-    """``"BALL,PLATE"`` text, or a pair of :class:`contact.materials.Material`,
-    -> ``(ball, plate)``."""
+    """``"BALL,PLATE"`` text, a pair of :class:`contact.materials.Material` or a resolved
+    :class:`contact.material_pair.MaterialPair` -> ``(ball, plate)``."""
+    from contact.material_pair import MaterialPair
     from contact.materials import Material
 
+    if isinstance(materials, MaterialPair):
+        if materials.body1 is None or materials.body2 is None:
+            raise SurfmetInputError("this needs both bodies' materials, BALL,PLATE (not E* "
+                                    "alone or a rigid body)")
+        return materials.body1, materials.body2
     if isinstance(materials, (tuple, list)) and len(materials) == 2 and all(
             isinstance(m, Material) for m in materials):
         return materials[0], materials[1]
@@ -80,3 +86,30 @@ def parse_materials(materials: Any) -> tuple[Any, Any]:
     if len(parts) != 2:
         raise SurfmetInputError(f"materials need two names, BALL,PLATE; got {materials!r}")
     return parse_material(parts[0]), parse_material(parts[1])
+
+
+def material_pair(materials: Any = None, *, e_star: float | None = None,
+                  hardness: float | None = None, rigid_flat: bool = False) -> Any:
+    """The resolved pair (:class:`contact.material_pair.MaterialPair`) of the user's materials.
+
+    ``materials`` is ``"BALL,PLATE"`` text (or ``"A"``, a body on a rigid flat, where
+    ``rigid_flat`` allows it), a pair of :class:`contact.materials.Material`, or an already
+    resolved pair; or give ``e_star`` (Pa) instead. ``hardness`` (Pa) replaces the softer
+    body's table value.
+    """
+    from contact.material_pair import MaterialPair, resolve_pair
+
+    if isinstance(materials, MaterialPair):
+        if e_star is not None:
+            raise SurfmetInputError("give the materials or E*, not both")
+        return materials.with_hardness(hardness)
+    if materials is None:
+        if e_star is None:
+            raise SurfmetInputError("give the materials (--materials) or E* (--e-star)")
+        return resolve_pair(e_star=e_star, hardness=hardness)
+    if e_star is not None:
+        raise SurfmetInputError("give the materials or E*, not both")
+    if (rigid_flat and isinstance(materials, str)
+            and len([s for s in materials.split(",") if s.strip()]) == 1):
+        return resolve_pair(parse_material(materials.strip(" ,")), hardness=hardness)
+    return resolve_pair(*parse_materials(materials), hardness=hardness)

@@ -37,15 +37,15 @@ QUANTITIES = {
 
 def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any) -> tuple[float, Any]:
     """The composite modulus E* (Pa) of the materials and the prepared scans of a study."""
-    from contact.materials import composite_modulus
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
-    ball_m, plate_m = parse_materials(materials)
+    mats = material_pair(materials)
+    parse_materials(mats)  # both bodies are needed
     if plate is None and ball is None:
         raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
                                 "smooth contact has nothing to refine")
-    return composite_modulus(ball_m, plate_m), prepare_scans(plate, ball, spikes=spikes)
+    return mats.e_star, prepare_scans(plate, ball, spikes=spikes)
 
 
 def contact_study(

@@ -111,12 +111,11 @@ def solve_rolling_contact(
         Side of the (square) domain (m); default: automatic, as above.
     """
     from contact.errors import EdgeContactError
-    from contact.tangential import Creepage, pair_constants, steady_rolling
+    from contact.tangential import Creepage, steady_rolling
     from contact.tangential.memory import check_rolling_memory
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair
 
-    ball_m, plate_m = parse_materials(materials)
-    constants = pair_constants(ball_m, plate_m)
+    constants = material_pair(materials).constants()
     if speed is not None and not (math.isfinite(speed) and speed > 0):
         raise SurfmetInputError("--speed must be a positive speed in m/s")
     n = grid or (256 if line else 64)

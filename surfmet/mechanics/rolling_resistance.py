@@ -142,10 +142,9 @@ def rolling_resistance(
         Microslip model (:mod:`contact.tangential.microslip`): friction coefficient and
         |F_x|/N opposing the rolling (0: free rolling).
     """
-    from contact.materials import composite_modulus, contact_hardness, displacement_shares
     from contact.rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
     from surfmet.units import parse_length
 
@@ -156,16 +155,17 @@ def rolling_resistance(
         raise SurfmetInputError(f"model must be one of {(*MODELS, 'microslip')}, got {model!r}")
     if lossy not in LOSSY:
         raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
-    ball_m, plate_m = parse_materials(materials)
-    e_star = composite_modulus(ball_m, plate_m)
+    mats = material_pair(materials)
+    ball_m, plate_m = parse_materials(mats)
+    e_star = mats.e_star
     if model == "plastic" and hardness is None:
-        hardness = contact_hardness(ball_m, plate_m)
+        hardness = mats.hardness
         if hardness is None:
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness or "
                                     "a material with H=...")
     share = 1.0
     if lossy != "both":
-        shares = displacement_shares(ball_m, plate_m)
+        shares = mats.shares
         share = shares[0] if lossy == "ball" else shares[1]
     w = _load_list(loads)
     prep = prepare_scans(plate, ball, spikes=spikes)

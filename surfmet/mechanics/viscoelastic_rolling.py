@@ -117,17 +117,17 @@ def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
     elastic.
     """
     from contact.hertz import hertz_sphere
-    from contact.materials import composite_modulus
     from contact.viscoelastic.loss import sls_from_loss
     from contact.viscoelastic.sweep import viscoelastic_sweep
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
-    ball_m, plate_m = parse_materials(materials)
+    mats = material_pair(materials)
+    ball_m, plate_m = parse_materials(mats)
     bodies: dict[str, Any] = {"ball": ball_m, "plate": plate_m}
     if loss is not None:
         w_mid = float(np.sqrt(np.min(loads) * np.max(loads)))
-        t_peak = hertz_sphere(radius, w_mid, composite_modulus(ball_m, plate_m)).a / speed
+        t_peak = hertz_sphere(radius, w_mid, mats.e_star).a / speed
         for name, eta in zip(("ball", "plate"), loss):
             m = bodies[name]
             bodies[name] = sls_from_loss(m.E, m.nu, eta, t_peak)
@@ -236,17 +236,17 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     (:data:`contact.adhesion.rolling.STEEL_ALUMINIUM_AIR`, Delta_w = w), and another pair
     without a w leaves it out with a note.
     """
-    from contact.materials import contact_hardness
     from contact.rolling import log_loads
     from contact.rotor.mechanics import mass_properties, normal_reactions
     from contact.viscoelastic.loss import loss_data
     from contact.viscoelastic.mechanisms import compare_mechanisms
-    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.material_spec import material_pair, parse_materials
 
-    ball_m, plate_m = parse_materials(materials)
+    mats = material_pair(materials)
+    ball_m, plate_m = parse_materials(mats)
     if loss is None:
         loss = (loss_data(ball_m.name).typical, loss_data(plate_m.name).typical)
-    hardness = hardness if hardness is not None else contact_hardness(ball_m, plate_m)
+    hardness = hardness if hardness is not None else mats.hardness
     if hardness is None:
         raise SurfmetInputError("the plastic mechanism needs a hardness (--hardness)")
     sym = mass_properties(collar_offset="symmetric")
