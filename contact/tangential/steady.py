@@ -17,7 +17,8 @@ import math
 
 import numpy as np
 
-from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
+from contact.errors import ContactInputError, ConvergenceError
+from contact.record import LEADING_EDGE, edge_contact, raise_edge
 from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.influence import HalfSpacePair, PairConstants
@@ -110,9 +111,8 @@ def steady_rolling(
         p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
     else:
         p, delta = solve_pressure(op, grid.h, load)
-    if np.any(p[:, -1] > 0):
-        raise EdgeContactError(
-            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    if edge_contact(p, leading_only=True):
+        raise_edge(LEADING_EDGE, "the grid")
     if start is not None:
         restate(start.state, mu * p)
     st: list[TangentialState | None] = [None if start is None else start.state]
