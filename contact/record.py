@@ -62,6 +62,8 @@ class SolveRecord:
         What ``residual`` measures.
     outer_iterations : int or None
         Iterations of an outer loop around the main one (coupling, active set), if any.
+    solves : int
+        How many solves the record stands for (:func:`combine`; 1 for one solve).
     """
 
     method: str
@@ -72,6 +74,7 @@ class SolveRecord:
     edge_contact: bool
     residual_definition: str = ""
     outer_iterations: int | None = None
+    solves: int = 1
 
     @property
     def warning(self) -> str | None:
@@ -84,25 +87,64 @@ class SolveRecord:
                  else f" ({self.outer_iterations} outer)")
         state = "converged" if self.converged else "NOT converged"
         edge = "yes" if self.edge_contact else "no"
-        return (f"solve: {self.method}, {self.iterations} iterations{outer}, residual "
+        many = "" if self.solves == 1 else f"{self.solves} solves, "
+        worst = "largest " if self.solves > 1 else ""
+        return (f"{self.method}: {many}{self.iterations} iterations{outer}, {worst}residual "
                 f"{self.residual:.3g} (tolerance {self.tolerance:.3g}), {state}, "
                 f"edge contact: {edge}")
 
     def to_json(self) -> dict:
-        """The record as JSON: dimensionless values with unit "1", the warning or null."""
+        """The record as JSON: dimensionless values with unit "", the warning or null."""
         out: dict = {
             "method": self.method,
             "iterations": int(self.iterations),
-            "residual": {"value": _finite_or_none(self.residual), "unit": "1",
+            "residual": {"value": _finite_or_none(self.residual), "unit": "",
                          "definition": self.residual_definition},
-            "tolerance": {"value": _finite_or_none(self.tolerance), "unit": "1"},
+            "tolerance": {"value": _finite_or_none(self.tolerance), "unit": ""},
             "converged": bool(self.converged),
             "edge_contact": bool(self.edge_contact),
             "warning": self.warning,
         }
         if self.outer_iterations is not None:
             out["outer_iterations"] = int(self.outer_iterations)
+        if self.solves != 1:
+            out["solves"] = int(self.solves)
         return out
+
+    @classmethod
+    def from_json(cls, rec: dict) -> SolveRecord:
+        """The record back from :meth:`to_json` (null residuals become inf, NaN
+        tolerances stay NaN), so that a command printing its JSON prints the same line."""
+        res, tol = rec["residual"]["value"], rec["tolerance"]["value"]
+        return cls(method=rec["method"], iterations=rec["iterations"],
+                   residual=math.inf if res is None else res,
+                   tolerance=math.nan if tol is None else tol,
+                   converged=rec["converged"], edge_contact=rec["edge_contact"],
+                   residual_definition=rec["residual"].get("definition", ""),
+                   outer_iterations=rec.get("outer_iterations"), solves=rec.get("solves", 1))
+
+
+def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecord:
+    """One record for several solves (a sweep, a cycle, the levels of a verdict): the
+    iterations summed, the largest residual and tolerance, converged only if every solve
+    did, edge contact if any solve had it.
+    """
+    if not records:
+        raise ValueError("combine needs at least one record")
+    if len(records) == 1 and method is None:
+        return records[0]
+    outer = [r.outer_iterations for r in records if r.outer_iterations is not None]
+    return SolveRecord(
+        method=method or records[0].method,
+        iterations=sum(r.iterations for r in records),
+        residual=max(r.residual for r in records),
+        tolerance=max(r.tolerance for r in records),
+        converged=all(r.converged for r in records),
+        edge_contact=any(r.edge_contact for r in records),
+        residual_definition=records[0].residual_definition,
+        outer_iterations=sum(outer) if outer else None,
+        solves=sum(r.solves for r in records),
+    )
 
 
 def _finite_or_none(v: float) -> float | None:
