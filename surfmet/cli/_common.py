@@ -145,4 +145,4 @@ def print_solve(record: Any, label: str = "solve", warned: Iterable[str] = ()) -
     indent = " " * (len(label) - len(label.lstrip()))
     print(f"{label:14s} {record.text()}")
     if record.warning and not any("edge of" in w for w in warned):
-        print(f"{indent + 'warning':14s} {record.warning}")
+        print(f"{indent + 'warning':{max(14, len(label))}s} {record.warning}")

@@ -185,7 +185,6 @@ def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
     """The JSON record of a solve: every value with its unit."""
     from contact.tangential.results import edge_note
-    from contact.tangential.steady import rolling_residual
     from surfmet.units import quantity
 
     r = rc.result
@@ -213,10 +212,11 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "rolling_resistance_coefficient": quantity(
             r.rolling_resistance_coefficient(rc.radius), ""),
         # convergence, stated as ``contact`` states it (a solve that does not converge
-        # raises instead of returning)
-        "iterations": r.outer,
-        "residual": quantity(rolling_residual(r), ""),
-        "converged": True,
+        # raises instead of returning): the solve record's
+        "iterations": r.solve.iterations,
+        "residual": quantity(r.solve.residual, ""),
+        "converged": r.solve.converged,
+        "solve": r.solve.to_json(),
         "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
                    "operator_products": r.matvecs},
         "kalker_K": r.constants.K,
