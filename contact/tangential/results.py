@@ -98,10 +98,11 @@ class TangentialResult:
 
     def _record(self) -> SolveRecord:
         """The solve record formed from the answer with the elastic pair's operator."""
+        from contact.tangential.influence import HalfSpacePair
         from contact.tangential.solver import slip_residual
-        from contact.tangential.steady import operator_for
 
-        op = operator_for(self.grid, self.constants)
+        g = self.grid
+        op = HalfSpacePair(len(g.y), len(g.x), g.dx, g.dy, self.constants, line=g.line)
         u0 = op.tangential_from_normal(self.p)
         if self.rolling:
             w = rigid_slip(self.grid.x, self.grid.y, self.creepage)

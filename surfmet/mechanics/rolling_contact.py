@@ -111,6 +111,7 @@ def solve_rolling_contact(
         Side of the (square) domain (m); default: automatic, as above.
     """
     from contact.errors import EdgeContactError
+    from contact.record import LEADING_EDGE, raise_edge
     from contact.tangential import Creepage, pair_constants, steady_rolling
     from contact.tangential.memory import check_rolling_memory
     from surfmet.mechanics.material_spec import parse_materials
@@ -138,9 +139,8 @@ def solve_rolling_contact(
             break
         except EdgeContactError:
             if size is not None or attempt == ENLARGEMENTS:
-                raise EdgeContactError(
-                    f"the contact reaches the leading edge of the {2e3 * half:.4g} mm domain: "
-                    f"give a larger --size (e.g. --size {3e3 * half:.3g}mm)") from None
+                raise_edge(f"{LEADING_EDGE}; give a larger --size (e.g. --size "
+                           f"{3e3 * half:.3g}mm)", f"the {2e3 * half:.4g} mm domain")
             half *= 1.5
             notes.append(f"the contact reached the domain's edge: domain enlarged to "
                          f"{2e3 * half:.4g} mm")
