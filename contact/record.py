@@ -98,8 +98,8 @@ class SolveRecord:
         out: dict = {
             "method": self.method,
             "iterations": int(self.iterations),
-            "residual": {"value": _finite_or_none(self.residual), "unit": "",
-                         "definition": self.residual_definition},
+            "residual": {"value": _finite_or_none(self.residual), "unit": ""},
+            "residual_definition": self.residual_definition,
             "tolerance": {"value": _finite_or_none(self.tolerance), "unit": ""},
             "converged": bool(self.converged),
             "edge_contact": bool(self.edge_contact),
@@ -120,7 +120,7 @@ class SolveRecord:
                    residual=math.inf if res is None else res,
                    tolerance=math.nan if tol is None else tol,
                    converged=rec["converged"], edge_contact=rec["edge_contact"],
-                   residual_definition=rec["residual"].get("definition", ""),
+                   residual_definition=rec.get("residual_definition", ""),
                    outer_iterations=rec.get("outer_iterations"), solves=rec.get("solves", 1))
 
 
