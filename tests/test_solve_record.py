@@ -162,3 +162,25 @@ def test_contact_command_prints_the_record_and_the_edge_warning(capsys):
     assert solve["converged"] is True and solve["iterations"] == rec["iterations"] >= 1
     assert solve["residual"]["unit"] == "" and math.isfinite(solve["residual"]["value"])
     assert rec["touches_edge"] is True
+
+
+def test_flat_contact_free_boundary_reaches_the_edge_periodic_has_none(tmp_path, capsys):
+    import surfmet
+    from surfmet.cli import main
+    from surfmet.synth import self_affine
+
+    topo = self_affine(32, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
+    scan = str(surfmet.write(topo, tmp_path / "sa.npz"))
+    argv = ["flat-contact", scan, "--e-star", "1GPa", "--pressures", "1MPa", "--quiet"]
+    assert main([*argv, "--periodic", "no"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    solve = next(s for s in lines if s.strip().startswith("solve"))
+    assert "edge contact: yes" in solve and "converged" in solve
+    assert any(s.strip().startswith("warning") and "too small" in s for s in lines)
+    assert main([*argv, "--periodic", "no", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["solve"]["edge_contact"] is True and "too small" in rec["solve"]["warning"]
+    assert rec["results"][0]["bem"]["solve"]["edge_contact"] is True
+    assert main([*argv, "--periodic", "yes", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["solve"]["edge_contact"] is False and rec["solve"]["warning"] is None
