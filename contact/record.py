@@ -45,7 +45,7 @@ class SolveRecord:
     Attributes
     ----------
     method : str
-        The solver, in a few words (e.g. "normal BEM (CG)", "steady rolling").
+        The solver, in a few words (e.g. "normal BEM", "steady rolling").
     iterations : int
         Iterations of the solver's main loop (on the finest grid where it nests).
     residual : float
@@ -54,8 +54,11 @@ class SolveRecord:
     tolerance : float
         The residual asked for.
     converged : bool
-        The solver's stopping test was met (solvers that raise on failure only return
-        converged records; the BEM returns ``False`` with ``strict=False``).
+        The solver's own stopping test was met (solvers that raise on failure only return
+        converged records; the BEM returns ``False`` with ``strict=False``). Where that
+        test is not a bound on ``residual`` (the tangential solves stop on the change of
+        their iterate; their residual is formed afresh from the answer), a converged
+        record may show a residual above the tolerance.
     edge_contact : bool
         Pressure on the outermost cells of a free-boundary domain (:func:`edge_contact`).
     residual_definition : str
