@@ -259,6 +259,15 @@ class RollingSweep:
     results: tuple[Any, ...] = field(default=(), repr=False)
 
     @property
+    def solve(self) -> Any:
+        """One solve record for the contact solutions of the sweep
+        (:func:`contact.record.combine`); None for a sweep solved in closed form."""
+        from contact.record import combine
+
+        records = [r.solve for r in self.results if getattr(r, "solve", None) is not None]
+        return combine(records, f"{records[0].method}, one solve per load") if records else None
+
+    @property
     def lambda_eff(self) -> float:
         """The fitted exponent (NaN without a fit)."""
         return self.fit.exponent if self.fit is not None else math.nan

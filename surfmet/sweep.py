@@ -43,16 +43,23 @@ BASE_COLUMNS: tuple[tuple[str, str], ...] = (
     ("materials", ""), ("load", "N"), ("radius", "m"), ("position_x", "m"),
     ("position_y", "m"), ("spikes", ""), ("status", ""), ("error", ""),
 )
+#: The solve record (:class:`contact.record.SolveRecord`) of each row.
+SOLVE_COLUMNS: tuple[tuple[str, str], ...] = (
+    ("solve_iterations", ""), ("solve_residual", ""), ("solve_converged", ""),
+    ("solve_edge_contact", ""),
+)
 RESULT_COLUMNS: dict[str, tuple[tuple[str, str], ...]] = {
     "contact": (
         ("grid", ""), ("pixel", "m"), ("max_pressure", "Pa"), ("contact_radius", "m"),
         ("effective_radius", "m"), ("approach", "m"), ("real_area", "m^2"), ("n_clusters", ""),
         ("plastic_area", "m^2"), ("hertz_p0", "Pa"), ("hertz_a", "m"), ("warnings", ""),
+        *SOLVE_COLUMNS,
     ),
     "hertz-check": (
         ("grid", ""), ("pixel", "m"), ("hertz_holds", ""), ("model", ""), ("alpha", ""),
         ("max_pressure", "Pa"), ("effective_radius", "m"), ("approach", "m"),
         ("yielded_fraction", ""), ("hertz_p0", "Pa"), ("hertz_a", "m"),
+        *SOLVE_COLUMNS,
     ),
 }
 
@@ -134,6 +141,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     ball = surfmet.read(item.ball) if item.ball else None
     if item.task == "hertz-check":
         from surfmet.mechanics.hertz_check import hertz_check
+        from surfmet.records.hertz import hertz_check_solve
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
@@ -149,6 +157,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "approach": (float(c.approach), "m"),
             "yielded_fraction": (float(c.plastic_fraction), ""),
             "hertz_p0": (float(c.hertz.p0), "Pa"), "hertz_a": (float(c.hertz.a), "m"),
+            **_solve_columns(hertz_check_solve(chk)),
         })
     else:
         from surfmet.mechanics.ball_contact import ball_contact
@@ -168,10 +177,19 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
             "plastic_area": (float(res.plastic_area), "m^2"),
             "hertz_p0": (float(res.hertz.p0), "Pa"), "hertz_a": (float(res.hertz.a), "m"),
             "warnings": ("; ".join(sol.warnings), ""),
+            **_solve_columns(res.solve),
         })
     row["status"] = ("ok", "")
     row["error"] = (None, "")
     return row
+
+
+def _solve_columns(rec: Any) -> dict[str, tuple[Any, str]]:
+    """The row's solve-record columns (:data:`SOLVE_COLUMNS`)."""
+    return {"solve_iterations": (int(rec.iterations), ""),
+            "solve_residual": (float(rec.residual), ""),
+            "solve_converged": (bool(rec.converged), ""),
+            "solve_edge_contact": (bool(rec.edge_contact), "")}
 
 
 def error_row(item: SweepItem, message: str) -> dict[str, tuple[Any, str]]:

@@ -43,8 +43,11 @@ def test_verdicts_and_json(plates, capsys):
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
-                        "scan_preparation", "warnings"}
+                        "scan_preparation", "warnings", "solve"}
     assert rec["verdict"]["model"] == "hertz"
+    # issue 26: the solve record (elastic then elastic-plastic solve, combined)
+    assert rec["solve"]["converged"] is True and rec["solve"]["edge_contact"] is False
+    assert rec["solve"]["iterations"] >= 1 and rec["solve"]["residual"]["unit"] == ""
     assert set(rec["models"]) == {"hertz", "bem", "greenwood_tripp", "greenwood_tripp_plastic"}
     assert "resolution" in rec["summits"]["note"]
     assert rec["grid"]["nx"] == 96 and rec["grid"]["pixel_source"] == "--grid 96"

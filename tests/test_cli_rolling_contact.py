@@ -162,6 +162,10 @@ def test_dissipation_is_never_negative_and_convergence_is_stated(capsys):
     assert rec["converged"] is True and rec["iterations"] >= 1
     assert 0 <= rec["residual"]["value"] < 1e-3
     assert rec["solver"]["tolerance"] == 1e-6
+    # issue 26: the one solve record, the same numbers
+    solve = rec["solve"]
+    assert solve["iterations"] == rec["iterations"] and solve["converged"] is True
+    assert solve["residual"] == rec["residual"] and solve["edge_contact"] is False
 
 
 def test_slip_elements_dissipate_mu_p_slip():

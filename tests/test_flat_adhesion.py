@@ -142,6 +142,10 @@ def test_cli_adhesive_record(scan, capsys):
     assert ad["work_of_adhesion"] == {"value": pytest.approx(0.2), "unit": "J/m^2"}
     assert ad["peak_tension"]["value"] == pytest.approx(0.2 / 5e-9)
     assert ad["warnings"] and ad["process_zone"]["unit"] == "m"
+    # issue 26: the solve records, per pressure and for the sweep (periodic: no edge)
+    assert ad["solve"]["converged"] is True and ad["solve"]["solves"] == 2
+    assert ad["solve"]["edge_contact"] is False and rec["solve"]["edge_contact"] is False
+    assert ad["solve"]["residual"]["value"] <= ad["solve"]["tolerance"]["value"]
     for r in rec["results"]:
         a, b = r["adhesive"], r["bem"]
         assert a["contact_area_fraction"]["unit"] == "" and a["mean_gap"]["unit"] == "m"

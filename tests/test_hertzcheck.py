@@ -186,10 +186,10 @@ def test_to_json_has_exactly_the_issue_keys():
     rec = hertz_check(Topography(z, 2e-6, 2e-6), radius=5e-3, load=1.0,
                       materials="steel,aluminium", grid=64).to_json()
     # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits), plus
-    # issue 16's grid, scan preparation and warnings
+    # issue 16's grid, scan preparation and warnings, plus issue 26's solve record
     assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
-                        "scan_preparation", "warnings"}
+                        "scan_preparation", "warnings", "solve"}
     assert set(rec["hertz"]) == {"a", "delta", "p0"}
     assert set(rec["bem"]) == {"pmax", "effective_radius", "contact_radius", "approach",
                                "area_fraction", "plastic_fraction"}

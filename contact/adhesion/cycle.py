@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.adhesion.solver import AdhesiveProblem, AdhesiveState, solve_adhesive
+from contact.record import SolveRecord, combine
 
 _GOLDEN = 0.5 * (math.sqrt(5.0) - 1.0)
 
@@ -28,7 +29,8 @@ class Branch:
 
     ``approach`` is the rigid approach imposed (m), ``surface_approach`` the approach of the
     mean plane (m), ``load`` (N), ``contact_area`` (m^2), ``energy`` the elastic plus
-    interaction energy (J), ``iterations`` per step.
+    interaction energy (J), ``iterations`` per step; ``solve`` the steps' solve records
+    combined (:func:`contact.record.combine`).
     """
 
     approach: np.ndarray
@@ -37,6 +39,7 @@ class Branch:
     contact_area: np.ndarray
     energy: np.ndarray
     iterations: np.ndarray
+    solve: SolveRecord
 
     @property
     def contact_radius(self) -> np.ndarray:
@@ -71,6 +74,13 @@ class Cycle:
     jump_in: Jump | None
     jump_out: Jump | None
     hysteresis_energy: float
+
+    @property
+    def solve(self) -> SolveRecord:
+        """The solve records of both legs combined (the pull-off's refining solves are
+        not counted)."""
+        return combine([self.approach_leg.solve, self.retraction_leg.solve],
+                       "adhesive approach-retraction cycle, one solve per step")
 
 
 #: A step that changes the touching area by more than this share of it is split in two,
@@ -123,6 +133,7 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
         contact_area=np.array([s.contact_area for s in states]),
         energy=np.array([s.energy for s in states]),
         iterations=np.array([s.iterations for s in states]),
+        solve=combine([s.solve for s in states], "adhesive, one solve per approach step"),
     )
     return branch, [s.gap for s in states]
 

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -39,6 +39,7 @@ from contact.adhesion.ball import MIN_ZONE_PIXELS
 from contact.adhesion.laws import InteractionLaw
 from contact.adhesion.solver import AdhesiveProblem, AdhesiveState, adhesive_problem, solve_adhesive
 from contact.errors import ContactInputError, ConvergenceError
+from contact.record import SolveRecord
 
 #: Equilibrium solves allowed per nominal pressure.
 MAX_SOLVES = 40
@@ -62,6 +63,9 @@ class AdhesiveFlatPoint:
         Approach of the flat to the mean plane of the deformed surface (m).
     solves, iterations : int
         Equilibrium solves of the secant, and their iterations in all.
+    solve : SolveRecord
+        The record (:mod:`contact.record`): the iterations in all, the secant's solves as
+        outer iterations, the last equilibrium's residual.
     """
 
     pressure: float
@@ -71,6 +75,7 @@ class AdhesiveFlatPoint:
     approach: float
     solves: int
     iterations: int
+    solve: SolveRecord
 
     @property
     def repulsive_pressure(self) -> float:
@@ -233,7 +238,9 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
             pressure=st.load / (h.size * problem.cell_area),
             area_fraction=float(np.mean(st.gap <= 0.0)), mean_gap=float(np.mean(st.gap)),
             attractive_pressure=attractive_pressure(law, st.gap), approach=st.approach,
-            solves=n, iterations=its))
+            solves=n, iterations=its,
+            solve=replace(st.solve, method="adhesive, load-controlled secant",
+                          iterations=its, outer_iterations=n)))
         if progress is not None:
             progress(k + 1, p.size)
     zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)

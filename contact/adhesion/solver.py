@@ -33,6 +33,7 @@ import numpy as np
 from contact.adhesion.laws import InteractionLaw
 from contact.errors import ContactInputError, ConvergenceError
 from contact.halfspace.influence import periodic_kernel_spectrum
+from contact.record import SolveRecord, edge_contact
 
 
 @dataclass(frozen=True)
@@ -57,6 +58,8 @@ class AdhesiveState:
         tension and the largest compressive pressure.
     iterations : int
         L-BFGS-B iterations.
+    solve : SolveRecord
+        The solve record (:mod:`contact.record`; the domain is periodic: no edge).
     """
 
     gap: np.ndarray
@@ -67,6 +70,7 @@ class AdhesiveState:
     energy: float
     residual: float
     iterations: int
+    solve: SolveRecord
 
 
 @dataclass(frozen=True, eq=False)
@@ -185,4 +189,9 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
         contact_area=float(touching.sum() * area),
         energy=(elastic + float(law.potential(g).sum())) * area,
         residual=residual, iterations=int(nit),
+        solve=SolveRecord(method="adhesive (accelerated projected gradient)",
+                          iterations=int(nit), residual=residual, tolerance=tol,
+                          converged=True, edge_contact=edge_contact(touching, periodic=True),
+                          residual_definition="largest violation of equilibrium over the "
+                                              "pressure scale"),
     )

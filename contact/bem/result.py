@@ -7,6 +7,7 @@ reference point, the sphere apex for :func:`contact.setups.ball_on_plate.solve_s
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -14,6 +15,11 @@ from typing import Any
 import numpy as np
 
 from contact._validate import frozen
+from contact.record import SolveRecord, edge_contact
+
+#: What the normal solver's residual measures (see :class:`ContactResult`).
+RESIDUAL_DEFINITION = ("rms gap error on the contact over the displacement of one cell at "
+                       "the mean contact pressure")
 
 
 @dataclass(frozen=True, eq=False)
@@ -44,10 +50,13 @@ class ContactResult:
     n_clusters : number of contact spots (4-connected cells with p > 0; in a periodic domain
         spots that wrap around the boundary count once).
     plastic_area : area of the cells at the hardness (m^2).
-    iterations, residual, converged : solver record; the residual is the rms gap error on
+    solve : SolveRecord
+        The solve record (:mod:`contact.record`); the residual is the rms gap error on
         the contact divided by the displacement one cell at the mean contact pressure makes
-        on itself (about the rms relative pressure error per cell).
-    touches_edge : pressure on the outermost ring of cells: the domain may cut the contact.
+        on itself (about the rms relative pressure error per cell); ``edge_contact`` is
+        pressure on the outermost ring of a free-boundary domain
+        (:func:`contact.record.edge_contact`). ``iterations``, ``residual``, ``converged``
+        and ``touches_edge`` read it.
     """
 
     pressure: np.ndarray
@@ -71,10 +80,7 @@ class ContactResult:
     centroid: tuple[float, float]
     n_clusters: int
     plastic_area: float
-    iterations: int
-    residual: float
-    converged: bool
-    touches_edge: bool
+    solve: SolveRecord
     notes: tuple[str, ...] = ()
     hertz: Any = None
     extra: dict[str, Any] = field(default_factory=dict)
@@ -83,6 +89,27 @@ class ContactResult:
     def shape(self) -> tuple[int, int]:
         """Grid shape (ny, nx)."""
         return self.pressure.shape  # type: ignore[return-value]
+
+    @property
+    def iterations(self) -> int:
+        """Iterations of the finest grid (the solve record's)."""
+        return self.solve.iterations
+
+    @property
+    def residual(self) -> float:
+        """The residual reached (the solve record's)."""
+        return self.solve.residual
+
+    @property
+    def converged(self) -> bool:
+        """The tolerance was reached (the solve record's)."""
+        return self.solve.converged
+
+    @property
+    def touches_edge(self) -> bool:
+        """Pressure on the edge of a free-boundary domain (the solve record's
+        ``edge_contact``): the domain may cut the contact short."""
+        return self.solve.edge_contact
 
     @property
     def contact(self) -> np.ndarray:
@@ -149,6 +176,7 @@ class ContactResult:
             "residual": self.residual,
             "converged": self.converged,
             "touches_edge": self.touches_edge,
+            "solve": dataclasses.asdict(self.solve),
             "notes": list(self.notes),
         }
         return out
@@ -224,17 +252,6 @@ def load_radius(pressure: np.ndarray, x: np.ndarray, y: np.ndarray, centre: tupl
     return float(r0 + (r1 - r0) * (target - c0) / (c1 - c0)) if c1 > c0 else float(r1)
 
 
-def edge_pressure(pressure: np.ndarray, width: int = 1) -> bool:
-    """True if any cell within ``width`` cells of the domain boundary carries pressure."""
-    w = max(1, int(width))
-    return bool(
-        (pressure[:w] > 0).any()
-        or (pressure[-w:] > 0).any()
-        or (pressure[:, :w] > 0).any()
-        or (pressure[:, -w:] > 0).any()
-    )
-
-
 def build_result(
     *,
     pressure: np.ndarray,
@@ -252,11 +269,14 @@ def build_result(
     iterations: int,
     residual: float,
     converged: bool,
+    tolerance: float = math.nan,
+    method: str = "normal BEM",
     notes: tuple[str, ...] = (),
     hertz: Any = None,
     extra: dict[str, Any] | None = None,
 ) -> ContactResult:
-    """Assemble a :class:`ContactResult`, computing every derived quantity from the fields."""
+    """Assemble a :class:`ContactResult`, computing every derived quantity from the fields
+    (the solve record's ``edge_contact`` from the pressure)."""
     da = dx * dy
     contact = pressure > 0
     load = float(pressure.sum() * da)
@@ -291,10 +311,10 @@ def build_result(
         centroid=(cx, cy),
         n_clusters=count_clusters(contact, periodic),
         plastic_area=plastic_area,
-        iterations=int(iterations),
-        residual=float(residual),
-        converged=bool(converged),
-        touches_edge=edge_pressure(pressure),
+        solve=SolveRecord(method=method, iterations=int(iterations), residual=float(residual),
+                          tolerance=float(tolerance), converged=bool(converged),
+                          edge_contact=edge_contact(pressure, periodic),
+                          residual_definition=RESIDUAL_DEFINITION),
         notes=tuple(notes),
         hertz=hertz,
         extra=dict(extra or {}),

@@ -10,7 +10,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import os
-import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -21,10 +20,11 @@ from contact.bem.bounds import PressureBounds
 from contact.bem.iteration import iterate, start
 from contact.bem.result import ContactResult, build_result
 from contact.bem.state import IterationState, Problem, SolverStats, workspace
-from contact.errors import ContactInputError, ConvergenceError, EdgeContactWarning
+from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import convolution
 from contact.nesting import can_nest, coarsen, prolong
+from contact.record import edge_warning
 
 
 def solve_normal(
@@ -101,17 +101,18 @@ def solve_normal(
         with ``strict=False`` the result is returned with ``converged=False``.
     edge : {"warn", "ignore"}
         A free-boundary solution with pressure on the outermost cells may be cut short by
-        the domain: "warn" issues an :class:`~contact.errors.EdgeContactWarning` and adds a
-        note (the result's ``touches_edge`` is set either way). Higher-level callers that
-        enlarge the domain themselves pass "ignore".
+        the domain: "warn" issues the one edge warning of
+        :func:`contact.record.edge_warning` and adds it as a note (the record's
+        ``edge_contact`` is set either way). Higher-level callers that enlarge the domain
+        themselves pass "ignore".
     stats : SolverStats, optional
         Filled with counters (iterations, FFTs) for diagnostics.
 
     Returns
     -------
     ContactResult
-        ``iterations`` counts the finest grid; ``extra["levels"]`` lists (ny, nx,
-        iterations) of every grid solved, coarsest first.
+        Its ``solve`` record's ``iterations`` counts the finest grid; ``extra["levels"]``
+        lists (ny, nx, iterations) of every grid solved, coarsest first.
     """
     given = gap0 if isinstance(gap0, Grid) else None
     if given is not None:
@@ -166,12 +167,10 @@ def solve_normal(
     stats.levels.append((ny, nx, it))
     stats.iterations = it
 
-    result = _assemble(h, state, e_star, hardness, grid, ok,
+    result = _assemble(h, state, e_star, hardness, grid, ok, tol,
                        {"levels": list(stats.levels), "tol": tol, "precision": precision})
-    if edge == "warn" and result.touches_edge and not periodic:
-        msg = ("contact pressure reaches the edge of the domain: the free-boundary solution "
-               "is truncated there; enlarge the domain")
-        warnings.warn(msg, EdgeContactWarning, stacklevel=2)
+    msg = edge_warning(edge == "warn" and result.touches_edge)
+    if msg is not None:
         result = dataclasses.replace(result, notes=(*result.notes, msg))
     if not ok and strict:
         raise ConvergenceError(
@@ -255,7 +254,7 @@ def _warm_start(initial: np.ndarray, shape: tuple[int, ...], cap: float) -> np.n
 
 
 def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: float | None,
-              grid: Grid, ok: bool, extra: dict[str, Any]) -> ContactResult:
+              grid: Grid, ok: bool, tol: float, extra: dict[str, Any]) -> ContactResult:
     """The result of a finished iteration, back in SI units."""
     ny, nx = h.shape
     p = state.pressure.reshape(ny, nx)
@@ -272,5 +271,7 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
         pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=grid.x,
         y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
         periodic=grid.periodic, approach=delta,
-        iterations=state.iteration, residual=state.residual, converged=ok, extra=extra,
+        iterations=state.iteration, residual=state.residual, converged=ok, tolerance=tol,
+        method="normal BEM" + (", elastic-plastic" if hardness is not None else ""),
+        extra=extra,
     )

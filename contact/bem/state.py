@@ -9,7 +9,9 @@ displacement u = K * p), on flattened C-contiguous arrays:
 - :class:`IterationState`: the iterate (pressure, displacement, approach) and the flags
   that tell the step functions of :mod:`contact.bem.steps` what to do next.
 
-:class:`SolverStats` counts what a solve did, for benchmarks and diagnostics.
+:class:`SolverStats` counts what a solve did (FFTs, corrections, grid levels), for
+benchmarks and diagnostics; the record every solver returns is
+:class:`contact.record.SolveRecord` (``ContactResult.solve``).
 """
 
 from __future__ import annotations

@@ -47,6 +47,7 @@ from contact.geometry import (
     sphere_gap,
 )
 from contact.hertz import hertz_sphere
+from contact.record import edge_warning, raise_edge
 from contact.sampling import fill_nan, sample_roughness
 from contact.setups.composite import CompositeRoughness
 
@@ -266,26 +267,20 @@ class SphereContact:
             if not res.touches_edge:
                 break
             side = n * dx
+            where = f"the {side * 1e3:.4g} mm domain"
             if on_edge == "raise":
-                raise EdgeContactError(
-                    f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain; "
-                    "enlarge it (size=...) or let the solver do it (on_edge='enlarge')"
-                )
+                raise_edge("on_edge='raise' refuses a truncated result (on_edge='enlarge' "
+                           "enlarges it)", where)
             if on_edge == "warn":
-                msg = (f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain: "
-                       "the result is truncated")
-                warnings.warn(msg, EdgeContactWarning, stacklevel=2)
-                notes.append(msg)
+                notes.append(edge_warning(True, where))
                 break
             n_new = self._can_enlarge()
             if n_new <= n or attempt == max_enlarge:
-                where = ("the roughness data end there" if self._z is not None and n_new <= n
-                         else f"gave up after {max_enlarge} enlargements")
-                raise EdgeContactError(
-                    f"contact pressure reaches the edge of the {side * 1e3:.4g} mm domain and "
-                    f"it cannot be enlarged ({where}); use a larger scan, a smaller load, or "
-                    "accept a truncated result (on_edge='warn', CLI --on-edge warn)"
-                )
+                why = ("the roughness data end there" if self._z is not None and n_new <= n
+                       else f"gave up after {max_enlarge} enlargements")
+                raise_edge(f"it cannot be enlarged ({why}); use a larger scan, a smaller "
+                           "load, or accept a truncated result (on_edge='warn', CLI --on-edge "
+                           "warn)", where)
             msg = (f"contact pressure reached the edge of the {side * 1e3:.4g} mm domain; "
                    f"enlarged to {n_new * dx * 1e3:.4g} mm ({n_new} cells) and solved again")
             warnings.warn(msg, EdgeContactWarning, stacklevel=2)

@@ -35,6 +35,7 @@ import numpy as np
 from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.fields import corrected_area
+from contact.record import SolveRecord, combine, edge_message
 
 #: Relative pressure step of the stiffness solve.
 STIFFNESS_STEP = 0.01
@@ -62,9 +63,9 @@ class FlatPoint:
         Largest local pressure, Pa.
     plastic_fraction : float
         Fraction of the nominal area at the hardness (0 without one).
-    iterations : int
-        Iterations of the main solve.
-    converged : bool
+    solve : SolveRecord
+        The main solve's record (:mod:`contact.record`); ``iterations`` and
+        ``converged`` read it.
     """
 
     pressure: float
@@ -75,8 +76,17 @@ class FlatPoint:
     n_clusters: int
     max_pressure: float
     plastic_fraction: float
-    iterations: int
-    converged: bool
+    solve: SolveRecord
+
+    @property
+    def iterations(self) -> int:
+        """Iterations of the main solve."""
+        return self.solve.iterations
+
+    @property
+    def converged(self) -> bool:
+        """The main solve reached its tolerance."""
+        return self.solve.converged
 
 
 @dataclass(frozen=True, eq=False)
@@ -107,6 +117,11 @@ class FlatContact:
     @property
     def stiffness(self) -> np.ndarray:
         return np.array([pt.stiffness for pt in self.points])
+
+    @property
+    def solve(self) -> SolveRecord:
+        """One record for the main solves of every pressure (:func:`contact.record.combine`)."""
+        return combine([pt.solve for pt in self.points], "normal BEM, one solve per pressure")
 
 
 def flat_contact(
@@ -198,10 +213,11 @@ def flat_contact(
             corrected_area_fraction=corrected_area(contact, dx, dy) / area0,
             mean_gap=gap1, stiffness=float(stiff), n_clusters=int(res.n_clusters),
             max_pressure=float(res.pmax), plastic_fraction=float(res.plastic_area / area0),
-            iterations=int(res.iterations), converged=bool(res.converged)))
-        if not periodic and res.touches_edge and not notes:
-            notes.append("free boundary: the contact reaches the scan's edges, where the "
-                         "missing neighbours make the surface softer than in the bulk")
+            solve=res.solve))
+        if res.touches_edge and not notes:  # the record's edge_contact: never when periodic
+            notes.append(f"{edge_message('the scan')} (on a free boundary the missing "
+                         "neighbours make the surface softer than in the bulk; a periodic scan "
+                         "has no edge)")
         if progress is not None:
             progress(k + 1, p.size)
     if not by_solve:

@@ -20,9 +20,10 @@ from typing import Any
 import numpy as np
 
 from contact._validate import frozen, positive
-from contact.bem.line import solve_line_pressure
+from contact.bem.line import active_set_record, solve_line_pressure
 from contact.errors import ContactInputError
 from contact.hertz import hertz_cylinder
+from contact.record import SolveRecord, edge_contact, edge_warning
 
 
 @dataclass(frozen=True, eq=False)
@@ -54,6 +55,9 @@ class LineContactResult:
         Mid-point of the contact extent (m).
     iterations : int
         Active-set iterations.
+    solve : SolveRecord
+        The solve record (:mod:`contact.record`): the residual is the largest gap error
+        (gap on the contact set, interpenetration off it) over the range of the gap.
     hertz : HertzCylinder or None
         The Hertz solution of the same load, when the problem is a cylinder.
     """
@@ -70,13 +74,15 @@ class LineContactResult:
     half_width: float
     centre: float
     iterations: int
+    solve: SolveRecord
     hertz: Any = None
     extra: dict[str, Any] = field(default_factory=dict)
 
     @property
     def touches_edge(self) -> bool:
-        """Pressure on the first or last cell: the domain may cut the contact short."""
-        return bool(self.pressure[0] > 0 or self.pressure[-1] > 0)
+        """Pressure on the first or last cell (the record's ``edge_contact``): the domain
+        may cut the contact short."""
+        return self.solve.edge_contact
 
 
 def solve_line(
@@ -130,6 +136,9 @@ def solve_line(
     u = K @ p
     gap = np.maximum(h + u - delta, 0.0)
     gap[active] = 0.0
+    record = active_set_record("plane-strain active set", h + u - delta, active, h, it,
+                               edge_contact(p))
+    edge_warning(record.edge_contact)
     x = origin + np.arange(n) * dx
     on = np.flatnonzero(p > 0)
     lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
@@ -138,7 +147,7 @@ def solve_line(
         dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
         approach=delta, pmax=float(p.max()),
         half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
-        centre=0.5 * (hi + lo) if on.size else math.nan, iterations=it,
+        centre=0.5 * (hi + lo) if on.size else math.nan, iterations=it, solve=record,
     )
 
 

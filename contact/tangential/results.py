@@ -7,14 +7,16 @@ is at the largest x.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from contact.halfspace.constants import PairConstants
+from contact.record import SolveRecord, edge_contact, edge_warning
 from contact.tangential.grid import Grid
 from contact.tangential.kernels import SLIP, STICK
-from contact.tangential.kinematics import Creepage
+from contact.tangential.kinematics import Creepage, rigid_slip
 
 # above this share of the dissipation in the contact's edge elements, the slip zone is
 # not resolved by the grid (see TangentialResult.edge_dissipation_share)
@@ -64,6 +66,13 @@ class TangentialResult:
         it used (0 where not recorded).
     tol : float
         The tolerance it was solved to (NaN where not recorded).
+    solve : SolveRecord
+        The solve record (:mod:`contact.record`), formed from the answer when the solver
+        gives none: iterations the active-set iterations (``outer``), outer iterations
+        the normal-tangential ones (``iterations``), the residual the slip residual of
+        :func:`contact.tangential.solver.slip_residual` formed afresh, converged True (the
+        solvers raise :class:`~contact.errors.ConvergenceError` otherwise), edge contact
+        pressure on the grid's edge (:func:`contact.record.edge_contact`, with its warning).
     """
 
     grid: Grid
@@ -80,6 +89,36 @@ class TangentialResult:
     outer: int = 0
     matvecs: int = 0
     tol: float = float("nan")
+    solve: SolveRecord | None = None
+
+    def __post_init__(self) -> None:
+        if self.solve is None:
+            object.__setattr__(self, "solve", self._record())
+            edge_warning(self.solve.edge_contact, stacklevel=4)
+
+    def _record(self) -> SolveRecord:
+        """The solve record formed from the answer with the elastic pair's operator."""
+        from contact.tangential.influence import HalfSpacePair
+        from contact.tangential.solver import slip_residual
+
+        g = self.grid
+        op = HalfSpacePair(len(g.y), len(g.x), g.dx, g.dy, self.constants, line=g.line)
+        u0 = op.tangential_from_normal(self.p)
+        if self.rolling:
+            w = rigid_slip(self.grid.x, self.grid.y, self.creepage)
+        else:  # a rigid shift along x, held in creepage.xi (m)
+            w = np.zeros_like(self.q)
+            w[0] = self.creepage.xi
+        res = slip_residual(self.s, self.state, self.directions, w, u0, self.mu * self.p,
+                            self.grid.dx, self.rolling)
+        return tangential_record(res, rolling=self.rolling, iterations=self.iterations,
+                                 outer=self.outer, tol=self.tol, p=self.p, s=self.s)
+
+    @property
+    def directions(self) -> np.ndarray:
+        """Unit directions of the tractions (0 where there is none), shape (2, ny, nx)."""
+        norm = np.hypot(self.q[0], self.q[1])
+        return np.divide(self.q, norm, out=np.zeros_like(self.q), where=norm > 0)
 
     @property
     def fn(self) -> float:
@@ -174,3 +213,19 @@ class TangentialResult:
     def rolling_resistance_coefficient(self, radius: float) -> float:
         """The pressure's moment about the centre over N R (dimensionless)."""
         return self.pressure_moment() / (self.fn * radius)
+
+
+def tangential_record(residual: float, *, rolling: bool, iterations: int, outer: int,
+                      tol: float, p: np.ndarray, s: np.ndarray) -> SolveRecord:
+    """The solve record of a tangential answer (pressure ``p``, slip ``s``) with its slip
+    ``residual``; with nothing slipping and nothing to drive a slip (inf) it is 0."""
+    if math.isinf(residual) and not np.any(s):
+        residual = 0.0
+    return SolveRecord(
+        method="steady rolling" if rolling else "shift",
+        iterations=int(outer) if outer else int(iterations),
+        outer_iterations=int(iterations) if outer else None,
+        residual=float(residual), tolerance=float(tol), converged=True,
+        edge_contact=edge_contact(p),
+        residual_definition="largest slip left on the adhesion elements or across the "
+                            "traction on the slip elements, over the driving slip")

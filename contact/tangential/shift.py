@@ -21,8 +21,8 @@ from contact.tangential.forcecontrol import slip_for_force
 from contact.tangential.grid import Grid
 from contact.tangential.kinematics import Creepage
 from contact.tangential.normal import solve_pressure
-from contact.tangential.results import TangentialResult
-from contact.tangential.solver import TangentialState, solve_tangential
+from contact.tangential.results import TangentialResult, tangential_record
+from contact.tangential.solver import TangentialState, slip_residual, solve_tangential
 from contact.tangential.steady import check_friction, operator_for
 
 
@@ -63,7 +63,8 @@ def shift(
     s = run(shift_x)
     return TangentialResult(grid=grid, constants=constants, mu=mu, p=p, q=s.q, s=s.s,
                             state=s.state, creepage=Creepage(shift_x, 0.0, 0.0),
-                            approach=delta, rolling=False, iterations=1)
+                            approach=delta, rolling=False, iterations=1, outer=s.outer,
+                            matvecs=s.matvecs, tol=tol)
 
 
 def compress_in_steps(
@@ -106,8 +107,15 @@ def compress_in_steps(
                 break
         else:
             raise ConvergenceError("compression step: the coupling did not settle")
+        # the slip is measured from the previous step's displacement: its own record
+        res = slip_residual(st.s, st.state, st.e, zero_w, u_p - u_prev, mu * p, grid.dx,
+                            False)
+        record = tangential_record(res, rolling=False, iterations=it, outer=st.outer, tol=tol,
+                                   p=p, s=st.s)
         u_prev = op.tangential(q[0], q[1]) + op.tangential_from_normal(p)
         out.append(TangentialResult(grid=grid, constants=constants, mu=mu, p=p, q=q,
                                     s=st.s, state=st.state, creepage=Creepage(),
-                                    approach=delta, rolling=False, iterations=it))
+                                    approach=delta, rolling=False, iterations=it,
+                                    outer=st.outer, matvecs=st.matvecs, tol=tol,
+                                    solve=record))
     return out

@@ -20,9 +20,10 @@ import math
 
 import numpy as np
 
-from contact.errors import ContactInputError, ConvergenceError, EdgeContactError
+from contact.errors import ContactInputError, ConvergenceError
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.pair import HalfSpacePair
+from contact.record import LEADING_EDGE, edge_contact, raise_edge
 from contact.tangential.coupling import (
     LAG,
     LOOSEST,
@@ -130,9 +131,8 @@ def steady_rolling(
         p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
     else:
         p, delta = solve_pressure(op, grid.h, load)
-    if np.any(p[:, -1] > 0):
-        raise EdgeContactError(
-            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    if edge_contact(p, leading_only=True):
+        raise_edge(LEADING_EDGE, "the grid")
     if start is not None:
         restate(start.state, mu * p)
     st: list[TangentialState | None] = [None if start is None else start.state]

@@ -35,8 +35,9 @@ import math
 import numpy as np
 
 from contact._validate import positive
-from contact.bem.line import line_column, solve_active_set
+from contact.bem.line import active_set_record, line_column, solve_active_set
 from contact.errors import ContactInputError, ConvergenceError
+from contact.record import edge_contact, edge_warning
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
 from contact.viscoelastic.window import cylinder_window
@@ -140,13 +141,14 @@ def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
     u = A @ p
     gap = np.where(p > 0, 0.0, np.maximum(h + u - delta, 0.0))
     trailing, leading = edges_1d(x, p)
-    if p[0] > 0 or p[-1] > 0:
-        raise ContactInputError("the contact reaches the end of the line grid: widen it")
+    record = active_set_record("viscoelastic plane-strain active set", h + u - delta,
+                               start, h, it, edge_contact(p))
+    edge_warning(record.edge_contact)
     mu = float((p * x).sum() * dx / (W * radius)) if radius else float("nan")
     return RollingResult(x=frozen(x), y=None, pressure=frozen(p), displacement=frozen(u),
                          gap=frozen(gap), approach=delta, load=W, radius=radius, speed=v,
                          leading=leading, trailing=trailing, rolling_resistance=mu,
-                         iterations=it)
+                         solve=record, gap_residual=record.residual)
 
 
 

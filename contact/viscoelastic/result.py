@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from contact._validate import frozen as _frozen
+from contact.record import SolveRecord
 
 
 def frozen(a: np.ndarray) -> np.ndarray:
@@ -47,10 +48,14 @@ class RollingResult:
     rolling_resistance : float
         mu_r = (moment of the pressure about the axis, x p summed) / (N R): the resisting
         force over the load for a rigid or elastic roller (nan without a radius).
-    iterations : int
-        Active-set (2D) or outer (3D) iterations.
-    extra : dict
-        Solver diagnostics.
+    solve : SolveRecord
+        The solve record (:mod:`contact.record`): active-set iterations and the largest
+        gap error (2D); outer fixed-point iterations and the last relative change of the
+        pressure (3D).
+    gap_residual : float
+        Largest gap on the contact over the range of the initial gap there.
+    inner_iterations : int
+        Iterations of the last elastic (BEM) solve inside the outer loop (3D; 0 in 2D).
     """
 
     x: np.ndarray
@@ -65,8 +70,14 @@ class RollingResult:
     leading: float
     trailing: float
     rolling_resistance: float
-    iterations: int
-    extra: dict = field(default_factory=dict)
+    solve: SolveRecord
+    gap_residual: float
+    inner_iterations: int = 0
+
+    @property
+    def iterations(self) -> int:
+        """Active-set (2D) or outer (3D) iterations (the solve record's)."""
+        return self.solve.iterations
 
     @property
     def pmax(self) -> float:
@@ -97,6 +108,7 @@ class RollingResult:
             "pressure_offset": {"value": self.pressure_offset, "unit": "m"},
             "load": {"value": self.load, "unit": "N" + per},
             "speed": {"value": self.speed, "unit": "m/s"},
+            "solve": self.solve.to_json(),
         }
 
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.errors import ContactInputError, ConvergenceError
+from contact.record import SolveRecord, edge_contact
 
 
 @dataclass(frozen=True, eq=False)
@@ -45,6 +46,10 @@ class TractionResult:
     stick, slip : ndarray of bool
         Adhesion and slip cells.
     iterations : int
+        Active-set iterations.
+    solve : SolveRecord
+        The record (:mod:`contact.record`): the residual is the largest excess of a
+        sticking traction over its bound mu p, over the largest bound.
     """
 
     traction: np.ndarray
@@ -53,6 +58,7 @@ class TractionResult:
     stick: np.ndarray
     slip: np.ndarray
     iterations: int
+    solve: SolveRecord
 
 
 def _solve(A: np.ndarray, dx: float, on: np.ndarray, state: np.ndarray, bound: np.ndarray,
@@ -125,7 +131,14 @@ def steady_traction(A: np.ndarray, pressure: np.ndarray, dx: float, mu: float,
         wrong = on & (state != 0) & (s * state > 0)  # slipping along its own traction
         if not over.any() and not wrong.any():
             stick = on & (state == 0)
-            return TractionResult(q, xi, float(q.sum() * dx), stick, on & ~stick, it)
+            excess = np.where(stick, np.abs(q) - bound, 0.0).max(initial=0.0)
+            record = SolveRecord(
+                method="plane-strain traction active set", iterations=it,
+                residual=max(float(excess), 0.0) / max(float(bound.max()), 1e-300),
+                tolerance=1e-12, converged=True, edge_contact=edge_contact(p),
+                residual_definition="largest excess of a sticking traction over mu p, "
+                                    "over the largest mu p")
+            return TractionResult(q, xi, float(q.sum() * dx), stick, on & ~stick, it, record)
         state[over] = np.sign(q[over])
         state[wrong] = 0.0
     raise ConvergenceError("steady rolling tractions: stick/slip areas not settled",

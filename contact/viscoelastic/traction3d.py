@@ -40,10 +40,11 @@ import numpy as np
 from contact.errors import ContactInputError
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.pair import HalfSpacePair
+from contact.record import LEADING_EDGE, edge_contact, edge_warning, raise_edge
 from contact.tangential.grid import Grid
 from contact.tangential.kinematics import Creepage, rigid_slip
-from contact.tangential.results import TangentialResult
-from contact.tangential.solver import solve_tangential
+from contact.tangential.results import TangentialResult, tangential_record
+from contact.tangential.solver import slip_residual, solve_tangential
 from contact.tangential.steady import check_friction
 from contact.viscoelastic.kernels import creep_filter_rows
 from contact.viscoelastic.rheology import CreepSeries, pair_creep
@@ -170,9 +171,8 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
     p = np.asarray(pressure, dtype=float)
     if p.shape != grid.h.shape:
         raise ContactInputError(f"the pressure must have the grid's shape {grid.h.shape}")
-    if np.any(p[:, -1] > 0):
-        raise ContactInputError(
-            "the contact reaches the leading edge of the grid (largest x): enlarge the grid")
+    if edge_contact(p, leading_only=True):
+        raise_edge(LEADING_EDGE, "the grid")
     op = ViscoHalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, creep, nu, speed,
                             ahead)
     g = mu * p
@@ -189,9 +189,16 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
     w = rigid_slip(grid.x, grid.y, Creepage(xi))
     st = solve_tangential(op, g, w, u0, rolling=True, tol=tol, force=force, area=grid.area)
     xi += st.dw
+    # the residual with this viscoelastic operator (the result's default uses the elastic one)
+    res = slip_residual(st.s, st.state, st.e, rigid_slip(grid.x, grid.y, Creepage(xi)), u0, g,
+                        grid.dx, True)
+    record = tangential_record(res, rolling=True, iterations=1, outer=st.outer, tol=tol,
+                               p=p, s=st.s)
+    edge_warning(record.edge_contact)
     return TangentialResult(grid=grid, constants=op.c, mu=mu, p=p, q=st.q, s=st.s,
                             state=st.state, creepage=Creepage(xi), approach=float("nan"),
-                            rolling=True, iterations=1)
+                            rolling=True, iterations=1, outer=st.outer, matvecs=st.matvecs,
+                            tol=tol, solve=record)
 
 
 def rolling_sphere_tractions(radius: float, load: float, creep: CreepSeries, nu: float,

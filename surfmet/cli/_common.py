@@ -131,3 +131,18 @@ def progress(iterable: Iterable[T], total: int | None = None, desc: str = "",
         for item in iterable:
             yield item
             bar.update(1)
+
+
+def print_solve(record: Any, label: str = "solve", warned: Iterable[str] = ()) -> None:
+    """The solve record's line (:meth:`contact.record.SolveRecord.text`; ``record`` the
+    record or its JSON), and its
+    edge-contact warning on a line of its own unless a warning about the domain edge is
+    among ``warned`` (printed by the command already); the label padded as in the tables."""
+    if isinstance(record, dict):  # a command's JSON "solve" object
+        from contact.record import SolveRecord
+
+        record = SolveRecord.from_json(record)
+    indent = " " * (len(label) - len(label.lstrip()))
+    print(f"{label:14s} {record.text()}")
+    if record.warning and not any("edge of" in w for w in warned):
+        print(f"{indent + 'warning':{max(14, len(label))}s} {record.warning}")

@@ -14,6 +14,7 @@ from surfmet.cli._common import (
     log,
     positive_length,
     pressure,
+    print_solve,
     save_figure,
     show_progress,
 )
@@ -118,5 +119,6 @@ def _print(ball: Any) -> None:
                   f"{format_length(jump.step / 2)}), load {jump.load_before * 1e6:.4g} -> "
                   f"{jump.load_after * 1e6:.4g} uN{'' if jump.abrupt else ' (smooth)'}")
     print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle")
+    print_solve(cyc.solve, "solve          ")
     for w in ball.warnings:
         print(f"warning         {w}")

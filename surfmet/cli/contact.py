@@ -16,6 +16,7 @@ from surfmet.cli._common import (
     log,
     positive_length,
     pressure,
+    print_solve,
     spike_summary,
 )
 from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
@@ -156,9 +157,7 @@ def _print(sol: Any, args: argparse.Namespace) -> None:
     if res.hardness is not None:
         print(f"plastic area   {format_quantity(res.plastic_area, 'm^2', 6)}   ({res.regime}; "
               f"hardness {format_quantity(res.hardness, 'Pa', 5)})")
-    print(f"solver         {res.iterations} iterations, residual {res.residual:.2e}, "
-          f"{'converged' if res.converged else 'NOT converged'}"
-          f"{', touches the edge' if res.touches_edge else ''}")
+    print_solve(res.solve, "solver", warned=sol.warnings)
     for note in res.notes:
         print(f"note           {note}")
     for w in sol.warnings:

@@ -16,6 +16,7 @@ from surfmet.cli._common import (
     log,
     positive_length,
     pressure,
+    print_solve,
     save_figure,
     show_progress,
 )
@@ -229,6 +230,7 @@ def _print(rec: dict[str, Any]) -> None:
                   f"{'-' if k is None else f'{k / 1e12:.4g}':>11} "
                   f"{'-' if ea is None else f'{100 * ea:+.1f}%':>8} "
                   f"{'-' if eg is None else f'{100 * eg:+.1f}%':>8}")
+    print_solve(rec["solve"], "  solve")
     if "adhesion" in rec:
         _print_adhesion(rec)
     for note in rec["notes"]:
@@ -251,5 +253,6 @@ def _print_adhesion(rec: dict[str, Any]) -> None:
               f"{a['contact_area_fraction']['value']:10.4g} "
               f"{b['mean_gap']['value'] * 1e6:9.4g} {a['mean_gap']['value'] * 1e6:9.4g} "
               f"{a['attractive_pressure']['value'] / 1e6:17.4g}")
+    print_solve(ad["solve"], "  solve")
     for w in ad["warnings"]:
         print(f"  WARNING: {w}")

@@ -16,6 +16,7 @@ from surfmet.cli._common import (
     log,
     positive_length,
     pressure,
+    print_solve,
     save_figure,
 )
 from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
@@ -145,6 +146,9 @@ def run(args: argparse.Namespace) -> int:
           f"({source}); "
           f"load {check.load:.4g} N, R = {format_length(check.radius)}, "
           f"{check.ball_material.name} on {check.plate_material.name}")
+    from surfmet.records.hertz import hertz_check_solve
+
+    print_solve(hertz_check_solve(check))
     return 0
 
 

@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     force_range,
     log,
     pressure,
+    print_solve,
     progress,
     save_figure,
     show_progress,
@@ -154,6 +155,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'load (N)':>12}{'M_r (N m)':>14}{'local λ':>10}")
     for w, m, lam in zip(s.loads, s.moments, s.local_lambda):
         print(f"{w:12.4g}{m:14.4g}{lam:10.4f}")
+    if s.solve is not None:
+        print_solve(s.solve)
     return 0
 
 

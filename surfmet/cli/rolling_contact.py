@@ -12,6 +12,7 @@ from surfmet.cli._common import (
     emit_json,
     log,
     positive_length,
+    print_solve,
     speed,
     spike_summary,
 )
@@ -127,8 +128,7 @@ def _print_summary(rec: dict) -> None:
         print(f"  {key:32s} {fmt(key)}")
     if "frictional_power_at_speed" in rec:
         print(f"  {'frictional_power_at_speed':32s} {fmt('frictional_power_at_speed')}")
-    print(f"  {'solver':32s} {rec['iterations']} iterations, residual "
-          f"{rec['residual']['value']:.2e}, converged")
+    print_solve(rec["solve"], f"  {'solver':32s}")
     for note in rec.get("notes", []):
         print(f"  note: {note}")
     log(f"sign convention: {rec['sign_convention']}")

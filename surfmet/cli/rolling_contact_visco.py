@@ -51,7 +51,7 @@ def speed_value(value: Any) -> float:
 
 def run_viscoelastic(args: argparse.Namespace) -> int:
     """Solve and report (text or --json)."""
-    from surfmet.cli._common import emit_json
+    from surfmet.cli._common import emit_json, print_solve
     from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling_contact
 
     if getattr(args, "speed", None) is None:
@@ -66,6 +66,7 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
     out = res.to_json()
     if tr is not None:
         out.update(_traction_json(res, tr, line))
+        out["traction_solve"] = tr.solve.to_json()
     out["model"] = ("viscoelastic steady rolling, normal problem"
                     + (f" and tangential tractions ({'plane strain' if line else '3D'}, "
                        "quasi-identical bodies)" if tr is not None else " (frictionless)"))
@@ -93,6 +94,9 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
         else:
             print(f"stick, slip area                {t['stick_area']['value'] * 1e12:.5g} "
                   f"µm², {t['slip_area']['value'] * 1e12:.5g} µm²")
+    print_solve(res.solve, "normal solve                   ")
+    if tr is not None:
+        print_solve(tr.solve, "traction solve                 ")
     return 0
 
 

@@ -6,6 +6,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from surfmet.cli._common import print_solve
+
 
 def add_visco_arguments(p: argparse.ArgumentParser) -> None:
     """--speed, --loss, --viscoelastic (used by --model viscoelastic and all)."""
@@ -111,6 +113,8 @@ def _print_sweep(s: Any, speed: float) -> None:
     print(f"{'load (N)':>12}{'M_r (N m)':>14}{'mu_r':>12}{'local λ':>10}")
     for w, m, f, lam in zip(s.loads, s.moments, s.forces, s.local_lambda):
         print(f"{w:12.4g}{m:14.4g}{f / w:12.4g}{lam:10.4f}")
+    if s.solve is not None:
+        print_solve(s.solve)
 
 
 def _print_all(rep: Any) -> None:
@@ -155,5 +159,8 @@ def _print_all(rep: Any) -> None:
     if top.delta_eps:
         print(f"                   the largest implied difference ({top.name}) is "
               f"{abs(o.value / top.delta_eps):.3g}x smaller than the verdict's offset")
+    for m in c.mechanisms:
+        if m.sweep.solve is not None:
+            print_solve(m.sweep.solve, f"solve {m.name}")
     for note in rep.notes:
         print(f"note: {note}")

@@ -95,6 +95,7 @@ def adhesion_record(ball: Any) -> dict[str, Any]:
                  "process_zone_pixels": quantity(ball.process_zone / ball.dx, "")},
         "solver": {"iterations": int(cyc.approach_leg.iterations.sum()
                                      + cyc.retraction_leg.iterations.sum())},
+        "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
         "warnings": list(ball.warnings),
     }

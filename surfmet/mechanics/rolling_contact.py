@@ -111,6 +111,7 @@ def solve_rolling_contact(
         Side of the (square) domain (m); default: automatic, as above.
     """
     from contact.errors import EdgeContactError
+    from contact.record import LEADING_EDGE, raise_edge
     from contact.tangential import Creepage, steady_rolling
     from contact.tangential.memory import check_rolling_memory
     from surfmet.mechanics.material_spec import material_pair
@@ -137,9 +138,8 @@ def solve_rolling_contact(
             break
         except EdgeContactError:
             if size is not None or attempt == ENLARGEMENTS:
-                raise EdgeContactError(
-                    f"the contact reaches the leading edge of the {2e3 * half:.4g} mm domain: "
-                    f"give a larger --size (e.g. --size {3e3 * half:.3g}mm)") from None
+                raise_edge(f"{LEADING_EDGE}; give a larger --size (e.g. --size "
+                           f"{3e3 * half:.3g}mm)", f"the {2e3 * half:.4g} mm domain")
             half *= 1.5
             notes.append(f"the contact reached the domain's edge: domain enlarged to "
                          f"{2e3 * half:.4g} mm")
@@ -183,7 +183,6 @@ def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
     """The JSON record of a solve: every value with its unit."""
     from contact.tangential.results import edge_note
-    from contact.tangential.steady import rolling_residual
     from surfmet.units import quantity
 
     r = rc.result
@@ -211,10 +210,11 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "rolling_resistance_coefficient": quantity(
             r.rolling_resistance_coefficient(rc.radius), ""),
         # convergence, stated as ``contact`` states it (a solve that does not converge
-        # raises instead of returning)
-        "iterations": r.outer,
-        "residual": quantity(rolling_residual(r), ""),
-        "converged": True,
+        # raises instead of returning): the solve record's
+        "iterations": r.solve.iterations,
+        "residual": quantity(r.solve.residual, ""),
+        "converged": r.solve.converged,
+        "solve": r.solve.to_json(),
         "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
                    "operator_products": r.matvecs},
         "kalker_K": r.constants.K,

@@ -25,6 +25,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
+from surfmet.records.rolling import sweep_solve
 from surfmet.units import quantity
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -102,6 +103,7 @@ class ViscoRollingReport:
                          "bodies": [repr(b) for b in self.bodies],
                          "grid": st["grid"], "dx": quantity(st["dx"], "m"),
                          "roughness": st["roughness"], "notes": list(self.notes)},
+            **sweep_solve(s),
         }
 
 
@@ -185,6 +187,7 @@ class MechanismsReport:
                 "can_explain_offset": bool(reaches_offset(m.delta_eps, self.verdict.offset)),
                 "assumption": m.assumption,
                 "ranked": m.name not in BOUNDS_ONLY,
+                **sweep_solve(m.sweep),
             }
         return {"model": "all", "mechanisms": rows,
                 "rotor_loads": quantity(list(c.rotor_loads), "N"),
@@ -215,7 +218,7 @@ def microslip_sweep(radius: float, materials: Any, mu: float,
                for n in w]
         forces = np.array([r.frictional_power for r in res])
         return sweep_record("microslip", w, forces, radius,
-                            {"model": "microslip", "mu": mu, "grid": grid})
+                            {"model": "microslip", "mu": mu, "grid": grid}, res)
 
     return run
 

@@ -47,6 +47,7 @@ def contact_record(res: Any, ball: Any, plate: Any, pair: Any, *, radius: float,
         "residual": quantity(res.residual, ""),
         "converged": res.converged,
         "touches_edge": res.touches_edge,
+        "solve": res.solve.to_json(),
         "hertz": {
             "a": quantity(hz.a if hz else None, "m"),
             "delta": quantity(hz.delta if hz else None, "m"),

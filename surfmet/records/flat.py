@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from contact.record import combine
 from surfmet.records.spectrum import spectrum_record
 from surfmet.units import quantity
 
@@ -39,6 +40,7 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
                                          * s.slope_rms / pt.pressure),
                 "iterations": pt.iterations,
                 "converged": pt.converged,
+                "solve": pt.solve.to_json(),
             },
         }
         for name, m in rep.models.items():
@@ -70,6 +72,7 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
         "scan_preparation": rep.preparation,
         "caveats": [*srec["caveats"], *rep.caveats],
         "results": results,
+        "solve": bem.solve.to_json(),
         "notes": [
             *bem.notes,
             "BGT gives the area only (its load-separation law has no closed form)",
@@ -95,6 +98,8 @@ def _adhesion_header(ad: Any) -> dict[str, Any]:
         "process_zone": quantity(ad.process_zone, "m"),
         "process_zone_pixels": quantity(ad.process_zone / ad.dx, ""),
         "warnings": list(ad.warnings),
+        "solve": combine([pt.solve for pt in ad.points],
+                         "adhesive, load-controlled secant per pressure").to_json(),
         "notes": ["per pressure, 'adhesive' is the periodic adhesive solve and 'bem' the "
                   "non-adhesive one; attractive_pressure is the law's tension averaged over "
                   "the nominal area, touching points included: pressure = repulsive - "
@@ -115,4 +120,5 @@ def _adhesive_row(a: Any, bare: Any) -> dict[str, Any]:
                             "mean_gap": _rel(a.mean_gap, bare.mean_gap)},
         "solves": a.solves,
         "iterations": a.iterations,
+        "solve": a.solve.to_json(),
     }

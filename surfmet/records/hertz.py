@@ -35,11 +35,22 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
                             pixel_source(check.result.dx, check.scans.pair, check.grid)),
         "scan_preparation": check.scans.record(),
         "warnings": check.warnings,
+        "solve": hertz_check_solve(check).to_json(),
         "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
                            "p_hertz": _q(prof.p_hertz, "Pa")},
         **_models(check),
         **_adhesion(check),
     }
+
+
+def hertz_check_solve(check: Any) -> Any:
+    """The solve record of a Hertz check: the elastic solve's, or both solves' combined
+    when the elastic-plastic one was made (:func:`contact.record.combine`)."""
+    from contact.record import combine
+
+    solves = [r.solve for r in (check.elastic, check.plastic) if r is not None]
+    return combine(solves, "normal BEM, elastic then elastic-plastic"
+                   if len(solves) > 1 else None)
 
 
 def _adhesion(check: Any) -> dict[str, Any]:

@@ -42,7 +42,15 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         "local_lambda": quantity(s.local_lambda, ""),
         "model": s.model,
         "settings": settings,
+        **sweep_solve(s),
     }
+
+
+def sweep_solve(sweep: Any) -> dict[str, Any]:
+    """``{"solve": record}`` of a rolling sweep's contact solves (:attr:`contact.rolling.
+    RollingSweep.solve`), or nothing for a sweep in closed form."""
+    rec = sweep.solve
+    return {} if rec is None else {"solve": rec.to_json()}
 
 
 def tracks_record(rep: Any) -> dict[str, Any]:
