@@ -98,7 +98,7 @@ class TangentialResult:
 
     def _record(self) -> SolveRecord:
         """The solve record formed from the answer with the elastic pair's operator."""
-        from contact.tangential.influence import HalfSpacePair
+        from contact.halfspace.pair import HalfSpacePair
         from contact.tangential.solver import slip_residual
 
         g = self.grid
