@@ -71,7 +71,7 @@ def md_line_state(a: float, work: float, sigma0: float, radius: float,
 def md_line_pull_off(work: float, sigma0: float, radius: float, e_star: float) -> float:
     """The largest tension (N/m, positive) over the Maugis-Dugdale cylinder's curve."""
     a_c = (2 * work * radius ** 2 / (math.pi * e_star)) ** (1 / 3)
-    grid = a_c * np.concatenate([[1e-6], np.linspace(0.02, 3.0, 60)])
+    grid = a_c * np.concatenate([[1e-6], np.linspace(0.02, 3.0, 25)])
     loads = [md_line_state(a, work, sigma0, radius, e_star)[1] for a in grid]
     k = int(np.argmin(loads))
     lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
