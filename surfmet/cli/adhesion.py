@@ -99,24 +99,24 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
     from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
+    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
 
     check_output(args.plot, "--plot")
     bar = progress_bar(2 * args.steps, "adhesion, steps", show_progress(args))
     try:
-        run_ = adhesion(args.radius, work=args.work_of_adhesion, range_=args.range_,
-                        materials=args.materials, e_star=args.e_star,
-                        interaction=args.interaction, grid=args.grid, size=args.size,
-                        steps=args.steps, plate=args.plate, ball=args.ball,
-                        spikes=args.spikes, line=args.line,
-                        progress=lambda done, total: bar.update(1))
+        run_ = (line_adhesion if args.line else adhesion)(
+            args.radius, work=args.work_of_adhesion, range_=args.range_,
+            materials=args.materials, e_star=args.e_star, interaction=args.interaction,
+            grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
+            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
     finally:
         bar.close()
     if args.plot:
-        save_figure(plot(run_, args.plot), args.plot)
+        save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:
         for w in run_.result.warnings:
             log(f"warning: {w}")
-        emit_json(adhesion_record(run_))
+        emit_json((line_record if args.line else adhesion_record)(run_))
         return 0
     if run_.line:
         _print_line(run_)

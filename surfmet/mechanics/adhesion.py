@@ -3,9 +3,9 @@ and retracted.
 
 :func:`adhesion` resolves the modulus (a material pair or E* itself), builds the adhesion
 law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver's grid
-(:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`, or
-of :func:`contact.adhesion.line.adhesive_line` for a line contact
-(:mod:`surfmet.mechanics.adhesion_line`); :func:`adhesion_record` is its JSON record,
+(:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
+(the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
+:mod:`surfmet.mechanics.adhesion_line`); :func:`adhesion_record` is its JSON record,
 :func:`plot` its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
@@ -65,27 +65,21 @@ class Adhesion:
 def adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
              e_star: float | None = None, interaction: str = "dugdale",
              grid: int | None = None, size: float | None = None, steps: int = 40,
-             plate: Any = None, ball: Any = None, spikes: Any = SPIKES, line: bool = False,
+             plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
              progress: Callable[[int, int], None] | None = None) -> Adhesion:
-    """The approach-retraction cycle of a sphere (or, ``line=True``, a cylinder) of
-    ``radius`` on a flat.
+    """The approach-retraction cycle of a sphere of ``radius`` on a flat (a cylinder:
+    :func:`surfmet.mechanics.adhesion_line.line_adhesion`).
 
     Give exactly one of ``materials`` ("BALL,PLATE" text or two materials) and ``e_star``
     (Pa). ``plate`` and ``ball`` are scans (paths or Topography): levelled, the ball's
     sphere removed, paired and sampled onto the solver's grid
     (:func:`rough_grid`); the scans are read and checked before any solve. ``grid`` is
-    the cells per side (default 128) or, for a line, across the period (default 2048).
+    the cells per side (default 128).
     """
     from contact.adhesion.ball import adhesive_ball, default_size
 
     e_star = resolve_e_star(materials, e_star)
     law = interaction_law(interaction, work, range_)
-    if line:
-        from surfmet.mechanics.adhesion_line import line_adhesion
-
-        return Adhesion(*line_adhesion(radius, e_star, law, cells=grid, size=size,
-                                       steps=steps, plate=plate, ball=ball, spikes=spikes,
-                                       progress=progress))
     grid = 128 if grid is None else grid
     if size is None:
         size = default_size(radius, e_star, law)
@@ -199,10 +193,6 @@ def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
 
 def adhesion_record(run: Adhesion) -> dict[str, Any]:
     """The JSON record of an :class:`Adhesion` run."""
-    if run.line:
-        from surfmet.mechanics.adhesion_line import line_record
-
-        return line_record(run)
     ball = run.result
     cyc, law = ball.cycle, ball.law
     return {
@@ -238,10 +228,6 @@ def plot(run: Adhesion, path: Any = None) -> Any:
     """Load against approach, and contact radius against load, in and out."""
     from surfmet.plots._style import finish, new_figure
 
-    if run.line:
-        from surfmet.mechanics.adhesion_line import line_plot
-
-        return line_plot(run, path)
     ball = run.result
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
     for leg, style, name in ((ball.cycle.approach_leg, "C0o-", "approach"),

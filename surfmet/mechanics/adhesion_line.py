@@ -14,18 +14,31 @@ from collections.abc import Callable
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.adhesion import (
+    Adhesion,
+    interaction_law,
+    interaction_name,
+    jump_record,
+    resolve_e_star,
+    scan_too_small,
+    scans_record,
+)
+from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
 #: Cells across the period of a line contact, unless told.
 LINE_CELLS = 2048
 
 
-def line_adhesion(radius: float, e_star: float, law: Any, *, cells: int | None = None,
-                  size: float | None = None, steps: int = 40, plate: Any = None,
-                  ball: Any = None, spikes: Any = "remove",
-                  progress: Callable[[int, int], None] | None = None
-                  ) -> tuple[Any, dict[str, Any] | None]:
-    """The cycle of a cylinder of ``radius`` and the record of the plate scan used (or None).
+def line_adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
+                  e_star: float | None = None, interaction: str = "dugdale",
+                  grid: int | None = None, size: float | None = None, steps: int = 40,
+                  plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
+                  progress: Callable[[int, int], None] | None = None) -> Adhesion:
+    """The approach-retraction cycle of a cylinder of ``radius`` on a flat, per unit length,
+    with the arguments of :func:`surfmet.mechanics.adhesion.adhesion` (``grid``: cells
+    across the period, default :data:`LINE_CELLS`); ``plate`` is a scan whose middle row
+    is the roughness profile.
 
     Raises
     ------
@@ -37,6 +50,9 @@ def line_adhesion(radius: float, e_star: float, law: Any, *, cells: int | None =
 
     from contact.adhesion.line import CELL_WIDTHS, adhesive_line, line_scales
 
+    e_star = resolve_e_star(materials, e_star)
+    law = interaction_law(interaction, work, range_)
+    cells = grid
     if ball is not None:
         raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
                                 "would be removed from a cylinder): give the plate's scan only")
@@ -49,7 +65,6 @@ def line_adhesion(radius: float, e_star: float, law: Any, *, cells: int | None =
     z, scans = None, None
     if plate is not None:
         from contact.tangential.grid import sample_roughness
-        from surfmet.mechanics.adhesion import scan_too_small, scans_record
         from surfmet.mechanics.scan_preparation import prepare_scans
 
         prep = prepare_scans(plate, None, spikes=spikes)
@@ -63,7 +78,7 @@ def line_adhesion(radius: float, e_star: float, law: Any, *, cells: int | None =
         scans["profile"] = "the row through the middle of the plate scan, along its x"
     res = adhesive_line(radius, e_star, law, cells=cells, size=size, steps=steps,
                         roughness=z, progress=progress)
-    return res, scans
+    return Adhesion(res, scans)
 
 
 def _leg(branch: Any) -> dict[str, Any]:
@@ -74,8 +89,6 @@ def _leg(branch: Any) -> dict[str, Any]:
 
 def line_record(run: Any) -> dict[str, Any]:
     """The JSON record of a line-contact run (forces per unit length)."""
-    from surfmet.mechanics.adhesion import interaction_name, jump_record
-
     res = run.result
     cyc, law = res.cycle, res.law
     return {
