@@ -35,6 +35,8 @@ from contact.adhesion.line import (
 )
 from contact.errors import ContactInputError
 from surfmet.cli import main
+from surfmet.errors import SurfmetInputError
+from surfmet.model import Topography
 
 E_STAR, W, R = 1e9, 0.05, 10e-6
 
@@ -172,3 +174,38 @@ def test_cli_line_refuses_a_ball_scan(capsys, tmp_path):
                  str(tmp_path / "b.npz"), "--quiet"]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "line contact" in err[0]
+
+
+def _plate_run(radius, fn, **extra):
+    from surfmet.mechanics.adhesion_line import line_adhesion
+
+    law = DugdaleLaw(W, 4.5e6)
+    size = 8 * max(line_scales(R, E_STAR, law))
+    n, dx = 160, size / 128
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    plate = None if fn is None else Topography(fn(x[None, :], x[:, None]), dx, dx)
+    kw = {"work": W, "range_": W / 4.5e6, "e_star": E_STAR, "grid": 128, "steps": 8,
+          "size": size, **extra}
+    return line_adhesion(radius, plate=plate, **kw)
+
+
+def test_plate_scan_profile_on_a_line(coarse):
+    """The plate's middle row is the profile: a plate tilted in x and y is levelled away
+    (the smooth cylinder's cycle); a scan narrower than the period is one error."""
+    tilted = _plate_run(R, lambda u, v: 1e-3 * u + 2e-3 * v)
+    assert tilted.scans["plate"] == "(in memory)" and tilted.result.roughness_rms < 1e-15
+    assert tilted.result.cycle.pull_off_force == pytest.approx(
+        coarse.cycle.pull_off_force, rel=1e-9)
+    with pytest.raises(SurfmetInputError, match="smaller than the adhesion domain"):
+        _plate_run(R, lambda u, v: 0 * u * v, size=2 * tilted.result.size)
+
+
+@pytest.mark.campaign
+def test_grooved_plate_is_a_cylinder_of_half_the_radius():
+    """A plate grooved like a cylinder of radius R, under a cylinder of R, closes the gap
+    like a cylinder of R / 2 (curvatures add): same cells and period."""
+    grooved = _plate_run(R, lambda u, v: -u * u / (2 * R) + 0 * v)
+    half = _plate_run(R / 2, None)
+    assert grooved.result.roughness_rms > 1e-9
+    assert grooved.result.cycle.pull_off_force == pytest.approx(
+        half.result.cycle.pull_off_force, rel=5e-3)
