@@ -101,21 +101,23 @@ def test_adhesion_pulls_more_area_into_contact(rough, law):
     assert res.warnings and "grid too coarse" in res.warnings[0]  # l_pz ~ 0.1 pixel
 
 
-def test_how_much_the_secants_path_matters(rough):
-    """Every secant try is a loading step from a state short of the pressure, so the
-    state never comes off a deeper one; where the cohesive zone is 0.1 pixel the pixels
-    snap in one by one and the state still depends on the steps: starting estimates ten
-    times apart change the area by less than 5 % and the mean gap by less than 0.5 %
-    (measured over seven estimates 0.1 to 10 times the bare stiffness: 3.9 % and 0.18 %)."""
+def test_the_quasi_static_path_makes_the_answer_unique(rough):
+    """Where the cohesive zone is 0.1 pixel the pixels snap in one by one, so the state
+    depends on the loading steps. Loaded from the non-contact state, each try from the
+    furthest state short of the pressure and each step split while the area changes by
+    more than 10 %, starting estimates ten times apart give the same contact set (with
+    unsplit steps they changed the area by up to 3.9 % and overestimated it by 10-15 %:
+    0.0186-0.0193 against 0.0168 here) and the mean gap within 1e-5."""
     z, p, bem = rough
     law = ExponentialLaw(0.2, 5e-9)
     pts = [adhesive_flat(z.max() - z, 1e-6, E_STAR, law, p[:1], bem.mean_gap[:1],
-                         [k * bem.stiffness[0]]).points[0] for k in (0.3, 1.0, 3.0)]
+                         [k * bem.stiffness[0]]).points[0] for k in (0.3, 3.0)]
     areas = np.array([pt.area_fraction for pt in pts])
     gaps = np.array([pt.mean_gap for pt in pts])
     assert np.all(areas > 1.2 * bem.area_fraction[0])
-    assert areas.max() / areas.min() - 1 < 0.05
-    assert gaps.max() / gaps.min() - 1 < 5e-3
+    assert areas[0] == areas[1]
+    assert gaps.max() / gaps.min() - 1 < 1e-5
+    assert all(pt.solves > 5 for pt in pts)  # the path was split into small steps
 
 
 def test_bad_starts_are_one_input_error(rough):

@@ -7,6 +7,7 @@
 - :mod:`contact.adhesion.cycle`: displacement-controlled approach and retraction, pull-off,
   jumps and hysteresis;
 - :mod:`contact.adhesion.ball`: the sphere on a flat (:func:`adhesive_ball`);
+- :mod:`contact.adhesion.line`: the cylinder on a flat in plane strain, per unit length;
 - :mod:`contact.adhesion.flat`: a rough periodic surface on a flat at prescribed nominal
   pressures (load control around the solve);
 - :mod:`contact.adhesion.stickiness`: Pastewka & Robbins' stickiness criterion;

@@ -90,18 +90,23 @@ MAX_AREA_CHANGE = 0.1
 MAX_SPLITS = 5
 
 
-def _advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
-             target: float, tol: float, depth: int = 0) -> list[tuple[float, AdhesiveState]]:
-    """Solve at ``target`` from ``previous``; split the step while the area leaps."""
+def advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
+            target: float, tol: float, depth: int = 0, *,
+            max_change: float = MAX_AREA_CHANGE) -> list[tuple[float, AdhesiveState]]:
+    """Solve at ``target`` from ``previous`` (approach, state); split the step in two while
+    the touching area changes by more than ``max_change`` of it (up to
+    :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order."""
     st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
                         tol=tol)
     if previous is None or depth >= MAX_SPLITS:
         return [(target, st)]
     a0, a1 = previous[1].contact_area, st.contact_area
-    if abs(a1 - a0) <= MAX_AREA_CHANGE * max(a0, a1):
+    if abs(a1 - a0) <= max_change * max(a0, a1):
         return [(target, st)]
-    middle = _advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1)
-    return middle + _advance(problem, middle[-1], target, tol, depth + 1)
+    middle = advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1,
+                     max_change=max_change)
+    return middle + advance(problem, middle[-1], target, tol, depth + 1,
+                            max_change=max_change)
 
 
 def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
@@ -121,7 +126,7 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
         d0, g0 = initial
         previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
     for k, d in enumerate(approaches):
-        done += _advance(problem, previous, float(d), tol)
+        done += advance(problem, previous, float(d), tol)
         previous = done[-1]
         if progress is not None:
             progress(k + 1, len(approaches))

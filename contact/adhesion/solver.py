@@ -19,9 +19,10 @@ ends makes the next solve jump to another one: that is the jump-in and jump-out.
 The mean displacement (the q = 0 mode, free in a periodic body) is held by a spring as
 stiff as the stiffest Fourier mode, so that the conditioning is that of the elastic
 operator; the spring's stretch P / (k A) is removed from the reported approach, which is
-measured from the mean plane of the deformed surface. Pi is minimised with L-BFGS-B
-(Byrd, Lu, Nocedal & Zhu 1995, SIAM J. Sci. Comput. 16:1190) in units of the law's range
-and peak tension.
+measured from the mean plane of the deformed surface. Pi is minimised by a projected
+gradient with Nesterov acceleration and adaptive restart (Beck & Teboulle 2009, SIAM J.
+Imaging Sci. 2:183; O'Donoghue & Candes 2015, Found. Comput. Math. 15:715), the step the
+inverse of the stiffest mode.
 """
 
 from __future__ import annotations
@@ -57,7 +58,7 @@ class AdhesiveState:
         Largest violation of equilibrium, relative to the larger of the law's peak
         tension and the largest compressive pressure.
     iterations : int
-        L-BFGS-B iterations.
+        Projected-gradient iterations.
     solve : SolveRecord
         The solve record (:mod:`contact.record`; the domain is periodic: no edge).
     """
@@ -132,12 +133,12 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
         Largest violation of equilibrium (projected gradient), relative to the larger of
         the law's peak tension and the largest compressive pressure.
     max_iter : int
-        L-BFGS-B iteration limit.
+        Iteration limit of the projected gradient.
 
     Raises
     ------
     ConvergenceError
-        When L-BFGS-B stops before the tolerance.
+        When the iteration limit is reached before the tolerance.
     """
     h, law = problem.gap0, problem.law
     if initial is not None and np.shape(initial) != h.shape:

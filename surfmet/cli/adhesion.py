@@ -1,4 +1,5 @@
-"""``surfmet adhesion``: approach and retraction of an adhesive sphere on a flat."""
+"""``surfmet adhesion``: approach and retraction of an adhesive sphere (or cylinder) on a
+flat."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from surfmet.cli._common import (
     _argtype,
     add_json_flag,
     add_quiet_flag,
+    add_spikes_argument,
     check_output,
     emit_json,
     log,
@@ -25,6 +27,10 @@ EPILOG = """examples:
       --range 1nm --interaction exponential --json
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 0.05J/m2 --range 5nm \\
       --grid 192 --plot cycle.png
+  surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm \\
+      --plate plate.x3p --size 2um
+  surfmet adhesion --line --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 \\
+      --range 3nm --json
 
 The sphere is a paraboloid in the middle of a periodic cell (--size, default four times
 the larger of the JKR contact radius at zero load and the interaction zone). --range is
@@ -33,6 +39,16 @@ t(g) = (w / rho) exp(-g / rho). The pull-off force is the largest tension on the
 (displacement control). A grid that leaves the cohesive zone pi E* w / (4 sigma0^2) fewer
 than ten pixels wide is warned about: the pull-off then comes out too large (+5 % at
 13 pixels, +12 % at 6.6, +81 % at half a pixel, measured at Maugis lambda 1 and 5).
+
+--plate and --ball add the scans' roughness: the plate levelled, the ball's best-fit
+sphere removed, both paired and sampled onto the solver's grid around the middle of the
+scans, which must cover the periodic cell (--size).
+
+--line: a cylinder of radius --radius in plane strain (its axis along the scan's y), on
+a periodic line of --grid cells (default 2048) across --size (default 16 times the larger
+of the JKR half-width at zero load and the interaction's reach). Forces are per unit
+length (N/m), energies J/m; the pull-off is compared with JKR's 3 (pi w^2 E* R / 16)^(1/3)
+and with the rigid cylinder's. With --plate the roughness is the scan's middle row.
 """
 
 
@@ -61,11 +77,19 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    dest="range_", help="interaction range, e.g. 2nm")
     p.add_argument("--interaction", choices=INTERACTIONS, default="dugdale",
                    help="adhesion law (default dugdale)")
-    p.add_argument("--grid", type=int, default=128, metavar="N",
-                   help="cells per side (default 128)")
+    p.add_argument("--grid", type=int, default=None, metavar="N",
+                   help="cells per side (default 128; with --line, across the period, "
+                   "default 2048)")
+    p.add_argument("--line", action="store_true",
+                   help="a cylinder of radius --radius (plane strain), per unit length")
     p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
     p.add_argument("--steps", type=int, default=40, metavar="K",
                    help="approach steps on each leg (default 40)")
+    p.add_argument("--plate", metavar="FILE",
+                   help="scan of the plate (levelled; its roughness enters the gap)")
+    p.add_argument("--ball", metavar="FILE",
+                   help="scan of the ball (its best-fit sphere is removed)")
+    add_spikes_argument(p)
     p.add_argument("--plot", metavar="OUT.png", help="plot the load-approach cycle")
     add_json_flag(p)
     add_quiet_flag(p)
@@ -76,31 +100,66 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
     from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
+    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
 
     check_output(args.plot, "--plot")
     bar = progress_bar(2 * args.steps, "adhesion, steps", show_progress(args))
     try:
-        ball = adhesion(args.radius, work=args.work_of_adhesion, range_=args.range_,
-                        materials=args.materials, e_star=args.e_star,
-                        interaction=args.interaction, grid=args.grid, size=args.size,
-                        steps=args.steps, progress=lambda done, total: bar.update(1))
+        run_ = (line_adhesion if args.line else adhesion)(
+            args.radius, work=args.work_of_adhesion, range_=args.range_,
+            materials=args.materials, e_star=args.e_star, interaction=args.interaction,
+            grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
+            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
     finally:
         bar.close()
     if args.plot:
-        save_figure(plot(ball, args.plot), args.plot)
+        save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:
-        for w in ball.warnings:
+        for w in run_.result.warnings:
             log(f"warning: {w}")
-        emit_json(adhesion_record(ball))
+        emit_json((line_record if args.line else adhesion_record)(run_))
         return 0
-    _print(ball)
+    if run_.line:
+        _print_line(run_)
+    else:
+        _print(run_)
     return 0
 
 
-def _print(ball: Any) -> None:
+def _print_line(run_: Any) -> None:
+    """The text summary of a line-contact cycle."""
+    from surfmet.units import format_length
+
+    res = run_.result
+    cyc, law = res.cycle, res.law
+    print(f"cylinder        R = {format_length(res.radius)}, E* = {res.e_star / 1e9:.4g} GPa "
+          "(plane strain, per unit length)")
+    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
+          f"peak tension {law.peak / 1e6:.4g} MPa")
+    print(f"Maugis lambda   {res.maugis_parameter:.4g}")
+    print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
+          f"period {format_length(res.size)}")
+    print(f"pull-off force  {cyc.pull_off_force:.5g} N/m (JKR {res.jkr_pull_off:.5g} N/m, "
+          f"rigid cylinder {res.rigid_pull_off:.5g} N/m)")
+    for name, jump in (("jump-in", cyc.jump_in), ("jump-out", cyc.jump_out)):
+        if jump is None:
+            print(f"{name:15s} none within the approach range")
+        else:
+            print(f"{name:15s} at approach {format_length(jump.approach)}, load "
+                  f"{jump.load_before:.4g} -> {jump.load_after:.4g} N/m")
+    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J/m lost in the cycle")
+    if run_.scans is not None:
+        print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
+              f"{format_length(run_.scans['roughness_rms']['value'])}")
+    for w in res.warnings:
+        print(f"warning         {w}")
+
+
+def _print(run_: Any) -> None:
     """The text summary of a cycle."""
     from surfmet.units import format_length
 
+    ball = run_.result
     cyc, law = ball.cycle, ball.law
     print(f"sphere          R = {format_length(ball.radius)}, E* = {ball.e_star / 1e9:.4g} GPa")
     print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
@@ -120,5 +179,9 @@ def _print(ball: Any) -> None:
                   f"{jump.load_after * 1e6:.4g} uN{'' if jump.abrupt else ' (smooth)'}")
     print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle")
     print_solve(cyc.solve, "solve          ")
+    if run_.scans is not None:
+        print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
+              f"{run_.scans['ball'] or '-'}; roughness rms on the grid "
+              f"{format_length(run_.scans['roughness_rms']['value'])}")
     for w in ball.warnings:
         print(f"warning         {w}")

@@ -1,8 +1,11 @@
-"""``surfmet adhesion``'s facade: an adhesive sphere on a flat, approached and retracted.
+"""``surfmet adhesion``'s facade: an adhesive sphere (or cylinder) on a flat, approached
+and retracted.
 
 :func:`adhesion` resolves the modulus (a material pair or E* itself), builds the adhesion
-law (:mod:`contact.adhesion.laws`) and runs the cycle of
-:func:`contact.adhesion.ball.adhesive_ball`; :func:`adhesion_record` is its JSON record,
+law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver's grid
+(:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
+(the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
+:mod:`surfmet.mechanics.adhesion_line`); :func:`adhesion_record` is its JSON record,
 :func:`plot` its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
@@ -10,9 +13,11 @@ the exponential one.
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
 INTERACTIONS = ("dugdale", "exponential")
@@ -35,25 +40,143 @@ def interaction_name(law: Any) -> str:
     return "dugdale" if hasattr(law, "sigma0") else "exponential"
 
 
+@dataclass(frozen=True, eq=False)
+class Adhesion:
+    """What ``surfmet adhesion`` computed: the cycle and the scans it was run on.
+
+    Attributes
+    ----------
+    result : AdhesiveBall or AdhesiveLine
+        :class:`contact.adhesion.ball.AdhesiveBall` (a sphere) or
+        :class:`contact.adhesion.line.AdhesiveLine` (a cylinder, per unit length).
+    scans : dict or None
+        What scans were used and what was done to them (None: smooth surfaces).
+    """
+
+    result: Any
+    scans: dict[str, Any] | None = None
+
+    @property
+    def line(self) -> bool:
+        """Whether this is a line contact (results per unit length)."""
+        return hasattr(self.result, "cells")
+
+
 def adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
-             e_star: float | None = None, interaction: str = "dugdale", grid: int = 128,
-             size: float | None = None, steps: int = 40,
-             progress: Callable[[int, int], None] | None = None) -> Any:
-    """The approach-retraction cycle of a sphere of ``radius`` on a flat.
+             e_star: float | None = None, interaction: str = "dugdale",
+             grid: int | None = None, size: float | None = None, steps: int = 40,
+             plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
+             progress: Callable[[int, int], None] | None = None) -> Adhesion:
+    """The approach-retraction cycle of a sphere of ``radius`` on a flat (a cylinder:
+    :func:`surfmet.mechanics.adhesion_line.line_adhesion`).
 
     Give exactly one of ``materials`` ("BALL,PLATE" text or two materials) and ``e_star``
-    (Pa). Returns a :class:`contact.adhesion.ball.AdhesiveBall`.
+    (Pa). ``plate`` and ``ball`` are scans (paths or Topography): levelled, the ball's
+    sphere removed, paired and sampled onto the solver's grid
+    (:func:`rough_grid`); the scans are read and checked before any solve. ``grid`` is
+    the cells per side (default 128).
     """
-    from contact.adhesion.ball import adhesive_ball
+    from contact.adhesion.ball import adhesive_ball, default_size
+
+    e_star = resolve_e_star(materials, e_star)
+    law = interaction_law(interaction, work, range_)
+    grid = 128 if grid is None else grid
+    if size is None:
+        size = default_size(radius, e_star, law)
+    z, scans = rough_grid(plate, ball, grid, size, spikes)
+    res = adhesive_ball(radius, e_star, law, grid=grid, size=size, steps=steps,
+                        roughness=z, progress=progress)
+    return Adhesion(res, scans)
+
+
+def resolve_e_star(materials: Any, e_star: float | None) -> float:
+    """E* (Pa) from exactly one of a material pair and E* itself (resolved once, by
+    :func:`surfmet.mechanics.material_spec.material_pair`)."""
     from surfmet.mechanics.material_spec import material_pair
 
     if (materials is None) == (e_star is None):
         raise SurfmetInputError("give exactly one of the materials and E*")
     if e_star is None:
         e_star = material_pair(materials).e_star
-    law = interaction_law(interaction, work, range_)
-    return adhesive_ball(radius, e_star, law, grid=grid, size=size, steps=steps,
-                         progress=progress)
+    return float(e_star)
+
+
+def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIKES
+               ) -> tuple[Any, dict[str, Any] | None]:
+    """The scans' composite roughness on the solver's ``grid`` x ``grid`` cells of side
+    ``size`` (m), centred on the middle of the scans, and the record of the scans.
+
+    The scans are prepared as for every contact command
+    (:func:`surfmet.mechanics.scan_preparation.prepare_scans`: spikes, the plate levelled,
+    the ball's best-fit sphere removed, both paired on one square grid, so non-square
+    pixels are resampled) and sampled with the engine's
+    :func:`contact.sampling.sample_roughness`. (None, None) without scans.
+
+    Raises
+    ------
+    SurfmetInputError
+        A scan smaller than the domain, or a grid that is not an integer of at least 16.
+    """
+    if plate is None and ball is None:
+        return None, None
+    from contact.geometry import max_centred_cells
+    from contact.grid import centred_grid
+    from contact.sampling import sample_roughness
+    from surfmet.mechanics.scan_preparation import prepare_scans
+
+    if int(grid) != grid or grid < 16:
+        raise SurfmetInputError(f"the grid must be an integer of at least 16, got {grid!r}")
+    prep = prepare_scans(plate, ball, spikes=spikes)
+    pair = prep.pair
+    ny, nx = pair.roughness.shape
+    centre = (0.5 * (nx - 1) * pair.dx, 0.5 * (ny - 1) * pair.dy)
+    dx = size / grid
+    if max_centred_cells(pair.roughness.shape, pair.dx, pair.dy, centre, dx) < grid:
+        raise SurfmetInputError(scan_too_small(pair, size))
+    z = sample_roughness(pair.roughness, pair.dx, pair.dy, centred_grid(int(grid), dx),
+                         centre=centre)
+    return z, scans_record(prep, plate, ball, dx, z)
+
+
+def scan_too_small(pair: Any, size: float) -> str:
+    """The one line refusing scans smaller than the domain of side ``size`` (m)."""
+    ny, nx = pair.roughness.shape
+    return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} um "
+            f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} um a side): "
+            "give a smaller --size or larger scans")
+
+
+def scans_record(prep: Any, plate: Any, ball: Any, dx: float, z: Any) -> dict[str, Any]:
+    """What scans were used, what was done to them, and the roughness on the grid."""
+    import math
+
+    from surfmet.units import quantity
+
+    pair = prep.pair
+    notes = list(prep.notes)
+    if dx < pair.dx * (1 - 1e-9):
+        notes.append(f"the solver's pixel ({dx * 1e9:.4g} nm) is finer than the scans' "
+                     f"({pair.dx * 1e9:.4g} nm): the roughness is interpolated between "
+                     "measured points")
+    record = {
+        "plate": _scan_name(plate),
+        "ball": _scan_name(ball),
+        "pixel": quantity(pair.dx, "m"),
+        "roughness_rms": quantity(float(math.sqrt(float(((z - z.mean()) ** 2).mean()))),
+                                  "m"),
+        "preparation": prep.record(),
+    }
+    record["preparation"]["notes"] = notes
+    return record
+
+
+def _scan_name(scan: Any) -> str | None:
+    """A scan's file name, "(in memory)" for a Topography, None when not given."""
+    if scan is None:
+        return None
+    from surfmet.model import Topography
+
+    return "(in memory)" if isinstance(scan, Topography) else str(scan)
 
 
 def _leg(branch: Any) -> dict[str, Any]:
@@ -62,18 +185,21 @@ def _leg(branch: Any) -> dict[str, Any]:
             "contact_radius": quantity(branch.contact_radius, "m")}
 
 
-def _jump(jump: Any) -> dict[str, Any] | None:
+def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
+    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line)."""
     if jump is None:
         return None
     return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
-            "load_before": quantity(jump.load_before, "N"),
-            "load_after": quantity(jump.load_after, "N"), "abrupt": jump.abrupt}
+            "load_before": quantity(jump.load_before, force_unit),
+            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt}
 
 
-def adhesion_record(ball: Any) -> dict[str, Any]:
-    """The JSON record of an :class:`~contact.adhesion.ball.AdhesiveBall`."""
+def adhesion_record(run: Adhesion) -> dict[str, Any]:
+    """The JSON record of an :class:`Adhesion` run."""
+    ball = run.result
     cyc, law = ball.cycle, ball.law
     return {
+        "geometry": "sphere",
         "radius": quantity(ball.radius, "m"),
         "e_star": quantity(ball.e_star, "Pa"),
         "interaction": interaction_name(law),
@@ -86,8 +212,8 @@ def adhesion_record(ball: Any) -> dict[str, Any]:
         "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
         "jkr_pull_off_force": quantity(ball.jkr_pull_off, "N"),
         "dmt_pull_off_force": quantity(ball.dmt_pull_off, "N"),
-        "jump_in": _jump(cyc.jump_in),
-        "jump_out": _jump(cyc.jump_out),
+        "jump_in": jump_record(cyc.jump_in),
+        "jump_out": jump_record(cyc.jump_out),
         "hysteresis_energy": quantity(cyc.hysteresis_energy, "J"),
         "grid": {"cells": ball.grid, "size": quantity(ball.size, "m"),
                  "pixel": quantity(ball.dx, "m"), "periodic": True,
@@ -97,14 +223,16 @@ def adhesion_record(ball: Any) -> dict[str, Any]:
                                      + cyc.retraction_leg.iterations.sum())},
         "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
+        "scans": run.scans,
         "warnings": list(ball.warnings),
     }
 
 
-def plot(ball: Any, path: Any = None) -> Any:
+def plot(run: Adhesion, path: Any = None) -> Any:
     """Load against approach, and contact radius against load, in and out."""
     from surfmet.plots._style import finish, new_figure
 
+    ball = run.result
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
     for leg, style, name in ((ball.cycle.approach_leg, "C0o-", "approach"),
                              (ball.cycle.retraction_leg, "C3s-", "retraction")):

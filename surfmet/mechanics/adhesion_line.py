@@ -1,0 +1,142 @@
+"""``surfmet adhesion --line``: an adhesive cylinder on a flat, per unit length.
+
+:func:`line_adhesion` samples the plate scan's roughness along the cylinder's cross-section
+and runs :func:`contact.adhesion.line.adhesive_line`; :func:`line_record` is the JSON record
+(forces per unit length in N/m, energies in J/m), :func:`line_plot` the figure. The
+cylinder's axis lies along the scan's y; the profile is the row through the middle of the
+levelled plate, sampled by the engine's
+:func:`contact.tangential.grid.sample_roughness` (as ``rolling-contact --line`` does).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.adhesion import (
+    Adhesion,
+    interaction_law,
+    interaction_name,
+    jump_record,
+    resolve_e_star,
+    scan_too_small,
+    scans_record,
+)
+from surfmet.mechanics.scan_preparation import SPIKES
+from surfmet.units import quantity
+
+#: Cells across the period of a line contact, unless told.
+LINE_CELLS = 2048
+
+
+def line_adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
+                  e_star: float | None = None, interaction: str = "dugdale",
+                  grid: int | None = None, size: float | None = None, steps: int = 40,
+                  plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
+                  progress: Callable[[int, int], None] | None = None) -> Adhesion:
+    """The approach-retraction cycle of a cylinder of ``radius`` on a flat, per unit length,
+    with the arguments of :func:`surfmet.mechanics.adhesion.adhesion` (``grid``: cells
+    across the period, default :data:`LINE_CELLS`); ``plate`` is a scan whose middle row
+    is the roughness profile.
+
+    Raises
+    ------
+    SurfmetInputError
+        A ball scan (a cylinder's scan is not a sphere's cap), or a plate scan narrower than
+        the period.
+    """
+    import numpy as np
+
+    from contact.adhesion.line import CELL_WIDTHS, adhesive_line, line_scales
+
+    e_star = resolve_e_star(materials, e_star)
+    law = interaction_law(interaction, work, range_)
+    cells = grid
+    if ball is not None:
+        raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
+                                "would be removed from a cylinder): give the plate's scan only")
+    cells = LINE_CELLS if cells is None else cells
+    if int(cells) != cells or cells < 64:
+        raise SurfmetInputError(f"the cells of a line contact must be an integer of at least "
+                                f"64, got {cells!r}")
+    if size is None:
+        size = CELL_WIDTHS * max(line_scales(radius, e_star, law))
+    z, scans = None, None
+    if plate is not None:
+        from contact.grid import Grid
+        from contact.sampling import sample_roughness
+        from surfmet.mechanics.scan_preparation import prepare_scans
+
+        prep = prepare_scans(plate, None, spikes=spikes)
+        pair = prep.pair
+        dx = size / cells
+        x = (np.arange(cells) - cells // 2) * dx
+        if (pair.roughness.shape[1] - 1) * pair.dx < 2.0 * max(-x[0], x[-1]):
+            raise SurfmetInputError(scan_too_small(pair, size))
+        z = sample_roughness(pair.roughness, pair.dx, pair.dy,
+                             Grid(x=x, y=np.zeros(1), pitch=(dx, dx)), average=False)[0]
+        scans = scans_record(prep, plate, None, dx, z)
+        scans["profile"] = "the row through the middle of the plate scan, along its x"
+    res = adhesive_line(radius, e_star, law, cells=cells, size=size, steps=steps,
+                        roughness=z, progress=progress)
+    return Adhesion(res, scans)
+
+
+def _leg(branch: Any) -> dict[str, Any]:
+    return {"approach": quantity(branch.surface_approach, "m"),
+            "load": quantity(branch.load, "N/m"),
+            "contact_half_width": quantity(0.5 * branch.contact_area, "m")}
+
+
+def line_record(run: Any) -> dict[str, Any]:
+    """The JSON record of a line-contact run (forces per unit length)."""
+    res = run.result
+    cyc, law = res.cycle, res.law
+    return {
+        "geometry": "line",
+        "radius": quantity(res.radius, "m"),
+        "e_star": quantity(res.e_star, "Pa"),
+        "interaction": interaction_name(law),
+        "work_of_adhesion": quantity(law.work, "J/m^2"),
+        "range": quantity(law.range, "m"),
+        "peak_tension": quantity(law.peak, "Pa"),
+        "maugis_parameter": quantity(res.maugis_parameter, ""),
+        "pull_off_force": quantity(cyc.pull_off_force, "N/m"),
+        "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
+        "jkr_pull_off_force": quantity(res.jkr_pull_off, "N/m"),
+        "rigid_pull_off_force": quantity(res.rigid_pull_off, "N/m"),
+        "jump_in": jump_record(cyc.jump_in, "N/m"),
+        "jump_out": jump_record(cyc.jump_out, "N/m"),
+        "hysteresis_energy": quantity(cyc.hysteresis_energy, "J/m"),
+        "grid": {"cells": res.cells, "size": quantity(res.size, "m"),
+                 "pixel": quantity(res.dx, "m"), "periodic": True, "plane_strain": True,
+                 "process_zone": quantity(res.process_zone, "m"),
+                 "process_zone_pixels": quantity(res.process_zone / res.dx, "")},
+        "solver": {"iterations": int(cyc.approach_leg.iterations.sum()
+                                     + cyc.retraction_leg.iterations.sum())},
+        "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
+        "scans": run.scans,
+        "warnings": list(res.warnings),
+    }
+
+
+def line_plot(run: Any, path: Any = None) -> Any:
+    """Load per length against approach, and contact half-width against load."""
+    from surfmet.plots._style import finish, new_figure
+
+    res = run.result
+    fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
+    for leg, style, name in ((res.cycle.approach_leg, "C0o-", "approach"),
+                             (res.cycle.retraction_leg, "C3s-", "retraction")):
+        a1.plot(leg.surface_approach * 1e9, leg.load, style, ms=3, label=name)
+        a2.plot(leg.load, 0.5e6 * leg.contact_area, style, ms=3, label=name)
+    a1.axhline(-res.jkr_pull_off, color="0.5", ls=":", label="JKR pull-off")
+    a1.set_xlabel("approach (nm)")
+    a1.set_ylabel("load per length (N/m)")
+    a2.set_xlabel("load per length (N/m)")
+    a2.set_ylabel("contact half-width (µm)")
+    a1.set_title(f"cylinder, Maugis lambda = {res.maugis_parameter:.3g}")
+    for ax in (a1, a2):
+        ax.legend(fontsize=8)
+    return finish(fig, path)
