@@ -40,7 +40,7 @@ from adhesion_cases import (
 )
 from johnson_wavy import mean_pressure
 from johnson_wavy import pull_off as johnson_pull_off
-from maugis_reference import md_load_at_radius, md_pull_off
+from maugis_reference import md_curve, md_load_at_radius, md_pull_off
 
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.cycle import refine_pull_off, run_branch
@@ -102,13 +102,25 @@ def test_wavy_jkr_pull_off_converges_to_johnson():
     assert 2 * fine - coarse == pytest.approx(truth, rel=0.03)  # measured +2.0 %
 
 
-def _md_errors(lam: float, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """(A, P - P_MD(A)) over the retraction states with 0.3 <= A <= 1.9 (Maugis units)."""
+def _md_retraction(lam: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(a, P) of the retraction states in Maugis' units (a over l_M, P over pi w R)."""
     prob, br, gaps = retraction(lam, n, steps=24)
     a = np.array([contact_radius(g, prob.dx) for g in gaps]) / A_SCALE
-    load = br.load / P_SCALE
-    keep = (a >= 0.3) & (a <= 1.9)
-    return a[keep], load[keep] - md_load_at_radius(lam, a[keep])
+    return a, br.load / P_SCALE
+
+
+def _zero_load_radius(a: np.ndarray, load: np.ndarray) -> float:
+    """The contact radius where the retraction's load first turns tensile (interpolated)."""
+    k = int(np.flatnonzero((load[:-1] > 0) & (load[1:] <= 0))[0])
+    return float(a[k] + (a[k + 1] - a[k]) * load[k] / (load[k] - load[k + 1]))
+
+
+def _md_zero_load_radius(lam: float) -> float:
+    """Maugis-Dugdale's contact radius at zero load (over l_M)."""
+    m = 1.0 + np.logspace(-9, 3, 40001)
+    big_a, p = md_curve(lam, m)
+    k = int(np.flatnonzero(np.diff(np.sign(p)))[0])
+    return float(big_a[k] + (big_a[k + 1] - big_a[k]) * p[k] / (p[k] - p[k + 1]))
 
 
 @pytest.mark.slow
@@ -121,13 +133,18 @@ def test_maugis_load_against_contact_radius(lam):
     (measured 0.178 -> 0.085 at lambda 1, 0.084 -> 0.040 at 0.3); the error is a bias (the
     pinned contact is too large for its load) whose Richardson extrapolation, 2 e_96 - e_48
     of the mean signed error, is zero to 0.02 pi w R (measured +0.003 and -0.008). No single
-    grid here is within 2 % of pi w R pointwise."""
+    grid here is within 2 % of pi w R pointwise. The contact radius at zero load is
+    Maugis' to 2 % on 96^2."""
     rms, bias = [], []
     for n in (48, 96):
-        a, err = _md_errors(lam, n)
-        assert a.size >= 8
+        a, load = _md_retraction(lam, n)
+        keep = (a >= 0.3) & (a <= 1.9)
+        assert keep.sum() >= 8
+        err = load[keep] - md_load_at_radius(lam, a[keep])
         rms.append(float(np.sqrt(np.mean(err ** 2))))
         bias.append(float(err.mean()))
+    # the contact radius at zero load, 96^2: measured +0.3 % (0.3) and +0.9 % (1)
+    assert _zero_load_radius(a, load) == pytest.approx(_md_zero_load_radius(lam), rel=0.02)
     assert rms[1] < 0.12
     assert rms[1] < 0.75 * rms[0]
     assert abs(2 * bias[1] - bias[0]) < 0.02
@@ -171,7 +188,13 @@ def test_cycle_energy_balance(case):
 
 def test_dmt_and_jkr_pull_offs_bracket_maugis():
     """The truth used above: Maugis' pull-off runs from DMT's 2 pi w R (lambda -> 0) to
-    JKR's 3 pi w R / 2 (lambda -> infinity), 1.1 % above JKR at lambda = 3."""
+    JKR's 3 pi w R / 2 (lambda -> infinity), 1.1 % above JKR at lambda = 3; its contact
+    radius at zero load tends to JKR's a0 = (9 pi w R^2 / (2 E*))^(1/3) = 6^(1/3) l_M
+    (0.9 % below at lambda = 5)."""
     assert md_pull_off(0.01) == pytest.approx(2.0, rel=0.01)
     assert md_pull_off(20.0) == pytest.approx(1.5, rel=0.001)
     assert md_pull_off(3.0) == pytest.approx(1.5, rel=0.012)
+    a0 = (4.5 * math.pi * W * R * R / E_STAR) ** (1 / 3) / A_SCALE
+    assert a0 == pytest.approx(6 ** (1 / 3), rel=1e-12)
+    assert _md_zero_load_radius(20.0) == pytest.approx(a0, rel=1e-3)
+    assert _md_zero_load_radius(5.0) == pytest.approx(a0, rel=0.01)
