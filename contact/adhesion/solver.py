@@ -19,9 +19,16 @@ ends makes the next solve jump to another one: that is the jump-in and jump-out.
 The mean displacement (the q = 0 mode, free in a periodic body) is held by a spring as
 stiff as the stiffest Fourier mode, so that the conditioning is that of the elastic
 operator; the spring's stretch P / (k A) is removed from the reported approach, which is
-measured from the mean plane of the deformed surface. Pi is minimised with L-BFGS-B
-(Byrd, Lu, Nocedal & Zhu 1995, SIAM J. Sci. Comput. 16:1190) in units of the law's range
-and peak tension.
+measured from the mean plane of the deformed surface. Pi is minimised by a projected
+gradient with Nesterov momentum (FISTA, Beck & Teboulle 2009, SIAM J. Imaging Sci. 2:183),
+the momentum restarted whenever it points uphill (O'Donoghue & Candes 2015, Found. Comput.
+Math. 15:715), with the step 1 / (the largest stiffness).
+
+Discretisation: a cell either touches (zero gap) or not and carries a uniform pressure,
+so the contact edge is pinned by the pixels; on retraction the contact stays too large
+and the tension too high, by an error first order in the pixel over the cohesive zone
+l = pi E* w / (4 sigma0^2): about 0.7 dx / l on the pull-off of a sphere and of a wavy
+surface alike (benchmarks/adhesion_convergence.py; tests/test_adhesion_validation.py).
 """
 
 from __future__ import annotations
@@ -56,7 +63,7 @@ class AdhesiveState:
         Largest violation of equilibrium, relative to the larger of the law's peak
         tension and the largest compressive pressure.
     iterations : int
-        L-BFGS-B iterations.
+        Projected-gradient iterations.
     """
 
     gap: np.ndarray
@@ -128,12 +135,12 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
         Largest violation of equilibrium (projected gradient), relative to the larger of
         the law's peak tension and the largest compressive pressure.
     max_iter : int
-        L-BFGS-B iteration limit.
+        Iteration limit.
 
     Raises
     ------
     ConvergenceError
-        When L-BFGS-B stops before the tolerance.
+        When the iteration limit is reached before the tolerance.
     """
     h, law = problem.gap0, problem.law
     if initial is not None and np.shape(initial) != h.shape:
