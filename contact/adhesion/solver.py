@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.adhesion.laws import InteractionLaw
+from contact.adhesion import kernels
+from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.errors import ContactInputError, ConvergenceError
 from contact.halfspace.influence import periodic_kernel_spectrum
 
@@ -147,19 +148,23 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
         raise ContactInputError(
             f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
     g = np.maximum(h - approach if initial is None else np.asarray(initial, dtype=float), 0.0)
+    g = np.ascontiguousarray(g)
     step = 1.0 / problem.spring  # 1 / the largest stiffness: the quadratic's Lipschitz constant
-    y, theta = g.copy(), 1.0
+    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
+    reach = law.range
+    y, g_new, theta = g.copy(), np.empty_like(g), 1.0
+    flat_y, flat_g, flat_new = y.ravel(), g.ravel(), g_new.ravel()
     for it in range(1, max_iter + 1):
         p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(y - h + approach), s=h.shape)
-        grad = p + law.traction(y)
-        if _violation(y, grad).max() <= tol * max(law.peak, float(p.max())):
+        viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
+                                                reach, step, flat_new)
+        if viol <= tol * max(law.peak, pmax):
             return _state(problem, y, approach, it, tol)
-        g_new = np.maximum(y - step * grad, 0.0)
-        if np.vdot(grad, g_new - g) > 0.0:  # momentum points uphill: restart it
+        if dot > 0.0:  # momentum points uphill: restart it
             theta = 1.0
         theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
-        y = np.maximum(g_new + ((theta - 1.0) / theta_new) * (g_new - g), 0.0)
-        g, theta = g_new, theta_new
+        kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
+        theta = theta_new
     return _state(problem, y, approach, max_iter, tol)
 
 
