@@ -19,6 +19,8 @@ Measured (2 shared CPU cores, 2026-11-27; error of the pull-off against the trut
     sphere lam=1     128    13.21    1.6853   1.6007    +5.28
     sphere lam=2     128     3.30    1.7830   1.5346   +16.19
     sphere lam=2     256     6.60    1.6659   1.5346    +8.55
+    sphere lam=3     256     2.94    1.7831   1.5168   +17.56
+    sphere lam=3     512     5.87    1.6457   1.5168    +8.50
     wavy alpha=0.3   512     2.56    0.12162  0.09594  +26.76
     wavy alpha=0.3  1024     5.12    0.11008  0.09594  +14.73
     wavy alpha=0.3  2048    10.24    0.10396  0.09594   +8.36
@@ -26,9 +28,10 @@ Measured (2 shared CPU cores, 2026-11-27; error of the pull-off against the trut
 (sphere loads over pi w R, wavy over p* = pi E* Delta / L). The error is about 0.7 pixel
 per zone width in both geometries and halves with the pixel; the Richardson
 extrapolation 2 F(2n) - F(n) gives -1.2 % (sphere lambda 1, 64/128), +0.9 % (sphere
-lambda 2, 128/256: 3.3 % above JKR's 3/2, Maugis' own curve being 2.3 % above it) and
-+2.0 % (wavy, 1024/2048). The 256^2 retraction took 109 s with the fused kernels of
-contact/adhesion/kernels.py.
+lambda 2, 128/256: 3.3 % above JKR's 3/2, Maugis' own curve being 2.3 % above it), -0.6 %
+(sphere lambda 3, 256/512: +0.5 % from JKR's 3/2) and +2.0 % (wavy, 1024/2048). With the
+fused kernels of contact/adhesion/kernels.py a whole retraction took 109 s at 256^2
+(lambda 2) and 436 s at 512^2 (lambda 3).
 
     python3 benchmarks/adhesion_convergence.py --sphere 64,96,128 --wavy 512,1024,2048
 """
