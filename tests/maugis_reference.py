@@ -33,3 +33,15 @@ def md_pull_off(lam: float) -> float:
                                        bracket=(m[k - 1], m[k], m[k + 1]))
         return -float(res.fun)
     return -float(p[k])
+
+
+def md_load_at_radius(lam: float, a: np.ndarray) -> np.ndarray:
+    """Maugis-Dugdale load P / (pi w R) at the contact radii ``a`` (over the Maugis length).
+
+    The radius A of the inner (compressive) contact decreases monotonically with m = c / a
+    along the curve, so the load is single-valued in A and read by interpolation on a
+    fine sampling of m.
+    """
+    m = 1.0 + np.logspace(-9, 3, 40001)
+    big_a, p = md_curve(lam, m)
+    return np.interp(np.asarray(a, dtype=float), big_a[::-1], p[::-1])

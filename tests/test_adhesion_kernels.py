@@ -1,0 +1,54 @@
+"""The adhesive solve's numba kernels (contact.adhesion.kernels) against numpy twins.
+
+Each twin states in whole-array numpy what its kernel computes, written from the laws'
+own methods (contact.adhesion.laws), so kernel and twin share no code.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from contact.adhesion import kernels
+from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
+
+
+def gradient_step_reference(y, g, p, law, step):
+    """Twin of kernels.gradient_step: (g_new, violation, largest p, <grad, g_new - g>)."""
+    grad = p + law.traction(y)
+    viol = np.where(y <= 0.0, np.maximum(-grad, 0.0), np.abs(grad))
+    g_new = np.maximum(y - step * grad, 0.0)
+    return g_new, viol.max(), p.max(), float(np.sum(grad * (g_new - g)))
+
+
+def momentum_reference(g_new, g, c):
+    """Twin of kernels.momentum: the new y."""
+    return np.maximum(g_new + c * (g_new - g), 0.0)
+
+
+@pytest.mark.parametrize("law", [DugdaleLaw(0.05, 2e7), ExponentialLaw(0.05, 3e-9)])
+def test_gradient_step_is_its_twin(law):
+    rng = np.random.default_rng(7)
+    n = 500
+    y = np.where(rng.random(n) < 0.3, 0.0, rng.random(n) * 3 * law.range)
+    g = np.maximum(y + rng.normal(0.0, 0.2 * law.range, n), 0.0)
+    p = rng.normal(0.0, law.peak, n)
+    step = 0.7 * law.range / law.peak
+    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
+    out = np.empty(n)
+    viol, pmax, dot = kernels.gradient_step(y, g, p, kind, law.peak, law.range, step, out)
+    g_ref, viol_ref, pmax_ref, dot_ref = gradient_step_reference(y, g, p, law, step)
+    assert np.allclose(out, g_ref, rtol=1e-14, atol=0.0)
+    assert viol == pytest.approx(viol_ref, rel=1e-14) and pmax == pmax_ref
+    assert dot == pytest.approx(dot_ref, rel=1e-10)
+    assert (out == 0.0).any() and (out > 0.0).any()  # both branches of the projection
+
+
+def test_momentum_is_its_twin():
+    rng = np.random.default_rng(8)
+    g_new, g = rng.random(300), rng.random(300)
+    y, g_copy = np.empty(300), g.copy()
+    kernels.momentum(g_new, g_copy, 0.8, y)
+    ref = momentum_reference(g_new, g, 0.8)
+    assert np.array_equal(y, ref) and (ref == 0.0).any()
+    assert np.array_equal(g_copy, g_new)
