@@ -137,7 +137,7 @@ def test_the_quasi_static_path_makes_the_answer_unique(rough):
 def test_load_control_is_the_displacement_controlled_equilibrium(rough):
     """The equilibrium found with the mean pressure imposed, held at its approach under
     displacement control (the mean-plane spring), stays put: the same contact cells,
-    gap and load, the two formulations' one equilibrium."""
+    gap, load, approach and energy, the two formulations' one equilibrium."""
     z, p, _ = rough
     law = ExponentialLaw(0.2, 5e-9)
     prob = adhesive_problem(z.max() - z, 1e-6, E_STAR, law)
@@ -147,6 +147,10 @@ def test_load_control_is_the_displacement_controlled_equilibrium(rough):
     np.testing.assert_allclose(held.gap, st.gap, rtol=0, atol=1e-6 * np.ptp(z))
     assert held.load == pytest.approx(st.load, rel=1e-5)
     assert st.load == pytest.approx(p[1] * z.size * 1e-12, rel=1e-12)
+    # the approach from the deformed mean plane, and the elastic energy of the modes
+    # q != 0 plus the interaction's, are the same in both
+    assert held.approach == pytest.approx(st.approach, rel=1e-6)
+    assert held.energy == pytest.approx(st.energy, rel=1e-6)
 
 
 def test_bad_starts_are_one_input_error(rough):

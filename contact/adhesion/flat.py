@@ -77,7 +77,7 @@ MAX_SOLVES = 40
 PATH_TOL = 1e-6
 #: Equilibrium tolerance of the load path's intermediate states (compressive pressures;
 #: float32 FFTs): only their touching area steers the path.
-LOAD_PATH_TOL = 1e-3
+LOAD_PATH_TOL = 3e-3
 #: A load step is sized to change the touching area by this share of the threshold
 #: ``max_change``, from the rate of the last step taken (a step that overshoots it is
 #: halved and tried again).

@@ -239,7 +239,8 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
         theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
         kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
         theta = theta_new
-    return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol, pressure=pressure)
+    return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
+                  mean_pressure=pressure)
 
 
 def _load_stiffness(problem: AdhesiveProblem) -> np.ndarray:
@@ -255,15 +256,17 @@ def _violation(g: np.ndarray, grad: np.ndarray) -> np.ndarray:
 
 
 def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
-           tol: float, pressure: float | None = None) -> AdhesiveState:
+           tol: float, mean_pressure: float | None = None) -> AdhesiveState:
     """The equilibrium record of the gap ``g``, after checking its residual; with
-    ``pressure`` (load control) the mean displacement is zero and the mean pressure that."""
+    ``mean_pressure`` (load control) the mean displacement is zero and the mean pressure
+    that."""
     h, law = problem.gap0, problem.law
     u = g - h + approach
-    if pressure is None:
+    if mean_pressure is None:
         p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
     else:
-        p = np.fft.irfft2(_load_stiffness(problem) * np.fft.rfft2(u), s=h.shape) + pressure
+        p = np.fft.irfft2(_load_stiffness(problem) * np.fft.rfft2(u), s=h.shape)
+        p += mean_pressure
     t = law.traction(g)
     touching = g <= 0.0
     residual = float(_violation(g, p + t).max()) / max(law.peak, float(p.max()))
@@ -275,12 +278,12 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
     area = problem.cell_area
     pressure = np.where(touching, p, -t)
     load = float(p.sum() * area)
-    if pressure is None:
+    if mean_pressure is None:
         mean_u = load / (problem.spring * h.size * area)
         elastic = 0.5 * float(np.vdot(u, p)) - 0.5 * problem.spring * mean_u ** 2 * h.size
     else:  # u has zero mean, so the mean pressure does no elastic work
         mean_u = 0.0
-        elastic = 0.5 * float(np.vdot(u, p - pressure))
+        elastic = 0.5 * float(np.vdot(u, p - mean_pressure))
     return AdhesiveState(
         gap=g, pressure=pressure, approach=approach - mean_u, load=load,
         contact_area=float(touching.sum() * area),
