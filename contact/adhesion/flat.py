@@ -268,7 +268,8 @@ def solve_at_pressure(problem: AdhesiveProblem, pressure: float, approach: float
         approaching raises the tension.
     start : (float, AdhesiveState), optional
         A state short of the pressure, with its rigid approach, to load from; default the
-        non-contact state (:func:`non_contact`).
+        first touch (compressive, :func:`load_path`) or the non-contact state (tensile,
+        :func:`non_contact`).
     rtol : float
         A tensile pressure is reached when within ``rtol |pressure|``.
     tol : float
@@ -383,14 +384,16 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
         Nominal pressures (Pa), in increasing order (the loading branch).
     mean_gaps, stiffnesses : array_like
         Starting estimates per pressure: the non-adhesive solve's mean gap (m) and contact
-        stiffness -dp/dū (Pa/m) (:func:`contact.setups.flat.flat_contact`).
+        stiffness -dp/dū (Pa/m) (:func:`contact.setups.flat.flat_contact`); only the
+        secant of a tensile pressure uses them (a compressive one is imposed).
     rtol, tol : float
         Pressure and equilibrium tolerances (:func:`solve_at_pressure`).
     max_change : float
         Loading steps are split while the touching area changes by more than this share
-        (the quasi-static path of the module notes); ``math.inf`` never splits them (about
-        six times fewer solves, but the area then depends on the starting estimates by a
-        few per cent where the cohesive zone is not resolved).
+        (the quasi-static path of the module notes); with ``math.inf`` a load step is
+        never split, only grown (twice the last) from 1/32 of the path from the first
+        touch, and a displacement step never split (then the area depends on the
+        starting estimates by a few per cent where the cohesive zone is not resolved).
     progress : callable, optional
         Called as ``progress(done, total)`` after each pressure.
     """
