@@ -16,9 +16,15 @@ import numpy as np
 import pytest
 
 import surfmet
-from contact.adhesion.flat import adhesive_flat, attractive_pressure, solve_at_pressure
+from contact.adhesion.flat import (
+    adhesive_flat,
+    attractive_pressure,
+    load_path,
+    secant_at_pressure,
+    solve_at_pressure,
+)
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
-from contact.adhesion.solver import adhesive_problem
+from contact.adhesion.solver import adhesive_problem, solve_adhesive
 from contact.errors import ContactInputError
 from contact.setups.flat import flat_contact
 from surfmet.cli import main
@@ -89,11 +95,15 @@ def test_negligible_adhesion_is_the_bem(rough, law):
 @pytest.mark.parametrize("law", [ExponentialLaw(0.2, 5e-9), DugdaleLaw.from_range(0.2, 5e-9)])
 def test_adhesion_pulls_more_area_into_contact(rough, law):
     """At the same nominal pressure adhesion adds contact area and closes the gap; the
-    attractive pressure is a sizeable share of the load, and the pressure balance holds."""
+    attractive pressure is a sizeable share of the load, and the pressure balance holds.
+    Measured area ratios at 0.3 and 1 MPa: exponential 1.98 and 1.75, Dugdale 1.21 and
+    1.24 (1.33 and 1.38 when loaded under displacement control, 1.20 with the load path's
+    states solved to 1e-3: on this grid the cohesive zone is 0.1 pixel, and the Dugdale
+    area depends on the loading path)."""
     z, p, bem = rough
     res = adhesive_flat(z.max() - z, 1e-6, E_STAR, law, p, bem.mean_gap, bem.stiffness)
     assert np.all(res.area_fraction >= bem.area_fraction)
-    assert np.all(res.area_fraction[1:] > 1.2 * bem.area_fraction[1:])
+    assert np.all(res.area_fraction[1:] > 1.15 * bem.area_fraction[1:])
     assert np.all(res.mean_gap < bem.mean_gap)
     assert np.all(res.attractive_pressure > 0.2 * p)
     for pt in res.points:
@@ -103,21 +113,45 @@ def test_adhesion_pulls_more_area_into_contact(rough, law):
 
 def test_the_quasi_static_path_makes_the_answer_unique(rough):
     """Where the cohesive zone is 0.1 pixel the pixels snap in one by one, so the state
-    depends on the loading steps. Loaded from the non-contact state, each try from the
-    furthest state short of the pressure and each step split while the area changes by
-    more than 10 %, starting estimates ten times apart give the same contact set (with
-    unsplit steps they changed the area by up to 3.9 % and overestimated it by 10-15 %:
-    0.0186-0.0193 against 0.0168 here) and the mean gap within 1e-5."""
+    depends on the loading path. Two quasi-static paths of different control (steps split
+    while the area changes by more than 10 %) find the same contact set and the mean gap
+    within 1e-5: the load-controlled path of the flat-contact sweep, and loading under
+    displacement control with a secant on the approach (which, started from estimates ten
+    times apart, found the same contact set too). Unsplit displacement steps changed the
+    area by up to 3.9 % and overestimated it by 10-15 % (0.0186-0.0193 against 0.0168)."""
     z, p, bem = rough
     law = ExponentialLaw(0.2, 5e-9)
-    pts = [adhesive_flat(z.max() - z, 1e-6, E_STAR, law, p[:1], bem.mean_gap[:1],
-                         [k * bem.stiffness[0]]).points[0] for k in (0.3, 3.0)]
-    areas = np.array([pt.area_fraction for pt in pts])
-    gaps = np.array([pt.mean_gap for pt in pts])
+    prob = adhesive_problem(z.max() - z, 1e-6, E_STAR, law)
+    by_load = adhesive_flat(z.max() - z, 1e-6, E_STAR, law, p[:1], bem.mean_gap[:1],
+                            bem.stiffness[:1]).points[0]
+    x0 = float(np.mean(prob.gap0)) - bem.mean_gap[0] + p[0] / prob.spring
+    by_approach = [secant_at_pressure(prob, p[0], x0, 3.0 * bem.stiffness[0], None,
+                                      rtol=1e-4, tol=1e-8, max_change=0.1)[0]]
+    areas = np.array([by_load.area_fraction] + [np.mean(s.gap <= 0) for s in by_approach])
+    gaps = np.array([by_load.mean_gap] + [np.mean(s.gap) for s in by_approach])
     assert np.all(areas > 1.2 * bem.area_fraction[0])
-    assert areas[0] == areas[1]
+    assert np.all(areas == areas[0])
     assert gaps.max() / gaps.min() - 1 < 1e-5
-    assert all(pt.solves > 5 for pt in pts)  # the path was split into small steps
+    assert by_load.solves > 5  # the path was made of small steps
+
+
+def test_load_control_is_the_displacement_controlled_equilibrium(rough):
+    """The equilibrium found with the mean pressure imposed, held at its approach under
+    displacement control (the mean-plane spring), stays put: the same contact cells,
+    gap, load, approach and energy, the two formulations' one equilibrium."""
+    z, p, _ = rough
+    law = ExponentialLaw(0.2, 5e-9)
+    prob = adhesive_problem(z.max() - z, 1e-6, E_STAR, law)
+    st, _, _ = load_path(prob, p[1], tol=1e-9)
+    held = solve_adhesive(prob, st.approach + p[1] / prob.spring, st.gap, tol=1e-9)
+    np.testing.assert_array_equal(held.gap <= 0, st.gap <= 0)
+    np.testing.assert_allclose(held.gap, st.gap, rtol=0, atol=1e-6 * np.ptp(z))
+    assert held.load == pytest.approx(st.load, rel=1e-5)
+    assert st.load == pytest.approx(p[1] * z.size * 1e-12, rel=1e-12)
+    # the approach from the deformed mean plane, and the elastic energy of the modes
+    # q != 0 plus the interaction's, are the same in both
+    assert held.approach == pytest.approx(st.approach, rel=1e-6)
+    assert held.energy == pytest.approx(st.energy, rel=1e-6)
 
 
 def test_bad_starts_are_one_input_error(rough):

@@ -1,28 +1,42 @@
 """A rough periodic surface pressed on a flat with adhesion, at prescribed nominal pressures.
 
-:func:`contact.adhesion.solver.solve_adhesive` imposes the rigid approach; a flat-contact
-sweep imposes the nominal (mean) pressure instead. :func:`solve_at_pressure` finds the
-approach whose equilibrium carries the pressure asked for: a secant on the approach,
-safeguarded by bisection once the pressure is bracketed. Adhesive equilibria depend on
+A flat-contact sweep imposes the nominal (mean) pressure. Adhesive equilibria depend on
 the path (a contact pressed too far and backed off keeps more area, and a big loading
 step snaps in pixels that small steps would leave apart where the grid does not resolve
-the cohesive zone), so the path is made quasi-static and unique: the first pressure is
-approached from the non-contact state (every gap beyond the law's reach), every try is a
-loading step from the furthest state still short of the pressure (never from one past
-it), and every step is split in two (:func:`contact.adhesion.cycle.advance`) while the
-touching area changes by more than :data:`contact.adhesion.cycle.MAX_AREA_CHANGE` of it.
-On the tests' 64^2 surface at 0.1 pixel of cohesive zone, starting estimates 0.3 to 3
-times apart then give the same contact set (they changed the area by 3.9 % before, and
-the big steps had overestimated it by 10 to 15 %); halving the threshold to 5 % changes
-nothing. On its 128^2 twin (exponential law, w 0.2 J/m^2, rho 5 nm, 0.1 and 1 MPa) the
-area fractions are 0.0076 and 0.0724 (threshold 10 %), 0.0072 and 0.0724 (5 %), 0.0089
-and 0.0889 (30 %), 0.0169 and 0.113 unsplit, against 0.0044 and 0.0468 without
-adhesion: where the zone is unresolved the loading path, not the solver, sets the area.
-The price is solves: 5 to 7 times those of unsplit steps (``max_change=math.inf``).
-Pressed surfaces carry more pressure the closer they come (the slope is the contact
-stiffness); surfaces apart but within reach carry more tension instead. A pressure that
-falls inside a jump of the load-approach curve has no equilibrium on the branch and is
-one :class:`~contact.errors.ConvergenceError`.
+the cohesive zone), so the path is made quasi-static and unique. A compressive pressure
+is reached under load control (:func:`load_path`): each state is one minimisation with
+the mean pressure imposed (:func:`contact.adhesion.solver.solve_adhesive_at_pressure`),
+the first loaded from the rigid gap touching at its highest point (where a loading from
+the non-contact state first touches), every later one warm-started from the last state
+taken at a lower pressure (never from one past it), and a step is halved and tried again
+while the touching area changes by more than
+:data:`contact.adhesion.cycle.MAX_AREA_CHANGE` of it. The intermediate states only steer
+the path, so they are solved to :data:`LOAD_PATH_TOL` with float32 FFTs, and the state at
+the pressure asked for to the full tolerance. Under load control a snap-in is a jump: when
+a step of the finest size (1/32 of the path) still leaps in area, it is taken, and the path
+goes on from the branch it landed on. For P > 0 the energy with the load's potential is
+bounded below, so every compressive pressure has an equilibrium.
+
+A tensile pressure (surfaces apart are unstable under load control: the tension falls
+with the gap) is found under displacement control (:func:`secant_at_pressure`): a secant
+on the approach, safeguarded by bisection once the pressure is bracketed, every try a
+loading step from the furthest state short of the pressure, from the non-contact state
+(every gap beyond the law's reach), split (:func:`contact.adhesion.cycle.advance`) while
+the touching area changes by more than 10 %. A tensile pressure that falls inside a jump of
+the load-approach curve has no equilibrium on the branch and is one
+:class:`~contact.errors.ConvergenceError`.
+
+On the tests' 64^2 surface at 0.1 pixel of cohesive zone (exponential law, w 0.2 J/m^2,
+rho 5 nm, 0.1 MPa) both controls find the same contact set (area fraction 0.0168, mean gap
+within 2e-6), and halving the threshold to 5 % changes nothing; unsplit displacement steps
+had changed the area by 3.9 % with the starting estimate and overestimated it by 10 to
+15 %. The Dugdale law of the same work and range there gives 0.0098 under both controls,
+but 0.0088 under load control with the path's states solved to 1e-3 instead of 3e-3 (or
+with unsplit load steps): where the zone is unresolved the loading path, not the solver,
+sets the area, to a few cells. On the resolved benchmark case (benchmarks/adhesion_flat.py,
+10 to 40 pixels of zone) one direct solve, the load path and the secant agree to the
+cell: 0.254822 at 512^2. There the load path takes 14 solves and 827 iterations (5.7
+times the non-adhesive solve's CPU time), the secant 42 solves and 6197 (98 times).
 
 Per pressure the sweep reports, with the same definitions as the non-adhesive driver
 :func:`contact.setups.flat.flat_contact`: the area fraction where the surfaces touch (gap
@@ -46,16 +60,32 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact.adhesion.ball import MIN_ZONE_PIXELS
-from contact.adhesion.cycle import MAX_AREA_CHANGE, advance
+from contact.adhesion.cycle import MAX_AREA_CHANGE, MAX_SPLITS, advance
 from contact.adhesion.laws import InteractionLaw
-from contact.adhesion.solver import AdhesiveProblem, AdhesiveState, adhesive_problem, solve_adhesive
+from contact.adhesion.solver import (
+    AdhesiveProblem,
+    AdhesiveState,
+    adhesive_problem,
+    solve_adhesive,
+    solve_adhesive_at_pressure,
+)
 from contact.errors import ContactInputError, ConvergenceError
 from contact.record import SolveRecord
 
-#: Secant tries allowed per nominal pressure.
+#: Secant tries allowed per tensile nominal pressure.
 MAX_SOLVES = 40
-#: Equilibrium tolerance of the quasi-static sub-steps that lead to each try.
+#: Equilibrium tolerance of the secant's quasi-static sub-steps (tensile pressures).
 PATH_TOL = 1e-6
+#: Equilibrium tolerance of the load path's intermediate states (compressive pressures;
+#: float32 FFTs): only their touching area steers the path.
+LOAD_PATH_TOL = 3e-3
+#: A load step is sized to change the touching area by this share of the threshold
+#: ``max_change``, from the rate of the last step taken (a step that overshoots it is
+#: halved and tried again).
+STEP_AIM = 0.8
+#: The solve record's method, tensile (False) and compressive (True) pressures.
+METHODS = {False: "adhesive, secant on the approach to a tensile mean pressure",
+           True: "adhesive, mean pressure imposed along a quasi-static load path"}
 
 
 @dataclass(frozen=True)
@@ -144,12 +174,85 @@ def non_contact(problem: AdhesiveProblem, tol: float = 1e-8) -> tuple[float, Adh
     return d0, solve_adhesive(problem, d0, None, tol=max(tol, 1e-5))
 
 
+def load_path(problem: AdhesiveProblem, pressure: float,
+              start: tuple[float, AdhesiveState] | None = None, *, tol: float = 1e-8,
+              max_change: float = MAX_AREA_CHANGE) -> tuple[AdhesiveState, int, int]:
+    """The equilibrium of the compressive mean pressure ``pressure`` (Pa), reached under load
+    control by a quasi-static path of increasing pressures.
+
+    Every state on the path is a minimisation with the mean pressure imposed
+    (:func:`contact.adhesion.solver.solve_adhesive_at_pressure`), warm-started from the
+    last state taken. A step is taken when the touching area changes by at most
+    ``max_change`` of it, else halved and tried again from the same state (never from the
+    state past it), down to 2**-:data:`~contact.adhesion.cycle.MAX_SPLITS` of the path's
+    span, which is taken as it comes: the area then leaps at that load (a snap-in, the
+    load-controlled jump to another branch). The next step is sized from the area's rate
+    over the last one to change it by :data:`STEP_AIM` of the threshold. The path's states
+    are solved to :data:`LOAD_PATH_TOL` with float32 FFTs, the last one then to ``tol``.
+
+    Parameters
+    ----------
+    problem : AdhesiveProblem
+        Grid, stiffness and law.
+    pressure : float
+        Nominal pressure to reach (Pa, > 0).
+    start : (float, AdhesiveState), optional
+        A state at a lower pressure (with its approach, unused) to load from; default the
+        rigid gap touching at its highest point under no load, where a loading from the
+        non-contact state first touches.
+    tol : float
+        Equilibrium tolerance of the final solve.
+    max_change : float
+        Largest change of the touching area per step, as a share of it.
+
+    Returns
+    -------
+    (state, solves, iterations in all)
+    """
+    area0 = problem.gap0.size * problem.cell_area
+    if start is None:
+        p_now, gap = 0.0, problem.gap0 - problem.gap0.min()
+    else:
+        p_now, gap = start[1].load / area0, start[1].gap
+    if not p_now < pressure:
+        raise ContactInputError(f"the load path must rise: from {p_now:.4g} Pa to "
+                                f"{pressure:.4g} Pa")
+    touching = int(np.count_nonzero(gap <= 0.0))
+    finest = (pressure - p_now) / 2 ** MAX_SPLITS
+    # from a single touching cell any step changes the area by more than a tenth
+    step = finest if touching <= 1 else pressure - p_now
+    solves = iterations = 0
+    loose = max(tol, LOAD_PATH_TOL)
+    while p_now < pressure:
+        target = min(p_now + step, pressure)
+        st = solve_adhesive_at_pressure(problem, target, gap, tol=loose, single=True)
+        solves, iterations = solves + 1, iterations + st.iterations
+        now = int(np.count_nonzero(st.gap <= 0.0))
+        change = abs(now - touching)
+        if change > max_change * max(now, touching) and step > finest * (1.0 + 1e-9):
+            step = max(0.5 * step, finest)
+            continue
+        taken = target - p_now
+        p_now, gap, touching = target, st.gap, now
+        aim = STEP_AIM * max_change * now * taken / change if change else math.inf
+        step = max(finest, min(2.0 * taken, aim))
+    if loose > tol:
+        st = solve_adhesive_at_pressure(problem, pressure, gap, tol=tol)
+        solves, iterations = solves + 1, iterations + st.iterations
+    return st, solves, iterations
+
+
 def solve_at_pressure(problem: AdhesiveProblem, pressure: float, approach: float,
                       slope: float, start: tuple[float, AdhesiveState] | None = None, *,
                       rtol: float = 1e-4, tol: float = 1e-8,
                       max_change: float = MAX_AREA_CHANGE,
                       ) -> tuple[AdhesiveState, float, int, int]:
     """The equilibrium of nominal pressure ``pressure`` (Pa), loading from ``start``.
+
+    A compressive pressure is reached under load control (:func:`load_path`), which
+    needs no estimate: ``approach``, ``slope`` and ``rtol`` serve tensile pressures, for
+    which surfaces apart are unstable under load control. Those are found under
+    displacement control by a secant on the approach (:func:`secant_at_pressure`).
 
     Parameters
     ----------
@@ -158,34 +261,51 @@ def solve_at_pressure(problem: AdhesiveProblem, pressure: float, approach: float
     pressure : float
         Nominal pressure to reach (Pa, compression positive; non-zero).
     approach : float
-        First rigid approach tried (m).
+        First rigid approach tried (m; tensile pressures).
     slope : float
-        Estimate of d(pressure)/d(approach) (Pa/m), for the first secant step: positive
-        where the surfaces are pressed (the contact stiffness), negative on an open branch
-        pulled by the interaction, where approaching raises the tension.
+        Estimate of d(pressure)/d(approach) (Pa/m; tensile pressures), for the first
+        secant step: negative on an open branch pulled by the interaction, where
+        approaching raises the tension.
     start : (float, AdhesiveState), optional
         A state short of the pressure, with its rigid approach, to load from; default the
-        non-contact state (:func:`non_contact`).
+        first touch (compressive, :func:`load_path`) or the non-contact state (tensile,
+        :func:`non_contact`).
     rtol : float
-        The pressure is reached when within ``rtol |pressure|``.
+        A tensile pressure is reached when within ``rtol |pressure|``.
     tol : float
-        Equilibrium tolerance of each solve (:func:`solve_adhesive`).
+        Equilibrium tolerance of the final solve (:func:`solve_adhesive`).
     max_change : float
         A loading step is split while the touching area changes by more than this share.
 
     Returns
     -------
-    (state, rigid approach, solves, iterations in all)
+    (state, rigid approach, solves, iterations in all); under load control the approach
+    is the state's (no spring: the rigid and the surface approach agree).
 
     Raises
     ------
     ConvergenceError
-        No equilibrium carries the pressure on this branch (a jump) within
+        No equilibrium carries the tensile pressure on this branch (a jump) within
         :data:`MAX_SOLVES` tries.
     """
     if not (math.isfinite(pressure) and pressure != 0.0):
         raise ContactInputError(f"the nominal pressure must be finite and non-zero, got "
                                 f"{pressure!r}")
+    if pressure > 0.0:
+        st, solves, iterations = load_path(problem, pressure, start, tol=tol,
+                                           max_change=max_change)
+        return st, st.approach, solves, iterations
+    return secant_at_pressure(problem, pressure, approach, slope, start, rtol=rtol,
+                               tol=tol, max_change=max_change)
+
+
+def secant_at_pressure(problem: AdhesiveProblem, pressure: float, approach: float,
+                        slope: float, start: tuple[float, AdhesiveState] | None, *,
+                        rtol: float, tol: float, max_change: float,
+                        ) -> tuple[AdhesiveState, float, int, int]:
+    """:func:`solve_at_pressure` under displacement control: a secant on the approach,
+    each try a quasi-static loading path from the furthest state short of the pressure
+    (:func:`contact.adhesion.cycle.advance`)."""
     if not (math.isfinite(slope) and slope != 0.0):
         slope = abs(pressure) / max(float(np.std(problem.gap0)), problem.law.range)
     area0 = problem.gap0.size * problem.cell_area
@@ -264,14 +384,16 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
         Nominal pressures (Pa), in increasing order (the loading branch).
     mean_gaps, stiffnesses : array_like
         Starting estimates per pressure: the non-adhesive solve's mean gap (m) and contact
-        stiffness -dp/dū (Pa/m) (:func:`contact.setups.flat.flat_contact`).
+        stiffness -dp/dū (Pa/m) (:func:`contact.setups.flat.flat_contact`); only the
+        secant of a tensile pressure uses them (a compressive one is imposed).
     rtol, tol : float
         Pressure and equilibrium tolerances (:func:`solve_at_pressure`).
     max_change : float
         Loading steps are split while the touching area changes by more than this share
-        (the quasi-static path of the module notes); ``math.inf`` never splits them (about
-        six times fewer solves, but the area then depends on the starting estimates by a
-        few per cent where the cohesive zone is not resolved).
+        (the quasi-static path of the module notes); with ``math.inf`` a load step is
+        never split, only grown (twice the last) from 1/32 of the path from the first
+        touch, and a displacement step never split (then the area depends on the
+        starting estimates by a few per cent where the cohesive zone is not resolved).
     progress : callable, optional
         Called as ``progress(done, total)`` after each pressure.
     """
@@ -295,8 +417,8 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
             area_fraction=float(np.mean(st.gap <= 0.0)), mean_gap=float(np.mean(st.gap)),
             attractive_pressure=attractive_pressure(law, st.gap), approach=st.approach,
             solves=n, iterations=its,
-            solve=replace(st.solve, method="adhesive, load-controlled secant",
-                          iterations=its, outer_iterations=n)))
+            solve=replace(st.solve, method=METHODS[pk > 0], iterations=its,
+                          outer_iterations=n)))
         if progress is not None:
             progress(k + 1, p.size)
     zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)

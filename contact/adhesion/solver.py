@@ -36,6 +36,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.fft as sfft
 
 from contact.adhesion import kernels
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
@@ -172,17 +173,100 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
     return _state(problem, y, approach, max_iter, tol)
 
 
+def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
+                               initial: np.ndarray, *, tol: float = 1e-7,
+                               max_iter: int = 20000, single: bool = False) -> AdhesiveState:
+    """The equilibrium nearest ``initial`` (a gap field) under the mean pressure ``pressure``.
+
+    Load control: the mean-plane spring is dropped (the q = 0 stiffness set to zero) and
+    the load's potential P A mean(g) added to Pi (with the mean displacement zero, the
+    approach is mean(h) - mean(g), so its work -P A delta is P A mean(g) up to a
+    constant). The gradient is then p' + P + t(g), p' the elastic pressure of zero mean,
+    and one minimisation gives the equilibrium that carries P, whose pressure field is
+    p' + P. For P > 0, Pi is bounded below (g >= 0, phi >= -w), so a minimum exists; under
+    a tension, surfaces apart are unstable under load control (t falls with the gap), and
+    :func:`solve_adhesive` under a prescribed approach is the tool.
+
+    Parameters
+    ----------
+    problem, tol, max_iter
+        As for :func:`solve_adhesive`.
+    pressure : float
+        The mean pressure imposed (Pa, compression positive).
+    initial : ndarray
+        Warm start, required: a gap field (e.g. the rigid gap touching at its highest
+        point, or the previous load's equilibrium).
+    single : bool
+        Run the two FFTs of each iteration in float32 (about four times cheaper), for
+        loose tolerances only: their rounding, about 1e-7 of the largest modal pressure,
+        must stay well below ``tol`` times the pressure scale. The iteration then stops at
+        half ``tol``, and the final residual is checked in float64.
+
+    Returns
+    -------
+    AdhesiveState
+        The approach is measured from the mean plane of the deformed surface, as in
+        :func:`solve_adhesive`.
+    """
+    h, law = problem.gap0, problem.law
+    if np.shape(initial) != h.shape:
+        raise ContactInputError(
+            f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
+    g = np.ascontiguousarray(np.maximum(np.asarray(initial, dtype=float), 0.0))
+    real = np.float32 if single else np.float64
+    stiff = _load_stiffness(problem).astype(real)
+    sh = stiff * sfft.rfft2(h.astype(real), workers=1)
+    step = 1.0 / problem.spring
+    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
+    y, g_new, theta = g.copy(), np.empty_like(g), 1.0
+    flat_y, flat_g, flat_new = y.ravel(), g.ravel(), g_new.ravel()
+    nit = max_iter
+    # float32 stops at half the tolerance, so that the float64 check passes
+    stop = 0.5 * tol if single else tol
+    for it in range(1, max_iter + 1):
+        f = sfft.rfft2(y.astype(real, copy=False), workers=1)
+        f *= stiff
+        f -= sh
+        p = sfft.irfft2(f, s=h.shape, workers=1, overwrite_x=True)
+        p += real(pressure)
+        viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
+                                                law.range, step, flat_new)
+        if viol <= stop * max(law.peak, pmax):
+            nit = it
+            break
+        if dot > 0.0:  # momentum points uphill: restart it
+            theta = 1.0
+        theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
+        kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
+        theta = theta_new
+    return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
+                  mean_pressure=pressure)
+
+
+def _load_stiffness(problem: AdhesiveProblem) -> np.ndarray:
+    """The stiffness without the mean-plane spring (q = 0 free): load control."""
+    stiff = problem.stiffness.copy()
+    stiff[0, 0] = 0.0
+    return stiff
+
+
 def _violation(g: np.ndarray, grad: np.ndarray) -> np.ndarray:
     """Violation of equilibrium per cell (Pa): |p + t| apart, max(-(p + t), 0) touching."""
     return np.where(g <= 0.0, np.maximum(-grad, 0.0), np.abs(grad))
 
 
 def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
-           tol: float) -> AdhesiveState:
-    """The equilibrium record of the gap ``g``, after checking its residual."""
+           tol: float, mean_pressure: float | None = None) -> AdhesiveState:
+    """The equilibrium record of the gap ``g``, after checking its residual; with
+    ``mean_pressure`` (load control) the mean displacement is zero and the mean pressure
+    that."""
     h, law = problem.gap0, problem.law
     u = g - h + approach
-    p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
+    if mean_pressure is None:
+        p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
+    else:
+        p = np.fft.irfft2(_load_stiffness(problem) * np.fft.rfft2(u), s=h.shape)
+        p += mean_pressure
     t = law.traction(g)
     touching = g <= 0.0
     residual = float(_violation(g, p + t).max()) / max(law.peak, float(p.max()))
@@ -194,8 +278,12 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
     area = problem.cell_area
     pressure = np.where(touching, p, -t)
     load = float(p.sum() * area)
-    mean_u = load / (problem.spring * h.size * area)
-    elastic = 0.5 * float(np.vdot(u, p)) - 0.5 * problem.spring * mean_u ** 2 * h.size
+    if mean_pressure is None:
+        mean_u = load / (problem.spring * h.size * area)
+        elastic = 0.5 * float(np.vdot(u, p)) - 0.5 * problem.spring * mean_u ** 2 * h.size
+    else:  # u has zero mean, so the mean pressure does no elastic work
+        mean_u = 0.0
+        elastic = 0.5 * float(np.vdot(u, p - mean_pressure))
     return AdhesiveState(
         gap=g, pressure=pressure, approach=approach - mean_u, load=load,
         contact_area=float(touching.sum() * area),
