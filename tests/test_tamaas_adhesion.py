@@ -26,7 +26,7 @@ Two comparisons, each with its own tolerance:
   Measured at 128^2: area -0.7 %, mean gap +0.6 %, attractive pressure -0.5 %.
 
 The 128^2 checks run in the default suite (about 2 s); the same-operator check at 256^2
-and 512^2, against Tamaas' stored answers there, is a campaign test (about 40 s).
+and 512^2, against Tamaas' stored answers there, is a campaign test (about 30 s).
 """
 
 from __future__ import annotations

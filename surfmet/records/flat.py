@@ -99,7 +99,8 @@ def _adhesion_header(ad: Any) -> dict[str, Any]:
         "process_zone_pixels": quantity(ad.process_zone / ad.dx, ""),
         "warnings": list(ad.warnings),
         "solve": combine([pt.solve for pt in ad.points],
-                         "adhesive, load-controlled secant per pressure").to_json(),
+                         "adhesive, per pressure (" + "; ".join(
+                             sorted({pt.solve.method for pt in ad.points})) + ")").to_json(),
         "notes": ["per pressure, 'adhesive' is the periodic adhesive solve and 'bem' the "
                   "non-adhesive one; attractive_pressure is the law's tension averaged over "
                   "the nominal area, touching points included: pressure = repulsive - "
