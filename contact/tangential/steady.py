@@ -127,7 +127,9 @@ def steady_rolling(
         extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
         p, delta = solve_pressure_to(op, grid.h, load, LOOSEST, extra, start.p)
     elif start is not None:
-        extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
+        # uncoupled: the pressure of the gap alone, whatever tractions the start carries
+        extra = (op.normal_from_tangential(start.state.q[0], start.state.q[1])
+                 if coupled else None)
         p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
     else:
         p, delta = solve_pressure(op, grid.h, load)
