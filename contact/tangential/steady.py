@@ -219,10 +219,11 @@ def rolling_residual(r: TangentialResult) -> float:
 def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
                   max_coupling) -> CoarseStart | None:
     """The coarse grid's answer copied to ``grid``, or None where nesting does not pay."""
-    coarse = coarse_grid(grid)
-    if coarse is None:
+    nest = coarse_grid(grid)
+    if nest is None:
         return None
+    coarse, levels = nest
     # only a start: its own tolerances can be loose (the fine solve converges in full)
     r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
                        tol=max(tol, 1e-3), max_coupling=max_coupling, start_only=True)
-    return prolong(r.p, r.q, r.state, r.creepage.xi)
+    return prolong(r.p, r.q, r.state, r.creepage.xi, levels)
