@@ -87,3 +87,37 @@ def test_inexact_coupling_keeps_the_answer(monkeypatch, fx):
     assert np.abs(fast.q - tight.q).max() <= 1e-6 * np.abs(tight.q).max()
     assert abs(fast.creepage.xi - tight.creepage.xi) <= 1e-6 * abs(tight.creepage.xi)
     assert np.abs(fast.p - tight.p).max() <= 1e-7 * tight.p.max()
+
+
+def test_uncoupled_nested_solve_keeps_the_gaps_pressure():
+    """coupled=False on 64^2 nested from 32^2 gives the answer of the same solve from
+    cold (the pressure of the gap alone, not one pushed by the coarse start's tractions):
+    pressure within 1e-7 of its largest value, tractions within 1e-6 of max|q|, the same
+    stick/slip states."""
+    a = hertz_sphere(0.02, 5.0, STEEL_AL.e_star).a
+    grid = sphere_grid(0.02, 1.25 * a, 64)
+    nested = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0, coupled=False)
+    cold = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0, coupled=False, nested=False)
+    assert np.abs(nested.p - cold.p).max() <= 1e-7 * cold.p.max()
+    assert np.array_equal(nested.state, cold.state)
+    assert np.abs(nested.q - cold.q).max() <= 1e-6 * np.abs(cold.q).max()
+
+
+def test_start_from_the_coarsest_grid_keeps_the_answer(monkeypatch):
+    """128^2 free rolling started from 32^2 directly (prolonged twice) against the same
+    solve started through 64^2: the same stick/slip states, tractions within 1e-6 of
+    max|q|, the creepage within 1e-6."""
+    from contact import nesting
+    from contact.tangential import nested
+
+    a = hertz_sphere(0.02, 5.0, STEEL_AL.e_star).a
+    grid = sphere_grid(0.02, 1.25 * a, 128)
+    assert nested.coarse_grid(grid)[1] == 2
+    direct = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0)
+    monkeypatch.setattr("contact.tangential.steady.coarse_grid",
+                        lambda g: (lambda c: None if c is None else (c, 1))(
+                            nesting.coarse_grid(g, nested.SMALLEST)))
+    chained = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0)
+    assert np.array_equal(direct.state, chained.state)
+    assert np.abs(direct.q - chained.q).max() <= 1e-6 * np.abs(chained.q).max()
+    assert abs(direct.creepage.xi - chained.creepage.xi) <= 1e-6 * abs(chained.creepage.xi)

@@ -225,8 +225,9 @@ def solve_tangential(
             done = change <= 1e-3
         if changes == 0 and settled and done:
             st.outer, st.matvecs, st.dw = it, counter[0], dw_total
-            if box.box is not None:
-                # the slip off the contact too, as the answer's slip field
+            if box.box is not None and not start_only:
+                # the slip off the contact too, as the answer's slip field (a start only
+                # passes on its tractions and states)
                 st.s = slip_of(op, q, w, u0, rolling)
             st.q[:, st.state == SLIP] = g[st.state == SLIP] * st.e[:, st.state == SLIP]
             return st

@@ -127,7 +127,9 @@ def steady_rolling(
         extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
         p, delta = solve_pressure_to(op, grid.h, load, LOOSEST, extra, start.p)
     elif start is not None:
-        extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
+        # uncoupled: the pressure of the gap alone, whatever tractions the start carries
+        extra = (op.normal_from_tangential(start.state.q[0], start.state.q[1])
+                 if coupled else None)
         p, delta = solve_pressure(op, grid.h, load, extra=extra, start=start.p)
     else:
         p, delta = solve_pressure(op, grid.h, load)
@@ -217,10 +219,11 @@ def rolling_residual(r: TangentialResult) -> float:
 def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
                   max_coupling) -> CoarseStart | None:
     """The coarse grid's answer copied to ``grid``, or None where nesting does not pay."""
-    coarse = coarse_grid(grid)
-    if coarse is None:
+    nest = coarse_grid(grid)
+    if nest is None:
         return None
+    coarse, levels = nest
     # only a start: its own tolerances can be loose (the fine solve converges in full)
     r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
                        tol=max(tol, 1e-3), max_coupling=max_coupling, start_only=True)
-    return prolong(r.p, r.q, r.state, r.creepage.xi)
+    return prolong(r.p, r.q, r.state, r.creepage.xi, levels)
