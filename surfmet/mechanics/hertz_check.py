@@ -216,7 +216,7 @@ def hertz_check(
     prep = prepare_scans(scan, ball, spikes=spikes)
     pair = prep.pair
     check = check_sphere(
-        radius, load, e_star,
+        radius, load, mats,
         roughness=None if pair is None else pair.composite(offset),
         sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
     )
