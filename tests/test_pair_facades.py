@@ -93,14 +93,14 @@ def test_flat(pair):
 
 
 def test_adhesive_ball_line_and_flat(soft):
-    law = DugdaleLaw(0.05, 2e7)
-    a = adhesive_ball(10e-6, soft, law, grid=16, steps=4)
-    b = adhesive_ball(10e-6, soft.e_star, law, grid=16, steps=4)
+    law = DugdaleLaw(0.05, 1e8)  # small grids and loose tolerances: only equality matters
+    a = adhesive_ball(10e-6, soft, law, grid=16, steps=4, tol=1e-4)
+    b = adhesive_ball(10e-6, soft.e_star, law, grid=16, steps=4, tol=1e-4)
     assert a.e_star == b.e_star == soft.e_star
     assert a.cycle.pull_off_force == b.cycle.pull_off_force
     _same(a.cycle.approach_leg.load, b.cycle.approach_leg.load)
-    a = adhesive_line(10e-6, soft, law, cells=64, steps=4)
-    b = adhesive_line(10e-6, soft.e_star, law, cells=64, steps=4)
+    a = adhesive_line(10e-6, soft, law, cells=64, steps=4, tol=1e-5)
+    b = adhesive_line(10e-6, soft.e_star, law, cells=64, steps=4, tol=1e-5)
     assert a.cycle.pull_off_force == b.cycle.pull_off_force
     _same(a.cycle.retraction_leg.load, b.cycle.retraction_leg.load)
     gap = np.zeros((16, 16))
