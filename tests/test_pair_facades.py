@@ -70,6 +70,15 @@ def test_sphere_and_hertz_check(pair):
     assert check_sphere(0.02, 5.0, pair, grid=32).plastic is None
 
 
+def test_rolling_sweep(pair):
+    from contact.rolling import sphere_sweep
+
+    a = sphere_sweep(0.02, pair, [2.0, 4.0, 8.0], grid=32, alpha_h=0.01)
+    b = sphere_sweep(0.02, pair.e_star, [2.0, 4.0, 8.0], grid=32, alpha_h=0.01)
+    _same(a.moments, b.moments)
+    assert a.settings == b.settings and a.settings["e_star"] == pair.e_star
+
+
 def test_line_and_cylinder(pair):
     x = (np.arange(128) - 64) * 1e-6
     a = solve_line(x * x / 0.04, 1e-6, e_star=pair, load=2e4)
@@ -130,7 +139,8 @@ def test_surfmet_facades_resolve_the_materials_text():
     from surfmet.mechanics.spectrum import prepared_scan, spectrum
 
     plate = Path(surfmet.__file__).parent / "data" / "paper_plate.x3p"
-    scan, per, _, _ = prepared_scan(surfmet.read(str(plate)))
+    full, per, _, _ = prepared_scan(surfmet.read(str(plate)))
+    scan = surfmet.model.Topography(np.asarray(full.heights)[:96, :96], full.dx, full.dy)
     pair = resolve_pair(material("steel"), material("aluminium"))
     s = spectrum(scan, periodic=per, materials="steel,aluminium")
     assert s.materials.names == ["steel", "aluminium"] and s.materials.e_star == pair.e_star
@@ -141,7 +151,7 @@ def test_surfmet_facades_resolve_the_materials_text():
     s1 = spectrum(scan, periodic=per, materials="aluminium", hardness=1e9)
     assert s1.materials.e_star == 1.0 / ((1 - alu.nu**2) / alu.E)
     assert s1.materials.hardness == 1e9
-    sub = surfmet.model.Topography(np.asarray(scan.heights)[:32, :32], scan.dx, scan.dy)
+    sub = surfmet.model.Topography(np.asarray(full.heights)[:32, :32], full.dx, full.dy)
     a = surf_flat(sub, materials="steel,aluminium", pressures=[2e7], periodic=True)
     b = surf_flat(sub, e_star=pair.e_star, pressures=[2e7], periodic=True)
     assert a.materials.names == ["steel", "aluminium"] and b.materials is None

@@ -92,7 +92,7 @@ def contact_study(
     if plastic or hardness is not None:
         hardness = mats.hardness
     pair = prep.pair
-    study = sphere_study(radius, load, mats.e_star, pair.roughness, pair.dx, pair.dy,
+    study = sphere_study(radius, load, mats, pair.roughness, pair.dx, pair.dy,
                          hardness=hardness, sigma=prep.sigma, factors=factors,
                          progress=progress)
     return study, prep
@@ -130,7 +130,7 @@ def rolling_study(
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
         sweep_kwargs["hardness"] = mats.hardness
     pair = prep.pair
-    study = engine(radius, mats.e_star, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
+    study = engine(radius, mats, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
                    progress=progress, **sweep_kwargs)
     return study, prep
 
