@@ -64,6 +64,7 @@ from contact.fields import (
     radial_average,
 )
 from contact.hertz import HertzSphere, hertz_sphere
+from contact.material_pair import MaterialPair, modulus
 from contact.roughstats import combined_rms, gjm_alpha
 from contact.setups.composite import CompositeRoughness
 
@@ -395,7 +396,7 @@ class SphereCheck:
 def check_sphere(
     radius: float,
     load: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     *,
     roughness: CompositeRoughness | None = None,
     sigma: float | None = None,
@@ -411,8 +412,12 @@ def check_sphere(
 
     Parameters
     ----------
-    radius, load, e_star : float
-        R (m), W (N), E* (Pa).
+    radius, load : float
+        R (m), W (N).
+    e_star : float or MaterialPair
+        E* (Pa), or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for
+        bit). A pair's default hardness is not applied: ``hardness`` alone adds the
+        elastic-plastic solve (give ``pair.hardness``).
     roughness : CompositeRoughness, optional
         Composite roughness under the ball, with its pitch and the apex position
         (:class:`contact.setups.CompositeRoughness`); None for smooth surfaces.
@@ -429,6 +434,7 @@ def check_sphere(
     from contact.geometry import remove_plane
     from contact.setups.ball_on_plate import SphereContact
 
+    e_star = modulus(e_star)
     scan_pixel = None if roughness is None else max(roughness.dx, roughness.dy)
     if sigma is None:
         if roughness is None:

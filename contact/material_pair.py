@@ -14,6 +14,20 @@ from it, so no two places can resolve the same pair differently.
 - Kalker's constants G, nu, K (Kalker 1990, *Three-dimensional elastic bodies in rolling
   contact*, sec. 1.5) and Dundurs' beta = K/(1 - nu) (Johnson 1985, sec. 5.1), from the
   tangential solver's ``pair_constants``.
+
+Two E* of one pair, kept apart on purpose: :attr:`MaterialPair.e_star` is 1/P from the
+compliances (1 - nu_i^2)/E_i, and is the E* of every normal facade (``contact.setups``,
+``contact.hertzcheck``, ``contact.adhesion``, the hysteresis and plastic sweeps, the
+mechanisms); ``constants().e_star`` is G/(1 - nu) from Kalker's combined constants, and is
+the E* of the tangential and viscoelastic-traction solvers' own normal solves
+(``contact.tangential``, ``contact.viscoelastic.traction3d``). They are the same number in
+exact arithmetic and differ by rounding (1 ulp for steel on aluminium); each solver family
+keeps its own, so neither's outputs change bit for bit.
+
+Every facade that takes ``e_star`` also takes a :class:`MaterialPair` there
+(:func:`modulus`); a pair's default hardness is applied by the surfmet facades (their
+``plastic`` switches), never silently by a solver, where a hardness turns the solve
+elastic-plastic.
 """
 
 from __future__ import annotations
@@ -68,6 +82,11 @@ class MaterialPair:
         return self.body1, self.body2
 
     @property
+    def names(self) -> list[str]:
+        """The bodies' material names, ball (or scan) first; none for a pair given by E*."""
+        return [m.name for m in (self.body1, self.body2) if m is not None]
+
+    @property
     def nu(self) -> tuple[float, float]:
         """Poisson's ratios (nu1, nu2)."""
         b1, b2 = self._bodies("Poisson's ratios")
@@ -91,7 +110,9 @@ class MaterialPair:
 
     def constants(self) -> Any:
         """Kalker's combined constants G, nu, K (``PairConstants``, Kalker 1990 sec. 1.5):
-        K is the difference parameter that couples the normal and tangential problems."""
+        K is the difference parameter that couples the normal and tangential problems.
+        Its ``e_star`` = G/(1 - nu) may differ from :attr:`e_star` by rounding (module
+        notes): the tangential solvers use that one."""
         from contact.tangential import pair_constants
 
         return pair_constants(*self._bodies("Kalker's constants"))
@@ -156,9 +177,20 @@ def resolve_pair(
         raise ContactInputError("give the materials (at least the first body) or E*")
     if body2 is None:
         # 1/C1 (not E/(1 - nu^2), a different float): the compliance sum with a rigid body
-        e, h, src = 1.0 / ((1.0 - body1.nu**2) / body1.E), body1.hardness, body1
+        e, h, src = 1.0 / body1.surface_compliance, body1.hardness, body1
     else:
         e, h = composite_modulus(body1, body2), contact_hardness(body1, body2)
         src = body1 if h is not None and h == body1.hardness else body2
     pair = MaterialPair(body1, body2, e, h, "none" if h is None else f"material: {src.name}")
     return pair.with_hardness(hardness)
+
+
+def modulus(e_star: float | MaterialPair) -> float:
+    """The composite modulus E* (Pa) a contact facade was given: a resolved pair's
+    :attr:`MaterialPair.e_star`, or the bare number itself (the array-level form).
+
+    Every facade of ``contact/`` that takes ``e_star`` passes it through here first, so a
+    pair and its ``e_star`` give the same solve bit for bit. A number is returned as it
+    came, for the facade's own check of it.
+    """
+    return e_star.e_star if isinstance(e_star, MaterialPair) else e_star

@@ -83,6 +83,12 @@ class Material:
         return self.E / (1.0 - self.nu**2)
 
     @property
+    def surface_compliance(self) -> float:
+        """(1 - nu^2) / E in 1/Pa: the body's share of the pair's compliance P = 1/E*
+        (Johnson 1985, eq. 4.22), and the elastic creep series of the rolling solvers."""
+        return (1.0 - self.nu**2) / self.E
+
+    @property
     def shear_modulus(self) -> float:
         """The modulus of rigidity G = E / (2 (1 + nu)) in Pa."""
         return self.E / (2.0 * (1.0 + self.nu))
@@ -173,7 +179,7 @@ def material(
 
 def compliance(m1: Material, m2: Material) -> float:
     """The elastic compliance P = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 in 1/Pa (Alaci eq. 5)."""
-    return (1.0 - m1.nu**2) / m1.E + (1.0 - m2.nu**2) / m2.E
+    return m1.surface_compliance + m2.surface_compliance
 
 
 def composite_modulus(m1: Material, m2: Material) -> float:
@@ -195,5 +201,5 @@ def displacement_shares(m1: Material, m2: Material) -> tuple[float, float]:
     solver reports for the pair.
     """
     p = compliance(m1, m2)
-    return ((1.0 - m1.nu**2) / m1.E / p, (1.0 - m2.nu**2) / m2.E / p)
+    return (m1.surface_compliance / p, m2.surface_compliance / p)
 

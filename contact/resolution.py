@@ -49,6 +49,7 @@ from contact._validate import positive
 from contact.convergence import Trend, trend
 from contact.errors import ContactInputError
 from contact.fields import centred_blocks, corrected_area
+from contact.material_pair import MaterialPair, modulus
 from contact.roughstats import rms_slope
 from contact.setups.composite import CompositeRoughness
 
@@ -252,7 +253,7 @@ def _levels(roughness: np.ndarray, dx: float, dy: float | None, factors: Sequenc
 def sphere_study(
     radius: float,
     load: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     roughness: np.ndarray,
     dx: float,
     dy: float | None = None,
@@ -298,7 +299,7 @@ def sphere_study(
 
     radius = positive(radius, "the ball radius", "m")
     load = positive(load, "the load", "N")
-    e_star = positive(e_star, "E*", "Pa")
+    e_star = positive(modulus(e_star), "E*", "Pa")
     z, dy, shape = _levels(roughness, dx, dy, factors)
     sig = float(np.std(z)) if sigma is None else float(sigma)
     if size is None:
@@ -350,7 +351,7 @@ def _area_theory(trends: dict[str, Trend]) -> str:
 
 def rolling_study(
     radius: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     loads: Sequence[float],
     roughness: np.ndarray,
     dx: float,
@@ -370,7 +371,7 @@ def rolling_study(
     from contact.geometry import auto_domain
     from contact.rolling import sphere_sweep
 
-    e_star = positive(e_star, "E*", "Pa")
+    e_star = positive(modulus(e_star), "E*", "Pa")
     loads = np.sort(np.asarray(loads, dtype=float))
     if loads.size < 3 or not np.all(loads > 0):
         raise ContactInputError("a rolling study needs at least 3 positive loads")

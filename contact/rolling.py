@@ -70,6 +70,7 @@ import numpy as np
 from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.exponent import ExponentFit, dissipating_exponents
+from contact.material_pair import MaterialPair, modulus
 from contact.setups.composite import CompositeRoughness
 
 KINEMATICS = ("rolling", "frozen")
@@ -307,7 +308,7 @@ def sweep_loads(loads: Iterable[float]) -> np.ndarray:
 
 def sphere_sweep(
     radius: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     loads: Iterable[float],
     *,
     model: str = "hysteresis",
@@ -333,7 +334,8 @@ def sphere_sweep(
     Parameters
     ----------
     radius, e_star : float
-        Ball radius R (m), composite modulus E* (Pa).
+        Ball radius R (m), composite modulus E* (Pa) or a resolved
+        :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     loads : iterable of float
         Normal loads (N); see :func:`log_loads`.
     model : {"hysteresis", "plastic"}
@@ -362,6 +364,7 @@ def sphere_sweep(
     """
     from contact.setups.ball_on_plate import SphereContact
 
+    e_star = modulus(e_star)  # a resolved pair or its E*
     if model not in MODELS:
         raise ContactInputError(f"model must be one of {MODELS}, got {model!r}")
     if model == "plastic" and hardness is None:

@@ -36,6 +36,7 @@ from contact.adhesion.cycle import Cycle, approach_retraction
 from contact.adhesion.laws import InteractionLaw, tabor_parameter
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
+from contact.material_pair import MaterialPair, modulus
 
 #: A cohesive zone narrower than this many pixels is under-resolved: about 7 % on the
 #: pull-off at lambda = 1 (see the module notes).
@@ -108,8 +109,8 @@ def scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[float, fl
             (math.pi ** 2 * w * w * radius / k ** 2) ** (1.0 / 3.0))
 
 
-def adhesive_ball(radius: float, e_star: float, law: InteractionLaw, *, grid: int = 128,
-                  size: float | None = None, steps: int = 40, tol: float = 1e-6,
+def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionLaw, *,
+                  grid: int = 128, size: float | None = None, steps: int = 40, tol: float = 1e-6,
                   roughness: np.ndarray | None = None,
                   progress: Callable[[int, int], None] | None = None) -> AdhesiveBall:
     """Approach a sphere to a flat until its contact is about the JKR size, then retract.
@@ -117,7 +118,8 @@ def adhesive_ball(radius: float, e_star: float, law: InteractionLaw, *, grid: in
     Parameters
     ----------
     radius, e_star : float
-        Sphere radius (m) and composite modulus (Pa).
+        Sphere radius (m) and composite modulus (Pa),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         :class:`~contact.adhesion.laws.DugdaleLaw` or
         :class:`~contact.adhesion.laws.ExponentialLaw`.
@@ -137,6 +139,7 @@ def adhesive_ball(radius: float, e_star: float, law: InteractionLaw, *, grid: in
         Called as ``progress(step, total)``.
     """
     positive(radius, "the radius", "m")
+    e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
     if int(grid) != grid or grid < 16:
         raise ContactInputError(f"the grid must be an integer of at least 16, got {grid!r}")

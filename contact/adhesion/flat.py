@@ -377,7 +377,8 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
     gap0 : ndarray
         Initial gap to the flat (``max(z) - z`` for a surface z).
     dx, e_star : float
-        Pixel (m) and composite modulus (Pa).
+        Pixel (m) and composite modulus (Pa),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         The adhesion law.
     pressures : array_like
@@ -397,6 +398,9 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
     progress : callable, optional
         Called as ``progress(done, total)`` after each pressure.
     """
+    from contact.material_pair import modulus
+
+    e_star = modulus(e_star)  # a resolved pair or its E*
     problem = adhesive_problem(gap0, dx, e_star, law)
     p = np.atleast_1d(np.asarray(pressures, dtype=float))
     if p.size == 0 or not np.all(np.isfinite(p)) or np.any(np.diff(p) <= 0):

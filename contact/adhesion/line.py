@@ -57,6 +57,7 @@ from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
 from contact.halfspace.influence import periodic_kernel_spectrum
+from contact.material_pair import MaterialPair, modulus
 
 #: The default cell, in units of the larger of a_0 and the reach of the interaction.
 CELL_WIDTHS = 16.0
@@ -192,8 +193,8 @@ def _approach_range(problem: AdhesiveProblem, x: np.ndarray, radius: float,
     return min(2.0 * d_c, 0.0) - 1.5 * law.reach - 3.0 * z_rms, deepest
 
 
-def adhesive_line(radius: float, e_star: float, law: InteractionLaw, *, cells: int = 2048,
-                  size: float | None = None, steps: int = 40, tol: float = 1e-7,
+def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionLaw, *,
+                  cells: int = 2048, size: float | None = None, steps: int = 40, tol: float = 1e-7,
                   roughness: np.ndarray | None = None,
                   progress: Callable[[int, int], None] | None = None) -> AdhesiveLine:
     """Approach a cylinder to a flat until its contact is about 1.5 a_0 wide, then retract.
@@ -201,7 +202,8 @@ def adhesive_line(radius: float, e_star: float, law: InteractionLaw, *, cells: i
     Parameters
     ----------
     radius, e_star : float
-        Cylinder radius (m) and composite plane-strain modulus (Pa).
+        Cylinder radius (m) and composite plane-strain modulus (Pa),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         :class:`~contact.adhesion.laws.DugdaleLaw` or
         :class:`~contact.adhesion.laws.ExponentialLaw`.
@@ -220,6 +222,7 @@ def adhesive_line(radius: float, e_star: float, law: InteractionLaw, *, cells: i
         Called as ``progress(step, total)``.
     """
     positive(radius, "the radius", "m")
+    e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
     if int(cells) != cells or cells < 64:
         raise ContactInputError(f"the cells must be an integer of at least 64, got {cells!r}")

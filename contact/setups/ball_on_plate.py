@@ -47,6 +47,7 @@ from contact.geometry import (
     sphere_gap,
 )
 from contact.hertz import hertz_sphere
+from contact.material_pair import MaterialPair, modulus
 from contact.record import edge_warning, raise_edge
 from contact.sampling import fill_nan, sample_roughness
 from contact.setups.composite import CompositeRoughness
@@ -61,8 +62,10 @@ class SphereContact:
     ----------
     radius : float
         Ball radius R (m).
-    e_star : float
-        Composite modulus E* (Pa).
+    e_star : float or MaterialPair
+        Composite modulus E* (Pa), or a resolved :class:`contact.material_pair.MaterialPair`
+        (its E*, bit for bit). A pair's default hardness is not applied: the cap is
+        ``hardness`` alone (give ``pair.hardness``).
     load : float
         The (largest) load the domain is sized for (N).
     roughness : CompositeRoughness, optional
@@ -91,7 +94,7 @@ class SphereContact:
     def __init__(
         self,
         radius: float,
-        e_star: float,
+        e_star: float | MaterialPair,
         load: float,
         *,
         roughness: CompositeRoughness | None = None,
@@ -104,7 +107,7 @@ class SphereContact:
         results: int = 1,
     ):
         self.radius = positive(radius, "the ball radius", "m")
-        self.e_star = positive(e_star, "E*", "Pa")
+        self.e_star = positive(modulus(e_star), "E*", "Pa")
         self.design_load = positive(load, "the load", "N")
         self.hardness = None if hardness is None else positive(hardness, "the hardness", "Pa")
         self.periodic = bool(periodic)
@@ -357,7 +360,7 @@ def _with(res: ContactResult, **changes: Any) -> ContactResult:
 def solve_sphere(
     radius: float,
     load: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     *,
     roughness: CompositeRoughness | None = None,
     hardness: float | None = None,

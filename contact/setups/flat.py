@@ -35,6 +35,7 @@ import numpy as np
 from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.fields import corrected_area
+from contact.material_pair import MaterialPair, modulus
 from contact.record import SolveRecord, combine, edge_message
 
 #: Relative pressure step of the stiffness solve.
@@ -130,7 +131,7 @@ def flat_contact(
     dy: float | None = None,
     *,
     pressures: np.ndarray | list[float],
-    e_star: float,
+    e_star: float | MaterialPair,
     periodic: bool,
     hardness: float | None = None,
     tol: float = 1e-6,
@@ -147,8 +148,10 @@ def flat_contact(
         Pixel sizes, m.
     pressures : array_like
         Nominal pressures, Pa (any order; solved in increasing order, returned so).
-    e_star : float
-        Composite modulus, Pa (a rigid flat: ``E/(1-ν²)`` of the rough body).
+    e_star : float or MaterialPair
+        Composite modulus, Pa (a rigid flat: ``E/(1-ν²)`` of the rough body),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
+        A pair's default hardness is not applied: the cap is ``hardness`` alone.
     periodic : bool
         Periodic domain, else a free boundary.
     hardness : float, optional
@@ -182,6 +185,7 @@ def flat_contact(
     p = np.sort(np.atleast_1d(np.asarray(pressures, dtype=float)))
     if p.size == 0 or not np.all(np.isfinite(p)) or np.any(p <= 0):
         raise ContactInputError("nominal pressures must be finite and positive")
+    e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
     if hardness is not None and p[-1] >= hardness:
         raise ContactInputError(

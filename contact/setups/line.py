@@ -23,6 +23,7 @@ from contact._validate import frozen, positive
 from contact.bem.line import active_set_record, solve_line_pressure
 from contact.errors import ContactInputError
 from contact.hertz import hertz_cylinder
+from contact.material_pair import MaterialPair, modulus
 from contact.record import SolveRecord, edge_contact, edge_warning
 
 
@@ -89,7 +90,7 @@ def solve_line(
     gap0: np.ndarray,
     dx: float,
     *,
-    e_star: float,
+    e_star: float | MaterialPair,
     load: float,
     origin: float = 0.0,
     max_iter: int = 200,
@@ -107,8 +108,9 @@ def solve_line(
         Initial gap h (m), e.g. x^2/(2R) minus a roughness profile.
     dx : float
         Cell pitch (m).
-    e_star : float
-        Composite modulus E* (Pa).
+    e_star : float or MaterialPair
+        Composite modulus E* (Pa),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     load : float
         Load per unit length W' (N/m).
     origin : float
@@ -127,7 +129,7 @@ def solve_line(
     if h.ndim != 1 or h.size < 2 or not np.isfinite(h).all():
         raise ContactInputError("the line gap must be a finite 1D array of at least 2 cells")
     dx = positive(dx, "dx", "m")
-    e_star = positive(e_star, "E*", "Pa")
+    e_star = positive(modulus(e_star), "E*", "Pa")
     load = positive(load, "the load per length", "N/m")
     n = h.size
     sol = solve_line_pressure(h, dx, e_star, load, max_iter=max_iter)
@@ -154,7 +156,7 @@ def solve_line(
 def solve_cylinder(
     radius: float,
     load: float,
-    e_star: float,
+    e_star: float | MaterialPair,
     *,
     n: int = 1024,
     size: float | None = None,
@@ -169,8 +171,9 @@ def solve_cylinder(
         R (m).
     load : float
         W' (N/m).
-    e_star : float
-        E* (Pa).
+    e_star : float or MaterialPair
+        E* (Pa),
+        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     n : int
         Cells across the domain.
     size : float, optional
@@ -183,7 +186,7 @@ def solve_cylinder(
     """
     radius = positive(radius, "the cylinder's radius", "m")
     load = positive(load, "the cylinder's load", "N/m")
-    e_star = positive(e_star, "the cylinder's E*", "Pa")
+    e_star = positive(modulus(e_star), "the cylinder's E*", "Pa")
     if int(n) < 8:
         raise ContactInputError("the line grid needs at least 8 cells")
     hz = hertz_cylinder(radius, load, e_star)

@@ -118,9 +118,9 @@ def _with_rotor(name: str, sweep: Any, at: Callable[[float], float],
     return Mechanism(name, sweep, moms, eps, text, loads)
 
 
-def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[float],
+def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *, loads: Sequence[float],
                        rotor_loads: tuple[float, float, float], rolling_inertia: float,
-                       speed: float, loss: tuple[float, float], hardness: float,
+                       speed: float, loss: tuple[float, float], hardness: float | None = None,
                        grid: int = 128,
                        microslip: Callable[[Sequence[float]], Any] | None = None,
                        adhesion: tuple[float, float] | None = None
@@ -132,6 +132,8 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
     radius : float
         Ball radius (m).
     ball, plate : contact.materials.Material
+        The bodies; or ``ball`` a resolved :class:`contact.material_pair.MaterialPair` and
+        ``plate`` None (the pair's bodies, E*, shares and default hardness).
     loads : sequence of float
         Load sweep for lambda (N).
     rotor_loads : (N_s, N_1, N_2)
@@ -142,22 +144,28 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any, *, loads: Sequence[
         Rolling speed V (m/s).
     loss : (eta_ball, eta_plate)
         Loss factors.
-    hardness : float
-        Flow pressure of the softer body (Pa).
+    hardness : float, optional
+        Flow pressure of the softer body (Pa); default the pair's hardness.
     microslip : callable, optional
         loads -> RollingSweep of the micro-slip mechanism (the tangential solver).
     adhesion : (w, Delta_w), optional
         Work of adhesion and its hysteresis (J/m^2): the adhesion-hysteresis mechanism.
     """
     from contact.hertz import hertz_sphere
-    from contact.material_pair import resolve_pair
+    from contact.material_pair import MaterialPair, resolve_pair
     from contact.rolling import sphere_sweep
     from contact.viscoelastic.loss import sls_from_loss
     from contact.viscoelastic.sweep import viscoelastic_sweep
 
     if not all(math.isfinite(v) and v > 0 for v in (*loss, speed, rolling_inertia)):
         raise ContactInputError("loss factors, speed and inertia must be positive")
-    pair = resolve_pair(ball, plate)
+    pair = ball if isinstance(ball, MaterialPair) and plate is None else resolve_pair(ball, plate)
+    ball, plate = pair.body1, pair.body2
+    if ball is None or plate is None:
+        raise ContactInputError("the mechanisms need both bodies' materials")
+    hardness = pair.hardness if hardness is None else hardness
+    if hardness is None:
+        raise ContactInputError("the plastic mechanism needs a hardness")
     e_star = pair.e_star
     a_s = hertz_sphere(radius, rotor_loads[0], e_star).a
     t_peak = a_s / speed

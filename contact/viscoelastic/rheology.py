@@ -253,7 +253,7 @@ def pair_creep(body1: object, body2: object) -> CreepSeries:
         if body is None:
             continue
         if isinstance(body, Material):
-            parts.append(CreepSeries((1.0 - body.nu**2) / body.E))
+            parts.append(CreepSeries(body.surface_compliance))
         elif isinstance(body, (StandardLinearSolid, PronySeries)):
             parts.append(body.creep())
         else:

@@ -22,7 +22,6 @@ def add_resolution_study_flag(parser: Any) -> None:
 
 def run_study(args: argparse.Namespace, command: str) -> int:
     """``--resolution-study`` for ``contact``, ``hertz-check`` and ``rolling``."""
-    from surfmet.mechanics.material_spec import material_pair
     from surfmet.mechanics.resolution_study import contact_study, rolling_study, study_lines
     from surfmet.records import study_record
 
@@ -41,30 +40,19 @@ def run_study(args: argparse.Namespace, command: str) -> int:
         from contact.rolling import log_loads
 
         lo, hi, n = args.loads
-        mats = material_pair(args.materials, hardness=args.hardness)
-        kwargs: dict[str, Any] = {"model": args.model, "alpha_h": args.alpha_h,
-                                  "kinematics": args.kinematics}
-        if args.lossy != "both":  # the lossy body's share of the displacement scales M_r
-            shares = mats.shares
-            kwargs["share"] = shares[0] if args.lossy == "ball" else shares[1]
-        if args.model == "plastic":
-            h = mats.hardness
-            if h is None:
-                raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
-            kwargs["hardness"] = h
+        # the facade resolves the materials, the lossy body's share and the hardness
         study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
                                  loads=log_loads(lo, hi, 9 if n is None else n),
-                                 materials=mats, spikes=args.spikes,
-                                 progress=progress, **kwargs)
+                                 materials=args.materials, hardness=args.hardness,
+                                 lossy=args.lossy, spikes=args.spikes, progress=progress,
+                                 model=args.model, alpha_h=args.alpha_h,
+                                 kinematics=args.kinematics)
     else:
-        mats = material_pair(args.materials, hardness=getattr(args, "hardness", None))
-        hardness = mats.hardness if mats.hardness_source == "given" else None
-        if (command == "contact" and args.plastic) or (command == "hertz-check"
-                                                       and not args.elastic):
-            hardness = mats.hardness
-        plate = args.plate
-        study, _ = contact_study(plate, args.ball, radius=args.radius, load=args.load,
-                                 materials=mats, hardness=hardness,
+        plastic = ((command == "contact" and args.plastic)
+                   or (command == "hertz-check" and not args.elastic))
+        study, _ = contact_study(args.plate, args.ball, radius=args.radius, load=args.load,
+                                 materials=args.materials,
+                                 hardness=getattr(args, "hardness", None), plastic=plastic,
                                  spikes=getattr(args, "spikes", "remove"),
                                  progress=progress)
     if args.json:

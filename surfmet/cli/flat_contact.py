@@ -21,7 +21,7 @@ from surfmet.cli._common import (
     show_progress,
 )
 from surfmet.cli.scales import add_measurement_arguments, print_all_scales, read_measurements
-from surfmet.cli.spectrum import add_periodic_argument, materials_e_star, periodic_flag
+from surfmet.cli.spectrum import add_periodic_argument, periodic_flag
 
 EPILOG = """examples:
   surfmet flat-contact plate.x3p --materials steel,aluminium --pressures 1MPa:100MPa:5
@@ -131,19 +131,19 @@ def run(args: argparse.Namespace) -> int:
     check_output(args.plot, "--plot")
     if args.e_star is not None and not args.e_star > 0:
         raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
-    e_star, hard, names = materials_e_star(args.materials, args.hardness, args.e_star)
-    material_hardness = hard
-    if args.hardness is None:
-        hard = None  # the BEM stays elastic unless a hardness is asked for
     scans = read_measurements(args.files)
     if len(scans) > 1:
-        return _run_several(args, scans, pressures, e_star, hard, names, law)
+        return _run_several(args, scans, pressures, law)
     bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
-    rep = flat_contact(scans[0], e_star=e_star, pressures=pressures, hardness=hard,
+    # the facade resolves --materials or --e-star (surfmet.mechanics.material_spec.scan_pair);
+    # the BEM stays elastic unless --hardness is given
+    rep = flat_contact(scans[0], materials=args.materials, e_star=args.e_star,
+                       pressures=pressures, hardness=args.hardness,
                        periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
                        progress=lambda done, total: bar.update(1), spikes=args.spikes,
-                       material_hardness=material_hardness, adhesion=law)
+                       adhesion=law)
     bar.close()
+    names = [] if rep.materials is None else rep.materials.names
     rec = {"file": args.files[0], **({"materials": names} if names else {}),
            **flat_contact_record(rep)}
     if args.plot:
@@ -155,18 +155,20 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, e_star: float,
-                 hard: float | None, names: list[str], law: Any) -> int:
+def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, law: Any) -> int:
     """Persson from the averaged PSD of all measurements; the BEM on the first map."""
     from surfmet.batch import progress_bar
     from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
     from surfmet.mechanics.flat_contact import flat_contact, plot
+    from surfmet.mechanics.material_spec import scan_pair
     from surfmet.model import Topography
     from surfmet.records import flat_contact_record
     from surfmet.records.all_scales import all_scales_record
     from surfmet.scale_dependent import analyze_scales
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
+    pair = scan_pair(args.materials, e_star=args.e_star, hardness=args.hardness)
+    e_star, names = pair.e_star, pair.names
     a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
     s = all_scales_spectrum(a)
     curve = persson_all_scales(s, pressures, e_star)
@@ -179,7 +181,8 @@ def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, e_s
         rec["all_scales"]["notes"].append("no BEM: none of the measurements is a height map")
     else:
         bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))
-        rep = flat_contact(scans[first], e_star=e_star, pressures=pressures, hardness=hard,
+        rep = flat_contact(scans[first], materials=pair, pressures=pressures,
+                           hardness=args.hardness,
                            periodic=periodic_flag(args.periodic), stiffness=args.stiffness,
                            progress=lambda done, total: bar.update(1), spikes=args.spikes,
                            adhesion=law)

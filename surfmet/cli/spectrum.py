@@ -72,19 +72,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def materials_e_star(text: str | None, hardness: float | None,
-                     e_star: float | None = None) -> tuple[float, float | None, list[str]]:
-    """``A`` (against a rigid body) or ``A,B``, or E*, -> (E*, hardness, names), resolved
-    once by :func:`surfmet.mechanics.material_spec.material_pair`."""
-    from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.material_spec import material_pair
-
-    if text is not None and len([s for s in str(text).split(",") if s.strip()]) not in (1, 2):
-        raise SurfmetInputError(f"--materials takes A or A,B; got {text!r}")
-    pair = material_pair(text, e_star=e_star, hardness=hardness, rigid_flat=True)
-    return pair.e_star, pair.hardness, [m.name for m in (pair.body1, pair.body2) if m]
-
-
 def run(args: argparse.Namespace) -> int:
     from surfmet.cli.scales import read_measurements
     from surfmet.mechanics.spectrum import prepared_scan, spectrum
@@ -96,17 +83,14 @@ def run(args: argparse.Namespace) -> int:
         return _run_several(args, scans)
     scan, per, level, preparation = prepared_scan(scans[0], periodic=periodic_flag(args.periodic),
                                                   spikes=args.spikes)
-    e_star = hard = None
-    names: list[str] = []
-    if args.materials:
-        e_star, hard, names = materials_e_star(args.materials, args.hardness)
-    s = spectrum(scan, periodic=per, e_star=e_star, hardness=hard)
+    # the facade resolves the materials (surfmet.mechanics.material_spec.scan_pair)
+    s = spectrum(scan, periodic=per, materials=args.materials or None, hardness=args.hardness)
     rec = {"file": args.files[0], "levelling": level, "scan_preparation": preparation,
            **spectrum_record(s)}
-    if names:
-        rec["materials"] = names
-        rec["e_star"] = {"value": e_star, "unit": "Pa"}
-        rec["hardness"] = {"value": hard, "unit": "Pa"}
+    if s.materials is not None:
+        rec["materials"] = s.materials.names
+        rec["e_star"] = {"value": s.materials.e_star, "unit": "Pa"}
+        rec["hardness"] = {"value": s.materials.hardness, "unit": "Pa"}
     if args.plot:
         from surfmet.plots.spectrum import spectrum_figure
 
@@ -122,14 +106,14 @@ def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
     """The averaged PSD of several measurements and the rms values of its band."""
     from surfmet.cli.scales import print_all_scales
     from surfmet.mechanics.all_scales import all_scales_spectrum
+    from surfmet.mechanics.material_spec import scan_pair
     from surfmet.records.all_scales import all_scales_record
     from surfmet.scale_dependent import analyze_scales
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
-    e_star = hard = None
-    names: list[str] = []
-    if args.materials:
-        e_star, hard, names = materials_e_star(args.materials, args.hardness)
+    pair = scan_pair(args.materials, hardness=args.hardness) if args.materials else None
+    e_star, hard = (None, None) if pair is None else (pair.e_star, pair.hardness)
+    names = [] if pair is None else pair.names
     a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
     s = all_scales_spectrum(a)
     rec = {"files": args.files, **({"materials": names} if names else {}),

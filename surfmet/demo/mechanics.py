@@ -40,13 +40,11 @@ def rotor_loads() -> dict[str, float]:
 def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
     """Elastic-perfectly-plastic contact at ``load`` on the Hertz check's paired roughness
     (:mod:`surfmet.mechanics.ball_contact`)."""
-    from contact.material_pair import resolve_pair
     from surfmet.mechanics.ball_contact import BallContact, solve_on_pair
 
     pair = check.scans.pair
-    hardness = resolve_pair(check.ball_material, check.plate_material).hardness
-    res, found = solve_on_pair(pair, radius=RADIUS, load=load, e_star=check.e_star,
-                               hardness=hardness)
+    res, found = solve_on_pair(pair, radius=RADIUS, load=load, e_star=check.materials,
+                               hardness=check.materials.hardness)
     sol = BallContact(result=res, ball_material=check.ball_material,
                       plate_material=check.plate_material, pair=pair, radius=RADIUS,
                       plate_file="paper_plate.x3p", ball_file="paper_ball.x3p", warnings=found)

@@ -78,27 +78,26 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     """
     from contact.adhesion.ball import adhesive_ball, default_size
 
-    e_star = resolve_e_star(materials, e_star)
+    mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
     grid = 128 if grid is None else grid
     if size is None:
-        size = default_size(radius, e_star, law)
+        size = default_size(radius, mats.e_star, law)
     z, scans = rough_grid(plate, ball, grid, size, spikes)
-    res = adhesive_ball(radius, e_star, law, grid=grid, size=size, steps=steps,
+    res = adhesive_ball(radius, mats, law, grid=grid, size=size, steps=steps,
                         roughness=z, progress=progress)
     return Adhesion(res, scans)
 
 
-def resolve_e_star(materials: Any, e_star: float | None) -> float:
-    """E* (Pa) from exactly one of a material pair and E* itself (resolved once, by
-    :func:`surfmet.mechanics.material_spec.material_pair`)."""
+def adhesion_pair(materials: Any, e_star: float | None) -> Any:
+    """The resolved pair (:class:`contact.material_pair.MaterialPair`) of exactly one of a
+    material pair and E* itself (Pa), by
+    :func:`surfmet.mechanics.material_spec.material_pair`."""
     from surfmet.mechanics.material_spec import material_pair
 
     if (materials is None) == (e_star is None):
         raise SurfmetInputError("give exactly one of the materials and E*")
-    if e_star is None:
-        e_star = material_pair(materials).e_star
-    return float(e_star)
+    return material_pair(materials, e_star=e_star)
 
 
 def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIKES

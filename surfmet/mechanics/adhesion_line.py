@@ -16,10 +16,10 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion import (
     Adhesion,
+    adhesion_pair,
     interaction_law,
     interaction_name,
     jump_record,
-    resolve_e_star,
     scan_too_small,
     scans_record,
 )
@@ -50,7 +50,7 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
 
     from contact.adhesion.line import CELL_WIDTHS, adhesive_line, line_scales
 
-    e_star = resolve_e_star(materials, e_star)
+    mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
     cells = grid
     if ball is not None:
@@ -61,7 +61,7 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
         raise SurfmetInputError(f"the cells of a line contact must be an integer of at least "
                                 f"64, got {cells!r}")
     if size is None:
-        size = CELL_WIDTHS * max(line_scales(radius, e_star, law))
+        size = CELL_WIDTHS * max(line_scales(radius, mats.e_star, law))
     z, scans = None, None
     if plate is not None:
         from contact.grid import Grid
@@ -78,7 +78,7 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
                              Grid(x=x, y=np.zeros(1), pitch=(dx, dx)), average=False)[0]
         scans = scans_record(prep, plate, None, dx, z)
         scans["profile"] = "the row through the middle of the plate scan, along its x"
-    res = adhesive_line(radius, e_star, law, cells=cells, size=size, steps=steps,
+    res = adhesive_line(radius, mats, law, cells=cells, size=size, steps=steps,
                         roughness=z, progress=progress)
     return Adhesion(res, scans)
 

@@ -144,11 +144,12 @@ def solution_warnings(res: Any, mats: Any) -> list[str]:
     return out
 
 
-def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: float,
+def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: Any,
                   hardness: float | None = None, offset: tuple[float, float] | None = None,
                   max_grid: int | None = MAX_GRID, **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).
 
+    ``e_star`` is the resolved :class:`contact.material_pair.MaterialPair` (or its E*, Pa).
     ``options`` go to the set-up and the solver (``grid``, ``size``, ``periodic``,
     ``max_grid``, ``on_edge``, ``tol``, ``max_iter``, ``callback``). Returns the result and
     the warnings of the solve as text (a contact reaching the domain's edge).
@@ -221,7 +222,6 @@ def ball_contact(
 
     mats = material_pair(materials)
     ball_m, plate_m = parse_materials(mats)
-    e_star = mats.e_star
     cap = _hardness(hardness, plastic, mats)
     if not (tol > 0):
         raise SurfmetInputError("--tol must be positive")
@@ -233,7 +233,7 @@ def ball_contact(
         from surfmet.mechanics.pairing import apex_centre
 
         apex_centre(pair, offset)  # refuses a track position without a scan
-    res, found = solve_on_pair(pair, offset=offset, radius=radius, load=load, e_star=e_star,
+    res, found = solve_on_pair(pair, offset=offset, radius=radius, load=load, e_star=mats,
                                hardness=cap,
                                periodic=periodic, grid=grid, size=size, max_grid=max_grid,
                                tol=tol, max_iter=max_iter, callback=callback,

@@ -45,6 +45,7 @@ class FlatContactReport:
     preparation: dict[str, Any] = field(default_factory=dict)
     caveats: tuple[str, ...] = ()
     adhesion: Any = None  # contact.adhesion.flat.AdhesiveFlat, when a law was given
+    materials: Any = None  # contact.material_pair.MaterialPair, when materials were given
 
     @property
     def periodic(self) -> bool:
@@ -79,19 +80,19 @@ def parse_pressures(text: str) -> np.ndarray:
     return np.unique(vals)
 
 
-def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
+def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
                  stiffness: str = "curve", progress: Any = None,
                  spikes: Any = SPIKES, material_hardness: float | None = None,
-                 adhesion: Any = None) -> FlatContactReport:
+                 adhesion: Any = None, materials: Any = None) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
     ----------
     topo : Topography
         The rough scan (heights in m).
-    e_star : float
-        Composite modulus E*, Pa.
+    e_star : float, optional
+        Composite modulus E*, Pa; or give ``materials``.
     pressures : array_like or str
         Nominal pressures (Pa) or text for :func:`parse_pressures`.
     hardness : float, optional
@@ -111,6 +112,11 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
         An adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`): the scan is
         also pressed with adhesion at each pressure (:func:`adhesive_sweep`), beside the
         non-adhesive BEM.
+    materials : str or MaterialPair, optional
+        ``"A"`` (the scan on a rigid flat), ``"A,B"`` (on an elastic flat of B) or a resolved
+        pair, instead of ``e_star`` (:func:`surfmet.mechanics.material_spec.scan_pair`):
+        E* from the pair, ``material_hardness`` by default the pair's hardness (``hardness``
+        when given); kept in :attr:`FlatContactReport.materials`.
 
     A scan dominated by a curved form (a ball's cap) has its second-order surface removed,
     and a caveat says so (:func:`surfmet.mechanics.spectrum.prepare`).
@@ -127,6 +133,13 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))
+    pair = None
+    if materials is not None:
+        from surfmet.mechanics.material_spec import scan_pair
+
+        pair = scan_pair(materials, e_star=e_star, hardness=hardness)
+        e_star = pair.e_star
+        material_hardness = pair.hardness if material_hardness is None else material_hardness
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
     scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
@@ -136,7 +149,8 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
                     hardness=hardness)
     try:
         bem = bem_sweep(np.asarray(scan.heights), scan.dx, scan.dy, pressures=p,
-                        e_star=e_star, periodic=per, hardness=hardness, stiffness=stiffness,
+                        e_star=e_star if pair is None else pair, periodic=per,
+                        hardness=hardness, stiffness=stiffness,
                         progress=progress)
         ps = spec.psd
         models = {
@@ -154,7 +168,7 @@ def flat_contact(topo: Topography, *, e_star: float, pressures: Any,
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
                              settings={"pressures": p.tolist()}, preparation=preparation,
                              caveats=form + _yield_caveats(p, hardness or material_hardness),
-                             adhesion=adhesive)
+                             adhesion=adhesive, materials=pair)
 
 
 #: Pixels whose sides differ by less than this share are square for the adhesive solve,

@@ -56,6 +56,8 @@ class HertzCheck:
     ball_material, plate_material : contact.materials.Material
     scans : PreparedScans
     notes : tuple of str
+    materials : contact.material_pair.MaterialPair
+        The resolved pair (E*, the default hardness and its source).
     """
 
     comparison: Any
@@ -72,6 +74,7 @@ class HertzCheck:
     summits: Any = None
     grid: int | None = None
     adhesion: Any = None  # surfmet.mechanics.hertz_adhesion.HertzAdhesion
+    materials: Any = None  # contact.material_pair.MaterialPair
 
     @property
     def verdict(self) -> str:
@@ -216,7 +219,7 @@ def hertz_check(
     prep = prepare_scans(scan, ball, spikes=spikes)
     pair = prep.pair
     check = check_sphere(
-        radius, load, e_star,
+        radius, load, mats,
         roughness=None if pair is None else pair.composite(offset),
         sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
     )
@@ -239,7 +242,7 @@ def hertz_check(
                       plastic=check.plastic, radius=radius, load=load, e_star=e_star,
                       ball_material=ball_m, plate_material=plate_m, scans=prep,
                       notes=tuple(notes), hierarchy=hierarchy, summits=summits, grid=grid,
-                      adhesion=adhesion)
+                      adhesion=adhesion, materials=mats)
 
 
 def _adhesion(summits: Any, radius: float, load: float, e_star: float, work: float | None,

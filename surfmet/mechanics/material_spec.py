@@ -113,3 +113,15 @@ def material_pair(materials: Any = None, *, e_star: float | None = None,
             and len([s for s in materials.split(",") if s.strip()]) == 1):
         return resolve_pair(parse_material(materials.strip(" ,")), hardness=hardness)
     return resolve_pair(*parse_materials(materials), hardness=hardness)
+
+
+def scan_pair(materials: Any = None, *, e_star: float | None = None,
+              hardness: float | None = None) -> Any:
+    """The pair of a scan pressed on a flat (``spectrum``, ``flat-contact``): ``"A"`` (the
+    scan's material on a rigid flat), ``"A,B"`` (on an elastic flat of B), a resolved pair,
+    or ``e_star`` (Pa) instead; ``hardness`` (Pa) replaces the softer body's table value
+    (:func:`material_pair` with ``rigid_flat``)."""
+    if isinstance(materials, str) and len([s for s in materials.split(",")
+                                           if s.strip()]) not in (1, 2):
+        raise SurfmetInputError(f"--materials takes A or A,B; got {materials!r}")
+    return material_pair(materials, e_star=e_star, hardness=hardness, rigid_flat=True)

@@ -35,17 +35,19 @@ QUANTITIES = {
 }
 
 
-def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any) -> tuple[float, Any]:
-    """The composite modulus E* (Pa) of the materials and the prepared scans of a study."""
+def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any,
+                  hardness: float | None = None) -> tuple[Any, Any]:
+    """The resolved pair (:class:`contact.material_pair.MaterialPair`, ``hardness`` in place
+    of the table's) and the prepared scans of a study."""
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
-    mats = material_pair(materials)
+    mats = material_pair(materials, hardness=hardness)
     parse_materials(mats)  # both bodies are needed
     if plate is None and ball is None:
         raise SurfmetInputError("a resolution study needs a scan (--plate and/or --ball): a "
                                 "smooth contact has nothing to refine")
-    return mats.e_star, prepare_scans(plate, ball, spikes=spikes)
+    return mats, prepare_scans(plate, ball, spikes=spikes)
 
 
 def contact_study(
@@ -56,6 +58,7 @@ def contact_study(
     load: float,
     materials: Any = "steel,aluminium",
     hardness: float | None = None,
+    plastic: bool = False,
     spikes: Any = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Any = None,
@@ -68,10 +71,12 @@ def contact_study(
         The scans (at least one).
     radius, load : float
         R (m), W (N).
-    materials : str or (Material, Material)
-        ``"BALL,PLATE"``.
+    materials : str, (Material, Material) or MaterialPair
+        ``"BALL,PLATE"``, resolved here.
     hardness : float, optional
         Adds the elastic-plastic solve and the yielded fraction (Pa).
+    plastic : bool
+        Adds it at the pair's hardness (``hardness`` when given, else the softer body's).
     spikes : bool
         Remove spikes first.
     factors : tuple of int
@@ -83,9 +88,11 @@ def contact_study(
     """
     from contact.resolution import sphere_study
 
-    e_star, prep = _study_inputs(plate, ball, materials, spikes)
+    mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
+    if plastic or hardness is not None:
+        hardness = mats.hardness
     pair = prep.pair
-    study = sphere_study(radius, load, e_star, pair.roughness, pair.dx, pair.dy,
+    study = sphere_study(radius, load, mats, pair.roughness, pair.dx, pair.dy,
                          hardness=hardness, sigma=prep.sigma, factors=factors,
                          progress=progress)
     return study, prep
@@ -98,18 +105,32 @@ def rolling_study(
     radius: float,
     loads: Any,
     materials: Any = "steel,aluminium",
+    hardness: float | None = None,
+    lossy: str = "both",
     spikes: Any = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Any = None,
     **sweep_kwargs: Any,
 ) -> tuple[Any, Any]:
     """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
-    ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`."""
+    ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`.
+
+    The materials are resolved here: ``lossy`` ("ball" or "plate") scales the hysteresis
+    moment by that body's share of the displacement, and the plastic model takes the pair's
+    hardness (``hardness`` when given, else the softer body's)."""
     from contact.resolution import rolling_study as engine
 
-    e_star, prep = _study_inputs(plate, ball, materials, spikes)
+    mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
+    if lossy not in ("both", "ball", "plate"):
+        raise SurfmetInputError(f"lossy must be both, ball or plate, got {lossy!r}")
+    if lossy != "both":  # the lossy body's share of the displacement scales M_r
+        sweep_kwargs["share"] = mats.shares[0 if lossy == "ball" else 1]
+    if sweep_kwargs.get("model") == "plastic":
+        if mats.hardness is None:
+            raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
+        sweep_kwargs["hardness"] = mats.hardness
     pair = prep.pair
-    study = engine(radius, e_star, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
+    study = engine(radius, mats, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
                    progress=progress, **sweep_kwargs)
     return study, prep
 

@@ -157,7 +157,6 @@ def rolling_resistance(
         raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
     mats = material_pair(materials)
     ball_m, plate_m = parse_materials(mats)
-    e_star = mats.e_star
     if model == "plastic" and hardness is None:
         hardness = mats.hardness
         if hardness is None:
@@ -183,7 +182,7 @@ def rolling_resistance(
             grid=grid or 32, progress=progress)
     else:
         sweep = sphere_sweep(
-            radius, e_star, w, model=model,
+            radius, mats, w, model=model,
             roughness=None if pair is None else CompositeRoughness(
                 pair.roughness, pair.dx, pair.dy, centre=centre),
             roughness_rms=prep.sigma, hardness=hardness, alpha_h=alpha_h,

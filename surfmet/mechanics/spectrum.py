@@ -82,6 +82,8 @@ class Spectrum:
         Nayak/McCool summit statistics (α, η, R_s, σ_s).
     plasticity : float or None
         ψ = (E*/H) √(σ_s/R_s) when E* and the hardness were given.
+    materials : MaterialPair or None
+        The resolved pair the plasticity index used, when materials were given.
     """
 
     psd: PSD
@@ -99,6 +101,7 @@ class Spectrum:
     plasticity: float | None = None
     settings: dict[str, Any] = field(default_factory=dict)
     noise_floor: float | None = None
+    materials: Any = None
 
 
 def is_periodic(topo: Topography, tol: float = 0.1) -> bool:
@@ -249,7 +252,7 @@ def _noise_floor(spec: PSD, band: tuple[float, float]) -> float | None:
 
 
 def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | None = None,
-             hardness: float | None = None) -> Spectrum:
+             hardness: float | None = None, materials: Any = None) -> Spectrum:
     """Describe a scan's spectrum (see the module docstring).
 
     Parameters
@@ -260,6 +263,11 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
         None detects periodicity from the edges (:func:`is_periodic`).
     e_star, hardness : float, optional
         Composite modulus and the softer body's hardness (Pa) for the plasticity index.
+    materials : str or MaterialPair, optional
+        ``"A"`` (the scan on a rigid flat) or ``"A,B"``, or a resolved pair, instead of
+        ``e_star``: E* and the default hardness come from the pair
+        (:func:`surfmet.mechanics.material_spec.scan_pair`; ``hardness`` overrides it), and
+        the pair is kept in :attr:`Spectrum.materials`.
 
     Raises
     ------
@@ -268,6 +276,12 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"spectrum needs an areal scan, got {type(topo).__name__}")
+    pair = None
+    if materials is not None:
+        from surfmet.mechanics.material_spec import scan_pair
+
+        pair = scan_pair(materials, e_star=e_star, hardness=hardness)
+        e_star, hardness = pair.e_star, pair.hardness
     if topo.nx < 16 or topo.ny < 16:
         raise SurfmetInputError(f"a spectrum needs at least 16 x 16 points, got "
                                 f"{topo.nx} x {topo.ny}")
@@ -326,7 +340,7 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
                     h_rms=summits.h_rms, slope_rms=summits.slope_rms,
                     curvature_rms=summits.curvature_rms, h_rms_real=h_r, slope_rms_real=s_r,
                     curvature_rms_real=c_r, summits=summits, plasticity=psi,
-                    settings=settings, noise_floor=floor)
+                    settings=settings, noise_floor=floor, materials=pair)
 
 
 def prepared_scan(topo: Any, *, periodic: bool | None = None, spikes: Any = None

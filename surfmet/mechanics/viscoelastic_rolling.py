@@ -245,12 +245,11 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     from contact.viscoelastic.mechanisms import compare_mechanisms
     from surfmet.mechanics.material_spec import material_pair, parse_materials
 
-    mats = material_pair(materials)
+    mats = material_pair(materials, hardness=hardness)
     ball_m, plate_m = parse_materials(mats)
     if loss is None:
         loss = (loss_data(ball_m.name).typical, loss_data(plate_m.name).typical)
-    hardness = hardness if hardness is not None else mats.hardness
-    if hardness is None:
+    if mats.hardness is None:
         raise SurfmetInputError("the plastic mechanism needs a hardness (--hardness)")
     sym = mass_properties(collar_offset="symmetric")
     asym = mass_properties(collar_offset="end")
@@ -259,9 +258,9 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     sweep = log_loads(*loads) if isinstance(loads, tuple) else np.asarray(loads, float)
     ms = None if mu is None else microslip_sweep(radius, (ball_m, plate_m), mu)
     adh, adh_notes = _adhesion_numbers(ball_m.name, plate_m.name, *adhesion)
-    comp = compare_mechanisms(radius, ball_m, plate_m, loads=sweep, rotor_loads=(ns, n1, n2),
+    comp = compare_mechanisms(radius, mats, loads=sweep, rotor_loads=(ns, n1, n2),
                               rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
-                              hardness=hardness, grid=grid, microslip=ms, adhesion=adh)
+                              grid=grid, microslip=ms, adhesion=adh)
     notes = (() if mu is not None else ("micro-slip left out (no friction coefficient)",)) \
         + adh_notes
     from surfmet.mechanics.rotor_verdict import paper_verdict
