@@ -7,9 +7,9 @@ memory. Their plain-numpy twins are in ``tests/test_adhesion_kernels.py``.
 The law is passed as a code and two numbers: ``DUGDALE`` (tension ``peak`` below the gap
 ``reach``, none beyond) or ``EXPONENTIAL`` (tension ``peak`` exp(-g / ``reach``)), as in
 :mod:`contact.adhesion.laws`; ``EXPONENTIAL_SINGLE`` is the exponential law with its
-exponential taken in float32 (relative error about 1e-7), for the loose solves whose FFTs
-are float32 too. The exponential is most of a kernel's time, so touching cells (g = 0)
-take t = ``peak`` without it.
+exponential to float32 accuracy (a table and a polynomial, relative error below 1e-8), for
+the loose solves whose FFTs are float32 too. The exponential is most of a kernel's time,
+so touching cells (g = 0) take t = ``peak`` without it.
 """
 
 from __future__ import annotations
@@ -22,6 +22,10 @@ import numpy as np
 DUGDALE = 0
 EXPONENTIAL = 1
 EXPONENTIAL_SINGLE = 2
+#: exp(-j / 16), j = 0 ... _EXP_CELLS: the single-precision exponential is a table entry
+#: times exp(-f), f < 1/16, by its Taylor quartic (relative error below 1e-8)
+_EXP_CELLS = 1408
+_EXP_TABLE = np.exp(-np.arange(_EXP_CELLS + 1) / 16.0)
 
 
 @nb.njit(cache=True)
@@ -43,8 +47,15 @@ def gradient_step(y, g, p, kind, peak, reach, step, g_new):  # pragma: no cover 
             t = peak
         elif kind == EXPONENTIAL:
             t = peak * math.exp(-yi / reach)
-        else:  # float32 exp: about half the time of the float64 one
-            t = peak * math.exp(np.float32(-yi / reach))
+        else:  # a table and a quartic: a third of the time of a float32 exp
+            s = yi * (16.0 / reach)
+            if s >= _EXP_CELLS:
+                t = 0.0  # below 1e-38 peak
+            else:
+                j = int(s)
+                f = (j - s) * 0.0625
+                t = peak * _EXP_TABLE[j] * (1.0 + f * (1.0 + f * (
+                    0.5 + f * (1.0 / 6.0 + f * (1.0 / 24.0)))))
         pi = p[i]
         gr = pi + t
         if pi > pmax:
