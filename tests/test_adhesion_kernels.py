@@ -45,7 +45,7 @@ def test_gradient_step_is_its_twin(law):
 
 
 def test_single_exponential_is_its_twin_to_float32():
-    """The float32-exponential code of the loose solves: the law's traction to ~1e-7."""
+    """The single-precision exponential of the loose solves: the law's traction to 1e-7."""
     law = ExponentialLaw(0.05, 3e-9)
     rng = np.random.default_rng(9)
     n = 500
@@ -59,7 +59,7 @@ def test_single_exponential_is_its_twin_to_float32():
     g_ref, viol_ref, pmax_ref, _ = gradient_step_reference(y, g, p, law, step)
     # the step moves y by step * t: an error of 1e-7 in t is 1e-7 of step * peak
     assert np.allclose(out, g_ref, rtol=0.0, atol=2e-7 * step * law.peak)
-    assert not np.array_equal(out, g_ref)  # it is the float32 exponential
+    assert not np.array_equal(out, g_ref)  # it is not the float64 exponential
     touching = y <= 0.0  # t = peak exactly there
     assert np.array_equal(out[touching], g_ref[touching])
     assert viol == pytest.approx(viol_ref, rel=1e-6) and pmax == pmax_ref

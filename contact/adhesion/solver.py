@@ -197,7 +197,8 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
         Warm start, required: a gap field (e.g. the rigid gap touching at its highest
         point, or the previous load's equilibrium).
     single : bool
-        Run the two FFTs of each iteration in float32 (about four times cheaper), for
+        Run the two FFTs of each iteration in float32 (about four times cheaper), and
+        the exponential law's exponential to float32 accuracy (:mod:`contact.adhesion.kernels`), for
         loose tolerances only: their rounding, about 1e-7 of the largest modal pressure,
         must stay well below ``tol`` times the pressure scale. The iteration then stops at
         half ``tol``, and the final residual is checked in float64.
