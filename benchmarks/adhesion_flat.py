@@ -25,24 +25,35 @@ beside Tamaas' stored ones::
 
     python3 benchmarks/adhesion_flat.py --sizes 256,512
 
-Measured 2026-11-27, 17:35 UTC, on the shared 2-core AMD EPYC sandbox under a load
-average of 5.3 (four agents), ``--repeat 3``, least CPU s of the three (one BLAS thread;
+Measured 2026-11-27, 17:55 UTC, on the shared 2-core AMD EPYC sandbox under a load
+average of 3.4 (four agents), ``--repeat 3``, least CPU s of the three (one BLAS thread;
 Tamaas 2.9.0 stored from an earlier session, OMP_NUM_THREADS=1):
 
     size  ours bare  ours adhesive  ratio  (per run)         Tamaas adhesive  Tamaas bare
-    256    0.17        1.06         6.3    4.9, 6.3, 5.9         6.05           1.04
-    512    0.94        5.40         5.7    4.7, 6.7, 5.6        78.01           7.27
+    256    0.15        0.76         5.0    4.0, 5.0, 6.0         6.05           1.04
+    512    0.89        3.92         4.4    3.4, 5.0, 4.6        78.01           7.27
 
-    adhesive at 512^2: 14 solves, 827 iterations (13 load steps to 3e-3 with float32
-    FFTs, one final solve to 1e-6); area fraction 0.254822, mean gap 4.65361e-4, the
-    same as before the load path (Tamaas -0.57 % and +0.31 %).
+    adhesive at 512^2: 15 solves, 836 iterations (13 load steps to 3e-3 and the final
+    state to 3e-5 with float32 FFTs, then to 1e-6 in float64); area fraction 0.254822,
+    mean gap 4.65359e-4, the same as before the load path (Tamaas -0.57 % and +0.31 %).
+    A run a minute earlier (load 3.7): 512^2 ratio 4.9 (3.6, 4.9, 4.8).
+
+The same day at 17:35 (load 5.3), before the three changes below, the ratio was 5.7 at 512^2
+(adhesive 5.40 s; 4.7, 6.7, 5.6 per run) and 6.3 at 256^2; at 17:45 (load 2.9), 5.45
+(5.75 s; 4.5, 5.5, 5.3). Each change, measured alone at 512^2: touching cells skip the
+exponential, the float32 solves take it in float32 and get their FFT input from the
+momentum kernel (adhesive 5.75 -> 4.82 s, least of three); the final state first to 3e-5
+in float32 (its stage 0.64 -> 0.60 s, least of six paired runs); the float32 solves'
+exponential from a table and a quartic (load path 4.59 -> 4.08 s, least of three
+alternating runs).
 
 Before the load path (secant on the approach, every try a displacement-controlled path
 from the non-contact state; main c8d3f1e, this machine, one run each): 512^2 bare 1.28 s,
 adhesive 125 s (42 solves, 6197 iterations), ratio 98 (measured earlier the same day);
 256^2 ratio 79 (18.0 s, 38 solves, 3749 iterations) and 128^2 44 (2.12 s, 34 solves),
-at 17:37 UTC. The ratio moves by about 1 from run to run with the machine's load: here
-the target of 5 is met on some runs, not on the least times.
+at 17:37 UTC. The ratio moves by about 1 from run to run with the machine's load (the
+bare solve's time most of all): the target of 5 is met on the least times, by a margin
+(0.1 to 0.6 in these two runs) smaller than that spread.
 
 With OpenBLAS' default threads the adhesive solve was 2x slower at 512^2 (measured
 before the load path): np.vdot wakes the BLAS threads, whose spinning bills as CPU time

@@ -44,6 +44,27 @@ def test_gradient_step_is_its_twin(law):
     assert (out == 0.0).any() and (out > 0.0).any()  # both branches of the projection
 
 
+def test_single_exponential_is_its_twin_to_float32():
+    """The single-precision exponential of the loose solves: the law's traction to 1e-7."""
+    law = ExponentialLaw(0.05, 3e-9)
+    rng = np.random.default_rng(9)
+    n = 500
+    y = np.where(rng.random(n) < 0.3, 0.0, rng.random(n) * 3 * law.range)
+    g = np.maximum(y + rng.normal(0.0, 0.2 * law.range, n), 0.0)
+    p = rng.normal(0.0, law.peak, n)
+    step = 0.7 * law.range / law.peak
+    out = np.empty(n)
+    viol, pmax, _ = kernels.gradient_step(y, g, p, kernels.EXPONENTIAL_SINGLE, law.peak,
+                                          law.range, step, out)
+    g_ref, viol_ref, pmax_ref, _ = gradient_step_reference(y, g, p, law, step)
+    # the step moves y by step * t: an error of 1e-7 in t is 1e-7 of step * peak
+    assert np.allclose(out, g_ref, rtol=0.0, atol=2e-7 * step * law.peak)
+    assert not np.array_equal(out, g_ref)  # it is not the float64 exponential
+    touching = y <= 0.0  # t = peak exactly there
+    assert np.array_equal(out[touching], g_ref[touching])
+    assert viol == pytest.approx(viol_ref, rel=1e-6) and pmax == pmax_ref
+
+
 def test_momentum_is_its_twin():
     rng = np.random.default_rng(8)
     g_new, g = rng.random(300), rng.random(300)
@@ -51,4 +72,14 @@ def test_momentum_is_its_twin():
     kernels.momentum(g_new, g_copy, 0.8, y)
     ref = momentum_reference(g_new, g, 0.8)
     assert np.array_equal(y, ref) and (ref == 0.0).any()
+    assert np.array_equal(g_copy, g_new)
+
+
+def test_momentum_single_also_writes_float32():
+    rng = np.random.default_rng(10)
+    g_new, g = rng.random(300), rng.random(300)
+    y, y32, g_copy = np.empty(300), np.empty(300, np.float32), g.copy()
+    kernels.momentum_single(g_new, g_copy, 0.8, y, y32)
+    ref = momentum_reference(g_new, g, 0.8)
+    assert np.array_equal(y, ref) and np.array_equal(y32, ref.astype(np.float32))
     assert np.array_equal(g_copy, g_new)

@@ -197,7 +197,8 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
         Warm start, required: a gap field (e.g. the rigid gap touching at its highest
         point, or the previous load's equilibrium).
     single : bool
-        Run the two FFTs of each iteration in float32 (about four times cheaper), for
+        Run the two FFTs of each iteration in float32 (about four times cheaper), and
+        the exponential law's exponential to float32 accuracy (:mod:`contact.adhesion.kernels`), for
         loose tolerances only: their rounding, about 1e-7 of the largest modal pressure,
         must stay well below ``tol`` times the pressure scale. The iteration then stops at
         half ``tol``, and the final residual is checked in float64.
@@ -217,14 +218,17 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
     stiff = _load_stiffness(problem).astype(real)
     sh = stiff * sfft.rfft2(h.astype(real), workers=1)
     step = 1.0 / problem.spring
-    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
+    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else \
+        kernels.EXPONENTIAL_SINGLE if single else kernels.EXPONENTIAL
     y, g_new, theta = g.copy(), np.empty_like(g), 1.0
     flat_y, flat_g, flat_new = y.ravel(), g.ravel(), g_new.ravel()
+    # the FFT's input: y itself, or its float32 copy written by the momentum kernel
+    y_fft = y.astype(real) if single else y
     nit = max_iter
     # float32 stops at half the tolerance, so that the float64 check passes
     stop = 0.5 * tol if single else tol
     for it in range(1, max_iter + 1):
-        f = sfft.rfft2(y.astype(real, copy=False), workers=1)
+        f = sfft.rfft2(y_fft, workers=1)
         f *= stiff
         f -= sh
         p = sfft.irfft2(f, s=h.shape, workers=1, overwrite_x=True)
@@ -237,7 +241,11 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
         if dot > 0.0:  # momentum points uphill: restart it
             theta = 1.0
         theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
-        kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
+        if single:
+            kernels.momentum_single(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y,
+                                    y_fft.ravel())
+        else:
+            kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
         theta = theta_new
     return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
                   mean_pressure=pressure)
