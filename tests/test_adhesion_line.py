@@ -166,6 +166,9 @@ def test_cli_line_json(capsys):
     assert rec["jkr_pull_off_force"]["value"] == pytest.approx(
         jkr_line_pull_off(W, R, 1e12), rel=1e-12)
     assert rec["scans"] is None
+    solve = rec["solve"]
+    assert solve["converged"] is True and solve["edge_contact"] is False
+    assert solve["iterations"] == rec["solver"]["iterations"] > 0
 
 
 def test_cli_line_refuses_a_ball_scan(capsys, tmp_path):

@@ -148,6 +148,7 @@ def _print_line(run_: Any) -> None:
             print(f"{name:15s} at approach {format_length(jump.approach)}, load "
                   f"{jump.load_before:.4g} -> {jump.load_after:.4g} N/m")
     print(f"hysteresis      {cyc.hysteresis_energy:.4g} J/m lost in the cycle")
+    print_solve(cyc.solve, "solve          ")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
               f"{format_length(run_.scans['roughness_rms']['value'])}")

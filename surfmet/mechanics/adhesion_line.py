@@ -115,6 +115,7 @@ def line_record(run: Any) -> dict[str, Any]:
                  "process_zone_pixels": quantity(res.process_zone / res.dx, "")},
         "solver": {"iterations": int(cyc.approach_leg.iterations.sum()
                                      + cyc.retraction_leg.iterations.sum())},
+        "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
         "scans": run.scans,
         "warnings": list(res.warnings),
