@@ -103,3 +103,26 @@ def test_plot_is_written(capsys, tmp_path):
             "--quiet", "--plot", str(out)]
     assert main(argv) == 0
     assert out.stat().st_size > 1000 and out.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_a_negative_loss_is_named_an_integration_error(capsys, monkeypatch):
+    # a cycle cannot gain energy: the text must not print a negative loss as a loss
+    import dataclasses
+
+    import surfmet.mechanics.adhesion as facade
+
+    real = facade.adhesion
+
+    def gaining(*args, **kwargs):
+        run = real(*args, **kwargs)
+        ball = run.result
+        cycle = dataclasses.replace(ball.cycle, hysteresis_energy=-1e-11)
+        return dataclasses.replace(run, result=dataclasses.replace(ball, cycle=cycle))
+
+    argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "8", "--quiet"]
+    assert main(argv) == 0
+    assert "below the integration error" not in capsys.readouterr().out
+    monkeypatch.setattr(facade, "adhesion", gaining)
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "-1e-11 J lost in the cycle (negative: below the integration error" in out

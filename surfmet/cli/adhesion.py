@@ -126,6 +126,12 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+#: A cycle cannot gain energy: a negative loss is the trapezoidal rule's error over the
+#: approach steps (jumps inside a step), larger than the loss itself.
+_NEGATIVE = (" (negative: below the integration error of the approach steps; use more "
+             "--steps or a finer --grid)")
+
+
 def _print_line(run_: Any) -> None:
     """The text summary of a line-contact cycle."""
     from surfmet.units import format_length
@@ -147,7 +153,8 @@ def _print_line(run_: Any) -> None:
         else:
             print(f"{name:15s} at approach {format_length(jump.approach)}, load "
                   f"{jump.load_before:.4g} -> {jump.load_after:.4g} N/m")
-    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J/m lost in the cycle")
+    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J/m lost in the cycle"
+          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
     print_solve(cyc.solve, "solve          ")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
@@ -178,7 +185,8 @@ def _print(run_: Any) -> None:
             print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
                   f"{format_length(jump.step / 2)}), load {jump.load_before * 1e6:.4g} -> "
                   f"{jump.load_after * 1e6:.4g} uN{'' if jump.abrupt else ' (smooth)'}")
-    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle")
+    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle"
+          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
     print_solve(cyc.solve, "solve          ")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
