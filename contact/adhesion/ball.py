@@ -152,15 +152,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     dx = size / grid
     x = (np.arange(grid) - grid / 2) * dx
     h = (x[:, None] ** 2 + x[None, :] ** 2) / (2.0 * radius)
-    z_rms = 0.0
-    if roughness is not None:
-        z = np.asarray(roughness, dtype=float)
-        if z.shape != h.shape or not np.isfinite(z).all():
-            raise ContactInputError(f"the roughness must be a finite {grid} x {grid} array, "
-                                    f"got shape {z.shape}")
-        z_rms = float(np.std(z))
-        h = h - z
-        h = h - h.min()
+    h, z_rms = rough_gap(h, roughness, f"a finite {grid} x {grid} array")
     problem = adhesive_problem(h, dx, e_star, law)
     deepest = ell * ell / radius + 3.0 * z_rms
     farthest = -(1.5 * d_scale + 1.2 * (reach * reach / (2.0 * radius)))
@@ -205,3 +197,22 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
         out.append("the retraction ended with the surfaces still touching: the pull-off may "
                    "lie beyond the last step")
     return tuple(out)
+
+
+def rough_gap(h: np.ndarray, roughness: np.ndarray | None, shape_words: str
+              ) -> tuple[np.ndarray, float]:
+    """The smooth gap ``h`` less the composite ``roughness`` (same shape), moved to touch
+    at zero, and the roughness's rms (m); ``h`` and 0 without roughness.
+
+    Raises
+    ------
+    ContactInputError
+        A roughness of another shape, or not finite (``shape_words`` says what was expected).
+    """
+    if roughness is None:
+        return h, 0.0
+    z = np.asarray(roughness, dtype=float)
+    if z.shape != h.shape or not np.isfinite(z).all():
+        raise ContactInputError(f"the roughness must be {shape_words}, got shape {z.shape}")
+    h = h - z
+    return h - h.min(), float(np.std(z))

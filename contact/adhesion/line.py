@@ -51,7 +51,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact._validate import positive
-from contact.adhesion.ball import MIN_ZONE_PIXELS
+from contact.adhesion.ball import MIN_ZONE_PIXELS, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.adhesion.solver import AdhesiveProblem
@@ -234,15 +234,7 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
     dx = size / cells
     x = (np.arange(cells) - cells // 2) * dx
     h = x * x / (2.0 * radius)
-    z_rms = 0.0
-    if roughness is not None:
-        z = np.asarray(roughness, dtype=float)
-        if z.shape != h.shape or not np.isfinite(z).all():
-            raise ContactInputError(f"the roughness must be a finite profile of {cells} "
-                                    f"points, got shape {z.shape}")
-        z_rms = float(np.std(z))
-        h = h - z
-        h = h - h.min()
+    h, z_rms = rough_gap(h, roughness, f"a finite profile of {cells} points")
     problem = line_problem(h, dx, e_star, law)
     far, deep = _approach_range(problem, x, radius, z_rms)
     cycle = approach_retraction(problem, np.linspace(far, deep, int(steps)), tol=tol,
