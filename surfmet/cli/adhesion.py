@@ -147,15 +147,7 @@ def _print_line(run_: Any) -> None:
           f"period {format_length(res.size)}")
     print(f"pull-off force  {cyc.pull_off_force:.5g} N/m (JKR {res.jkr_pull_off:.5g} N/m, "
           f"rigid cylinder {res.rigid_pull_off:.5g} N/m)")
-    for name, jump in (("jump-in", cyc.jump_in), ("jump-out", cyc.jump_out)):
-        if jump is None:
-            print(f"{name:15s} none within the approach range")
-        else:
-            print(f"{name:15s} at approach {format_length(jump.approach)}, load "
-                  f"{jump.load_before:.4g} -> {jump.load_after:.4g} N/m")
-    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J/m lost in the cycle"
-          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
-    print_solve(cyc.solve, "solve          ")
+    _print_cycle(cyc, "N/m", 1.0, "J/m")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
               f"{format_length(run_.scans['roughness_rms']['value'])}")
@@ -178,19 +170,28 @@ def _print(run_: Any) -> None:
     print(f"pull-off force  {cyc.pull_off_force * 1e6:.5g} uN = "
           f"{cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius):.4g} pi w R "
           f"(JKR 1.5, DMT 2)")
-    for name, jump in (("jump-in", cyc.jump_in), ("jump-out", cyc.jump_out)):
-        if jump is None:
-            print(f"{name:15s} none within the approach range")
-        else:
-            print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
-                  f"{format_length(jump.step / 2)}), load {jump.load_before * 1e6:.4g} -> "
-                  f"{jump.load_after * 1e6:.4g} uN{'' if jump.abrupt else ' (smooth)'}")
-    print(f"hysteresis      {cyc.hysteresis_energy:.4g} J lost in the cycle"
-          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
-    print_solve(cyc.solve, "solve          ")
+    _print_cycle(cyc, "uN", 1e6, "J")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
               f"{run_.scans['ball'] or '-'}; roughness rms on the grid "
               f"{format_length(run_.scans['roughness_rms']['value'])}")
     for w in ball.warnings:
         print(f"warning         {w}")
+
+
+def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> None:
+    """The jumps, the energy lost and the solve record of a cycle, sphere or line alike
+    (loads times ``scale`` in ``force_unit``)."""
+    from surfmet.units import format_length
+
+    for name, jump in (("jump-in", cyc.jump_in), ("jump-out", cyc.jump_out)):
+        if jump is None:
+            print(f"{name:15s} none within the approach range")
+        else:
+            print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
+                  f"{format_length(jump.step / 2)}), load {jump.load_before * scale:.4g} -> "
+                  f"{jump.load_after * scale:.4g} {force_unit}"
+                  f"{'' if jump.abrupt else ' (smooth)'}")
+    print(f"hysteresis      {cyc.hysteresis_energy:.4g} {energy_unit} lost in the cycle"
+          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
+    print_solve(cyc.solve, "solve          ")
