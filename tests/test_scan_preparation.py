@@ -130,3 +130,22 @@ def test_unknown_spike_choice_is_one_line():
                        "steel,aluminium", "--spikes", "drop"])
     assert rc == 1
     assert "remove" in err and "keep" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_profile_is_refused_in_words_a_user_reads(tmp_path):
+    # the message used to read "an areal scan of the scan, got profile"
+    import numpy as np
+    import pytest
+
+    from surfmet.errors import SurfmetInputError
+    from surfmet.mechanics.scan_preparation import read_areal
+    from surfmet.model import Profile
+
+    prof = Profile(np.zeros(16), dx=1e-6)
+    with pytest.raises(SurfmetInputError) as err:
+        read_areal(prof, "scan")
+    msg = str(err.value)
+    assert "of the scan" not in msg
+    assert msg.startswith("a contact needs an areal scan (a height map), got a ")
+    with pytest.raises(SurfmetInputError, match="height map\\) of the plate, got a "):
+        read_areal(prof, "plate")

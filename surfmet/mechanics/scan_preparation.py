@@ -66,7 +66,9 @@ def read_areal(obj: Any, what: str) -> Topography | None:
         obj = surfmet.read(obj)
     if not isinstance(obj, Topography):
         kind = getattr(obj, "kind", type(obj).__name__)
-        raise SurfmetInputError(f"a contact needs an areal scan of the {what}, got {kind}")
+        whose = "" if what == "scan" else f" of the {what}"
+        raise SurfmetInputError(f"a contact needs an areal scan (a height map){whose}, got "
+                                f"a {kind}: give a map, not a single profile")
     return obj
 
 
