@@ -13,6 +13,8 @@ serves every step of a solve).
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import scipy.fft as sfft
 
@@ -45,6 +47,13 @@ def _place(lo: int, hi: int, side: int, n: int) -> tuple[int, int]:
     return start, start + side
 
 
+@lru_cache(maxsize=8)
+def _box_pair(ny: int, nx: int, dx: float, dy: float, c) -> HalfSpacePair:
+    """One operator per box shape, kept between Newton steps (its float32 spectra are
+    made once, not once a step)."""
+    return HalfSpacePair(ny, nx, dx, dy, c)
+
+
 class BoxProducts:
     """``tangential(qx, qy, single)`` of a HalfSpacePair for tractions that vanish outside
     ``active``, exact on ``active`` and its upwind neighbours (the next element along x,
@@ -68,7 +77,7 @@ class BoxProducts:
         r0, r1 = _place(r0, r1, sy, ny)
         c0, c1 = _place(c0, c1, sx, nx)
         self.box = (slice(r0, r1), slice(c0, c1))
-        self.inner = HalfSpacePair(sy, sx, op.dx, op.dy, op.c)
+        self.inner = _box_pair(sy, sx, op.dx, op.dy, op.c)
         self._out = np.zeros((2, ny, nx))
 
     def tangential(self, qx: np.ndarray, qy: np.ndarray | None,
