@@ -56,6 +56,7 @@ from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
+from contact.grid import Grid, centred_coordinates
 from contact.halfspace.influence import periodic_kernel_spectrum
 from contact.material_pair import MaterialPair, modulus
 
@@ -145,15 +146,19 @@ def line_scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[floa
     return a0, math.sqrt(2.0 * radius * law.reach)
 
 
-def line_problem(gap0: np.ndarray, dx: float, e_star: float,
-                 law: InteractionLaw) -> AdhesiveProblem:
-    """The adhesive problem of a periodic 1D gap ``gap0`` (m) in plane strain.
+def line_problem(grid: Grid, e_star: float, law: InteractionLaw) -> AdhesiveProblem:
+    """The adhesive problem of a periodic line-contact grid (plane strain) and its gap (m).
 
-    The stiffness is the inverse of the core's periodic Love spectrum for a single row
-    (module notes), its q = 0 entry the mean-displacement spring of
-    :func:`contact.adhesion.solver.adhesive_problem`.
+    ``grid`` is a :class:`contact.grid.Grid` with ``line`` and ``periodic`` set and the
+    undeformed gap ``h`` (see :func:`periodic_line_grid`). The stiffness is the inverse of
+    the core's periodic Love spectrum for a single row (module notes), its q = 0 entry the
+    mean-displacement spring of :func:`contact.adhesion.solver.adhesive_problem`.
     """
-    h = np.ascontiguousarray(gap0, dtype=float).reshape(1, -1)
+    if not isinstance(grid, Grid) or grid.h is None or not (grid.line and grid.periodic):
+        raise ContactInputError("the adhesive line needs a periodic line-contact "
+                                "contact.grid.Grid with its gap h")
+    h = np.ascontiguousarray(grid.h, dtype=float).reshape(1, -1)
+    dx = grid.dx
     if h.shape[1] < 8 or not np.isfinite(h).all():
         raise ContactInputError("the line gap must be a finite profile of at least 8 cells")
     if not (dx > 0 and e_star > 0):
@@ -163,6 +168,14 @@ def line_problem(gap0: np.ndarray, dx: float, e_star: float,
     s[0, 0] = 0.0
     s[0, 0] = s.max()
     return AdhesiveProblem(h, float(dx), float(e_star), law, s)
+
+
+def periodic_line_grid(cells: int, dx: float, h: np.ndarray | None = None) -> Grid:
+    """A periodic line-contact grid of ``cells`` cells of pitch ``dx`` (m), the origin on
+    cell ``cells // 2``, with the gap ``h`` (m, one value a cell) if given."""
+    x = centred_coordinates(int(cells), dx)
+    gap = None if h is None else np.asarray(h, dtype=float).reshape(1, -1)
+    return Grid(x=x, y=np.zeros(1), h=gap, line=True, periodic=True, pitch=(float(dx), 1.0))
 
 
 def _approach_of(problem: AdhesiveProblem, pressure: np.ndarray) -> float:
@@ -232,10 +245,11 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
     size = CELL_WIDTHS * max(a0, reach) if size is None else \
         positive(size, "the domain size", "m")
     dx = size / cells
-    x = (np.arange(cells) - cells // 2) * dx
+    grid = periodic_line_grid(cells, dx)
+    x = grid.x
     h = x * x / (2.0 * radius)
     h, z_rms = rough_gap(h, roughness, f"a finite profile of {cells} points")
-    problem = line_problem(h, dx, e_star, law)
+    problem = line_problem(grid.with_gap(h.reshape(1, -1)), e_star, law)
     far, deep = _approach_range(problem, x, radius, z_rms)
     cycle = approach_retraction(problem, np.linspace(far, deep, int(steps)), tol=tol,
                                 progress=progress)
