@@ -29,8 +29,9 @@ class Branch:
 
     ``approach`` is the rigid approach imposed (m), ``surface_approach`` the approach of the
     mean plane (m), ``load`` (N), ``contact_area`` (m^2), ``energy`` the elastic plus
-    interaction energy (J), ``iterations`` per step; ``solve`` the steps' solve records
-    combined (:func:`contact.record.combine`).
+    interaction energy (J), ``iterations`` per step; ``solve`` the records of every solve
+    run for the leg combined (:func:`contact.record.combine`), a split step's discarded
+    attempt included.
     """
 
     approach: np.ndarray
@@ -74,13 +75,18 @@ class Cycle:
     jump_in: Jump | None
     jump_out: Jump | None
     hysteresis_energy: float
+    pull_off_solve: SolveRecord | None = None
 
     @property
     def solve(self) -> SolveRecord:
-        """The solve records of both legs combined (the pull-off's refining solves are
-        not counted)."""
-        return combine([self.approach_leg.solve, self.retraction_leg.solve],
-                       "adhesive approach-retraction cycle, one solve per step")
+        """The solve records of both legs and of the pull-off's golden-section refinement
+        (``pull_off_solve``, None where the most tensile sample needed none) combined."""
+        legs = [self.approach_leg.solve, self.retraction_leg.solve]
+        if self.pull_off_solve is None:
+            return combine(legs, "adhesive approach-retraction cycle, one solve per step")
+        return combine([*legs, self.pull_off_solve],
+                       "adhesive approach-retraction cycle, one solve per step and a "
+                       "golden-section refinement of the pull-off")
 
 
 #: A step that changes the touching area by more than this share of it is split in two,
@@ -92,21 +98,26 @@ MAX_SPLITS = 5
 
 def advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
             target: float, tol: float, depth: int = 0, *,
-            max_change: float = MAX_AREA_CHANGE) -> list[tuple[float, AdhesiveState]]:
+            max_change: float = MAX_AREA_CHANGE,
+            records: list[SolveRecord] | None = None) -> list[tuple[float, AdhesiveState]]:
     """Solve at ``target`` from ``previous`` (approach, state); split the step in two while
     the touching area changes by more than ``max_change`` of it (up to
-    :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order."""
+    :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order; the
+    record of every solve run, the attempts a split discards included, is appended to
+    ``records`` if given."""
     st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
                         tol=tol)
+    if records is not None:
+        records.append(st.solve)
     if previous is None or depth >= MAX_SPLITS:
         return [(target, st)]
     a0, a1 = previous[1].contact_area, st.contact_area
     if abs(a1 - a0) <= max_change * max(a0, a1):
         return [(target, st)]
     middle = advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1,
-                     max_change=max_change)
+                     max_change=max_change, records=records)
     return middle + advance(problem, middle[-1], target, tol, depth + 1,
-                            max_change=max_change)
+                            max_change=max_change, records=records)
 
 
 def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
@@ -118,15 +129,18 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
     ``initial`` is (approach, gap) of the state to start from. A step over which the
     touching area changes by more than :data:`MAX_AREA_CHANGE` is halved (up to
     :data:`MAX_SPLITS` times), so the branch holds the approaches asked for and the
-    intermediate ones.
+    intermediate ones. The branch's record counts every solve run for it (the start and
+    the attempts a split discards too), so it can exceed the points on the branch.
     """
     done: list[tuple[float, AdhesiveState]] = []
+    run: list[SolveRecord] = []  # every solve, the start and the discarded attempts too
     previous = None
     if initial is not None:
         d0, g0 = initial
         previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
+        run.append(previous[1].solve)
     for k, d in enumerate(approaches):
-        done += advance(problem, previous, float(d), tol)
+        done += advance(problem, previous, float(d), tol, records=run)
         previous = done[-1]
         if progress is not None:
             progress(k + 1, len(approaches))
@@ -138,18 +152,20 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
         contact_area=np.array([s.contact_area for s in states]),
         energy=np.array([s.energy for s in states]),
         iterations=np.array([s.iterations for s in states]),
-        solve=combine([s.solve for s in states], "adhesive, one solve per approach step"),
+        solve=combine(run, "adhesive, one solve per approach step"),
     )
     return branch, [s.gap for s in states]
 
 
 def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndarray],
-                    *, tol: float = 1e-7, rounds: int = 10) -> tuple[float, float]:
+                    *, tol: float = 1e-7, rounds: int = 10,
+                    records: list[SolveRecord] | None = None) -> tuple[float, float]:
     """The largest tension of a retraction and its approach, refined between samples.
 
     A golden-section search on the load between the neighbours of the most tensile
     sample, every solve warm-started from the neighbour met first on the way out, so it
-    stays on the retraction's branch. Returns (pull-off force > 0, approach).
+    stays on the retraction's branch. Returns (pull-off force > 0, approach); the solves'
+    records are appended to ``records`` if given.
     """
     k = int(np.argmin(branch.load))
     best = (-float(branch.load[k]), float(branch.approach[k]))
@@ -158,7 +174,10 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
     hi, lo, start = float(branch.approach[k - 1]), float(branch.approach[k + 1]), gaps[k - 1]
 
     def tension(d: float) -> float:
-        return -solve_adhesive(problem, d, start, tol=tol).load
+        state = solve_adhesive(problem, d, start, tol=tol)
+        if records is not None:
+            records.append(state.solve)
+        return -state.load
 
     a, b = lo, hi
     c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
@@ -224,10 +243,13 @@ def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
     leg_in, gaps_in = run_branch(problem, steps, tol=tol, progress=half(0))
     leg_out, gaps_out = run_branch(problem, steps[::-1], (steps[-1], gaps_in[-1]), tol=tol,
                                    progress=half(len(steps)))
-    force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol)
+    refining: list[SolveRecord] = []
+    force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol, records=refining)
     return Cycle(
         approach_leg=leg_in, retraction_leg=leg_out, pull_off_force=force,
         pull_off_approach=where, jump_in=find_jump(leg_in, entering=True),
         jump_out=find_jump(leg_out, entering=False),
         hysteresis_energy=hysteresis(leg_in, leg_out),
+        pull_off_solve=combine(refining, "golden-section refinement of the pull-off")
+        if refining else None,
     )
