@@ -34,8 +34,10 @@ of adhesion w):
 
 The transition is stated with Maugis' parameter of the cylinder's radius,
 lambda = 2 sigma0 (R / (pi w K^2))^(1/3), K = 4 E* / 3 (the group sigma0 (R / (w E*^2))^(1/3)
-governs the line contact's transition too; the constant is the sphere's), and with the
-cohesive zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
+governs the line contact's transition too; the constant is the sphere's, Maugis 1992, so
+that a cylinder and a sphere of the same R, w, sigma0 and E* state the same lambda), with
+Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the law's range z, and with the cohesive
+zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
 the cohesive zone pi E* w / (4 sigma0^2) should span :data:`MIN_ZONE_PIXELS` cells, and
 the periodic images of the cylinder shift the load at a given width by about
 (pi^2 / 6) (a / L)^2, so the default cell is 16 times the larger of a_0 and the
@@ -53,7 +55,7 @@ import numpy as np
 from contact._validate import positive
 from contact.adhesion.ball import MIN_ZONE_PIXELS, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
-from contact.adhesion.laws import DugdaleLaw, InteractionLaw
+from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
 from contact.grid import Grid, centred_coordinates
@@ -102,6 +104,12 @@ class AdhesiveLine:
     process_zone: float
     warnings: tuple[str, ...]
     roughness_rms: float = 0.0
+
+    @property
+    def tabor_parameter(self) -> float:
+        """Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the cylinder's radius, z the law's
+        range (:func:`contact.adhesion.laws.tabor_parameter`, as the ball states it)."""
+        return tabor_parameter(self.law.work, self.radius, self.e_star, self.law.range)
 
     @property
     def jkr_pull_off(self) -> float:

@@ -142,7 +142,7 @@ def _print_line(run_: Any) -> None:
           "(plane strain, per unit length)")
     print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
           f"peak tension {law.peak / 1e6:.4g} MPa")
-    print(f"Maugis lambda   {res.maugis_parameter:.4g}")
+    print(f"Maugis lambda   {res.maugis_parameter:.4g}   (Tabor mu {res.tabor_parameter:.4g})")
     print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
           f"period {format_length(res.size)}")
     print(f"pull-off force  {cyc.pull_off_force:.5g} N/m (JKR {res.jkr_pull_off:.5g} N/m, "
