@@ -54,7 +54,9 @@ class Jump:
 
     ``approach`` is the middle of the two steps (m) between which it happens, ``step`` their
     distance (the resolution), ``load_before``/``load_after`` the loads (N) on either
-    side; ``abrupt`` tells a jump of the load from a smooth transition.
+    side; ``abrupt`` tells a jump of the load from a smooth transition (:func:`find_jump`);
+    ``resolved`` is False where the step is wider than the interaction's range, so that a
+    transition found smooth may hide a snap inside the step.
     """
 
     approach: float
@@ -62,6 +64,7 @@ class Jump:
     load_before: float
     load_after: float
     abrupt: bool
+    resolved: bool = True
 
 
 @dataclass(frozen=True)
@@ -89,6 +92,9 @@ class Cycle:
                        "golden-section refinement of the pull-off")
 
 
+#: A jump is abrupt when the load changes across its step by more than this many times
+#: what a continuous branch could (:func:`find_jump`).
+ABRUPT_FACTOR = 3.0
 #: A step that changes the touching area by more than this share of it is split in two,
 #: so that the solution follows its branch quasi-statically instead of leaping off it.
 MAX_AREA_CHANGE = 0.1
@@ -197,8 +203,21 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
     return best
 
 
-def find_jump(branch: Branch, *, entering: bool) -> Jump | None:
-    """Where the touching area appears (``entering``) or vanishes along ``branch``."""
+def find_jump(branch: Branch, *, entering: bool, e_star: float | None = None,
+              reach: float | None = None) -> Jump | None:
+    """Where the touching area appears (``entering``) or vanishes along ``branch``.
+
+    The jump is ``abrupt`` when the load changes across the step by more than
+    :data:`ABRUPT_FACTOR` times what a continuous branch could change it by. With
+    ``e_star`` (Pa; areal contacts: a sphere, a rough scan) that bound is the elastic
+    change the step would give at the stiffness of the touching area A on the touching
+    side, 2 E* sqrt(A / pi) (the flat punch of that area, Sneddon 1965; any contact
+    shape within a few per cent, Pharr, Oliver & Brotzen 1992, J. Mater. Res. 7:613),
+    plus the load's change over the neighbouring step on the side without contact (the
+    interaction's own pull) scaled to the step. Without it (a line contact, whose stiffness
+    per length has no such local form) the bound is the larger load change one step
+    either side. ``reach`` (m), the interaction's range, marks a wider step unresolved.
+    """
     touching = branch.contact_area > 0.0
     change = np.flatnonzero(touching[1:] != touching[:-1])
     change = [i for i in change if touching[i + 1] == entering]
@@ -206,16 +225,32 @@ def find_jump(branch: Branch, *, entering: bool) -> Jump | None:
         return None
     i = int(change[0])
     steps = np.abs(np.diff(branch.load))
-    # the load's change across the transition against its changes one step either side
-    around = [steps[j] for j in (i - 1, i + 1) if 0 <= j < steps.size]
-    typical = float(max(around)) if around else 0.0
     jump = float(steps[i])
+    if e_star is None:
+        around = [steps[j] for j in (i - 1, i + 1) if 0 <= j < steps.size]
+        typical = float(max(around)) if around else 0.0
+    else:
+        typical = _continuous_change(branch, i, entering, e_star)
+    step = abs(float(branch.approach[i + 1] - branch.approach[i]))
     return Jump(
         approach=0.5 * float(branch.approach[i] + branch.approach[i + 1]),
-        step=abs(float(branch.approach[i + 1] - branch.approach[i])),
-        load_before=float(branch.load[i]), load_after=float(branch.load[i + 1]),
-        abrupt=jump > 3.0 * typical,
+        step=step, load_before=float(branch.load[i]), load_after=float(branch.load[i + 1]),
+        abrupt=jump > ABRUPT_FACTOR * typical, resolved=reach is None or step <= reach,
     )
+
+
+def _continuous_change(branch: Branch, i: int, entering: bool, e_star: float) -> float:
+    """The most a continuous branch changes the load over step i -> i + 1 (N): elastic
+    at the touching area's punch stiffness, plus the interaction's pull (find_jump)."""
+    d = np.asarray(branch.approach, dtype=float)
+    step = abs(float(d[i + 1] - d[i]))
+    area = float(branch.contact_area[i + 1] if entering else branch.contact_area[i])
+    elastic = 2.0 * e_star * math.sqrt(area / math.pi) * step
+    j = i - 1 if entering else i + 1  # the neighbouring step without contact
+    pull = 0.0
+    if 0 <= j < len(d) - 1 and d[j + 1] != d[j]:
+        pull = abs(float(branch.load[j + 1] - branch.load[j])) / abs(float(d[j + 1] - d[j]))
+    return elastic + pull * step
 
 
 def hysteresis(approach_leg: Branch, retraction_leg: Branch) -> float:
@@ -243,12 +278,14 @@ def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
     leg_in, gaps_in = run_branch(problem, steps, tol=tol, progress=half(0))
     leg_out, gaps_out = run_branch(problem, steps[::-1], (steps[-1], gaps_in[-1]), tol=tol,
                                    progress=half(len(steps)))
+    areal = problem.e_star if problem.gap0.shape[0] > 1 else None  # not a line contact
     refining: list[SolveRecord] = []
     force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol, records=refining)
     return Cycle(
         approach_leg=leg_in, retraction_leg=leg_out, pull_off_force=force,
-        pull_off_approach=where, jump_in=find_jump(leg_in, entering=True),
-        jump_out=find_jump(leg_out, entering=False),
+        pull_off_approach=where,
+        jump_in=find_jump(leg_in, entering=True, e_star=areal, reach=problem.law.range),
+        jump_out=find_jump(leg_out, entering=False, e_star=areal, reach=problem.law.range),
         hysteresis_energy=hysteresis(leg_in, leg_out),
         pull_off_solve=combine(refining, "golden-section refinement of the pull-off")
         if refining else None,

@@ -190,7 +190,8 @@ def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
         return None
     return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
             "load_before": quantity(jump.load_before, force_unit),
-            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt}
+            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt,
+            "resolved": jump.resolved}
 
 
 def adhesion_record(run: Adhesion) -> dict[str, Any]:
