@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.bem import SolverStats, solve_normal
+from contact.bem import solve_normal
 from contact.geometry import contact_extent, sphere_gap
 from contact.halfspace.convolution import convolution
 from contact.hertz import hertz_sphere
@@ -93,10 +93,8 @@ def make_problem(kind: str, n: int) -> Problem:
 # -- solvers: each returns (pressure (n, n) in Pa, iterations or None) -------------------
 
 def run_surfmet(prob: Problem, tol: float) -> tuple[np.ndarray, int]:
-    st = SolverStats()
-    res = solve_normal(prob.gap, prob.dx, e_star=E_STAR, load=W, tol=tol, stats=st,
-                       strict=False)
-    return np.asarray(res.pressure), sum(it for *_, it in st.levels)
+    res = solve_normal(prob.gap, prob.dx, e_star=E_STAR, load=W, tol=tol, strict=False)
+    return np.asarray(res.pressure), sum(it for *_, it in res.solve.counters["levels"])
 
 
 def run_tamaas(prob: Problem, tol: float) -> tuple[np.ndarray, int | None]:

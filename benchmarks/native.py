@@ -70,7 +70,7 @@ def iteration_child(n: int, repeats: int) -> dict:
     import numpy as np
 
     import surfmet
-    from contact.bem import SolverStats
+    from contact.bem.state import SolverStats  # live counters, read in the callback
     from contact.halfspace.convolution import convolution
     from contact.materials import composite_modulus, material
     from contact.setups import CompositeRoughness

@@ -25,7 +25,9 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -67,6 +69,13 @@ class SolveRecord:
         Iterations of an outer loop around the main one (coupling, active set), if any.
     solves : int
         How many solves the record stands for (:func:`combine`; 1 for one solve).
+    periodic : bool
+        The domain is periodic: it has no edge, so ``edge_contact`` is False by the one
+        rule and the text says "not applicable" rather than "no".
+    counters : mapping, optional
+        The solver's own work counters, for benchmarks and diagnostics (the normal BEM's
+        FFTs, sparse corrections, projected and damped steps and grid levels, of every
+        level of a nested solve); not part of the JSON record, and not compared.
     """
 
     method: str
@@ -78,6 +87,8 @@ class SolveRecord:
     residual_definition: str = ""
     outer_iterations: int | None = None
     solves: int = 1
+    periodic: bool = False
+    counters: Mapping[str, Any] | None = field(default=None, compare=False, repr=False)
 
     @property
     def warning(self) -> str | None:
@@ -89,7 +100,8 @@ class SolveRecord:
         outer = ("" if self.outer_iterations is None
                  else f" ({self.outer_iterations} outer)")
         state = "converged" if self.converged else "NOT converged"
-        edge = "yes" if self.edge_contact else "no"
+        edge = ("yes" if self.edge_contact
+                else "not applicable (periodic domain)" if self.periodic else "no")
         many = "" if self.solves == 1 else f"{self.solves} solves, "
         worst = "largest " if self.solves > 1 else ""
         return (f"{self.method}: {many}{self.iterations} iterations{outer}, {worst}residual "
@@ -112,6 +124,8 @@ class SolveRecord:
             out["outer_iterations"] = int(self.outer_iterations)
         if self.solves != 1:
             out["solves"] = int(self.solves)
+        if self.periodic:
+            out["periodic"] = True  # edge contact does not apply: the domain has no edge
         return out
 
     @classmethod
@@ -124,13 +138,14 @@ class SolveRecord:
                    tolerance=math.nan if tol is None else tol,
                    converged=rec["converged"], edge_contact=rec["edge_contact"],
                    residual_definition=rec.get("residual_definition", ""),
-                   outer_iterations=rec.get("outer_iterations"), solves=rec.get("solves", 1))
+                   outer_iterations=rec.get("outer_iterations"), solves=rec.get("solves", 1),
+                   periodic=rec.get("periodic", False))
 
 
 def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecord:
     """One record for several solves (a sweep, a cycle, the levels of a verdict): the
     iterations summed, the largest residual and tolerance, converged only if every solve
-    did, edge contact if any solve had it.
+    did, edge contact if any solve had it, periodic if every solve was.
     """
     if not records:
         raise ValueError("combine needs at least one record")
@@ -147,6 +162,7 @@ def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecor
         residual_definition=records[0].residual_definition,
         outer_iterations=sum(outer) if outer else None,
         solves=sum(r.solves for r in records),
+        periodic=all(r.periodic for r in records),
     )
 
 

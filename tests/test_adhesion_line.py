@@ -32,6 +32,7 @@ from contact.adhesion.line import (
     jkr_line_pull_off,
     line_problem,
     line_scales,
+    periodic_line_grid,
 )
 from contact.errors import ContactInputError
 from surfmet.cli import main
@@ -53,7 +54,7 @@ def test_plane_strain_operator_keeps_a_hertz_cylinder_flat():
     n, size, a = 8192, 200e-6, 2e-6  # a / L = 0.01: the images bend it by ~2e-4
     dx = size / n
     x = (np.arange(n) - n // 2) * dx
-    prob = line_problem(x * x / (2 * R), dx, E_STAR, DugdaleLaw(W, 1e7))
+    prob = line_problem(periodic_line_grid(n, dx, x * x / (2 * R)), E_STAR, DugdaleLaw(W, 1e7))
     q = 2 * math.pi * np.arange(1, 4) / size
     assert prob.stiffness[0, 1:4] == pytest.approx(E_STAR * q / 2, rel=1e-6)
     p = E_STAR / (2 * R) * np.sqrt(np.maximum(a * a - x * x, 0.0))
@@ -166,8 +167,18 @@ def test_cli_line_json(capsys):
     assert rec["jkr_pull_off_force"]["value"] == pytest.approx(
         jkr_line_pull_off(W, R, 1e12), rel=1e-12)
     assert rec["scans"] is None
+    # the transition parameters stated with the result (Tabor 1977: (R w^2/(E*^2 z^3))^(1/3);
+    # Maugis 1992 with the exponential law's peak w / rho as sigma0, K = 4 E* / 3)
+    assert rec["tabor_parameter"] == {
+        "value": pytest.approx((R * W**2 / (1e12**2 * 5e-8**3)) ** (1 / 3), rel=1e-12),
+        "unit": ""}
+    sigma0 = W / 5e-8
+    assert rec["maugis_parameter"]["unit"] == ""
+    assert rec["maugis_parameter"]["value"] == pytest.approx(
+        2 * sigma0 * (R / (math.pi * W * (4e12 / 3) ** 2)) ** (1 / 3), rel=1e-12)
     solve = rec["solve"]
     assert solve["converged"] is True and solve["edge_contact"] is False
+    assert solve["periodic"] is True  # the periodic cell has no edge: not applicable
     assert solve["iterations"] == rec["solver"]["iterations"] > 0
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from contact import SphereContact, composite_modulus, hertz_sphere, material, solve_sphere
-from contact.bem import SolverStats, solve_normal
+from contact.bem import solve_normal
 from contact.geometry import sphere_gap
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
@@ -92,11 +92,10 @@ def test_solve_sphere_automatic_domain_and_warm_started_sweep():
     assert res.shape == (256, 256)
     assert abs(res.pmax / res.hertz.p0 - 1) < 1e-4
     prob = SphereContact(R, E_STAR, 12.0, grid=128)
-    cold_stats, warm_stats = SolverStats(), SolverStats()
-    cold = prob.solve(11.0, stats=cold_stats)
+    cold = prob.solve(11.0)
     base = prob.solve(10.0)
-    warm = prob.solve(11.0, initial=base, stats=warm_stats)
-    assert warm.iterations < sum(it for *_, it in cold_stats.levels)
+    warm = prob.solve(11.0, initial=base)
+    assert warm.iterations < sum(it for *_, it in cold.solve.counters["levels"])
     assert np.abs(warm.pressure - cold.pressure).max() < 1e-5 * cold.pmax
     sweep = prob.sweep([2.0, 4.0, 8.0])
     for r, w in zip(sweep, (2.0, 4.0, 8.0)):

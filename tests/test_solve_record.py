@@ -142,6 +142,76 @@ def test_adhesive_record():
     rec = st.solve
     assert rec.converged and rec.residual == st.residual <= rec.tolerance == 1e-7
     assert rec.iterations == st.iterations and not rec.edge_contact
+    # periodic: edge contact does not apply, and the record says so rather than "no"
+    assert rec.periodic and "edge contact: not applicable (periodic domain)" in rec.text()
+    assert rec.to_json()["periodic"] is True and rec.to_json()["edge_contact"] is False
+
+
+def test_periodic_and_free_bem_records_say_whether_edge_contact_applies():
+    from contact.bem import solve_normal
+
+    x = (np.arange(32) - 16) * 1e-5
+    h = (x[:, None] ** 2 + x[None, :] ** 2) / (2 * R)
+    free = solve_normal(h, 1e-5, e_star=E_STAR, load=1.0).solve
+    per = solve_normal(h, 1e-5, e_star=E_STAR, load=1.0, periodic=True).solve
+    assert not free.periodic and free.text().endswith("edge contact: no")
+    assert "periodic" not in free.to_json()
+    assert per.periodic and per.text().endswith("edge contact: not applicable (periodic domain)")
+    back = SolveRecord.from_json(json.loads(json.dumps(per.to_json())))
+    assert back == per and back.text() == per.text()
+    assert combine([per, per]).periodic and not combine([per, free]).periodic
+
+
+def test_bem_counters_are_part_of_the_one_record():
+    """The BEM's FFT and level counters live in its SolveRecord (not a second result
+    type), cover every level of a nested solve and stay out of the JSON."""
+    import contact.bem as bem
+    from contact.bem import solve_normal
+
+    x = (np.arange(256) - 128) * 2.5e-6
+    res = solve_normal((x[:, None] ** 2 + x[None, :] ** 2) / (2 * R), 2.5e-6, e_star=E_STAR,
+                       load=1.0)
+    c = res.solve.counters
+    assert c["levels"] == tuple(res.extra["levels"]) and len(c["levels"]) > 1
+    assert c["levels"][-1] == (256, 256, res.iterations) and c["iterations"] == res.iterations
+    # at least one float32 product per iteration of every level, and an exact re-sync
+    assert c["fft_single"] >= sum(it for *_, it in c["levels"]) and c["fft_double"] >= 1
+    assert "counters" not in res.solve.to_json() and "SolverStats" not in bem.__all__
+    import pickle
+    assert pickle.loads(pickle.dumps(res.solve)).counters == c  # results still pickle
+
+
+def test_adhesive_cycle_counts_the_pull_off_refinement():
+    """The cycle's record stands for every solve run: the legs' steps and the
+    golden-section solves that refine the pull-off (counted here by wrapping the solver)."""
+    import contact.adhesion.cycle as cycle
+    from contact.adhesion.ball import adhesive_ball
+    from contact.adhesion.laws import DugdaleLaw
+
+    calls = []
+    real = cycle.solve_adhesive
+
+    def counting(*a, **k):
+        calls.append(1)
+        return real(*a, **k)
+
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cycle.solve_adhesive = counting
+        try:
+            ball = adhesive_ball(1e-5, 1e9, DugdaleLaw.from_range(0.05, 2e-9), grid=16, steps=6)
+        finally:
+            cycle.solve_adhesive = real
+    cyc = ball.cycle
+    legs = cyc.approach_leg.solve.solves + cyc.retraction_leg.solve.solves
+    assert cyc.solve.solves == len(calls)  # every solve run, the refinement's included
+    assert cyc.pull_off_solve is not None and cyc.pull_off_solve.solves == len(calls) - legs > 0
+    assert cyc.solve.iterations == (cyc.approach_leg.solve.iterations
+                                    + cyc.retraction_leg.solve.iterations
+                                    + cyc.pull_off_solve.iterations)
+    assert cyc.approach_leg.solve.iterations >= cyc.approach_leg.iterations.sum()
+    assert cyc.solve.periodic and "golden-section" in cyc.solve.method
 
 
 def test_contact_command_prints_the_record_and_the_edge_warning(capsys):

@@ -19,7 +19,7 @@ import pytest
 from contact.errors import ContactInputError
 from contact.hertz import hertz_cylinder
 from contact.viscoelastic.hunter import hunter_cylinder
-from contact.viscoelastic.line import exp_e1, rolling_cylinder, solve_line
+from contact.viscoelastic.line import exp_e1, line_grid, rolling_cylinder, solve_line
 from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid, pair_creep
 
 R, W, NU = 0.05, 6.0e5, 0.4
@@ -82,8 +82,8 @@ def test_contact_visc_cylindr(tc, ncon, first, last, pmax, approach) -> None:
     eg = 2 * G * (1 + NU)
     body = StandardLinearSolid(eg, eg / 2, tc if tc > 0 else 1e-12, NU)
     x = (-7.92 + 0.16 * np.arange(99)) * 1e-3
-    res = solve_line(x**2 / (2 * 0.05), 0.16e-3, 6.0e5, pair_creep(body, body), 1.0,
-                     radius=0.05, x0=float(x[0]))
+    res = solve_line(line_grid(x, 0.16e-3, x**2 / (2 * 0.05)), 6.0e5, pair_creep(body, body),
+                     1.0, radius=0.05)
     on = np.flatnonzero(np.asarray(res.pressure) > 0)
     assert (on.size, on[0] + 1, on[-1] + 1) == (ncon, first, last)
     assert res.pmax / 1e6 == pytest.approx(pmax, rel=2e-3)

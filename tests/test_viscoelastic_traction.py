@@ -10,7 +10,7 @@ import pytest
 
 from contact.errors import ContactInputError
 from contact.hertz import hertz_cylinder
-from contact.viscoelastic.line import influence_matrix, rolling_cylinder, solve_line
+from contact.viscoelastic.line import influence_matrix, line_grid, rolling_cylinder, solve_line
 from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid, pair_creep
 from contact.viscoelastic.traction import steady_traction
 
@@ -48,7 +48,7 @@ def test_contact_visc_cylindr_tangential(tc, creep_x, n_adh, n_slip) -> None:
     creep = pair_creep(body, body)
     x = (-7.92 + 0.16 * np.arange(99)) * 1e-3
     dx = 0.16e-3
-    res = solve_line(x**2 / (2 * 0.05), dx, 6.0e5, creep, 1.0, x0=float(x[0]))
+    res = solve_line(line_grid(x, dx, x**2 / (2 * 0.05)), 6.0e5, creep, 1.0)
     t = steady_traction(influence_matrix(99, dx, creep, 1.0), np.asarray(res.pressure), dx,
                         0.3, -0.6 * 0.3 * 6.0e5)
     # tc = 2 s: CONTACT's 1 m strip is not plane strain at V tau = 2 m (0.2 % there)
@@ -73,7 +73,7 @@ def test_prescribed_creepage_gives_the_force_back() -> None:
     creep = pair_creep(body, body)
     x = (-7.92 + 0.16 * np.arange(99)) * 1e-3
     dx = 0.16e-3
-    res = solve_line(x**2 / (2 * 0.05), dx, 6.0e5, creep, 1.0, x0=float(x[0]))
+    res = solve_line(line_grid(x, dx, x**2 / (2 * 0.05)), 6.0e5, creep, 1.0)
     A, p = influence_matrix(99, dx, creep, 1.0), np.asarray(res.pressure)
     by_force = steady_traction(A, p, dx, 0.3, -0.6 * 0.3 * 6.0e5)
     by_creep = steady_traction(A, p, dx, 0.3, creepage=by_force.creepage)

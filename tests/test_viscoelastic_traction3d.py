@@ -108,6 +108,7 @@ def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
     R and the same relaxed half-width a; V tau = vt a (None: relaxed, tau -> 0)."""
     import math
 
+    from contact.grid import scan_grid
     from contact.tangential.grid import centres
     from contact.viscoelastic.line import influence_matrix, rolling_cylinder
     from contact.viscoelastic.surface import solve_surface
@@ -118,7 +119,8 @@ def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
     cr = _sls(1e-12 if vt is None else vt * a_r / V, nu).creep()
     x, y = centres(48, 1.35 * a_r), centres(48, 1.3 * 1.733e-3)
     h = x[None, :] ** 2 / (2 * R) + y[:, None] ** 2 / (2 * k * R)
-    res = solve_surface(h, x[1] - x[0], N, cr, V, dy=y[1] - y[0], origin=(x[0], y[0]))
+    res = solve_surface(scan_grid(h.shape, x[1] - x[0], y[1] - y[0], origin=(x[0], y[0]), h=h),
+                        N, cr, V)
     grid = Grid(x=x, y=y, h=h)
     tr = visco_steady_tractions(grid, np.asarray(res.pressure), cr, nu, V, mu,
                                 fx=-ratio * mu * N)

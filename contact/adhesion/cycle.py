@@ -29,8 +29,9 @@ class Branch:
 
     ``approach`` is the rigid approach imposed (m), ``surface_approach`` the approach of the
     mean plane (m), ``load`` (N), ``contact_area`` (m^2), ``energy`` the elastic plus
-    interaction energy (J), ``iterations`` per step; ``solve`` the steps' solve records
-    combined (:func:`contact.record.combine`).
+    interaction energy (J), ``iterations`` per step; ``solve`` the records of every solve
+    run for the leg combined (:func:`contact.record.combine`), a split step's discarded
+    attempt included.
     """
 
     approach: np.ndarray
@@ -53,7 +54,9 @@ class Jump:
 
     ``approach`` is the middle of the two steps (m) between which it happens, ``step`` their
     distance (the resolution), ``load_before``/``load_after`` the loads (N) on either
-    side; ``abrupt`` tells a jump of the load from a smooth transition.
+    side; ``abrupt`` tells a jump of the load from a smooth transition (:func:`find_jump`);
+    ``resolved`` is False where the step is wider than the interaction's range, so that a
+    transition found smooth may hide a snap inside the step.
     """
 
     approach: float
@@ -61,6 +64,7 @@ class Jump:
     load_before: float
     load_after: float
     abrupt: bool
+    resolved: bool = True
 
 
 @dataclass(frozen=True)
@@ -74,15 +78,23 @@ class Cycle:
     jump_in: Jump | None
     jump_out: Jump | None
     hysteresis_energy: float
+    pull_off_solve: SolveRecord | None = None
 
     @property
     def solve(self) -> SolveRecord:
-        """The solve records of both legs combined (the pull-off's refining solves are
-        not counted)."""
-        return combine([self.approach_leg.solve, self.retraction_leg.solve],
-                       "adhesive approach-retraction cycle, one solve per step")
+        """The solve records of both legs and of the pull-off's golden-section refinement
+        (``pull_off_solve``, None where the most tensile sample needed none) combined."""
+        legs = [self.approach_leg.solve, self.retraction_leg.solve]
+        if self.pull_off_solve is None:
+            return combine(legs, "adhesive approach-retraction cycle, one solve per step")
+        return combine([*legs, self.pull_off_solve],
+                       "adhesive approach-retraction cycle, one solve per step and a "
+                       "golden-section refinement of the pull-off")
 
 
+#: A jump is abrupt when the load changes across its step by more than this many times
+#: what a continuous branch could (:func:`find_jump`).
+ABRUPT_FACTOR = 3.0
 #: A step that changes the touching area by more than this share of it is split in two,
 #: so that the solution follows its branch quasi-statically instead of leaping off it.
 MAX_AREA_CHANGE = 0.1
@@ -92,21 +104,26 @@ MAX_SPLITS = 5
 
 def advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | None,
             target: float, tol: float, depth: int = 0, *,
-            max_change: float = MAX_AREA_CHANGE) -> list[tuple[float, AdhesiveState]]:
+            max_change: float = MAX_AREA_CHANGE,
+            records: list[SolveRecord] | None = None) -> list[tuple[float, AdhesiveState]]:
     """Solve at ``target`` from ``previous`` (approach, state); split the step in two while
     the touching area changes by more than ``max_change`` of it (up to
-    :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order."""
+    :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order; the
+    record of every solve run, the attempts a split discards included, is appended to
+    ``records`` if given."""
     st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
                         tol=tol)
+    if records is not None:
+        records.append(st.solve)
     if previous is None or depth >= MAX_SPLITS:
         return [(target, st)]
     a0, a1 = previous[1].contact_area, st.contact_area
     if abs(a1 - a0) <= max_change * max(a0, a1):
         return [(target, st)]
     middle = advance(problem, previous, 0.5 * (previous[0] + target), tol, depth + 1,
-                     max_change=max_change)
+                     max_change=max_change, records=records)
     return middle + advance(problem, middle[-1], target, tol, depth + 1,
-                            max_change=max_change)
+                            max_change=max_change, records=records)
 
 
 def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
@@ -118,15 +135,18 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
     ``initial`` is (approach, gap) of the state to start from. A step over which the
     touching area changes by more than :data:`MAX_AREA_CHANGE` is halved (up to
     :data:`MAX_SPLITS` times), so the branch holds the approaches asked for and the
-    intermediate ones.
+    intermediate ones. The branch's record counts every solve run for it (the start and
+    the attempts a split discards too), so it can exceed the points on the branch.
     """
     done: list[tuple[float, AdhesiveState]] = []
+    run: list[SolveRecord] = []  # every solve, the start and the discarded attempts too
     previous = None
     if initial is not None:
         d0, g0 = initial
         previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
+        run.append(previous[1].solve)
     for k, d in enumerate(approaches):
-        done += advance(problem, previous, float(d), tol)
+        done += advance(problem, previous, float(d), tol, records=run)
         previous = done[-1]
         if progress is not None:
             progress(k + 1, len(approaches))
@@ -138,18 +158,20 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
         contact_area=np.array([s.contact_area for s in states]),
         energy=np.array([s.energy for s in states]),
         iterations=np.array([s.iterations for s in states]),
-        solve=combine([s.solve for s in states], "adhesive, one solve per approach step"),
+        solve=combine(run, "adhesive, one solve per approach step"),
     )
     return branch, [s.gap for s in states]
 
 
 def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndarray],
-                    *, tol: float = 1e-7, rounds: int = 10) -> tuple[float, float]:
+                    *, tol: float = 1e-7, rounds: int = 10,
+                    records: list[SolveRecord] | None = None) -> tuple[float, float]:
     """The largest tension of a retraction and its approach, refined between samples.
 
     A golden-section search on the load between the neighbours of the most tensile
     sample, every solve warm-started from the neighbour met first on the way out, so it
-    stays on the retraction's branch. Returns (pull-off force > 0, approach).
+    stays on the retraction's branch. Returns (pull-off force > 0, approach); the solves'
+    records are appended to ``records`` if given.
     """
     k = int(np.argmin(branch.load))
     best = (-float(branch.load[k]), float(branch.approach[k]))
@@ -158,7 +180,10 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
     hi, lo, start = float(branch.approach[k - 1]), float(branch.approach[k + 1]), gaps[k - 1]
 
     def tension(d: float) -> float:
-        return -solve_adhesive(problem, d, start, tol=tol).load
+        state = solve_adhesive(problem, d, start, tol=tol)
+        if records is not None:
+            records.append(state.solve)
+        return -state.load
 
     a, b = lo, hi
     c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
@@ -178,8 +203,21 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
     return best
 
 
-def find_jump(branch: Branch, *, entering: bool) -> Jump | None:
-    """Where the touching area appears (``entering``) or vanishes along ``branch``."""
+def find_jump(branch: Branch, *, entering: bool, e_star: float | None = None,
+              reach: float | None = None) -> Jump | None:
+    """Where the touching area appears (``entering``) or vanishes along ``branch``.
+
+    The jump is ``abrupt`` when the load changes across the step by more than
+    :data:`ABRUPT_FACTOR` times what a continuous branch could change it by. With
+    ``e_star`` (Pa; areal contacts: a sphere, a rough scan) that bound is the elastic
+    change the step would give at the stiffness of the touching area A on the touching
+    side, 2 E* sqrt(A / pi) (the flat punch of that area, Sneddon 1965; any contact
+    shape within a few per cent, Pharr, Oliver & Brotzen 1992, J. Mater. Res. 7:613),
+    plus the load's change over the neighbouring step on the side without contact (the
+    interaction's own pull) scaled to the step. Without it (a line contact, whose stiffness
+    per length has no such local form) the bound is the larger load change one step
+    either side. ``reach`` (m), the interaction's range, marks a wider step unresolved.
+    """
     touching = branch.contact_area > 0.0
     change = np.flatnonzero(touching[1:] != touching[:-1])
     change = [i for i in change if touching[i + 1] == entering]
@@ -187,16 +225,32 @@ def find_jump(branch: Branch, *, entering: bool) -> Jump | None:
         return None
     i = int(change[0])
     steps = np.abs(np.diff(branch.load))
-    # the load's change across the transition against its changes one step either side
-    around = [steps[j] for j in (i - 1, i + 1) if 0 <= j < steps.size]
-    typical = float(max(around)) if around else 0.0
     jump = float(steps[i])
+    if e_star is None:
+        around = [steps[j] for j in (i - 1, i + 1) if 0 <= j < steps.size]
+        typical = float(max(around)) if around else 0.0
+    else:
+        typical = _continuous_change(branch, i, entering, e_star)
+    step = abs(float(branch.approach[i + 1] - branch.approach[i]))
     return Jump(
         approach=0.5 * float(branch.approach[i] + branch.approach[i + 1]),
-        step=abs(float(branch.approach[i + 1] - branch.approach[i])),
-        load_before=float(branch.load[i]), load_after=float(branch.load[i + 1]),
-        abrupt=jump > 3.0 * typical,
+        step=step, load_before=float(branch.load[i]), load_after=float(branch.load[i + 1]),
+        abrupt=jump > ABRUPT_FACTOR * typical, resolved=reach is None or step <= reach,
     )
+
+
+def _continuous_change(branch: Branch, i: int, entering: bool, e_star: float) -> float:
+    """The most a continuous branch changes the load over step i -> i + 1 (N): elastic
+    at the touching area's punch stiffness, plus the interaction's pull (find_jump)."""
+    d = np.asarray(branch.approach, dtype=float)
+    step = abs(float(d[i + 1] - d[i]))
+    area = float(branch.contact_area[i + 1] if entering else branch.contact_area[i])
+    elastic = 2.0 * e_star * math.sqrt(area / math.pi) * step
+    j = i - 1 if entering else i + 1  # the neighbouring step without contact
+    pull = 0.0
+    if 0 <= j < len(d) - 1 and d[j + 1] != d[j]:
+        pull = abs(float(branch.load[j + 1] - branch.load[j])) / abs(float(d[j + 1] - d[j]))
+    return elastic + pull * step
 
 
 def hysteresis(approach_leg: Branch, retraction_leg: Branch) -> float:
@@ -224,10 +278,15 @@ def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
     leg_in, gaps_in = run_branch(problem, steps, tol=tol, progress=half(0))
     leg_out, gaps_out = run_branch(problem, steps[::-1], (steps[-1], gaps_in[-1]), tol=tol,
                                    progress=half(len(steps)))
-    force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol)
+    areal = problem.e_star if problem.gap0.shape[0] > 1 else None  # not a line contact
+    refining: list[SolveRecord] = []
+    force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol, records=refining)
     return Cycle(
         approach_leg=leg_in, retraction_leg=leg_out, pull_off_force=force,
-        pull_off_approach=where, jump_in=find_jump(leg_in, entering=True),
-        jump_out=find_jump(leg_out, entering=False),
+        pull_off_approach=where,
+        jump_in=find_jump(leg_in, entering=True, e_star=areal, reach=problem.law.range),
+        jump_out=find_jump(leg_out, entering=False, e_star=areal, reach=problem.law.range),
         hysteresis_energy=hysteresis(leg_in, leg_out),
+        pull_off_solve=combine(refining, "golden-section refinement of the pull-off")
+        if refining else None,
     )

@@ -34,8 +34,10 @@ of adhesion w):
 
 The transition is stated with Maugis' parameter of the cylinder's radius,
 lambda = 2 sigma0 (R / (pi w K^2))^(1/3), K = 4 E* / 3 (the group sigma0 (R / (w E*^2))^(1/3)
-governs the line contact's transition too; the constant is the sphere's), and with the
-cohesive zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
+governs the line contact's transition too; the constant is the sphere's, Maugis 1992, so
+that a cylinder and a sphere of the same R, w, sigma0 and E* state the same lambda), with
+Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the law's range z, and with the cohesive
+zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
 the cohesive zone pi E* w / (4 sigma0^2) should span :data:`MIN_ZONE_PIXELS` cells, and
 the periodic images of the cylinder shift the load at a given width by about
 (pi^2 / 6) (a / L)^2, so the default cell is 16 times the larger of a_0 and the
@@ -53,9 +55,10 @@ import numpy as np
 from contact._validate import positive
 from contact.adhesion.ball import MIN_ZONE_PIXELS, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
-from contact.adhesion.laws import DugdaleLaw, InteractionLaw
+from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
+from contact.grid import Grid, centred_coordinates
 from contact.halfspace.influence import periodic_kernel_spectrum
 from contact.material_pair import MaterialPair, modulus
 
@@ -103,6 +106,12 @@ class AdhesiveLine:
     roughness_rms: float = 0.0
 
     @property
+    def tabor_parameter(self) -> float:
+        """Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the cylinder's radius, z the law's
+        range (:func:`contact.adhesion.laws.tabor_parameter`, as the ball states it)."""
+        return tabor_parameter(self.law.work, self.radius, self.e_star, self.law.range)
+
+    @property
     def jkr_pull_off(self) -> float:
         """3 (pi w^2 E* R / 16)^(1/3) (N/m), the JKR line contact's (module notes)."""
         return jkr_line_pull_off(self.law.work, self.radius, self.e_star)
@@ -145,15 +154,19 @@ def line_scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[floa
     return a0, math.sqrt(2.0 * radius * law.reach)
 
 
-def line_problem(gap0: np.ndarray, dx: float, e_star: float,
-                 law: InteractionLaw) -> AdhesiveProblem:
-    """The adhesive problem of a periodic 1D gap ``gap0`` (m) in plane strain.
+def line_problem(grid: Grid, e_star: float, law: InteractionLaw) -> AdhesiveProblem:
+    """The adhesive problem of a periodic line-contact grid (plane strain) and its gap (m).
 
-    The stiffness is the inverse of the core's periodic Love spectrum for a single row
-    (module notes), its q = 0 entry the mean-displacement spring of
-    :func:`contact.adhesion.solver.adhesive_problem`.
+    ``grid`` is a :class:`contact.grid.Grid` with ``line`` and ``periodic`` set and the
+    undeformed gap ``h`` (see :func:`periodic_line_grid`). The stiffness is the inverse of
+    the core's periodic Love spectrum for a single row (module notes), its q = 0 entry the
+    mean-displacement spring of :func:`contact.adhesion.solver.adhesive_problem`.
     """
-    h = np.ascontiguousarray(gap0, dtype=float).reshape(1, -1)
+    if not isinstance(grid, Grid) or grid.h is None or not (grid.line and grid.periodic):
+        raise ContactInputError("the adhesive line needs a periodic line-contact "
+                                "contact.grid.Grid with its gap h")
+    h = np.ascontiguousarray(grid.h, dtype=float).reshape(1, -1)
+    dx = grid.dx
     if h.shape[1] < 8 or not np.isfinite(h).all():
         raise ContactInputError("the line gap must be a finite profile of at least 8 cells")
     if not (dx > 0 and e_star > 0):
@@ -163,6 +176,14 @@ def line_problem(gap0: np.ndarray, dx: float, e_star: float,
     s[0, 0] = 0.0
     s[0, 0] = s.max()
     return AdhesiveProblem(h, float(dx), float(e_star), law, s)
+
+
+def periodic_line_grid(cells: int, dx: float, h: np.ndarray | None = None) -> Grid:
+    """A periodic line-contact grid of ``cells`` cells of pitch ``dx`` (m), the origin on
+    cell ``cells // 2``, with the gap ``h`` (m, one value a cell) if given."""
+    x = centred_coordinates(int(cells), dx)
+    gap = None if h is None else np.asarray(h, dtype=float).reshape(1, -1)
+    return Grid(x=x, y=np.zeros(1), h=gap, line=True, periodic=True, pitch=(float(dx), 1.0))
 
 
 def _approach_of(problem: AdhesiveProblem, pressure: np.ndarray) -> float:
@@ -232,10 +253,11 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
     size = CELL_WIDTHS * max(a0, reach) if size is None else \
         positive(size, "the domain size", "m")
     dx = size / cells
-    x = (np.arange(cells) - cells // 2) * dx
+    grid = periodic_line_grid(cells, dx)
+    x = grid.x
     h = x * x / (2.0 * radius)
     h, z_rms = rough_gap(h, roughness, f"a finite profile of {cells} points")
-    problem = line_problem(h, dx, e_star, law)
+    problem = line_problem(grid.with_gap(h.reshape(1, -1)), e_star, law)
     far, deep = _approach_range(problem, x, radius, z_rms)
     cycle = approach_retraction(problem, np.linspace(far, deep, int(steps)), tol=tol,
                                 progress=progress)

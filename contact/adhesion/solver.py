@@ -300,6 +300,7 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
         solve=SolveRecord(method="adhesive (accelerated projected gradient)",
                           iterations=int(nit), residual=residual, tolerance=tol,
                           converged=True, edge_contact=edge_contact(touching, periodic=True),
+                          periodic=True,
                           residual_definition="largest violation of equilibrium over the "
                                               "pressure scale"),
     )

@@ -1,6 +1,6 @@
 """FFT boundary-element solver for frictionless normal contact on a regular grid.
 
-The package's public entry is :func:`solve_normal` (with :class:`SolverStats`); its rooms:
+The package's public entry is :func:`solve_normal`; its rooms:
 
 - :mod:`contact.bem.solver`: input checks, nesting, result assembly (``solve_normal``);
 - :mod:`contact.bem.iteration`: the feasible start and the iteration loop;
@@ -96,6 +96,5 @@ What makes it fast
 
 from contact.bem.bounds import PressureBounds
 from contact.bem.solver import solve_normal
-from contact.bem.state import SolverStats
 
-__all__ = ["PressureBounds", "SolverStats", "solve_normal"]
+__all__ = ["PressureBounds", "solve_normal"]

@@ -314,7 +314,7 @@ def build_result(
         solve=SolveRecord(method=method, iterations=int(iterations), residual=float(residual),
                           tolerance=float(tolerance), converged=bool(converged),
                           edge_contact=edge_contact(pressure, periodic),
-                          residual_definition=RESIDUAL_DEFINITION),
+                          residual_definition=RESIDUAL_DEFINITION, periodic=bool(periodic)),
         notes=tuple(notes),
         hertz=hertz,
         extra=dict(extra or {}),

@@ -106,7 +106,8 @@ def solve_normal(
         ``edge_contact`` is set either way). Higher-level callers that enlarge the domain
         themselves pass "ignore".
     stats : SolverStats, optional
-        Filled with counters (iterations, FFTs) for diagnostics.
+        Live counters (iterations, FFTs, grid levels), for a benchmark that reads them
+        while the solve runs; the same counts end in ``result.solve.counters`` either way.
 
     Returns
     -------
@@ -169,6 +170,8 @@ def solve_normal(
 
     result = _assemble(h, state, e_star, hardness, grid, ok, tol,
                        {"levels": list(stats.levels), "tol": tol, "precision": precision})
+    result = dataclasses.replace(
+        result, solve=dataclasses.replace(result.solve, counters=stats.snapshot()))
     msg = edge_warning(edge == "warn" and result.touches_edge)
     if msg is not None:
         result = dataclasses.replace(result, notes=(*result.notes, msg))

@@ -9,9 +9,9 @@ displacement u = K * p), on flattened C-contiguous arrays:
 - :class:`IterationState`: the iterate (pressure, displacement, approach) and the flags
   that tell the step functions of :mod:`contact.bem.steps` what to do next.
 
-:class:`SolverStats` counts what a solve did (FFTs, corrections, grid levels), for
-benchmarks and diagnostics; the record every solver returns is
-:class:`contact.record.SolveRecord` (``ContactResult.solve``).
+:class:`SolverStats` counts what a solve does (FFTs, corrections, grid levels) while it
+runs; the solve copies the counts into the one record every solver returns,
+:class:`contact.record.SolveRecord` (``ContactResult.solve.counters``).
 """
 
 from __future__ import annotations
@@ -32,7 +32,12 @@ SPARSE_FACTOR = 1.8
 
 @dataclass
 class SolverStats:
-    """Counters of one solve, for benchmarks and diagnostics.
+    """The live counters of a solve, for benchmarks and diagnostics.
+
+    Not a result: the step functions count into it as they run, and the solve copies it
+    into its one record, :attr:`contact.record.SolveRecord.counters` (see
+    :meth:`snapshot`). A benchmark that reads the counts during the solve (from a
+    callback) passes its own to :func:`contact.bem.solve_normal` as ``stats``.
 
     ``projected_steps`` and ``damped_steps`` count the projected gradient steps and the
     Polonsky-Keer steps cut to the minimiser of the energy (elastic-plastic solves only).
@@ -45,6 +50,15 @@ class SolverStats:
     projected_steps: int = 0
     damped_steps: int = 0
     levels: list[tuple[int, int, int]] = field(default_factory=list)
+
+    def snapshot(self) -> dict:
+        """A copy of the counters now, as :attr:`contact.record.SolveRecord.counters` (a
+        plain dict, so that results pickle)."""
+        return {
+            "iterations": self.iterations, "fft_single": self.fft_single,
+            "fft_double": self.fft_double, "sparse_corrections": self.sparse_corrections,
+            "projected_steps": self.projected_steps, "damped_steps": self.damped_steps,
+            "levels": tuple(self.levels)}
 
 
 @dataclass(frozen=True, eq=False)

@@ -32,9 +32,10 @@ from typing import Any
 import numpy as np
 
 from contact._validate import positive
-from contact.bem import SolverStats, solve_normal
+from contact.bem import solve_normal
 from contact.bem.memory import check_grid_memory
 from contact.bem.result import ContactResult
+from contact.bem.state import SolverStats
 from contact.errors import ContactInputError, EdgeContactError, EdgeContactWarning
 from contact.geometry import (
     Domain,

@@ -37,6 +37,7 @@ import numpy as np
 from contact._validate import positive
 from contact.bem.line import active_set_record, line_column, solve_active_set
 from contact.errors import ContactInputError, ConvergenceError
+from contact.grid import Grid
 from contact.record import edge_contact, edge_warning
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
@@ -96,17 +97,16 @@ def influence_matrix(n: int, dx: float, creep: CreepSeries, speed: float) -> np.
     return col[idx]
 
 
-def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
-               speed: float, *, radius: float | None = None, x0: float | None = None,
-               max_iter: int = 200) -> RollingResult:
+def solve_line(grid: Grid, load: float, creep: CreepSeries, speed: float, *,
+               radius: float | None = None, max_iter: int = 200) -> RollingResult:
     """Steady rolling line contact on a viscoelastic half-plane.
 
     Parameters
     ----------
-    heights : (n,) ndarray
-        Undeformed gap h(x) between the bodies (m), e.g. x^2/(2R) minus a roughness profile.
-    dx : float
-        Cell pitch (m).
+    grid : Grid
+        A line-contact :class:`contact.grid.Grid` (``line=True``, one row, not periodic)
+        of at least 4 cells with the undeformed gap h(x) between the bodies (m), e.g.
+        x^2/(2R) minus a roughness profile; its centres and pitch place the cells.
     load : float
         Load per unit length W' (N/m).
     creep : CreepSeries
@@ -115,21 +115,22 @@ def solve_line(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
         Rolling speed V (m/s), the contact moving towards +x.
     radius : float, optional
         Cylinder radius R (m), for the rolling-resistance coefficient.
-    x0 : float, optional
-        x of the first cell centre (m); default centres the grid on x = 0.
 
     Returns
     -------
     RollingResult
     """
-    h = np.asarray(heights, dtype=float)
-    if h.ndim != 1 or h.size < 4 or not np.all(np.isfinite(h)):
+    if not isinstance(grid, Grid) or grid.h is None or not grid.line or grid.periodic:
+        raise ContactInputError("the viscoelastic line needs a free line-contact "
+                                "contact.grid.Grid (line=True) with its gap h")
+    h = np.asarray(grid.h, dtype=float).reshape(-1)
+    if h.size < 4 or not np.all(np.isfinite(h)):
         raise ContactInputError("the line heights must be a finite 1D array of >= 4 cells")
     v = positive(speed, "the rolling speed", "m/s")
     W = positive(load, "the load per unit length", "N/m")
-    dx = positive(dx, "the cell pitch", "m")
+    dx = positive(grid.dx, "the cell pitch", "m")
     n = h.size
-    x = (x0 if x0 is not None else -(n - 1) * dx / 2) + np.arange(n) * dx
+    x = np.asarray(grid.x, dtype=float)
     A = influence_matrix(n, dx, creep, v)
     start = h <= np.quantile(h, 0.2)
     found = solve_active_set(A, h, dx, W, start, 1e-12 * max(float(np.ptp(h)), 1e-300),
@@ -165,6 +166,7 @@ def rolling_cylinder(radius: float, load: float, creep: CreepSeries, speed: floa
     W = positive(load, "the load per unit length", "N/m")
     L = half_length if half_length is not None else cylinder_window(W, R, creep.relaxed)
     dx = 2.0 * L / n
+    # centres as x0 + j dx, as the grid was always laid here (see surface.rolling_sphere)
     x = -L + dx / 2 + np.arange(n) * dx
     h = x**2 / (2 * R)
     if roughness is not None:
@@ -172,4 +174,10 @@ def rolling_cylinder(radius: float, load: float, creep: CreepSeries, speed: floa
         if z.shape != (n,):
             raise ContactInputError(f"the roughness profile must have {n} samples")
         h = h - z
-    return solve_line(h, dx, W, creep, speed, radius=R, x0=float(x[0]))
+    return solve_line(line_grid(x, dx, h), W, creep, speed, radius=R)
+
+
+def line_grid(x: np.ndarray, dx: float, h: np.ndarray) -> Grid:
+    """A free line-contact grid of centres ``x`` (m), pitch ``dx`` (m) and gap ``h`` (m)."""
+    return Grid(x=np.asarray(x, dtype=float), y=np.zeros(1),
+                h=np.asarray(h, dtype=float).reshape(1, -1), line=True, pitch=(float(dx), 1.0))

@@ -48,6 +48,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError, EdgeContactWarning
+from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import Convolution
 from contact.record import SolveRecord, edge_contact, edge_warning
 from contact.viscoelastic.kernels import creep_filter_rows
@@ -137,19 +138,17 @@ def _anderson(xs: list[np.ndarray], gs: list[np.ndarray]) -> np.ndarray:
     return gs[-1] - (dg @ gamma).reshape(gs[-1].shape)
 
 
-def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSeries,
-                  speed: float, *, dy: float | None = None, radius: float | None = None,
-                  origin: tuple[float, float] = (0.0, 0.0), tol: float = 1e-6,
-                  max_outer: int = 60, memory: int = 5, ahead: float = 0.5,
-                  nested: bool = True) -> RollingResult:
+def solve_surface(grid: Grid, load: float, creep: CreepSeries, speed: float, *,
+                  radius: float | None = None, tol: float = 1e-6, max_outer: int = 60,
+                  memory: int = 5, ahead: float = 0.5, nested: bool = True) -> RollingResult:
     """Steady rolling point contact on a viscoelastic half-space.
 
     Parameters
     ----------
-    heights : (ny, nx) ndarray
-        Undeformed gap h (m): for a ball, (x^2 + y^2)/(2R) minus the composite roughness.
-    dx, dy : float
-        Cell pitch (m).
+    grid : Grid
+        A free (not periodic, not line) :class:`contact.grid.Grid` of at least 8 x 8 cells
+        with the undeformed gap ``h`` (m): for a ball, (x^2 + y^2)/(2R) minus the
+        composite roughness. Its pitch and the centre of cell (0, 0) place the grid.
     load : float
         N (N).
     creep : CreepSeries
@@ -158,8 +157,6 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
         V (m/s), the contact moving towards +x.
     radius : float, optional
         Ball radius (m), for the rolling-resistance coefficient (moment about x = 0).
-    origin : (float, float)
-        (x, y) of cell (0, 0)'s centre (m).
     tol : float
         Stop when the pressure changes by less than tol * pmax in a step.
     max_outer, memory : int
@@ -172,13 +169,12 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
     """
     from contact.bem import solve_normal
 
-    h = np.asarray(heights, dtype=float)
-    if h.ndim != 2 or min(h.shape) < 8 or not np.all(np.isfinite(h)):
-        raise ContactInputError("the heights must be a finite 2D array of at least 8 x 8")
+    h = _gap_of(grid)
     v = positive(speed, "the rolling speed", "m/s")
     W = positive(load, "the load", "N")
-    dx = positive(dx, "the cell pitch", "m")
-    dy = dx if dy is None else positive(dy, "the cell pitch dy", "m")
+    dx = positive(grid.dx, "the cell pitch", "m")
+    dy = positive(grid.dy, "the cell pitch dy", "m")
+    origin = grid.origin
     ny, nx = h.shape
     op = RollingOperator(ny, nx, dx, dy, creep, v, ahead)
     ce = 0.5 * (creep.glassy + creep.relaxed)
@@ -190,7 +186,7 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
                            strict=False)
         return np.asarray(res.pressure, dtype=float), res
 
-    p0 = _coarse_start(h, dx, dy, W, creep, v, origin, tol, ahead) if nested else None
+    p0 = _coarse_start(grid, W, creep, v, tol, ahead) if nested else None
     p, res = step(np.zeros_like(h) if p0 is None else p0, p0, tol)
     xs, gs = [], []
     x_in, change = p, 1.0
@@ -215,11 +211,23 @@ def solve_surface(heights: np.ndarray, dx: float, load: float, creep: CreepSerie
         raise ConvergenceError(f"viscoelastic rolling: pressure still changing by {change:.2g} "
                                f"of pmax after {max_outer} steps", residual=change,
                                iterations=max_outer)
-    return _result(op, h, p, res, W, radius, v, origin, it, change, tol)
+    return _result(op, grid, p, res, W, radius, v, it, change, tol)
 
 
-def _coarse_start(h: np.ndarray, dx: float, dy: float, W: float, creep: CreepSeries,
-                  v: float, origin: tuple[float, float], tol: float,
+def _gap_of(grid: Grid) -> np.ndarray:
+    """The grid's gap, checked: a finite (ny, nx) array of at least 8 x 8 on a free grid."""
+    if not isinstance(grid, Grid) or grid.h is None:
+        raise ContactInputError("viscoelastic rolling needs a contact.grid.Grid with its gap h")
+    if grid.line or grid.periodic:
+        raise ContactInputError("viscoelastic rolling in 3D needs a free grid (neither a line "
+                                "contact nor periodic)")
+    h = np.asarray(grid.h, dtype=float)
+    if min(h.shape) < 8 or not np.all(np.isfinite(h)):
+        raise ContactInputError("the heights must be a finite 2D array of at least 8 x 8")
+    return h
+
+
+def _coarse_start(grid: Grid, W: float, creep: CreepSeries, v: float, tol: float,
                   ahead: float) -> np.ndarray | None:
     """The rolling pressure of the twice coarser grid, interpolated; None where none helps.
 
@@ -228,14 +236,18 @@ def _coarse_start(h: np.ndarray, dx: float, dy: float, W: float, creep: CreepSer
     """
     from contact.nesting import can_nest, coarsen, prolong
 
-    if not creep.amplitudes or not can_nest(*h.shape):
+    if not creep.amplitudes or not can_nest(*grid.shape):
         return None
+    dx, dy = grid.dx, grid.dy
+    h = coarsen(grid.h)
+    origin = grid.origin
+    # the coarse cell (0, 0) covers fine cells (0..1, 0..1): its centre half a fine pitch on
+    coarse_grid = scan_grid(h.shape, 2 * dx, 2 * dy, h=h,
+                            origin=(origin[0] + dx / 2, origin[1] + dy / 2))
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", EdgeContactWarning)
-            coarse = solve_surface(coarsen(h), 2 * dx, W, creep, v, dy=2 * dy,
-                                   origin=(origin[0] + dx / 2, origin[1] + dy / 2),
-                                   tol=max(tol, 1e-2), ahead=ahead)
+            coarse = solve_surface(coarse_grid, W, creep, v, tol=max(tol, 1e-2), ahead=ahead)
     except (ContactInputError, ConvergenceError):
         return None  # the fine solve starts from scratch and reports its own trouble
     if coarse.solve.edge_contact:
@@ -243,17 +255,17 @@ def _coarse_start(h: np.ndarray, dx: float, dy: float, W: float, creep: CreepSer
     return np.clip(prolong(np.asarray(coarse.pressure)), 0.0, None)
 
 
-def _result(op: RollingOperator, h: np.ndarray, p: np.ndarray, res: Any, W: float,
-            radius: float | None, v: float, origin: tuple[float, float], it: int,
-            change: float, tol: float) -> RollingResult:
+def _result(op: RollingOperator, grid: Grid, p: np.ndarray, res: Any, W: float,
+            radius: float | None, v: float, it: int, change: float,
+            tol: float) -> RollingResult:
+    h = np.asarray(grid.h, dtype=float)
     u, _ = op.apply(p)
     delta = float(res.approach)
     gap = h + u - delta
     on = p > 0
     scale = max(float(np.ptp(h[on])) if on.any() else 0.0, 1e-300)
     resid = float(np.abs(gap[on]).max()) / scale if on.any() else 0.0
-    x = origin[0] + np.arange(op.nx) * op.dx
-    y = origin[1] + np.arange(op.ny) * op.dy
+    x, y = np.asarray(grid.x, dtype=float), np.asarray(grid.y, dtype=float)
     record = SolveRecord(method="viscoelastic rolling (fixed point on the normal BEM)",
                          iterations=it, residual=change, tolerance=tol, converged=True,
                          edge_contact=edge_contact(p),
@@ -281,12 +293,15 @@ def rolling_sphere(radius: float, load: float, creep: CreepSeries, speed: float,
     W = positive(load, "the load", "N")
     L = half_width if half_width is not None else sphere_window(W, R, creep.relaxed)
     dx = 2.0 * L / n
-    x = -L + dx / 2 + np.arange(n) * dx
+    # cell centres as origin + j dx (not contact.grid.centres' -L + (j + 1/2) dx, which
+    # differs in the last bit and moved answers by 1e-11)
+    x0 = -L + dx / 2
+    grid = scan_grid((n, n), dx, dx, origin=(x0, x0))
+    x = grid.x
     h = (x[None, :] ** 2 + x[:, None] ** 2) / (2 * R)
     if roughness is not None:
         z = np.asarray(roughness, dtype=float)
         if z.shape != h.shape:
             raise ContactInputError(f"the roughness map must have shape {h.shape}")
         h = h - z
-    return solve_surface(h, dx, W, creep, speed, radius=R, origin=(float(x[0]), float(x[0])),
-                         **kw)
+    return solve_surface(grid.with_gap(h), W, creep, speed, radius=R, **kw)

@@ -142,7 +142,7 @@ def _print_line(run_: Any) -> None:
           "(plane strain, per unit length)")
     print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
           f"peak tension {law.peak / 1e6:.4g} MPa")
-    print(f"Maugis lambda   {res.maugis_parameter:.4g}")
+    print(f"Maugis lambda   {res.maugis_parameter:.4g}   (Tabor mu {res.tabor_parameter:.4g})")
     print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
           f"period {format_length(res.size)}")
     print(f"pull-off force  {cyc.pull_off_force:.5g} N/m (JKR {res.jkr_pull_off:.5g} N/m, "
@@ -179,6 +179,17 @@ def _print(run_: Any) -> None:
         print(f"warning         {w}")
 
 
+def _how(jump: Any) -> str:
+    """How a jump reads: abrupt (nothing added), smooth, or smooth over a step too wide
+    to resolve a snap (contact.adhesion.cycle.find_jump)."""
+    if jump.abrupt:
+        return ""
+    if jump.resolved:
+        return " (smooth)"
+    return (" (no faster than a continuous branch over this step, which is wider than the "
+            "interaction range: a snap inside it is not resolved; use more --steps)")
+
+
 def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> None:
     """The jumps, the energy lost and the solve record of a cycle, sphere or line alike
     (loads times ``scale`` in ``force_unit``)."""
@@ -191,7 +202,7 @@ def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> N
             print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
                   f"{format_length(jump.step / 2)}), load {jump.load_before * scale:.4g} -> "
                   f"{jump.load_after * scale:.4g} {force_unit}"
-                  f"{'' if jump.abrupt else ' (smooth)'}")
+                  f"{_how(jump)}")
     print(f"hysteresis      {cyc.hysteresis_energy:.4g} {energy_unit} lost in the cycle"
           f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
     print_solve(cyc.solve, "solve          ")

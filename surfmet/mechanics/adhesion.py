@@ -190,7 +190,8 @@ def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
         return None
     return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
             "load_before": quantity(jump.load_before, force_unit),
-            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt}
+            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt,
+            "resolved": jump.resolved}
 
 
 def adhesion_record(run: Adhesion) -> dict[str, Any]:
@@ -218,8 +219,7 @@ def adhesion_record(run: Adhesion) -> dict[str, Any]:
                  "pixel": quantity(ball.dx, "m"), "periodic": True,
                  "process_zone": quantity(ball.process_zone, "m"),
                  "process_zone_pixels": quantity(ball.process_zone / ball.dx, "")},
-        "solver": {"iterations": int(cyc.approach_leg.iterations.sum()
-                                     + cyc.retraction_leg.iterations.sum())},
+        "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
         "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
         "scans": run.scans,

@@ -102,6 +102,7 @@ def line_record(run: Any) -> dict[str, Any]:
         "range": quantity(law.range, "m"),
         "peak_tension": quantity(law.peak, "Pa"),
         "maugis_parameter": quantity(res.maugis_parameter, ""),
+        "tabor_parameter": quantity(res.tabor_parameter, ""),
         "pull_off_force": quantity(cyc.pull_off_force, "N/m"),
         "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
         "jkr_pull_off_force": quantity(res.jkr_pull_off, "N/m"),
@@ -113,8 +114,7 @@ def line_record(run: Any) -> dict[str, Any]:
                  "pixel": quantity(res.dx, "m"), "periodic": True, "plane_strain": True,
                  "process_zone": quantity(res.process_zone, "m"),
                  "process_zone_pixels": quantity(res.process_zone / res.dx, "")},
-        "solver": {"iterations": int(cyc.approach_leg.iterations.sum()
-                                     + cyc.retraction_leg.iterations.sum())},
+        "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
         "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
         "scans": run.scans,
