@@ -75,11 +75,28 @@ def test_momentum_is_its_twin():
     assert np.array_equal(g_copy, g_new)
 
 
-def test_momentum_single_also_writes_float32():
+def test_momentum_into_also_writes_float32_and_leaves_g():
     rng = np.random.default_rng(10)
     g_new, g = rng.random(300), rng.random(300)
     y, y32, g_copy = np.empty(300), np.empty(300, np.float32), g.copy()
-    kernels.momentum_single(g_new, g_copy, 0.8, y, y32)
+    kernels.momentum_into(g_new, g_copy, 0.8, y, y32)
     ref = momentum_reference(g_new, g, 0.8)
     assert np.array_equal(y, ref) and np.array_equal(y32, ref.astype(np.float32))
-    assert np.array_equal(g_copy, g_new)
+    assert np.array_equal(g_copy, g)  # the caller swaps g and g_new
+
+
+def scale_subtract_reference(f, s, b):
+    """Twin of kernels.scale_subtract: the new f, by numpy's complex arithmetic."""
+    return f * s - b
+
+
+@pytest.mark.parametrize("real", [np.float32, np.float64])
+def test_scale_subtract_is_its_twin_bit_for_bit(real):
+    rng = np.random.default_rng(11)
+    cplx = np.result_type(real, np.complex64)
+    f = (rng.normal(size=(6, 5)) + 1j * rng.normal(size=(6, 5))).astype(cplx)
+    b = (rng.normal(size=(6, 5)) + 1j * rng.normal(size=(6, 5))).astype(cplx)
+    s = rng.random((6, 5)).astype(real)
+    ref = scale_subtract_reference(f, s, b)
+    kernels.scale_subtract(f, s, b)
+    assert f.dtype == cplx and np.array_equal(f, ref)
