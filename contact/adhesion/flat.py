@@ -35,8 +35,10 @@ but 0.0088 under load control with the path's states solved to 1e-3 instead of 3
 with unsplit load steps): where the zone is unresolved the loading path, not the solver,
 sets the area, to a few cells. On the resolved benchmark case (benchmarks/adhesion_flat.py,
 10 to 40 pixels of zone) one direct solve, the load path and the secant agree to the
-cell: 0.254822 at 512^2. There the load path takes 15 solves and 836 iterations (4.4
-times the non-adhesive solve's CPU time), the secant 42 solves and 6197 (98 times).
+cell: 0.254822 at 512^2. There the load path takes 15 solves and 732 iterations (3.7
+and 4.5 times the non-adhesive solve's CPU time, least of four runs, in two series under
+a load of 5; a third of the iterations is the first step's snap-in), the secant 42
+solves and 6197 (98 times).
 
 Per pressure the sweep reports, with the same definitions as the non-adhesive driver
 :func:`contact.setups.flat.flat_contact`: the area fraction where the surfaces touch (gap
