@@ -232,19 +232,19 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
                                   max_iter, single)
     if y is None:  # diverged (never seen below 4/3): again with the classical step
         y, more = _descend_at_pressure(problem, pressure, g, 1.0 / problem.spring, tol,
-                                       max_iter, single)
+                                       max_iter, single, guard=False)
         nit += more
     return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
                   mean_pressure=pressure)
 
 
 def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarray,
-                         step: float, tol: float, max_iter: int,
-                         single: bool) -> tuple[np.ndarray | None, int]:
+                         step: float, tol: float, max_iter: int, single: bool, *,
+                         guard: bool = True) -> tuple[np.ndarray | None, int]:
     """The projected gradient with momentum of :func:`solve_adhesive_at_pressure` from the
-    gap ``g`` (left as it is), at the step ``step``: (the last iterate, or None where the
-    violation grew past :data:`DIVERGED` times the first iterate's pressure scale, and the
-    iterations done)."""
+    gap ``g`` (left as it is), at the step ``step``: (the last iterate, or None where
+    ``guard`` and the violation grew past :data:`DIVERGED` times the first iterate's
+    pressure scale, and the iterations done)."""
     h, law = problem.gap0, problem.law
     real = np.float32 if single else np.float64
     stiff = _load_stiffness(problem).astype(real)
@@ -269,7 +269,7 @@ def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarra
         scale = max(law.peak, pmax)
         if viol <= stop * scale:
             return y, it
-        if it == 1:
+        if it == 1 and guard:
             limit = DIVERGED * scale
         elif not viol < limit:  # also NaN
             return None, it
