@@ -103,3 +103,34 @@ def scale_subtract(f, s, b):  # pragma: no cover - compiled
             v = f[i, j]
             w = b[i, j]
             f[i, j] = complex(v.real * s[i, j] - w.real, v.imag * s[i, j] - w.imag)
+
+
+@nb.njit(cache=True)
+def free_mean_step(y, g_new):  # pragma: no cover - compiled
+    """The mean of g_new - y over the cells apart after the step (g_new > 0; 0.0 where
+    none is), on flattened arrays: the step's uniform part on the free cells."""
+    total = 0.0
+    count = 0
+    for i in range(y.size):
+        gn = g_new[i]
+        if gn > 0.0:
+            total += gn - y[i]
+            count += 1
+    return total / count if count else 0.0
+
+
+@nb.njit(cache=True)
+def momentum_shift_into(g_new, g, c, shift, y, y_fft):  # pragma: no cover - compiled
+    """:func:`momentum_into` after moving the cells apart by ``shift``: g_new =
+    max(g_new + shift, 0) where g_new > 0 (in place), then y = y_fft = max(g_new +
+    c (g_new - g), 0)."""
+    for i in range(y.size):
+        gn = g_new[i]
+        if gn > 0.0:
+            gn = gn + shift
+            gn = gn if gn > 0.0 else 0.0
+            g_new[i] = gn
+        v = gn + c * (gn - g[i])
+        v = v if v > 0.0 else 0.0
+        y[i] = v
+        y_fft[i] = v
