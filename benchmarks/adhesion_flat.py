@@ -25,28 +25,35 @@ beside Tamaas' stored ones::
 
     python3 benchmarks/adhesion_flat.py --sizes 256,512
 
-Measured 2026-11-27, 19:41-19:44 UTC, on the shared 2-core AMD EPYC sandbox under a load
-average of 5 (five agents), ``--repeat 4``, least CPU s of the four (one BLAS thread;
-Tamaas 2.9.0 stored from an earlier session, OMP_NUM_THREADS=1); main 34330db (836
-iterations) and this version (732) alternately, the same script:
+Measured 2026-11-27, 20:01-20:05 UTC, on the shared 2-core AMD EPYC sandbox under a load
+average of 6 to 10 (five agents), ``--repeat 4``, least CPU s of the four (one BLAS
+thread; Tamaas 2.9.0 stored from an earlier session, OMP_NUM_THREADS=1); main 34330db
+(836 iterations) and this version (539) alternately, the same script:
 
     512^2      ours bare  ours adhesive  ratio  (per run)               Tamaas adhesive
-    34330db      1.18        6.28        5.3    4.6, 4.0, 4.6, 5.5          78.01
-    this         1.49        5.47        3.7    3.7, 3.9, 4.0, 3.4
-    34330db      1.20        6.64        5.5    5.5, 5.5, 4.7, 4.8
-    this         1.17        5.31        4.5    4.0, 4.1, 3.8, 5.1
+    34330db      1.14        6.69        5.8    4.4, 4.8, 4.3, 6.1          78.01
+    this         1.22        4.38        3.6    3.5, 3.6, 3.5, 2.9
+    34330db      1.31        5.73        4.4    4.4, 5.1, 4.4, 4.1
+    this         1.00        3.52        3.5    2.5, 3.6, 3.5, 3.5
+    34330db      1.23        6.12        5.0    4.8, 5.5, 5.0, 4.6
+    this         1.33        4.13        3.1    3.5, 3.3, 3.1, 3.3
 
-    adhesive at 512^2: 15 solves, 732 iterations (13 load steps to 3e-3 and the final
+    adhesive at 512^2: 15 solves, 539 iterations (13 load steps to 3e-3 and the final
     state to 3e-5 with float32 FFTs, then to 1e-6 in float64); area fraction 0.254822,
     mean gap 4.65359e-4, the same cells as before (Tamaas -0.57 % and +0.31 %).
 
-The load-controlled solve's step went from 1 to 1.3 / (the largest stiffness) (836 -> 732
-iterations at 512^2, 690 -> 596 at 256^2, 654 -> 568 at 128^2; the same contact cells,
-the mean gap within the solve tolerance: both answers refined to 1e-10 agree to 5e-10),
-and an iteration lost a pass over memory (no copy of the iterate, the spectrum scaled
-and shifted in one kernel; bit for bit the same). The first of the 15 solves, the
-snap-in from the first touch to 1/32 of the pressure, takes a third of the iterations
-(259): the flat falls freely under the load until the avalanche of contacts stops it.
+Three changes to the load-controlled solve (:mod:`contact.adhesion.solver`), none to the
+non-adhesive one: the step 1.3 / (the largest stiffness) instead of 1 (836 -> 732
+iterations at 512^2); after each step the free cells' mean moved 5 times as far, the
+load-controlled q = 0 mode having no elastic stiffness (732 -> 539; 654 -> 356 at 128^2,
+690 -> 438 at 256^2); a pass over memory less per iteration (no copy of the iterate, the
+spectrum scaled and shifted in one kernel; bit for bit the same). The contact cells are
+the same at 128^2, 256^2 and 512^2, the mean gap within the solve tolerance (refined to
+1e-10, the old and the new answers agree to 8e-11). The first of the 15 solves, the
+snap-in from the first touch to 1/32 of the pressure, took a third of the iterations
+(297 of 836): the flat falls freely under the load until the avalanche of contacts
+stops it; the free cells' shift alone shortens it to about 150 (from 259 at the step 1.3).
+
 Before these changes, 17:55 UTC (load 3.4, ``--repeat 3``): 256^2 ratio 5.0 (0.76 s;
 4.0, 5.0, 6.0), 512^2 4.4 (3.92 s, 836 iterations; 3.4, 5.0, 4.6); 18:34 (load 0.4):
 512^2 5.3 (0.87 and 4.59 s; 3.5, 3.9, 5.3). Until this version the first timed run's
@@ -54,7 +61,7 @@ non-adhesive solve also built the shared influence spectrum (0.4 s at 512^2), wh
 later runs and the adhesive solve found cached: that run's ratio came out low. Each size
 is now warmed by one untimed non-adhesive solve (:func:`warm`).
 
-The same day at 17:35 (load 5.3), before the three changes below, the ratio was 5.7 at 512^2
+The same day at 17:35 (load 5.3), before the three earlier changes below, the ratio was 5.7 at 512^2
 (adhesive 5.40 s; 4.7, 6.7, 5.6 per run) and 6.3 at 256^2; at 17:45 (load 2.9), 5.45
 (5.75 s; 4.5, 5.5, 5.3). Each change, measured alone at 512^2: touching cells skip the
 exponential, the float32 solves take it in float32 and get their FFT input from the
