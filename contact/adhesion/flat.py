@@ -30,14 +30,14 @@ On the tests' 64^2 surface at 0.1 pixel of cohesive zone (exponential law, w 0.2
 rho 5 nm, 0.1 MPa) both controls find the same contact set (area fraction 0.0168, mean gap
 within 2e-6), and halving the threshold to 5 % changes nothing; unsplit displacement steps
 had changed the area by 3.9 % with the starting estimate and overestimated it by 10 to
-15 %. The Dugdale law of the same work and range there gives 0.0098 under displacement
-control and 0.0088 under load control (0.0098 before the free cells' mean was moved
-further per iteration, :data:`contact.adhesion.solver.FREE_SHIFT`; 0.0088 too with the
-path's states solved to 1e-3 instead of 3e-3, or with unsplit load steps): where the
-zone is unresolved the loading path, and the solver's iterates, set the area, to a few
-cells. On the resolved benchmark case (benchmarks/adhesion_flat.py,
-10 to 40 pixels of zone) one direct solve, the load path and the secant agree to the
-cell: 0.254822 at 512^2. There the load path takes 15 solves and 539 iterations (836
+15 %. The Dugdale law of the same work and range there gives 0.0098 under both controls,
+but 0.0088 under load control with the path's states solved to 1e-3 instead of 3e-3 (or
+with unsplit load steps, or with the free cells' shift of
+:data:`contact.adhesion.solver.FREE_SHIFT` unweighted by their share): where the zone is
+unresolved the loading path, and the solver's iterates, set the area, to a few cells.
+On the resolved benchmark case (benchmarks/adhesion_flat.py, 10 to 40 pixels of zone)
+one direct solve, the load path and the secant agree to the
+cell: 0.254822 at 512^2. There the load path takes 15 solves and 542 iterations (836
 before the longer load-controlled steps of :mod:`contact.adhesion.solver`; see
 benchmarks/adhesion_flat.py for the CPU times), the secant 42 solves and 6197.
 

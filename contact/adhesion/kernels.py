@@ -107,8 +107,9 @@ def scale_subtract(f, s, b):  # pragma: no cover - compiled
 
 @nb.njit(cache=True)
 def free_mean_step(y, g_new):  # pragma: no cover - compiled
-    """The mean of g_new - y over the cells apart after the step (g_new > 0; 0.0 where
-    none is), on flattened arrays: the step's uniform part on the free cells."""
+    """The sum of g_new - y over the cells apart after the step (g_new > 0) over the
+    number of all cells, on flattened arrays: the step's mean over the free cells times
+    their share of the cells."""
     total = 0.0
     count = 0
     for i in range(y.size):
@@ -116,7 +117,7 @@ def free_mean_step(y, g_new):  # pragma: no cover - compiled
         if gn > 0.0:
             total += gn - y[i]
             count += 1
-    return total / count if count else 0.0
+    return total / y.size if count else 0.0
 
 
 @nb.njit(cache=True)
