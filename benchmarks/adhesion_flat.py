@@ -25,34 +25,36 @@ beside Tamaas' stored ones::
 
     python3 benchmarks/adhesion_flat.py --sizes 256,512
 
-Measured 2026-11-27, 20:01-20:05 UTC, on the shared 2-core AMD EPYC sandbox under a load
-average of 6 to 10 (five agents), ``--repeat 4``, least CPU s of the four (one BLAS
+Measured 2026-11-27, 20:13-20:15 UTC, on the shared 2-core AMD EPYC sandbox under a load
+average of 3 to 5 (five agents), ``--repeat 4``, least CPU s of the four (one BLAS
 thread; Tamaas 2.9.0 stored from an earlier session, OMP_NUM_THREADS=1); main 34330db
-(836 iterations) and this version (539) alternately, the same script:
+(836 iterations) and this version (542) alternately, the same script:
 
     512^2      ours bare  ours adhesive  ratio  (per run)               Tamaas adhesive
-    34330db      1.14        6.69        5.8    4.4, 4.8, 4.3, 6.1          78.01
-    this         1.22        4.38        3.6    3.5, 3.6, 3.5, 2.9
-    34330db      1.31        5.73        4.4    4.4, 5.1, 4.4, 4.1
-    this         1.00        3.52        3.5    2.5, 3.6, 3.5, 3.5
-    34330db      1.23        6.12        5.0    4.8, 5.5, 5.0, 4.6
-    this         1.33        4.13        3.1    3.5, 3.3, 3.1, 3.3
+    34330db      1.29        7.13        5.5    5.7, 4.5, 4.9, 4.8          78.01
+    this         1.29        4.71        3.7    4.0, 3.1, 3.4, 4.1
+    34330db      1.04        6.17        5.9    4.4, 4.5, 5.3, 6.8
+    this         1.34        4.27        3.2    2.8, 2.6, 3.7, 3.5
 
-    adhesive at 512^2: 15 solves, 539 iterations (13 load steps to 3e-3 and the final
+    (At 20:01-20:05, load 6 to 10, with the free cells' shift not yet weighted by their
+    share, 539 iterations: 3.6, 3.5, 3.1 against 5.8, 4.4, 5.0, every run <= 3.6.)
+
+    adhesive at 512^2: 15 solves, 542 iterations (13 load steps to 3e-3 and the final
     state to 3e-5 with float32 FFTs, then to 1e-6 in float64); area fraction 0.254822,
     mean gap 4.65359e-4, the same cells as before (Tamaas -0.57 % and +0.31 %).
 
 Three changes to the load-controlled solve (:mod:`contact.adhesion.solver`), none to the
 non-adhesive one: the step 1.3 / (the largest stiffness) instead of 1 (836 -> 732
-iterations at 512^2); after each step the free cells' mean moved 5 times as far, the
-load-controlled q = 0 mode having no elastic stiffness (732 -> 539; 654 -> 356 at 128^2,
-690 -> 438 at 256^2); a pass over memory less per iteration (no copy of the iterate, the
-spectrum scaled and shifted in one kernel; bit for bit the same). The contact cells are
-the same at 128^2, 256^2 and 512^2, the mean gap within the solve tolerance (refined to
-1e-10, the old and the new answers agree to 8e-11). The first of the 15 solves, the
-snap-in from the first touch to 1/32 of the pressure, took a third of the iterations
-(297 of 836): the flat falls freely under the load until the avalanche of contacts
-stops it; the free cells' shift alone shortens it to about 150 (from 259 at the step 1.3).
+iterations at 512^2); after each step the free cells moved by 4 more times the step's mean
+over them times their share of the cells, the load-controlled q = 0 mode having no elastic
+stiffness (732 -> 542; 654 -> 360 at 128^2, 690 -> 442 at 256^2); a pass over memory less
+per iteration (no copy of the iterate, the spectrum scaled and shifted in one kernel; bit
+for bit the same). The contact cells are the same at 128^2, 256^2 and 512^2, the mean gap
+within the solve tolerance (refined to 1e-10, the old and the new answers agree to 8e-11,
+measured at 539 iterations). The first of the 15 solves, the snap-in from the first touch
+to 1/32 of the pressure, took a third of the iterations (297 of 836): the flat falls
+freely under the load until the avalanche of contacts stops it; the free cells' shift
+alone shortens it to about 150 (from 259 at the step 1.3).
 
 Before these changes, 17:55 UTC (load 3.4, ``--repeat 3``): 256^2 ratio 5.0 (0.76 s;
 4.0, 5.0, 6.0), 512^2 4.4 (3.92 s, 836 iterations; 3.4, 5.0, 4.6); 18:34 (load 0.4):
