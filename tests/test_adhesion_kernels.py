@@ -75,11 +75,48 @@ def test_momentum_is_its_twin():
     assert np.array_equal(g_copy, g_new)
 
 
-def test_momentum_single_also_writes_float32():
+def test_momentum_into_also_writes_float32_and_leaves_g():
     rng = np.random.default_rng(10)
     g_new, g = rng.random(300), rng.random(300)
     y, y32, g_copy = np.empty(300), np.empty(300, np.float32), g.copy()
-    kernels.momentum_single(g_new, g_copy, 0.8, y, y32)
+    kernels.momentum_into(g_new, g_copy, 0.8, y, y32)
     ref = momentum_reference(g_new, g, 0.8)
     assert np.array_equal(y, ref) and np.array_equal(y32, ref.astype(np.float32))
-    assert np.array_equal(g_copy, g_new)
+    assert np.array_equal(g_copy, g)  # the caller swaps g and g_new
+
+
+def scale_subtract_reference(f, s, b):
+    """Twin of kernels.scale_subtract: the new f, by numpy's complex arithmetic."""
+    return f * s - b
+
+
+@pytest.mark.parametrize("real", [np.float32, np.float64])
+def test_scale_subtract_is_its_twin_bit_for_bit(real):
+    rng = np.random.default_rng(11)
+    cplx = np.result_type(real, np.complex64)
+    f = (rng.normal(size=(6, 5)) + 1j * rng.normal(size=(6, 5))).astype(cplx)
+    b = (rng.normal(size=(6, 5)) + 1j * rng.normal(size=(6, 5))).astype(cplx)
+    s = rng.random((6, 5)).astype(real)
+    ref = scale_subtract_reference(f, s, b)
+    kernels.scale_subtract(f, s, b)
+    assert f.dtype == cplx and np.array_equal(f, ref)
+
+
+def test_free_mean_step_and_shift_are_their_twins():
+    """The free cells' mean step, and the momentum after moving the free cells by a
+    shift (some pushed to contact by it), against numpy written from their definitions."""
+    rng = np.random.default_rng(12)
+    y = np.where(rng.random(400) < 0.3, 0.0, rng.random(400))
+    g_new = np.maximum(y + rng.normal(0.0, 0.3, 400), 0.0)
+    g = rng.random(400)
+    free = g_new > 0.0
+    assert kernels.free_mean_step(y, g_new) == pytest.approx(
+        np.sum(g_new[free] - y[free]) / y.size, rel=1e-12)
+    assert kernels.free_mean_step(y, np.zeros(400)) == 0.0
+    shift = -0.2
+    moved = np.where(free, np.maximum(g_new + shift, 0.0), g_new)
+    out, y_new, y32 = g_new.copy(), np.empty(400), np.empty(400, np.float32)
+    kernels.momentum_shift_into(out, g, 0.8, shift, y_new, y32)
+    assert np.array_equal(out, moved) and ((moved == 0.0) & free).any()
+    ref = momentum_reference(moved, g, 0.8)
+    assert np.array_equal(y_new, ref) and np.array_equal(y32, ref.astype(np.float32))

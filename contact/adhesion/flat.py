@@ -32,11 +32,14 @@ within 2e-6), and halving the threshold to 5 % changes nothing; unsplit displace
 had changed the area by 3.9 % with the starting estimate and overestimated it by 10 to
 15 %. The Dugdale law of the same work and range there gives 0.0098 under both controls,
 but 0.0088 under load control with the path's states solved to 1e-3 instead of 3e-3 (or
-with unsplit load steps): where the zone is unresolved the loading path, not the solver,
-sets the area, to a few cells. On the resolved benchmark case (benchmarks/adhesion_flat.py,
-10 to 40 pixels of zone) one direct solve, the load path and the secant agree to the
-cell: 0.254822 at 512^2. There the load path takes 15 solves and 836 iterations (4.4
-times the non-adhesive solve's CPU time), the secant 42 solves and 6197 (98 times).
+with unsplit load steps, or with the free cells' shift of
+:data:`contact.adhesion.solver.FREE_SHIFT` unweighted by their share): where the zone is
+unresolved the loading path, and the solver's iterates, set the area, to a few cells.
+On the resolved benchmark case (benchmarks/adhesion_flat.py, 10 to 40 pixels of zone)
+one direct solve, the load path and the secant agree to the
+cell: 0.254822 at 512^2. There the load path takes 15 solves and 542 iterations (836
+before the longer load-controlled steps of :mod:`contact.adhesion.solver`; see
+benchmarks/adhesion_flat.py for the CPU times), the secant 42 solves and 6197.
 
 Per pressure the sweep reports, with the same definitions as the non-adhesive driver
 :func:`contact.setups.flat.flat_contact`: the area fraction where the surfaces touch (gap

@@ -82,12 +82,56 @@ def momentum(g_new, g, c, y):  # pragma: no cover - compiled
 
 
 @nb.njit(cache=True)
-def momentum_single(g_new, g, c, y, y32):  # pragma: no cover - compiled
-    """:func:`momentum`, also writing y in float32 to ``y32`` (the next float32 FFT's input)."""
+def momentum_into(g_new, g, c, y, y_fft):  # pragma: no cover - compiled
+    """y = max(g_new + c (g_new - g), 0), also written to ``y_fft`` (the next FFT's input:
+    y's float32 copy, or y itself), on flattened arrays; g is left as it is, for the caller
+    to swap g and g_new instead of copying one into the other (a pass over memory less)."""
     for i in range(y.size):
         gn = g_new[i]
         v = gn + c * (gn - g[i])
         v = v if v > 0.0 else 0.0
         y[i] = v
-        y32[i] = v
-        g[i] = gn
+        y_fft[i] = v
+
+
+@nb.njit(cache=True)
+def scale_subtract(f, s, b):  # pragma: no cover - compiled
+    """f = f s - b in place (2D: f and b complex, s real): the elastic pressure's spectrum
+    from the gap's, in one pass instead of two and a complex copy of s."""
+    for i in range(f.shape[0]):
+        for j in range(f.shape[1]):
+            v = f[i, j]
+            w = b[i, j]
+            f[i, j] = complex(v.real * s[i, j] - w.real, v.imag * s[i, j] - w.imag)
+
+
+@nb.njit(cache=True)
+def free_mean_step(y, g_new):  # pragma: no cover - compiled
+    """The sum of g_new - y over the cells apart after the step (g_new > 0) over the
+    number of all cells, on flattened arrays: the step's mean over the free cells times
+    their share of the cells."""
+    total = 0.0
+    count = 0
+    for i in range(y.size):
+        gn = g_new[i]
+        if gn > 0.0:
+            total += gn - y[i]
+            count += 1
+    return total / y.size if count else 0.0
+
+
+@nb.njit(cache=True)
+def momentum_shift_into(g_new, g, c, shift, y, y_fft):  # pragma: no cover - compiled
+    """:func:`momentum_into` after moving the cells apart by ``shift``: g_new =
+    max(g_new + shift, 0) where g_new > 0 (in place), then y = y_fft = max(g_new +
+    c (g_new - g), 0)."""
+    for i in range(y.size):
+        gn = g_new[i]
+        if gn > 0.0:
+            gn = gn + shift
+            gn = gn if gn > 0.0 else 0.0
+            g_new[i] = gn
+        v = gn + c * (gn - g[i])
+        v = v if v > 0.0 else 0.0
+        y[i] = v
+        y_fft[i] = v
