@@ -12,7 +12,9 @@ of the retraction's (a, P) pairs against P_MD(a), |P - P_MD(a)| / max(|P_MD(a)|,
 sub-pixel (contact.adhesion.ball.edge_radius) and, for comparison, from the count of the
 touching cells.
 
-Measured (see the table in tests/test_adhesion_validation.py's module notes), e.g.
+The zone in pixels is the JKR-limit width pi E* w / (4 sigma0^2) over the pixel (much
+wider than the real zone at small lambda). Measured: the table in the module notes of
+tests/test_adhesion_validation.py, e.g.
 
     python3 benchmarks/adhesion_maugis.py --lambdas 1 --grids 48,72,96,144 --cell 6
 """
