@@ -322,7 +322,8 @@ def test_maugis_pull_off_and_curve_to_two_percent(lam):
     the pull-off is Maugis' to 2 % and every retraction state (a, P) with a >= 4 pixels and
     a <= 1.9 l_M is on Maugis' curve to 2 % in md_curve_error (|P - P_MD(a)| over the
     larger of |P_MD(a)| and the pull-off), with a read sub-pixel; the rms of that error
-    falls from 72^2 to 144^2. See the module notes for the measured table."""
+    falls from 72^2 to 144^2. See the module notes for the measured table. CPU time of
+    both grids: 21 s, 22 s and 16 s (lambda 0.1, 0.3, 1; 28-45 s wall at load 3)."""
     coarse, fine = maugis_run(lam, 72), maugis_run(lam, 144)
     assert abs(fine.pull_off_error) < 0.02
     err = fine.curve_error()
