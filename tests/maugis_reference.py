@@ -45,3 +45,11 @@ def md_load_at_radius(lam: float, a: np.ndarray) -> np.ndarray:
     m = 1.0 + np.logspace(-9, 3, 40001)
     big_a, p = md_curve(lam, m)
     return np.interp(np.asarray(a, dtype=float), big_a[::-1], p[::-1])
+
+
+def md_curve_error(lam: float, a: np.ndarray, load: np.ndarray) -> np.ndarray:
+    """|P - P_MD(a)| / max(|P_MD(a)|, P_c) at each (a, P) (over l_M and pi w R): the load's
+    error relative to the load itself where it exceeds the pull-off P_c, and to P_c near
+    zero load, where a relative error would blow up (the norm of the 2 % asked for)."""
+    ref = md_load_at_radius(lam, a)
+    return np.abs(np.asarray(load, dtype=float) - ref) / np.maximum(np.abs(ref), md_pull_off(lam))
