@@ -165,6 +165,9 @@ def _print(run_: Any) -> None:
     print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
           f"peak tension {law.peak / 1e6:.4g} MPa")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
+    if getattr(law, "smoothing", 0.0) > 0.0:
+        print(f"Dugdale step    smoothed over {format_length(law.smoothing)} of gap "
+              "(the grid's scale: removes the pixels' pinning of the zone's end)")
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
     print(f"pull-off force  {cyc.pull_off_force * 1e6:.5g} uN = "
