@@ -101,7 +101,11 @@ def test_every_json_subcommand_has_an_invocation_here():
     assert not missing, f"add a --json invocation to INVOCATIONS for: {sorted(missing)}"
 
 
-@pytest.mark.parametrize("name", sorted(INVOCATIONS))
+# the demo's run (about 30 s) is a campaign: the default suite keeps the demo's JSON test
+# (tests/test_demo.py), and every other command's convention here
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=pytest.mark.campaign) if n == "demo" else n
+    for n in sorted(INVOCATIONS)])
 def test_json_on_stdout_logs_on_stderr(name, files, capsys):
     assert name in SUBS, f"'surfmet {name}' has an invocation here but no subcommand"
     rc = main(_fill(INVOCATIONS[name], files))

@@ -141,6 +141,7 @@ def test_calibration_false_alarms_and_power_published() -> None:
     assert cal["tables"]["null0"] >= 100
 
 
+@pytest.mark.campaign
 def test_paper_table_verdict_through_the_cli(capsys) -> None:
     rc = main(["rotor", "paper2022", "--json", "-q"])
     assert rc == 0

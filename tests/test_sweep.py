@@ -72,6 +72,7 @@ def dask_address():
         yield cluster.scheduler_address
 
 
+@pytest.mark.campaign
 def test_rows_are_bitwise_identical_in_every_engine(dask_address):
     items = _items(task="hertz-check")
     serial = run_sweep(items, workers=1)
@@ -117,6 +118,7 @@ def test_unwritable_output_is_one_line_exit_1(tmp_path, capsys):
 
 
 @pytest.mark.slow
+@pytest.mark.campaign
 def test_killed_sweep_keeps_valid_rows_and_resume_completes(tmp_path):
     out = tmp_path / "kill.csv"
     args = [sys.executable, "-m", "surfmet", "sweep", "--task", "contact", "--plates", PLATE,
