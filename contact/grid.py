@@ -4,8 +4,10 @@ A :class:`Grid` is a regular grid of rectangular elements (cells): the centre co
 along x and y, the pitch, whether the domain is periodic, whether it is a line contact
 (plane strain, one row, forces per unit length) and, where the problem has one, the
 undeformed separation ``h`` (m, positive apart). The normal BEM (:mod:`contact.bem`), the
-tangential solvers (:mod:`contact.tangential`) and the viscoelastic rolling solver
-(:mod:`contact.viscoelastic`) take it or build it at their edge from loose arrays.
+tangential solvers (:mod:`contact.tangential`), the viscoelastic rolling solver
+(:mod:`contact.viscoelastic`) and the adhesive solves (:mod:`contact.adhesion`: periodic,
+square cells; a line contact's grid is plane strain) take it or build it at their edge
+from loose arrays.
 
 Three ways of placing the centres are in use, each with its constructor:
 

@@ -40,6 +40,7 @@ from contact.adhesion.cycle import Cycle, approach_retraction
 from contact.adhesion.laws import InteractionLaw, tabor_parameter
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
+from contact.grid import Grid
 from contact.material_pair import MaterialPair, modulus
 
 #: A cohesive zone narrower than this many pixels is under-resolved: about 7 % on the
@@ -161,7 +162,8 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     x = (np.arange(grid) - grid / 2) * dx
     h = (x[:, None] ** 2 + x[None, :] ** 2) / (2.0 * radius)
     h, z_rms = rough_gap(h, roughness, f"a finite {grid} x {grid} array")
-    problem = adhesive_problem(h, dx, e_star, law)
+    problem = adhesive_problem(Grid(x=x, y=x, h=h, periodic=True, pitch=(dx, dx)),
+                               e_star=e_star, law=law)
     deepest = ell * ell / radius + 3.0 * z_rms
     farthest = -(1.5 * d_scale + 1.2 * (reach * reach / (2.0 * radius)))
     cycle = approach_retraction(problem, np.linspace(farthest, deepest, int(steps)), tol=tol,

@@ -73,6 +73,7 @@ from contact.adhesion.solver import (
     solve_adhesive_at_pressure,
 )
 from contact.errors import ContactInputError, ConvergenceError
+from contact.grid import Grid
 from contact.record import SolveRecord
 
 #: Secant tries allowed per tensile nominal pressure.
@@ -378,16 +379,19 @@ def _next_try(x: float, f: float, prev: tuple[float, float] | None, slope: float
     return float(x_new)
 
 
-def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLaw,
-                  pressures: np.ndarray, mean_gaps: np.ndarray, stiffnesses: np.ndarray, *,
+def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
+                  e_star: float | None = None, law: InteractionLaw | None = None,
+                  pressures: np.ndarray | None = None, mean_gaps: np.ndarray | None = None,
+                  stiffnesses: np.ndarray | None = None, *,
                   rtol: float = 1e-4, tol: float = 1e-8, max_change: float = MAX_AREA_CHANGE,
                   progress: Callable[[int, int], None] | None = None) -> AdhesiveFlat:
     """Press the periodic gap ``gap0`` (m, square pixels ``dx``) at each nominal pressure.
 
     Parameters
     ----------
-    gap0 : ndarray
-        Initial gap to the flat (``max(z) - z`` for a surface z).
+    gap0 : ndarray or Grid
+        Initial gap to the flat (``max(z) - z`` for a surface z), or a periodic
+        :class:`contact.grid.Grid` carrying it and its pitch (then ``dx`` is not given).
     dx, e_star : float
         Pixel (m) and composite modulus (Pa),
         or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
@@ -412,8 +416,12 @@ def adhesive_flat(gap0: np.ndarray, dx: float, e_star: float, law: InteractionLa
     """
     from contact.material_pair import modulus
 
+    if any(v is None for v in (e_star, law, pressures, mean_gaps, stiffnesses)):
+        raise ContactInputError("give e_star, the law, the pressures and one starting mean "
+                                "gap and stiffness per pressure")
     e_star = modulus(e_star)  # a resolved pair or its E*
     problem = adhesive_problem(gap0, dx, e_star, law)
+    dx = problem.dx
     p = np.atleast_1d(np.asarray(pressures, dtype=float))
     if p.size == 0 or not np.all(np.isfinite(p)) or np.any(np.diff(p) <= 0):
         raise ContactInputError("nominal pressures must be finite and increasing")

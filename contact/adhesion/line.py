@@ -175,7 +175,7 @@ def line_problem(grid: Grid, e_star: float, law: InteractionLaw) -> AdhesiveProb
         s = e_star / np.asarray(periodic_kernel_spectrum(1, h.shape[1], float(dx), float(dx)))
     s[0, 0] = 0.0
     s[0, 0] = s.max()
-    return AdhesiveProblem(h, float(dx), float(e_star), law, s)
+    return AdhesiveProblem(h, float(dx), float(e_star), law, s, grid)
 
 
 def periodic_line_grid(cells: int, dx: float, h: np.ndarray | None = None) -> Grid:

@@ -43,6 +43,7 @@ import scipy.fft as sfft
 from contact.adhesion import kernels
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.errors import ContactInputError, ConvergenceError
+from contact.grid import Grid, scan_grid
 from contact.halfspace.influence import periodic_kernel_spectrum
 from contact.record import SolveRecord, edge_contact
 
@@ -113,7 +114,8 @@ class AdhesiveState:
 class AdhesiveProblem:
     """The fixed data of a series of adhesive solves on one periodic grid.
 
-    Build with :func:`adhesive_problem`.
+    Build with :func:`adhesive_problem` (a 3D grid) or
+    :func:`contact.adhesion.line.line_problem` (a line contact).
     """
 
     gap0: np.ndarray
@@ -121,6 +123,7 @@ class AdhesiveProblem:
     e_star: float
     law: InteractionLaw
     stiffness: np.ndarray  # E* |q| / 2 on the rfft grid, the q = 0 entry the mean spring
+    grid: Grid | None = None  # the grid the problem was built on (coordinates, boundary)
 
     @property
     def cell_area(self) -> float:
@@ -133,22 +136,72 @@ class AdhesiveProblem:
         return float(self.stiffness[0, 0])
 
 
-def adhesive_problem(gap0: np.ndarray, dx: float, e_star: float,
-                     law: InteractionLaw) -> AdhesiveProblem:
-    """Check the input and precompute the periodic stiffness of a square-pitch grid."""
-    h = np.ascontiguousarray(gap0, dtype=float)
-    if h.ndim != 2 or min(h.shape) < 4 or not np.isfinite(h).all():
-        raise ContactInputError("the gap must be a finite 2D array of at least 4x4")
-    if not (dx > 0 and e_star > 0):
+def adhesive_problem(gap0: np.ndarray | Grid, dx: float | None = None,
+                     e_star: float | None = None,
+                     law: InteractionLaw | None = None) -> AdhesiveProblem:
+    """Check the input and precompute the periodic stiffness of a square-pitch grid.
+
+    Parameters
+    ----------
+    gap0 : ndarray, shape (ny, nx), or Grid
+        The undeformed gap h (m) on square cells of pitch ``dx``, or a periodic 3D
+        :class:`contact.grid.Grid` carrying it (then ``dx`` is not given: the grid holds
+        its pitch and origin, as for :func:`contact.bem.solve_normal`).
+    dx : float
+        Pixel (m), with an array gap.
+    e_star : float
+        Composite modulus E* (Pa).
+    law : InteractionLaw
+        The adhesion law.
+    """
+    grid = _periodic_grid(gap0, dx)
+    if e_star is None or law is None:
+        raise ContactInputError("give the composite modulus e_star (Pa) and the law")
+    h = np.ascontiguousarray(grid.h, dtype=float)
+    if not (grid.dx > 0 and e_star > 0):
         raise ContactInputError("the pitch and E* must be positive")
     ny, nx = h.shape
     # the inverse of the core's periodic Love operator (uniform pressure on each cell),
     # the same influence as the periodic normal BEM's
     with np.errstate(divide="ignore"):
-        s = e_star / np.asarray(periodic_kernel_spectrum(ny, nx, float(dx), float(dx)))
+        s = e_star / np.asarray(periodic_kernel_spectrum(ny, nx, grid.dx, grid.dx))
     s[0, 0] = 0.0
     s[0, 0] = s.max()
-    return AdhesiveProblem(h, float(dx), float(e_star), law, s)
+    return AdhesiveProblem(h, grid.dx, float(e_star), law, s, grid)
+
+
+def _periodic_grid(gap0: np.ndarray | Grid, dx: float | None) -> Grid:
+    """The periodic, square-pitch 3D grid of an adhesive problem, with its gap: the Grid
+    given, checked, or one laid like a scan's pixels around an array gap."""
+    if isinstance(gap0, Grid):
+        if dx is not None:
+            raise ContactInputError("a Grid carries its pitch: do not give dx with it")
+        if gap0.h is None or gap0.line:
+            raise ContactInputError(
+                "the adhesive solve needs a 3D Grid with its gap h (a line contact is "
+                "contact.adhesion.line.line_problem's)")
+        if not gap0.periodic:
+            raise ContactInputError("the adhesive solve is periodic: give a periodic Grid")
+        if gap0.dx != gap0.dy:
+            raise ContactInputError(
+                f"the adhesive solve needs square cells, the grid's are {gap0.dx:g} x "
+                f"{gap0.dy:g} m")
+        h = np.asarray(gap0.h, dtype=float)
+    else:
+        if dx is None:
+            raise ContactInputError("give the pixel dx (m), or the gap as a contact.grid.Grid")
+        h = np.asarray(gap0, dtype=float)
+    if h.ndim != 2 or min(h.shape) < 4 or not np.isfinite(h).all():
+        raise ContactInputError("the gap must be a finite 2D array of at least 4x4")
+    if isinstance(gap0, Grid):
+        return gap0
+    try:
+        pitch = float(dx)
+    except (TypeError, ValueError):
+        raise ContactInputError(f"the pixel dx must be a length in m, got {dx!r}") from None
+    if not (math.isfinite(pitch) and pitch > 0):
+        raise ContactInputError("the pitch and E* must be positive")
+    return scan_grid(h.shape, pitch, periodic=True, h=np.ascontiguousarray(h))
 
 
 def solve_adhesive(problem: AdhesiveProblem, approach: float,
