@@ -10,14 +10,14 @@ cell of the cyclic grid (Liu, Wang & Liu 2000, Wear 243:101, the DC-FFT). Offset
   product uses) is left zero (:func:`wrapped_offsets` marks it unused);
 - **plane strain**: one row, padded along x only;
 - **extended ahead**: displacements also on m cells beyond the last column (+x), for the
-  hereditary integrals of steady rolling, which look ahead. Two paddings of it are in
-  use, both exact: the compact one, L = the next fast FFT length of 2n + m along x (and
-  of 2n along y), with the kernel evaluated in every cell (the normal operator,
-  :class:`contact.halfspace.convolution.Convolution` with ``ahead``); and the free
-  padding of the grid extended by m cells, L = 2(n + m) (the tangential pair,
-  :class:`contact.halfspace.pair.HalfSpacePair` with ``ahead``). They differ in roundoff
-  only, and the viscoelastic solvers amplify that to about 1e-11 of their answers
-  (measured, issue 26), so each operator keeps the padding its answers were made with.
+  hereditary integrals of steady rolling, which look ahead: L = the next fast FFT length
+  of 2n + m along x (and of 2n along y), the kernel evaluated in every cell that an
+  offset -(n-1) .. n+m-1 maps to. The normal operator
+  (:class:`contact.halfspace.convolution.Convolution`) and the tangential pair
+  (:class:`contact.halfspace.pair.HalfSpacePair`) both use it. (The pair used the free
+  padding of the grid extended by m cells, L = 2(n + m), until issue 26: the same
+  convolution up to rounding, which moved the viscoelastic tractions by at most 1.4e-10
+  of their largest value.)
 
 The transforms are pruned: forward, only the rows that carry data are transformed along
 x (the padding rows stay zero); backward, only the rows kept are transformed along x.

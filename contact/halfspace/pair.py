@@ -28,10 +28,13 @@ from contact.halfspace.padding import forward, inverse, padded_shape, wrapped_of
 
 
 @lru_cache(maxsize=16)
-def _spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants, line: bool):
-    """The blocks' spectra on the free padded grid, and the blocks at its wrapped offsets."""
-    py, px = padded_shape(ny, nx, 0, line)
-    ox, used_x = wrapped_offsets(nx, px, dx)
+def _spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants, line: bool,
+             ahead: int = 0):
+    """The blocks' spectra on the padded grid (free, or extended ``ahead`` cells: the
+    compact layout of :func:`contact.halfspace.padding.padded_shape`), and the blocks at
+    its wrapped offsets."""
+    py, px = padded_shape(ny, nx, ahead, line)
+    ox, used_x = wrapped_offsets(nx, px, dx, ahead)
     oy, used_y = (np.zeros(1), np.ones(1, dtype=bool)) if line else wrapped_offsets(ny, py, dy)
     blocks = influence_blocks(ox[None, :], oy[:, None], dx, dy, c, line)
     spec = {}
@@ -88,17 +91,15 @@ class HalfSpacePair:
         self.shape = (self.ny, self.nx)
         # the shape of a product: the grid and the cells ahead of it
         self.out_shape = (self.ny, self.nx + self.ahead)
-        # ahead: the free layout of the grid extended by ``ahead`` columns (the tractions
-        # are zero there), not the compact one of the normal Convolution; see
-        # contact.halfspace.padding for why both are kept
+        # ahead: the compact layout, as the normal Convolution's (contact.halfspace.padding)
         self.periodic = bool(periodic)
         if self.periodic:
             self._pad = self.shape
             self.spec, self.real = _periodic(self.ny, self.nx, self.dx, self.dy, constants)
         else:
-            self._pad = padded_shape(self.ny, self.nx + self.ahead, 0, self.line)
-            self.spec, self.real = _spectra(self.ny, self.nx + self.ahead, self.dx, self.dy,
-                                            constants, self.line)
+            self._pad = padded_shape(self.ny, self.nx, self.ahead, self.line)
+            self.spec, self.real = _spectra(self.ny, self.nx, self.dx, self.dy, constants,
+                                            self.line, self.ahead)
         self.coupled = constants.K != 0.0
         # threads pay off only on large transforms (their start-up dominates small ones)
         self._inv_spec: tuple[np.ndarray, ...] | None = None
