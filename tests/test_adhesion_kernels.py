@@ -11,6 +11,7 @@ import pytest
 
 from contact.adhesion import kernels
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
+from contact.adhesion.solver import law_code
 
 
 def gradient_step_reference(y, g, p, law, step):
@@ -26,7 +27,8 @@ def momentum_reference(g_new, g, c):
     return np.maximum(g_new + c * (g_new - g), 0.0)
 
 
-@pytest.mark.parametrize("law", [DugdaleLaw(0.05, 2e7), ExponentialLaw(0.05, 3e-9)])
+@pytest.mark.parametrize("law", [DugdaleLaw(0.05, 2e7), DugdaleLaw(0.05, 2e7, 1e-9),
+                                 ExponentialLaw(0.05, 3e-9)])
 def test_gradient_step_is_its_twin(law):
     rng = np.random.default_rng(7)
     n = 500
@@ -34,9 +36,9 @@ def test_gradient_step_is_its_twin(law):
     g = np.maximum(y + rng.normal(0.0, 0.2 * law.range, n), 0.0)
     p = rng.normal(0.0, law.peak, n)
     step = 0.7 * law.range / law.peak
-    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
+    kind, reach, width = law_code(law)
     out = np.empty(n)
-    viol, pmax, dot = kernels.gradient_step(y, g, p, kind, law.peak, law.range, step, out)
+    viol, pmax, dot = kernels.gradient_step(y, g, p, kind, law.peak, reach, width, step, out)
     g_ref, viol_ref, pmax_ref, dot_ref = gradient_step_reference(y, g, p, law, step)
     assert np.allclose(out, g_ref, rtol=1e-14, atol=0.0)
     assert viol == pytest.approx(viol_ref, rel=1e-14) and pmax == pmax_ref
@@ -55,7 +57,7 @@ def test_single_exponential_is_its_twin_to_float32():
     step = 0.7 * law.range / law.peak
     out = np.empty(n)
     viol, pmax, _ = kernels.gradient_step(y, g, p, kernels.EXPONENTIAL_SINGLE, law.peak,
-                                          law.range, step, out)
+                                          law.range, 0.0, step, out)
     g_ref, viol_ref, pmax_ref, _ = gradient_step_reference(y, g, p, law, step)
     # the step moves y by step * t: an error of 1e-7 in t is 1e-7 of step * peak
     assert np.allclose(out, g_ref, rtol=0.0, atol=2e-7 * step * law.peak)

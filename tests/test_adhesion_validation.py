@@ -338,10 +338,8 @@ def test_maugis_pull_off_and_curve_to_two_percent(lam):
 def test_smoothed_dugdale_law_keeps_work_and_peak():
     """The ramp keeps the work (integral of t over the gap) and the peak; the potential is
     the traction's integral (finite differences); a ramp wider than h0 or negative is one
-    input error; the load-controlled solve refuses the smoothed law instead of treating it
-    as the step."""
+    input error."""
     from contact.adhesion.laws import DugdaleLaw
-    from contact.adhesion.solver import adhesive_problem, solve_adhesive_at_pressure
     from contact.errors import ContactInputError
 
     law = DugdaleLaw(2.0, 4.0, smoothing=0.3)  # h0 = 0.5
@@ -356,9 +354,6 @@ def test_smoothed_dugdale_law_keeps_work_and_peak():
     for bad in (-0.1, 0.6, math.nan):
         with pytest.raises(ContactInputError, match="smoothing"):
             DugdaleLaw(2.0, 4.0, smoothing=bad)
-    prob = adhesive_problem(np.zeros((8, 8)), 0.1, 1.0, law)
-    with pytest.raises(ContactInputError, match="prescribed approach"):
-        solve_adhesive_at_pressure(prob, 1.0, np.zeros((8, 8)))
 
 
 #: lambda: (grid, cell, tolerance of the curve's largest error). The JKR side's zone is

@@ -24,7 +24,7 @@ from contact.adhesion.flat import (
     solve_at_pressure,
 )
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
-from contact.adhesion.solver import adhesive_problem, solve_adhesive
+from contact.adhesion.solver import adhesive_problem, solve_adhesive, solve_adhesive_at_pressure
 from contact.errors import ContactInputError
 from contact.setups.flat import flat_contact
 from surfmet.cli import main
@@ -278,3 +278,51 @@ def test_a_stalled_accelerated_solve_falls_back_to_the_classical_one(rough, monk
     assert stalled.solve.converged
     np.testing.assert_array_equal(stalled.gap, classical.gap)
     assert stalled.iterations == classical.iterations + 1000
+
+
+@pytest.mark.parametrize("smoothed", [True, False])
+def test_load_control_meets_johnsons_wavy_surface_with_the_smoothed_step(smoothed):
+    """Johnson's (1995) wavy surface, alpha = 0.3, under prescribed mean pressures from
+    0.2 p* down to -0.08 p* (the pull-off is -0.096 p*), on 512 x 4 cells with a cohesive
+    zone of 2.6 pixels (0.005 L). With the Dugdale step smoothed on the grid's scale
+    (the flat facade's law), p(a) stays within 0.01 p* of Johnson's (measured 0.0065);
+    the plain step's pinned zone ends miss by more than 0.03 p* (measured 0.046), so the
+    test tells the two apart. a is read from the touching cells (half a pixel: 0.006 p*)."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from adhesion_cases import strip_half_width, wavy_problem
+    from johnson_wavy import mean_pressure as johnson
+
+    base = wavy_problem(0.3, 512, 0.005)
+    law = base.law.on_grid(base.dx, 1.0) if smoothed else base.law
+    prob = adhesive_problem(base.gap0, base.dx, 1.0, law)
+    p_star, st = math.pi * 0.01, solve_adhesive(prob, 0.3 * 0.01, tol=1e-7)
+    worst = 0.0
+    for p in (0.2, 0.1, 0.0, -0.05, -0.08):
+        st = solve_adhesive_at_pressure(prob, p * p_star, st.gap, tol=1e-7)
+        assert st.load / (st.gap.size * prob.dx ** 2) == pytest.approx(p * p_star, abs=1e-9)
+        worst = max(worst, abs(p - float(johnson(strip_half_width(st.gap, prob.dx), 0.3))))
+    if smoothed:
+        assert worst < 0.01
+    else:
+        assert worst > 0.03
+
+
+def test_flat_facade_smooths_the_dugdale_step(scan, capsys):
+    """``surfmet flat-contact --interaction dugdale`` presses with the step smoothed on the
+    pixel (JSON step_smoothing {value, unit m}, a text line); the exponential law has none."""
+    args = ["flat-contact", scan, "--e-star", "1GPa", "--pressures", "1MPa",
+            "--work-of-adhesion", "50mJ/m2", "--range", "2nm", "--interaction"]
+    rec_dugdale = None
+    for law, smoothed in (("dugdale", True), ("exponential", False)):
+        assert main([*args, law, "--json"]) == 0
+        rec = json.loads(capsys.readouterr().out)["adhesion"]
+        assert rec["step_smoothing"]["unit"] == "m"
+        assert (rec["step_smoothing"]["value"] > 0.0) == smoothed
+        rec_dugdale = rec if smoothed else rec_dugdale
+    # 5 sigma0 dx / E* (sigma0 = 25 MPa, dx = 1 um, E* = 1 GPa) is 125 nm: capped at h0
+    assert rec_dugdale["step_smoothing"]["value"] == pytest.approx(2e-9, rel=1e-12)
+    assert main([*args, "dugdale"]) == 0
+    assert "Dugdale step smoothed over 2 nm of gap" in capsys.readouterr().out

@@ -62,7 +62,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from contact.adhesion.ball import MIN_ZONE_PIXELS
+from contact.adhesion.ball import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_SMOOTHED
 from contact.adhesion.cycle import MAX_AREA_CHANGE, MAX_SPLITS, advance
 from contact.adhesion.laws import InteractionLaw
 from contact.adhesion.solver import (
@@ -446,9 +446,10 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
         if progress is not None:
             progress(k + 1, p.size)
     zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)
-    warnings = () if zone >= MIN_ZONE_PIXELS * dx else (
+    least = MIN_ZONE_PIXELS_SMOOTHED if getattr(law, "smoothing", 0.0) > 0.0 else MIN_ZONE_PIXELS
+    warnings = () if zone >= least * dx else (
         f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) = "
-        f"{zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {MIN_ZONE_PIXELS:g}, so the "
+        f"{zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {least:g}, so the "
         "contact edges are pinned by the pixels and the adhesive area is not resolved",)
     return AdhesiveFlat(points=tuple(points), law=law, e_star=float(e_star), dx=float(dx),
                         process_zone=zone, warnings=warnings)

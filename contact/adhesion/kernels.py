@@ -4,11 +4,13 @@ One iteration of the projected gradient with momentum is two FFTs and some twent
 whole-array operations; these kernels fuse the element-wise part into two passes over
 memory. Their plain-numpy twins are in ``tests/test_adhesion_kernels.py``.
 
-The law is passed as a code and two numbers: ``DUGDALE`` (tension ``peak`` below the gap
-``reach``, none beyond) or ``EXPONENTIAL`` (tension ``peak`` exp(-g / ``reach``)), as in
-:mod:`contact.adhesion.laws`; ``EXPONENTIAL_SINGLE`` is the exponential law with its
-exponential to float32 accuracy (a table and a polynomial, relative error below 1e-8), for
-the loose solves whose FFTs are float32 too. The exponential is most of a kernel's time,
+The law is passed as a code and three numbers: ``DUGDALE`` (tension ``peak`` below the gap
+``reach``, none beyond), ``DUGDALE_RAMP`` (the same step smoothed: ``peak`` falling
+linearly to none over the gap ``width`` that ends at ``reach``) or ``EXPONENTIAL``
+(tension ``peak`` exp(-g / ``reach``)), as in :mod:`contact.adhesion.laws`;
+``EXPONENTIAL_SINGLE`` is the exponential law with its exponential to float32 accuracy
+(a table and a polynomial, relative error below 1e-8), for the loose solves whose FFTs
+are float32 too. The exponential is most of a kernel's time,
 so touching cells (g = 0) take t = ``peak`` without it.
 """
 
@@ -22,6 +24,7 @@ import numpy as np
 DUGDALE = 0
 EXPONENTIAL = 1
 EXPONENTIAL_SINGLE = 2
+DUGDALE_RAMP = 3
 #: exp(-j / 16), j = 0 ... _EXP_CELLS: the single-precision exponential is a table entry
 #: times exp(-f), f < 1/16, by its Taylor quartic (relative error below 1e-8)
 _EXP_CELLS = 1408
@@ -29,7 +32,7 @@ _EXP_TABLE = np.exp(-np.arange(_EXP_CELLS + 1) / 16.0)
 
 
 @nb.njit(cache=True)
-def gradient_step(y, g, p, kind, peak, reach, step, g_new):  # pragma: no cover - compiled
+def gradient_step(y, g, p, kind, peak, reach, width, step, g_new):  # pragma: no cover
     """One projected-gradient step from ``y``, on flattened arrays.
 
     The gradient is grad = p + t(y) (p the elastic pressure, t the law's tension). Writes
@@ -43,6 +46,9 @@ def gradient_step(y, g, p, kind, peak, reach, step, g_new):  # pragma: no cover 
         yi = y[i]
         if kind == DUGDALE:
             t = peak if yi < reach else 0.0
+        elif kind == DUGDALE_RAMP:
+            r = (reach - yi) / width
+            t = peak if r >= 1.0 else (peak * r if r > 0.0 else 0.0)
         elif yi <= 0.0:  # exp(0) = 1, exactly
             t = peak
         elif kind == EXPONENTIAL:

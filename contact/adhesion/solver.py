@@ -235,17 +235,13 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
     g = np.maximum(h - approach if initial is None else np.asarray(initial, dtype=float), 0.0)
     g = np.ascontiguousarray(g)
     step = 1.0 / problem.spring  # 1 / the largest stiffness: the quadratic's Lipschitz constant
-    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else kernels.EXPONENTIAL
-    reach = law.range
-    smoothed = kind == kernels.DUGDALE and law.smoothing > 0.0
+    kind, reach, width = law_code(law)
     y, g_new, theta = g.copy(), np.empty_like(g), 1.0
     flat_y, flat_g, flat_new = y.ravel(), g.ravel(), g_new.ravel()
     for it in range(1, max_iter + 1):
         p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(y - h + approach), s=h.shape)
-        if smoothed:
-            p += _smoothing_correction(law, y)
         viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
-                                                reach, step, flat_new)
+                                                reach, width, step, flat_new)
         if viol <= tol * max(law.peak, pmax):
             return _state(problem, y, approach, it, tol)
         if dot > 0.0:  # momentum points uphill: restart it
@@ -292,10 +288,7 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
         The approach is measured from the mean plane of the deformed surface, as in
         :func:`solve_adhesive`.
     """
-    h, law = problem.gap0, problem.law
-    if isinstance(law, DugdaleLaw) and law.smoothing > 0.0:
-        raise ContactInputError("a smoothed Dugdale law is solved under a prescribed "
-                                "approach only (solve_adhesive); give the plain law")
+    h = problem.gap0
     if np.shape(initial) != h.shape:
         raise ContactInputError(
             f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
@@ -322,8 +315,7 @@ def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarra
     real = np.float32 if single else np.float64
     stiff = _load_stiffness(problem).astype(real)
     sh = stiff * sfft.rfft2(h.astype(real), workers=1)
-    kind = kernels.DUGDALE if isinstance(law, DugdaleLaw) else \
-        kernels.EXPONENTIAL_SINGLE if single else kernels.EXPONENTIAL
+    kind, reach, width = law_code(law, single)
     y, theta = g.copy(), 1.0
     flat_y, flat_g, flat_new = y.ravel(), g.copy().ravel(), np.empty(g.size)
     # the FFT's input: y itself, or its float32 copy written by the momentum kernel
@@ -338,7 +330,7 @@ def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarra
         p = sfft.irfft2(f, s=h.shape, workers=1, overwrite_x=True)
         p += real(pressure)
         viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
-                                                law.range, step, flat_new)
+                                                reach, width, step, flat_new)
         scale = max(law.peak, pmax)
         if viol <= stop * scale:
             return y, it
@@ -360,10 +352,14 @@ def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarra
     return (None if guard else y), max_iter
 
 
-def _smoothing_correction(law: DugdaleLaw, g: np.ndarray) -> np.ndarray:
-    """A smoothed Dugdale law's traction less the step law's, which the kernel adds: the
-    two differ only on the ramp around h0 (:class:`~contact.adhesion.laws.DugdaleLaw`)."""
-    return law.traction(g) - np.where(g < law.range, law.sigma0, 0.0)
+def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, float]:
+    """The law as the kernels take it (:mod:`contact.adhesion.kernels`): (code, reach,
+    ramp width). A smoothed Dugdale law's ramp ends at its reach h0 + s/2."""
+    if isinstance(law, DugdaleLaw):
+        if law.smoothing > 0.0:
+            return kernels.DUGDALE_RAMP, law.reach, law.smoothing
+        return kernels.DUGDALE, law.range, 0.0
+    return (kernels.EXPONENTIAL_SINGLE if single else kernels.EXPONENTIAL), law.range, 0.0
 
 
 def _load_stiffness(problem: AdhesiveProblem) -> np.ndarray:

@@ -178,12 +178,21 @@ SQUARE_PIXEL = 1e-3
 
 def adhesive_sweep(scan: Topography, bem: FlatContact, law: Any) -> Any:
     """The scan pressed with adhesion at the BEM's pressures, started from its solves
-    (:func:`contact.adhesion.flat.adhesive_flat`: periodic, square pixels, elastic)."""
+    (:func:`contact.adhesion.flat.adhesive_flat`: periodic, square pixels, elastic).
+
+    A Dugdale law's step is smoothed on the pixel's scale, as the sphere's is
+    (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak), which removes
+    most of the pixels' pinning of the cohesive zone's end (Johnson's wavy surface under
+    a prescribed pressure, tests/test_flat_adhesion.py)."""
     from contact.adhesion.flat import adhesive_flat
+    from contact.adhesion.laws import DugdaleLaw
 
     z = np.asarray(scan.heights, dtype=float)
-    return adhesive_flat(z.max() - z, math.sqrt(scan.dx * scan.dy), bem.e_star, law,
-                         bem.pressure, bem.mean_gap, bem.stiffness)
+    dx = math.sqrt(scan.dx * scan.dy)
+    if isinstance(law, DugdaleLaw) and law.smoothing == 0.0:
+        law = law.on_grid(dx, bem.e_star)
+    return adhesive_flat(z.max() - z, dx, bem.e_star, law, bem.pressure, bem.mean_gap,
+                         bem.stiffness)
 
 
 def _check_adhesive(scan: Topography, periodic: bool, hardness: float | None) -> None:
