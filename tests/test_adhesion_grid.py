@@ -71,6 +71,7 @@ def test_adhesive_flat_takes_a_grid():
     (centred_grid(16, DX, periodic=True, h=_sphere_gap(16)), DX, "do not give dx"),
     (_sphere_gap(16), None, "give the pixel dx"),
     (_sphere_gap(16), "a", "length in m"),
+    (_sphere_gap(16), -DX, "positive length"),
 ])
 def test_grids_the_solver_cannot_take_get_one_line(grid, dx, match):
     with pytest.raises(ContactInputError, match=match):

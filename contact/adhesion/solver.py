@@ -200,7 +200,7 @@ def _periodic_grid(gap0: np.ndarray | Grid, dx: float | None) -> Grid:
     except (TypeError, ValueError):
         raise ContactInputError(f"the pixel dx must be a length in m, got {dx!r}") from None
     if not (math.isfinite(pitch) and pitch > 0):
-        raise ContactInputError("the pitch and E* must be positive")
+        raise ContactInputError(f"the pixel dx must be a positive length in m, got {dx!r}")
     return scan_grid(h.shape, pitch, periodic=True, h=np.ascontiguousarray(h))
 
 
