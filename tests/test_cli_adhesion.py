@@ -140,3 +140,14 @@ def test_dugdale_pull_off_meets_maugis_on_the_default_cell(capsys):
     ratio = rec["pull_off_force"]["value"] / (math.pi * 0.05 * 1e-5)
     assert ratio == pytest.approx(md_pull_off(lam), rel=0.02)
     assert not any("cohesive zone" in w for w in rec["warnings"])
+
+
+@pytest.mark.parametrize("grid, capped", [("64", True), ("128", False)])
+def test_dugdale_smoothing_line_says_when_capped_at_the_range(capsys, grid, capped):
+    """5 sigma0 dx / E* is 3.2 nm on 64^2 (25.8 nm pixels), above h0 = 2 nm, so the ramp is
+    capped at the range and the text says so; on 128^2 it is 1.6 nm and is not."""
+    assert main(["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhesion",
+                 "50mJ/m2", "--range", "2nm", "--grid", grid, "--steps", "8"]) == 0
+    line = next(v for v in capsys.readouterr().out.splitlines() if v.startswith("Dugdale"))
+    assert ("capped at the range" in line) == capped
+    assert ("2 nm of gap" in line) == capped

@@ -325,4 +325,5 @@ def test_flat_facade_smooths_the_dugdale_step(scan, capsys):
     # 5 sigma0 dx / E* (sigma0 = 25 MPa, dx = 1 um, E* = 1 GPa) is 125 nm: capped at h0
     assert rec_dugdale["step_smoothing"]["value"] == pytest.approx(2e-9, rel=1e-12)
     assert main([*args, "dugdale"]) == 0
-    assert "Dugdale step smoothed over 2 nm of gap" in capsys.readouterr().out
+    assert ("Dugdale step smoothed over 2 nm of gap (the pixel's scale, capped at the range"
+            in capsys.readouterr().out)

@@ -166,8 +166,10 @@ def _print(run_: Any) -> None:
           f"peak tension {law.peak / 1e6:.4g} MPa")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
     if getattr(law, "smoothing", 0.0) > 0.0:
+        scale = ("the grid's scale, capped at the range" if law.smoothing >= law.range
+                 else "the grid's scale")
         print(f"Dugdale step    smoothed over {format_length(law.smoothing)} of gap "
-              "(the grid's scale: removes the pixels' pinning of the zone's end)")
+              f"({scale}: removes the pixels' pinning of the zone's end)")
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
     print(f"pull-off force  {cyc.pull_off_force * 1e6:.5g} uN = "

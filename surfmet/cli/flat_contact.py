@@ -249,8 +249,10 @@ def _print_adhesion(rec: dict[str, Any]) -> None:
           f"mJ/m^2, range {ad['range']['value'] * 1e9:.4g} nm, peak tension "
           f"{ad['peak_tension']['value'] / 1e6:.4g} MPa (periodic solve)")
     if ad["step_smoothing"]["value"] > 0.0:
+        scale = ("the pixel's scale, capped at the range"
+                 if ad["step_smoothing"]["value"] >= ad["range"]["value"] else "the pixel's scale")
         print(f"  Dugdale step smoothed over {ad['step_smoothing']['value'] * 1e9:.3g} nm of "
-              "gap (the pixel's scale: removes the pixels' pinning of the zone's end)")
+              f"gap ({scale}: removes the pixels' pinning of the zone's end)")
     print(f"  {'p (MPa)':>9} {'A/A0 bare':>10} {'A/A0 adh':>10} {'gap bare':>9} {'gap adh':>9} "
           f"{'attractive (MPa)':>17}")
     for r in rec["results"]:
