@@ -70,8 +70,8 @@ def test_adhesive_flat_takes_a_grid():
     (periodic_line_grid(16, DX, np.zeros(16)), None, "line_problem"),
     (centred_grid(16, DX, periodic=True, h=_sphere_gap(16)), DX, "do not give dx"),
     (_sphere_gap(16), None, "give the pixel dx"),
-    (_sphere_gap(16), "a", "length in m"),
-    (_sphere_gap(16), -DX, "positive length"),
+    (_sphere_gap(16), "a", "pixel dx must be a number in m"),
+    (_sphere_gap(16), -DX, "pixel dx must be positive"),
 ])
 def test_grids_the_solver_cannot_take_get_one_line(grid, dx, match):
     with pytest.raises(ContactInputError, match=match):

@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.fft as sfft
 
+from contact._validate import positive
 from contact.adhesion import kernels
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.errors import ContactInputError, ConvergenceError
@@ -195,12 +196,7 @@ def _periodic_grid(gap0: np.ndarray | Grid, dx: float | None) -> Grid:
         raise ContactInputError("the gap must be a finite 2D array of at least 4x4")
     if isinstance(gap0, Grid):
         return gap0
-    try:
-        pitch = float(dx)
-    except (TypeError, ValueError):
-        raise ContactInputError(f"the pixel dx must be a length in m, got {dx!r}") from None
-    if not (math.isfinite(pitch) and pitch > 0):
-        raise ContactInputError(f"the pixel dx must be a positive length in m, got {dx!r}")
+    pitch = positive(dx, "the pixel dx", "m")
     return scan_grid(h.shape, pitch, periodic=True, h=np.ascontiguousarray(h))
 
 
