@@ -203,3 +203,17 @@ def test_non_convergence_is_one_error():
     h, dx = _sphere(32, 0.6)
     with pytest.raises(ConvergenceError, match="adhesive solve stopped"):
         solve_adhesive(adhesive_problem(h, dx, E_STAR, law), 0.01, max_iter=2)
+
+
+def test_a_retraction_that_never_pulls_has_no_pull_off():
+    """A retraction stopped while the sphere is still pressed (every load compressive, as
+    a rough pair whose asperities hide adhesion gives): the pull-off, the largest tensile
+    load as a positive magnitude, is 0, not minus the least compressive load."""
+    law = dugdale(1.0)
+    h, dx = _sphere(32, 8 * A_SCALE)
+    prob = adhesive_problem(h, dx, E_STAR, law)
+    br, gaps = run_branch(prob, np.linspace(8 * A_SCALE ** 2, 4 * A_SCALE ** 2, 4), tol=1e-6)
+    assert np.all(br.load > 0.0)
+    force, where = refine_pull_off(prob, br, gaps, tol=1e-6)
+    assert force == 0.0
+    assert where == br.approach[int(np.argmin(br.load))]

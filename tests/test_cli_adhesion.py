@@ -151,3 +151,30 @@ def test_dugdale_smoothing_line_says_when_capped_at_the_range(capsys, grid, capp
     line = next(v for v in capsys.readouterr().out.splitlines() if v.startswith("Dugdale"))
     assert ("capped at the range" in line) == capped
     assert ("2 nm of gap" in line) == capped
+
+
+def test_a_retraction_that_never_pulled_is_named(capsys, monkeypatch):
+    # a rough pair can hide adhesion: no tensile load on the way out is a pull-off of 0,
+    # said in words, not printed as a (negative) force
+    import dataclasses
+
+    import numpy as np
+
+    import surfmet.mechanics.adhesion as facade
+
+    real = facade.adhesion
+
+    def pressed(*args, **kwargs):
+        run = real(*args, **kwargs)
+        ball = run.result
+        leg = dataclasses.replace(ball.cycle.retraction_leg,
+                                  load=np.abs(ball.cycle.retraction_leg.load) + 1e-9)
+        cycle = dataclasses.replace(ball.cycle, retraction_leg=leg, pull_off_force=0.0)
+        return dataclasses.replace(run, result=dataclasses.replace(ball, cycle=cycle))
+
+    monkeypatch.setattr(facade, "adhesion", pressed)
+    argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "8", "--quiet"]
+    assert main(argv) == 0
+    line = next(v for v in capsys.readouterr().out.splitlines() if v.startswith("pull-off"))
+    assert "0 uN: the retraction never pulled (its least load, 0.001" in line
+    assert "is not tensile" in line

@@ -170,12 +170,16 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
 
     A golden-section search on the load between the neighbours of the most tensile
     sample, every solve warm-started from the neighbour met first on the way out, so it
-    stays on the retraction's branch. Returns (pull-off force > 0, approach); the solves'
-    records are appended to ``records`` if given.
+    stays on the retraction's branch. Returns (pull-off force >= 0, approach); the solves'
+    records are appended to ``records`` if given. A retraction that never pulls (no
+    tensile load at any step: roughness can hide adhesion) has a pull-off of 0, at the
+    approach of its least load.
     """
     k = int(np.argmin(branch.load))
+    if branch.load[k] >= 0.0:
+        return 0.0, float(branch.approach[k])
     best = (-float(branch.load[k]), float(branch.approach[k]))
-    if k == 0 or k == len(branch.load) - 1 or branch.load[k] >= 0.0:
+    if k == 0 or k == len(branch.load) - 1:
         return best
     hi, lo, start = float(branch.approach[k - 1]), float(branch.approach[k + 1]), gaps[k - 1]
 

@@ -145,7 +145,7 @@ def _print_line(run_: Any) -> None:
     print(f"Maugis lambda   {res.maugis_parameter:.4g}   (Tabor mu {res.tabor_parameter:.4g})")
     print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
           f"period {format_length(res.size)}")
-    print(f"pull-off force  {cyc.pull_off_force:.5g} N/m (JKR {res.jkr_pull_off:.5g} N/m, "
+    print(f"pull-off force  {_pull_off(cyc, 'N/m', 1.0)} (JKR {res.jkr_pull_off:.5g} N/m, "
           f"rigid cylinder {res.rigid_pull_off:.5g} N/m)")
     _print_cycle(cyc, "N/m", 1.0, "J/m")
     if run_.scans is not None:
@@ -172,9 +172,10 @@ def _print(run_: Any) -> None:
               f"({scale}: removes the pixels' pinning of the zone's end)")
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
-    print(f"pull-off force  {cyc.pull_off_force * 1e6:.5g} uN = "
-          f"{cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius):.4g} pi w R "
-          f"(JKR 1.5, DMT 2)")
+    in_w_r = cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius)
+    print(f"pull-off force  {_pull_off(cyc, 'uN', 1e6)}"
+          + (f" = {in_w_r:.4g} pi w R (JKR 1.5, DMT 2)" if in_w_r > 0 else
+             " (JKR 1.5 pi w R, DMT 2 pi w R)"))
     _print_cycle(cyc, "uN", 1e6, "J")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
@@ -193,6 +194,15 @@ def _how(jump: Any) -> str:
         return " (smooth)"
     return (" (no faster than a continuous branch over this step, which is wider than the "
             "interaction range: a snap inside it is not resolved; use more --steps)")
+
+
+def _pull_off(cyc: Any, unit: str, scale: float) -> str:
+    """The pull-off force in ``unit``, or 0 named as a retraction that never pulled."""
+    if cyc.pull_off_force > 0.0:
+        return f"{cyc.pull_off_force * scale:.5g} {unit}"
+    least = float(min(cyc.retraction_leg.load)) * scale
+    return (f"0 {unit}: the retraction never pulled (its least load, {least:.4g} {unit}, "
+            "is not tensile)")
 
 
 def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> None:
