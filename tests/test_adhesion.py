@@ -217,3 +217,26 @@ def test_a_retraction_that_never_pulls_has_no_pull_off():
     force, where = refine_pull_off(prob, br, gaps, tol=1e-6)
     assert force == 0.0
     assert where == br.approach[int(np.argmin(br.load))]
+
+
+def test_a_coarse_grid_warning_without_a_pull_off_does_not_call_it_overestimated():
+    """The coarse-zone warning names what is wrong: an overestimated pull-off where the
+    retraction pulled, the unresolved adhesive tractions where it never did (a pull-off
+    of 0 cannot be overestimated); sphere and line alike."""
+    import dataclasses
+
+    from contact.adhesion import ball, line
+    from contact.adhesion.cycle import approach_retraction
+
+    h, dx = _sphere(16, 4 * A_SCALE)
+    prob = adhesive_problem(h, dx, E_STAR, dugdale(1.0))
+    pulled = approach_retraction(prob, np.linspace(-2 * A_SCALE ** 2 / R, 2 * A_SCALE ** 2 / R,
+                                                   6), tol=1e-6)
+    assert pulled.pull_off_force > 0.0
+    never = dataclasses.replace(pulled, pull_off_force=0.0)
+    for module in (ball, line):
+        wide = module._warnings(0.5 * dx, 100 * dx, dx, dx, 1000 * dx, pulled)[0]
+        none = module._warnings(0.5 * dx, 100 * dx, dx, dx, 1000 * dx, never)[0]
+        assert "the pull-off is overestimated" in wide
+        assert "overestimated" not in none
+        assert "adhesive tractions are not resolved" in none

@@ -197,7 +197,7 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
         out.append(
             f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) "
             f"= {zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {least:g}; "
-            f"the pull-off is overestimated: raise the grid or shrink the domain")
+            f"{coarse_zone_effect(cycle)}: raise the grid or shrink the domain")
     if a0 < MIN_CONTACT_PIXELS * dx:
         out.append(
             f"grid too coarse for the contact: the JKR radius at zero load ({a0:.3g} m) spans "
@@ -210,6 +210,16 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
         out.append("the retraction ended with the surfaces still touching: the pull-off may "
                    "lie beyond the last step")
     return tuple(out)
+
+
+def coarse_zone_effect(cycle: Cycle) -> str:
+    """What an unresolved cohesive zone does to this cycle's answer, in words: the
+    pull-off comes out too large (the pixels pin the contact edge, see the module notes),
+    or, where the retraction never pulled, there is no pull-off to overestimate and the
+    adhesive tractions are what is not resolved."""
+    if cycle.pull_off_force > 0.0:
+        return "the pull-off is overestimated"
+    return "the adhesive tractions are not resolved (no pull-off was found at this grid)"
 
 
 def rough_gap(h: np.ndarray, roughness: np.ndarray | None, shape_words: str

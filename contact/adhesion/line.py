@@ -53,7 +53,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact._validate import positive
-from contact.adhesion.ball import MIN_ZONE_PIXELS, rough_gap
+from contact.adhesion.ball import MIN_ZONE_PIXELS, coarse_zone_effect, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
 from contact.adhesion.solver import AdhesiveProblem
@@ -295,7 +295,7 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
         out.append(
             f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) "
             f"= {zone:.3g} m) spans {zone / dx:.2g} cells, fewer than {MIN_ZONE_PIXELS:g}; "
-            f"the pull-off is overestimated: raise the cells or shrink the period")
+            f"{coarse_zone_effect(cycle)}: raise the cells or shrink the period")
     ell = max(a0, reach)
     if size < 8.0 * ell:
         out.append(f"the period ({size:.3g} m) is under 8 times the contact's scale "
