@@ -61,17 +61,25 @@ def _feasible(problem: Problem, pressure: np.ndarray, work: Workspace) -> None:
 
 
 def start(problem: Problem, work: Workspace, stats: SolverStats,
-          initial: np.ndarray | None, approach: float) -> IterationState:
+          initial: np.ndarray | None, approach: float,
+          displacement: np.ndarray | None = None) -> IterationState:
     """The first iterate: the warm start, a uniform pressure (load control) or the
     penetration spread over the grid (approach control), made feasible.
 
     ``approach`` is E* delta in approach control (ignored in load control).
+    ``displacement`` is K * ``initial`` where the caller has it exactly (a warm start
+    from the last answer of a loop: one float64 convolution saved); used in elastic load
+    control only, where making the start feasible only rescales it.
     """
     pressure = _first_pressure(problem, initial, approach)
+    known = (displacement is not None and initial is not None and problem.load_control
+             and not problem.plastic)
+    given = float(pressure.sum()) if known else 1.0
     _feasible(problem, pressure, work)
     return IterationState(
         pressure=pressure,
-        displacement=exact_displacement(problem, stats, pressure),
+        displacement=(np.ravel(displacement) * (problem.target / given) if known
+                      else exact_displacement(problem, stats, pressure)),
         approach=0.0 if problem.load_control else approach,
         mean_pressure=problem.target / problem.size if problem.load_control else 0.0,
         # projected-gradient step: a cell's pressure closes its own gap

@@ -149,21 +149,16 @@ def solve_normal(
 
     grid = given if given is not None else scan_grid((ny, nx), dx, dy, origin=origin,
                                                      periodic=bool(periodic))
-    operator = convolution(ny, nx, float(dx), float(dy), grid.periodic)
     problem = Problem(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
-        gap=(h * e_star).ravel(), grid=grid, operator=operator,
+        gap=(h * e_star).ravel(), grid=grid,
+        operator=convolution(ny, nx, float(dx), float(dy), grid.periodic),
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
         bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
         tol=tol, max_iter=max_iter,
     )
-    try:
-        work = workspace(problem)
-        state = start(problem, work, stats, p_init,
-                      e_star * approach if load is None else 0.0)
-        ok = iterate(problem, state, work, stats, callback)
-    finally:
-        operator.release()
+    state, ok = _run(problem, stats, p_init, e_star * approach if load is None else 0.0,
+                     None, callback)
     it, res = state.iteration, state.residual
     stats.levels.append((ny, nx, it))
     stats.iterations = it
@@ -182,6 +177,69 @@ def solve_normal(
             residual=res, iterations=it,
         )
     return result
+
+
+def _run(problem: Problem, stats: SolverStats, p_init: np.ndarray | None, approach: float,
+         displacement: np.ndarray | None,
+         callback: Callable[[int, float], Any] | None) -> tuple[IterationState, bool]:
+    """Start and iterate ``problem`` (units where E* = 1); the final state and whether it
+    converged."""
+    try:
+        work = workspace(problem)
+        state = start(problem, work, stats, p_init, approach, displacement)
+        ok = iterate(problem, state, work, stats, callback)
+    finally:
+        problem.operator.release()
+    return state, ok
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class PressureField:
+    """A warm-started elastic pressure (:func:`resolve_pressure`), SI units.
+
+    ``displacement`` is the normal displacement of ``pressure`` (m), exact in float64:
+    handed back with the pressure as the next warm start, it spares that solve one
+    convolution.
+    """
+
+    pressure: np.ndarray
+    displacement: np.ndarray
+    approach: float
+    iterations: int
+    residual: float
+    converged: bool
+
+
+def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, load: float,
+                     initial: np.ndarray, displacement: np.ndarray | None = None,
+                     tol: float = 1e-6, max_iter: int = 2000) -> PressureField:
+    """The elastic pressure under ``load`` on a free grid, started from a nearby answer:
+    :func:`solve_normal`'s iteration without its record, for a loop that solves the
+    normal problem again after every small change of the gap (the normal-tangential
+    coupling of steady rolling, :mod:`contact.tangential.coupling`).
+
+    The same iteration and convergence test as :func:`solve_normal` with the same warm
+    start (the answers agree to rounding); what is left out is the result record (its
+    contact radius, clusters and fields: about a sixth of a warm solve at 256^2) and,
+    when ``displacement`` (the displacement of ``initial``, m) is given, the
+    convolution of the start. Inputs are trusted (an internal path: no checks).
+    """
+    ny, nx = gap0.shape
+    problem = Problem(
+        gap=(np.asarray(gap0, dtype=float) * e_star).ravel(),
+        grid=scan_grid((ny, nx), dx, dy), operator=convolution(ny, nx, float(dx), float(dy),
+                                                               False),
+        load_control=True, target=load / (dx * dy), bounds=PressureBounds.elastic(None),
+        single=True, precondition=True, workers=os.cpu_count() or 1, tol=tol,
+        max_iter=max_iter)
+    p_init = np.clip(initial, 0.0, None)
+    u_init = None if displacement is None else np.asarray(displacement) * e_star
+    state, ok = _run(problem, SolverStats(), p_init, 0.0, u_init, None)
+    return PressureField(
+        pressure=state.pressure.reshape(ny, nx),
+        displacement=state.displacement.reshape(ny, nx) / e_star,
+        approach=state.approach / e_star, iterations=state.iteration,
+        residual=state.residual, converged=ok)
 
 
 def _unpack_grid(grid: Grid, dx: float | None, dy: float | None,

@@ -119,13 +119,15 @@ def steady_rolling(
     # 3D: the pressure is solved again after every Newton step of the tangential problem
     # (one loop); plane strain keeps the outer loop around the force's root search
     fold = coupled and op.coupled and not grid.line and pressure is None
+    u_p = None  # the normal displacement of p, where its solve gives it
     if pressure is not None:
         p, delta = np.asarray(pressure, float), float("nan")
         coupled = False
     elif start is not None and fold:
         # solved again, to its final tolerance, with the tractions of the Newton steps
         extra = op.normal_from_tangential(start.state.q[0], start.state.q[1])
-        p, delta = solve_pressure_to(op, grid.h, load, LOOSEST, extra, start.p)
+        first = solve_pressure_to(op, grid.h, load, LOOSEST, extra, start.p, None)
+        p, delta, u_p = first.pressure, first.approach, first.displacement
     elif start is not None:
         # uncoupled: the pressure of the gap alone, whatever tractions the start carries
         extra = (op.normal_from_tangential(start.state.q[0], start.state.q[1])
@@ -142,7 +144,7 @@ def steady_rolling(
     iterations = 0
     pressure_now = Recoupling(op, grid.h, load, mu, p, delta, tol,
                               COARSE_PRESSURE_TOL if start_only else PRESSURE_TOL,
-                              0 if start is None else LAG) if fold else None
+                              0 if start is None else LAG, u_p) if fold else None
     # inexact outer iteration: while the pressure still moves by more than 1e-3, the
     # tangential problems are solved loosely (their exact answer is for a pressure that is
     # about to change); the last ones, which decide convergence, are solved tight
