@@ -197,3 +197,26 @@ def test_speed_takes_units_like_every_quantity(capsys):
     assert rec["speed"] == {"value": pytest.approx(2 / 3.6, rel=1e-12), "unit": "m/s"}
     assert rec["frictional_power_at_speed"]["value"] == pytest.approx(
         rec["frictional_power"]["value"] * 2 / 3.6, rel=1e-12)
+
+
+def test_rolling_resistance_is_the_dissipation_as_the_rolling_command_gives_it(capsys):
+    """One question, one answer: steel on aluminium at 5 N, mu 0.3, free rolling, 32^2
+    over 2.5 Hertz radii. rolling-contact's rolling_resistance_coefficient times N R is
+    the micro-slip moment of surfmet rolling --model microslip (the same solve, to 1e-9);
+    the pressure's moment is reported beside it under its own name, and differs (it is
+    not the dissipation of an elastic contact)."""
+    args = ["rolling-contact", "--radius", "20mm", "--materials", "steel,aluminium",
+            "--load", "5N", "--mu", "0.3", "--grid", "32", "--json"]
+    assert main(args) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert main(["rolling", "--radius", "20mm", "--materials", "steel,aluminium",
+                 "--loads", "5N:7N:3", "--model", "microslip", "--json"]) == 0
+    sweep = json.loads(capsys.readouterr().out)
+    moment = sweep["moments"]["value"][0]
+    assert moment > 0
+    coefficient = rec["rolling_resistance_coefficient"]["value"]
+    assert coefficient * 5.0 * 0.02 == pytest.approx(moment, rel=1e-9)
+    pressure = rec["pressure_moment_coefficient"]
+    assert pressure["unit"] == ""
+    assert abs(pressure["value"] - coefficient) > 0.1 * coefficient
+    assert "frictional dissipation per metre rolled" in rec["rolling_resistance_definition"]

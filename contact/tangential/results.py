@@ -210,9 +210,19 @@ class TangentialResult:
         strain): positive when the pressure leans to the leading edge and resists rolling."""
         return float((self.p * self.grid.x[None, :]).sum() * self.grid.area)
 
-    def rolling_resistance_coefficient(self, radius: float) -> float:
-        """The pressure's moment about the centre over N R (dimensionless)."""
+    def pressure_moment_coefficient(self, radius: float) -> float:
+        """The pressure's moment about the centre over N R (dimensionless): the
+        asymmetry of this pressure. For elastic bodies it is not a dissipation (a rough
+        contact's pressure leans either way with the asperities under it, a smooth
+        one's by a rounding of the grid): see :meth:`rolling_resistance_coefficient`."""
         return self.pressure_moment() / (self.fn * radius)
+
+    @property
+    def rolling_resistance_coefficient(self) -> float:
+        """The frictional dissipation per metre rolled over the normal load, F_r / N
+        (dimensionless): the micro-slip rolling resistance M_r / (N R) of
+        :mod:`contact.tangential.microslip` (Johnson 1985, sec. 8.2)."""
+        return self.frictional_power / self.fn
 
 
 def tangential_record(residual: float, *, rolling: bool, iterations: int, outer: int,

@@ -124,7 +124,8 @@ def _print_summary(rec: dict) -> None:
     print(f"rolling contact ({rec['geometry']}, "
           f"{'free rolling' if rec['free_rolling'] else 'prescribed creepage'})")
     for key in ("creepage", "fx", "fy", "pmax", "approach", "contact_area", "stick_area",
-                "slip_area", "frictional_power", "rolling_resistance_coefficient"):
+                "slip_area", "frictional_power", "rolling_resistance_coefficient",
+                "pressure_moment_coefficient"):
         print(f"  {key:32s} {fmt(key)}")
     if "frictional_power_at_speed" in rec:
         print(f"  {'frictional_power_at_speed':32s} {fmt('frictional_power_at_speed')}")
@@ -132,3 +133,5 @@ def _print_summary(rec: dict) -> None:
     for note in rec.get("notes", []):
         print(f"  note: {note}")
     log(f"sign convention: {rec['sign_convention']}")
+    if "rolling_resistance_definition" in rec:
+        log(f"definitions: {rec['rolling_resistance_definition']}")

@@ -27,6 +27,15 @@ SIGN_CONVENTION = (
     "forces are those on the ball (positive creepage gives negative fx)"
 )
 
+# one sentence for every record and text: what the two dimensionless numbers are
+RESISTANCE_DEFINITION = (
+    "rolling_resistance_coefficient = frictional dissipation per metre rolled / N "
+    "(= M_r / (N R) of surfmet rolling --model microslip); pressure_moment_coefficient = "
+    "the pressure's moment about the contact centre / (N R), the asymmetry of this "
+    "pressure, not a dissipation for elastic bodies (rough contacts lean either way with "
+    "the asperities under them)"
+)
+
 
 @dataclass(frozen=True)
 class RollingContact:
@@ -207,8 +216,10 @@ def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
         "slip_area": quantity(r.slip_area, area),
         "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
         "edge_dissipation_share": quantity(r.edge_dissipation_share, ""),
-        "rolling_resistance_coefficient": quantity(
-            r.rolling_resistance_coefficient(rc.radius), ""),
+        "rolling_resistance_coefficient": quantity(r.rolling_resistance_coefficient, ""),
+        "pressure_moment_coefficient": quantity(r.pressure_moment_coefficient(rc.radius),
+                                                ""),
+        "rolling_resistance_definition": RESISTANCE_DEFINITION,
         # convergence, stated as ``contact`` states it (a solve that does not converge
         # raises instead of returning): the solve record's
         "iterations": r.solve.iterations,
