@@ -86,8 +86,13 @@ def sample_roughness(z: np.ndarray, zdx: float, zdy: float, grid: Grid, *,
     tol = 1e-9 * max(zdx, zdy, grid.dx, 1.0 if grid.line else grid.dy)
     if (cols.min() < -tol / zdx or rows.min() < -tol / zdy or cols.max() > nx_r - 1 + tol / zdx
             or rows.max() > ny_r - 1 + tol / zdy):
-        raise ContactInputError("the roughness data do not cover the contact grid: use "
-                                "larger scans or a smaller grid")
+        span_x = float(x.max() - x.min())
+        span_y = 0.0 if grid.line else float(y.max() - y.min())
+        raise ContactInputError(
+            f"the roughness data ({(nx_r - 1) * zdx * 1e6:.4g} um x "
+            f"{(ny_r - 1) * zdy * 1e6:.4g} um between their first and last points) do not "
+            f"cover the contact grid (its element centres span {span_x * 1e6:.4g} um x "
+            f"{span_y * 1e6:.4g} um): use larger scans or a smaller domain")
     fx = grid.dx / zdx
     fy = 1.0 if grid.line else grid.dy / zdy
     if average and (fx > COARSER or fy > COARSER):
