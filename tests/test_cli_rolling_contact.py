@@ -220,3 +220,25 @@ def test_rolling_resistance_is_the_dissipation_as_the_rolling_command_gives_it(c
     assert pressure["unit"] == ""
     assert abs(pressure["value"] - coefficient) > 0.1 * coefficient
     assert "frictional dissipation per metre rolled" in rec["rolling_resistance_definition"]
+
+
+def test_elements_coarser_than_the_scans_are_said(capsys):
+    """On scans the text names its grid, and elements much coarser than the scans' pixel
+    are a note (the bundled pair, 5 um pixel, on 32 elements over the automatic domain of
+    about 0.95 mm); 160 elements over it (about 6 um) are not."""
+    from surfmet.data import path as bundled_path
+
+    scans = ["--plate", str(bundled_path("paper_plate.x3p")),
+             "--ball", str(bundled_path("paper_ball.x3p"))]
+    args = ["rolling-contact", "--radius", "10mm", "--materials", "steel,aluminium",
+            "--load", "5N", "--mu", "0.3", *scans]
+    assert main([*args, "--grid", "32"]) == 0
+    out = capsys.readouterr().out
+    grid = next(v for v in out.splitlines() if v.strip().startswith("grid "))
+    assert "32 x 32 elements of" in grid
+    note = next(v for v in out.splitlines() if "are sampled at the centres" in v)
+    assert "(pixel 5 um)" in note and "x coarser" in note
+    assert main([*args, "--grid", "160", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["grid"]["element_size"]["value"] < 1.5 * 5e-6
+    assert not any("sampled at the centres" in n for n in rec.get("notes", []))

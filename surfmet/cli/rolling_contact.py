@@ -130,6 +130,12 @@ def _print_summary(rec: dict) -> None:
     if "frictional_power_at_speed" in rec:
         print(f"  {'frictional_power_at_speed':32s} {fmt('frictional_power_at_speed')}")
     print_solve(rec["solve"], f"  {'solver':32s}")
+    g = rec["grid"]
+    shape = (f"{g['elements']} elements" if rec["geometry"].startswith("cylinder")
+             else f"{g['elements']} x {g['elements']} elements")
+    print(f"  {'grid':32s} {shape} of "
+          f"{format_quantity(g['element_size']['value'], 'm', digits=3)} over "
+          f"{format_quantity(g['domain_side']['value'], 'm', digits=4)}")
     for note in rec.get("notes", []):
         print(f"  note: {note}")
     log(f"sign convention: {rec['sign_convention']}")

@@ -152,9 +152,32 @@ def solve_rolling_contact(
             half *= 1.5
             notes.append(f"the contact reached the domain's edge: domain enlarged to "
                          f"{2e3 * half:.4g} mm")
+    coarse = _coarser_than_scans(res.grid.dx, roughness)
+    if coarse is not None:
+        notes.append(coarse)
     return RollingContact(result=res, radius=radius, load=load, line=line, speed=speed,
                           free_rolling=creepage is None, grid=n, side=2.0 * half,
                           notes=tuple(notes))
+
+
+#: Elements this many times the scans' pixel or more miss asperities between them (said).
+COARSER_THAN_SCANS = 1.5
+
+
+def _coarser_than_scans(element: float, roughness: Any) -> str | None:
+    """The note for elements much coarser than the scans' pixel, or None: the scans are
+    sampled at the elements' centres, so the real contact area and the peak pressure are
+    those of this element size (on rough contacts both change with it), not the scans'."""
+    if roughness is None:
+        return None
+    pixel = max(float(roughness[1]), float(roughness[2]))
+    if element < COARSER_THAN_SCANS * pixel:
+        return None
+    return (f"the scans (pixel {pixel * 1e6:.3g} um) are sampled at the centres of elements "
+            f"of {element * 1e6:.3g} um ({element / pixel:.2g} x coarser): contact area and peak "
+            f"pressure are those of this element size and change with it; a larger --grid "
+            f"resolves more asperities (hertz-check and contact solve on the scans' own "
+            f"pixel)")
 
 
 def _half_width(radius: float, load: float, e_star: float, line: bool,
