@@ -82,3 +82,17 @@ def test_a_coupling_solve_that_does_not_converge_says_so_in_one_line(ball, monke
     monkeypatch.setattr(coupling, "resolve_pressure", solver.resolve_pressure)
     with pytest.raises(ConvergenceError, match="coupled normal solve stopped"):
         coupling.solve_pressure_to(op, grid.h, 5.0, 1e-12, gap - grid.h, p0, None)
+
+
+def test_a_start_that_carries_nothing_starts_uniform(ball):
+    """An all-zero start (and any displacement with it) is no start: the re-solve begins
+    from a uniform pressure, as solve_normal's warm start does, and reaches its answer
+    (1e-8 of the largest pressure, both to 1e-10)."""
+    grid, gap, _ = ball
+    ref = solve_normal(gap, grid.dx, e_star=STEEL_AL.e_star, load=5.0, tol=1e-10,
+                       nested=False)
+    r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
+                         initial=np.zeros_like(gap), displacement=np.ones_like(gap),
+                         tol=1e-10)
+    assert r.converged
+    assert np.abs(r.pressure - ref.pressure).max() <= 1e-8 * ref.pressure.max()

@@ -233,6 +233,9 @@ def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, l
         single=True, precondition=True, workers=os.cpu_count() or 1, tol=tol,
         max_iter=max_iter)
     p_init = np.clip(initial, 0.0, None)
+    if not p_init.any():
+        # nothing to start from (solve_normal's warm start does the same): a uniform start
+        p_init, displacement = None, None
     u_init = None if displacement is None else np.asarray(displacement) * e_star
     state, ok = _run(problem, SolverStats(), p_init, 0.0, u_init, None)
     return PressureField(

@@ -137,8 +137,8 @@ class Recoupling:
         change = _change(r.pressure, self.p)
         if rtol > self.final and change <= self.tol:
             # small enough to end the loop: only on a pressure solved to the end
-            r = solve_pressure_to(self.op, self.h, self.load, self.final, extra,
-                                    r.pressure, r.displacement)
+            r = solve_pressure_to(self.op, self.h, self.load, self.final, extra, r.pressure,
+                                  r.displacement)
             change = _change(r.pressure, self.p)
             self.solves += 1
         p_new, self.delta, self._u = r.pressure, r.approach, r.displacement
