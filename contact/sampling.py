@@ -89,10 +89,10 @@ def sample_roughness(z: np.ndarray, zdx: float, zdy: float, grid: Grid, *,
         span_x = float(x.max() - x.min())
         span_y = 0.0 if grid.line else float(y.max() - y.min())
         raise ContactInputError(
-            f"the roughness data ({(nx_r - 1) * zdx * 1e6:.4g} um x "
-            f"{(ny_r - 1) * zdy * 1e6:.4g} um between their first and last points) do not "
-            f"cover the contact grid (its element centres span {span_x * 1e6:.4g} um x "
-            f"{span_y * 1e6:.4g} um): use larger scans or a smaller domain")
+            f"the roughness data ({(nx_r - 1) * zdx * 1e6:.4g} µm x "
+            f"{(ny_r - 1) * zdy * 1e6:.4g} µm between their first and last points) do not "
+            f"cover the contact grid (its element centres span {span_x * 1e6:.4g} µm x "
+            f"{span_y * 1e6:.4g} µm): use larger scans or a smaller domain")
     fx = grid.dx / zdx
     fy = 1.0 if grid.line else grid.dy / zdy
     if average and (fx > COARSER or fy > COARSER):

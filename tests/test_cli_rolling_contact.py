@@ -237,7 +237,7 @@ def test_elements_coarser_than_the_scans_are_said(capsys):
     grid = next(v for v in out.splitlines() if v.strip().startswith("grid "))
     assert "32 x 32 elements of" in grid
     note = next(v for v in out.splitlines() if "are sampled at the centres" in v)
-    assert "(pixel 5 um)" in note and "x coarser" in note
+    assert "(pixel 5 µm)" in note and "x coarser" in note
     assert main([*args, "--grid", "160", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["grid"]["element_size"]["value"] < 1.5 * 5e-6

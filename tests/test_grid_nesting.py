@@ -112,10 +112,10 @@ def test_sample_roughness_averages_on_a_coarser_grid_fills_holes_and_checks_cove
     z[5, 12] = np.nan  # its nearest measured neighbours are all 1
     g = Grid(x=np.array([2.5e-6]), y=np.array([-4.5e-6]), pitch=(zdx, zdx))
     assert sample_roughness(z, zdx, zdx, g)[0, 0] == 1.0
-    # the refusal says both sizes: 19 um of data against 23 um of element centres
+    # the refusal says both sizes: 19 µm of data against 23 µm of element centres
     with pytest.raises(ContactInputError,
-                       match=r"data \(19 um x 19 um .*do not cover the contact grid \(its "
-                             r"element centres span 23 um x 23 um\)"):
+                       match=r"data \(19 µm x 19 µm .*do not cover the contact grid \(its "
+                             r"element centres span 23 µm x 23 µm\)"):
         sample_roughness(z, zdx, zdx, centred_grid(24, zdx))
     with pytest.raises(ContactInputError, match="NaN everywhere"):
         sample_roughness(np.full((4, 4), np.nan), zdx, zdx, centred_grid(2, zdx))

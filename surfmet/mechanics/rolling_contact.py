@@ -173,8 +173,8 @@ def _coarser_than_scans(element: float, roughness: Any) -> str | None:
     pixel = max(float(roughness[1]), float(roughness[2]))
     if element < COARSER_THAN_SCANS * pixel:
         return None
-    return (f"the scans (pixel {pixel * 1e6:.3g} um) are sampled at the centres of elements "
-            f"of {element * 1e6:.3g} um ({element / pixel:.2g} x coarser): contact area and peak "
+    return (f"the scans (pixel {pixel * 1e6:.3g} µm) are sampled at the centres of elements "
+            f"of {element * 1e6:.3g} µm ({element / pixel:.2g} x coarser): contact area and peak "
             f"pressure are those of this element size and change with it; a larger --grid "
             f"resolves more asperities (hertz-check and contact solve on the scans' own "
             f"pixel)")
