@@ -44,7 +44,7 @@ def test_line_tangential_contact_case2(capsys) -> None:
     assert rc == 0
     out = json.loads(capsys.readouterr().out)
     assert out["fx"]["value"] / (0.3 * 6e5) == pytest.approx(-0.6, abs=0.01)
-    assert out["creepage"]["unit"] == "1"
+    assert out["creepage"]["unit"] == ""  # as the elastic record writes a ratio
 
 
 def test_ball_runs_and_errors(capsys) -> None:
@@ -91,3 +91,57 @@ def test_ball_tangential_kalker_and_full_slip(capsys) -> None:
     assert out["fx"]["value"] == pytest.approx(-0.3 * 5.0, rel=1e-3)
     assert out["stick_area"]["value"] == 0.0
     assert out["creepage"]["value"] == 0.5
+
+
+_FREE = ["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma", "--mu", "0.3",
+         "--viscoelastic", "plate:Eg=3GPa:Er=1GPa:tau=1ms", "--speed", "0.1", "--grid", "32"]
+
+
+def test_free_rolling_of_a_dissimilar_pair_is_not_solved(capsys) -> None:
+    # steel on PMMA: Kalker's K = G ((1 - 2 nu1)/G1 - (1 - 2 nu2)/G2)/4 is far from 0, and in
+    # free rolling the coupling it measures is the only driver of the tractions (the elastic
+    # solve finds a creepage of 9e-4); the uncoupled viscoelastic solve's q = 0 is no answer
+    assert _run([*_FREE, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    for key in ("creepage", "fx", "fy", "stick_area", "slip_area", "frictional_power"):
+        assert key not in out
+    assert out["tangential"]["solved"] is False
+    g1, nu1 = 210e9 / 2.6, 0.3  # steel
+    g2, nu2 = 1e9 / 2.74, 0.37  # the plate, relaxed (pmma: nu 0.37)
+    k = 0.25 * 2 / (1 / g1 + 1 / g2) * ((1 - 2 * nu1) / g1 - (1 - 2 * nu2) / g2)
+    assert out["kalker_K_relaxed"] == pytest.approx(k, rel=0.05)
+    assert any("not solved" in n and "coupling" in n for n in out["notes"])
+    assert _run(_FREE) == 0
+    text = capsys.readouterr().out
+    assert "not solved" in text
+    assert not any(line.split()[:1] == ["creepage"] for line in text.splitlines())
+
+
+def test_same_layout_as_the_elastic_record(capsys) -> None:
+    # one vocabulary: the keys, units, grid record and sign convention of the elastic
+    # command's record, and its text layout (grid line, quantity names)
+    from surfmet.mechanics.rolling_contact import SIGN_CONVENTION
+
+    assert _run([*_FREE, "--creepage", "1e-3", "--json"]) == 0
+    visco = json.loads(capsys.readouterr().out)
+    assert _run(["--radius", "20mm", "--load", "5N", "--materials", "steel,pmma", "--mu",
+                 "0.3", "--creepage", "1e-3", "--grid", "32", "--json"]) == 0
+    elastic = json.loads(capsys.readouterr().out)
+    assert visco["sign_convention"] == elastic["sign_convention"] == SIGN_CONVENTION
+    assert visco["grid"]["elements"] == 32
+    assert set(visco["grid"]) == set(elastic["grid"])
+    shared = ("creepage", "fx", "fy", "pmax", "approach", "contact_area", "stick_area",
+              "slip_area", "frictional_power", "rolling_resistance_coefficient", "load",
+              "radius", "free_rolling", "geometry", "solve")
+    for key in shared:
+        assert key in visco and key in elastic, key
+        if isinstance(elastic[key], dict) and "unit" in elastic[key]:
+            assert visco[key]["unit"] == elastic[key]["unit"], key
+    assert any("coupling" in n and "left out" in n for n in visco["notes"])
+    assert _run([*_FREE, "--creepage", "1e-3"]) == 0
+    captured = capsys.readouterr()
+    lines = captured.out.splitlines()
+    names = [ln.split()[0] for ln in lines[1:] if ln.startswith("  ") and "note" not in ln]
+    assert {"creepage", "fx", "stick_area", "slip_area", "pmax", "grid"} <= set(names)
+    assert any(ln.split()[0] == "grid" and "32 x 32 elements" in ln for ln in lines[1:])
+    assert f"sign convention: {SIGN_CONVENTION}" in captured.err

@@ -1,0 +1,282 @@
+"""One steady viscoelastic rolling solve (``surfmet rolling-contact --viscoelastic``): the
+normal problem, the tangential one where the model can answer it, and its JSON record in
+the elastic command's vocabulary (:func:`surfmet.mechanics.rolling_contact.
+rolling_contact_record`: the same keys, sign convention and grid record).
+
+What the tangential solve leaves out. The viscoelastic traction solvers
+(:func:`contact.viscoelastic.steady_traction`, plane strain;
+:func:`contact.viscoelastic.traction3d.visco_steady_tractions`, 3D) are those of
+quasi-identical bodies: Kalker's difference parameter K = 0, no normal-tangential
+coupling. In free rolling (no creepage and no force prescribed) the tractions of a pair
+with K != 0 come from that coupling alone (the elastic solve of steel on PMMA finds a
+creepage of 9e-4 and a slip band), while the uncoupled problem has the trivial solution
+q = 0. Free rolling of a dissimilar pair is therefore reported as *not solved*, with the
+reason, instead of as zeros; with a prescribed creepage the uncoupled tractions are
+solved and the coupling left out is stated.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from surfmet.errors import SurfmetInputError
+from surfmet.units import quantity
+
+#: |K| at or below this is quasi-identical (the viscoelastic traction solvers' model).
+QUASI_IDENTICAL_K = 1e-6
+
+
+@dataclass(frozen=True, eq=False)
+class ViscoRollingContact:
+    """A solved viscoelastic rolling contact and the set-up it came from.
+
+    Attributes
+    ----------
+    normal : contact.viscoelastic.RollingResult
+        The normal problem.
+    traction : TractionResult (line), TangentialResult (ball) or None
+        The tractions; None without ``mu`` or where :attr:`not_solved` says why.
+    kalker_k : (float, float)
+        The pair's K with glassy and with relaxed moduli (body 1 = ball).
+    not_solved : str or None
+        Why the tangential problem was not solved (None: solved, or no ``mu``).
+    """
+
+    normal: Any
+    traction: Any
+    radius: float
+    load: float
+    line: bool
+    mu: float | None
+    free_rolling: bool
+    grid: int
+    kalker_k: tuple[float, float]
+    not_solved: str | None = None
+    notes: tuple[str, ...] = ()
+
+
+def _shear(body: Any, glassy: bool) -> tuple[float, float]:
+    """(G, nu) of an elastic Material or, glassy or relaxed, a standard linear solid."""
+    if hasattr(body, "E_g"):
+        e = body.E_g if glassy else body.E_r
+        return e / (2.0 * (1.0 + body.nu)), float(body.nu)
+    return float(body.shear_modulus), float(body.nu)
+
+
+def pair_kalker_k(ball: Any, plate: Any) -> tuple[float, float]:
+    """Kalker's K of the pair (ball = body 1) with glassy and with relaxed moduli
+    (:func:`contact.halfspace.constants.pair_constants_from`)."""
+    from contact.halfspace.constants import pair_constants_from
+
+    return tuple(pair_constants_from(*_shear(ball, g), *_shear(plate, g)).K  # type: ignore
+                 for g in (True, False))
+
+
+def coupling_reason(kalker_k: tuple[float, float], free_rolling: bool) -> str | None:
+    """Why the tangential problem is not solved (free rolling of a dissimilar pair), or
+    None."""
+    if not free_rolling or max(abs(k) for k in kalker_k) <= QUASI_IDENTICAL_K:
+        return None
+    kg, kr = kalker_k
+    return (f"tangential problem not solved: in free rolling the tractions of this pair come "
+            f"only from its normal-tangential coupling (Kalker's K = {kg:.3g} glassy, "
+            f"{kr:.3g} relaxed), which the viscoelastic traction solve leaves out "
+            f"(quasi-identical bodies, K = 0, for which free rolling carries no traction); "
+            f"give --creepage for the uncoupled tractions, or leave out --viscoelastic for "
+            f"the coupled elastic solve")
+
+
+def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
+                                 viscoelastic: list[str], speed: float, line: bool = False,
+                                 grid: int | None = None, plate: Any = None, ball: Any = None,
+                                 spikes: bool = True, mu: float | None = None,
+                                 creepage: float | None = None) -> ViscoRollingContact:
+    """One steady viscoelastic rolling solve of a ball or a cylinder: the normal problem,
+    and with ``mu`` the tangential one (quasi-identical bodies, see the module notes).
+
+    Parameters
+    ----------
+    radius : float
+        Ball or cylinder radius (m).
+    load : float
+        N (N), or N/m with ``line``.
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``; the ``viscoelastic`` texts replace either body by an SLS.
+    viscoelastic : list of str
+        ``BODY:Eg=..:Er=..:tau=..`` texts
+        (:func:`surfmet.mechanics.viscoelastic_rolling.parse_viscoelastic`).
+    speed : float
+        V (m/s), > 0.
+    line : bool
+        Plane strain (cylinder) instead of a ball.
+    grid : int, optional
+        Cells (line: default 1024) or cells per side (ball: default 128).
+    plate, ball : Topography or path, optional
+        Scans for a rough ball contact (the roughness frozen in the contact frame).
+    mu, creepage : float, optional
+        Coefficient of friction and creepage (default free rolling) for the tangential
+        tractions: plane strain (:func:`contact.viscoelastic.steady_traction`) or, for a
+        ball, 3D (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`).
+    """
+    from contact.tangential.memory import check_rolling_memory
+    from contact.viscoelastic import pair_creep
+    from surfmet.mechanics.material_spec import parse_materials
+    from surfmet.mechanics.viscoelastic_rolling import parse_viscoelastic
+
+    ball_m, plate_m = parse_materials(materials)
+    bodies: dict[str, Any] = {"ball": ball_m, "plate": plate_m}
+    for text in viscoelastic:
+        name, sls = parse_viscoelastic(text, ball_m, plate_m)
+        bodies[name] = sls
+    creep = pair_creep(bodies["ball"], bodies["plate"])
+    kk = pair_kalker_k(bodies["ball"], bodies["plate"])
+    reason = None if mu is None else coupling_reason(kk, creepage is None)
+    notes = []
+    if mu is not None and reason is None and max(abs(k) for k in kk) > QUASI_IDENTICAL_K:
+        notes.append(f"the tractions are those of quasi-identical bodies: the pair's "
+                     f"normal-tangential coupling (Kalker's K = {kk[0]:.3g} glassy, "
+                     f"{kk[1]:.3g} relaxed) is left out")
+    n = grid or (1024 if line else 128)
+    solve_tr = mu is not None and reason is None
+    if line:
+        if plate is not None or ball is not None:
+            raise SurfmetInputError("--line takes no scans")
+        res, tr = _line(radius, load, creep, speed, n, mu if solve_tr else None, creepage)
+    else:
+        check_rolling_memory(n)
+        res, tr = _ball(radius, load, creep, speed, n, plate, ball, spikes, bodies,
+                        mu if solve_tr else None, creepage)
+    return ViscoRollingContact(res, tr, float(radius), float(load), line, mu,
+                               creepage is None, n, kk, reason, tuple(notes))
+
+
+def _line(radius: float, load: float, creep: Any, speed: float, n: int, mu: float | None,
+          creepage: float | None) -> tuple[Any, Any]:
+    """The plane-strain normal solve and, with ``mu``, Carter's problem with creep."""
+    from contact.tangential.memory import check_rolling_memory
+    from contact.viscoelastic.line import influence_matrix, rolling_cylinder
+
+    check_rolling_memory(n, line=True, dense=True)
+    res = rolling_cylinder(radius, load, creep, speed, n=n)
+    if mu is None:
+        return res, None
+    from contact.viscoelastic import steady_traction
+
+    dx = float(res.x[1] - res.x[0])
+    A = influence_matrix(res.x.size, dx, creep, speed)
+    return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
+
+
+def _ball(radius: float, load: float, creep: Any, speed: float, n: int, plate: Any,
+          ball: Any, spikes: bool, bodies: dict[str, Any], mu: float | None,
+          creepage: float | None) -> tuple[Any, Any]:
+    """The 3D normal solve (smooth or with the scans) and, with ``mu``, the tractions."""
+    from contact.viscoelastic.surface import rolling_sphere
+
+    z = None
+    if plate is not None or ball is not None:
+        from contact.viscoelastic.sweep import roughness_window
+        from contact.viscoelastic.window import sphere_window
+        from surfmet.mechanics.scan_preparation import prepare_scans
+
+        pair = prepare_scans(plate, ball, spikes=spikes).pair
+        half = sphere_window(load, radius, creep.relaxed)
+        z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
+    res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
+    if mu is None:
+        return res, None
+    from contact.grid import Grid
+    from contact.viscoelastic.traction3d import pair_poisson, visco_steady_tractions
+
+    x, y = np.asarray(res.x), np.asarray(res.y)
+    grid3 = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius))
+    nu = pair_poisson(bodies["ball"], bodies["plate"])
+    return res, visco_steady_tractions(grid3, np.asarray(res.pressure), creep, nu, speed, mu,
+                                       creepage=creepage)
+
+
+#: What the viscoelastic record's rolling-resistance coefficient is (beside the elastic
+#: record's :data:`surfmet.mechanics.rolling_contact.RESISTANCE_DEFINITION`).
+VISCO_RESISTANCE_DEFINITION = (
+    "rolling_resistance_coefficient = the pressure's moment about the axis / (N R), the "
+    "viscoelastic hysteresis (for elastic bodies the record calls this asymmetry "
+    "pressure_moment_coefficient and it dissipates nothing); the frictional micro-slip "
+    "dissipation (frictional_power) is not in it"
+)
+
+
+def visco_rolling_contact_record(vc: ViscoRollingContact) -> dict[str, Any]:
+    """The JSON record, keyed as the elastic one
+    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`)."""
+    from surfmet.mechanics.rolling_contact import SIGN_CONVENTION
+
+    r = vc.normal
+    per = "/m" if vc.line else ""
+    area = "m" if vc.line else "m^2"
+    dx = float(r.x[1] - r.x[0])
+    cell = dx if vc.line else dx * float(r.y[1] - r.y[0])
+    tangential = ("no friction given (--mu)" if vc.mu is None else vc.not_solved
+                  or f"solved ({'plane strain' if vc.line else '3D'}, quasi-identical "
+                  "bodies: K = 0)")
+    rec: dict[str, Any] = {
+        "sign_convention": SIGN_CONVENTION,
+        "geometry": "cylinder on flat, plane strain" if vc.line else "sphere on flat",
+        "model": "viscoelastic steady rolling, normal problem" + (
+            f" and tangential tractions ({'plane strain' if vc.line else '3D'}, "
+            "quasi-identical bodies)" if vc.traction is not None else
+            " (frictionless)" if vc.mu is None else " (tangential problem not solved)"),
+        "free_rolling": vc.free_rolling,
+        "radius": quantity(vc.radius, "m"),
+        "load": quantity(vc.load, "N" + per),
+        "speed": quantity(r.speed, "m/s"),
+        "mu": vc.mu,
+        "grid": {"elements": vc.grid, "element_size": quantity(dx, "m"),
+                 "domain_side": quantity(dx * r.x.size, "m")},
+        "tangential": {"solved": vc.traction is not None, "status": tangential},
+        **_traction_fields(vc, per, area),
+        "pmax": quantity(r.pmax, "Pa"),
+        "approach": quantity(r.approach, "m"),
+        "contact_area": quantity(float(np.count_nonzero(np.asarray(r.pressure) > 0)) * cell,
+                                 area),
+        "rolling_resistance_coefficient": quantity(r.rolling_resistance, ""),
+        "rolling_resistance_definition": VISCO_RESISTANCE_DEFINITION,
+        "pressure_offset": quantity(r.pressure_offset, "m"),
+        "leading_edge": quantity(r.leading, "m"),
+        "trailing_edge": quantity(r.trailing, "m"),
+        "solve": r.solve.to_json(),
+        "kalker_K_glassy": vc.kalker_k[0],
+        "kalker_K_relaxed": vc.kalker_k[1],
+    }
+    if vc.traction is not None:
+        rec["traction_solve"] = vc.traction.solve.to_json()
+    notes = [*vc.notes, *([vc.not_solved] if vc.not_solved else [])]
+    if vc.line:
+        rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
+                                "2D displacement and is given for the grid's own datum")
+    if notes:
+        rec["notes"] = notes
+    return rec
+
+
+def _traction_fields(vc: ViscoRollingContact, per: str, area: str) -> dict[str, Any]:
+    """creepage, fx, fy, stick and slip extent, frictional power: only where solved."""
+    tr = vc.traction
+    if tr is None:
+        return {}
+    if vc.line:
+        dx = float(vc.normal.x[1] - vc.normal.x[0])
+        return {"creepage": quantity(tr.creepage, ""), "fx": quantity(tr.force, "N" + per),
+                "stick_area": quantity(float(tr.stick.sum()) * dx, area),
+                "slip_area": quantity(float(tr.slip.sum()) * dx, area)}
+    power = tr.frictional_power
+    out = {"creepage": quantity(tr.creepage.xi, ""), "fx": quantity(tr.fx, "N"),
+           "fy": quantity(tr.fy, "N"), "stick_area": quantity(tr.stick_area, area),
+           "slip_area": quantity(tr.slip_area, area),
+           "frictional_power": quantity(power, "W/(m/s)")}
+    if math.isfinite(power):
+        out["frictional_power_at_speed"] = quantity(power * vc.normal.speed, "W")
+    return out
