@@ -76,11 +76,14 @@ def rolling_figure(sweeps: Any, path: str | Path | None = None, *,
         else:
             ax.plot([], [], "o", color=color, label=f"{lab}: no fit")
         ax_l.semilogx(s.loads[pos], s.local_lambda[pos], "o-", color=color, ms=4, label=lab)
-    for ref, style in ((1.0, ":"), (4.0 / 3.0, "--")):
-        ax_l.axhline(ref, color="0.4", ls=style, lw=0.9)
-        ax_l.annotate(f"λ = {'1' if ref == 1 else '4/3'}", xy=(0.02, ref),
-                      xycoords=("axes fraction", "data"), va="bottom", fontsize=8,
-                      color="0.35")
+    # the reference exponents are legend entries, not text on the axes: a label written
+    # at the line was cut by the axes' edge when the line fell outside the data's range,
+    # and crossed by the data inside it; both lines stay within the axes
+    for ref, style, name in ((1.0, ":", "λ = 1 (M_r ∝ N)"),
+                             (4.0 / 3.0, "--", "λ = 4/3 (smooth Hertz contact)")):
+        ax_l.axhline(ref, color="0.4", ls=style, lw=0.9, label=name)
+    lo, hi = ax_l.get_ylim()
+    ax_l.set_ylim(min(lo, 0.95), max(hi, 4.0 / 3.0 + 0.05))
     unit = "N m/m" if items[0].settings.get("contact") == "cylinder" else "N m"
     load_unit = "N/m" if unit == "N m/m" else "N"
     ax.set_xlabel(f"normal load N ({load_unit})")

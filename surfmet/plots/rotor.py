@@ -10,6 +10,17 @@ import numpy as np
 
 from surfmet.plots._style import finish, new_figure
 
+#: The paper's model of the law of motion (constant acceleration from rest at the first
+#: mark, :data:`contact.rotor.family.MODELS`): the baseline the residual figure and the
+#: demo's table compare the chosen models with.
+PAPER_MODEL = "rest"
+
+
+def rms_frames(test: Any, model: str, fps: float) -> float:
+    """The rms residual of ``model``'s fit of ``test``, in frames: the one number the
+    residual figure's titles and the demo's table print for it."""
+    return float(test.fits[model].rms) * float(fps)
+
 
 def _grid(analysis: Any) -> tuple[list[str], int]:
     groups = [g.name for g in analysis.groups]
@@ -20,16 +31,18 @@ def _grid(analysis: Any) -> tuple[list[str], int]:
 def residual_figure(
     analysis: Any,
     path: str | Path | None = None,
-    baseline: str = "const",
+    baseline: str = PAPER_MODEL,
 ) -> Any:
-    """Residuals (frames) of the constant-acceleration model and of each test's chosen model,
-    against time; one panel per test, one row per group.
+    """Residuals (frames) of the paper's model (``baseline``, default constant acceleration
+    from rest at the first mark) and of each test's chosen model, against time; one panel
+    per test, one row per group.
 
     The grey band is the frame quantisation (one frame wide), the dashed lines the chosen
     model's reading-noise envelope (2 sigma); crosses mark rows judged misread, at their
     prediction error (clipped to the axes, with the value written beside). Each panel's
-    title names the chosen model as the legend does, with both rms values and whether the
-    chosen model explains the data; one legend, below the panels, hides no data.
+    title names the chosen model as the legend does, with both rms values
+    (:func:`rms_frames`, as the demo's table and ``surfmet rotor`` print them) and whether
+    the chosen model explains the data; one legend, below the panels, hides no data.
     """
     groups, ncols = _grid(analysis)
     fig, axes = new_figure(len(groups), ncols, size=(3.6 * ncols, 2.8 * len(groups) + 0.4))
@@ -67,7 +80,7 @@ def residual_figure(
             ax.axhline(0, color="k", lw=0.5)
             ok = t.adequacy is None or t.adequacy.adequate
             ax.set_title(f"{t.name}: chosen model {sel.model}{'' if ok else ' (NOT adequate)'}\n"
-                         f"rms {baseline} {base.rms * fps:.2f}, {sel.model} "
+                         f"rms {baseline} {rms_frames(t, baseline, fps):.2f}, {sel.model} "
                          f"{sel.rms * fps:.2f} frame", fontsize=8)
             ax.tick_params(labelsize=7)
             if gi == len(groups) - 1:
@@ -76,7 +89,9 @@ def residual_figure(
                 ax.set_ylabel("model − measured (frames)", fontsize=8)
     handles, labels = axes[0, 0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize=7)
-    fig.suptitle("Law of motion: residuals of constant acceleration vs the chosen model",
+    paper = " (the paper's: constant acceleration from rest at the first mark)"
+    fig.suptitle(f"Law of motion: residuals of model {baseline}"
+                 f"{paper if baseline == PAPER_MODEL else ''} vs the chosen model",
                  fontsize=10)
     return finish(fig, path)
 
@@ -86,19 +101,28 @@ def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
     the mean times) and each test's chosen model."""
     from contact.rotor.forward import PARAM_NAMES, crossing_times
 
-    fig, ax = new_figure(1, 1, size=(6.4, 4.4))
+    fig, ax = new_figure(1, 1, size=(6.4, 4.8))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
+    misread = False
     for gi, g in enumerate(analysis.groups):
         col = colours[gi % len(colours)]
         tmax = 0.0
-        for name in g.tests:
+        chosen = ", ".join(f"{name} {analysis.test(name).fit.model}" for name in g.tests)
+        # every series is named once in the legend: the first artist of its kind carries
+        # the label, the group's other tests repeat its colour and style unlabelled
+        for k, name in enumerate(g.tests):
             t = analysis.test(name)
             used = np.asarray(t.used)
-            ax.plot(t.times[used], t.angles[used], "o", ms=3, color=col, alpha=0.6)
-            ax.plot(t.times[~used], t.angles[~used], "x", ms=7, color="k")
-            p = {k: t.fit.params[k] for k in PARAM_NAMES}
+            ax.plot(t.times[used], t.angles[used], "o", ms=3, color=col, alpha=0.6,
+                    label=f"{g.name}: marks read" if k == 0 else "_nolegend_")
+            if np.any(~used):
+                ax.plot(t.times[~used], t.angles[~used], "x", ms=7, color="k",
+                        label="_nolegend_" if misread else "misread marks (left out)")
+                misread = True
+            p = {key: t.fit.params[key] for key in PARAM_NAMES}
             phi = np.linspace(0, float(t.angles.max()), 200)
-            ax.plot(crossing_times(phi, **p), phi, "-", lw=0.7, color=col)
+            ax.plot(crossing_times(phi, **p), phi, "-", lw=0.7, color=col,
+                    label=f"{g.name}: chosen models ({chosen})" if k == 0 else "_nolegend_")
             tmax = max(tmax, float(t.times.max()))
         c2, c1, c0 = g.paper_parabola
         if all(math.isfinite(c) for c in (c2, c1, c0)):
@@ -107,7 +131,10 @@ def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
                     label=f"{g.name}: paper parabola {c2:.3f} t² + {c1:.3f} t {c0:+.3f}")
     ax.set_xlabel("time since first mark (s)")
     ax.set_ylabel("rotation angle (rad)")
-    ax.legend(fontsize=7)
+    handles, labels = ax.get_legend_handles_labels()
+    order = sorted(range(len(labels)), key=lambda i: labels[i].startswith("misread"))
+    ax.legend([handles[i] for i in order], [labels[i] for i in order], fontsize=6.5,
+              loc="upper left")
     ax.set_title("Law of motion: data (x = misread), chosen models (—), paper's fits (--)",
                  fontsize=9)
     return finish(fig, path)
