@@ -54,7 +54,7 @@ def height_map(
     import matplotlib as mpl
 
     if ax is None:
-        fig, ax = new_figure(size=(6.4, 5.0))
+        fig, ax = new_figure(size=map_figure_size(topo.size_x, topo.size_y))
     else:
         fig = ax.figure
     scale, unit = lateral_unit(max(topo.size_x, topo.size_y))
@@ -76,6 +76,20 @@ def height_map(
         add_scale_bar(ax, max(topo.size_x, topo.size_y), scale, unit)
     ax.set_title(title if title is not None else _scan_title(topo))
     return finish(fig, path)
+
+
+def map_figure_size(size_x: float, size_y: float) -> tuple[float, float]:
+    """Figure size (inches) for a map of ``size_x`` by ``size_y`` drawn at equal aspect: the
+    figure takes the map's shape (plus room for the labels and the colour bar), so a narrow
+    or a wide scan fills its panel instead of leaving half of it blank."""
+    aspect = size_x / size_y if size_x > 0 and size_y > 0 else 1.0
+    if aspect >= 1.0:
+        w_ax = min(8.0, 4.2 * aspect)
+        h_ax = max(1.2, w_ax / aspect)
+    else:
+        h_ax = 4.2
+        w_ax = max(1.2, h_ax * aspect)
+    return (w_ax + 2.4, h_ax + 1.3)
 
 
 def _scan_title(scan: Topography | Profile) -> str:
@@ -161,17 +175,23 @@ def abbott_firestone(
         ax.annotate(f"{names[0]} = {k_ / UM:.4g} µm\n{names[3]} = {m1:.3g} %, "
                     f"{names[4]} = {m2:.3g} %", xy=(0.5, 0.97), xycoords="axes fraction",
                     ha="center", va="top", fontsize=8)
-        ax.legend(loc="lower left", fontsize=8)
-    _frame_heights(ax, z, h, (upper + pk, lower - vk) if names is not None else ())
+    note = _frame_heights(ax, z, h, (upper + pk, lower - vk) if names is not None else ())
+    if note is not None:
+        # the note is the legend's last entry (no marker), so the legend never covers it
+        ax.plot([], [], " ", label=note)
+    if names is not None or note is not None:
+        ax.legend(loc="lower left", fontsize=7 if note is not None else 8)
     ax.set_title(title if title is not None else "Abbott–Firestone curve")
     return finish(fig, path)
 
 
-def _frame_heights(ax: Any, z: np.ndarray, h: np.ndarray, keep: Sequence[float]) -> None:
+def _frame_heights(ax: Any, z: np.ndarray, h: np.ndarray, keep: Sequence[float]
+                   ) -> str | None:
     """Height axis of an Abbott–Firestone curve: the heights between 0.5 % and 99.5 %
     material ratio with half their span as margin (and the construction), so that a few
     extreme points (spikes, outliers) do not squeeze the curve into a line; when the
-    curve runs beyond, the axis is clipped and the figure says how far it runs."""
+    curve runs beyond, the axis is clipped and the returned note says how far it runs
+    (None when not clipped)."""
     from profiles import height_at_ratio
 
     hi, lo = float(height_at_ratio(z, 0.005)), float(height_at_ratio(z, 0.995))
@@ -180,13 +200,12 @@ def _frame_heights(ax: Any, z: np.ndarray, h: np.ndarray, keep: Sequence[float])
     bottom = min([lo - margin, *keep])
     full_top, full_bottom = float(np.max(h)), float(np.min(h))
     if full_top <= top and full_bottom >= bottom:
-        return
+        return None
     top, bottom = min(top, full_top), max(bottom, full_bottom)
     pad = 0.03 * (top - bottom)
     ax.set_ylim((bottom - pad) / UM, (top + pad) / UM)
-    ax.annotate(f"axis clipped: the curve runs from {full_bottom / UM:.4g} to "
-                f"{full_top / UM:.4g} µm (extreme points: spikes?)", xy=(0.98, 0.03),
-                xycoords="axes fraction", ha="right", va="bottom", fontsize=7, color="0.3")
+    return (f"axis clipped: the curve runs from {full_bottom / UM:.4g}\nto "
+            f"{full_top / UM:.4g} µm (extreme points: spikes?)")
 
 
 def psd_figure(
