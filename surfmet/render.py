@@ -170,8 +170,9 @@ def render_3d(
                              "position_x": 0.84, "position_y": 0.15, "height": 0.7,
                              "width": 0.05, "title_font_size": max(10, int(window_size[1]) // 40),
                              "label_font_size": max(9, int(window_size[1]) // 48),
-                             "unconstrained_font_size": True, "fmt": "%.3g"},
+                             "unconstrained_font_size": True, "fmt": "%g"},
         )
+        _round_bar_labels(plotter.scalar_bar, lo / UM, hi / UM)
         if title is None:
             from surfmet.plots.areal import _scan_title
 
@@ -201,6 +202,20 @@ def render_3d(
     if path is not None:
         _write_png(img, Path(path))
     return img
+
+
+def _round_bar_labels(bar: object, lo: float, hi: float) -> None:
+    """Label the colour bar at round heights (:func:`surfmet.plots._style.round_ticks`)
+    instead of at equal fractions of its 1-99 % range."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+
+    from surfmet.plots._style import round_ticks
+
+    labels = vtkDoubleArray()
+    for t in round_ticks(lo, hi):
+        labels.InsertNextValue(t)
+    bar.SetCustomLabels(labels)
+    bar.SetUseCustomLabels(True)
 
 
 def _write_png(img: np.ndarray, path: Path) -> None:

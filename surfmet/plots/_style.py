@@ -66,6 +66,23 @@ def nice_length(target: float) -> float:
     return 10.0 ** (e - 1) * 5.0  # pragma: no cover - unreachable
 
 
+def round_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
+    """Round tick values (1, 2, 2.5 or 5 × 10ⁿ apart, at most about ``n + 1`` of them)
+    within [lo, hi], for colour bars whose range is not round itself (the 3D view's
+    1-99 % height range gave ticks at 1.07e+03, 146, −779 µm)."""
+    from matplotlib.ticker import MaxNLocator
+
+    if not (math.isfinite(lo) and math.isfinite(hi) and hi > lo):
+        return [lo] if math.isfinite(lo) else []
+    ticks = MaxNLocator(nbins=n, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+    step = float(ticks[1] - ticks[0]) if len(ticks) > 1 else 0.0
+    # snap to whole multiples of the step (tick_values carries float noise), keep inside
+    digits = 2 - math.floor(math.log10(step)) if step > 0 else 12
+    inside = [round(round(t / step) * step, digits) if step else float(t) for t in ticks]
+    return [0.0 if abs(t) < 1e-9 * step else t for t in inside
+            if lo - 1e-9 * (hi - lo) <= t <= hi + 1e-9 * (hi - lo)]
+
+
 def add_scale_bar(ax: Any, extent_m: float, scale: float, unit: str, color: str = "white"
                   ) -> Any:
     """A lateral scale bar of a round length (about a fifth of ``extent_m``) in the lower
