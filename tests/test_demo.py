@@ -191,7 +191,7 @@ def test_contact_and_rolling_are_sound(demo):
     # the rotor (about 0.95 kg) rests on two balls
     assert 2 * c["load"]["value"] == pytest.approx(0.954 * 9.80665, rel=0.02)
     ro = s["rolling"]
-    assert len(ro["loads"]["value"]) == 3
+    assert len(ro["loads"]["value"]) == 5  # the full run's sweep, --quick included
     assert all(m > 0 for m in ro["moments"]["value"])
     # the exponent and its interval: least squares on ln M, ln N with a Student-t interval
     # at the stated confidence, against scipy's regression (was lo <= λ <= hi)
@@ -207,14 +207,17 @@ def test_contact_and_rolling_are_sound(demo):
 
 
 def test_the_verdict_comes_first_and_equals_the_rotor_commands(demo):
-    """The paper's question is answered first, with the numbers of `surfmet rotor`."""
+    """The paper's question is answered first, after the story's own header (issue 34
+    item 16: the verdict came before it), with the numbers of `surfmet rotor`."""
+    from surfmet.demo.story import TITLE
     from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
 
     got = demo["summary"]["verdict"]
     want = json.loads(json.dumps(verdict_record(paper_verdict())))
     assert got["code"] == want["code"] and got["group_offset"] == want["group_offset"]
     lines = [ln for ln in demo["stdout"].splitlines() if ln.strip()]
-    assert lines[0].startswith("The paper's question")
+    assert lines[0] == TITLE
+    assert lines[1].startswith("The paper's question")
     assert got["sentence"][:60] in " ".join(demo["stdout"].split())
 
 
@@ -223,7 +226,9 @@ def test_every_figure_is_a_non_blank_png(demo):
 
     figures = demo["summary"]["figures"]
     assert set(figures.values()) <= set(FIGURES.values())
-    assert len(figures) >= 8  # --quick leaves out the PSD and the Abbott-Firestone curve
+    # --quick leaves out the PSD, the Abbott-Firestone curve and the two law-of-motion
+    # figures
+    assert len(figures) >= 7
     for name in figures.values():
         path = demo["out"] / name
         assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
@@ -278,3 +283,22 @@ def test_rolling_section_states_its_assumptions_and_notes(demo):
     for note in st["notes"]:
         if note not in prepared:
             assert " ".join(note.split()) in flat
+
+
+def test_quick_says_what_it_leaves_out_and_prints_only_the_full_runs_numbers(demo):
+    """Issue 34 item 16: --quick (43 s) was not quicker than the full run (47 s): the
+    per-test law-of-motion models are most of the run and --quick left them in. It leaves
+    them out now and says so; what it prints is computed as in the full run (the rolling
+    sweep has the full run's 5 loads; the parabolas are analyse_table's)."""
+    from contact.rotor.paper import PARABOLAS
+
+    s = demo["summary"]
+    assert "tests" not in s["rotor"] and "comparisons" not in s["rotor"]
+    assert f"Left out by --quick: {s['rotor']['left_out'][:40]}" in " ".join(
+        demo["stdout"].split())
+    assert {"rotor_law_of_motion", "rotor_residuals"}.isdisjoint(s["figures"])
+    assert len(s["rolling"]["loads"]["value"]) == 5
+    # the paper's two parabolas, to the three decimals it prints, from the groups
+    got = sorted(tuple(round(g["paper_parabola"][c]["value"], 3) for c in ("c2", "c1", "c0"))
+                 for g in s["rotor"]["groups"])
+    assert got == sorted(tuple(round(float(c), 3) for c in ref) for ref in PARABOLAS.values())

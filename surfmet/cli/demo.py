@@ -36,7 +36,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--out", default="surfmet_demo", metavar="DIR",
                    help="output folder (default ./surfmet_demo); created if absent")
     p.add_argument("--quick", action="store_true",
-                   help="shorter rolling sweep (3 loads) and fewer figures")
+                   help="leave out the per-test law-of-motion models of Table 3 (most of "
+                   "the run's time) and four of the figures; every number printed is the "
+                   "full run's")
     add_json_flag(p)
     p.set_defaults(func=run)
     return p

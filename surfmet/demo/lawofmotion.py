@@ -17,14 +17,61 @@ def _parabola(coef: Any) -> dict[str, Any]:
     return {"c2": quantity(c2, "rad/s²"), "c1": quantity(c1, "rad/s"), "c0": quantity(c0, "rad")}
 
 
-def rotor_step() -> tuple[dict[str, Any], Any]:
-    """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas."""
+#: What ``--quick`` leaves out of the rotor step, and why (the story says it).
+QUICK_LEAVES_OUT = ("the per-test law-of-motion models (misread rows, the BIC choice, their "
+                    "rms and the group comparisons) and their two figures: the model "
+                    "selection over every test is most of the demo's time; run without "
+                    "--quick, or 'surfmet rotor paper2022', for them")
+
+
+def _parabola_groups(cols: dict[str, Any], fps: float, step: float) -> list[dict[str, Any]]:
+    """The paper's parabola of each group (:func:`contact.rotor.parabola.paper_parabola`,
+    the one :func:`contact.rotor.groups.analyse_table` fits), without the model selection."""
+    from contact.rotor.analysis import group_of
+    from contact.rotor.parabola import paper_parabola
+
+    groups = []
+    for gname in dict.fromkeys(group_of(n) for n in cols):
+        names = [n for n in cols if group_of(n) == gname]
+        coef, se, prms = paper_parabola([np.asarray(cols[n], float) for n in names], fps, step)
+        groups.append({"name": gname, "tests": names, "paper_parabola": _parabola(coef),
+                       "paper_parabola_stderr": _parabola(se),
+                       "paper_parabola_rms": quantity(prms, "rad")})
+    return groups
+
+
+def _label_match(groups: list[dict[str, Any]]) -> dict[str, str]:
+    """Which group's parabola is each of the paper's (to the three decimals it prints)?"""
+    match = {}
+    for label, ref in PARABOLAS.items():
+        for g in groups:
+            coef = [g["paper_parabola"][c]["value"] for c in ("c2", "c1", "c0")]
+            if np.allclose(np.round(coef, 3), np.round(ref, 3), atol=1e-9):
+                match[label] = g["name"]
+    return match
+
+
+def rotor_step(quick: bool = False) -> tuple[dict[str, Any], Any]:
+    """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas;
+    ``quick``: the parabolas only (:data:`QUICK_LEAVES_OUT`), the analysis None."""
     from contact.rotor.frames import table3_tsv
     from contact.rotor.groups import analyse_table
     from surfmet.frames import read_frames_table
+    from surfmet.plots.rotor import PAPER_MODEL, rms_frames
 
     path = data_file(TABLE3_FILENAME)
     ks, cols = read_frames_table(path)
+    head = {
+        "file": path.name,
+        "equals_the_split_of_the_printed_rows": path.read_text(encoding="utf-8") == table3_tsv(),
+        "fps": quantity(FPS, "1/s"), "step": quantity(MARK_STEP, "rad"),
+    }
+    if quick:
+        groups = _parabola_groups(cols, FPS, MARK_STEP)
+        return {**head, "groups": groups,
+                "paper_reported": {k: _parabola(v) for k, v in PARABOLAS.items()},
+                "paper_label_match": _label_match(groups),
+                "left_out": QUICK_LEAVES_OUT}, None
     an = analyse_table(cols, ks, fps=FPS, step=MARK_STEP, cv="approx")
     fps = an.fps
     tests = []
@@ -33,7 +80,8 @@ def rotor_step() -> tuple[dict[str, Any], Any]:
             "name": t.name, "group": t.group, "selected_model": t.selected,
             "effect": t.effect, "misread_rows": [int(k) for k in t.outliers],
             "eps0": quantity(t.eps0, "rad/s²"), "eps0_stderr": quantity(t.eps0_stderr, "rad/s²"),
-            "rms_paper_model": quantity(t.fits["rest"].rms * fps, "frame"),
+            # the residual figure's titles print the same function's value
+            "rms_paper_model": quantity(rms_frames(t, PAPER_MODEL, fps), "frame"),
             "rms_selected": quantity(t.fit.rms * fps, "frame"),
         })
     groups = []
@@ -46,28 +94,20 @@ def rotor_step() -> tuple[dict[str, Any], Any]:
             "eps0": {m: {"mean": quantity(v[0], "rad/s²"), "uncertainty": quantity(v[1], "rad/s²")}
                      for m, v in g.eps.items() if m in ("paper", "rest", "const", an.study_model)},
         })
-    # which group's parabola is each of the paper's (to the three decimals it prints)?
-    match = {}
-    for label, ref in PARABOLAS.items():
-        for g in an.groups:
-            if np.allclose(np.round(g.paper_parabola, 3), np.round(ref, 3), atol=1e-9):
-                match[label] = g.name
     comps = [{"groups": [c.a, c.b], "model": c.model, "quantity": c.quantity,
               "difference": quantity(c.difference, "rad/s²"),
               "uncertainty": quantity(c.uncertainty, "rad/s²"),
               "z": quantity(c.z, ""), "p_value": quantity(c.p_value, "")}
              for c in an.comparisons if c.quantity == "eps0"]
     rec = {
-        "file": path.name,
-        "equals_the_split_of_the_printed_rows": path.read_text(encoding="utf-8") == table3_tsv(),
-        "fps": quantity(fps, "1/s"), "step": quantity(an.step, "rad"),
+        **head,
         "quantisation_sigma": quantity(an.noise_floor, "s"),
         "study_model": an.study_model,
+        "paper_model": PAPER_MODEL,
         "tests": tests,
         "groups": groups,
         "paper_reported": {k: _parabola(v) for k, v in PARABOLAS.items()},
-        "paper_label_match": match,
+        "paper_label_match": _label_match(groups),
         "comparisons": comps,
     }
     return rec, an
-

@@ -39,9 +39,17 @@ class _Text:
                                         subsequent_indent=indent + ("  " if indent else "")))
 
 
+#: The story's own header: its first line, before the verdict that answers the paper.
+TITLE = ("surfmet demo: rolling friction of a steel ball on an aluminium plate "
+         "(Alaci et al. 2022)")
+
+
+def _title(t: _Text, summary: dict[str, Any]) -> None:
+    t.add(TITLE)
+
+
 def _scans(t: _Text, summary: dict[str, Any]) -> None:
-    t.add("surfmet demo: rolling friction of a steel ball on an aluminium plate "
-          "(Alaci et al. 2022)")
+    t.head("The scans")
     sc = summary["scans"]
     for name, what in (("plate", "aluminium plate"), ("ball", "steel ball")):
         s = sc[name]
@@ -180,8 +188,12 @@ def _rotor(t: _Text, summary: dict[str, Any]) -> None:
     rt = summary["rotor"]
     t.head("6. The rotor's law of motion (Table 3, 120 frames/s, marks every 90°)")
     _rotor_parabolas(t, rt)
+    if "tests" not in rt:  # --quick
+        t.para(f"Left out by --quick: {rt.get('left_out', 'the per-test models')}.", "  ")
+        return
     t.add(f"  model chosen by the summed BIC: {rt['study_model']}")
-    t.add(f"  {'test':6}{'chosen model':24}{'misread k':>10}{'rms rest':>10}"
+    paper = "rms " + rt.get("paper_model", "rest")  # the residual figure's name for it
+    t.add(f"  {'test':6}{'chosen model':24}{'misread k':>10}{paper:>10}"
           f"{'rms chosen':>12}  (frames)")
     for test in rt["tests"]:
         mis = ",".join(str(k) for k in test["misread_rows"]) or "-"
@@ -235,7 +247,7 @@ def _files(t: _Text, summary: dict[str, Any]) -> None:
 def story(summary: dict[str, Any]) -> str:
     """The demo's findings as text for a terminal (from the summary alone)."""
     t = _Text()
-    for section in (_verdict, _scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor,
+    for section in (_title, _verdict, _scans, _roughness, _ball, _hertz, _contact, _rolling, _rotor,
                     _files):
         section(t, summary)
     return "\n".join(t.lines)
