@@ -26,5 +26,7 @@ def _cpu_seconds(args: list[str]) -> float:
 def test_quick_takes_well_under_the_full_runs_time(tmp_path):
     full = _cpu_seconds(["--out", str(tmp_path / "full")])
     quick = _cpu_seconds(["--out", str(tmp_path / "quick"), "--quick"])
-    # measured on the 2-core machine: full 23.8 s, quick 12.1 s of CPU
-    assert quick < 0.7 * full, (quick, full)
+    # measured on the shared 2-core machine: full 17.3 s, quick 10.6 s of CPU (53 s and
+    # 33 s wall); under a heavier load 23.8 s and 12.1 s. What --quick keeps is dominated
+    # by the roughness of every row (664 profiles), whose medians it prints unchanged
+    assert quick < 0.75 * full, (quick, full)

@@ -3,7 +3,7 @@ steady viscoelastic rolling solve behind the rolling-contact command (normal pro
 --mu also the tangential tractions of quasi-identical bodies, plane strain or 3D).
 
 The record and the text are those of the elastic command (the same names, grid line and
-sign convention, :func:`surfmet.cli.rolling_contact.print_summary`), plus the
+sign convention, :func:`surfmet.cli.rolling_contact_text.print_summary`), plus the
 viscoelastic ones: the pressure's offset ahead of the axis and the leading and trailing
 contact edges. Free rolling of a dissimilar pair is reported as not solved, with the
 reason (:mod:`surfmet.mechanics.viscoelastic_rolling_contact`).
@@ -55,7 +55,7 @@ def speed_value(value: Any) -> float:
 
 def run_viscoelastic(args: argparse.Namespace) -> int:
     """Solve and report (text or --json), in the elastic command's layout
-    (:func:`surfmet.cli.rolling_contact.print_summary`)."""
+    (:func:`surfmet.cli.rolling_contact_text.print_summary`)."""
     from surfmet.cli._common import emit_json
     from surfmet.mechanics.viscoelastic_rolling_contact import (
         visco_rolling_contact_record,
@@ -75,7 +75,7 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
     if args.json:
         emit_json(rec)
         return 0
-    from surfmet.cli.rolling_contact import print_summary
+    from surfmet.cli.rolling_contact_text import print_summary
 
     print_summary(rec)
     return 0
