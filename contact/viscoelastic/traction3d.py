@@ -134,10 +134,49 @@ class ViscoHalfSpacePair(HalfSpacePair):
         return u[..., : self.nx]
 
 
+def pressure_tangential(op: ViscoHalfSpacePair, p: np.ndarray, body1: object,
+                        body2: object) -> np.ndarray:
+    """(u_x, u_y), shape (2, ny, nx), of the pressure in steady rolling of dissimilar
+    bodies (m): Kalker's coupling term (u_x from p = -K x/(pi G rho^2),
+    :mod:`contact.halfspace.cerruti`) with its own time dependence.
+
+    With constant Poisson ratios K/G = (b1 C1(t) - b2 C2(t))/2, b_i = (1 - 2 nu_i)/(1 - nu_i)
+    and C_i(t) the surface creep compliance of body i (1/G_i = 2 C_i/(1 - nu_i)), so each
+    body's part is its glassy value times the unit-K/G displacement w of p plus its delayed
+    amplitudes times the creep filters F_m(w) of its own times (as in
+    :class:`ViscoHalfSpacePair`). A rigid body (None) contributes nothing. The relaxed
+    limit (V theta -> 0) is the elastic coupling of the relaxed moduli, the glassy one
+    (V theta -> inf) that of the glassy moduli.
+    """
+    from contact.halfspace.constants import PairConstants
+
+    unit = HalfSpacePair(op.ny, op.nx, op.dx, op.dy, PairConstants(G=1.0, nu=0.0, K=1.0),
+                         ahead=op.m)
+    w = unit.tangential_from_normal(np.asarray(p, dtype=float))
+    u = np.zeros_like(w)
+    yc = (np.arange(op.ny) - 0.5 * (op.ny - 1)) * op.dy
+    xe = (op.nx + op.m - 1 - 0.5 * (op.nx - 1)) * op.dx
+    for sign, body in ((1.0, body1), (-1.0, body2)):
+        if body is None:
+            continue
+        nu = float(body.nu)  # type: ignore[attr-defined]
+        coef = 0.5 * sign * (1.0 - 2.0 * nu) / (1.0 - nu)
+        cs = pair_creep(body, None)
+        u += coef * cs.glassy * w
+        for dc, th in zip(cs.amplitudes, cs.times):
+            ell = op.speed * th
+            tail = monopole_tail(xe, 0.0, yc, ell)
+            for k in range(2):
+                wk = np.ascontiguousarray(w[k])
+                u[k] += coef * dc * creep_filter_rows(wk, wk[:, -1] * tail, op.dx, ell)
+    return u[..., : op.nx]
+
+
 def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries, nu: float,
                            speed: float, mu: float, *, creepage: float | None = None,
                            fx: float | None = None, tol: float = 1e-6,
-                           ahead: float = 0.5) -> TangentialResult:
+                           ahead: float = 0.5, coupling: tuple | None = None
+                           ) -> TangentialResult:
     """Steady rolling tractions on a viscoelastic pair for a given pressure (3D).
 
     Parameters
@@ -160,6 +199,11 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
         Prescribed F_x on body 1 (N), |F_x| < mu N (default 0: free rolling).
     tol : float
         Tolerance of the slip directions and linear solves.
+    coupling : (body1, body2), optional
+        The two bodies (None: rigid) of a dissimilar pair: the tangential displacement of
+        the pressure (:func:`pressure_tangential`) joins the slip, one-way coupling (the
+        pressure is given; the tractions' normal displacement does not change it).
+        Without it the bodies are quasi-identical (K = 0).
     """
     mu = check_friction(mu)
     if grid.line:
@@ -176,7 +220,8 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
     op = ViscoHalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, creep, nu, speed,
                             ahead)
     g = mu * p
-    u0 = np.zeros((2, *p.shape))
+    u0 = (np.zeros((2, *p.shape)) if coupling is None
+          else pressure_tangential(op, p, *coupling))
     xi = 0.0 if creepage is None else float(creepage)
     force = None
     if creepage is None:

@@ -1,12 +1,14 @@
 """``surfmet rolling-contact ... --viscoelastic BODY:Eg=..:Er=..:tau=.. --speed V``: the
 steady viscoelastic rolling solve behind the rolling-contact command (normal problem; with
---mu also the tangential tractions of quasi-identical bodies, plane strain or 3D).
+--mu also the tangential tractions: 3D with a dissimilar pair's coupling taken one way,
+plane strain for quasi-identical bodies).
 
 The record and the text are those of the elastic command (the same names, grid line and
 sign convention, :func:`surfmet.cli.rolling_contact_text.print_summary`), plus the
 viscoelastic ones: the pressure's offset ahead of the axis and the leading and trailing
-contact edges. Free rolling of a dissimilar pair is reported as not solved, with the
-reason (:mod:`surfmet.mechanics.viscoelastic_rolling_contact`).
+contact edges. Free rolling of a dissimilar roller (plane strain, no coupled solve) is
+reported as not solved, with the reason
+(:mod:`surfmet.mechanics.viscoelastic_rolling_contact`).
 """
 
 from __future__ import annotations
@@ -26,9 +28,8 @@ def add_visco_options(p: argparse.ArgumentParser) -> None:
                    "convention: the stress-relaxation time is tau_c Er/Eg); needs --speed; "
                    "repeat for both bodies. Reports the rolling-resistance coefficient, "
                    "pmax, approach and the contact edges; with --mu also the tractions "
-                   "(quasi-identical bodies: creepage, fx, stick and slip; free rolling of "
-                   "a dissimilar pair, driven only by the coupling left out, is not "
-                   "solved), "
+                   "(creepage, fx, stick and slip; a dissimilar ball's coupling one way; "
+                   "free rolling of a dissimilar roller, with --line, is not solved), "
                    "e.g. --viscoelastic plate:Eg=3GPa:Er=1GPa:tau=1ms")
 
 
