@@ -61,7 +61,19 @@ def _check_step(value: float, name: str) -> float:
 #: Who stated a unit: the file (or the code that built the scan), nobody (assumed), the user.
 STATED, ASSUMED, USER = "file", "assumed", "user"
 UNIT_SOURCES = (STATED, ASSUMED, USER)
-_SOURCE_WORDS = {STATED: "stated by the file", ASSUMED: "assumed", USER: "stated by the user"}
+SOURCE_WORDS = {STATED: "stated by the file", ASSUMED: "assumed", USER: "stated by the user"}
+
+
+def unit_text(unit: str) -> str:
+    """A length unit as the text writes it (``µm``, not ``um``); others as they are."""
+    from surfmet.units import length_factor
+
+    try:
+        factor = length_factor(unit)
+    except SurfmetInputError:
+        return unit
+    names = {1.0: "m", 1e-3: "mm", 1e-6: "µm", 1e-9: "nm", 1e-10: "Å", 1e-12: "pm"}
+    return next((n for f, n in names.items() if abs(factor - f) <= 1e-12 * f), unit)
 
 
 def unit_sources(height: str = STATED, lateral: str = STATED) -> dict[str, str]:
@@ -139,10 +151,10 @@ class Calibration:
             return ""
         if self.height == USER:
             return (f"height unit stated by the user: the file's heights are in "
-                    f"{self.height_unit} (the file states no unit)")
+                f"{unit_text(self.height_unit)} (the file states no unit)")
         return (f"height unit assumed: the file states none, so its heights are taken as "
-                f"{self.height_unit}; every height (Sa, Sq, Sz, Ra, Rz...) rests on that "
-                "(--height-unit states it)")
+                f"{unit_text(self.height_unit)}; every height (Sa, Sq, Sz, Ra, Rz...) rests "
+                "on that (--height-unit states it)")
 
     def lateral_text(self) -> str:
         """One line on the pixel size (``""`` when the file states it)."""
@@ -153,7 +165,7 @@ class Calibration:
             return f"pixel size stated by the user: {pixel or '?'} (the file states none)"
         if self.lateral_unit:
             what = (f"lateral unit assumed: the file states none, so its lengths are taken "
-                    f"as {self.lateral_unit} (pixel {pixel or '?'})")
+                    f"as {unit_text(self.lateral_unit)} (pixel {pixel or '?'})")
         else:
             what = f"pixel size assumed: the file states none, so it is taken as {pixel or '1 m'}"
         return (f"{what}; every lateral quantity (Sal, Rsm, Spd, slopes, Sdr, cut-offs) "
@@ -168,10 +180,10 @@ class Calibration:
         from surfmet.units import quantity
 
         return {"height_unit": {"unit": self.height_unit, "source": self.height,
-                                "stated_by": _SOURCE_WORDS[self.height]},
+                                "stated_by": SOURCE_WORDS[self.height]},
                 "pixel": {"dx": quantity(self.dx, "m"), "dy": quantity(self.dy, "m"),
                           "lateral_unit": self.lateral_unit or None,
-                          "source": self.lateral, "stated_by": _SOURCE_WORDS[self.lateral]},
+                          "source": self.lateral, "stated_by": SOURCE_WORDS[self.lateral]},
                 "caveats": self.caveats()}
 
 

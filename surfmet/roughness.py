@@ -443,18 +443,25 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     )
 
 
-def roughness_file(path: str | os.PathLike, **options: Any) -> dict[str, Any]:
+def roughness_file(path: str | os.PathLike, read_options: dict[str, Any] | None = None,
+                   **options: Any) -> dict[str, Any]:
     """Roughness of one file as a JSON-ready dict; errors are returned, not raised.
 
     Returns ``{"file", "status": "ok", "parameters", "settings"}`` or
     ``{"file", "status": "error", "error": message}``. Top-level and picklable, for
-    process pools and Dask.
+    process pools and Dask. ``read_options`` go to :func:`surfmet.read` (``height_unit=``,
+    ``dx=``, ``dy=``, ``channel=``).
     """
     from surfmet.errors import user_error_types
 
     name = str(path)
     try:
-        res = roughness(path, **options)
+        scan: Any = path
+        if read_options:  # the units and channel the user states (--height-unit, ...)
+            from surfmet.io import read
+
+            scan = read(path, **read_options)
+        res = roughness(scan, **options)
     except user_error_types() as exc:
         return {"file": name, "status": "error", "error": str(exc)}
     except Exception as exc:  # a bug must not stop a batch; it is reported as such

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.model import ASSUMED, STATED, USER, Profile, Topography
+from surfmet.model import ASSUMED, STATED, USER, Profile, Topography, unit_text
 from surfmet.units import format_length, length_factor
 
 Scan = Topography | Profile
@@ -40,9 +40,9 @@ def state_height_unit(scan: Scan, unit: str, name: str) -> Scan:
         if taken is not None and abs(taken - new) <= 1e-12 * new:
             return scan
         raise SurfmetInputError(
-            f"{name}: the file states its height unit ({cal.height_unit}); a height unit "
-            f"given for it ({unit}) would contradict it: give one only for a file that "
-            "states none")
+            f"{name}: the file states its height unit ({unit_text(cal.height_unit)}); a "
+            f"height unit given for it ({unit_text(str(unit))}) would contradict it: give "
+            "one only for a file that states none")
     scale = new / (taken or 1.0)
     md = {**dict(scan.metadata), "height_unit": str(unit), "height_unit_source": USER,
           "units_missing": False}
