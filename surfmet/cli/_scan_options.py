@@ -77,18 +77,22 @@ def _argtype(parse: Any, what: str) -> Any:
 
 def _add(group: Any, prefix: str, whose: str) -> None:
     dest = prefix.replace("-", "_")
+    alone = bool(prefix)  # a body's own option: say only what differs from the shared one
     group.add_argument(f"--{prefix}height-unit", dest=f"{dest}height_unit", metavar="UNIT",
                        type=_argtype(parse_height_unit, "height unit"),
-                       help=f"unit of the heights of {whose} that states none (nm, µm, mm, "
-                       "m); a file that states its own keeps it")
+                       help=f"--height-unit for {whose} alone" if alone else
+                       "unit of the heights, for a file that states none (nm, µm, mm, m); "
+                       "a file that states a different one is refused")
     group.add_argument(f"--{prefix}pixel", dest=f"{dest}pixel", metavar="DX[,DY]",
                        type=_argtype(parse_pixel, "pixel size"),
-                       help=f"pixel size of {whose} that states none, with its unit "
-                       "(1um, or 1um,2um for dx,dy)")
+                       help=f"--pixel for {whose} alone" if alone else
+                       "pixel size with its unit, for a file that states none (1um, or "
+                       "1um,2um for dx,dy)")
     group.add_argument(f"--{prefix}channel", dest=f"{dest}channel", metavar="N|NAME",
                        type=_argtype(parse_channel, "channel"),
-                       help=f"channel, data set or container measurement of {whose} "
-                       "(index or name; default the first)")
+                       help=f"--channel for {whose} alone" if alone else
+                       "channel, data set or container measurement (index or name; "
+                       "default the first)")
 
 
 def add_scan_options(parser: Any, bodies: tuple[str, ...] = ()) -> None:
@@ -98,7 +102,9 @@ def add_scan_options(parser: Any, bodies: tuple[str, ...] = ()) -> None:
         "scan units and channel", "for files that do not state their units (output then "
         "says 'stated by the user'; what no one states is said to be 'assumed') or that "
         "hold several channels")
-    _add(group, "", "every scan file" if not bodies else "the scans")
+    if bodies:
+        group.description += f"; they apply to every scan, --{bodies[0]}-pixel... to one"
+    _add(group, "", "")
     for body in bodies:
         _add(group, f"{body}-", f"the {body} scan")
 
@@ -135,6 +141,15 @@ def read_scan(path: Any, args: argparse.Namespace, body: str | None = None) -> A
                         **read_options(args, body))
 
 
+def read_bodies(args: argparse.Namespace, bodies: tuple[str, ...] = ("plate", "ball")
+                ) -> None:
+    """Read each body's scan file (``args.plate``, ``args.ball``) in place with the command
+    line's options, so that every later use of them sees the scan as the user stated it."""
+    for body in bodies:
+        if hasattr(args, body):
+            setattr(args, body, read_scan(getattr(args, body), args, body))
+
+
 def scan_caveats(*scans: Any) -> list[str]:
     """Each scan's units that were assumed or stated by the user
     (:meth:`surfmet.model.Calibration.caveats`), prefixed by its file when several scans
@@ -148,11 +163,34 @@ def scan_caveats(*scans: Any) -> list[str]:
     return out
 
 
+def files_caveats(args: argparse.Namespace, files: dict[str, Any]) -> list[str]:
+    """Read each file of each body once (``files``: body -> paths or None) with the
+    command line's options, so that what a file contradicts is refused before any work;
+    their caveats, printed on stderr and returned for the JSON."""
+    import sys
+
+    scans = [read_scan(p, args, body) for body, paths in files.items()
+             for p in dict.fromkeys(paths or ())]
+    caveats = scan_caveats(*scans)
+    print_caveats(caveats, sys.stderr)
+    return caveats
+
+
 def print_caveats(caveats: list[str], file: Any = None) -> None:
     """The caveats, one ``CAVEAT:`` line each (on ``file``, default stdout)."""
     for c in caveats:
         print(f"CAVEAT: {c}", file=file)
 
 
-__all__ = ["add_scan_options", "parse_channel", "parse_height_unit", "parse_pixel",
-           "print_caveats", "read_options", "read_scan", "scan_caveats"]
+__all__ = [
+    "add_scan_options",
+    "files_caveats",
+    "parse_channel",
+    "parse_height_unit",
+    "parse_pixel",
+    "print_caveats",
+    "read_bodies",
+    "read_options",
+    "read_scan",
+    "scan_caveats",
+]

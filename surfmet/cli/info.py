@@ -99,7 +99,6 @@ def run(args: argparse.Namespace) -> int:
 
     rec = scan_record(scan)
     cal = scan.calibration
-    rec["units"] = cal.record()
     listing = _measurements(args.file, scan, args)
     if listing:
         rec["channels_read"] = [
