@@ -20,7 +20,7 @@ from surfmet.cli._common import (
     save_figure,
     show_progress,
 )
-from surfmet.cli._scan_options import add_scan_options, read_bodies
+from surfmet.cli._scan_options import add_scan_options, print_caveats, read_bodies, scan_caveats
 
 EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
@@ -126,6 +126,7 @@ def run(args: argparse.Namespace) -> int:
         _print_line(run_)
     else:
         _print(run_)
+    print_caveats(scan_caveats(args.plate, args.ball))
     return 0
 
 
