@@ -72,6 +72,7 @@ def test_height_unit_and_pixel_give_the_numbers_of_the_same_map_in_mi(capsys, h5
     assert mi["Sa"]["value"] == pytest.approx(2.579e-9, rel=1e-3)  # nm, not mm
     assert caveats and all("stated by the user" in c for c in caveats)
     rc, out, _ = _run(capsys, "roughness", h5, "--height-unit", "µm", "--pixel", MI_PIXEL)
+    assert rc == 0
     assert "CAVEAT: height unit stated by the user: the file's heights are in µm" in out
     assert "assumed" not in out
 
@@ -87,6 +88,7 @@ def test_pixel_scales_the_lateral_quantities_as_it_should(capsys, h5):
     assert two["Spd"]["value"] == pytest.approx(one["Spd"]["value"] / 4, rel=1e-9)
     # dx, dy apart: the x and y steps are each the user's
     rc, out, _ = _run(capsys, "info", h5, "--pixel", "1um,2um", "--json")
+    assert rc == 0
     rec = json.loads(out)
     assert (rec["dx"]["value"], rec["dy"]["value"]) == (pytest.approx(1e-6), pytest.approx(2e-6))
     assert rec["units"]["pixel"]["source"] == "user"
@@ -154,7 +156,7 @@ def test_info_lists_every_measurement_of_a_container_and_every_data_set(capsys, 
     assert grids == [(256, 256), (640, 480)]
     # a container measurement is a channel too
     rc, out, _ = _run(capsys, "info", realdata("container-2.zip"), "--channel", "1", "--json")
-    assert json.loads(out)["kind"] == "areal"
+    assert rc == 0 and json.loads(out)["kind"] == "areal"
 
 
 def test_a_contact_on_a_bare_array_with_its_units_stated_is_the_contact_on_the_x3p(
