@@ -136,7 +136,9 @@ class Calibration:
         """True when the file states both its height unit and its pixel size."""
         return self.height == STATED and self.lateral == STATED
 
-    def _pixel_text(self) -> str:
+    def pixel_text(self) -> str:
+        """The pixel size as the text writes it (``"5 µm"``, ``"1 µm x 2 µm"``; ``""``
+        when the record has none)."""
         if self.dx is None:
             return ""
         from surfmet.units import format_length
@@ -160,7 +162,7 @@ class Calibration:
         """One line on the pixel size (``""`` when the file states it)."""
         if self.lateral == STATED:
             return ""
-        pixel = self._pixel_text()
+        pixel = self.pixel_text()
         if self.lateral == USER:
             return f"pixel size stated by the user: {pixel or '?'} (the file states none)"
         if self.lateral_unit:

@@ -73,7 +73,7 @@ def state_pixel(scan: Scan, dx: float, dy: float | None, name: str) -> Scan:
         if _same(scan.dx, dx) and _same(old_dy, dy):
             return scan
         raise SurfmetInputError(
-            f"{name}: the file states its pixel size ({cal._pixel_text()}); a pixel given "
+            f"{name}: the file states its pixel size ({cal.pixel_text()}); a pixel given "
             f"for it ({format_length(dx)}"
             f"{'' if dy == dx else ' x ' + format_length(dy)}) would contradict it: give "
             "one only for a file that states none")

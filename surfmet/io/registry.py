@@ -289,7 +289,12 @@ def read(path: str | os.PathLike[str], format: str | None = None, **options: Any
     format : str, optional
         Registry name; overrides detection (see :func:`formats`).
     **options
-        Passed to the format's reader (for example ``channel=`` for Gwyddion files).
+        Passed to the format's reader (for example ``channel=`` for multi-channel files;
+        refused by a single-channel format). Every format takes ``height_unit=`` (the unit
+        of the file's height numbers) and ``dx=`` / ``dy=`` (the pixel, m) for a file that
+        does not state them: the scan then records them as stated by the user
+        (:class:`surfmet.model.Calibration`); a file that states a different one refuses
+        them (:mod:`surfmet.io.calibration`).
 
     Returns
     -------
