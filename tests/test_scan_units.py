@@ -180,3 +180,23 @@ def test_a_contact_on_a_bare_array_with_its_units_stated_is_the_contact_on_the_x
     notes = ours["scan_preparation"]["notes"]
     assert "CAVEAT (plate scan): pixel size stated by the user: 5 µm (the file states none)" \
         in notes
+
+
+def test_every_reader_marks_what_its_file_states_as_the_manifest_says(realdata):
+    # MANIFEST.tsv's height_unit_in_file: "none"/"None" for the files that state no unit;
+    # tmd-1's "mm" is SurfaceTopography's reading of a header that has no unit field
+    # (surfmet.io.tmd), so it is assumed too. Every other file states both.
+    import csv
+
+    import surfmet
+
+    manifest = realdata("MANIFEST.tsv")
+    rows = list(csv.DictReader(manifest.open(encoding="utf-8"), delimiter="\t"))
+    assert len(rows) == 33
+    for row in rows:
+        cal = surfmet.read(realdata(row["filename"])).calibration
+        unstated = row["height_unit_in_file"] in ("none", "None") or row["filename"] == \
+            "tmd-1.tmd"
+        expected = "assumed" if unstated else "file"
+        assert (cal.height, cal.lateral) == (expected, expected), row["filename"]
+        assert bool(cal.caveats()) == unstated, row["filename"]
