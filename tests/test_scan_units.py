@@ -119,6 +119,12 @@ def test_a_single_channel_file_and_a_stated_unit_refuse_what_contradicts_them(ca
     # the unit it states, given again, is no contradiction
     rc, out, _ = _run(capsys, "roughness", x3p, "--height-unit", "m")
     assert rc == 0 and "CAVEAT" not in out
+    # a text matrix whose header states metres (after its rad -> m factor): the same rule,
+    # and the user's mistake is not reported as a damaged file
+    rc, _, err = _run(capsys, "info", realdata("matrix-4.txt"), "--height-unit", "nm")
+    assert rc == 1 and "states its height unit (m)" in err and "inconsistent" not in err
+    rc, out, _ = _run(capsys, "info", realdata("matrix-4.txt"), "--height-unit", "m")
+    assert rc == 0 and "height unit   m  (stated by the file)" in out
 
 
 def test_pixel_needs_a_unit(capsys, h5):

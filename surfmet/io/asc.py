@@ -41,6 +41,7 @@ from surfmet.io._binary import (
     format_error,
     looks_like_text,
 )
+from surfmet.io.calibration import contradiction
 from surfmet.io.registry import register_reader
 from surfmet.model import ASSUMED, STATED, USER, Topography
 from surfmet.units import length_factor
@@ -226,10 +227,11 @@ def _height_factor(flavour: str, header: dict[str, Any], zfactor: float | None,
         flavour == "gwyddion" and "value units" in header)
     if height_unit is not None:
         if stated:
-            raise SurfmetInputError(
-                f"{name}: the file states its height unit; a height unit given for it "
-                f"({height_unit}) would contradict it: give one only for a file that "
-                "states none")
+            factor, unit = _stated_height(flavour, header, zfactor, zunit_text, name)
+            same = length_factor(unit)  # the stated unit (after any conversion factor)
+            if abs(same - length_factor(height_unit)) > 1e-12 * same:
+                raise contradiction(name, "height unit", unit, height_unit)
+            return factor, unit, STATED
         return length_factor(height_unit), height_unit, USER
     factor, unit = _stated_height(flavour, header, zfactor, zunit_text, name)
     return factor, unit, STATED if stated else ASSUMED

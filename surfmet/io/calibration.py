@@ -24,6 +24,18 @@ Scan = Topography | Profile
 PIXEL_RTOL = 1e-6
 
 
+class UnitContradiction(SurfmetInputError):
+    """A unit or pixel the user gives for a file that states a different one: the user's
+    mistake (or the file's), never damage in the file."""
+
+
+def contradiction(name: str, what: str, stated: str, given: str) -> UnitContradiction:
+    """The one error for a unit the file states and the user contradicts."""
+    return UnitContradiction(f"{name}: the file states its {what} ({stated}); a {what} given "
+                             f"for it ({given}) would contradict it: give one only for a "
+                             "file that states none")
+
+
 def _factor(unit: str) -> float | None:
     try:
         return length_factor(unit or "m")
@@ -39,10 +51,8 @@ def state_height_unit(scan: Scan, unit: str, name: str) -> Scan:
     if cal.height == STATED:
         if taken is not None and abs(taken - new) <= 1e-12 * new:
             return scan
-        raise SurfmetInputError(
-            f"{name}: the file states its height unit ({unit_text(cal.height_unit)}); a "
-            f"height unit given for it ({unit_text(str(unit))}) would contradict it: give "
-            "one only for a file that states none")
+        raise contradiction(name, "height unit", unit_text(cal.height_unit),
+                            unit_text(str(unit)))
     scale = new / (taken or 1.0)
     md = {**dict(scan.metadata), "height_unit": str(unit), "height_unit_source": USER,
           "units_missing": False}
@@ -72,11 +82,8 @@ def state_pixel(scan: Scan, dx: float, dy: float | None, name: str) -> Scan:
     if cal.lateral == STATED:
         if _same(scan.dx, dx) and _same(old_dy, dy):
             return scan
-        raise SurfmetInputError(
-            f"{name}: the file states its pixel size ({cal.pixel_text()}); a pixel given "
-            f"for it ({format_length(dx)}"
-            f"{'' if dy == dx else ' x ' + format_length(dy)}) would contradict it: give "
-            "one only for a file that states none")
+        given = format_length(dx) + ("" if dy == dx else " x " + format_length(dy))
+        raise contradiction(name, "pixel size", cal.pixel_text(), given)
     md = {**dict(scan.metadata), "lateral_unit_source": USER, "lateral_calibrated": True,
           "lateral_unit": "m"}
     if isinstance(scan, Topography):
@@ -103,4 +110,5 @@ def assumed(height: bool, lateral: bool) -> dict[str, Any]:
             "lateral_unit_source": ASSUMED if lateral else STATED}
 
 
-__all__ = ["PIXEL_RTOL", "assumed", "state_height_unit", "state_pixel", "state_units"]
+__all__ = ["PIXEL_RTOL", "UnitContradiction", "assumed", "contradiction", "state_height_unit",
+           "state_pixel", "state_units"]

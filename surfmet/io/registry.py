@@ -186,9 +186,11 @@ def read_bytes(
         raise SurfmetFormatError(f"{name}: no reader for format {fmt!r}; known: {sorted(_FORMATS)}")
     stated = _generic_options(spec, options, name)
     _check_options(spec, options)
+    from surfmet.io.calibration import UnitContradiction
+
     try:
         scan = spec.decode(buf, name, **options)
-    except SurfmetFormatError:
+    except (SurfmetFormatError, UnitContradiction):
         raise
     except SurfmetError as exc:
         raise SurfmetFormatError(f"{name}: inconsistent {fmt} file: {exc}") from exc
