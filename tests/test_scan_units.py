@@ -206,3 +206,11 @@ def test_every_reader_marks_what_its_file_states_as_the_manifest_says(realdata):
         expected = "assumed" if unstated else "file"
         assert (cal.height, cal.lateral) == (expected, expected), row["filename"]
         assert bool(cal.caveats()) == unstated, row["filename"]
+
+
+def test_sweep_refuses_a_contradicted_pixel_before_any_row(capsys, tmp_path):
+    out = tmp_path / "rows.csv"
+    rc, _, err = _run(capsys, "sweep", "--plates", "surfmet/data/paper_plate.x3p",
+                      "--radius", "20mm", "--loads", "10N", "--pixel", "1um", "--csv", out)
+    assert rc == 1 and "states its pixel size (5 µm)" in err and err.count("\n") == 1
+    assert not out.exists()
