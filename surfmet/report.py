@@ -95,6 +95,8 @@ class ScanSection:
             out["kind"] = self.kind
             out["figures"] = [name for name, _ in self.figures]
             out["hertz_check"] = self.hertz is not None
+            if self.info and self.info.get("units"):  # which units the file states
+                out["units"] = self.info["units"]
             if self.hertz_error:
                 out["hertz_error"] = self.hertz_error
         return out
@@ -174,7 +176,8 @@ def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
 
 
 def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
-                 include_3d: bool = True, hertz: HertzOptions | None = None) -> ScanSection:
+                 include_3d: bool = True, hertz: HertzOptions | None = None,
+                 read_options: dict[str, Any] | None = None) -> ScanSection:
     """Compute everything the report shows for one scan; errors end up in the section.
 
     Parameters
@@ -196,7 +199,7 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
     options = dict(options or {})
     sec = ScanSection(file=str(path))
     try:
-        scan = surfmet.read(path)
+        scan = surfmet.read(path, **(read_options or {}))  # --height-unit, --pixel...
         sec.info = scan_record(scan)
         res = roughness(scan, **options)
         sec.kind = res.kind  # "profile" also for a row of an areal scan
@@ -237,6 +240,7 @@ def _info_html(info: dict[str, Any]) -> str:
     else:
         rows.append(("length", quantity_text(info.get("length"))))
     rows.append(("non-measured", f"{100 * float(info.get('nan_fraction') or 0):.3f} %"))
+    rows.extend(("CAVEAT", c) for c in (info.get("units") or {}).get("caveats", []))
     for k, v in (info.get("metadata") or {}).items():
         text = _meta_text(_jsonable(v))
         if len(text) > 400:
@@ -406,6 +410,7 @@ def write_report(
     hertz: HertzOptions | None = None,
     progress: bool | None = None,
     rotor: Any = None,
+    read_options: dict[str, Any] | None = None,
 ) -> list[ScanSection]:
     """Evaluate each scan and write the self-contained HTML report to ``out``.
 
@@ -443,7 +448,8 @@ def write_report(
     sections = []
     with progress_bar(len(paths), "report", progress) as bar:
         for p in paths:
-            sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz))
+            sections.append(scan_section(p, options, include_3d=include_3d, hertz=hertz,
+                                         read_options=read_options))
             bar.update(1)
     write_text(out, render_html(sections, title=title, options=options, hertz=hertz,
                                 rotor=rotor))

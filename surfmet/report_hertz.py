@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -15,12 +16,13 @@ from surfmet.report_html import esc, figure_png, figures_html, kv_table, quantit
 @dataclass(frozen=True)
 class HertzOptions:
     """Inputs of the Hertz-check section (SI): ball radius (m), load (N), the materials as
-    ``"BALL,PLATE"`` (names with optional ``:E=..:nu=..:H=..``), and an optional ball scan."""
+    ``"BALL,PLATE"`` (names with optional ``:E=..:nu=..:H=..``), and an optional ball scan
+    (a path, or a Topography already read)."""
 
     radius: float
     load: float
     materials: str
-    ball: str | None = None
+    ball: Any = None
 
 
 def hertz_check_available() -> bool:
@@ -44,7 +46,8 @@ def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
         ) from None
     import surfmet
 
-    ball = surfmet.read(hz.ball) if hz.ball else None
+    # a path, or the scan the command read with the user's units (--ball-pixel...)
+    ball = surfmet.read(hz.ball) if isinstance(hz.ball, (str, Path)) else hz.ball
     res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
     return res.to_json()
 

@@ -137,23 +137,16 @@ def _crop_areal(topo: Topography, win: tuple[float, float]) -> Topography:
     return topo.replace(heights=topo.heights[:, cols[0]: cols[-1] + 1], metadata=md)
 
 
-def unit_caveats(metadata: Any) -> list[str]:
-    """What the file does not state about its units, to carry into every result.
+def unit_caveats(scan: Any) -> list[str]:
+    """What the file does not state about its units, to carry into every result: each unit
+    assumed, or stated by the user (:meth:`surfmet.model.Calibration.caveats`).
 
-    Readers record ``lateral_calibrated = False`` when the file gives no lateral unit (the
-    pixel size is then taken as 1 m, or whatever the file's bare numbers say) and
-    ``height_unit = ""`` with ``units_missing`` when it gives no height unit.
+    ``scan`` is a Topography or Profile (its pixel is named), or its metadata.
     """
-    md = dict(metadata or {})
-    out = []
-    if md.get("lateral_calibrated") is False:
-        out.append("uncalibrated lateral unit: the file states none, so the pixel size and "
-                   "every lateral quantity (Sal, Rsm, Spd, slopes, Sdr, cut-offs) are in the "
-                   "file's own numbers taken as metres, not in metres")
-    if md.get("units_missing") and not str(md.get("height_unit", "x")).strip():
-        out.append("uncalibrated height unit: the file states none, so every height (Sa, Sq, "
-                   "Sz, Ra, Rz...) is in the file's own numbers taken as metres, not in metres")
-    return out
+    from surfmet.model import Calibration
+
+    cal = getattr(scan, "calibration", None)
+    return (cal if cal is not None else Calibration.of(scan or {})).caveats()
 
 
 def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
@@ -349,7 +342,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
 
         settings["edge"] = {"value": edge, "meaning": EDGE_MEANING.get(edge, "")}
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
-    caveats = unit_caveats(topo.metadata) + [c for c in [dominant_form(topo, form)] if c]
+    caveats = unit_caveats(topo) + [c for c in [dominant_form(topo, form)] if c]
     if caveats:
         settings["caveats"] = caveats
     params = areal_parameters(surface, which)
@@ -434,7 +427,7 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     parameters.update(feats)
     notes += feature_notes
     settings["rk_line"] = {"value": cond.rk_line, "why": cond.why["rk_line"]}
-    caveats = unit_caveats(prof.metadata)
+    caveats = unit_caveats(prof)
     if caveats:
         settings["caveats"] = caveats
     if notes:
@@ -450,18 +443,25 @@ def _profile_roughness(data, source, *, level, cond, window, profile, spikes, ex
     )
 
 
-def roughness_file(path: str | os.PathLike, **options: Any) -> dict[str, Any]:
+def roughness_file(path: str | os.PathLike, read_options: dict[str, Any] | None = None,
+                   **options: Any) -> dict[str, Any]:
     """Roughness of one file as a JSON-ready dict; errors are returned, not raised.
 
     Returns ``{"file", "status": "ok", "parameters", "settings"}`` or
     ``{"file", "status": "error", "error": message}``. Top-level and picklable, for
-    process pools and Dask.
+    process pools and Dask. ``read_options`` go to :func:`surfmet.read` (``height_unit=``,
+    ``dx=``, ``dy=``, ``channel=``).
     """
     from surfmet.errors import user_error_types
 
     name = str(path)
     try:
-        res = roughness(path, **options)
+        scan: Any = path
+        if read_options:  # the units and channel the user states (--height-unit, ...)
+            from surfmet.io import read
+
+            scan = read(path, **read_options)
+        res = roughness(scan, **options)
     except user_error_types() as exc:
         return {"file": name, "status": "error", "error": str(exc)}
     except Exception as exc:  # a bug must not stop a batch; it is reported as such

@@ -79,16 +79,22 @@ class SweepItem:
     grid: int | None = None
     hardness: float | None = None
     spikes: str = SPIKES
+    #: :func:`surfmet.read` options of the plate and the ball files (units, channel)
+    plate_options: tuple[tuple[str, Any], ...] = ()
+    ball_options: tuple[tuple[str, Any], ...] = ()
 
     @property
     def key(self) -> str:
         """Stable identity of the item: its parameters, independent of its index."""
         pos = None if self.position is None else [repr(float(v)) for v in self.position]
-        return json.dumps([self.task, self.plate, self.ball, self.materials,
-                           repr(float(self.load)), repr(float(self.radius)), pos, self.grid,
-                           None if self.hardness is None else repr(float(self.hardness)),
-                           self.spikes],
-                          separators=(",", ":"))
+        fields = [self.task, self.plate, self.ball, self.materials,
+                  repr(float(self.load)), repr(float(self.radius)), pos, self.grid,
+                  None if self.hardness is None else repr(float(self.hardness)),
+                  self.spikes]
+        if self.plate_options or self.ball_options:  # older keys stay as they were
+            fields.append([[list(o) for o in self.plate_options],
+                           [list(o) for o in self.ball_options]])
+        return json.dumps(fields, separators=(",", ":"), default=repr)
 
 
 def sweep_items(*, task: str, loads: Sequence[float], radius: float,
@@ -96,7 +102,8 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
                 materials: Sequence[str] = ("steel,aluminium",),
                 positions: Sequence[tuple[float, float] | None] = (None,),
                 grid: int | None = None, hardness: float | None = None,
-                spikes: Any = SPIKES) -> list[SweepItem]:
+                spikes: Any = SPIKES, plate_options: dict[str, Any] | None = None,
+                ball_options: dict[str, Any] | None = None) -> list[SweepItem]:
     """The Cartesian product plates x balls x materials x positions x loads, in that
     nesting order (loads vary fastest)."""
     if task not in TASKS:
@@ -116,7 +123,8 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
                                loads)
     return [SweepItem(index=k, task=task, plate=pl, ball=bl, materials=m, load=w,
                       radius=float(radius), position=pos, grid=grid, hardness=hardness,
-                      spikes=spikes)
+                      spikes=spikes, plate_options=tuple(sorted((plate_options or {}).items())),
+                      ball_options=tuple(sorted((ball_options or {}).items())))
             for k, (pl, bl, m, pos, w) in enumerate(combos)]
 
 
@@ -137,8 +145,8 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     import surfmet
 
     row = _base(item)
-    plate = surfmet.read(item.plate) if item.plate else None
-    ball = surfmet.read(item.ball) if item.ball else None
+    plate = surfmet.read(item.plate, **dict(item.plate_options)) if item.plate else None
+    ball = surfmet.read(item.ball, **dict(item.ball_options)) if item.ball else None
     if item.task == "hertz-check":
         from surfmet.mechanics.hertz_check import hertz_check
         from surfmet.records.hertz import hertz_check_solve

@@ -154,14 +154,14 @@ def test_uncalibrated_units_carry_a_caveat_into_every_output(capsys, realdata, t
     rc, out, _ = _run(capsys, "roughness", path, "--json")
     assert rc == 0
     caveats = json.loads(out)[0]["settings"]["caveats"]
-    assert any("lateral unit" in c for c in caveats)
+    assert any("pixel size assumed" in c for c in caveats)
     assert any("height unit" in c for c in caveats)
     rc, out, _ = _run(capsys, "roughness", path)
-    assert out.count("CAVEAT: uncalibrated") == 2
+    assert out.count(" assumed: the file states none") == 2
     table = tmp_path / "t.csv"
     _run(capsys, "roughness", path, "--csv", str(table))
     row = next(csv.DictReader(io.StringIO(table.read_text())))
-    assert "uncalibrated lateral unit" in row["caveats"]
+    assert "pixel size assumed" in row["caveats"]
     # a calibrated file has none
     rc, out, _ = _run(capsys, "roughness", str(realdata("x3p-2.x3p")), "--json")
     assert "caveats" not in json.loads(out)[0]["settings"]

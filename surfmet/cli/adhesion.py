@@ -20,6 +20,7 @@ from surfmet.cli._common import (
     save_figure,
     show_progress,
 )
+from surfmet.cli._scan_options import add_scan_options, print_caveats, read_bodies, scan_caveats
 
 EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
@@ -89,6 +90,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="scan of the plate (levelled; its roughness enters the gap)")
     p.add_argument("--ball", metavar="FILE",
                    help="scan of the ball (its best-fit sphere is removed)")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     p.add_argument("--plot", metavar="OUT.png", help="plot the load-approach cycle")
     add_json_flag(p)
@@ -98,6 +100,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     from surfmet.batch import progress_bar
     from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
@@ -123,6 +126,7 @@ def run(args: argparse.Namespace) -> int:
         _print_line(run_)
     else:
         _print(run_)
+    print_caveats(scan_caveats(args.plate, args.ball))
     return 0
 
 

@@ -21,6 +21,7 @@ from surfmet.cli._common import (
 )
 from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
+from surfmet.cli._scan_options import add_scan_options, read_bodies
 
 EPILOG = """examples:
   surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -55,6 +56,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                        help="cap the pressure at this hardness (elastic-perfectly-plastic)")
     plast.add_argument("--plastic", action="store_true",
                        help="cap the pressure at the softer material's table hardness")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     add_grid_argument(p, "cells per side (default: the scans' own pixel, native resolution, "
                       "when it fits in memory; 256 for a smooth ball)")
@@ -73,6 +75,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     import json
 
     import numpy as np

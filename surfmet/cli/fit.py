@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json
+from surfmet.cli._scan_options import add_scan_options, print_caveats, read_scan, scan_caveats
 
 EPILOG = """examples:
   surfmet fit ball.nms --shape sphere
@@ -28,6 +29,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("file", help="scan file")
+    add_scan_options(p)
     p.add_argument("--shape", required=True, choices=("circle", "sphere"))
     p.add_argument("--profile", default=None, metavar="row:K|col:K",
                    help="for --shape circle on an areal scan: the row or column to fit")
@@ -39,13 +41,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    import surfmet
     from surfmet.units import format_length
 
-    scan = surfmet.read(args.file)
+    scan = read_scan(args.file, args)
     from surfmet.records import fit_record
 
     rec = {"file": args.file, **fit_record(scan, args.shape, args.profile, args.loss)}
+    rec["caveats"] = scan_caveats(scan)
     if args.json:
         emit_json(rec)
         return 0
@@ -61,4 +63,5 @@ def run(args: argparse.Namespace) -> int:
               "quadratic component of the residual")
     print(f"residual PV         {format_length(rec['pv_form_deviation']['value'])} all points "
           "(roughness and outliers included)")
+    print_caveats(rec["caveats"])
     return 0

@@ -20,6 +20,7 @@ from surfmet.cli._common import (
     save_figure,
     show_progress,
 )
+from surfmet.cli._scan_options import add_scan_options, read_options
 from surfmet.cli.scales import add_measurement_arguments, print_all_scales, read_measurements
 from surfmet.cli.spectrum import add_periodic_argument, periodic_flag
 
@@ -84,6 +85,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="plot A/A0 and the mean gap against p for all four")
     add_adhesion_arguments(p)
     add_measurement_arguments(p, 10)
+    add_scan_options(p)
     add_json_flag(p)
     add_quiet_flag(p)
     p.set_defaults(func=run)
@@ -131,7 +133,7 @@ def run(args: argparse.Namespace) -> int:
     check_output(args.plot, "--plot")
     if args.e_star is not None and not args.e_star > 0:
         raise SurfmetInputError(f"--e-star must be positive, got {args.e_star!r}")
-    scans = read_measurements(args.files)
+    scans = read_measurements(args.files, **read_options(args))
     if len(scans) > 1:
         return _run_several(args, scans, pressures, law)
     bar = progress_bar(len(pressures), "flat-contact, pressures", show_progress(args))

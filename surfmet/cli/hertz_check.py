@@ -21,6 +21,7 @@ from surfmet.cli._common import (
 )
 from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
+from surfmet.cli._scan_options import add_scan_options, read_bodies
 
 EPILOG = """examples:
   surfmet hertz-check plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
@@ -68,6 +69,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--elastic", action="store_true",
                    help="elastic solution only (do not check yield)")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
@@ -87,6 +89,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length

@@ -1,4 +1,5 @@
-"""``surfmet info FILE``: what a scan file holds."""
+"""``surfmet info FILE``: what a scan file holds, every channel or measurement of it, and
+which of its units the file states."""
 
 from __future__ import annotations
 
@@ -6,6 +7,9 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json
+from surfmet.cli._scan_options import add_scan_options, read_options
+from surfmet.errors import SurfmetError
+from surfmet.model import SOURCE_WORDS, STATED, unit_text
 from surfmet.units import format_length
 
 
@@ -14,25 +18,92 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         "info",
         help="format, grid, pixel size and metadata of a scan file",
         description="Print the format, kind, grid, pixel size, non-measured fraction and "
-        "metadata of a scan file.",
+        "metadata of a scan file, which of its units the file states (and which are "
+        "assumed), and every channel or measurement it holds.",
         epilog="examples:\n  surfmet info scan.nms\n  surfmet info scan.x3p --json\n"
-        "  surfmet info export.txt --format asc",
+        "  surfmet info export.txt --format asc\n"
+        "  surfmet info surface.h5 --channel 1 --height-unit um --pixel 78.125nm",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("file", help="scan file (format detected from its content)")
     p.add_argument("--format", help="force a reader (see 'surfmet formats')")
+    add_scan_options(p)
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
 
 
+def _choices(scan: Any) -> list[tuple[Any, str]]:
+    """(what ``channel=`` takes, a label) for each channel the file holds, or []."""
+    names = scan.metadata.get("channels")
+    if not isinstance(names, (list, tuple)) or len(names) < 2:
+        return []
+    out = []
+    for i, entry in enumerate(names):
+        if isinstance(entry, dict):  # Gwyddion: numbered channels with a title
+            out.append((entry.get("number", i), str(entry.get("title") or "untitled")))
+        else:
+            out.append((i, str(entry)))
+    return out
+
+
+def _pixel(scan: Any) -> str:
+    if scan.kind == "areal":
+        return f"{format_length(scan.dx)} x {format_length(scan.dy)}"
+    return format_length(scan.dx)
+
+
+def _summary(scan: Any) -> dict[str, Any]:
+    """One channel's or measurement's record: kind, grid, pixel and units."""
+    from surfmet.units import quantity
+
+    return {"kind": scan.kind, "nx": scan.nx, "ny": scan.ny,
+            "dx": quantity(scan.dx, "m"), "dy": quantity(getattr(scan, "dy", None), "m"),
+            "units": scan.calibration.record()}
+
+
+def _line(index: Any, label: str, rec: dict[str, Any] | None, error: str | None,
+          scan: Any = None) -> str:
+    head = f"  {index!s:>3} {label[:28]:28s}"
+    if error:
+        return f"{head} not read: {error}"
+    cal = scan.calibration
+    said = [f"{w} {SOURCE_WORDS[s]}" for w, s in (("height unit", cal.height),
+                                                  ("pixel", cal.lateral)) if s != STATED]
+    note = f" ({', '.join(said)})" if said else ""
+    return (f"{head} {rec['kind']} {scan.nx} x {scan.ny}, pixel {_pixel(scan)}, heights "
+            f"in {unit_text(cal.height_unit)}{note}")
+
+
+def _measurements(path: str, scan: Any, args: argparse.Namespace
+                  ) -> list[tuple[Any, str, Any, str | None]]:
+    """Every channel (or container measurement) of the file, each read on its own."""
+    import surfmet
+
+    opts = {k: v for k, v in read_options(args).items() if k != "channel"}
+    out = []
+    for choice, label in _choices(scan):
+        try:
+            out.append((choice, label, surfmet.read(path, format=args.format, channel=choice,
+                                                    **opts), None))
+        except SurfmetError as exc:
+            out.append((choice, label, None, str(exc)))
+    return out
+
+
 def run(args: argparse.Namespace) -> int:
     import surfmet
 
-    scan = surfmet.read(args.file, format=args.format)
+    scan = surfmet.read(args.file, format=args.format, **read_options(args))
     from surfmet.records import scan_record
 
     rec = scan_record(scan)
+    cal = scan.calibration
+    listing = _measurements(args.file, scan, args)
+    if listing:
+        rec["channels_read"] = [
+            {"channel": c, "name": label, **({"error": err} if err else _summary(s))}
+            for c, label, s, err in listing]
     if args.json:
         emit_json(rec)
         return 0
@@ -41,16 +112,22 @@ def run(args: argparse.Namespace) -> int:
     print(f"kind          {rec['kind']}")
     print(f"grid          {scan.nx} x {scan.ny}")
     dy = format_length(scan.dy) if scan.kind == "areal" else "-"
-    note = ""
-    if not scan.metadata.get("lateral_calibrated", True):
-        note = "  (uncalibrated: the file states no lateral unit)"
-    print(f"pixel size    {format_length(scan.dx)} x {dy}{note}")
+    print(f"pixel size    {format_length(scan.dx)} x {dy}  ({SOURCE_WORDS[cal.lateral]})")
+    print(f"height unit   {unit_text(cal.height_unit)}  ({SOURCE_WORDS[cal.height]})")
     if scan.kind == "areal":
         print(f"scan size     {format_length(scan.size_x)} x {format_length(scan.size_y)}")
     else:
         sampling = "uniform" if scan.is_uniform else "non-uniform"
         print(f"length        {format_length(scan.length)} ({sampling})")
     print(f"non-measured  {100 * scan.nan_fraction:.3f} %")
+    for caveat in cal.caveats():
+        print(f"CAVEAT: {caveat}")
+    if listing:
+        word = "measurements" if rec["format"] == "ce" else "channels"
+        print(f"{word:13s} {len(listing)} (this one: {scan.metadata.get('channel')}; "
+              "--channel picks another)")
+        for c, label, s, err in listing:
+            print(_line(c, label, None if s is None else _summary(s), err, s))
     for key, value in rec["metadata"].items():
         text = str(value)
         if len(text) > 100:

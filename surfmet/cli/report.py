@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     positive_length,
     show_progress,
 )
+from surfmet.cli._scan_options import add_scan_options, read_bodies, read_options
 
 EPILOG = """examples:
   surfmet report plate.x3p -o report.html
@@ -61,6 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     hz.add_argument("--load", type=force, metavar="F", help="normal load, e.g. 4.7N")
     hz.add_argument("--materials", metavar="BALL,PLATE", help="e.g. steel,aluminium")
     hz.add_argument("--ball", metavar="FILE", help="scan of the ball (optional)")
+    add_scan_options(p, ("ball",))
     add_json_flag(p)
     add_quiet_flag(p)
     p.set_defaults(func=run)
@@ -71,6 +73,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
 
     check_output(args.output, "-o")
+    read_bodies(args, ("ball",))  # the ball as the user states it (--ball-pixel...)
     from surfmet.report import write_report
     from surfmet.report_hertz import HertzOptions, hertz_check_available
 
@@ -95,7 +98,8 @@ def run(args: argparse.Namespace) -> int:
     rotor = _rotor_verdict(args)
     sections = write_report(args.files, args.output, options, title=args.title,
                             include_3d=not args.no_3d, hertz=hertz,
-                            progress=show_progress(args), rotor=rotor)
+                            progress=show_progress(args), rotor=rotor,
+                            read_options=read_options(args))
     failed = [s for s in sections if s.status != "ok"]
     for s in failed:
         msg = s.error or ""

@@ -22,6 +22,7 @@ from surfmet.cli._common import (
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
+from surfmet.cli._scan_options import add_scan_options, read_bodies
 from surfmet.cli.rolling_visco import add_visco_arguments, run_visco
 
 EPILOG = """examples:
@@ -73,6 +74,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "the snapshot's -du/dx, asperity slopes included")
     p.add_argument("--hardness", type=pressure, metavar="P",
                    help="hardness of the softer body for the plastic model (default: table)")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
@@ -92,6 +94,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     import math
 
     from contact.rolling import log_loads

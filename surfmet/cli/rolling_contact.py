@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     speed,
     spike_summary,
 )
+from surfmet.cli._scan_options import add_scan_options, read_bodies
 from surfmet.cli.rolling_contact_text import print_summary
 from surfmet.cli.rolling_contact_visco import add_visco_options, run_viscoelastic
 
@@ -61,6 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the scans' "
                    "roughness, as for `surfmet contact`, enlarged if the contact outgrows it)")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     add_visco_options(p)
     add_json_flag(p)
@@ -69,6 +71,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     import math
 
     from surfmet import units

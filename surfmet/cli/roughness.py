@@ -9,6 +9,7 @@ import sys
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log, positive_length
+from surfmet.cli._scan_options import add_scan_options, read_options, read_scan
 
 EPILOG = """examples:
   surfmet roughness plate.x3p
@@ -49,6 +50,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
+    add_scan_options(p)
     p.add_argument("--level", default=None,
                    help="form removal: none, mean, plane, poly:N, sphere, cylinder "
                    "(default plane, a line on profiles; none for a file holding an "
@@ -224,7 +226,7 @@ def run(args: argparse.Namespace) -> int:
     opts = _options(args)
     if len(args.files) == 1 and not args.csv:
         # One file: errors propagate, so the CLI prints one line and exits 1.
-        res = roughness(args.files[0], **opts)
+        res = roughness(read_scan(args.files[0], args), **opts)
         rec = {"file": args.files[0], "status": "ok", **res.to_json()}
         if args.json:
             emit_json([rec])  # one shape whatever the number of files: a list of records
@@ -232,7 +234,8 @@ def run(args: argparse.Namespace) -> int:
             _print_table(rec)
         return 0
     # roughness_file returns error rows itself; batch_map adds rows for dead workers
-    records = batch_map(partial(roughness_file, **opts), args.files, workers=args.workers,
+    records = batch_map(partial(roughness_file, read_options=read_options(args), **opts),
+                        args.files, workers=args.workers,
                         scheduler=args.scheduler, desc="roughness")
     failed = [r for r in records if r["status"] != "ok"]
     for r in failed:

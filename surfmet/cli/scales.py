@@ -7,6 +7,12 @@ import argparse
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, check_output, emit_json, length, log, save_figure
+from surfmet.cli._scan_options import (
+    add_scan_options,
+    print_caveats,
+    read_options,
+    scan_caveats,
+)
 
 EPILOG = """examples:
   surfmet scales surface.zip
@@ -33,6 +39,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan files or containers")
     add_measurement_arguments(p, 5)
+    add_scan_options(p)
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="write the figure (one curve per measurement and the average)")
     add_json_flag(p)
@@ -48,20 +55,26 @@ def add_measurement_arguments(p: argparse.ArgumentParser, per_decade: int) -> No
                    help=f"points per decade of the distance grid (default {per_decade})")
 
 
-def read_measurements(files: list[str]) -> list[Any]:
-    """Every measurement of every FILE (containers give all of theirs)."""
+def read_measurements(files: list[str], **read_options: Any) -> list[Any]:
+    """Every measurement of every FILE (containers give all of theirs, unless ``channel=``
+    picks one), read with ``read_options`` (:func:`surfmet.read`'s ``height_unit=``,
+    ``dx=``, ``dy=``, ``channel=``)."""
     from pathlib import Path
 
     import surfmet
+    from surfmet.io.calibration import state_units
     from surfmet.io.container import _is_container, read_container
 
+    units = {k: v for k, v in read_options.items() if k != "channel"}
     out = []
     for f in files:
         head = Path(f).read_bytes()[:4] if Path(f).is_file() else b""
-        if head == b"PK\x03\x04" and _is_container(Path(f).read_bytes()):
-            out.extend(read_container(f))
+        if (head == b"PK\x03\x04" and read_options.get("channel") is None
+                and _is_container(Path(f).read_bytes())):
+            out.extend(state_units(s, f"{f}:{s.metadata.get('member')}", **units)
+                       for s in read_container(f))
         else:
-            out.append(surfmet.read(f))
+            out.append(surfmet.read(f, **read_options))
     return out
 
 
@@ -70,10 +83,10 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.scale_dependent import analyze_scales
 
     check_output(args.plot, "--plot")
-    scans = read_measurements(args.files)
+    scans = read_measurements(args.files, **read_options(args))
     log(f"{len(scans)} measurement(s) from {len(args.files)} file(s)")
     a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
-    rec = {"files": args.files, **scales_record(a)}
+    rec = {"files": args.files, **scales_record(a), "caveats": scan_caveats(*scans)}
     if args.plot:
         from surfmet.plots.scales import scales_figure
 
@@ -82,6 +95,7 @@ def run(args: argparse.Namespace) -> int:
         emit_json(rec)
         return 0
     _print(a)
+    print_caveats(rec["caveats"])
     return 0
 
 

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log
+from surfmet.cli._scan_options import add_scan_options, print_caveats, read_scan, scan_caveats
 
 EPILOG = """examples:
   surfmet show plate.x3p -o plate.png
@@ -45,6 +47,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("file", help="scan file")
+    add_scan_options(p)
     p.add_argument("-o", "--output", required=True, metavar="IMAGE", help="image to write")
     p.add_argument("--2d", dest="two_d", action="store_true",
                    help="matplotlib height map instead of the 3D view")
@@ -65,14 +68,14 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    import surfmet
     from surfmet.errors import SurfmetInputError
     from surfmet.model import Profile
 
     out = Path(args.output)
     check_output(out, "-o")
-    scan = surfmet.read(args.file, format=args.format)
-    rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level}
+    scan = read_scan(args.file, args)
+    rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level,
+                           "caveats": scan_caveats(scan)}
     if isinstance(scan, Profile):
         import profiles
         from surfmet.plots._style import close
@@ -112,6 +115,7 @@ def run(args: argparse.Namespace) -> int:
         emit_json(rec)
     else:
         log(f"wrote {out}")
+        print_caveats(rec["caveats"], sys.stderr)
     return 0
 
 

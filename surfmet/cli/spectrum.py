@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     pressure,
     save_figure,
 )
+from surfmet.cli._scan_options import add_scan_options, read_options
 from surfmet.cli.scales import add_measurement_arguments
 
 EPILOG = """examples:
@@ -67,6 +68,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="hardness of the softer body (default: the materials' table value)")
     p.add_argument("--plot", metavar="OUT.png", default=None, help="write the PSD plot")
     add_measurement_arguments(p, 10)
+    add_scan_options(p)
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
@@ -78,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.records import spectrum_record
 
     check_output(args.plot, "--plot")
-    scans = read_measurements(args.files)
+    scans = read_measurements(args.files, **read_options(args))
     if len(scans) > 1:
         return _run_several(args, scans)
     scan, per, level, preparation = prepared_scan(scans[0], periodic=periodic_flag(args.periodic),

@@ -16,6 +16,7 @@ from surfmet.cli._common import (
     pressure,
     show_progress,
 )
+from surfmet.cli._scan_options import add_scan_options, files_caveats, read_options
 
 EPILOG = """examples:
   surfmet sweep --task hertz-check --plates plate.x3p --balls ball.x3p --radius 20mm \\
@@ -85,6 +86,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="cap the pressure (contact) / the flow pressure (hertz-check)")
     p.add_argument("--grid", type=int, default=None, metavar="N",
                    help="cells per side (default: the scans' own pixel)")
+    add_scan_options(p, ("plate", "ball"))
     add_spikes_argument(p)
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="local processes (default: one per CPU; 1 = serial)")
@@ -117,7 +119,11 @@ def run(args: argparse.Namespace) -> int:
                         plates=args.plates or [None], balls=args.balls or [None],
                         materials=args.materials or ["steel,aluminium"],
                         positions=args.positions or [None], grid=args.grid,
-                        hardness=args.hardness, spikes=args.spikes)
+                        hardness=args.hardness, spikes=args.spikes,
+                        plate_options=read_options(args, "plate"),
+                        ball_options=read_options(args, "ball"))
+    # each file read once here: a unit it contradicts is refused before any solve
+    caveats = files_caveats(args, {"plate": args.plates, "ball": args.balls})
     with RowWriter(args.task, args.csv, json_path, resume=args.resume) as writer:
         skip = writer.done
         todo = sum(1 for it in items if it.key not in skip)
@@ -130,7 +136,8 @@ def run(args: argparse.Namespace) -> int:
         from surfmet.cli._common import emit_json
         from surfmet.sweep import json_row
 
-        emit_json({"task": args.task, "rows": [json_row(r) for r in rows]})
+        emit_json({"task": args.task, "rows": [json_row(r) for r in rows],
+                   "caveats": caveats})
     log(f"{len(rows)} items run, {len(failed)} failed"
         + (f" (first: {failed[0]['error'][0]})" if failed else ""))
     return 1 if failed else 0

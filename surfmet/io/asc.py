@@ -17,9 +17,10 @@ Three flavours are recognised:
 * **Gwyddion ASCII export**: ``# Channel:``, ``# Width: 10 µm``, ``# Height: 10 µm``,
   ``# Value units: m`` comment lines, then the matrix.
 * **Bare matrix** of numbers separated by blanks, commas, semicolons or tabs. It carries
-  no pixel size: it is read with ``dx = dy = 1`` (metres) and
-  ``metadata["lateral_calibrated"] = False``; pass ``dx=``, ``dy=`` (metres) and
-  ``height_unit=`` (default ``"m"``) to calibrate it.
+  no unit and no pixel size: it is read as heights in metres with ``dx = dy = 1`` m, both
+  marked assumed (:class:`surfmet.model.Calibration`); ``height_unit=`` and ``dx=`` /
+  ``dy=`` of :func:`surfmet.read` state them (a unit the header states cannot be
+  contradicted: it is refused).
 
 ``nan``, ``bad``, ``inf`` and ``-inf`` tokens mark non-measured points (NaN).
 """
@@ -40,8 +41,9 @@ from surfmet.io._binary import (
     format_error,
     looks_like_text,
 )
+from surfmet.io.calibration import contradiction
 from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.model import ASSUMED, STATED, USER, Topography
 from surfmet.units import length_factor
 
 FORMAT = "asc"
@@ -154,6 +156,8 @@ def _matrix_header(lines: list[str], first: int, name: str
         line = lines[start].strip()
         if (pm := _PIXEL_RE.match(line)) is not None:
             unit = pm.group(2) or "m"
+            if not pm.group(2):
+                header["pixel_unit_missing"] = True  # a bare number: metres assumed
             try:
                 step = float(pm.group(1)) * length_factor(unit)
             except SurfmetInputError:
@@ -195,8 +199,8 @@ def _gwyddion_header(lines: list[str], start: int) -> tuple[int, dict[str, str]]
 
 
 def _pixel_sizes(flavour: str, header: dict[str, Any], step: float | None, nx: int, ny: int,
-                 dx: float | None, dy: float | None, name: str) -> tuple[float, float, bool]:
-    """Pixel sizes from the user, else the header, else 1 m; and whether they are known."""
+                 name: str) -> tuple[float, float, bool]:
+    """Pixel sizes from the header, else 1 m; and whether the header states them."""
     sx = sy = None
     if flavour == "gwyddion":
         if "width" in header:
@@ -205,11 +209,7 @@ def _pixel_sizes(flavour: str, header: dict[str, Any], step: float | None, nx: i
             sy = _length(header["height"], name, "Height") / ny
     elif step is not None:
         sx = sy = step
-    lateral_calibrated = sx is not None or dx is not None
-    if dx is not None:
-        sx = float(dx)
-    if dy is not None:
-        sy = float(dy)
+    lateral_calibrated = sx is not None and not header.get("pixel_unit_missing")
     if sx is None:
         sx = 1.0
     if sy is None:
@@ -221,10 +221,24 @@ def _pixel_sizes(flavour: str, header: dict[str, Any], step: float | None, nx: i
 
 def _height_factor(flavour: str, header: dict[str, Any], zfactor: float | None,
                    zunit_text: str | None, height_unit: str | None, name: str
-                   ) -> tuple[float, str]:
-    """Factor from file values to metres, and the unit it came from."""
+                   ) -> tuple[float, str, str]:
+    """Factor from file values to metres, the unit it came from, and who stated it."""
+    stated = zfactor is not None or (flavour == "matrix" and "data_unit" in header) or (
+        flavour == "gwyddion" and "value units" in header)
     if height_unit is not None:
-        return length_factor(height_unit), height_unit
+        if stated:
+            factor, unit = _stated_height(flavour, header, zfactor, zunit_text, name)
+            same = length_factor(unit)  # the stated unit (after any conversion factor)
+            if abs(same - length_factor(height_unit)) > 1e-12 * same:
+                raise contradiction(name, "height unit", unit, height_unit)
+            return factor, unit, STATED
+        return length_factor(height_unit), height_unit, USER
+    factor, unit = _stated_height(flavour, header, zfactor, zunit_text, name)
+    return factor, unit, STATED if stated else ASSUMED
+
+
+def _stated_height(flavour: str, header: dict[str, Any], zfactor: float | None,
+                   zunit_text: str | None, name: str) -> tuple[float, str]:
     if zfactor is not None:
         return zfactor, zunit_text or "m"
     if flavour == "matrix" and "data_unit" in header:
@@ -246,8 +260,7 @@ def _height_factor(flavour: str, header: dict[str, Any], zfactor: float | None,
 
 @register_reader(FORMAT, extensions=("asc", "txt", "mat"), description="text height matrix",
                  magic=_is_asc, priority=70)
-def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = None,
-           height_unit: str | None = None) -> Topography:
+def decode(buf: bytes, name: str, height_unit: str | None = None) -> Topography:
     """Read a text height matrix (see the module docstring for the flavours)."""
     lines = decode_text(buf).splitlines()
     header: dict[str, Any] = {}
@@ -276,12 +289,19 @@ def decode(buf: bytes, name: str, dx: float | None = None, dy: float | None = No
     metadata: dict[str, Any] = {"layout": flavour}
     if header:
         metadata["header"] = header
-    sx, sy, lateral_calibrated = _pixel_sizes(flavour, header, step, nx, ny, dx, dy, name)
-    factor, unit_name = _height_factor(flavour, header, zfactor, zunit_text, height_unit, name)
+    sx, sy, lateral_calibrated = _pixel_sizes(flavour, header, step, nx, ny, name)
+    factor, unit_name, height_source = _height_factor(flavour, header, zfactor, zunit_text,
+                                                      height_unit, name)
+    if flavour == "matrix" and "lateral_unit" in header:
+        lateral_unit = header["lateral_unit"]
+    else:
+        lateral_unit = "m" if lateral_calibrated else ""
     metadata.update({
         "height_unit": unit_name,
-        "lateral_unit": header.get("lateral_unit", "m") if flavour == "matrix" else "m",
+        "lateral_unit": lateral_unit,
         "lateral_calibrated": bool(lateral_calibrated),
+        "height_unit_source": height_source,
+        "lateral_unit_source": STATED if lateral_calibrated else ASSUMED,
     })
     if flavour == "matrix" and "data_unit" in header:
         metadata["data_unit"] = header["data_unit"]

@@ -41,7 +41,7 @@ from surfmet.errors import SurfmetFormatError
 from surfmet.io._binary import format_error
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip, read_member
 from surfmet.io.registry import read_bytes, register_reader
-from surfmet.model import Profile, Topography
+from surfmet.model import STATED, Profile, Topography, unit_sources
 from surfmet.units import length_factor, quantity
 
 FORMAT = "ce"
@@ -118,6 +118,8 @@ def _measurement(zf: Any, entry: dict[str, Any], index: int, name: str
         # Coordinate text carries no unit: meta.yml gives it.
         options["unit"] = unit
         scan = read_bytes(data, format=fmt, name=label, **options)
+        # stated by the container's meta.yml, not by the user
+        scan = scan.with_metadata(**unit_sources(STATED, STATED))
     if "data_source" in entry and fmt not in _TEXT_FORMATS and int(entry["data_source"]):
         scan = read_bytes(data, format=fmt, name=label, channel=int(entry["data_source"]))
     if isinstance(scan, Profile) and fmt in _TEXT_FORMATS:
@@ -152,13 +154,29 @@ def decode_all(buf: bytes, name: str) -> list[Profile | Topography]:
 @register_reader(FORMAT, extensions=("zip",),
                  description="contact.engineering container (zip with meta.yml)",
                  magic=_is_container, priority=12)
-def decode(buf: bytes, name: str, measurement: int = 0) -> Profile | Topography:
-    """Read one measurement of a container (default the first)."""
+def decode(buf: bytes, name: str, measurement: int | None = None,
+           channel: int | str | None = None) -> Profile | Topography:
+    """Read one measurement of a container (default the first).
+
+    ``channel`` (``--channel``) is the same choice as ``measurement``: an index, or a
+    measurement's name as ``meta.yml`` gives it. ``metadata["channels"]`` names them all.
+    """
     scans = decode_all(buf, name)
-    if not 0 <= int(measurement) < len(scans):
-        raise format_error(name, FORMAT, f"measurement {measurement} does not exist: the "
-                           f"container holds {len(scans)}")
-    return scans[int(measurement)]
+    names = [str(s.metadata.get("name")) for s in scans]
+    choice = channel if measurement is None else measurement
+    if choice is None:
+        index = 0
+    elif isinstance(choice, str) and choice in names:
+        index = names.index(choice)
+    elif isinstance(choice, int) or str(choice).isdigit():
+        index = int(choice)
+    else:
+        raise format_error(name, FORMAT, f"no measurement named {choice!r}; the container "
+                           f"holds {names}")
+    if not 0 <= index < len(scans):
+        raise format_error(name, FORMAT, f"measurement {index} does not exist: the "
+                           f"container holds {len(scans)} {names}")
+    return scans[index].with_metadata(channel=names[index], channels=names)
 
 
 def read_container(path: str | os.PathLike[str]) -> list[Profile | Topography]:

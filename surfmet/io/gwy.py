@@ -45,6 +45,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import quantity
@@ -257,6 +258,7 @@ def decode(buf: bytes, name: str, channel: int | str | None = None) -> Topograph
         "lateral_unit": xyunit or "",
         "lateral_calibrated": bool(xyunit),
         "units_missing": units_missing,
+        **assumed(not zunit, not xyunit),
         "x_offset": quantity(_number(field.get("xoff")) * (xyf or 1.0), "m"),
         "y_offset": quantity(_number(field.get("yoff")) * (xyf or 1.0), "m"),
         "channels": [{"number": n, "title": t, "unit": _unit(f, "si_unit_z") or ""}

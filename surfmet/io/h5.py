@@ -4,9 +4,10 @@ The file (HDF5 file format specification 3.0, read through ``h5py``) holds two-d
 numeric data sets at its root, each one channel (the Challenge's files hold one, named
 ``surface``). As in SurfaceTopography's ``H5Reader``, the first array index is x, so a
 data set of shape (640, 480) is a map of nx = 640 by ny = 480 points. HDF5 stores neither
-units nor pixel sizes: the map is read with ``dx = dy = 1`` and
-``lateral_calibrated = False`` unless ``dx=`` / ``dy=`` (metres) and ``height_unit=`` are
-given. The default channel is the first data set in the file's order.
+units nor pixel sizes: the map is read with heights taken as metres and a pixel of 1 m,
+both marked assumed (:class:`surfmet.model.Calibration`); ``height_unit=`` and ``dx=`` /
+``dy=`` of :func:`surfmet.read` state them. The default channel is the first data set in
+the file's order.
 
 Before a data set is read, its declared size is checked against the bytes the file holds
 for it (raw storage) or against what compression can expand them to, so a damaged header
@@ -22,9 +23,9 @@ import numpy as np
 
 from surfmet.errors import SurfmetFormatError
 from surfmet.io._binary import MAX_DEFLATE_RATIO, MAX_POINTS, format_error
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
-from surfmet.units import length_factor
 
 FORMAT = "h5"
 MAGIC = b"\x89HDF\r\n\x1a\n"
@@ -63,22 +64,16 @@ def _load(dset: Any, name: str) -> np.ndarray:
 
 @register_reader(FORMAT, extensions=("h5", "hdf5", "hdf"), description="HDF5 height map",
                  magic=_is_h5, priority=10)
-def decode(buf: bytes, name: str, channel: int | str | None = None, dx: float | None = None,
-           dy: float | None = None, height_unit: str = "m") -> Topography:
+def decode(buf: bytes, name: str, channel: int | str | None = None) -> Topography:
     """Read one two-dimensional data set of an HDF5 file.
 
     Parameters
     ----------
     channel : int or str, optional
         Index among the two-dimensional data sets or a data set name. Default: the first.
-    dx, dy : float, optional
-        Pixel sizes in metres (the file has none).
-    height_unit : str
-        Unit of the stored values (default metres).
     """
     import h5py
 
-    factor = length_factor(height_unit)
     try:
         with h5py.File(io.BytesIO(buf), "r") as f:
             maps = _maps(f)
@@ -98,18 +93,20 @@ def decode(buf: bytes, name: str, channel: int | str | None = None, dx: float | 
                 raise format_error(name, FORMAT, f"no data set named {channel!r}; data sets: "
                                    f"{names}")
             z = _load(maps[index][1], name)
+            grids = [[int(d.shape[0]), int(d.shape[1])] for _, d in maps]  # nx, ny each
     except SurfmetFormatError:
         raise
     except _H5_ERRORS as exc:
         raise format_error(name, FORMAT, f"unreadable HDF5 file ({type(exc).__name__}: "
                            f"{str(exc)[:200]})") from None
     with np.errstate(invalid="ignore", over="ignore"):
-        heights = z.T * factor
+        heights = z.T.copy()
     heights[~np.isfinite(heights)] = np.nan
+    # HDF5 stores neither: heights taken as metres, a pixel of 1 m, both said to be assumed
     md: dict[str, Any] = {"channel": names[index], "channels": names,
-                          "height_unit": height_unit, "lateral_calibrated": dx is not None}
-    sx = 1.0 if dx is None else float(dx)
-    return Topography(heights, sx, sx if dy is None else float(dy), md)
+                          "channel_grids": grids, "height_unit": "m", "lateral_unit": "",
+                          "lateral_calibrated": False, **assumed(True, True)}
+    return Topography(heights, 1.0, 1.0, md)
 
 
 __all__ = ["decode"]

@@ -29,6 +29,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 from surfmet.units import length_factor
@@ -158,7 +159,8 @@ def decode(buf: bytes, name: str, channel: int | str | None = None) -> Topograph
     dy = check_step(abs(sfa[1]) * (xf or 1.0), name, FORMAT, "y delta (sfA[1])")
     md: dict[str, Any] = {"channel": names[index], "channels": names, "height_unit": data_unit,
                           "lateral_unit": dim_unit or "m",
-                          "lateral_calibrated": xf is not None}
+                          "lateral_calibrated": xf is not None,
+                          **assumed(zf is None, xf is None)}
     if zf is None:
         md["units_missing"] = True
     if note:

@@ -52,6 +52,7 @@ from typing import Any
 import numpy as np
 
 from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Topography
 
@@ -145,6 +146,7 @@ def _metadata(h: dict[str, Any], factor: float, calibrated: bool) -> dict[str, A
         "height_unit": "m",
         "lateral_unit": "m",
         "lateral_calibrated": calibrated,
+        **assumed(False, not calibrated),
         "wavelength": float(h["wavelength"]),
         "interferometric_scale_factor": float(h["scale"]),
         "obliquity_factor": float(h["obliquity"]),

@@ -21,6 +21,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.io._binary import ByteReader, check_grid, check_step
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 from surfmet.units import length_factor
@@ -163,6 +164,8 @@ def decode(buf: bytes, name: str) -> Topography | Profile:
         "height_unit": hv.get("unit", ""),
         "lateral_unit": h.vars.get(axes[0], {}).get("attrs", {}).get("unit", hv.get("unit", "")),
         "lateral_calibrated": all(f is not None for _, f in steps) or zf is not None,
+        # an axis without its own unit takes the heights' (SurfaceTopography's layout)
+        **assumed(zf is None, not (all(f is not None for _, f in steps) or zf is not None)),
     }
     if zf is None:
         md["units_missing"] = True

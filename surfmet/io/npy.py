@@ -4,9 +4,9 @@
 (areal, shape (ny, nx)) or ``z`` and optionally ``x`` (profile), ``dx``, ``dy`` and
 ``metadata`` (a JSON string). All values are SI, so a write/read round trip is exact.
 
-A bare ``.npy`` array carries no pixel size: it is read with ``dx = dy = 1`` and
-``lateral_calibrated = False``; pass ``dx=`` / ``dy=`` (metres) to set them, and
-``height_unit=`` when the values are not metres.
+A bare ``.npy`` array carries no unit and no pixel size: it is read as heights in metres
+with ``dx = dy = 1`` m, both marked assumed (:class:`surfmet.model.Calibration`);
+``height_unit=`` and ``dx=`` / ``dy=`` of :func:`surfmet.read` state them.
 """
 
 from __future__ import annotations
@@ -19,9 +19,10 @@ import numpy as np
 
 from surfmet.io._binary import MAX_POINTS, format_error
 from surfmet.io._zip import ZIP_MAGIC
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader, register_writer
 from surfmet.model import Profile, Topography
-from surfmet.units import jsonable, length_factor
+from surfmet.units import jsonable
 
 _NPY_MAGIC = b"\x93NUMPY"
 
@@ -71,20 +72,16 @@ def _load_npy(buf: bytes, name: str) -> np.ndarray:
 
 @register_reader("npy", extensions=("npy",), description="NumPy array of heights",
                  magic=_is_npy, priority=10)
-def decode_npy(buf: bytes, name: str, dx: float | None = None, dy: float | None = None,
-               height_unit: str = "m") -> Topography | Profile:
+def decode_npy(buf: bytes, name: str) -> Topography | Profile:
     """Read a bare NumPy array: 2D becomes a Topography, 1D a Profile."""
     z = _load_npy(buf, name)
-    factor = length_factor(height_unit)
-    if factor != 1.0:
-        z *= factor  # in place: the heights are the one copy a read makes
     z.flags.writeable = False  # the model keeps a read-only float64 array as it is
-    md: dict[str, Any] = {"height_unit": height_unit, "lateral_calibrated": dx is not None}
+    md: dict[str, Any] = {"height_unit": "m", "lateral_unit": "", "lateral_calibrated": False,
+                          **assumed(True, True)}
     if z.ndim == 2:
-        sx = 1.0 if dx is None else float(dx)
-        return Topography(z, sx, sx if dy is None else float(dy), md)
+        return Topography(z, 1.0, 1.0, md)
     if z.ndim == 1:
-        return Profile(z, 1.0 if dx is None else float(dx), metadata=md)
+        return Profile(z, 1.0, metadata=md)
     raise format_error(name, "npy", f"expected a 1D or 2D array, got shape {z.shape}")
 
 

@@ -184,10 +184,13 @@ def read_bytes(
     spec = _FORMATS.get(fmt)
     if spec is None or spec.decode is None:
         raise SurfmetFormatError(f"{name}: no reader for format {fmt!r}; known: {sorted(_FORMATS)}")
+    stated = _generic_options(spec, options, name)
     _check_options(spec, options)
+    from surfmet.io.calibration import UnitContradiction
+
     try:
         scan = spec.decode(buf, name, **options)
-    except SurfmetFormatError:
+    except (SurfmetFormatError, UnitContradiction):
         raise
     except SurfmetError as exc:
         raise SurfmetFormatError(f"{name}: inconsistent {fmt} file: {exc}") from exc
@@ -201,7 +204,39 @@ def read_bytes(
         raise SurfmetFormatError(
             f"{name}: corrupted or truncated {fmt} file ({type(exc).__name__}: {exc})"
         ) from exc
+    if isinstance(scan, (Topography, Profile)) and stated:
+        from surfmet.io.calibration import state_units
+
+        scan = state_units(scan, name, **stated)
     return _validated(scan, fmt, name)
+
+
+#: The options every read takes, whatever the format: the units a file may not state.
+GENERIC_OPTIONS = ("height_unit", "dx", "dy")
+
+
+def _accepts(spec: FormatSpec, option: str) -> bool:
+    params = inspect.signature(spec.decode).parameters
+    return option in params or any(p.kind is inspect.Parameter.VAR_KEYWORD
+                                   for p in params.values())
+
+
+def _generic_options(spec: FormatSpec, options: dict[str, Any], name: str) -> dict[str, Any]:
+    """Take out of ``options`` the units the user states that the reader does not take
+    itself (:func:`surfmet.io.calibration.state_units` applies them after the read), and
+    refuse ``channel`` for a format that holds a single one."""
+    if options.get("channel") is not None and not _accepts(spec, "channel"):
+        raise SurfmetInputError(f"{name}: a {spec.name} file holds a single channel: no "
+                                f"channel can be chosen (got {options['channel']!r})")
+    if options.get("channel", 0) is None:
+        options.pop("channel")
+    stated = {}
+    for key in GENERIC_OPTIONS:
+        if key in options and not _accepts(spec, key):
+            value = options.pop(key)
+            if value is not None:
+                stated[key] = value
+    return stated
 
 
 def _check_options(spec: FormatSpec, options: dict[str, Any]) -> None:
@@ -241,7 +276,7 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     if span is not None:
         md["height_range"] = (f"{name}: {span}: the file is damaged (one flipped exponent bit "
                               "turns 2 µm into 1e302 m) or its height unit is wrong (for a "
-                              "bare array, pass height_unit=)")
+                              "file that states none, give it: --height-unit)")
     md.setdefault("format", fmt)
     return scan.replace(metadata=md)
 
@@ -256,7 +291,12 @@ def read(path: str | os.PathLike[str], format: str | None = None, **options: Any
     format : str, optional
         Registry name; overrides detection (see :func:`formats`).
     **options
-        Passed to the format's reader (for example ``channel=`` for Gwyddion files).
+        Passed to the format's reader (for example ``channel=`` for multi-channel files;
+        refused by a single-channel format). Every format takes ``height_unit=`` (the unit
+        of the file's height numbers) and ``dx=`` / ``dy=`` (the pixel, m) for a file that
+        does not state them: the scan then records them as stated by the user
+        (:class:`surfmet.model.Calibration`); a file that states a different one refuses
+        them (:mod:`surfmet.io.calibration`).
 
     Returns
     -------

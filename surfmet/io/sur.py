@@ -70,6 +70,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.io._binary import MAX_DEFLATE_RATIO, MAX_POINTS, ByteReader, check_grid, check_step
+from surfmet.io.calibration import assumed
 from surfmet.io.registry import register_reader
 from surfmet.model import Profile, Topography
 from surfmet.units import length_factor
@@ -303,6 +304,7 @@ def _build(r: ByteReader, h: dict[str, Any], data_pos: int, index: int, kind: st
         "height_unit": uz,
         "lateral_unit": ux,
         "lateral_calibrated": calibrated,
+        **assumed(fz is None, not calibrated),
         "acquisition": ACQUISITION_TYPES.get(h["acquisition"], str(h["acquisition"])),
         "bits_per_point": h["bits"],
         "z_spacing": scale,

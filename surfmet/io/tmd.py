@@ -9,8 +9,10 @@ nx ``float32`` heights.
 **Units.** The file states none. TrueMap scanners image fields of about 20 mm, and the sample's
 18.96 x 18.96 field with heights 0 to 1 is a millimetre-scale relief, so lengths and heights are
 read as millimetres (SurfaceTopography 1.27 also reports mm; its current reader says µm, which
-would make a 19 µm field). Pass ``unit="um"`` to read them as micrometres instead. Non-finite
-heights become NaN.
+would make a 19 µm field); both are marked assumed (:class:`surfmet.model.Calibration`), so
+every output says so. Pass ``unit="um"`` to read them as micrometres instead (then stated by
+the user), or state either alone with ``height_unit=`` / ``dx=``. Non-finite heights become
+NaN.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import numpy as np
 
 from surfmet.io._binary import ByteReader, check_grid, check_step
 from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.model import ASSUMED, USER, Topography
 from surfmet.units import length_factor
 
 FORMAT = "tmd"
@@ -34,14 +36,17 @@ def _is_tmd(buf: bytes) -> bool:
 
 @register_reader(FORMAT, extensions=("tmd",), description="TrueMap data file v2.0",
                  magic=_is_tmd, priority=30)
-def decode(buf: bytes, name: str, unit: str = "mm") -> Topography:
+def decode(buf: bytes, name: str, unit: str | None = None) -> Topography:
     """Read a TrueMap height map.
 
     Parameters
     ----------
-    unit : str
-        Unit of the file's lengths and heights (the file does not say): ``"mm"`` (default).
+    unit : str, optional
+        Unit of the file's lengths and heights (the file does not say); default ``"mm"``,
+        assumed.
     """
+    source = ASSUMED if unit is None else USER
+    unit = "mm" if unit is None else unit
     factor = length_factor(unit)
     r = ByteReader(buf, name, FORMAT)
     if not _is_tmd(buf):
@@ -57,7 +62,8 @@ def decode(buf: bytes, name: str, unit: str = "mm") -> Topography:
     dx = check_step(float(lx) * factor / nx, name, FORMAT, "x pixel size")
     dy = check_step(float(ly) * factor / ny, name, FORMAT, "y pixel size")
     md: dict[str, Any] = {"vendor": "TrueMap", "height_unit": unit, "lateral_unit": unit,
-                          "lateral_calibrated": True, "units_assumed": True,
+                          "lateral_calibrated": True, "units_assumed": source == ASSUMED,
+                          "height_unit_source": source, "lateral_unit_source": source,
                           "x_offset": float(ox) * factor, "y_offset": float(oy) * factor}
     if comment:
         md["comment"] = comment

@@ -11,8 +11,10 @@ with ``#`` or ``%`` are skipped; ``nan`` marks a non-measured height.
   on a regular grid (constant steps along x and y, in any order); a grid node without a
   point becomes NaN. A grid node given twice, or points off the grid, are errors.
 
-Units: ``unit=`` is the unit of x and y (default ``"m"``), ``height_unit=`` the unit of z
-(default: the same as ``unit``). Positions are shifted to start at 0; the original origin
+Units: the text states none. ``unit=`` is the unit of x and y (default ``"m"``, assumed),
+``height_unit=`` the unit of z (default: the same as ``unit``); what is not given is marked
+assumed (:class:`surfmet.model.Calibration`), what is given stated by the user.
+Positions are shifted to start at 0; the original origin
 is kept in ``metadata["x_offset"]`` (and ``"y_offset"``).
 
 Detection is deliberately weak (a high ``priority`` number): any format with a specific
@@ -34,7 +36,7 @@ from surfmet.io._binary import (
     positions_profile,
 )
 from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
+from surfmet.model import ASSUMED, USER, Profile, Topography
 from surfmet.units import length_factor, quantity
 
 FORMAT = "xyz"
@@ -214,7 +216,7 @@ def _grid(x: np.ndarray, y: np.ndarray, z: np.ndarray, name: str,
 
 @register_reader(FORMAT, extensions=("xyz", "csv", "txt", "dat"),
                  description="x z / x y z coordinate text", magic=_is_xyz, priority=90)
-def decode(buf: bytes, name: str, unit: str = "m",
+def decode(buf: bytes, name: str, unit: str | None = None,
            height_unit: str | None = None) -> Profile | Topography:
     """Read coordinate text (see the module docstring).
 
@@ -225,6 +227,9 @@ def decode(buf: bytes, name: str, unit: str = "m",
     height_unit : str, optional
         Unit of the z column; default ``unit``.
     """
+    sources = {"height_unit_source": ASSUMED if unit is None and height_unit is None else USER,
+               "lateral_unit_source": ASSUMED if unit is None else USER}
+    unit = "m" if unit is None else unit
     lateral = _factor(unit, "unit=")
     zunit = unit if height_unit is None else height_unit
     vertical = _factor(zunit, "height_unit=")
@@ -235,6 +240,7 @@ def decode(buf: bytes, name: str, unit: str = "m",
         "height_unit": zunit,
         "lateral_unit": unit,
         "lateral_calibrated": True,
+        **sources,
         "delimiter": _DELIMS.get(delim, "whitespace") if delim else "whitespace",
     }
     if table.shape[1] == 2:

@@ -180,7 +180,9 @@ def _scan_name(scan: Any) -> str | None:
         return None
     from surfmet.model import Topography
 
-    return "(in memory)" if isinstance(scan, Topography) else str(scan)
+    if isinstance(scan, Topography):  # read by the caller: its file, when it has one
+        return scan.metadata.get("source") or "(in memory)"
+    return str(scan)
 
 
 def _leg(branch: Any) -> dict[str, Any]:

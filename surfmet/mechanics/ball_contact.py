@@ -92,7 +92,11 @@ def _hardness(hardness: float | None, plastic: bool, mats: Any) -> float | None:
 
 
 def _file(obj: Any) -> str | None:
-    return None if obj is None else str(obj) if isinstance(obj, (str, Path)) else None
+    if obj is None:
+        return None
+    if isinstance(obj, (str, Path)):
+        return str(obj)
+    return getattr(obj, "metadata", {}).get("source")  # a scan read by the caller
 
 
 def grid_warnings(res: Any) -> list[str]:

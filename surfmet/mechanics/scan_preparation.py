@@ -156,7 +156,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
     for name, scan in (("plate", plate), ("ball", ball)):
         if scan is not None:
             # what the file does not state about its units reaches every result built on it
-            notes.extend(f"CAVEAT ({name} scan): {c}" for c in unit_caveats(scan.metadata))
+            notes.extend(f"CAVEAT ({name} scan): {c}" for c in unit_caveats(scan))
             cleaned[name], removed[name], note = clean_spikes(scan, name, mode)
             if note:
                 notes.append(note)

@@ -334,7 +334,7 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
 
     settings = {"window": spec.settings.get("window"), "periodic_detected": detected,
                 "dx": topo.dx, "dy": topo.dy, "nx": topo.nx, "ny": topo.ny,
-                "caveats": [*unit_caveats(topo.metadata),
+                "caveats": [*unit_caveats(topo),
                             *spectrum_caveats(hfit, summits.h_rms, h_r)]}
     return Spectrum(psd=spec, periodic=per, hurst=hfit, roll_off=roll, short_cutoff=short,
                     h_rms=summits.h_rms, slope_rms=summits.slope_rms,

@@ -28,6 +28,7 @@ def scan_record(scan: Any) -> dict[str, Any]:
     else:
         out["length"] = quantity(scan.length, "m")
         out["uniform"] = scan.is_uniform
+    out["units"] = scan.calibration.record()  # which units the file states, or assumed
     out["metadata"] = md
     return out
 
