@@ -29,7 +29,7 @@ import numpy as np
 from surfmet.errors import SurfmetInputError
 from surfmet.measurements import DETREND_LEVELS, Measurement, read_measurement
 from surfmet.model import Profile, Topography, require_measurement
-from surfmet.profile_evaluation import evaluate_profile
+from surfmet.profile_evaluation import _profile_level, evaluate_profile  # noqa: F401  (show uses it)
 from surfmet.roughness_result import RoughnessResult, consistent_diagnosis, unit_caveats
 from surfmet.units import parse_length, parse_length_range
 
