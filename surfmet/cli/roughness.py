@@ -13,7 +13,7 @@ from surfmet.cli._common import add_json_flag, check_output, emit_json, log, pos
 EPILOG = """examples:
   surfmet roughness plate.x3p
   surfmet roughness plate.x3p --level plane --json
-  surfmet roughness plate.x3p --lc 0.8mm --ls 2.5um --spikes
+  surfmet roughness plate.x3p --lc 0.8mm --ls 25um --spikes
   surfmet roughness ball.nms --level sphere
   surfmet roughness plate.x3p --profile row:100 --lc 0.25mm
   surfmet roughness trace.csv --standard iso4287 --lc 2.5mm --n-sampling 4
