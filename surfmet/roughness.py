@@ -191,6 +191,11 @@ def roughness(
     if why_level:
         res.settings.setdefault("notes", []).insert(
             0, f"levelling {res.settings.get('level')}: {why_level}")
+    if isinstance(scan, (str, os.PathLike)) and data.metadata.get("container"):
+        res.settings.setdefault("notes", []).insert(
+            0, f"measurement {data.metadata.get('measurement', 0)} "
+            f"({data.metadata.get('member')}) of the container, as surfmet.read gives it: "
+            "`surfmet roughness` and roughness_many evaluate every measurement")
     return res
 
 

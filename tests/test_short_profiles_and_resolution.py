@@ -105,3 +105,10 @@ def test_the_sampling_rule_holds_at_its_bound():
     assert math.isfinite(profile_parameters(z, 1e-6, n_sampling=10).Rz)
     with pytest.raises(ProfileError, match="use at most 10"):
         profile_parameters(z, 1e-6, n_sampling=11)
+
+
+def test_the_api_on_a_container_says_which_measurement(realdata):
+    # roughness(path) reads one scan, the container's first (as surfmet.read does): said
+    res = roughness(realdata("container-2.zip"))
+    assert res.settings["notes"][0].startswith("measurement 0 (80_Scale10.472")
+    assert "every measurement" in res.settings["notes"][0]
