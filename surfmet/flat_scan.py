@@ -43,13 +43,6 @@ def flat_parameters(parameters: dict[str, tuple[float, str]], kind: str
     return kept, note
 
 
-def is_flat_scan(raw: Any, levelled: Any) -> bool:
-    """:func:`profiles.form.is_flat`, the one flatness criterion (re-exported here)."""
-    from profiles.form import is_flat
-
-    return is_flat(raw, levelled)
-
-
 def flat_diagnosis(diag: Any) -> Any:
     """The spike diagnosis of a flat scan: nothing to diagnose (its ratios are rounding)."""
     import dataclasses

@@ -83,7 +83,8 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
                      valley_suppression: bool) -> Any:
     """R- (or P-) parameters of a profile with every step recorded (a RoughnessResult)."""
     import profiles
-    from surfmet.flat_scan import flat_diagnosis, flat_parameters, is_flat_scan
+    from profiles.form import is_flat
+    from surfmet.flat_scan import flat_diagnosis, flat_parameters
     from surfmet.profile_roughness import (
         conditions_record,
         engine_cutoffs,
@@ -112,7 +113,7 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
     rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
     parameters = {k: (v, units.get(k, "")) for k, v in values.items()}
     notes: list[str] = []
-    flat = is_flat_scan(ap.form + ap.primary, rough)
+    flat = is_flat(ap.form + ap.primary, rough)
     if not flat:
         more, notes = stratified_parameters(rough, cond.rk_line)
         parameters.update(more)

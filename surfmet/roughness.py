@@ -201,10 +201,11 @@ def roughness(
 
 def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
+    from profiles.form import is_flat
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
     from surfmet.areal.filters import l_filter, s_filter
     from surfmet.areal.form import dominant_form, remove_form
-    from surfmet.flat_scan import flat_diagnosis, flat_parameters, is_flat_scan
+    from surfmet.flat_scan import flat_diagnosis, flat_parameters
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
@@ -254,7 +255,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
     parameters = {k: (v, PARAMETER_UNITS[k]) for k, v in values.items()}
     settings["n_valid_points"] = params.n_valid
     notes = list(params.notes)
-    flat = is_flat_scan(topo.heights, surface.heights)
+    flat = is_flat(topo.heights, surface.heights)
     if flat:
         parameters, note = flat_parameters(parameters, "areal")
         notes = [note]
