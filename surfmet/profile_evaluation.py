@@ -125,6 +125,8 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
         letter = "P"
         parameters = primary_names(parameters)
         values = primary_names(values)
+    ap.settings["parameter_letter"] = letter  # for the profile figure's legend
+    settings["parameter_letter"] = letter
     settings["profile_kind"] = ("primary profile: P-parameters, no λc filter (ISO 21920-2)"
                                 if letter == "P" else "roughness profile: R-parameters")
     if flat:

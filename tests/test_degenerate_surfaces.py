@@ -141,3 +141,13 @@ def test_flat_contact_flags_gw_negative_gap_and_says_edge_contact_once(tmp_path,
     assert (out + err).count("contact reaches the edge") == 1
     assert "as it must for a rough scan pressed on a flat" in out + err
     assert "CAVEAT: Greenwood-Williamson" in out
+
+
+def test_the_profile_figure_names_the_primary_profile_parameters(realdata):
+    from surfmet.plots.profile import profile_figure
+
+    res = roughness(realdata("dektak-1.csv"), window="468um:733um")
+    fig = profile_figure(res.analysis)
+    labels = [ln.get_label() for ax in fig.axes for ln in ax.get_lines()]
+    assert any(lb.startswith("Pa = ") for lb in labels)
+    assert not any(lb.startswith("Ra = ") for lb in labels)
