@@ -83,3 +83,12 @@ def cell_widths(x: np.ndarray) -> np.ndarray:
     w[0] = d[0]
     w[-1] = d[-1]
     return w
+
+
+def length_text(value: float, digits: int = 4) -> str:
+    """A length in metres as text in the most readable of nm, µm, mm and m (messages)."""
+    v = float(value)
+    for factor, unit in ((1e-9, "nm"), (1e-6, "µm"), (1e-3, "mm")):
+        if abs(v) < 999.95 * factor:
+            return f"{v / factor:.{digits}g} {unit}"
+    return f"{v:.{digits}g} m"

@@ -36,9 +36,9 @@ from typing import Any
 
 import numpy as np
 
-from profiles._arrays import as_heights, as_positions, as_step, require_valid
+from profiles._arrays import as_heights, as_positions, as_step, length_text, require_valid
 from profiles.cutoff import LS_FOR_LC, iso4288_cutoff
-from profiles.errors import ProfileError
+from profiles.errors import ProfileError, ProfileTooShortError
 from profiles.filters import ALPHA, gaussian_mean_line, parse_end_treatment, split_profile
 from profiles.form import level_profile, parse_level
 from profiles.parameters import (
@@ -188,18 +188,27 @@ def _choose_lc(
     """The λc to apply (None: no λc filter); records how it was chosen."""
     length = primary.size * dx
     if lc_req == "auto":
-        choice = iso4288_cutoff(primary, dx, periodic=periodic)
         settings["lc_mode"] = "auto (ISO 4288)"
+        try:
+            choice = iso4288_cutoff(primary, dx, periodic=periodic)
+        except ProfileTooShortError as exc:
+            settings["lc_note"] = (
+                f"{exc}; no λc filter applied: the parameters are those of the levelled "
+                f"primary profile (P-parameters) over {5 if n_sampling is None else n_sampling} "
+                f"equal parts; give a cut-off to filter it (not ISO 4288 conformant)"
+            )
+            return None
         settings["lc_iso4288"] = choice.as_dict()
         nsec = 5 if n_sampling is None else int(n_sampling)
         need = nsec * choice.lc + (choice.lc if end_treatment == "discard" else 0.0)
         if length < need * (1 - 1e-9) - dx:
             settings["lc_note"] = (
-                f"ISO 4288 gives λc = {choice.lc * 1e3:.4g} mm "
-                f"({choice.parameter} = {choice.value:.4g} m), whose evaluation length "
-                f"({need * 1e3:.4g} mm) is longer than the profile ({length * 1e3:.4g} mm): "
+                f"ISO 4288 gives λc = {length_text(choice.lc)} "
+                f"({choice.parameter} = {length_text(choice.value)}), whose evaluation length "
+                f"({length_text(need)}) is longer than the profile ({length_text(length)}): "
                 f"no λc filter applied; parameters are of the levelled primary profile "
-                f"over {nsec} equal parts (as a profilometer reports between its cursors)"
+                f"(P-parameters) over {nsec} equal parts (as a profilometer reports between "
+                f"its cursors)"
             )
             return None
         return choice.lc

@@ -35,6 +35,49 @@ from profiles.errors import ProfileError
 METHODS = ("taubin", "pratt", "kasa")
 LOSSES = ("linear", "huber", "soft_l1", "cauchy")
 
+#: A circle (a sphere, a cylinder) must explain the data clearly better than a straight
+#: line (a plane): the line's rms residual must exceed the curved shape's by this factor,
+#: else the curvature is not resolved by the data (a flat or tilted profile "fits" any
+#: huge radius). The one rule of every form fit (``surfmet.fitting`` uses it too).
+CURVATURE_RESOLVED_RATIO = 2.0
+
+
+def curvature_resolved(rms_flat: float, rms_shape: float) -> bool:
+    """Whether a curved fit resolves its curvature: :data:`CURVATURE_RESOLVED_RATIO`."""
+    return bool(rms_flat > CURVATURE_RESOLVED_RATIO * rms_shape)
+
+
+def curvature_message(shape: str, flat: str, rms_flat: float, rms_shape: float,
+                      radius: float) -> str:
+    """The one-line refusal of a fit whose curvature the data do not resolve."""
+    return (f"curvature not resolved by the data: a {flat} fits the scan as well as the "
+            f"{shape} (rms residual {rms_flat:.3g} m against {rms_shape:.3g} m), so the "
+            f"{shape}'s radius ({radius:.3g} m) means nothing; scan more of the curved "
+            f"surface or check that this is the {shape} you meant")
+
+
+FORM_DEGREE = 4
+"""Degree of the polynomial whose PV is a circle fit's form deviation (:func:`form_pv`)."""
+
+
+def form_pv(x: np.ndarray, res: np.ndarray) -> float:
+    """Peak-to-valley of the degree-4 least-squares polynomial of residuals ``res`` at
+    ``x``: the form deviation, the smooth departure from the circle that roughness and
+    outliers do not inflate (the sphere's is the degree-2 component,
+    :func:`surfmet.fitting.quadratic_form_pv`: a circle absorbs a profile's degree-2 part
+    into its radius, so its first form errors are the cubic and quartic ones)."""
+    u = (x - x.mean()) / max(float(np.ptp(x)), 1e-300)
+    a = np.vander(u, FORM_DEGREE + 1, increasing=True)
+    coef, *_ = np.linalg.lstsq(a, res, rcond=None)
+    return float(np.ptp(a @ coef))
+
+
+def _line_rms(x: np.ndarray, z: np.ndarray) -> float:
+    """rms residual of the least-squares straight line z(x)."""
+    a = np.column_stack([np.ones_like(x), x - x.mean()])
+    coef, *_ = np.linalg.lstsq(a, z - z.mean(), rcond=None)
+    return float(np.sqrt(np.mean((z - z.mean() - a @ coef) ** 2)))
+
 
 @dataclass(frozen=True, eq=False)
 class CircleFit:
@@ -49,8 +92,13 @@ class CircleFit:
     rms_residual : float
         Root mean square of the radial residuals (metres).
     pv_form_deviation : float
-        Peak-to-valley of the radial residuals: the form deviation from the circle,
-        including roughness and any outliers (metres).
+        Peak-to-valley of all the radial residuals (metres): roughness and any outliers
+        included (one spike sets it); the residual PV.
+    form_pv : float
+        Form deviation (metres): the peak-to-valley of the degree-4 component of the
+        residual (:func:`form_pv`).
+    curvature_resolved : bool
+        Whether a straight line fits clearly worse (:func:`curvature_resolved`).
     radius_uncertainty : float
         Standard uncertainty of the radius from the fit covariance (metres).
     center_uncertainty : tuple of float
@@ -79,6 +127,8 @@ class CircleFit:
     method: str
     loss: str
     f_scale: float = math.nan
+    form_pv: float = math.nan
+    curvature_resolved: bool = True
 
 
 def _algebraic(u: np.ndarray, v: np.ndarray, method: str) -> tuple[float, float, float]:
@@ -141,6 +191,22 @@ def _psi(r: np.ndarray, loss: str, f: float) -> tuple[np.ndarray, np.ndarray]:
     return psi, dpsi
 
 
+def _standard_uncertainties(r: np.ndarray, jac: np.ndarray, loss: str, f: float
+                            ) -> np.ndarray:
+    """Standard uncertainties of (uc, vc, R) in the fit's scaled units (module docstring)."""
+    dof = r.size - 3
+    if dof <= 0:
+        return np.full(3, math.nan)
+    psi, dpsi = _psi(r, loss, f)
+    mean_d = float(np.mean(dpsi))
+    s2 = float(np.sum(psi * psi)) / dof / (mean_d * mean_d if mean_d > 0 else math.nan)
+    try:
+        cov = s2 * np.linalg.inv(jac.T @ jac)
+    except np.linalg.LinAlgError:
+        return np.full(3, math.inf)
+    return np.sqrt(np.clip(np.diag(cov), 0.0, None))
+
+
 def fit_circle(
     x: Any,
     z: Any,
@@ -148,6 +214,7 @@ def fit_circle(
     method: str = "taubin",
     loss: str = "linear",
     f_scale: float | None = None,
+    require_curvature: bool = True,
 ) -> CircleFit:
     """Fit a circle to profile points (x, z).
 
@@ -164,6 +231,10 @@ def fit_circle(
     f_scale : float, optional
         Residual size (metres) beyond which the robust loss down-weights points. Default:
         2.5 times a robust (MAD) estimate of the residual scale of the linear fit.
+    require_curvature : bool
+        Refuse points whose curvature the circle does not resolve (a straight line fits
+        them about as well, :data:`CURVATURE_RESOLVED_RATIO`; default). False: return the
+        fit with ``curvature_resolved=False``.
 
     Returns
     -------
@@ -172,7 +243,8 @@ def fit_circle(
     Raises
     ------
     ProfileError
-        Fewer than 3 usable points, collinear points, unknown method or loss.
+        Fewer than 3 usable points, collinear points, unknown method or loss, or a
+        curvature the data do not resolve.
     """
     method = str(method).lower()
     loss = str(loss).lower()
@@ -233,25 +305,20 @@ def fit_circle(
         raise ProfileError("the geometric circle fit did not converge (check the data)")
 
     r = resid(p)
-    J = jac(p)
-    dof = n - 3
-    if dof > 0:
-        psi, dpsi = _psi(r, loss, fs / scale if loss != "linear" else 1.0)
-        mean_d = float(np.mean(dpsi))
-        s2 = float(np.sum(psi * psi)) / dof / (mean_d * mean_d if mean_d > 0 else math.nan)
-        try:
-            cov = s2 * np.linalg.inv(J.T @ J)
-            sd = np.sqrt(np.clip(np.diag(cov), 0.0, None)) * scale
-        except np.linalg.LinAlgError:
-            sd = np.full(3, math.inf)
-    else:
-        sd = np.full(3, math.nan)
+    sd = _standard_uncertainties(r, jac(p), loss, fs / scale if loss != "linear" else 1.0)
+    sd = sd * scale
 
     res_m = r * scale
+    rms = float(np.sqrt(np.mean(res_m * res_m)))
+    radius = float(p[2] * scale)
+    rms_line = _line_rms(xa, za)
+    resolved = curvature_resolved(rms_line, rms)
+    if not resolved and require_curvature:
+        raise ProfileError(curvature_message("circle", "straight line", rms_line, rms, radius))
     return CircleFit(
-        radius=float(p[2] * scale),
+        radius=radius,
         center=(float(x0 + p[0] * scale), float(z0 + p[1] * scale)),
-        rms_residual=float(np.sqrt(np.mean(res_m * res_m))),
+        rms_residual=rms,
         pv_form_deviation=float(res_m.max() - res_m.min()),
         radius_uncertainty=float(sd[2]),
         center_uncertainty=(float(sd[0]), float(sd[1])),
@@ -260,4 +327,6 @@ def fit_circle(
         method=method,
         loss=loss,
         f_scale=float(fs),
+        form_pv=form_pv(xa, res_m),
+        curvature_resolved=resolved,
     )

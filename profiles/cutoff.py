@@ -25,10 +25,11 @@ from typing import Any
 
 import numpy as np
 
-from profiles._arrays import as_heights, as_step, require_valid
-from profiles.errors import ProfileError
+from profiles._arrays import as_heights, as_step, length_text, require_valid
+from profiles.errors import ProfileError, ProfileTooShortError
 from profiles.filters import gaussian_mean_line
 from profiles.parameters import profile_parameters
+from profiles.resolution import MIN_STEPS
 
 #: Standard cut-offs λc in metres (ISO 4288 Tables 1-3).
 CUTOFFS = (0.08e-3, 0.25e-3, 0.8e-3, 2.5e-3, 8e-3)
@@ -149,6 +150,38 @@ def autocorrelation_peak(z: np.ndarray) -> float:
     return float(np.max(rest)) if rest.size else 0.0
 
 
+def _shortest_usable(n: int, dx: float) -> int:
+    """Index into :data:`CUTOFFS` of the shortest cut-off this sampling can use.
+
+    A cut-off must span :data:`profiles.resolution.MIN_STEPS` sampling steps to be
+    realised as a Gaussian filter, and the profile must hold at least one of it (one
+    sampling length): with less, ISO 4288's tables cannot be entered at all.
+
+    Raises
+    ------
+    ProfileTooShortError
+        The profile is shorter than that cut-off.
+    ProfileError
+        The step is too coarse for every standard cut-off.
+    """
+    feasible = [i for i, c in enumerate(CUTOFFS) if c >= MIN_STEPS * dx * (1 - 1e-9)]
+    if not feasible:
+        raise ProfileError(
+            f"sampling step {length_text(dx)} is too coarse for any ISO 4288 cut-off "
+            f"(the largest, 8 mm, needs a step of at most {length_text(8e-3 / MIN_STEPS)})"
+        )
+    k_min = feasible[0]
+    length = n * dx
+    if length < CUTOFFS[k_min] * (1 - 1e-9) - dx:
+        lc = CUTOFFS[k_min]
+        raise ProfileTooShortError(
+            f"the profile is {length_text(length)} long, shorter than the shortest ISO 4288 "
+            f"cut-off its sampling allows (λc = {length_text(lc)}, whose evaluation length "
+            f"is {length_text(5 * lc)}): ISO 4288 cannot choose a cut-off for it"
+        )
+    return k_min
+
+
 def _measure(z: np.ndarray, dx: float, lc: float, parameter: str) -> float:
     mean_line = gaussian_mean_line(z, dx, lc, end_treatment="moment")
     r = z - mean_line
@@ -214,6 +247,7 @@ def iso4288_cutoff(
     z = as_heights(z)
     dx = as_step(dx)
     require_valid(z, 8, "choosing a cut-off (ISO 4288)")
+    k_min = _shortest_usable(z.size, dx)
     score = autocorrelation_peak(z)
     if periodic is None:
         periodic = bool(score >= 0.5)
@@ -229,14 +263,6 @@ def iso4288_cutoff(
             return fallback
 
     length = z.size * dx
-    # a cut-off must span a few samples to be realised as a Gaussian filter
-    feasible = [i for i, c in enumerate(CUTOFFS) if c >= 4 * dx]
-    if not feasible:
-        raise ProfileError(
-            f"sampling step {dx * 1e3:.4g} mm is too coarse for any ISO 4288 cut-off "
-            f"(the largest, 8 mm, needs a step of at most 2 mm)"
-        )
-    k_min = feasible[0]
     k = max(_START, k_min)
     while k > k_min and CUTOFFS[k] > length:
         k -= 1

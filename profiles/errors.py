@@ -5,3 +5,8 @@ from __future__ import annotations
 
 class ProfileError(ValueError):
     """Unusable profile input: too short for the cut-off, all NaN, bad spacing, bad fit data."""
+
+
+class ProfileTooShortError(ProfileError):
+    """The profile is shorter than any cut-off the rule could choose (ISO 4288 cannot be
+    entered); callers with an automatic cut-off may evaluate the primary profile instead."""

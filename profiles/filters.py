@@ -45,6 +45,7 @@ from scipy import fft as sp_fft
 
 from profiles._arrays import as_heights, as_step, require_valid
 from profiles.errors import ProfileError
+from profiles.resolution import nesting_index_problem
 
 #: ISO 16610-21 constant: the Gaussian transmits 50 % at the cut-off.
 ALPHA = math.sqrt(math.log(2.0) / math.pi)
@@ -76,12 +77,15 @@ def _correlate_all(
     """Centred correlations ``out[i] = sum_j k[j] a[i + j - h]`` (zero outside the profile).
 
     Long kernels go through one FFT per array and per kernel, shared by all the pairs.
+    The kernel may be longer than the profile (a cut-off longer than a short profile):
+    the centred ``n`` values of the full correlation are taken, not numpy's ``"same"``,
+    which returns ``max(n, m)`` values.
     """
     n = data[0].size
     m = kernels[0].size
     h = m // 2
     if m <= 129 or n <= 129:
-        return [np.convolve(data[a], kernels[k][::-1], mode="same") for a, k in pairs]
+        return [np.convolve(data[a], kernels[k][::-1])[h : h + n] for a, k in pairs]
     size = sp_fft.next_fast_len(n + m - 1, real=True)
     fd = {a: sp_fft.rfft(data[a], size) for a in {a for a, _ in pairs}}
     fk = {k: sp_fft.rfft(kernels[k][::-1], size) for k in {k for _, k in pairs}}
@@ -123,12 +127,9 @@ def gaussian_mean_line(
     end_treatment = parse_end_treatment(end_treatment)
     if not (math.isfinite(truncation) and truncation > 0):
         raise ProfileError(f"truncation must be positive, got {truncation!r}")
-    if cutoff < 2 * dx:
-        raise ProfileError(
-            f"cut-off {cutoff * 1e6:.4g} µm is shorter than two sampling steps "
-            f"({dx * 1e6:.4g} µm each): a Gaussian filter cannot be realised on this "
-            f"sampling; use a longer cut-off or omit this filter"
-        )
+    problem = nesting_index_problem(cutoff, dx, "cut-off")
+    if problem:
+        raise ProfileError(problem)
     valid = require_valid(z, 1, "Gaussian filtering")
     n = z.size
     h = max(1, math.ceil(truncation * cutoff / dx))
@@ -241,13 +242,14 @@ def split_profile(
             f"λc = {lc * 1e3:.4g} mm (needs at least {need * 1e3:.4g} mm: one cut-off{extra}); "
             f"use a shorter λc, a longer profile, or no λc filter"
         )
-    if lc < 4 * dx:
-        raise ProfileError(
-            f"cut-off λc = {lc * 1e6:.4g} µm is shorter than 4 samples ({dx * 1e6:.4g} µm "
-            f"step): the Gaussian filter cannot be realised on this sampling"
-        )
+    problem = nesting_index_problem(lc, dx, "cut-off λc")
+    if problem:
+        raise ProfileError(problem)
     if ls is not None:
         ls = as_step(ls, "ls")
+        problem = nesting_index_problem(ls, dx, "cut-off λs")
+        if problem:
+            raise ProfileError(problem)
         if ls >= lc:
             raise ProfileError(f"λs ({ls:.4g} m) must be shorter than λc ({lc:.4g} m)")
         # λs is applied with the same end treatment except discarding (its run-out is

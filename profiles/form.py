@@ -129,3 +129,30 @@ def level_profile(z: Any, dx: float = 1.0, *, x: Any = None, level: Any = "line"
     """:func:`remove_form` driven by a levelling name (see :func:`parse_level`)."""
     _, degree = parse_level(level)
     return remove_form(z, dx, x=x, degree=degree)
+
+
+FLAT_RELATIVE = 1e-12
+"""What levelling leaves of constant or planar heights is rounding: a scan whose levelled
+heights stay under this fraction of its raw heights is flat (float64 rounding of a plane
+leaves about 1e-16 of it; the margin covers the least-squares solve)."""
+
+
+def is_flat(raw: Any, levelled: Any) -> bool:
+    """Whether a scan is flat: its levelled heights are rounding of its raw ones.
+
+    The one flatness criterion of surfmet (profiles and areal scans alike; ``spectrum``,
+    the contact commands and ``roughness`` ask it). NaN (non-measured) points are ignored;
+    all-zero heights are flat.
+
+    Parameters
+    ----------
+    raw, levelled : array_like
+        The heights as measured and after the form removal (any shape, same units).
+    """
+    raw = np.asarray(raw, dtype=float)
+    lev = np.asarray(levelled, dtype=float)
+    lev = lev[np.isfinite(lev)]
+    raw = raw[np.isfinite(raw)]
+    if lev.size == 0 or raw.size == 0:
+        return False
+    return not float(np.max(np.abs(lev))) > FLAT_RELATIVE * float(np.max(np.abs(raw)))

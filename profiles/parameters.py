@@ -60,6 +60,7 @@ import numpy as np
 from profiles._arrays import as_heights, as_positions, as_step, cell_widths, require_valid
 from profiles.elements import profile_elements
 from profiles.errors import ProfileError
+from profiles.resolution import sampling_length_problem
 
 #: The two ways of evaluating per-sampling-length parameters (see module docstring).
 STANDARDS = ("iso21920", "iso4287")
@@ -208,10 +209,12 @@ def profile_parameters(
     Raises
     ------
     ProfileError
-        All-NaN profile, bad step/positions, or a profile shorter than the requested
-        sampling lengths.
+        All-NaN profile, bad step/positions, a profile shorter than the requested
+        sampling lengths, or sampling lengths under three sampling distances
+        (:mod:`profiles.resolution`).
     """
     z = as_heights(z)
+    standard = parse_standard(standard)
     uniform = x is None
     if uniform:
         dx = as_step(dx)
@@ -246,6 +249,9 @@ def profile_parameters(
         n_sections = 5 if n_sampling is None else int(n_sampling)
 
     widths = np.full(z.size, dx) if uniform else cell_widths(pos)
+    problem = sampling_length_problem(float(np.sum(widths)), n_sections, dx)
+    if problem:
+        raise ProfileError(problem)
     lr = float(np.sum(widths)) / n_sections
     valid = require_valid(z, 1, "profile parameters")
     zv = z[valid]
@@ -260,7 +266,7 @@ def profile_parameters(
     Rv = float(np.mean(-bottom))
     Rz = float(np.mean(top - bottom))
 
-    if parse_standard(standard) == "iso21920":
+    if standard == "iso21920":
         values = _stretch_values(z, pos, widths, uniform, dx,
                                  height_discrimination * Rz, width_discrimination * lr)
     else:

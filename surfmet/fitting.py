@@ -144,26 +144,21 @@ def _valid_points(topo: Topography, mask: np.ndarray | None):
     return valid, ii * topo.dx, jj * topo.dy, z[valid]
 
 
-#: A sphere or cylinder must explain the scan clearly better than a plane: the plane's rms
-#: residual must exceed the curved shape's by this factor, else the curvature is not
-#: resolved by the data (a flat or tilted scan "fits" any huge radius with ± 0 m).
-CURVATURE_RESOLVED_RATIO = 2.0
-
-
 def _require_curvature(x: np.ndarray, y: np.ndarray, z: np.ndarray, rms_shape: float,
                        shape: str, radius: float, require: bool = True) -> bool:
-    """Whether the curvature is resolved; raises when it is not and ``require``."""
+    """Whether the curvature is resolved; raises when it is not and ``require``.
+
+    The rule is the profile engine's, one for every form fit
+    (:data:`profiles.circle.CURVATURE_RESOLVED_RATIO`: a plane's rms residual must exceed
+    the curved shape's twice over)."""
+    from profiles.circle import curvature_message, curvature_resolved
+
     a = np.column_stack([np.ones_like(x), x - x.mean(), y - y.mean()])
     coef, *_ = np.linalg.lstsq(a, z - z.mean(), rcond=None)
     rms_plane = float(np.sqrt(np.mean((z - z.mean() - a @ coef) ** 2)))
-    resolved = rms_plane > CURVATURE_RESOLVED_RATIO * rms_shape
+    resolved = curvature_resolved(rms_plane, rms_shape)
     if not resolved and require:
-        raise SurfmetInputError(
-            f"curvature not resolved by the data: a plane fits the scan as well as the "
-            f"{shape} (rms residual {rms_plane:.3g} m against {rms_shape:.3g} m), so the "
-            f"{shape}'s radius ({radius:.3g} m) means nothing; scan more of the curved "
-            f"surface or check that this is the {shape} you meant"
-        )
+        raise SurfmetInputError(curvature_message(shape, "plane", rms_plane, rms_shape, radius))
     return bool(resolved)
 
 

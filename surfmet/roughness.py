@@ -22,78 +22,19 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable
-from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
+from surfmet.measurements import DETREND_LEVELS, Measurement, read_measurement
 from surfmet.model import Profile, Topography, require_measurement
-from surfmet.units import jsonable, parse_length, parse_length_range
+from surfmet.profile_evaluation import _profile_level, evaluate_profile  # noqa: F401  (show uses it)
+from surfmet.roughness_result import RoughnessResult, consistent_diagnosis, unit_caveats
+from surfmet.units import parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
 AREAL_STANDARD = "ISO 25178-2:2012 (areal; --standard applies to profiles)"
-
-
-@dataclass(frozen=True, eq=False)
-class RoughnessResult:
-    """Outcome of :func:`roughness`.
-
-    Attributes
-    ----------
-    kind : {"areal", "profile"}
-    parameters : dict
-        ``{symbol: (value, unit)}``; SI lengths, ratios in %, angles in degrees.
-    settings : dict
-        What was done (form, filters, cut-offs, edge treatment, window, spikes, diagnosis).
-    spike_report : SpikeReport or None
-        Present when spike removal ran.
-    spike_diagnosis : SpikeDiagnosis or None
-        Sq/Sa (Rq/Ra) diagnosis of the evaluated surface.
-    file : str or None
-        Source path when known.
-    surface : Topography or None
-        The evaluated areal surface (after window, spikes, F-operator and filters) that
-        the S-parameters describe, for figures; not part of the JSON.
-    analysis : profiles.ProfileAnalysis or None
-        The profile engine's analysis behind R-parameters (primary, waviness, roughness),
-        for figures; not part of the JSON.
-    """
-
-    kind: str
-    parameters: dict[str, tuple[float, str]]
-    settings: dict[str, Any] = field(default_factory=dict)
-    spike_report: Any = None
-    spike_diagnosis: Any = None
-    file: str | None = None
-    surface: Any = field(default=None, repr=False)
-    analysis: Any = field(default=None, repr=False)
-
-    def value(self, symbol: str) -> float:
-        """The value of one parameter (SI)."""
-        try:
-            return self.parameters[symbol][0]
-        except KeyError:
-            raise SurfmetInputError(
-                f"{symbol!r} was not computed; have {', '.join(self.parameters)}"
-            ) from None
-
-    def to_json(self) -> dict[str, Any]:
-        """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types).
-
-        Lengths in a profile's settings (SI floats in :attr:`settings`) become
-        ``{"value", "unit"}`` here, at the edge.
-        """
-        settings = self.settings
-        if self.kind == "profile":
-            from surfmet.profile_roughness import with_units
-
-            settings = with_units(settings)
-        return {
-            "parameters": {k: {"value": jsonable(v), "unit": u}
-                           for k, (v, u) in self.parameters.items()},
-            "settings": jsonable(settings),
-        }
 
 
 def _length_or_none(value: Any, what: str) -> float | None:
@@ -137,60 +78,9 @@ def _crop_areal(topo: Topography, win: tuple[float, float]) -> Topography:
     return topo.replace(heights=topo.heights[:, cols[0]: cols[-1] + 1], metadata=md)
 
 
-def unit_caveats(scan: Any) -> list[str]:
-    """What the file does not state about its units, to carry into every result: each unit
-    assumed, or stated by the user (:meth:`surfmet.model.Calibration.caveats`).
-
-    ``scan`` is a Topography or Profile (its pixel is named), or its metadata.
-    """
-    from surfmet.model import Calibration
-
-    cal = getattr(scan, "calibration", None)
-    return (cal if cal is not None else Calibration.of(scan or {})).caveats()
-
-
-def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
-                         spikes_removed: int | None) -> Any:
-    """The spike diagnosis restated with the result's own q/a ratio and kurtosis.
-
-    The diagnosis recomputes them about the sample mean; the profile parameters are taken
-    about the mean line (ISO), so the two could print different Rku for one result. Here
-    the table's values are used, and after a spike removal the advice is not "remove
-    spikes" again but what the extreme heights left must be.
-    """
-    import dataclasses
-
-    from surfmet.spikes import OUTLIER_SIGMAS, SUSPECT_SQ_OVER_SA
-
-    q, a, k = values.get(f"{prefix}q"), values.get(f"{prefix}a"), values.get(f"{prefix}ku")
-    if not (q and a and k is not None and np.isfinite(k)):
-        return diag
-    ratio = q / a
-    if spikes_removed is None and (f"{ratio:.3g}", f"{k:.3g}") == (
-            f"{diag.sq_over_sa:.3g}", f"{diag.kurtosis:.3g}"):
-        return diag  # already says what the table says
-    suspected = ratio > SUSPECT_SQ_OVER_SA or diag.n_outliers > 0
-    names = f"{prefix}q, {prefix}z, {prefix}sk and {prefix}ku"
-    head = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: {diag.gaussian_ratio:.3g}; "
-            f"real textures at most ~1.4); {prefix}ku = {k:.3g}; {diag.n_outliers} point(s) "
-            f"lie beyond {OUTLIER_SIGMAS:g} robust sigma of the height distribution.")
-    if not suspected:
-        msg = (f"{prefix}q/{prefix}a = {ratio:.3g} (Gaussian surface: "
-               f"{diag.gaussian_ratio:.3g}); no sign of spikes.")
-    elif spikes_removed is None:
-        msg = (f"{head} A few extreme heights (spikes, outliers, dust) dominate {names}: "
-               "remove spikes (roughness(..., spikes=True) / --spikes) or check the scan "
-               "before trusting them.")
-    else:
-        msg = (f"{head} This is after removing {spikes_removed} spike(s): the extreme "
-               "heights left are not isolated spikes (wide dust, pits, scratches, steps or "
-               f"non-measured edges read as heights), which spike removal does not touch; "
-               f"inspect the scan before trusting {names}.")
-    return dataclasses.replace(diag, sq_over_sa=ratio, kurtosis=float(k),
-                               suspected=bool(suspected), message=msg)
-
-
 def _read(scan: Any) -> tuple[Topography | Profile, str | None]:
+    if isinstance(scan, Measurement):
+        return require_measurement(read_measurement(scan)), str(scan)
     if isinstance(scan, (Topography, Profile)):
         return require_measurement(scan), scan.metadata.get("source")
     if isinstance(scan, (str, os.PathLike)):
@@ -222,7 +112,9 @@ def roughness(
 
     Parameters
     ----------
-    scan : Topography, Profile or path
+    scan : Topography, Profile, path or surfmet.measurements.Measurement
+        A file holding several measurements (a container) gives its first here;
+        :func:`roughness_many` and the command evaluate each.
     level : str, optional
         F-operator: ``"none"``, ``"mean"``, ``"plane"``, ``"poly:N"``, ``"sphere"``,
         ``"cylinder"`` (areal); on a profile ``"plane"`` means a least-squares line.
@@ -279,28 +171,41 @@ def roughness(
     """
     data, source = _read(scan)
     win = _window(window)
+    level, why_level = _stated_level(data, level)
     if isinstance(data, Profile) or profile is not None:
         from surfmet.profile_roughness import resolve_conditions
 
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
                                   n_sampling=n_sampling, rk_line=rk_line)
-        return _profile_roughness(data, source, level=level, cond=cond, window=win,
-                                  profile=profile, spikes=spikes,
-                                  extra={"rk_line": cond.rk_line,
-                                         "valley_suppression": bool(valley_suppression)})
-    ls_v = _length_or_none(ls, "ls")
-    lc_v = _length_or_none(lc, "lc")
-    if ls_v is not None and lc_v is not None and not ls_v < lc_v:
-        raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc ({lc_v:.3g} m)")
-    return _areal_roughness(data, source, level=level or "plane", ls=ls_v, lc=lc_v, window=win,
-                            spikes=spikes, edge=edge, which=which)
+        res = evaluate_profile(data, source, level=level, cond=cond, window=win,
+                               profile=profile, spikes=spikes,
+                               valley_suppression=bool(valley_suppression))
+    else:
+        ls_v = _length_or_none(ls, "ls")
+        lc_v = _length_or_none(lc, "lc")
+        if ls_v is not None and lc_v is not None and not ls_v < lc_v:
+            raise SurfmetInputError(f"ls ({ls_v:.3g} m) must be shorter than lc "
+                                    f"({lc_v:.3g} m)")
+        res = _areal_roughness(data, source, level=level or "plane", ls=ls_v, lc=lc_v,
+                               window=win, spikes=spikes, edge=edge, which=which)
+    if why_level:
+        res.settings.setdefault("notes", []).insert(
+            0, f"levelling {res.settings.get('level')}: {why_level}")
+    if isinstance(scan, (str, os.PathLike)) and data.metadata.get("container"):
+        res.settings.setdefault("notes", []).insert(
+            0, f"measurement {data.metadata.get('measurement', 0)} "
+            f"({data.metadata.get('member')}) of the container, as surfmet.read gives it: "
+            "`surfmet roughness` and roughness_many evaluate every measurement")
+    return res
 
 
 def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
+    from profiles.form import is_flat
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
     from surfmet.areal.filters import l_filter, s_filter
     from surfmet.areal.form import dominant_form, remove_form
+    from surfmet.flat_scan import flat_diagnosis, flat_parameters
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
@@ -347,105 +252,43 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         settings["caveats"] = caveats
     params = areal_parameters(surface, which)
     values = params.as_dict()
+    parameters = {k: (v, PARAMETER_UNITS[k]) for k, v in values.items()}
     settings["n_valid_points"] = params.n_valid
-    if params.notes:
-        settings["notes"] = list(params.notes)
+    notes = list(params.notes)
+    flat = is_flat(topo.heights, surface.heights)
+    if flat:
+        parameters, note = flat_parameters(parameters, "areal")
+        notes = [note]
+    if notes:
+        settings["notes"] = notes
     diag = consistent_diagnosis(spike_diagnosis(surface), values, "S",
                                 report.count if report is not None else None)
+    if flat:
+        diag = flat_diagnosis(diag)
     dd = diag.as_dict()
     if before is not None:
         dd["before_spike_removal"] = before.as_dict()
     settings["spike_diagnosis"] = dd
     return RoughnessResult(
         kind="areal",
-        parameters={k: (v, PARAMETER_UNITS[k]) for k, v in values.items()},
+        parameters=parameters,
         settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
         surface=surface,
     )
 
 
-def _profile_level(level: str) -> str:
-    text = str(level).strip().lower()
-    if text in ("sphere", "cylinder") or text.startswith("cylinder:"):
-        raise SurfmetInputError(
-            f"level {level!r} is an areal form; for a profile use none, mean, plane (a "
-            "least-squares line) or poly:N"
-        )
-    return "line" if text == "plane" else text
+def _stated_level(data: Topography | Profile, level: str | None) -> tuple[str | None, str]:
+    """The level to use and a note: a container's ``detrend_mode`` when none is given."""
+    mode = data.metadata.get("detrend_mode")
+    if level is not None or mode not in DETREND_LEVELS:
+        return level, ""
+    return DETREND_LEVELS[mode], f"the container's detrend_mode ({mode}) for this measurement"
 
 
-def _profile_roughness(data, source, *, level, cond, window, profile, spikes, extra
-                       ) -> RoughnessResult:
-    import profiles
-    from surfmet.extract import extract_profile
-    from surfmet.profile_roughness import (
-        conditions_record,
-        engine_cutoffs,
-        feature_values,
-        stratified_parameters,
-    )
-    from surfmet.spikes import remove_spikes, spike_diagnosis
-
-    settings: dict[str, Any] = {"kind": "profile"}
-    report = None
-    lvl = _profile_level(level or ("none" if cond.prefiltered else "plane"))
-    if isinstance(data, Topography):
-        if profile is None:  # pragma: no cover - guarded by the caller
-            raise SurfmetInputError("an areal scan needs profile='row:K' or 'col:K'")
-        if spikes:
-            data, report = remove_spikes(data)
-            settings["spikes"] = report.as_dict()
-        prof = extract_profile(data, profile)
-        settings["profile"] = prof.metadata.get("profile")
-    else:
-        if profile is not None:
-            raise SurfmetInputError("--profile applies to areal scans; this file is a profile")
-        prof = data
-        if spikes:
-            as_topo = Topography(prof.z[None, :], prof.dx, prof.dx, metadata=prof.metadata)
-            cleaned, report = remove_spikes(as_topo)
-            prof = prof.replace(z=cleaned.heights[0])
-            settings["spikes"] = report.as_dict()
-    if not spikes:
-        settings["spikes"] = {"removed": False}
-    lc_arg, ls_arg = engine_cutoffs(cond)
-    ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
-                                  ls=ls_arg, lc=lc_arg, n_sampling=cond.n_sampling,
-                                  standard=cond.standard,
-                                  valley_suppression=extra["valley_suppression"])
-    stated = dict(prof.metadata.get("evaluation_conditions") or {})
-    settings["conditions"] = conditions_record(cond, ap.settings, stated)
-    settings.update(ap.settings)
-    settings["level"] = lvl
-    units = type(ap.parameters).UNITS
-    values = ap.parameters.as_dict()
-    rough = ap.roughness[ap.evaluated] if ap.evaluated is not None else ap.roughness
-    parameters = {k: (v, units.get(k, "")) for k, v in values.items()}
-    more, notes = stratified_parameters(rough, extra["rk_line"])
-    parameters.update(more)
-    feats, feature_notes = feature_values(rough, ap.settings["dx"], ap.parameters.Rz)
-    parameters.update(feats)
-    notes += feature_notes
-    settings["rk_line"] = {"value": cond.rk_line, "why": cond.why["rk_line"]}
-    caveats = unit_caveats(prof)
-    if caveats:
-        settings["caveats"] = caveats
-    if notes:
-        settings["notes"] = notes
-    diag = consistent_diagnosis(spike_diagnosis(rough, prefix="R"), values, "R",
-                                report.count if report is not None else None)
-    settings["spike_diagnosis"] = diag.as_dict()
-    return RoughnessResult(
-        kind="profile",
-        parameters=parameters,
-        settings=settings, spike_report=report, spike_diagnosis=diag, file=source,
-        analysis=ap,
-    )
-
-
-def roughness_file(path: str | os.PathLike, read_options: dict[str, Any] | None = None,
-                   **options: Any) -> dict[str, Any]:
-    """Roughness of one file as a JSON-ready dict; errors are returned, not raised.
+def roughness_file(path: str | os.PathLike | Measurement,
+                   read_options: dict[str, Any] | None = None, **options: Any) -> dict[str, Any]:
+    """Roughness of one file (or container measurement) as a JSON-ready dict; errors are
+    returned, not raised.
 
     Returns ``{"file", "status": "ok", "parameters", "settings"}`` or
     ``{"file", "status": "error", "error": message}``. Top-level and picklable, for
@@ -457,7 +300,9 @@ def roughness_file(path: str | os.PathLike, read_options: dict[str, Any] | None 
     name = str(path)
     try:
         scan: Any = path
-        if read_options:  # the units and channel the user states (--height-unit, ...)
+        if read_options and isinstance(path, Measurement):
+            scan = read_measurement(path, **read_options)
+        elif read_options:  # the units and channel the user states (--height-unit, ...)
             from surfmet.io import read
 
             scan = read(path, **read_options)
@@ -478,7 +323,9 @@ def roughness_many(
     progress: bool | None = False,
     **options: Any,
 ) -> list[dict[str, Any]]:
-    """:func:`roughness_file` on each path; one entry per file, in order, failures included.
+    """:func:`roughness_file` on each path; one entry per file (per measurement of a
+    container, :func:`surfmet.measurements.expand_measurements`), in order, failures
+    included.
 
     Parameters
     ----------
@@ -495,7 +342,12 @@ def roughness_many(
     from functools import partial
 
     from surfmet.batch import batch_map
+    from surfmet.measurements import expand_measurements
 
-    return batch_map(partial(roughness_file, **options), [str(p) for p in paths],
+    return batch_map(partial(roughness_file, **options), expand_measurements(paths),
                      workers=workers, scheduler=scheduler, progress=progress,
                      desc="roughness")
+
+
+__all__ = ["AREAL_STANDARD", "Measurement", "RoughnessResult", "consistent_diagnosis",
+           "evaluate_profile", "roughness", "roughness_file", "roughness_many", "unit_caveats"]

@@ -70,12 +70,12 @@ def test_one_file_json_shape(capsys, scan):
 
 
 def test_filters_and_spikes_are_recorded(capsys, scan):
-    rc, out, _ = _run(capsys, "roughness", str(scan), "--lc", "50um", "--ls", "2um",
+    rc, out, _ = _run(capsys, "roughness", str(scan), "--lc", "50um", "--ls", "3um",
                       "--spikes", "--level", "poly:2", "--json")
     assert rc == 0
     s = json.loads(out)[0]["settings"]
     assert s["lc"] == {"value": pytest.approx(50e-6), "unit": "m"}
-    assert s["ls"] == {"value": pytest.approx(2e-6), "unit": "m"}
+    assert s["ls"] == {"value": pytest.approx(3e-6), "unit": "m"}
     assert [f["kind"] for f in s["filters"]] == ["S", "L"]
     assert s["filters"][1]["edge"] == "discard" and s["edge"]["value"] == "discard"
     assert s["spikes"]["removed"] is True and s["spikes"]["count"] == 0

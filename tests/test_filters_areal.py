@@ -102,11 +102,11 @@ def test_discard_band_and_interior_equality():
 def test_holes_do_not_spread_and_do_not_bias():
     rng = np.random.default_rng(3)
     _, i = np.mgrid[:200, :200]
-    lam = 20e-6
-    z = np.sin(2 * np.pi * i * 1e-6 / lam) * 1e-6
+    lam, dx = 20e-6, 0.8e-6  # ISO 25178-3 Table 1: λs 2.5 µm, sampling distance 0.8 µm
+    z = np.sin(2 * np.pi * i * dx / lam) * 1e-6
     zh = z.copy()
     zh[rng.random(z.shape) < 0.3] = np.nan
-    m, _ = s_filter(Topography(zh, 1e-6, 1e-6), 2.5e-6)
+    m, _ = s_filter(Topography(zh, dx, dx), 2.5e-6)
     ok = np.isfinite(zh)
     assert np.array_equal(np.isfinite(m.heights), ok)
     # λ = 8 λs: the S-filter passes 99.1 %; a zero-filled filter would lose 30 %.

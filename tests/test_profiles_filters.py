@@ -156,8 +156,9 @@ def test_filter_errors():
         split_profile(z, 1e-6, lc=0.25e-3, ls=0.3e-3)
 
 
-def test_cutoff_shorter_than_two_steps_is_refused():
-    with pytest.raises(ProfileError, match="two sampling steps"):
+def test_cutoff_shorter_than_three_steps_is_refused():
+    # the one rule of profiles.resolution (ISO 25178-3 Table 1): 3 sampling distances
+    with pytest.raises(ProfileError, match=r"spans 1\.25 sampling distances"):
         gaussian_mean_line(np.zeros(100), 2e-6, 2.5e-6)
 
 

@@ -142,15 +142,16 @@ def test_report_is_self_contained_and_inert(tmp_path, evil_scan):
 
 
 def test_filters_and_settings_are_stated(tmp_path, evil_scan):
-    sec = scan_section(evil_scan, {"level": "poly:2", "lc": 30e-6, "ls": 2e-6},
+    # λs of 3 pixels: the least a sampling carries (profiles.resolution, ISO 25178-3)
+    sec = scan_section(evil_scan, {"level": "poly:2", "lc": 30e-6, "ls": 3e-6},
                        include_3d=False)
     assert sec.status == "ok" and len(sec.figures) == 3
     page = parse(render_html([sec], options={"lc": 30e-6}))
     body = "".join(page.text)
     assert "S-L surface" in body and "poly:2" in body
     assert "Gaussian ISO 16610-61, λ = 30 µm, edge treatment discard" in body
-    assert "Gaussian ISO 16610-61, λ = 2 µm, edge treatment discard" in body
-    res = roughness(surfmet.read(evil_scan), level="poly:2", lc=30e-6, ls=2e-6)
+    assert "Gaussian ISO 16610-61, λ = 3 µm, edge treatment discard" in body
+    res = roughness(surfmet.read(evil_scan), level="poly:2", lc=30e-6, ls=3e-6)
     check_parameters(page, res)
     check_images(page, 3)
 

@@ -163,6 +163,12 @@ def _check_cutoff(topo: Topography, cutoff: float, what: str) -> float:
         raise SurfmetInputError(f"{what} must be a length in metres, got {cutoff!r}") from None
     if not (math.isfinite(c) and c > 0):
         raise SurfmetInputError(f"{what} must be a positive length, got {cutoff!r}")
+    from profiles.resolution import nesting_index_problem
+
+    # the one rule of profiles.resolution: a nesting index spans 3 pixels on each axis
+    problem = nesting_index_problem(c, max(topo.dx, topo.dy), what)
+    if problem:
+        raise SurfmetInputError(problem)
     if topo.size_x < c or topo.size_y < c:
         raise SurfmetInputError(
             f"scan of {topo.size_x * 1e6:.4g} µm × {topo.size_y * 1e6:.4g} µm is too small "
@@ -350,7 +356,8 @@ def s_filter(
     Raises
     ------
     SurfmetInputError
-        Non-positive ``ls``, a scan smaller than ``ls``, an unknown edge treatment.
+        Non-positive ``ls``, a scan smaller than ``ls``, ``ls`` under three pixels
+        (:mod:`profiles.resolution`), an unknown edge treatment.
     """
     return _apply(topo, ls, "S", edge)
 
@@ -363,7 +370,7 @@ def l_filter(
     Raises
     ------
     SurfmetInputError
-        Non-positive ``lc``, a scan smaller than ``lc`` in either direction, an unknown
-        edge treatment.
+        Non-positive ``lc``, a scan smaller than ``lc`` in either direction, ``lc`` under
+        three pixels (:mod:`profiles.resolution`), an unknown edge treatment.
     """
     return _apply(topo, lc, "L", edge)

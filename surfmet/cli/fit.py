@@ -59,8 +59,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"centre              ({centre})")
     print(f"rms residual        {format_length(rec['rms_residual']['value'])}")
     if "form_pv" in rec:
-        print(f"form deviation      {format_length(rec['form_pv']['value'])} PV of the "
-              "quadratic component of the residual")
+        what = rec["names"]["form_pv"].split(": ", 1)[-1]
+        print(f"form deviation      {format_length(rec['form_pv']['value'])} {what}")
     print(f"residual PV         {format_length(rec['pv_form_deviation']['value'])} all points "
           "(roughness and outliers included)")
     print_caveats(rec["caveats"])

@@ -235,7 +235,7 @@ def _print(rec: dict[str, Any]) -> None:
                   f"{'-' if k is None else f'{k / 1e12:.4g}':>11} "
                   f"{'-' if ea is None else f'{100 * ea:+.1f}%':>8} "
                   f"{'-' if eg is None else f'{100 * eg:+.1f}%':>8}")
-    print_solve(rec["solve"], "  solve")
+    print_solve(rec["solve"], "  solve", warned=rec["notes"])  # the edge: once, a note
     if "adhesion" in rec:
         _print_adhesion(rec)
     for note in rec["notes"]:

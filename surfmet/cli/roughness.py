@@ -14,7 +14,7 @@ from surfmet.cli._scan_options import add_scan_options, read_options, read_scan
 EPILOG = """examples:
   surfmet roughness plate.x3p
   surfmet roughness plate.x3p --level plane --json
-  surfmet roughness plate.x3p --lc 0.8mm --ls 2.5um --spikes
+  surfmet roughness plate.x3p --lc 0.8mm --ls 25um --spikes
   surfmet roughness ball.nms --level sphere
   surfmet roughness plate.x3p --profile row:100 --lc 0.25mm
   surfmet roughness trace.csv --standard iso4287 --lc 2.5mm --n-sampling 4
@@ -132,13 +132,16 @@ def _print_table(rec: dict[str, Any]) -> None:
     s = rec["settings"]
     filters = ", ".join(f"{f['kind']}-filter {f['nesting_index']['value']:.4g} m ({f['edge']})"
                         for f in s.get("filters", []) or [])
-    print(f"  kind {s.get('kind')}, level {s.get('level')}"
+    kind = s.get("kind", "") + (f" ({s['profile_kind']})" if s.get("profile_kind") else "")
+    print(f"  kind {kind}, level {s.get('level')}"
           + (f", {filters}" if filters else ""))
     if s.get("edge"):
         print(f"  filter edges ({s['edge']['value']}): {s['edge']['meaning']}")
     cond = s.get("conditions")
     if cond:
         print("  " + _conditions_line(cond))
+        if cond["lc"].get("note"):
+            print(f"  note: {cond['lc']['note']}")
     elif s.get("standard"):
         print(f"  standard {s['standard']}")
     for sym, q in rec["parameters"].items():
@@ -188,6 +191,17 @@ def _condition_cells(rec: dict[str, Any]) -> list[str]:
             str(cond["n_sampling"]["value"]), why]
 
 
+def record_caveats(rec: dict[str, Any]) -> list[str]:
+    """A record's caveats for its CSV row: the result's own, and the spike diagnosis when it
+    suspects spikes (the text's warning that a few heights dominate Sq and Sz)."""
+    s = rec.get("settings", {})
+    out = list(s.get("caveats", []) or [])
+    diag = s.get("spike_diagnosis") or {}
+    if diag.get("suspected") and diag.get("message"):
+        out.append(diag["message"])
+    return out
+
+
 def _write_csv(records: list[dict[str, Any]], out: str) -> None:
     symbols: list[str] = []
     units: dict[str, str] = {}
@@ -209,7 +223,7 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             params = rec.get("parameters", {})
             row = [valid_text(rec["file"]), rec["status"], valid_text(rec.get("error", "")),
                    *_condition_cells(rec),
-                   " | ".join(rec.get("settings", {}).get("caveats", []))]
+                   " | ".join(record_caveats(rec))]
             for sym in symbols:
                 v = params.get(sym, {}).get("value")
                 row.append("" if v is None else repr(float(v)))
@@ -220,14 +234,20 @@ def run(args: argparse.Namespace) -> int:
     from functools import partial
 
     from surfmet.batch import batch_map
+    from surfmet.measurements import Measurement, expand_measurements, read_measurement
     from surfmet.roughness import roughness, roughness_file
 
     check_output(args.csv if args.csv != "-" else None, "--csv")
     opts = _options(args)
-    if len(args.files) == 1 and not args.csv:
+    # a container holds several measurements: each is evaluated and gets its record
+    items = expand_measurements(args.files)
+    if len(items) == 1 and not args.csv:
         # One file: errors propagate, so the CLI prints one line and exits 1.
-        res = roughness(read_scan(args.files[0], args), **opts)
-        rec = {"file": args.files[0], "status": "ok", **res.to_json()}
+        item = items[0]
+        scan = (read_measurement(item, **read_options(args))
+                if isinstance(item, Measurement) else read_scan(item, args))
+        res = roughness(scan, **opts)
+        rec = {"file": str(item), "status": "ok", **res.to_json()}
         if args.json:
             emit_json([rec])  # one shape whatever the number of files: a list of records
         else:
@@ -235,7 +255,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     # roughness_file returns error rows itself; batch_map adds rows for dead workers
     records = batch_map(partial(roughness_file, read_options=read_options(args), **opts),
-                        args.files, workers=args.workers,
+                        items, workers=args.workers,
                         scheduler=args.scheduler, desc="roughness")
     failed = [r for r in records if r["status"] != "ok"]
     for r in failed:

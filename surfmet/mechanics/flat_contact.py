@@ -19,6 +19,7 @@ that the comparison is between theories and not between resolutions.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -165,10 +166,57 @@ def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: An
              "was removed (levelling poly:2), so this is the contact of its texture on a "
              "flat; for the curved body itself use contact or hertz-check",)
             if level == "poly:2" else ())
+    bem = dataclasses.replace(bem, notes=_edge_notes(bem.notes))
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
                              settings={"pressures": p.tolist()}, preparation=preparation,
-                             caveats=form + _yield_caveats(p, hardness or material_hardness),
+                             caveats=form + _yield_caveats(p, hardness or material_hardness)
+                             + gap_caveats(models),
                              adhesion=adhesive, materials=pair)
+
+
+#: How a flat contact states contact at its scan's edge (once: the solve's own warning,
+#: "the domain is too small", does not apply to a scan pressed over its whole area).
+EDGE_INHERENT = (
+    "contact reaches the edge of the scan, as it must for a rough scan pressed on a flat "
+    "over its whole area (not a domain too small): on the free boundary the missing "
+    "neighbours make the surface near the edges softer than in the bulk (a periodic scan, "
+    "--periodic yes, has no edge)")
+
+_MODEL_NAMES = {"persson": "Persson", "gw": "Greenwood-Williamson (GW)", "bgt": "BGT"}
+
+
+def _edge_notes(notes: tuple[str, ...]) -> tuple[str, ...]:
+    """The BEM's notes with its edge-contact note stated as inherent to a flat contact."""
+    return tuple(EDGE_INHERENT if n.startswith("contact reaches the edge") else n
+                 for n in notes)
+
+
+def gap_caveats(models: dict[str, ModelCurve]) -> tuple[str, ...]:
+    """A model whose mean gap comes out zero or negative is outside its validity there.
+
+    A mean gap is the mean separation of two surfaces that do not interpenetrate, so it is
+    positive; GW's comes out negative at high pressure, where its independent asperities
+    (valid for a small contact fraction) no longer describe the contact. Such a value is
+    not a gap: it is kept in the table and the JSON, flagged here, and left out of the plot.
+    """
+    from surfmet.units import format_length
+
+    out = []
+    for name, m in models.items():
+        if m.mean_gap is None:
+            continue
+        gap = np.asarray(m.mean_gap, dtype=float)
+        bad = ~(gap > 0)
+        if not bad.any():
+            continue
+        at = ", ".join(f"{pk / 1e6:.4g} MPa ({format_length(g)}, A/A0 {a:.3g})"
+                       for pk, g, a in zip(np.asarray(m.pressure)[bad], gap[bad],
+                                           np.asarray(m.area_fraction)[bad]))
+        out.append(f"{_MODEL_NAMES.get(name, name)}'s mean gap is not positive at {at}: the "
+                   "contact is outside the model's validity there (its asperities are no "
+                   "longer few and independent), so that value is not a gap and is left out "
+                   "of the plot")
+    return tuple(out)
 
 
 #: Pixels whose sides differ by less than this share are square for the adhesive solve,
@@ -235,7 +283,9 @@ def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve
         for name, m in rep.models.items():
             a1.loglog(p, m.area_fraction, "-", color=styles[name], label=name.upper())
             if m.mean_gap is not None:
-                a2.semilogx(p, m.mean_gap * 1e6, "-", color=styles[name], label=name.upper())
+                # a gap that is not positive is outside the model's validity (gap_caveats)
+                gap = np.where(np.asarray(m.mean_gap) > 0, m.mean_gap, np.nan) * 1e6
+                a2.semilogx(p, gap, "-", color=styles[name], label=name.upper())
         a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     if all_scales is not None:
         ps = np.asarray(all_scales.pressure) / 1e6

@@ -380,8 +380,10 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
         how = "plane"
         if dominant_form(topo, fit):
             out, how = remove_form(topo, "poly:2")[0], "poly:2"
-    # what levelling leaves of constant or planar heights is rounding (1e-16 of them)
-    if not np.nanmax(np.abs(out.heights)) > 1e-12 * np.nanmax(np.abs(topo.heights)):
+    # what levelling leaves of constant or planar heights is rounding: the one criterion
+    from profiles.form import is_flat
+
+    if is_flat(topo.heights, out.heights):
         raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"
                                 "): it has no roughness")
     return out, per, how

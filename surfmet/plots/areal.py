@@ -156,7 +156,8 @@ def abbott_firestone(
     ax.grid(True, alpha=0.3)
     vals = {k: (v[0] if isinstance(v, (tuple, list)) else v) for k, v in (parameters or {}).items()}
     names = None
-    for fam in (("Sk", "Spk", "Svk", "Smr1", "Smr2"), ("Rk", "Rpk", "Rvk", "Mr1", "Mr2")):
+    for fam in (("Sk", "Spk", "Svk", "Smr1", "Smr2"), ("Rk", "Rpk", "Rvk", "Mr1", "Mr2"),
+                ("Pk", "Ppk", "Pvk", "Mr1", "Mr2")):
         if all(vals.get(k) is not None and np.isfinite(vals[k]) for k in fam):
             names = fam
             break

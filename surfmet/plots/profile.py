@@ -73,8 +73,10 @@ def profile_figure(analysis: Any, path: str | Path | None = None, *, title: str 
     rough = np.asarray(analysis.roughness)
     ev = np.asarray(analysis.evaluated, dtype=bool)
     p = analysis.parameters
+    # the primary profile's parameters carry P names (ISO 21920-2; surfmet.profile_evaluation)
+    r = st.get("parameter_letter", "R")
     ax.plot(xs, rough / UM, color="C2", lw=0.7,
-            label=f"Ra = {p.Ra / UM:.4g} µm, Rq = {p.Rq / UM:.4g} µm")
+            label=f"{r}a = {p.Ra / UM:.4g} µm, {r}q = {p.Rq / UM:.4g} µm")
     ax.axhline(0.0, color="k", lw=0.6)
     if ev.any() and not ev.all():
         i0, i1 = np.flatnonzero(ev)[[0, -1]]

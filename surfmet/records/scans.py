@@ -89,5 +89,8 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         "shape": "circle",
         "profile": prof.metadata.get("profile"),
         **_fit_fields(f),
+        "form_pv": quantity(f.form_pv, "m"),
+        "names": {"form_pv": "form deviation: PV of the degree-4 component of the "
+                  "circle residual", "pv_form_deviation": "residual PV (all points)"},
         "loss": loss,
     }
