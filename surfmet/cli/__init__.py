@@ -123,6 +123,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     from surfmet.errors import user_error_types
 
     argv = list(sys.argv[1:] if argv is None else argv)
+    parser = None
     try:
         parser = build_parser()
         args = parser.parse_args(negative_values(parser, argv))
@@ -134,7 +135,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"surfmet: error: {exc}", file=sys.stderr)
         return 1
     except user_error_types() as exc:
-        print(f"surfmet: error: {exc}", file=sys.stderr)
+        from surfmet.cli._terms import cli_terms, command_options
+
+        print(f"surfmet: error: {cli_terms(str(exc), command_options(parser, argv))}",
+              file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("surfmet: interrupted", file=sys.stderr)

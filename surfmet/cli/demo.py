@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json
+from surfmet.cli._common import add_json_flag, add_quiet_flag, emit_json, show_progress
 
 EPILOG = """examples:
   surfmet demo
@@ -38,6 +38,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--quick", action="store_true",
                    help="shorter rolling sweep (3 loads) and fewer figures")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -46,7 +47,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.demo import prepare_output, run_demo, story
 
     prepare_output(args.out)  # refuse a foreign folder before any work
-    summary = run_demo(args.out, quick=args.quick, progress=True)
+    summary = run_demo(args.out, quick=args.quick, progress=show_progress(args))
     if args.json:
         emit_json(summary)
     else:
