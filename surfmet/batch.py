@@ -120,8 +120,9 @@ class _Lines:
     def __enter__(self) -> _Lines:
         return self
 
-    def __exit__(self, *exc: Any) -> None:
-        self.close()
+    def __exit__(self, exc_type: Any, *exc: Any) -> None:
+        if exc_type is None:  # a stage cut short by an error says nothing more
+            self.close()
 
 
 def progress_bar(total: int | None, desc: str, show: bool | None) -> Any:

@@ -105,15 +105,12 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
 
     check_output(args.plot, "--plot")
-    bar = progress_bar(2 * args.steps, "adhesion, steps", show_progress(args))
-    try:
+    with progress_bar(2 * args.steps, "adhesion, steps", show_progress(args)) as bar:
         run_ = (line_adhesion if args.line else adhesion)(
             args.radius, work=args.work_of_adhesion, range_=args.range_,
             materials=args.materials, e_star=args.e_star, interaction=args.interaction,
             grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
             ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
-    finally:
-        bar.close()
     if args.plot:
         save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:

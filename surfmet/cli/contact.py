@@ -95,21 +95,19 @@ def run(args: argparse.Namespace) -> int:
 
     # a smooth ball on a small grid is done before a line would help
     big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
-    bar = progress_bar(None, "contact, iterations", show_progress(args) if big else False)
+    with progress_bar(None, "contact, iterations",
+                      show_progress(args) if big else False) as bar:
 
-    def callback(it: int, residual: float) -> None:
-        bar.update(1)
-        bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
+        def callback(it: int, residual: float) -> None:
+            bar.update(1)
+            bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
 
-    try:
         sol = ball_contact(
             args.plate, args.ball, radius=args.radius, load=args.load,
             materials=args.materials, hardness=args.hardness, plastic=args.plastic,
             grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
             tol=args.tol, max_iter=args.max_iter, callback=callback,
             spikes=args.spikes)
-    finally:
-        bar.close()
     res, pair = sol.result, sol.pair
     if sol.preparation is not None and not args.json:
         for note in sol.preparation.notes:
