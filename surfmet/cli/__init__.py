@@ -130,7 +130,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not getattr(args, "func", None):
             parser.print_help(sys.stderr)
             return 1
-        return int(args.func(args) or 0)
+        rc = int(args.func(args) or 0)
+        for note in getattr(args, "deferred_notes", None) or ():  # surfmet.cli._values
+            print(note, file=sys.stderr)
+        return rc
     except UserError as exc:
         print(f"surfmet: error: {exc}", file=sys.stderr)
         return 1

@@ -23,7 +23,7 @@ _TERMS: tuple[tuple[str, str, str, str], ...] = (
     (r"pass format= one of: ", "give --format, one of: ", "--format", "known formats: "),
     (r"pass channel=", "give --channel", "--channel", "name the channel"),
     (r"pass height_unit=", "give --height-unit", "--height-unit", "the height unit is needed"),
-    (r"pass ``dx=``, ``dy=``", "give --pixel", "--pixel", "the pixel is needed"),
+    (r"\bheight_unit=", "--height-unit", "--height-unit", "the height unit"),
     (r"\(pass verify_checksum=False to read (\w+) anyway\)",
      r"(the Python API reads \1 anyway with verify_checksum=False)", "", ""),
     (r"fewer sampling lengths \(n_sampling\)", "fewer sampling lengths (--n-sampling)",

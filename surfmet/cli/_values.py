@@ -9,7 +9,6 @@ option reads the same wherever it appears.
 from __future__ import annotations
 
 import argparse
-import sys
 from collections.abc import Callable
 from typing import Any
 
@@ -95,6 +94,11 @@ def add_interaction_argument(p: Any) -> None:
                    "t(g) = (w/rho) exp(-g/rho))")
 
 
+#: The parsed arguments' notes on the options' forms, printed on stderr once the command
+#: has run (an error is then its one line alone).
+DEFERRED_NOTES = "deferred_notes"
+
+
 class _Plate(argparse.Action):
     """The plate's scan, given once: as the positional PLATE (the form of every command
     that reads a scan) or as ``--plate FILE``, its alias, which is noted on stderr."""
@@ -105,10 +109,12 @@ class _Plate(argparse.Action):
             return
         if getattr(namespace, self.dest, None) not in (None, []):
             parser.error("the plate is given twice: give PLATE or --plate, once")
-        if option_string is not None:
+        if option_string is not None:  # said after the command's output (surfmet.cli.main)
             command = parser.prog.split()[-1]
-            print(f"note: --plate is an alias of the positional scan, the form of every "
-                  f"command: surfmet {command} {values} ...", file=sys.stderr)
+            notes = getattr(namespace, DEFERRED_NOTES, None) or []
+            notes.append(f"note: --plate is an alias of the positional scan, the form of "
+                         f"every command: surfmet {command} {values} ...")
+            setattr(namespace, DEFERRED_NOTES, notes)
         if self.nargs == "*" and option_string is not None:
             values = [values]
         setattr(namespace, self.dest, values)

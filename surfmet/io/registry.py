@@ -240,8 +240,8 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     span = height_span_error(values, MAX_NUMERIC_SPAN if uncalibrated else MAX_HEIGHT_SPAN)
     if span is not None:
         md["height_range"] = (f"{name}: {span}: the file is damaged (one flipped exponent bit "
-                              "turns 2 µm into 1e302 m) or its height unit is wrong (for a "
-                              "bare array, pass height_unit=)")
+                              "turns 2 µm into 1e302 m) or its height unit is wrong (a bare "
+                              "array states none: give it)")
     md.setdefault("format", fmt)
     return scan.replace(metadata=md)
 
