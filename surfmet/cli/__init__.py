@@ -54,6 +54,13 @@ EPILOG = """examples:
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
 accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
 (steel:E=200GPa); a name not in the table with E and nu given is a custom material.
+
+One form per option in every command: the scan is the positional argument (--plate FILE
+its alias); options with several values (--loads, --pressures) take lists (4N,5N,6N) and
+log-spaced ranges (1N:100N:5; 9 values without the count; at most 100 values);
+--periodic auto|yes|no (a bare --periodic is yes); --interaction defaults to dugdale;
+--quiet (-q) silences the progress of every long command (off a terminal, one line per
+stage).
 """
 
 
