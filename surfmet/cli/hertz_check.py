@@ -88,11 +88,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
+    from surfmet.cli._values import require_plate
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length
-
-    from surfmet.cli._values import require_plate
 
     require_plate(args.plate, "hertz-check")
     check_grid(args.grid)
