@@ -35,6 +35,9 @@ from contact.errors import EdgeContactError, EdgeContactWarning
 
 #: What to do about contact at the domain edge (the advice every warning and error ends on).
 EDGE_ADVICE = "enlarge the domain (a larger size or scan) and solve again"
+#: The advice of a solve that may return a truncated result instead (``on_edge="warn"``);
+#: a caller that cannot (a sweep) drops it from the message.
+TRUNCATED_ADVICE = " (or accept a truncated result: on_edge='warn')"
 #: Why a steady-rolling solve refuses contact at its leading edge.
 LEADING_EDGE = ("steady rolling needs unloaded material entering at the leading edge "
                 "(largest x), so no answer is formed")

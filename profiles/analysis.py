@@ -225,7 +225,7 @@ def _choose_ls(
     """The λs to apply (None: no λs filter); ``"auto"`` follows ISO 3274's pairing."""
     if ls_req == "auto":
         if lc_value is None:
-            settings["ls_note"] = "ls='auto' needs a λc; no λs filter applied"
+            settings["ls_note"] = "an automatic λs needs a λc; no λs filter applied"
             return None
         nearest = min(LS_FOR_LC, key=lambda c: abs(math.log(c / lc_value)))
         cand = LS_FOR_LC[nearest]

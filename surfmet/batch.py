@@ -79,27 +79,50 @@ def _describe(exc: BaseException) -> str:
 
 
 class _Lines:
-    """Progress as one plain line per finished item on stderr (``desc: k/n``)."""
+    """Progress where stderr is not a terminal (logs, pipes, CI): one plain line per stage,
+    ``desc: k/n (t s)`` when it ends, and on a long stage one more line every
+    :attr:`EVERY` seconds, so a log is neither flooded (a line per step) nor silent."""
+
+    #: Seconds between the lines of a long stage.
+    EVERY = 60.0
 
     def __init__(self, total: int | None, desc: str) -> None:
+        import time
+
         self.total, self.desc, self.n = total, desc, 0
+        self._start = self._last = time.monotonic()
+        self._closed = False
+
+    def _line(self, now: float) -> None:
+        of = f"/{self.total}" if self.total else ""
+        print(f"{self.desc}: {self.n}{of} ({now - self._start:.1f} s)", file=sys.stderr,
+              flush=True)
+        self._last = now
 
     def update(self, n: int = 1) -> None:
+        import time
+
         self.n += n
-        of = f"/{self.total}" if self.total else ""
-        print(f"{self.desc}: {self.n}{of}", file=sys.stderr, flush=True)
+        now = time.monotonic()
+        if now - self._last >= self.EVERY and not (self.total and self.n >= self.total):
+            self._line(now)
 
     def set_postfix_str(self, text: str, refresh: bool = True) -> None:
         return None
 
     def close(self) -> None:
-        return None
+        import time
+
+        if not self._closed:
+            self._closed = True
+            self._line(time.monotonic())
 
     def __enter__(self) -> _Lines:
         return self
 
-    def __exit__(self, *exc: Any) -> None:
-        return None
+    def __exit__(self, exc_type: Any, *exc: Any) -> None:
+        if exc_type is None:  # a stage cut short by an error says nothing more
+            self.close()
 
 
 def progress_bar(total: int | None, desc: str, show: bool | None) -> Any:

@@ -201,7 +201,11 @@ def _solve_columns(rec: Any) -> dict[str, tuple[Any, str]]:
 
 
 def error_row(item: SweepItem, message: str) -> dict[str, tuple[Any, str]]:
-    """The row of a failed item: its parameters, ``status = "error"`` and the message."""
+    """The row of a failed item: its parameters, ``status = "error"`` and the message
+    (less the advice to accept a truncated result, which a sweep cannot)."""
+    from contact.record import TRUNCATED_ADVICE
+
+    message = message.replace(TRUNCATED_ADVICE, "")
     row = _base(item)
     row["status"] = ("error", "")
     row["error"] = (message, "")

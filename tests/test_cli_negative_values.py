@@ -17,7 +17,7 @@ MAT = ["--materials", "steel,aluminium"]
     (["contact", "--radius", "-20mm", "--load", "5N", *MAT], "must be positive"),
     (["hertz-check", "surfmet/data/paper_plate.x3p", "--radius", "20mm", "--load", "-5N",
       *MAT], "load must be a positive force"),
-    (["rolling", "--radius", "20mm", "--loads", "-1N:10N", *MAT], "0 < F1 < F2"),
+    (["rolling", "--radius", "20mm", "--loads", "-1N:10N", *MAT], "0 < START < END"),
     (["contact", "--radius", "20mm", "--load", "5N", "--hardness", "-.5GPa", *MAT],
      "must be positive"),
 ])

@@ -171,7 +171,8 @@ def scan(tmp_path_factory):
 
 def test_cli_adhesive_record(scan, capsys):
     assert main(["flat-contact", scan, "--e-star", "1GPa", "--pressures", "0.1MPa,1MPa",
-                 "--work-of-adhesion", "200mJ/m2", "--range", "5nm", "--json"]) == 0
+                 "--work-of-adhesion", "200mJ/m2", "--range", "5nm", "--interaction",
+                 "exponential", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     ad = rec["adhesion"]
     assert ad["interaction"] == "exponential"

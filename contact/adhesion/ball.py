@@ -13,11 +13,12 @@ Maugis' curve (benchmarks/adhesion_maugis.py: cell 4 x the larger of the JKR rad
 the zone reach, 24 retraction steps, step halving of :mod:`contact.adhesion.cycle`):
 lambda = 1 gives +11.8 % and +5.3 % at l_pz = 6.6 and 13 pixels (64^2, 128^2), an error
 that halves with the pixel; lambda = 5 gives +81 % at 0.53 pixel (128^2). Below
-:data:`MIN_ZONE_PIXELS` a warning is issued. The contact itself must span several pixels
-too: the JKR radius at zero load should be eight pixels or more. These figures are the
-plain Dugdale step's; the step smoothed on the grid's scale
+:data:`contact.zone_resolution.MIN_ZONE_PIXELS_PLAIN` a warning is issued. The contact
+itself must span several pixels too: the JKR radius at zero load should be eight pixels
+or more. These figures are the plain Dugdale step's; the step smoothed on the grid's scale
 (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`) removes most of the pinning (lambda = 1:
-+1.4 % on 48^2 of a cell 6 x a0; lambda = 5: +1.3 % at 1.6 pixels), and
++1.4 % on 48^2 of a cell 6 x a0; lambda = 5: +1.3 % at 1.6 pixels); its threshold
+:data:`contact.zone_resolution.MIN_ZONE_PIXELS` is measured on the command's own sphere, and
 :func:`edge_radius` reads the contact radius sub-pixel.
 
 Rough surfaces: a composite roughness z sampled onto the grid (positive outward from
@@ -42,14 +43,12 @@ from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
 from contact.grid import Grid
 from contact.material_pair import MaterialPair, modulus
+from contact.zone_resolution import (  # noqa: F401 (the thresholds, re-exported)
+    MIN_ZONE_PIXELS,
+    MIN_ZONE_PIXELS_PLAIN,
+    min_zone_pixels,
+)
 
-#: A cohesive zone narrower than this many pixels is under-resolved: about 7 % on the
-#: pull-off at lambda = 1 (see the module notes).
-MIN_ZONE_PIXELS = 10.0
-#: The same for the Dugdale step smoothed on the grid's scale
-#: (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`): lambda = 5 gave +1.3 % on the
-#: pull-off at 1.6 pixels and +2.9 % at 1.1 (the module notes).
-MIN_ZONE_PIXELS_SMOOTHED = 1.5
 #: A JKR contact radius at zero load of fewer pixels than this is under-resolved.
 MIN_CONTACT_PIXELS = 8.0
 
@@ -192,7 +191,7 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
               cycle: Cycle, smoothed: bool = False) -> tuple[str, ...]:
     """The resolution and separation warnings of a cycle (see the module notes)."""
     out = []
-    least = MIN_ZONE_PIXELS_SMOOTHED if smoothed else MIN_ZONE_PIXELS
+    least = min_zone_pixels(smoothed)
     if zone < least * dx:
         out.append(
             f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) "

@@ -50,7 +50,7 @@ the repulsive mean minus the attractive one.
 
 Resolution: as for a sphere (:mod:`contact.adhesion.ball`), the cohesive zone at each
 contact edge is about l_pz = pi E* w / (4 sigma0^2) wide; below
-:data:`contact.adhesion.ball.MIN_ZONE_PIXELS` pixels the edges are pinned by the grid and
+:func:`contact.zone_resolution.min_zone_pixels` pixels the edges are pinned by the grid and
 the adhesive area is not resolved, which the result warns about.
 """
 
@@ -62,7 +62,6 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from contact.adhesion.ball import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_SMOOTHED
 from contact.adhesion.cycle import MAX_AREA_CHANGE, MAX_SPLITS, advance
 from contact.adhesion.laws import InteractionLaw
 from contact.adhesion.solver import (
@@ -75,6 +74,7 @@ from contact.adhesion.solver import (
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid
 from contact.record import SolveRecord
+from contact.zone_resolution import min_zone_pixels
 
 #: Secant tries allowed per tensile nominal pressure.
 MAX_SOLVES = 40
@@ -446,7 +446,7 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
         if progress is not None:
             progress(k + 1, p.size)
     zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)
-    least = MIN_ZONE_PIXELS_SMOOTHED if getattr(law, "smoothing", 0.0) > 0.0 else MIN_ZONE_PIXELS
+    least = min_zone_pixels(getattr(law, "smoothing", 0.0) > 0.0)
     warnings = () if zone >= least * dx else (
         f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) = "
         f"{zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {least:g}, so the "

@@ -38,7 +38,8 @@ governs the line contact's transition too; the constant is the sphere's, Maugis 
 that a cylinder and a sphere of the same R, w, sigma0 and E* state the same lambda), with
 Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the law's range z, and with the cohesive
 zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
-the cohesive zone pi E* w / (4 sigma0^2) should span :data:`MIN_ZONE_PIXELS` cells, and
+the cohesive zone pi E* w / (4 sigma0^2) should span
+:data:`contact.zone_resolution.MIN_ZONE_PIXELS_PLAIN` cells, and
 the periodic images of the cylinder shift the load at a given width by about
 (pi^2 / 6) (a / L)^2, so the default cell is 16 times the larger of a_0 and the
 interaction's reach.
@@ -53,7 +54,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact._validate import positive
-from contact.adhesion.ball import MIN_ZONE_PIXELS, coarse_zone_effect, rough_gap
+from contact.adhesion.ball import coarse_zone_effect, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
 from contact.adhesion.solver import AdhesiveProblem
@@ -61,6 +62,7 @@ from contact.errors import ContactInputError
 from contact.grid import Grid, centred_coordinates
 from contact.halfspace.influence import periodic_kernel_spectrum
 from contact.material_pair import MaterialPair, modulus
+from contact.zone_resolution import MIN_ZONE_PIXELS_PLAIN
 
 #: The default cell, in units of the larger of a_0 and the reach of the interaction.
 CELL_WIDTHS = 16.0
@@ -291,10 +293,10 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
               cycle: Cycle) -> tuple[str, ...]:
     """Resolution, domain and separation warnings of a line cycle."""
     out = []
-    if zone < MIN_ZONE_PIXELS * dx:
+    if zone < MIN_ZONE_PIXELS_PLAIN * dx:
         out.append(
             f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) "
-            f"= {zone:.3g} m) spans {zone / dx:.2g} cells, fewer than {MIN_ZONE_PIXELS:g}; "
+            f"= {zone:.3g} m) spans {zone / dx:.2g} cells, fewer than {MIN_ZONE_PIXELS_PLAIN:g}; "
             f"{coarse_zone_effect(cycle)}: raise the cells or shrink the period")
     ell = max(a0, reach)
     if size < 8.0 * ell:

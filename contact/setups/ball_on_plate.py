@@ -49,7 +49,7 @@ from contact.geometry import (
 )
 from contact.hertz import hertz_sphere
 from contact.material_pair import MaterialPair, modulus
-from contact.record import edge_warning, raise_edge
+from contact.record import TRUNCATED_ADVICE, edge_warning, raise_edge
 from contact.sampling import fill_nan, sample_roughness
 from contact.setups.composite import CompositeRoughness
 
@@ -157,8 +157,7 @@ class SphereContact:
                     "the scans do not overlap the contact: the roughness data end "
                     f"{covered * 5e5:.4g} um from the ball's apex, inside the "
                     f"{reach * 1e6:.4g} um contact diameter expected (Hertz); use larger "
-                    "scans or a smaller load (or accept a truncated result: on_edge='warn', "
-                    "CLI --on-edge warn)"
+                    f"scans or a smaller load{TRUNCATED_ADVICE}"
                 )
             if dom.n > fit:
                 self.notes.append(
@@ -282,9 +281,8 @@ class SphereContact:
             if n_new <= n or attempt == max_enlarge:
                 why = ("the roughness data end there" if self._z is not None and n_new <= n
                        else f"gave up after {max_enlarge} enlargements")
-                raise_edge(f"it cannot be enlarged ({why}); use a larger scan, a smaller "
-                           "load, or accept a truncated result (on_edge='warn', CLI --on-edge "
-                           "warn)", where)
+                raise_edge(f"it cannot be enlarged ({why}); use a larger scan or a smaller "
+                           f"load{TRUNCATED_ADVICE}", where)
             msg = (f"contact pressure reached the edge of the {side * 1e3:.4g} mm domain; "
                    f"enlarged to {n_new * dx * 1e3:.4g} mm ({n_new} cells) and solved again")
             warnings.warn(msg, EdgeContactWarning, stacklevel=2)

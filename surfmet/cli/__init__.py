@@ -54,6 +54,13 @@ EPILOG = """examples:
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
 accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
 (steel:E=200GPa); a name not in the table with E and nu given is a custom material.
+
+One form per option in every command: the scan is the positional argument (--plate FILE
+its alias); options with several values (--loads, --pressures) take lists (4N,5N,6N) and
+log-spaced ranges (1N:100N:5; 9 values without the count; at most 100 values);
+--periodic auto|yes|no (a bare --periodic is yes); --interaction defaults to dugdale;
+--quiet (-q) silences the progress of every long command (off a terminal, one line per
+stage).
 """
 
 
@@ -123,18 +130,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     from surfmet.errors import user_error_types
 
     argv = list(sys.argv[1:] if argv is None else argv)
+    parser = None
     try:
         parser = build_parser()
         args = parser.parse_args(negative_values(parser, argv))
         if not getattr(args, "func", None):
             parser.print_help(sys.stderr)
             return 1
-        return int(args.func(args) or 0)
+        rc = int(args.func(args) or 0)
+        for note in getattr(args, "deferred_notes", None) or ():  # surfmet.cli._values
+            print(note, file=sys.stderr)
+        return rc
     except UserError as exc:
         print(f"surfmet: error: {exc}", file=sys.stderr)
         return 1
     except user_error_types() as exc:
-        print(f"surfmet: error: {exc}", file=sys.stderr)
+        from surfmet.cli._terms import cli_terms, command_options
+
+        print(f"surfmet: error: {cli_terms(str(exc), command_options(parser, argv))}",
+              file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("surfmet: interrupted", file=sys.stderr)

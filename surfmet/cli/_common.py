@@ -42,10 +42,14 @@ def positive_length(text: str) -> float:
 
 
 def add_ball_arguments(parser: Any, *, plate_option: bool = True, required: bool = True) -> None:
-    """The ball-on-plate arguments shared by contact, hertz-check, rolling and report:
-    ``--plate`` (unless the plate is positional), ``--ball``, ``--radius``, ``--materials``."""
+    """The ball-on-plate arguments shared by contact, hertz-check, rolling and
+    rolling-contact: the plate's scan ``PLATE`` (``--plate`` its alias,
+    :func:`surfmet.cli._values.add_plate_argument`; left out without ``plate_option``),
+    ``--ball``, ``--radius``, ``--materials``."""
     if plate_option:
-        parser.add_argument("--plate", metavar="FILE", help="scan of the plate (levelled)")
+        from surfmet.cli._values import add_plate_argument
+
+        add_plate_argument(parser, "scan of the plate (levelled)")
     parser.add_argument("--ball", metavar="FILE",
                         help="scan of the ball (its best-fit sphere is removed)")
     parser.add_argument("--radius", type=positive_length, required=required, metavar="L",
@@ -112,9 +116,9 @@ def log(message: str) -> None:
 
 def add_quiet_flag(parser: Any) -> None:
     """``--quiet``: no progress on stderr."""
-    parser.add_argument("--quiet", action="store_true",
+    parser.add_argument("--quiet", "-q", action="store_true",
                         help="no progress on stderr (shown for long runs: a bar on a "
-                        "terminal, one line per step elsewhere)")
+                        "terminal, one line per stage elsewhere)")
 
 
 def show_progress(args: Any) -> bool:

@@ -37,12 +37,9 @@ def run_study(args: argparse.Namespace, command: str) -> int:
         raise SurfmetInputError("--periodic does not apply to --resolution-study")
 
     if command == "rolling":
-        from contact.rolling import log_loads
-
-        lo, hi, n = args.loads
         # the facade resolves the materials, the lossy body's share and the hardness
         study, _ = rolling_study(args.plate, args.ball, radius=args.radius,
-                                 loads=log_loads(lo, hi, 9 if n is None else n),
+                                 loads=args.loads,
                                  materials=args.materials, hardness=args.hardness,
                                  lossy=args.lossy, spikes=args.spikes, progress=progress,
                                  model=args.model, alpha_h=args.alpha_h,

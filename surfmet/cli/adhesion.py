@@ -21,6 +21,7 @@ from surfmet.cli._common import (
     show_progress,
 )
 from surfmet.cli._scan_options import add_scan_options, print_caveats, read_bodies, scan_caveats
+from surfmet.cli._values import add_interaction_argument, add_plate_argument
 
 EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
@@ -29,7 +30,7 @@ EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 0.05J/m2 --range 5nm \\
       --grid 192 --plot cycle.png
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm \\
-      --plate plate.x3p --size 2um
+      plate.x3p --size 2um
   surfmet adhesion --line --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 \\
       --range 3nm --json
 
@@ -38,10 +39,13 @@ the larger of the JKR contact radius at zero load and the interaction zone). --r
 h0 = w / sigma0 for the Dugdale (Maugis) law, rho for the exponential law
 t(g) = (w / rho) exp(-g / rho). The pull-off force is the largest tension on the way out
 (displacement control). A grid that leaves the cohesive zone pi E* w / (4 sigma0^2) fewer
-than ten pixels wide is warned about: the pull-off then comes out too large (+5 % at
-13 pixels, +12 % at 6.6, +81 % at half a pixel, measured at Maugis lambda 1 and 5).
+than {zone:g} pixels wide is warned about (JSON grid.process_zone_pixels): the pull-off then
+comes out too large. Measured against Maugis-Dugdale on this command's sphere, Dugdale
+step smoothed on the grid (benchmarks/adhesion_zone_threshold.py): within 2.1 % from 2
+pixels up (Maugis lambda 1 to 5), up to +3.8 % between 1.5 and 2, +4.6 % to +14 % below
+1.1. The exponential law and --line have no smoothed step: their warning starts at {plain:g}.
 
---plate and --ball add the scans' roughness: the plate levelled, the ball's best-fit
+PLATE and --ball add the scans' roughness: the plate levelled, the ball's best-fit
 sphere removed, both paired and sampled onto the solver's grid around the middle of the
 scans, which must cover the periodic cell (--size).
 
@@ -49,12 +53,12 @@ scans, which must cover the periodic cell (--size).
 a periodic line of --grid cells (default 2048) across --size (default 16 times the larger
 of the JKR half-width at zero load and the interaction's reach). Forces are per unit
 length (N/m), energies J/m; the pull-off is compared with JKR's 3 (pi w^2 E* R / 16)^(1/3)
-and with the rigid cylinder's. With --plate the roughness is the scan's middle row.
+and with the rigid cylinder's. With PLATE the roughness is the scan's middle row.
 """
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
-    from surfmet.mechanics.adhesion import INTERACTIONS
+    from contact.zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN
     from surfmet.units import parse_surface_energy
 
     p = sub.add_parser(
@@ -64,7 +68,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         "control, with a Dugdale (Maugis) or exponential adhesion law solved on an FFT "
         "boundary-element grid: pull-off force, jump-in and jump-out, energy lost in the "
         "cycle, and the Maugis and Tabor parameters.",
-        epilog=EPILOG,
+        epilog=EPILOG.format(zone=MIN_ZONE_PIXELS, plain=MIN_ZONE_PIXELS_PLAIN),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--radius", type=positive_length, required=True, metavar="R",
@@ -76,8 +80,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    required=True, metavar="W", help="work of adhesion, e.g. 50mJ/m2")
     p.add_argument("--range", type=positive_length, required=True, metavar="RHO",
                    dest="range_", help="interaction range, e.g. 2nm")
-    p.add_argument("--interaction", choices=INTERACTIONS, default="dugdale",
-                   help="adhesion law (default dugdale)")
+    add_interaction_argument(p)
     p.add_argument("--grid", type=int, default=None, metavar="N",
                    help="cells per side (default 128; with --line, across the period, "
                    "default 2048)")
@@ -86,8 +89,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
     p.add_argument("--steps", type=int, default=40, metavar="K",
                    help="approach steps on each leg (default 40)")
-    p.add_argument("--plate", metavar="FILE",
-                   help="scan of the plate (levelled; its roughness enters the gap)")
+    add_plate_argument(p, "scan of the plate (levelled; its roughness enters the gap)")
     p.add_argument("--ball", metavar="FILE",
                    help="scan of the ball (its best-fit sphere is removed)")
     add_scan_options(p, ("plate", "ball"))
@@ -106,15 +108,12 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
 
     check_output(args.plot, "--plot")
-    bar = progress_bar(2 * args.steps, "adhesion, steps", show_progress(args))
-    try:
+    with progress_bar(2 * args.steps, "adhesion, steps", show_progress(args)) as bar:
         run_ = (line_adhesion if args.line else adhesion)(
             args.radius, work=args.work_of_adhesion, range_=args.range_,
             materials=args.materials, e_star=args.e_star, interaction=args.interaction,
             grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
             ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
-    finally:
-        bar.close()
     if args.plot:
         save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:

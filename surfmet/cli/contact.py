@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from typing import Any
 
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
     check_output,
     emit_json,
@@ -17,19 +17,21 @@ from surfmet.cli._common import (
     positive_length,
     pressure,
     print_solve,
+    show_progress,
     spike_summary,
 )
 from surfmet.cli._grid import add_grid_argument, add_on_edge_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
 from surfmet.cli._scan_options import add_scan_options, read_bodies
+from surfmet.cli._values import add_periodic_argument
 
 EPILOG = """examples:
-  surfmet contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
+  surfmet contact plate.x3p --ball ball.x3p --radius 20mm --load 10N \\
       --materials steel,aluminium --plastic --resolution-study
   surfmet contact --radius 20mm --load 10N --materials steel,aluminium
-  surfmet contact --plate plate.nms --ball ball.nms --radius 20mm --load 10N \\
+  surfmet contact plate.nms --ball ball.nms --radius 20mm --load 10N \\
       --materials steel,aluminium --json
-  surfmet contact --plate plate.x3p --radius 20mm --load 10N --materials steel,aluminium \\
+  surfmet contact plate.x3p --radius 20mm --load 10N --materials steel,aluminium \\
       --plastic --out result.npz
   surfmet contact --radius 20mm --load 10N --materials steel:E=200GPa:nu=0.29,al:H=1GPa
 
@@ -62,7 +64,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                       "when it fits in memory; 256 for a smooth ball)")
     p.add_argument("--size", type=positive_length, metavar="L",
                    help="domain side (default: automatic from Hertz and the roughness)")
-    p.add_argument("--periodic", action="store_true", help="periodic domain (default: free)")
+    add_periodic_argument(p, default="no", help="periodic domain: yes, or no (default: a "
+                          "free boundary; auto is no, a ball's contact being local)")
     add_on_edge_argument(p, "contact reaching the domain edge: enlarge the domain (default), "
                          "warn and return the truncated result, or fail")
     p.add_argument("--tol", type=float, default=1e-6, help="solver tolerance (default 1e-6)")
@@ -70,6 +73,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_resolution_study_flag(p)
     p.add_argument("--out", metavar="FILE.npz", help="save the fields (pressure, gap, ...)")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -83,35 +87,30 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.mechanics.ball_contact import ball_contact
     from surfmet.units import jsonable
 
+    args.periodic = args.periodic == "yes"
     if args.resolution_study:
         from surfmet.cli._resolution_study import run_study
 
         return run_study(args, "contact")
     check_grid(args.grid)
     check_output(args.out, "--out")
-    bar = None
+    from surfmet.batch import progress_bar
+
+    # a smooth ball on a small grid is done before a line would help
     big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
+    with progress_bar(None, "contact, iterations",
+                      show_progress(args) if big else False) as bar:
 
-    def callback(it: int, residual: float) -> None:
-        nonlocal bar
-        if bar is None:
-            from tqdm.auto import tqdm
+        def callback(it: int, residual: float) -> None:
+            bar.update(1)
+            bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
 
-            bar = tqdm(desc="contact", unit="it", file=sys.stderr, leave=False,
-                       disable=None if big else True, dynamic_ncols=True)
-        bar.update(1)
-        bar.set_postfix_str(f"residual {residual:.1e}", refresh=False)
-
-    try:
         sol = ball_contact(
             args.plate, args.ball, radius=args.radius, load=args.load,
             materials=args.materials, hardness=args.hardness, plastic=args.plastic,
             grid=args.grid, size=args.size, periodic=args.periodic, on_edge=args.on_edge,
             tol=args.tol, max_iter=args.max_iter, callback=callback,
             spikes=args.spikes)
-    finally:
-        if bar is not None:
-            bar.close()
     res, pair = sol.result, sol.pair
     if sol.preparation is not None and not args.json:
         for note in sol.preparation.notes:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, emit_json
+from surfmet.cli._common import add_json_flag, add_quiet_flag, emit_json, show_progress
 
 EPILOG = """examples:
   surfmet demo
@@ -40,6 +40,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "the run's time) and four of the figures; every number printed is the "
                    "full run's")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
@@ -48,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.demo import prepare_output, run_demo, story
 
     prepare_output(args.out)  # refuse a foreign folder before any work
-    summary = run_demo(args.out, quick=args.quick, progress=True)
+    summary = run_demo(args.out, quick=args.quick, progress=show_progress(args))
     if args.json:
         emit_json(summary)
     else:

@@ -21,6 +21,14 @@ from surfmet.cli._common import (
     show_progress,
 )
 from surfmet.cli._scan_options import add_scan_options, read_options
+from surfmet.cli._values import (
+    VALUES_METAVAR,
+    add_interaction_argument,
+    add_plate_argument,
+    pressures,
+    require_plate,
+    values_help,
+)
 from surfmet.cli.scales import add_measurement_arguments, print_all_scales, read_measurements
 from surfmet.cli.spectrum import add_periodic_argument, periodic_flag
 
@@ -39,13 +47,13 @@ The BEM is periodic when the scan is (opposite edges match, or --periodic yes) a
 free boundary otherwise; the output says which. Errors are model/BEM - 1.
 
 With --work-of-adhesion W --range RHO the scan is also pressed with adhesion
-(--interaction exponential, the default, t(g) = (w/rho) exp(-g/rho); or dugdale, tension
-w/h0 up to the gap h0 = RHO) at each pressure, beside the non-adhesive BEM: the contact
-area fraction (gap zero), the mean gap and the attractive pressure (the law's tension
-averaged over the nominal area, touching points included; the nominal pressure is the
-repulsive mean minus it). The adhesive solve is periodic and elastic: a non-periodic scan
-needs --periodic yes, and --hardness is refused. With several FILEs it runs on the BEM's
-map.
+(--interaction dugdale, the default, tension w/h0 up to the gap h0 = RHO, its step
+smoothed on the pixel; or exponential, t(g) = (w/rho) exp(-g/rho)) at each pressure,
+beside the non-adhesive BEM: the contact area fraction (gap zero), the mean gap and the
+attractive pressure (the law's tension averaged over the nominal area, touching points
+included; the nominal pressure is the repulsive mean minus it). The adhesive solve is
+periodic and elastic: a non-periodic scan needs --periodic yes, and --hardness is
+refused. With several FILEs it runs on the BEM's map.
   surfmet flat-contact synthetic.npz --e-star 1GPa --pressures 0.1MPa:1MPa:3 \
       --work-of-adhesion 50mJ/m2 --range 5nm
 
@@ -67,13 +75,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("files", nargs="+", metavar="FILE",
-                   help="areal scan of the rough surface; or several measurements of it")
+    add_plate_argument(p, "areal scan of the rough surface; or several measurements of it",
+                       several=True, dest="files")
     mod = p.add_mutually_exclusive_group(required=True)
     mod.add_argument("--materials", metavar="A[,B]", help="scan material [, flat material]")
     mod.add_argument("--e-star", type=pressure, metavar="E", help="composite modulus E*")
-    p.add_argument("--pressures", required=True, metavar="P[,P...]|P1:P2:N",
-                   help="nominal pressures, e.g. 1MPa,5MPa or 1MPa:100MPa:5 (log-spaced)")
+    p.add_argument("--pressures", type=pressures, required=True, metavar=VALUES_METAVAR,
+                   help=values_help("nominal pressures", "1MPa,5MPa"))
     p.add_argument("--hardness", type=pressure, metavar="H", default=None,
                    help="cap the BEM pressure at H (elastic-perfectly-plastic)")
     add_periodic_argument(p)
@@ -94,7 +102,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def add_adhesion_arguments(p: argparse.ArgumentParser) -> None:
     """--work-of-adhesion, --range and --interaction of an adhesive flat contact."""
-    from surfmet.mechanics.adhesion import INTERACTIONS
     from surfmet.units import parse_surface_energy
 
     g = p.add_argument_group("adhesion (a periodic scan, elastic)")
@@ -103,8 +110,7 @@ def add_adhesion_arguments(p: argparse.ArgumentParser) -> None:
     g.add_argument("--range", type=positive_length, metavar="RHO", dest="range_",
                    help="interaction range (rho of the exponential law, h0 = w/sigma0 of "
                    "the Dugdale law), e.g. 2nm; needed with --work-of-adhesion")
-    g.add_argument("--interaction", choices=INTERACTIONS, default="exponential",
-                   help="adhesion law (default exponential)")
+    add_interaction_argument(g)
 
 
 def adhesion_law(args: argparse.Namespace) -> Any:
@@ -125,10 +131,11 @@ def adhesion_law(args: argparse.Namespace) -> Any:
 def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
     from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.flat_contact import flat_contact, parse_pressures, plot
+    from surfmet.mechanics.flat_contact import flat_contact, plot
     from surfmet.records import flat_contact_record
 
-    pressures = parse_pressures(args.pressures)
+    require_plate(args.files, "flat-contact", "FILE")
+    pressures = sorted(set(args.pressures))
     law = adhesion_law(args)
     check_output(args.plot, "--plot")
     if args.e_star is not None and not args.e_star > 0:

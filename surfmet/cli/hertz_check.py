@@ -9,6 +9,7 @@ from surfmet.cli._common import (
     _argtype,
     add_ball_arguments,
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
     check_output,
     emit_json,
@@ -61,8 +62,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("plate", metavar="PLATE", help="scan of the plate")
-    add_ball_arguments(p, plate_option=False)
+    add_ball_arguments(p)
     p.add_argument("--load", type=force, required=True, metavar="F",
                    help="normal load, e.g. 10N")
     p.add_argument("--hardness", type=pressure, metavar="P",
@@ -84,16 +84,20 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--plot", metavar="FILE",
                    help="write the pressure map and the radial profile against Hertz")
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 
 
 def run(args: argparse.Namespace) -> int:
+    from surfmet.cli._values import require_plate
+
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length
 
+    require_plate(args.plate, "hertz-check")
     check_grid(args.grid)
     check_output(args.plot, "--plot")
     if args.elastic and args.hardness is not None:

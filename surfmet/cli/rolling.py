@@ -12,7 +12,6 @@ from surfmet.cli._common import (
     add_spikes_argument,
     check_output,
     emit_json,
-    force_range,
     log,
     pressure,
     print_solve,
@@ -23,15 +22,16 @@ from surfmet.cli._common import (
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
 from surfmet.cli._scan_options import add_scan_options, read_bodies
+from surfmet.cli._values import VALUES_METAVAR, loads, positions, refuse_unused, values_help
 from surfmet.cli.rolling_visco import add_visco_arguments, run_visco
 
 EPILOG = """examples:
-  surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
+  surfmet rolling plate.x3p --radius 20mm --materials steel,aluminium \\
       --loads 1N:100N:5 --resolution-study
   surfmet rolling --radius 20mm --materials steel,aluminium --loads 1N:100N:9
-  surfmet rolling --plate plate.x3p --ball ball.x3p --radius 20mm \\
+  surfmet rolling plate.x3p --ball ball.x3p --radius 20mm \\
       --materials steel,aluminium --loads 1N:100N:9 --json
-  surfmet rolling --plate plate.x3p --radius 20mm --materials steel,aluminium \\
+  surfmet rolling plate.x3p --radius 20mm --materials steel,aluminium \\
       --loads 1N:100N:9 --model plastic --plot lambda.png
 
 M_r = s_r N^lambda is computed from the contact solution at each load (log-spaced,
@@ -41,6 +41,25 @@ the first pass at the softer body's hardness). lambda_eff is the least-squares s
 log M_r against log N with its confidence interval; the local exponent shows how it
 drifts with the load. A smooth ball gives lambda = 4/3.
 """
+
+#: The options of one dissipation model: given with another model they are refused
+#: (they would be ignored).
+MODEL_OPTIONS: dict[str, tuple[str, ...]] = {
+    "--speed": ("viscoelastic", "all"),
+    "--loss": ("viscoelastic", "all"),
+    "--viscoelastic": ("viscoelastic",),
+    "--work-of-adhesion": ("all",),
+    "--adhesion-hysteresis": ("all",),
+    "--no-microslip": ("all",),
+    "--mu": ("microslip", "all"),
+    "--traction-ratio": ("microslip",),
+    "--alpha-h": ("hysteresis",),
+    "--hardness": ("plastic", "all"),
+    "--lossy": ("hysteresis", "plastic"),
+    "--kinematics": ("hysteresis", "plastic"),
+}
+#: The parser's defaults (filled by add_parser), against which a given option is told.
+_DEFAULTS: dict[str, Any] = {}
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
@@ -54,8 +73,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_ball_arguments(p)
-    p.add_argument("--loads", type=force_range, required=True, metavar="F1:F2[:N]",
-                   help="load range, N log-spaced loads (default 9), e.g. 1N:100N:9")
+    p.add_argument("--loads", type=loads, required=True, metavar=VALUES_METAVAR,
+                   help=values_help("loads", "4N,5N,6N") + "; three or more to fit lambda")
     p.add_argument("--model", choices=("hysteresis", "plastic", "microslip", "viscoelastic",
                                        "all"),
                    default="hysteresis", help="dissipation model (default hysteresis; "
@@ -79,7 +98,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_grid_argument(p, "contact grid, cells per side (default: the scans' own pixel, "
                       "native resolution, when it fits in memory)")
     add_resolution_study_flag(p)
-    p.add_argument("--positions", default=None, metavar="X:Y,...",
+    p.add_argument("--positions", type=positions, default=None, metavar="X:Y,...",
                    help="track positions: apex offsets from the middle of the scans; the "
                    "exponent is fitted to the mean moment over them")
     p.add_argument("--workers", type=int, default=None, metavar="N",
@@ -90,6 +109,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_json_flag(p)
     add_quiet_flag(p)
     p.set_defaults(func=run)
+    _DEFAULTS.update({a.dest: a.default for a in p._actions})
     return p
 
 
@@ -97,15 +117,15 @@ def run(args: argparse.Namespace) -> int:
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     import math
 
-    from contact.rolling import log_loads
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.rolling_resistance import rolling_resistance
     from surfmet.units import format_length
 
+    args.loads = sorted(set(args.loads))  # a sweep runs up the loads (warm starts)
+    refuse_unused(args, _DEFAULTS, args.model, MODEL_OPTIONS)
     if args.model in ("viscoelastic", "all"):
         return run_visco(args)
-    lo, hi, n = args.loads
-    n = 9 if n is None else n
+    n = len(args.loads)
     if n < 3:
         raise SurfmetInputError("--loads needs at least 3 loads to fit an exponent with a "
                                 "confidence interval")
@@ -120,10 +140,10 @@ def run(args: argparse.Namespace) -> int:
 
         return run_study(args, "rolling")
     if args.positions is not None or args.workers is not None or args.scheduler is not None:
-        return _run_tracks(args, log_loads(lo, hi, n))
+        return _run_tracks(args, args.loads)
     rep = rolling_resistance(
         args.plate, args.ball, radius=args.radius, materials=args.materials,
-        loads=log_loads(lo, hi, n), model=args.model, hardness=args.hardness,
+        loads=args.loads, model=args.model, hardness=args.hardness,
         alpha_h=args.alpha_h, lossy=args.lossy, kinematics=args.kinematics,
         spikes=args.spikes, grid=args.grid,
         progress=lambda it: progress(it, total=n, desc=f"rolling ({args.model}), loads",
@@ -166,16 +186,12 @@ def run(args: argparse.Namespace) -> int:
 def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
     """Several track positions through
     :func:`surfmet.mechanics.rolling_resistance.rolling_tracks`."""
-    from surfmet.cli.sweep import _positions
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.rolling_resistance import rolling_tracks
 
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")
-    try:
-        positions = _positions(args.positions) if args.positions else [None]
-    except argparse.ArgumentTypeError as exc:
-        raise SurfmetInputError(str(exc)) from None
+    positions = args.positions or [None]
     if args.plot:
         raise SurfmetInputError("--plot draws one track; leave out --positions/--workers/"
                                 "--scheduler to use it")

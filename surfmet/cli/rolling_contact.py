@@ -8,6 +8,7 @@ from typing import Any
 from surfmet.cli._common import (
     add_ball_arguments,
     add_json_flag,
+    add_quiet_flag,
     add_spikes_argument,
     emit_json,
     log,
@@ -25,7 +26,7 @@ EPILOG = """examples:
       --creepage 1e-4 --json
   surfmet rolling-contact --radius 25mm --load 100N/mm --line --materials aluminium,steel \\
       --mu 0.05
-  surfmet rolling-contact --plate plate.x3p --ball ball.x3p --radius 20mm --load 5N \\
+  surfmet rolling-contact plate.x3p --ball ball.x3p --radius 20mm --load 5N \\
       --materials steel,aluminium --mu 0.3 --grid 96
 
 Sign convention: body 1 = ball, body 2 = plate; the contact moves in +x (leading edge at
@@ -66,6 +67,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     add_spikes_argument(p)
     add_visco_options(p)
     add_json_flag(p)
+    add_quiet_flag(p)
     p.set_defaults(func=run)
     return p
 

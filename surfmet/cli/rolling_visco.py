@@ -53,12 +53,10 @@ def _loss(text: str | None) -> tuple[float, float] | None:
 
 def run_visco(args: argparse.Namespace) -> int:
     """Dispatch of --model viscoelastic / all."""
-    from contact.rolling import log_loads
     from surfmet.cli._common import emit_json, log, progress
     from surfmet.cli.rolling_contact_visco import speed_value
 
-    lo, hi, n = args.loads
-    n = 9 if n is None else n
+    n = len(args.loads)
     speed = speed_value(args.speed)
     if args.model == "all":
         from surfmet.errors import SurfmetInputError
@@ -70,9 +68,9 @@ def run_visco(args: argparse.Namespace) -> int:
             # the comparison is of the smooth pair; a scan given here would be ignored
             raise SurfmetInputError(
                 "--model all sets the mechanisms side by side on the smooth pair and takes no "
-                "scans; run --model plastic or hysteresis with --plate/--ball for the scans")
+                "scans; run --model plastic or hysteresis with PLATE and --ball for the scans")
         rep = rolling_mechanisms(radius=args.radius, materials=args.materials,
-                                 loads=(lo, hi, n), speed=speed, loss=_loss(args.loss),
+                                 loads=args.loads, speed=speed, loss=_loss(args.loss),
                                  hardness=args.hardness, grid=args.grid or 128,
                                  mu=None if args.no_microslip else args.mu,
                                  adhesion=(args.work_of_adhesion, args.adhesion_hysteresis))
@@ -90,7 +88,7 @@ def run_visco(args: argparse.Namespace) -> int:
                                 "tau=.. or --loss ETA_BALL,ETA_PLATE")
     rep = viscoelastic_rolling(
         args.plate, args.ball, radius=args.radius, materials=args.materials,
-        loads=log_loads(lo, hi, n), speed=speed, viscoelastic=args.viscoelastic,
+        loads=args.loads, speed=speed, viscoelastic=args.viscoelastic,
         loss=_loss(args.loss), grid=args.grid or 128, spikes=args.spikes,
         progress=lambda it: progress(it, total=n, desc="rolling (viscoelastic)"))
     for note in rep.notes:

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
-from surfmet.cli._common import add_json_flag, check_output, emit_json, log
+from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.rotor_verdict import (
     table_verdict,
@@ -70,8 +70,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "step_deg, optional slope_rad, groups {NAME: {ball_loads_N: [N1, N2], "
                    "columns: [...]}}; gives the verdict's lambda outputs and confounds "
                    f"({PAPER_ALIAS} carries the paper's rig)")
-    p.add_argument("--quiet", "-q", action="store_true",
-                   help="no progress lines on stderr")
+    add_quiet_flag(p)
     add_json_flag(p)
     p.set_defaults(func=run)
     return p

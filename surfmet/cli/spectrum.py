@@ -16,7 +16,10 @@ from surfmet.cli._common import (
     save_figure,
 )
 from surfmet.cli._scan_options import add_scan_options, read_options
+from surfmet.cli._values import add_periodic_argument, periodic_flag
 from surfmet.cli.scales import add_measurement_arguments
+
+__all__ = ["add_parser", "add_periodic_argument", "periodic_flag"]
 
 EPILOG = """examples:
   surfmet spectrum plate.x3p
@@ -36,17 +39,6 @@ the rms values of the band where it is measured are given with that band, per me
 and in all, with the band's summit statistics and, with --materials, its plasticity index
 (--periodic applies to one scan only).
 """
-
-
-def add_periodic_argument(p: argparse.ArgumentParser) -> None:
-    """``--periodic auto|yes|no`` (shared with flat-contact)."""
-    p.add_argument("--periodic", choices=("auto", "yes", "no"), default="auto",
-                   help="take the scan as periodic (default: detect from its edges)")
-
-
-def periodic_flag(text: str) -> bool | None:
-    """``auto`` -> None, ``yes`` -> True, ``no`` -> False."""
-    return {"auto": None, "yes": True, "no": False}[text]
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:

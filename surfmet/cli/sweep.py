@@ -8,15 +8,13 @@ from typing import Any
 from surfmet.cli._common import (
     add_quiet_flag,
     add_spikes_argument,
-    force,
-    force_range,
-    length,
     log,
     positive_length,
     pressure,
     show_progress,
 )
 from surfmet.cli._scan_options import add_scan_options, files_caveats, read_options
+from surfmet.cli._values import VALUES_METAVAR, loads, positions, values_help
 
 EPILOG = """examples:
   surfmet sweep --task hertz-check --plates plate.x3p --balls ball.x3p --radius 20mm \\
@@ -39,28 +37,6 @@ whose row is not in all of them. Two runs never write one file at once (a lock).
 """
 
 
-def _loads(text: str) -> list[float]:
-    from contact.rolling import log_loads
-
-    if ":" in text:
-        lo, hi, n = force_range(text)
-        return [float(v) for v in log_loads(lo, hi, n)]
-    return [force(t) for t in text.split(",") if t.strip()]
-
-
-def _position(text: str) -> tuple[float, float]:
-    try:
-        x, y = text.split(":")
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"a position is X:Y (e.g. 0.2mm:0), got {text!r}"
-                                         ) from None
-    return (length(x), length(y))
-
-
-def _positions(text: str) -> list[tuple[float, float]]:
-    return [_position(t) for t in text.split(",") if t.strip()]
-
-
 def add_parser(sub: Any) -> argparse.ArgumentParser:
     p = sub.add_parser(
         "sweep",
@@ -76,11 +52,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("--balls", nargs="+", metavar="FILE", default=None,
                    help="ball scans (default: a smooth ball)")
     p.add_argument("--radius", type=positive_length, required=True, metavar="L")
-    p.add_argument("--loads", type=_loads, required=True, metavar="F,F...|F1:F2:N",
-                   help="loads, a list (5N,10N) or N log-spaced (1N:100N:5)")
+    p.add_argument("--loads", type=loads, required=True, metavar=VALUES_METAVAR,
+                   help=values_help("loads", "5N,10N"))
     p.add_argument("--materials", action="append", metavar="BALL,PLATE",
                    help="a material pair; repeat for several (default steel,aluminium)")
-    p.add_argument("--positions", type=_positions, default=None, metavar="X:Y,...",
+    p.add_argument("--positions", type=positions, default=None, metavar="X:Y,...",
                    help="apex offsets from the middle of the scans (default the middle)")
     p.add_argument("--hardness", type=pressure, default=None, metavar="P",
                    help="cap the pressure (contact) / the flow pressure (hertz-check)")

@@ -276,7 +276,7 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     if span is not None:
         md["height_range"] = (f"{name}: {span}: the file is damaged (one flipped exponent bit "
                               "turns 2 µm into 1e302 m) or its height unit is wrong (for a "
-                              "file that states none, give it: --height-unit)")
+                              "file that states none, give it: height_unit=)")
     md.setdefault("format", fmt)
     return scan.replace(metadata=md)
 

@@ -21,6 +21,11 @@ from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
 INTERACTIONS = ("dugdale", "exponential")
+#: The adhesion law of every command and facade unless told otherwise: the one with a
+#: closed form to check it by (Maugis 1992: the sphere's pull-off, tests/maugis_reference.py)
+#: and the one the coarse-grid threshold is measured on
+#: (:data:`contact.zone_resolution.MIN_ZONE_PIXELS`).
+INTERACTION = "dugdale"
 
 
 def interaction_law(interaction: str, work: float, range_: float) -> Any:
@@ -63,7 +68,7 @@ class Adhesion:
 
 
 def adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
-             e_star: float | None = None, interaction: str = "dugdale",
+             e_star: float | None = None, interaction: str = INTERACTION,
              grid: int | None = None, size: float | None = None, steps: int = 40,
              plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
              progress: Callable[[int, int], None] | None = None) -> Adhesion:

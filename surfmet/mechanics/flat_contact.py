@@ -59,26 +59,12 @@ class FlatContactReport:
 
 
 def parse_pressures(text: str) -> np.ndarray:
-    """``P[,P...]`` or ``P1:P2:N`` (N log-spaced values) -> pressures in Pa."""
+    """``P[,P...]`` or ``P1:P2[:N]`` (N log-spaced values), the grammar of
+    :func:`surfmet.value_lists.parse_values` -> the distinct pressures in Pa, ascending."""
     from surfmet.units import parse_pressure
+    from surfmet.value_lists import parse_values
 
-    text = str(text).strip()
-    if ":" in text:
-        parts = text.split(":")
-        if len(parts) != 3:
-            raise SurfmetInputError(f"a pressure range is P1:P2:N, got {text!r}")
-        try:
-            n = int(parts[2])
-        except ValueError:
-            raise SurfmetInputError(f"N in P1:P2:N must be an integer, got {parts[2]!r}") from None
-        p1, p2 = parse_pressure(parts[0]), parse_pressure(parts[1])
-        if not (0 < p1 < p2) or n < 2:
-            raise SurfmetInputError(f"need 0 < P1 < P2 and N >= 2 in {text!r}")
-        return np.geomspace(p1, p2, n)
-    vals = np.array([parse_pressure(s) for s in text.split(",") if s.strip()])
-    if vals.size == 0 or np.any(vals <= 0):
-        raise SurfmetInputError(f"pressures must be positive, got {text!r}")
-    return np.unique(vals)
+    return np.unique(parse_values(str(text), parse_pressure, "pressures"))
 
 
 def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: Any,

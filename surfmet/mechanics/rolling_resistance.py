@@ -70,12 +70,11 @@ class RollingReport:
 
 
 def _load_list(loads: Any) -> np.ndarray:
-    from contact.rolling import log_loads
-    from surfmet.units import parse_force_range
+    from surfmet.units import parse_force
+    from surfmet.value_lists import parse_values
 
-    if isinstance(loads, str):
-        lo, hi, n = parse_force_range(loads)
-        return log_loads(lo, hi, n or 9)
+    if isinstance(loads, str):  # the grammar of surfmet.value_lists, ascending
+        loads = sorted(set(parse_values(loads, parse_force, "loads")))
     arr = np.asarray(list(loads) if not isinstance(loads, np.ndarray) else loads, dtype=float)
     if arr.ndim != 1 or arr.size < 2:
         raise SurfmetInputError("give at least two loads (or a range F1:F2[:N])")
