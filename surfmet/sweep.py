@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.material_spec import material_pair
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
 
 TASKS = ("contact", "hertz-check")
@@ -110,6 +111,8 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
         raise SurfmetInputError(f"the ball radius must be positive, got {radius!r}")
     if grid is not None and grid < 8:
         raise SurfmetInputError("the grid needs at least 8 cells per side")
+    for pair in materials:  # every pair before any work, not item by item
+        material_pair(pair)
     spikes = spike_mode(spikes)
     # paths may come as pathlib objects; an item holds them as text (its key is JSON)
     plates = [None if p is None else os.fspath(p) for p in (plates or (None,))]

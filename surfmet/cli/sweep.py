@@ -113,6 +113,10 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError("--resume needs the rows in a file: --json OUT or --csv OUT")
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")
+    if args.scheduler is not None:
+        from surfmet.batch import check_scheduler
+
+        check_scheduler(args.scheduler)  # before the files are touched
     items = sweep_items(task=args.task, loads=args.loads, radius=args.radius,
                         plates=args.plates or [None], balls=args.balls or [None],
                         materials=args.materials or ["steel,aluminium"],
