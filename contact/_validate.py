@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from typing import Any
 
 import numpy as np
@@ -22,6 +23,10 @@ def positive(value: Any, what: str, unit: str = "") -> float:
         raise ContactInputError(f"{what} must be a number{where}, got {value!r}") from None
     if not (math.isfinite(v) and v > 0):
         raise ContactInputError(f"{what} must be positive and finite{where}, got {value!r}")
+    if v < sys.float_info.min:  # subnormal: its powers and inverses underflow or overflow
+        raise ContactInputError(f"{what} {v:.3g}{' ' + unit if unit else ''} is too small to "
+                                f"compute with (below {sys.float_info.min:.3g}): not a "
+                                "physical value")
     return v
 
 

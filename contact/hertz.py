@@ -14,11 +14,13 @@ displacement of the two surfaces), so that at the contact centre u(0) = delta.
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 
 import numpy as np
 
 from contact._validate import positive
+from contact.errors import ContactInputError
 
 
 @dataclass(frozen=True)
@@ -109,8 +111,22 @@ def hertz_sphere(radius: float, load: float, e_star: float) -> HertzSphere:
     W = positive(load, "load", "N")
     E = positive(e_star, "E*", "Pa")
     a = (3.0 * W * R / (4.0 * E)) ** (1.0 / 3.0)
-    return HertzSphere(radius=R, load=W, e_star=E, a=a, delta=a**2 / R,
-                       p0=3.0 * W / (2.0 * math.pi * a**2))
+    delta = a**2 / R if a > 0 else 0.0
+    p0 = 3.0 * W / (2.0 * math.pi * a**2) if a**2 > 0 else math.inf
+    _representable(R, W, E, a=a, delta=delta, p0=p0)
+    return HertzSphere(radius=R, load=W, e_star=E, a=a, delta=delta, p0=p0)
+
+
+def _representable(radius: float, load: float, e_star: float, **values: float) -> None:
+    """Refuse inputs whose Hertz solution underflows or overflows a float (each input
+    representable, e.g. a 1e-200 N load on a 1e-200 m ball): the engine's own error,
+    not a division by zero or an infinite pressure."""
+    bad = [k for k, v in values.items() if not (math.isfinite(v) and v >= sys.float_info.min)]
+    if bad:
+        raise ContactInputError(
+            f"the Hertz solution of R = {radius:.3g} m, W = {load:.3g} N, E* = {e_star:.3g} "
+            f"Pa is out of range ({', '.join(bad)} under- or overflow): not a physical "
+            "contact")
 
 
 def hertz_sphere_from_approach(radius: float, delta: float, e_star: float) -> HertzSphere:
@@ -186,4 +202,6 @@ def hertz_cylinder(radius: float, load_per_length: float, e_star: float) -> Hert
     W = positive(load_per_length, "load per length", "N/m")
     E = positive(e_star, "E*", "Pa")
     a = math.sqrt(4.0 * W * R / (math.pi * E))
-    return HertzCylinder(radius=R, load_per_length=W, e_star=E, a=a, p0=2.0 * W / (math.pi * a))
+    p0 = 2.0 * W / (math.pi * a) if a > 0 else math.inf
+    _representable(R, W, E, a=a, p0=p0)
+    return HertzCylinder(radius=R, load_per_length=W, e_star=E, a=a, p0=p0)

@@ -20,8 +20,16 @@ from typing import IO, Any
 
 from surfmet.errors import SurfmetWriteError
 
-__all__ = ["atomic_open", "atomic_path", "check_writable", "output_lock", "write_bytes",
-           "write_text"]
+__all__ = ["atomic_open", "atomic_path", "check_writable", "output_lock", "real_target",
+           "write_bytes", "write_text"]
+
+
+def real_target(path: str | os.PathLike[str]) -> Path:
+    """The file a write to ``path`` must change: ``path`` itself, or, where it is a
+    symbolic link (or lies in a linked folder), the file the link points to (which may not
+    exist yet). Renaming a new file over the link itself would cut the link and leave its
+    target unchanged; and two names of one file must share one lock."""
+    return Path(os.path.realpath(path))
 
 
 def check_writable(path: str | os.PathLike[str] | None, what: str = "output") -> None:
@@ -41,7 +49,7 @@ def check_writable(path: str | os.PathLike[str] | None, what: str = "output") ->
 
     if path is None:
         return
-    p = Path(path)
+    p = real_target(path)
     if p.is_dir():
         raise SurfmetInputError(f"{what} {path}: is a folder; give a file name")
     parent = p.parent if str(p.parent) else Path(".")
@@ -93,11 +101,11 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     SurfmetWriteError
         The operating system refused a write (disk full, file too large, permission).
     """
-    target = Path(path)
+    target = real_target(path)
     try:
         tmp = _temporary(target)
     except OSError as exc:
-        raise _error(target, exc) from None
+        raise _error(Path(path), exc) from None
     try:
         yield tmp
         _fsync(tmp)
@@ -105,7 +113,7 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     except OSError as exc:
         with contextlib.suppress(OSError):
             tmp.unlink()
-        raise _error(target, exc) from None
+        raise _error(Path(path), exc) from None
     except BaseException:
         with contextlib.suppress(OSError):
             tmp.unlink()
@@ -136,7 +144,8 @@ def write_text(path: str | os.PathLike[str], text: str, encoding: str = "utf-8")
 @contextlib.contextmanager
 def output_lock(path: str | os.PathLike[str]) -> Iterator[None]:
     """Hold an exclusive lock on the output ``path`` for the block, so that two runs
-    never write one file at once (POSIX ``flock`` on a hidden ``.NAME.lock`` beside it,
+    never write one file at once (POSIX ``flock`` on a hidden ``.NAME.lock`` beside the
+    file itself, :func:`real_target`, so that a symbolic link to it takes the same lock;
     removed at the end; released by the kernel if the process dies).
 
     Raises
@@ -149,7 +158,8 @@ def output_lock(path: str | os.PathLike[str]) -> Iterator[None]:
     from surfmet.errors import SurfmetInputError
 
     target = Path(path)
-    lock = target.with_name(f".{target.name}.lock")
+    real = real_target(path)
+    lock = real.with_name(f".{real.name}.lock")
     while True:
         fd = os.open(lock, os.O_CREAT | os.O_RDWR, 0o666)
         try:

@@ -398,6 +398,36 @@ def _process_map(func, items, n, on_error, progress, desc, done) -> list[Any]:
     return results
 
 
+def check_scheduler(address: Any) -> None:
+    """Refuse, before any connection, a Dask scheduler address that is not one
+    (``tcp://HOST:PORT``, ``tls://...``, ``HOST:PORT``): a client built on it fails half-way
+    and its finaliser hangs 20 s and prints a traceback at exit. A
+    :class:`distributed.Client` passes.
+
+    Raises
+    ------
+    SurfmetInputError
+        In one line, naming the address and the form expected.
+    """
+    from surfmet.extras import require
+
+    distributed = require("distributed", "dask", "--scheduler (a Dask cluster)")
+    if isinstance(address, distributed.Client):
+        return
+    from distributed.comm import get_address_host_port, parse_address
+
+    try:
+        if not isinstance(address, str) or not address.strip():
+            raise ValueError("it is empty" if isinstance(address, str) else "not text")
+        scheme, _ = parse_address(address)
+        if scheme != "inproc":  # an in-process address has no host and port
+            get_address_host_port(address)
+    except (TypeError, ValueError) as exc:
+        raise SurfmetInputError(
+            f"--scheduler {address!r} is not a Dask scheduler address ({exc}); give "
+            "tcp://HOST:PORT, e.g. tcp://10.0.0.5:8786") from None
+
+
 def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout, done
               ) -> list[Any]:
     from surfmet.extras import require
@@ -407,6 +437,7 @@ def _dask_map(func, items, scheduler, on_error, progress, desc, connect_timeout,
 
     own = not isinstance(scheduler, Client)
     if own:
+        check_scheduler(scheduler)
         try:
             client = Client(scheduler, timeout=f"{connect_timeout}s", set_as_default=False)
         except (OSError, TimeoutError, ValueError) as exc:

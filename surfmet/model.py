@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -52,9 +53,15 @@ def _frozen_array(values: Any, ndim: int, name: str) -> np.ndarray:
 
 
 def _check_step(value: float, name: str) -> float:
+    """A pixel size every reader and every caller of the model gets checked: positive,
+    finite and a normal float (a subnormal pixel, e.g. 5e-324 m from a damaged header,
+    makes slopes and spectra divide by zero)."""
     v = float(value)
     if not (math.isfinite(v) and v > 0):
         raise SurfmetInputError(f"{name} must be a positive finite length in metres, got {value!r}")
+    if v < sys.float_info.min:
+        raise SurfmetInputError(f"{name} {v:.3g} m is too small to be a pixel size (below "
+                                f"{sys.float_info.min:.3g}): a damaged file or a wrong unit")
     return v
 
 

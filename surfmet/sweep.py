@@ -12,11 +12,13 @@ as ``surfmet contact`` or ``surfmet hertz-check`` would and returns a flat row o
   on;
 * every finished row is appended to the output files and flushed at once
   (:class:`RowWriter`), whole in every file or in none: CSV (a header, then one line per
-  row) and JSON Lines (one JSON object per line, every dimensional value as
-  ``{"value", "unit"}``). A sweep that stops, whatever the reason, leaves at most a cut
-  last line; ``resume`` validates the files (:func:`valid_rows`), keeps the rows whole
-  in all of them and runs only the rest. The outputs are locked while a run writes them.
-  Rows are written in completion order and carry their ``index`` in the product.
+  row) and JSON Lines (a header record naming the task and the columns' units, then one
+  JSON object per row, every dimensional value as ``{"value", "unit"}``; :func:`header`).
+  A sweep that stops, whatever the reason, leaves at most a cut last line; ``resume``
+  validates the files (:func:`valid_rows`: one that does not start with that header is
+  refused, never rewritten), keeps the rows whole in all of them and runs only the
+  rest. The outputs are locked while a run writes them. Rows are written in completion
+  order and carry their ``index`` in the product.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.material_spec import material_pair
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
 
 TASKS = ("contact", "hertz-check")
@@ -115,6 +118,8 @@ def sweep_items(*, task: str, loads: Sequence[float], radius: float,
         raise SurfmetInputError(f"the ball radius must be positive, got {radius!r}")
     if grid is not None and grid < 8:
         raise SurfmetInputError("the grid needs at least 8 cells per side")
+    for pair in materials:  # every pair before any work, not item by item
+        material_pair(pair)
     spikes = spike_mode(spikes)
     # paths may come as pathlib objects; an item holds them as text (its key is JSON)
     plates = [None if p is None else os.fspath(p) for p in (plates or (None,))]
@@ -248,20 +253,20 @@ class RowWriter:
         self._paths = {"csv": csv_path, "json": json_path}
         self._files: dict[str, Any] = {}
         self._locks = contextlib.ExitStack()
+        _distinct(csv_path, json_path)
         try:
             for path in (csv_path, json_path):
                 if path is not None:
                     self._locks.enter_context(output_lock(path))
             if resume:
                 self.done = _restore(self.cols, csv_path, json_path)
-            header = _csv_line([f"{n} [{u}]" if u else n for n, u in self.cols])
             for kind, path in self._paths.items():
                 if path is None:
                     continue
                 keep = resume and Path(path).exists()
                 self._files[kind] = open(path, "ab" if keep else "wb", buffering=0)
-                if kind == "csv" and not (keep and Path(path).stat().st_size > 0):
-                    _append(self._files[kind], header.encode("utf-8"))
+                if not (keep and Path(path).stat().st_size > 0):
+                    _append(self._files[kind], header(kind, self.cols).encode("utf-8"))
         except OSError as exc:
             self.close()
             raise SurfmetInputError(f"cannot write the sweep output: {exc}") from None
@@ -311,6 +316,53 @@ class RowWriter:
         self.close()
 
 
+def _distinct(csv_path: str | Path | None, json_path: str | Path | None) -> None:
+    """Refuse one file given for both outputs (by any of its names): the two formats
+    would interleave in it, and its lock would seem held by another run."""
+    from surfmet.atomic import real_target
+
+    if csv_path is None or json_path is None:
+        return
+    same = real_target(csv_path) == real_target(json_path)
+    if not same and Path(csv_path).exists() and Path(json_path).exists():
+        same = os.path.samefile(csv_path, json_path)  # two hard links of one file
+    if same:
+        raise SurfmetInputError(
+            f"--csv {csv_path} and --json {json_path} are the same file: give each "
+            "output its own file")
+
+
+def header(kind: str, cols: Sequence[tuple[str, str]]) -> str:
+    """The first line of a sweep's output file, which marks it as a sweep's and names its
+    task and columns: the CSV's column names with units in brackets; in JSON Lines one
+    record ``{"surfmet_sweep": {"task": ..., "columns": {name: unit}}}`` (``""`` for a
+    dimensionless or text column), the rows following it."""
+    if kind == "csv":
+        return _csv_line([f"{n} [{u}]" if u else n for n, u in cols])
+    task = next((t for t in TASKS if columns(t) == tuple(cols)), None)
+    return json.dumps({"surfmet_sweep": {"task": task, "columns": dict(cols)}},
+                      separators=(", ", ": ")) + "\n"
+
+
+def _check_header(kind: str, path: str | Path, cols: Sequence[tuple[str, str]],
+                  text: str) -> str:
+    """The rows' part of an existing output ``text`` (complete lines), after checking
+    that it is a sweep's output of this task: empty, or a header cut short by a stop, is a
+    fresh file; any other first line is refused, so that ``--resume`` never rewrites a
+    file a sweep did not write."""
+    head = header(kind, cols)
+    if text.startswith(head):
+        return text[len(head):]
+    raw = Path(path).read_bytes().decode("utf-8", errors="replace")
+    if not text and head.startswith(raw):
+        return ""
+    task = next((t for t in TASKS if columns(t) == tuple(cols)), "this")
+    what = "CSV" if kind == "csv" else "JSON Lines"
+    raise SurfmetInputError(
+        f"{path}: not the {what} output of a {task} sweep (its first line is not the header "
+        "such a sweep writes): give another file or leave out --resume")
+
+
 def _csv_line(values: Sequence[Any]) -> str:
     from surfmet.units import valid_text
 
@@ -349,21 +401,20 @@ def valid_rows(cols: Sequence[tuple[str, str]], csv_path: str | Path | None = No
     column (CSV) or is a JSON object, and has a key and a status; the first row that is
     not, and everything after it, is dropped (what a stop or a full disk leaves). A
     repeated key keeps its first row.
+
+    Raises
+    ------
+    SurfmetInputError
+        A file that is not a sweep's output of these columns (:func:`header`).
     """
     out: dict[str, dict[str, str]] = {}
     text = _complete(csv_path)
     if text is not None:
         rows: dict[str, str] = {}
-        header = _csv_line([f"{n} [{u}]" if u else n for n, u in cols])
-        reader = csv.reader(io.StringIO(text))
+        reader = csv.reader(io.StringIO(_check_header("csv", csv_path, cols, text)))
         names = [n for n, _ in cols]
         key, status = names.index("key"), names.index("status")
         try:
-            first = next(reader, None)
-            if first is not None and _csv_line(first) != header:
-                raise SurfmetInputError(
-                    f"{csv_path}: its columns are not those of this sweep's task; give "
-                    "another file or leave out --resume")
             for rec in reader:
                 if len(rec) != len(cols) or not _row_ok(rec[key], rec[status]):
                     break
@@ -374,7 +425,7 @@ def valid_rows(cols: Sequence[tuple[str, str]], csv_path: str | Path | None = No
     text = _complete(json_path)
     if text is not None:
         rows = {}
-        for line in text.splitlines():
+        for line in _check_header("json", json_path, cols, text).splitlines():
             try:
                 rec = json.loads(line)
             except ValueError:
@@ -407,8 +458,7 @@ def _restore(cols: Sequence[tuple[str, str]], csv_path: str | Path | None,
     given = [k for k, p in paths.items() if p is not None]
     done = set.intersection(*(set(found.get(k, {})) for k in given)) if given else set()
     for kind, rows in found.items():
-        head = _csv_line([f"{n} [{u}]" if u else n for n, u in cols]) if kind == "csv" else ""
-        text = head + "".join(line for key, line in rows.items() if key in done)
+        text = header(kind, cols) + "".join(line for key, line in rows.items() if key in done)
         if Path(paths[kind]).read_text(encoding="utf-8", errors="replace") != text:
             write_text(paths[kind], text)
     return done

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from collections.abc import Mapping
 from typing import Any
 
@@ -143,6 +144,9 @@ def _parse(text: str, table: Mapping[str, float], kind: str, default: str,
     value = number * factor
     if not math.isfinite(value):
         raise SurfmetInputError(f"{kind} {text!r} is not finite")
+    if 0 < abs(value) < sys.float_info.min:  # subnormal: no physical value is that small
+        raise SurfmetInputError(f"{kind} {text!r} is too small to compute with (below "
+                                f"{sys.float_info.min:.3g} in SI units)")
     return value
 
 

@@ -101,7 +101,9 @@ def test_writer_files_parse_and_resume_skips(tmp_path):
     with RowWriter("contact", c, j, resume=True) as w:
         rest = run_sweep(items, workers=1, writer=w, skip=done_keys(c, j))
     assert len(rest) == len(items) - 1
-    recs = [json.loads(line) for line in j.read_text().splitlines()]
+    head, *recs = [json.loads(line) for line in j.read_text().splitlines()]
+    assert head["surfmet_sweep"]["task"] == "contact"
+    assert head["surfmet_sweep"]["columns"]["max_pressure"] == "Pa"
     assert sorted(r["index"] for r in recs) == list(range(len(items)))
     assert recs[0]["load"] == {"value": 3.0, "unit": "N"}
     with open(c, newline="") as fh:
@@ -197,7 +199,8 @@ SMOOTH = ["sweep", "--task", "contact", "--radius", "20mm", "--loads", "1N:10N:6
 def _tables(c, j):
     with open(c, newline="") as fh:
         rows = list(csv.reader(fh))
-    recs = [json.loads(line) for line in j.read_text().splitlines()]
+    head, *recs = [json.loads(line) for line in j.read_text().splitlines()]
+    assert "surfmet_sweep" in head
     return rows[0], rows[1:], recs
 
 
@@ -214,7 +217,7 @@ def test_resume_drops_a_cut_row_and_completes_both_files(tmp_path, capsys):
     cut = lines[5][:lines[5].index(",ok,") + 4]  # row 4 cut after its status
     c.write_text("".join(lines[:5]) + cut)
     jl = j.read_text().splitlines(keepends=True)
-    j.write_text("".join(jl[:3]) + jl[3][:40])  # rows 0-2, then half of row 3
+    j.write_text("".join(jl[:4]) + jl[4][:40])  # header, rows 0-2, then half of row 3
     capsys.readouterr()
     assert main([*SMOOTH, "--csv", str(c), "--json", str(j), "--resume"]) == 0
     assert "3 of 6 items already written" in capsys.readouterr().err

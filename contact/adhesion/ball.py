@@ -39,6 +39,7 @@ import numpy as np
 from contact._validate import positive
 from contact.adhesion.cycle import Cycle, approach_retraction
 from contact.adhesion.laws import InteractionLaw, tabor_parameter
+from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
 from contact.grid import Grid
@@ -153,6 +154,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
         raise ContactInputError(f"the grid must be an integer of at least 16, got {grid!r}")
     if int(steps) != steps or steps < 4:
         raise ContactInputError(f"the steps must be an integer of at least 4, got {steps!r}")
+    check_adhesion_memory(int(grid), steps=int(steps))  # before any grid is allocated
     a0, reach, d_scale = scales(radius, e_star, law)
     ell = max(a0, reach)
     size = default_size(radius, e_star, law) if size is None else \

@@ -57,6 +57,7 @@ from contact._validate import positive
 from contact.adhesion.ball import coarse_zone_effect, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
+from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
 from contact.grid import Grid, centred_coordinates
@@ -251,6 +252,7 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
         raise ContactInputError(f"the cells must be an integer of at least 64, got {cells!r}")
     if int(steps) != steps or steps < 4:
         raise ContactInputError(f"the steps must be an integer of at least 4, got {steps!r}")
+    check_adhesion_memory(int(cells), steps=int(steps), line=True)  # before allocating
     a0, reach = line_scales(radius, e_star, law)
     size = CELL_WIDTHS * max(a0, reach) if size is None else \
         positive(size, "the domain size", "m")

@@ -10,6 +10,7 @@ Exit status: 0 ok, 1 user error (bad input, unreadable file), 2 internal error.
 from __future__ import annotations
 
 import argparse
+import errno
 import importlib
 import os
 import re
@@ -138,6 +139,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             parser.print_help(sys.stderr)
             return 1
         rc = int(args.func(args) or 0)
+        sys.stdout.flush()  # a full disk under stdout fails here, not after main returns
         for note in getattr(args, "deferred_notes", None) or ():  # surfmet.cli._values
             print(note, file=sys.stderr)
         return rc
@@ -156,6 +158,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:
         return 0
     except Exception as exc:
+        if isinstance(exc, OSError) and exc.errno in _NO_ROOM:
+            return _no_room(exc)
         if os.environ.get("SURFMET_DEBUG"):
             raise
         print(
@@ -164,3 +168,26 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
+
+
+#: Errors of a write the storage refuses: no space, over the quota, over the file-size
+#: limit. They are the environment's, not a fault of surfmet: one line and exit 1.
+_NO_ROOM = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+
+
+def _no_room(exc: OSError) -> int:
+    """The one line of a write the storage refused (exit 1), standard output to a full
+    disk included. Standard output's unwritten rest, if any, is sent to the null device,
+    so that the interpreter's own flush at exit does not print a second error."""
+    try:
+        sys.stdout.flush()
+    except OSError:
+        try:
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, sys.stdout.fileno())
+            os.close(null)
+        except (OSError, ValueError, AttributeError):
+            pass
+    print(f"surfmet: error: cannot write the output: {exc.strerror or exc}; free some "
+          "space and run again", file=sys.stderr)
+    return 1

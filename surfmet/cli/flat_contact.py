@@ -229,8 +229,10 @@ def _print(rec: dict[str, Any]) -> None:
     for r in rec["results"]:
         pm = r["pressure"]["value"] / 1e6
         b = r["bem"]
+        gap, k = b["mean_gap"]["value"], b["stiffness"]["value"]
         print(f"  {pm:9.4g} {'BEM':>8} {b['area_fraction']:10.4g} {b['kappa']:7.3f} "
-              f"{b['mean_gap']['value'] * 1e6:9.4g} {b['stiffness']['value'] / 1e12:11.4g}"
+              f"{'-' if gap is None else f'{gap * 1e6:.4g}':>9} "
+              f"{'-' if k is None else f'{k / 1e12:.4g}':>11}"
               f"   clusters {b['n_clusters']}, corrected A/A0 {b['corrected_area_fraction']:.4g}")
         for name in ("persson", "gw", "bgt"):
             m = r[name]

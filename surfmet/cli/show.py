@@ -73,6 +73,7 @@ def run(args: argparse.Namespace) -> int:
 
     out = Path(args.output)
     check_output(out, "-o")
+    _check_picture(args)
     scan = read_scan(args.file, args)
     rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level,
                            "caveats": scan_caveats(scan)}
@@ -117,6 +118,28 @@ def run(args: argparse.Namespace) -> int:
         log(f"wrote {out}")
         print_caveats(rec["caveats"], sys.stderr)
     return 0
+
+
+def _check_picture(args: argparse.Namespace) -> None:
+    """Refuse, before the scan is read, a colormap matplotlib does not have and an output
+    name whose suffix names no format it writes (the 3D view: PNG only), in the words the
+    user gave."""
+    import matplotlib as mpl
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    from surfmet.errors import SurfmetInputError
+
+    if args.cmap not in mpl.colormaps:
+        names = sorted(n for n in mpl.colormaps if not n.endswith("_r"))
+        raise SurfmetInputError(f"--cmap {args.cmap!r} is not a colormap; one of "
+                                f"{', '.join(names)} (each also reversed, as NAME_r)")
+    suffix = Path(args.output).suffix.lower().lstrip(".")
+    formats = sorted(FigureCanvasBase.get_supported_filetypes())
+    if not suffix or suffix not in formats:
+        what = "has no suffix" if not suffix else f"ends in .{suffix}, not an image format"
+        raise SurfmetInputError(
+            f"-o {args.output}: {what}; name the picture with one of .{', .'.join(formats)} "
+            "(the 3D view: .png)")
 
 
 def _save(fig: Any, out: Path) -> None:

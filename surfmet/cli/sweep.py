@@ -28,11 +28,14 @@ EPILOG = """examples:
 Every item is a fresh solve with single-threaded BLAS, so the rows are bitwise those of
 the serial run whatever the engine (--workers 1, local processes, or Dask). A failed item
 gets its own row (status error, with the message) and the sweep goes on. Rows are
-appended and flushed as they finish: CSV with units in the headers, and JSON Lines (one
-object per line, values as {"value", "unit"}), each row whole in every file or in none.
---resume first checks the files: a row cut short by a stop (or a full disk) is dropped,
+appended and flushed as they finish: CSV with units in the headers, and JSON Lines (a
+first record {"surfmet_sweep": {"task", "columns": {name: unit}}}, then one object per
+row, values as {"value", "unit"}), each row whole in every file or in none.
+--resume first checks the files: one that does not start with a sweep's header is
+refused and left as it is; a row cut short by a stop (or a full disk) is dropped,
 and so is a row that reached only one of --csv and --json; then it runs every item
-whose row is not in all of them. Two runs never write one file at once (a lock).
+whose row is not in all of them. Two runs never write one file at once (a lock, taken
+on the file itself, whichever name or link reaches it).
 --positions are apex offsets x:y from the middle of the scans.
 """
 
@@ -91,6 +94,10 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError("--resume needs the rows in a file: --json OUT or --csv OUT")
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")
+    if args.scheduler is not None:
+        from surfmet.batch import check_scheduler
+
+        check_scheduler(args.scheduler)  # before the files are touched
     items = sweep_items(task=args.task, loads=args.loads, radius=args.radius,
                         plates=args.plates or [None], balls=args.balls or [None],
                         materials=args.materials or ["steel,aluminium"],

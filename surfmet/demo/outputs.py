@@ -88,6 +88,32 @@ def prepare_output(out_dir: str | os.PathLike) -> Path:
     return folder
 
 
+def record_failure(path: Path, summary: dict[str, Any], exc: BaseException) -> None:
+    """Mark the summary at ``path`` failed, with the reason, in place of "running".
+
+    The partial summary (the figures written so far among it, which a rerun into the
+    folder removes) is written whole; where the disk refuses that, a minimal record is
+    written over the old file's bytes, which needs no new space. Never raises: the
+    caller re-raises ``exc``.
+    """
+    reason = "interrupted" if isinstance(exc, KeyboardInterrupt) else \
+        (str(exc) or type(exc).__name__)
+    summary = {**summary, "status": "failed", "error": reason}
+    try:
+        write_json(path, summary)
+        return
+    except Exception:  # the disk is full, or the summary will not encode
+        pass
+    short = json.dumps({"generator": GENERATOR, "status": "failed", "error": reason},
+                       ensure_ascii=False) + "\n"
+    try:
+        with open(path, "r+b") as fh:
+            fh.write(short.encode("utf-8"))
+            fh.truncate()
+    except OSError:
+        pass
+
+
 def write_json(path: Path, obj: Any) -> None:
     """Write ``obj`` as JSON to ``path`` whole or not at all (:mod:`surfmet.atomic`)."""
     from surfmet.atomic import write_text

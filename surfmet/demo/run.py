@@ -14,7 +14,13 @@ from contact.rotor.paper import HERTZ_CHECK_LOAD
 from surfmet.demo import figures as fig
 from surfmet.demo.lawofmotion import rotor_step
 from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads
-from surfmet.demo.outputs import GENERATOR, SUMMARY, prepare_output, write_json
+from surfmet.demo.outputs import (
+    GENERATOR,
+    SUMMARY,
+    prepare_output,
+    record_failure,
+    write_json,
+)
 from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN, PLATE_LEVEL
 from surfmet.demo.surfaces import ball_form, load_scans, plate_areal, row_statistics
 from surfmet.units import quantity
@@ -157,9 +163,14 @@ def run_demo(
     st = _Steps(out, _sayer(progress))
     summary: dict[str, Any] = {"generator": GENERATOR, "surfmet_version": surfmet.__version__,
                                "status": "running", "quick": bool(quick)}
-    plate, ball = _surfaces(st, summary, quick)
-    _mechanics(st, summary, plate, ball)
-    _rotor(st, summary, quick)
+    try:
+        plate, ball = _surfaces(st, summary, quick)
+        _mechanics(st, summary, plate, ball)
+        _rotor(st, summary, quick)
+    except BaseException as exc:  # a full disk, an error, a Ctrl-C: not left "running"
+        summary.update(figures=st.figures, timings=st.timings, out_dir=str(out))
+        record_failure(out / SUMMARY, summary, exc)
+        raise
 
     total = time.perf_counter() - st.t_start
     summary["figures"] = st.figures

@@ -285,8 +285,7 @@ def _profile(buf: bytes, r: ByteReader, tree: dict[str, Any], channel: str | Non
     if count != n or n < 2:
         r.fail(f"{prefix}: NumPoints is {n} but the array holds {count} values")
     r.seek(offset + 5, "array offset")
-    z = r.array("<f8", n) * (scale.value * zf)
-    z[~np.isfinite(z)] = np.nan
+    z = _scaled(r, r.array("<f8", n), scale.value * zf, f"{prefix}/Array")
 
     md = _metadata(tree)
     md.update({"channel": names[0], "height_unit": scale.symbol,
@@ -303,9 +302,10 @@ def _profile(buf: bytes, r: ByteReader, tree: dict[str, Any], channel: str | Non
         p.skip(12, "position unit")
         (count,) = p.unpack("<Q", "position count")
         if count == n and p.pos + 8 * n <= stop:
-            x = p.array("<f8", n) * _factor(r, symbol, "position")
+            x = _scaled(r, p.array("<f8", n), _factor(r, symbol, "position"), "positions")
             md["lateral_unit"] = symbol
     if x is not None and np.all(np.isfinite(x)) and np.all(np.diff(x) > 0):
+        _check_positions(r, x)
         step = float((x[-1] - x[0]) / (n - 1))
         md["x_offset"] = quantity(float(x[0]), "m")
         md["lateral_calibrated"] = True
@@ -318,6 +318,36 @@ def _profile(buf: bytes, r: ByteReader, tree: dict[str, Any], channel: str | Non
     md["lateral_unit"] = extent.symbol
     md["lateral_calibrated"] = True
     return Profile(z, check_step(length / n, r.name, FORMAT, "Extent / NumPoints"), metadata=md)
+
+
+def _scaled(r: ByteReader, raw: np.ndarray, factor: float, what: str) -> np.ndarray:
+    """``raw * factor`` with the file's non-finite values as NaN (not measured); a
+    product out of the float range (a damaged value or scale) is one line, not numpy's
+    overflow warnings followed by a scan of infinities."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = raw * factor
+    measured = np.isfinite(raw)
+    if not np.isfinite(out[measured]).all():
+        big = float(np.max(np.abs(raw[measured])))
+        r.fail(f"{what}: a value {big:.3g} times the scale {factor:.3g} is beyond the float "
+               "range (a damaged value or scale)")
+    out[~measured] = np.nan
+    return out
+
+
+#: Largest ratio of a step between stored positions to their median step before the
+#: positions are taken for damaged (a Dektak samples evenly; one flipped exponent bit in
+#: a position makes a jump of hundreds of decades).
+_MAX_STEP_RATIO = 1e3
+
+
+def _check_positions(r: ByteReader, x: np.ndarray) -> None:
+    steps = np.diff(x)
+    typical = float(np.median(steps))
+    if float(steps.max()) > _MAX_STEP_RATIO * typical:
+        k = int(np.argmax(steps))
+        r.fail(f"the stored positions jump by {steps[k]:.3g} m after point {k} where they "
+               f"step {typical:.3g} m: a damaged position")
 
 
 def _map(r: ByteReader, tree: dict[str, Any], channel: str | None) -> Topography:
@@ -333,8 +363,8 @@ def _map(r: ByteReader, tree: dict[str, Any], channel: str | None) -> Topography
     r.seek(offset, "matrix offset")
     raw = r.array("<f4", nx * ny).reshape(ny, nx).astype(np.float64)
     scale = _get(r, tree, prefix + "/DataScale", Quantity)
-    heights = raw * scale.value * _factor(r, scale.symbol, "height")
-    heights[~np.isfinite(heights)] = np.nan
+    heights = _scaled(r, raw, scale.value * _factor(r, scale.symbol, "height"),
+                      f"{prefix}/Matrix")
     ext_y = _get(r, tree, prefix + "/Dimension1Extent", Quantity)
     ext_x = _get(r, tree, prefix + "/Dimension2Extent", Quantity)
     dx = check_step(ext_x.value * _factor(r, ext_x.symbol, "x extent") / nx, r.name, FORMAT)

@@ -85,10 +85,13 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     the Maugis-Dugdale validation (tests/test_adhesion_validation.py) is of this law.
     """
     from contact.adhesion.ball import adhesive_ball, default_size
+    from contact.adhesion.memory import check_adhesion_memory
 
     mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
     grid = 128 if grid is None else grid
+    if isinstance(grid, int) and grid >= 16:
+        check_adhesion_memory(grid, steps=steps)  # before the scans are sampled onto it
     if size is None:
         size = default_size(radius, mats.e_star, law)
     z, scans = rough_grid(plate, ball, grid, size, spikes)

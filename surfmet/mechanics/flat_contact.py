@@ -129,6 +129,11 @@ def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: An
         material_hardness = pair.hardness if material_hardness is None else material_hardness
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
+    if p.max() >= e_star:  # before any solve: strains of order 1, no elastic half-space
+        raise SurfmetInputError(
+            f"the pressures reach {p.max():.4g} Pa, not below E* = {e_star:.4g} Pa: the "
+            "scan would be pressed flat at strains of order one, outside linear elasticity; "
+            "give pressures well below E* (or E* with its unit, e.g. --e-star 100GPa)")
     scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
     if adhesion is not None:
         _check_adhesive(scan, per, hardness)
