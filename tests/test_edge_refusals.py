@@ -217,7 +217,7 @@ def _full_disk_demo(tmp_path: Path, limit: int) -> dict:
 def test_a_demo_stopped_by_a_full_disk_says_so_in_its_summary(tmp_path):
     """The first figure does not fit (file size capped): summary.json says failed, with
     the reason (main: "status": "running" for ever)."""
-    summary = _full_disk_demo(tmp_path, 8000)
+    summary = _full_disk_demo(tmp_path, 20000)  # the partial summary (8.3 kB) fits, the figure not
     assert summary["status"] == "failed" and "File too large" in summary["error"]
     assert summary["scans"]["plate"]["file"] == "paper_plate.x3p"  # the partial summary
 
