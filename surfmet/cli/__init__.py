@@ -129,7 +129,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not getattr(args, "func", None):
             parser.print_help(sys.stderr)
             return 1
-        return int(args.func(args) or 0)
+        from surfmet.cli import _inputs
+
+        with _inputs.invocation(_inputs.subparser(parser, args), args) as state:
+            rc = int(args.func(args) or 0)
+            if rc == 0:  # every command ends its text with what it was given
+                _inputs.print_text(state)
+        return rc
     except UserError as exc:
         print(f"surfmet: error: {exc}", file=sys.stderr)
         return 1

@@ -105,11 +105,11 @@ def _traction_json(res: Any, tr: Any, line: bool) -> dict[str, Any]:
     sign = {"sign_convention": "creepage (v1 - v2)/V and fx on body 1 (the ball)"}
     if line:
         dx = float(res.x[1] - res.x[0])
-        return {"creepage": {"value": tr.creepage, "unit": "1"},
+        return {"creepage": {"value": tr.creepage, "unit": ""},
                 "fx": {"value": tr.force, "unit": "N/m"},
                 "stick_length": {"value": float(tr.stick.sum()) * dx, "unit": "m"},
                 "slip_length": {"value": float(tr.slip.sum()) * dx, "unit": "m"}, **sign}
-    return {"creepage": {"value": tr.creepage.xi, "unit": "1"},
+    return {"creepage": {"value": tr.creepage.xi, "unit": ""},
             "fx": {"value": tr.fx, "unit": "N"}, "fy": {"value": tr.fy, "unit": "N"},
             "stick_area": {"value": tr.stick_area, "unit": "m^2"},
             "slip_area": {"value": tr.slip_area, "unit": "m^2"}, **sign}
