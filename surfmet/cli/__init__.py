@@ -51,9 +51,11 @@ EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
   surfmet demo --out demo_out
 
-Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
-accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
-(steel:E=200GPa); a name not in the table with E and nu given is a custom material.
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres (a note
+says so above 1 m). Forces: N, mN, kN (bare: N). Speeds accept m/s, mm/s, km/h (a bare
+number is m/s). Pressures always need their unit: --hardness 1GPa, --e-star, --pressures
+and a material's E and H (steel:E=200GPa); a name not in the table with E and nu given is
+a custom material. Every command ends with its inputs (text) or an "inputs" record (JSON).
 """
 
 

@@ -31,7 +31,8 @@ OPTION_UNITS: dict[str, str] = {
     "positions": "m", "load": "N", "loads": "N", "hardness": "Pa", "e_star": "Pa",
     "pressures": "Pa", "speed": "m/s", "work_of_adhesion": "J/m^2",
     "adhesion_hysteresis": "J/m^2", "mu": "", "creepage": "", "traction_ratio": "",
-    "alpha_h": "", "tol": "",
+    "alpha_h": "", "tol": "", "exaggeration": "", "pixel": "m", "dx": "m", "dy": "m",
+    "fps": "1/s", "step_deg": "°",
 }
 
 #: Options that say where the output goes or how the run is shown, not what it computes.
@@ -74,9 +75,12 @@ def _parse_text(name: str, text: str) -> Any:
 
 
 def _value(value: Any, unit: str | None) -> Any:
-    """One input as JSON: a quantity where it has a unit, else the plain value."""
-    if unit is None or isinstance(value, (str, bool)) or value is None:
-        return value
+    """One input as JSON: a quantity where it has a unit, else the plain value. Integers
+    are counts (``show --size 1200x900`` pixels), never quantities."""
+    flat = value if isinstance(value, (list, tuple)) else [value]
+    if (unit is None or isinstance(value, (str, bool)) or value is None
+            or all(isinstance(v, int) and not isinstance(v, bool) for v in flat)):
+        return list(value) if isinstance(value, tuple) else value
     if isinstance(value, tuple) and len(value) == 3 and (
             value[2] is None or isinstance(value[2], int)):  # F1:F2[:N]
         return {"start": quantity(value[0], unit), "stop": quantity(value[1], unit),
