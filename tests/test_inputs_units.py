@@ -174,3 +174,25 @@ def test_text_spells_micro_and_powers(scan, tmp_path, capsys):
     assert main(["rotor", str(tsv), "--quiet"]) == 0
     text = capsys.readouterr().out
     assert "rad/s²" in text and "rad/s2" not in text
+
+
+def test_info_of_every_real_file_states_units_of_the_vocabulary(realdata, capsys):
+    """File metadata in the same vocabulary (was opdx-3's "µm" and "mg" settings as read):
+    a setting with a length is in metres (the file's 50 µm scan length = 5e-5 m), one in
+    a unit outside the vocabulary is the instrument's words."""
+    from test_cli_conventions import _units
+
+    from surfmet.units import JSON_UNITS
+
+    folder = realdata("MANIFEST.tsv").parent
+    for path in sorted(p for p in folder.iterdir() if p.name != "MANIFEST.tsv"):
+        if main(["info", str(path), "--json"]) != 0:
+            capsys.readouterr()
+            continue
+        doc = json.loads(capsys.readouterr().out)
+        bad = {u for _, u in _units(doc) if u not in JSON_UNITS}
+        assert not bad, (path.name, bad)
+        if path.name == "opdx-3.opdx":
+            settings = doc["metadata"]["measurement_settings"]
+            assert settings["ScanLength"] == {"value": pytest.approx(50e-6), "unit": "m"}
+            assert settings["StylusForce"] == "3 mg"

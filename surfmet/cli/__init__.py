@@ -17,6 +17,7 @@ import sys
 from collections.abc import Sequence
 
 from surfmet._version import __version__
+from surfmet.cli._inputs import stating_inputs
 
 SUBCOMMANDS = (
     "info",
@@ -51,11 +52,9 @@ EPILOG = """examples:
   surfmet adhesion --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 --range 2nm
   surfmet demo --out demo_out
 
-Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres (a note
-says so above 1 m). Forces: N, mN, kN (bare: N). Speeds accept m/s, mm/s, km/h (a bare
-number is m/s). Pressures always need their unit: --hardness 1GPa, --e-star, --pressures
-and a material's E and H (steel:E=200GPa); a name not in the table with E and nu given is
-a custom material. Every command ends with its inputs (text) or an "inputs" record (JSON).
+Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
+accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
+(steel:E=200GPa); a name not in the table with E and nu given is a custom material.
 """
 
 
@@ -87,7 +86,7 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name != f"surfmet.cli.{name}":
                 raise
             continue
-        mod.add_parser(sub)
+        stating_inputs(mod.add_parser(sub))  # every command states what it was given
     return parser
 
 
@@ -131,13 +130,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not getattr(args, "func", None):
             parser.print_help(sys.stderr)
             return 1
-        from surfmet.cli import _inputs
-
-        with _inputs.invocation(_inputs.subparser(parser, args), args) as state:
-            rc = int(args.func(args) or 0)
-            if rc == 0:  # every command ends its text with what it was given
-                _inputs.print_text(state)
-        return rc
+        return int(args.func(args) or 0)
     except UserError as exc:
         print(f"surfmet: error: {exc}", file=sys.stderr)
         return 1

@@ -1,12 +1,14 @@
-"""Every command states its inputs: :func:`surfmet.cli.main` runs each command inside
-:func:`invocation`, so that its JSON (:func:`surfmet.cli._common.emit_json`) carries an
-``"inputs"`` record and its text ends with the ``inputs`` lines
-(:mod:`surfmet.records.inputs`), with no command able to forget them.
+"""Every command states its inputs: :func:`surfmet.cli.build_parser` wraps each command's
+``func`` (:func:`stating_inputs`) to run inside :func:`invocation`, so that its JSON
+(:func:`surfmet.cli._common.emit_json`) carries an ``"inputs"`` record and its text ends
+with the ``inputs`` lines (:mod:`surfmet.records.inputs`): no command can forget them,
+and a new one states its inputs without a line of its own.
 """
 
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -17,13 +19,23 @@ from typing import Any
 _RUNNING: list[dict[str, Any]] = []
 
 
-def subparser(parser: argparse.ArgumentParser, args: argparse.Namespace
-              ) -> argparse.ArgumentParser | None:
-    """The parser of the subcommand ``args`` was parsed for, or None."""
-    for action in parser._actions:
-        if isinstance(action, argparse._SubParsersAction):
-            return action.choices.get(getattr(args, "command", None) or "")
-    return None
+def stating_inputs(parser: argparse.ArgumentParser | None) -> None:
+    """Make the command of ``parser`` (its ``func`` default) run inside
+    :func:`invocation` and end its text with its inputs when it succeeds."""
+    func = parser.get_default("func") if parser is not None else None
+    if func is None or getattr(func, "states_inputs", False):
+        return
+
+    @functools.wraps(func)
+    def run(args: argparse.Namespace) -> Any:
+        with invocation(parser, args) as state:
+            rc = func(args)
+            if not rc:  # every command ends its text with what it was given
+                print_text(state)
+        return rc
+
+    run.states_inputs = True  # type: ignore[attr-defined]
+    parser.set_defaults(func=run)
 
 
 @contextmanager
