@@ -93,7 +93,8 @@ def test_every_text_output_ends_with_its_inputs(argv, shown, scan, capsys):
 def test_inputs_record_reads_units_from_the_parsers():
     """Lists, ranges and values the command parses itself, each with its unit."""
     from surfmet.cli._common import force, force_range, positive_length
-    from surfmet.records.inputs import inputs_lines, inputs_record
+    from surfmet.cli._inputs import command_inputs
+    from surfmet.records.inputs import inputs_lines
 
     p = argparse.ArgumentParser()
     p.add_argument("--radius", type=positive_length)
@@ -104,7 +105,7 @@ def test_inputs_record_reads_units_from_the_parsers():
     p.add_argument("--json", action="store_true")
     args = p.parse_args(["--radius", "5mm", "--loads", "1N:3N:3", "--load", "250mN",
                          "--pressures", "1MPa,2MPa", "--json"])
-    rec = inputs_record(p._actions, args)
+    rec = command_inputs(p._actions, args)
     assert rec["radius"] == {"value": pytest.approx(5e-3), "unit": "m"}
     assert rec["loads"] == {"start": {"value": 1.0, "unit": "N"},
                             "stop": {"value": 3.0, "unit": "N"}, "points": 3}

@@ -10,13 +10,89 @@ from __future__ import annotations
 import argparse
 import functools
 import sys
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
 # The command being run: (its parser, its arguments, whether JSON went out). A stack, as
 # a command may run another (``report`` the rotor), and the outer one is what was asked.
 _RUNNING: list[dict[str, Any]] = []
+
+
+#: Unit of the value an argparse type returns, by the type's ``__name__``.
+TYPE_UNITS: dict[str, str] = {
+    "length": "m", "positive_length": "m", "force": "N", "load range": "N",
+    "pressure": "Pa", "speed": "m/s", "work": "J/m^2", "energy": "J/m^2",
+}
+
+#: Unit of an option's value by its name, for options whose text the command parses
+#: itself (``--pressures``, ``rolling-contact --load``) or whose type has its own name.
+OPTION_UNITS: dict[str, str] = {
+    "radius": "m", "size": "m", "range": "m", "tip_radius": "m", "ls": "m", "lc": "m",
+    "positions": "m", "load": "N", "loads": "N", "hardness": "Pa", "e_star": "Pa",
+    "pressures": "Pa", "speed": "m/s", "work_of_adhesion": "J/m^2",
+    "adhesion_hysteresis": "J/m^2", "mu": "", "creepage": "", "traction_ratio": "",
+    "alpha_h": "", "tol": "", "exaggeration": "", "pixel": "m", "dx": "m", "dy": "m",
+    "fps": "1/s", "step_deg": "°",
+}
+
+#: Options that say where the output goes or how the run is shown, not what it computes.
+NOT_INPUTS = frozenset({"help", "func", "command", "json", "quiet", "out", "output", "plot",
+                        "csv", "resume", "workers", "scheduler", "version"})
+
+
+def _name(action: argparse.Action) -> str:
+    """The input's name: the long option without dashes (``--e-star`` -> ``e_star``), or
+    a positional's dest."""
+    longs = [s for s in action.option_strings if s.startswith("--")]
+    return (longs[0][2:] if longs else action.dest).replace("-", "_").strip("_")
+
+
+def _unit(action: argparse.Action, name: str) -> str | None:
+    tname = getattr(action.type, "__name__", None)
+    return TYPE_UNITS.get(tname or "", OPTION_UNITS.get(name))
+
+
+def _parse_text(name: str, text: str) -> Any:
+    """An option's text that its command parses itself, parsed by the same function, or
+    the text unchanged where it is not a quantity (``--lc none``)."""
+    from surfmet.errors import SurfmetInputError
+    from surfmet.units import parse_force, parse_length, parse_pressure, parse_speed
+
+    parsers = {"m": parse_length, "N": parse_force, "m/s": parse_speed}
+    try:
+        if name == "pressures":
+            from surfmet.mechanics.flat_contact import parse_pressures
+
+            return [float(p) for p in parse_pressures(text)]
+        unit = OPTION_UNITS.get(name)
+        if unit == "Pa":
+            return parse_pressure(text)
+        if unit in parsers:
+            return parsers[unit](text)
+    except (SurfmetInputError, ValueError):
+        pass
+    return text
+
+
+def command_inputs(actions: Iterable[argparse.Action], args: argparse.Namespace
+                   ) -> dict[str, Any]:
+    """The ``"inputs"`` record (:func:`surfmet.records.inputs.inputs_record`) of a command
+    run with ``args``: every option and positional of its parser (``actions``) but those
+    of :data:`NOT_INPUTS`, defaults included, each with the unit of its parser."""
+    from surfmet.records.inputs import inputs_record
+
+    def triples() -> Iterator[tuple[str, Any, str | None]]:
+        for action in actions:
+            name = _name(action)
+            if name in NOT_INPUTS or action.dest in NOT_INPUTS:
+                continue
+            value = getattr(args, action.dest, None)
+            if isinstance(value, str) and name in OPTION_UNITS:
+                value = _parse_text(name, value)
+            yield name, value, _unit(action, name)
+
+    return inputs_record(triples())
 
 
 def stating_inputs(parser: argparse.ArgumentParser | None) -> None:
@@ -54,10 +130,8 @@ def current_inputs() -> dict[str, Any] | None:
     """The ``"inputs"`` record of the command being run (None outside one)."""
     if not _RUNNING or _RUNNING[0]["parser"] is None:
         return None
-    from surfmet.records.inputs import inputs_record
-
     state = _RUNNING[0]
-    return inputs_record(state["parser"]._actions, state["args"])
+    return command_inputs(state["parser"]._actions, state["args"])
 
 
 def attach(obj: Any) -> Any:

@@ -28,6 +28,8 @@ from surfmet.mechanics.rotor_verdict import (
 from surfmet.units import quantity
 
 PAPER_ALIAS = "paper2022"
+#: The JSON unit of an angular acceleration (surfmet.units.JSON_UNITS).
+ACC = "rad/s^2"
 
 EPILOG = """examples:
   surfmet rotor paper2022
@@ -165,9 +167,8 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
             "paper_parabola_stderr": [quantity(float(c), u)
                                       for c, u in zip(g.paper_parabola_stderr, units)],
             "paper_parabola_rms": quantity(g.paper_rms, "rad"),
-            "eps0": {m: {"mean": quantity(v[0], "rad/s^2"),
-                         "uncertainty": quantity(v[1], "rad/s^2"),
-                         "values": quantity(list(v[2]), "rad/s^2")} for m, v in g.eps.items()},
+            "eps0": {m: {"mean": quantity(v[0], ACC), "uncertainty": quantity(v[1], ACC),
+                         "values": quantity(list(v[2]), ACC)} for m, v in g.eps.items()},
             "study_params": {k: {"mean": quantity(v[0], _unit(k)),
                                  "uncertainty": quantity(v[1], _unit(k)),
                                  "values": quantity(list(v[2]), _unit(k))}

@@ -5,10 +5,9 @@ A command's result is only as good as what it was given: ``contact --radius 20``
 20 m ball (a bare number is metres), and a reader who cannot see the radius cannot catch
 it. So every command echoes every input it used, in SI with its unit (JSON) and through
 :func:`surfmet.units.format_quantity` (text): the options as parsed (defaults included),
-the files, and each material with the moduli and hardness it stands for.
-
-The unit of an option is that of its parser (:data:`TYPE_UNITS`, by the argparse type's
-name) or, for an option parsed later by its command, of its name (:data:`OPTION_UNITS`).
+the files, and each material with the moduli and hardness it stands for. Which options a
+command has and their units is the command line's knowledge
+(:mod:`surfmet.cli._inputs`); this module builds the record from plain values.
 """
 
 from __future__ import annotations
@@ -17,61 +16,6 @@ from collections.abc import Iterable
 from typing import Any
 
 from surfmet.units import format_quantity, quantity
-
-#: Unit of the value an argparse type returns, by the type's ``__name__``.
-TYPE_UNITS: dict[str, str] = {
-    "length": "m", "positive_length": "m", "force": "N", "load range": "N",
-    "pressure": "Pa", "speed": "m/s", "work": "J/m^2", "energy": "J/m^2",
-}
-
-#: Unit of an option's value by its name, for options whose text the command parses
-#: itself (``--pressures``, ``rolling-contact --load``) or whose type has its own name.
-OPTION_UNITS: dict[str, str] = {
-    "radius": "m", "size": "m", "range": "m", "tip_radius": "m", "ls": "m", "lc": "m",
-    "positions": "m", "load": "N", "loads": "N", "hardness": "Pa", "e_star": "Pa",
-    "pressures": "Pa", "speed": "m/s", "work_of_adhesion": "J/m^2",
-    "adhesion_hysteresis": "J/m^2", "mu": "", "creepage": "", "traction_ratio": "",
-    "alpha_h": "", "tol": "", "exaggeration": "", "pixel": "m", "dx": "m", "dy": "m",
-    "fps": "1/s", "step_deg": "°",
-}
-
-#: Options that say where the output goes or how the run is shown, not what it computes.
-NOT_INPUTS = frozenset({"help", "func", "command", "json", "quiet", "out", "output", "plot",
-                        "csv", "resume", "workers", "scheduler", "version"})
-
-
-def _name(action: Any) -> str:
-    """The input's name: the long option without dashes (``--e-star`` -> ``e_star``), or
-    a positional's dest."""
-    longs = [s for s in action.option_strings if s.startswith("--")]
-    return (longs[0][2:] if longs else action.dest).replace("-", "_").strip("_")
-
-
-def _unit(action: Any, name: str) -> str | None:
-    tname = getattr(action.type, "__name__", None)
-    return TYPE_UNITS.get(tname or "", OPTION_UNITS.get(name))
-
-
-def _parse_text(name: str, text: str) -> Any:
-    """An option's text that its command parses itself, parsed by the same function, or
-    the text unchanged where it is not a quantity (``--lc none``)."""
-    from surfmet.errors import SurfmetInputError
-    from surfmet.units import parse_force, parse_length, parse_pressure, parse_speed
-
-    parsers = {"m": parse_length, "N": parse_force, "m/s": parse_speed}
-    try:
-        if name == "pressures":
-            from surfmet.mechanics.flat_contact import parse_pressures
-
-            return [float(p) for p in parse_pressures(text)]
-        unit = OPTION_UNITS.get(name)
-        if unit == "Pa":
-            return parse_pressure(text)
-        if unit in parsers:
-            return parsers[unit](text)
-    except (SurfmetInputError, ValueError):
-        pass
-    return text
 
 
 def _value(value: Any, unit: str | None) -> Any:
@@ -103,34 +47,20 @@ def material_inputs(text: str) -> list[dict[str, Any]]:
     return out
 
 
-def inputs_record(actions: Iterable[Any], args: Any
-                  ) -> dict[str, Any]:
-    """The ``"inputs"`` record of a command: every option and positional it was run with
-    (defaults included; unset options left out), each quantity as ``{"value", "unit"}``
-    in SI, and ``materials`` with their moduli and hardness.
-
-    Parameters
-    ----------
-    actions : iterable of argparse.Action
-        The command's parser actions (``parser._actions``).
-    args : argparse.Namespace
-        The parsed arguments.
-    """
+def inputs_record(values: Iterable[tuple[str, Any, str | None]]) -> dict[str, Any]:
+    """The ``"inputs"`` record of a command from its ``(name, value, unit)`` triples (SI
+    values; ``unit`` None for a value without one): each quantity as ``{"value", "unit"}``,
+    ``materials`` (``"BALL,PLATE"`` text, or a list of them) with their moduli and
+    hardness, unset (None) values left out."""
     rec: dict[str, Any] = {}
-    for action in actions:
-        name = _name(action)
-        if name in NOT_INPUTS or action.dest in NOT_INPUTS or not hasattr(args, action.dest):
-            continue
-        value = getattr(args, action.dest)
+    for name, value, unit in values:
         if value is None:
             continue
         if name == "materials":  # one pair, or a sweep's list of pairs
             rec[name] = ([material_inputs(v) for v in value] if isinstance(value, list)
                          else material_inputs(value))
             continue
-        if isinstance(value, str) and name in OPTION_UNITS:
-            value = _parse_text(name, value)
-        rec[name] = _value(value, _unit(action, name))
+        rec[name] = _value(value, unit)
     return rec
 
 
