@@ -113,6 +113,9 @@ def test_inputs_record_reads_units_from_the_parsers():
     assert rec["pressures"] == {"value": [1e6, 2e6], "unit": "Pa"}
     assert "f" not in rec and "json" not in rec  # unset, and not an input
     assert "  loads              1 N to 3 N, 3 points" in inputs_lines(rec)
+    p.add_argument("--line", action="store_true")  # rolling-contact's load per length
+    rec = command_inputs(p._actions, p.parse_args(["--line", "--load", "100N/mm"]))
+    assert rec["load_per_length"] == {"value": pytest.approx(1e5), "unit": "N/m"}
 
 
 @pytest.mark.parametrize(("value", "unit", "shown"), [

@@ -61,6 +61,10 @@ def _parse_text(name: str, text: str) -> Any:
 
     parsers = {"m": parse_length, "N": parse_force, "m/s": parse_speed}
     try:
+        if name == "line_load":
+            from surfmet.mechanics.rolling_contact import parse_line_load
+
+            return parse_line_load(text)
         if name == "pressures":
             from surfmet.mechanics.flat_contact import parse_pressures
 
@@ -87,10 +91,13 @@ def command_inputs(actions: Iterable[argparse.Action], args: argparse.Namespace
             name = _name(action)
             if name in NOT_INPUTS or action.dest in NOT_INPUTS:
                 continue
-            value = getattr(args, action.dest, None)
-            if isinstance(value, str) and name in OPTION_UNITS:
+            value, unit = getattr(args, action.dest, None), _unit(action, name)
+            if name == "load" and getattr(args, "line", False) is True:
+                name, unit = "load_per_length", "N/m"  # rolling-contact --line 100N/mm
+                value = _parse_text("line_load", value) if isinstance(value, str) else value
+            elif isinstance(value, str) and name in OPTION_UNITS:
                 value = _parse_text(name, value)
-            yield name, value, _unit(action, name)
+            yield name, value, unit
 
     return inputs_record(triples())
 
