@@ -170,7 +170,7 @@ def test_real_scan_too_small_for_the_contact(realdata, capsys):
             "10N", "--materials", "steel,aluminium"]
     assert main(argv) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert "do not overlap the contact" in err[-1] and "273.6 um" in err[-1]
+    assert "do not overlap the contact" in err[-1] and "273.6 µm" in err[-1]
     assert len(err[-1]) < 400 and "Traceback" not in "".join(err)
     assert all(line.startswith("note:") for line in err[:-1])
     rec = _json(capsys, [*argv, "--on-edge", "warn", "--json"])

@@ -100,7 +100,7 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc [m]", "ls [m]",
                                   "n_sampling", "conditions", "caveats", "Sa [m]"]
     assert rows[0]["standard"].startswith("ISO 25178-2")
-    assert "Ssk" in rows[0] and "Spd_1/m^2" in rows[0]
+    assert "Ssk" in rows[0] and "Spd [1/m^2]" in rows[0]
 
 
 def test_human_table(capsys, scan):

@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from surfmet.units import format_quantity, quantity
+from surfmet.units import format_quantity, quantity, valid_text
 
 
 def _value(value: Any, unit: str | None) -> Any:
@@ -82,7 +82,7 @@ def _text(value: Any) -> str:
         return ", ".join(_text(v) for v in value)
     if isinstance(value, float):
         return f"{value:.6g}"
-    return str(value)
+    return valid_text(str(value))  # a file name's undecodable bytes as \xNN
 
 
 def material_text(m: dict[str, Any]) -> str:
