@@ -146,33 +146,6 @@ def _parse(text: str, table: Mapping[str, float], kind: str, default: str,
     return value
 
 
-def is_bare_number(text: Any) -> bool:
-    """Whether ``text`` (as typed) is a number without a unit, e.g. ``"20"``."""
-    if not isinstance(text, str):
-        return False
-    m = _QUANTITY_RE.match(text)
-    return m is not None and not (m.group(2) or "").strip()
-
-
-#: The largest bare length (m) read without comment: a bare number is metres, and a ball,
-#: a cut-off or a domain of more than a metre is almost always millimetres meant.
-BARE_LENGTH_LIMIT = 1.0
-
-
-def bare_number_note(text: Any, value: float, kind: str = "length") -> str | None:
-    """How a bare number that is implausible in SI was read, for a note on stderr
-    (``"20 read as 20 m; write 20mm for millimetres"``), or None.
-
-    The rule for every quantity typed on the command line is one: a bare number is SI
-    (metres, newtons, m/s), except a pressure, modulus or hardness, which needs its unit
-    (:func:`parse_pressure`). A bare length over :data:`BARE_LENGTH_LIMIT` is accepted as
-    metres, and this note says so."""
-    if kind == "length" and is_bare_number(text) and abs(value) > BARE_LENGTH_LIMIT:
-        t = str(text).strip()
-        return f"{t} read as {t} m (a bare number is metres); write {t}mm for millimetres"
-    return None
-
-
 def parse_length(text: str | float) -> float:
     """Parse a length such as ``"468um"``, ``"0.5 mm"``, ``"20mm"`` or ``"2e-6"`` to metres.
 
@@ -239,6 +212,33 @@ def parse_force_range(text: str) -> tuple[float, float, int | None]:
     if not (lo > 0 and hi > lo):
         raise SurfmetInputError(f"load range {text!r} must satisfy 0 < F1 < F2")
     return lo, hi, n
+
+
+def is_bare_number(text: Any) -> bool:
+    """Whether ``text`` (as typed) is a number without a unit, e.g. ``"20"``."""
+    if not isinstance(text, str):
+        return False
+    m = _QUANTITY_RE.match(text)
+    return m is not None and not (m.group(2) or "").strip()
+
+
+#: The largest bare length (m) read without comment: a bare number is metres, and a ball,
+#: a cut-off or a domain of more than a metre is almost always millimetres meant.
+BARE_LENGTH_LIMIT = 1.0
+
+
+def bare_number_note(text: Any, value: float, kind: str = "length") -> str | None:
+    """How a bare number that is implausible in SI was read, for a note on stderr
+    (``"20 read as 20 m; write 20mm for millimetres"``), or None.
+
+    The rule for every quantity typed on the command line is one: a bare number is SI
+    (metres, newtons, m/s), except a pressure, modulus or hardness, which needs its unit
+    (:func:`parse_pressure`). A bare length over :data:`BARE_LENGTH_LIMIT` is accepted as
+    metres, and this note says so."""
+    if kind == "length" and is_bare_number(text) and abs(value) > BARE_LENGTH_LIMIT:
+        t = str(text).strip()
+        return f"{t} read as {t} m (a bare number is metres); write {t}mm for millimetres"
+    return None
 
 
 #: Every unit a JSON record may state: SI symbols in ASCII with powers as ``^n``
