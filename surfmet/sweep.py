@@ -34,7 +34,6 @@ from typing import Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
-from surfmet.units import csv_column
 
 TASKS = ("contact", "hertz-check")
 
@@ -243,7 +242,7 @@ class RowWriter:
                     self._locks.enter_context(output_lock(path))
             if resume:
                 self.done = _restore(self.cols, csv_path, json_path)
-            header = _csv_line([csv_column(n, u) for n, u in self.cols])
+            header = _csv_line([f"{n} [{u}]" if u else n for n, u in self.cols])
             for kind, path in self._paths.items():
                 if path is None:
                     continue
@@ -343,7 +342,7 @@ def valid_rows(cols: Sequence[tuple[str, str]], csv_path: str | Path | None = No
     text = _complete(csv_path)
     if text is not None:
         rows: dict[str, str] = {}
-        header = _csv_line([csv_column(n, u) for n, u in cols])
+        header = _csv_line([f"{n} [{u}]" if u else n for n, u in cols])
         reader = csv.reader(io.StringIO(text))
         names = [n for n, _ in cols]
         key, status = names.index("key"), names.index("status")
@@ -396,7 +395,7 @@ def _restore(cols: Sequence[tuple[str, str]], csv_path: str | Path | None,
     given = [k for k, p in paths.items() if p is not None]
     done = set.intersection(*(set(found.get(k, {})) for k in given)) if given else set()
     for kind, rows in found.items():
-        head = _csv_line([csv_column(n, u) for n, u in cols]) if kind == "csv" else ""
+        head = _csv_line([f"{n} [{u}]" if u else n for n, u in cols]) if kind == "csv" else ""
         text = head + "".join(line for key, line in rows.items() if key in done)
         if Path(paths[kind]).read_text(encoding="utf-8", errors="replace") != text:
             write_text(paths[kind], text)
