@@ -177,7 +177,7 @@ def test_text_spells_micro_and_powers(scan, tmp_path, capsys):
     tsv.write_text("k\tas1\n" + "".join(f"{a}\t{b}\n" for a, b in zip(k, frames)))
     assert main(["rotor", str(tsv), "--quiet"]) == 0
     text = capsys.readouterr().out
-    assert "rad/s²" in text and "rad/s2" not in text
+    assert "rad/s²" in text and "rad/s2" not in text and "^2" not in text
 
 
 def test_info_of_every_real_file_states_units_of_the_vocabulary(realdata, capsys):

@@ -25,7 +25,7 @@ from surfmet.mechanics.rotor_verdict import (
     verdict_plot_path,
     verdict_record,
 )
-from surfmet.units import quantity
+from surfmet.units import display_unit, quantity
 
 PAPER_ALIAS = "paper2022"
 #: The JSON unit of an angular acceleration (surfmet.units.JSON_UNITS).
@@ -403,7 +403,7 @@ def _print_groups(an: Any) -> None:
             print(f"  eps0 {label:26s} {mean:7.3f} ± {u:5.3f} rad/s²   "
                   f"[{', '.join(f'{v:.3f}' for v in vals)}]")
         for k, (mean, u, _vals) in g.params.items():
-            print(f"  {k:31s} {mean:9.4f} ± {u:6.4f} {_unit(k)}")
+            print(f"  {k:31s} {mean:9.4f} ± {u:6.4f} {display_unit(_unit(k))}")
         loto = ", ".join(f"{m} {v * fps:.2f}" for m, v in g.loto_rms.items()
                          if m in ("rest", "const", an.study_model) and math.isfinite(v))
         print(f"  leave-one-test-out rms (frames): {loto}")
