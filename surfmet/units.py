@@ -163,14 +163,17 @@ def parse_force(text: str | float) -> float:
     return _parse(text, FORCE_UNITS, "force", "N")
 
 
-def parse_pressure(text: str | float, *, unit_required: bool = False) -> float:
+def parse_pressure(text: str | float, *, unit_required: bool = True,
+                   example: str = "MPa") -> float:
     """Parse a pressure such as ``"1.2GPa"`` or ``"300 MPa"`` to pascals.
 
-    A bare number is pascals, unless ``unit_required`` (moduli and hardnesses, where a
-    bare ``200`` meant as GPa would be read 1e9 times too small): then it is refused.
+    Typed text needs its unit, wherever a pressure is typed (applied pressures,
+    ``--hardness``, ``--e-star``, a material's ``E=`` and ``H=``): a bare ``200`` meant as
+    GPa would be read 1e9 times too small, and ``--hardness 1`` as 1 Pa. This is the one
+    exception to "a bare number is SI" (:func:`bare_number_note`). A number (not text),
+    as the Python API passes it, is pascals. ``example`` is the unit the refusal suggests.
     """
-    return _parse(text, PRESSURE_UNITS, "pressure", "GPa" if unit_required else "MPa",
-                  unit_required)
+    return _parse(text, PRESSURE_UNITS, "pressure", example, unit_required)
 
 
 def parse_speed(text: str | float) -> float:
@@ -213,6 +216,53 @@ def parse_force_range(text: str) -> tuple[float, float, int | None]:
     if not (lo > 0 and hi > lo):
         raise SurfmetInputError(f"load range {text!r} must satisfy 0 < F1 < F2")
     return lo, hi, n
+
+
+def is_bare_number(text: Any) -> bool:
+    """Whether ``text`` (as typed) is a number without a unit, e.g. ``"20"``."""
+    if not isinstance(text, str):
+        return False
+    m = _QUANTITY_RE.match(text)
+    return m is not None and not (m.group(2) or "").strip()
+
+
+#: The largest bare length (m) read without comment: a bare number is metres, and a ball,
+#: a cut-off or a domain of more than a metre is almost always millimetres meant.
+BARE_LENGTH_LIMIT = 1.0
+
+
+def bare_number_note(text: Any, value: float, kind: str = "length") -> str | None:
+    """How a bare number that is implausible in SI was read, for a note on stderr
+    (``"20 read as 20 m; write 20mm for millimetres"``), or None.
+
+    The rule for every quantity typed on the command line is one: a bare number is SI
+    (metres, newtons, m/s), except a pressure, modulus or hardness, which needs its unit
+    (:func:`parse_pressure`). A bare length over :data:`BARE_LENGTH_LIMIT` is accepted as
+    metres, and this note says so."""
+    if kind == "length" and is_bare_number(text) and abs(value) > BARE_LENGTH_LIMIT:
+        t = str(text).strip()
+        return f"{t} read as {t} m (a bare number is metres); write {t}mm for millimetres"
+    return None
+
+
+#: Every unit a JSON record may state: SI symbols in ASCII with powers as ``^n``
+#: (``m^2``, ``rad/s^2``, ``1/m^2``), ``""`` for a dimensionless value, and the few
+#: non-SI names the records need (``%``, ``°``, ``frame``). A record with a unit outside
+#: this set is a bug (``tests/test_cli_conventions.py`` walks every command's JSON).
+JSON_UNITS: frozenset[str] = frozenset({
+    "", "%", "°", "frame",
+    "m", "m^2", "m^3", "m^4", "1/m", "1/m^2", "rad/m",
+    "N", "N/m", "N m", "Pa", "Pa/m", "J", "J/m", "J/m^2", "W", "W/(m/s)", "W/(m/s)/m",
+    "m/s", "s", "1/s", "1/s^2", "rad", "rad/s", "rad/s^2", "rad/s^2/m", "kg m^2",
+})
+
+
+def csv_column(name: str, unit: str) -> str:
+    """A CSV column's header: ``"Sa [m]"``, ``"load [N]"``, the name alone for a
+    dimensionless value. One convention for every CSV surfmet writes (``roughness --csv``,
+    ``sweep --csv``): the name, then its JSON unit (:data:`JSON_UNITS`) in brackets, the
+    values below in that unit (SI)."""
+    return f"{name} [{unit}]" if unit else name
 
 
 def quantity(value: Any, unit: str) -> dict[str, Any]:
@@ -272,11 +322,14 @@ def jsonable(obj: Any) -> Any:
 DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "m": (("m", 1.0), ("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9)),
     "m^2": (("m²", 1.0), ("mm²", 1e-6), ("µm²", 1e-12), ("nm²", 1e-18)),
-    "1/m": (("1/µm", 1e6), ("1/mm", 1e3), ("1/m", 1.0)),
-    "1/m^2": (("1/µm²", 1e12), ("1/mm²", 1e6), ("1/m²", 1.0)),
+    # one display unit each, whatever the value: Spd in 1/m² for one scan and 1/mm² for
+    # the next could not be compared by eye (ISO 25178 states Spd in 1/mm²)
+    "1/m": (("1/µm", 1e6),),
+    "1/m^2": (("1/mm²", 1e6),),
     "Pa": (("GPa", 1e9), ("MPa", 1e6), ("kPa", 1e3), ("Pa", 1.0)),
     "N": (("kN", 1e3), ("N", 1.0), ("mN", 1e-3), ("µN", 1e-6), ("nN", 1e-9)),
     "N/m": (("N/mm", 1e3), ("N/m", 1.0)),
+    "J/m^2": (("J/m²", 1.0), ("mJ/m²", 1e-3)),
     "W": (("W", 1.0), ("mW", 1e-3), ("µW", 1e-6), ("nW", 1e-9)),
 }
 

@@ -176,5 +176,5 @@ def test_a_retraction_that_never_pulled_is_named(capsys, monkeypatch):
     argv = [*BASE, "--work-of-adhesion", "50mJ/m2", "--grid", "16", "--steps", "8", "--quiet"]
     assert main(argv) == 0
     line = next(v for v in capsys.readouterr().out.splitlines() if v.startswith("pull-off"))
-    assert "0 uN: the retraction never pulled (its least load, 0.001" in line
+    assert "0 µN: the retraction never pulled (its least load, 0.001" in line
     assert "is not tensile" in line

@@ -114,6 +114,32 @@ def test_json_on_stdout_logs_on_stderr(name, files, capsys):
     data = _no_nan(out)  # the whole of stdout is one JSON document
     assert isinstance(data, (dict, list)) and data
     assert not err.strip().startswith(("{", "[")), "JSON leaked to stderr"
+    _check_units_and_inputs(name, data)
+
+
+def _units(obj, path="$"):
+    """Every ``"unit"`` a JSON document states, with where."""
+    if isinstance(obj, dict):
+        if isinstance(obj.get("unit"), str) and "value" in obj:
+            yield path, obj["unit"]
+        for k, v in obj.items():
+            yield from _units(v, f"{path}.{k}")
+    elif isinstance(obj, list):
+        for i, v in enumerate(obj):
+            yield from _units(v, f"{path}[{i}]")
+
+
+def _check_units_and_inputs(name, data):
+    """Issue 34, items 10 and 13: every unit is in the one vocabulary (was "rad/s²" beside
+    "m^2", "1" beside ""), and every record states its inputs."""
+    from surfmet.units import JSON_UNITS
+
+    bad = {(p, u) for p, u in _units(data) if u not in JSON_UNITS}
+    assert not bad, f"units outside surfmet.units.JSON_UNITS: {sorted(bad)[:5]}"
+    if name == "formats":  # takes no input
+        return
+    for rec in data if isinstance(data, list) else [data]:
+        assert isinstance(rec.get("inputs"), dict), f"'surfmet {name} --json' has no inputs"
 
 
 @pytest.mark.parametrize("argv", [

@@ -43,7 +43,7 @@ def test_verdicts_and_json(plates, capsys):
     assert rec["hertz_holds"] is True and rec["alpha"]["value"] < 0.05
     assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",
                         "radial_profile", "models", "verdict", "summits", "grid",
-                        "scan_preparation", "warnings", "solve"}
+                        "scan_preparation", "warnings", "solve", "inputs"}
     assert rec["verdict"]["model"] == "hertz"
     # issue 26: the solve record (elastic then elastic-plastic solve, combined)
     assert rec["solve"]["converged"] is True and rec["solve"]["edge_contact"] is False

@@ -39,7 +39,7 @@ def test_json_structure_and_units(paper_run):
     for t in rec["tests"]:
         assert t["effect"] in ("none", "decaying", "unbalance", "decaying+unbalance", "wave",
                                "decaying+wave")
-        assert t["eps0"]["unit"] == "rad/s²"
+        assert t["eps0"]["unit"] == "rad/s^2"
         assert set(t["models"]) >= {"rest", "parabola", "const", "position", "speed",
                                     "unbalance", "position+unbalance"}
         for m in t["models"].values():
@@ -49,7 +49,7 @@ def test_json_structure_and_units(paper_run):
                 assert set(q) == {"value", "unit"}
     groups = {g["name"]: g for g in rec["groups"]}
     assert set(groups) == {"as", "s"}
-    assert [q["unit"] for q in groups["as"]["paper_parabola"]] == ["rad/s²", "rad/s", "rad"]
+    assert [q["unit"] for q in groups["as"]["paper_parabola"]] == ["rad/s^2", "rad/s", "rad"]
 
 
 def test_paper_findings(paper_run):

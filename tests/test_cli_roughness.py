@@ -47,7 +47,7 @@ def test_one_file_json_shape(capsys, scan):
     rc, out, _ = _run(capsys, "roughness", str(scan), "--json")
     assert rc == 0
     rec = json.loads(out)[0]
-    assert set(rec) == {"file", "status", "parameters", "settings"}
+    assert set(rec) == {"file", "status", "parameters", "settings", "inputs"}
     assert rec["file"] == str(scan)
     for sym, q in rec["parameters"].items():
         assert set(q) == {"value", "unit"}
@@ -95,12 +95,12 @@ def test_several_files_json_and_csv(capsys, scan, tmp_path):
     rc, _, _ = _run(capsys, "roughness", str(scan), str(bad), "--csv", str(out_csv))
     rows = list(csv.DictReader(io.StringIO(out_csv.read_text())))
     assert rc == 1
-    assert rows[0]["status"] == "ok" and float(rows[0]["Sa_m"]) > 0
+    assert rows[0]["status"] == "ok" and float(rows[0]["Sa [m]"]) > 0
     assert rows[1]["status"] == "error" and rows[1]["error"]
-    assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc_m", "ls_m",
-                                  "n_sampling", "conditions", "caveats", "Sa_m"]
+    assert list(rows[0])[:10] == ["file", "status", "error", "standard", "lc [m]", "ls [m]",
+                                  "n_sampling", "conditions", "caveats", "Sa [m]"]
     assert rows[0]["standard"].startswith("ISO 25178-2")
-    assert "Ssk" in rows[0] and "Spd_1/m^2" in rows[0]
+    assert "Ssk" in rows[0] and "Spd [1/m^2]" in rows[0]
 
 
 def test_human_table(capsys, scan):

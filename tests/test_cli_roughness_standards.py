@@ -133,8 +133,8 @@ def test_default_is_stated_in_text_json_and_csv(capsys, sine_profile, tmp_path):
                     "2.5um", "--n-sampling", "4", "--csv", str(table))
     rows = list(csv.DictReader(io.StringIO(table.read_text())))
     assert rc == 0 and rows[0]["standard"] == "iso21920"
-    assert float(rows[0]["lc_m"]) == pytest.approx(0.8e-3)
-    assert float(rows[0]["ls_m"]) == pytest.approx(2.5e-6)
+    assert float(rows[0]["lc [m]"]) == pytest.approx(0.8e-3)
+    assert float(rows[0]["ls [m]"]) == pytest.approx(2.5e-6)
     assert rows[0]["n_sampling"] == "4" and "lc: given by the user" in rows[0]["conditions"]
 
 

@@ -90,7 +90,7 @@ def test_summary_is_complete_json_with_units(demo):
     assert s["contact"]["load"]["unit"] == "N"
     assert s["rolling"]["moments"]["unit"] == "N m"
     assert s["rolling"]["lambda_eff"]["unit"] == ""
-    assert s["rotor"]["groups"][0]["paper_parabola"]["c2"]["unit"] == "rad/s²"
+    assert s["rotor"]["groups"][0]["paper_parabola"]["c2"]["unit"] == "rad/s^2"
     assert all(q["unit"] == "s" for q in s["timings"].values())
     # the progress went to stderr, the story to stdout
     assert "step 7/7" in demo["stderr"] and "step 7/7" not in demo["stdout"]

@@ -99,7 +99,7 @@ def test_cli_adhesion_section(plate, capsys):
                                         "unit": "N"}
     assert main(_args(plate, "--work-of-adhesion", "0.1J/m^2", "--range", "0.5nm")) == 0
     out = capsys.readouterr().out
-    assert "adhesion: w = 0.1 J/m^2" in out and "does not change the contact" in out
+    assert "adhesion: w = 0.1 J/m²" in out and "does not change the contact" in out
     assert "Pastewka-Robbins parameter" in out
 
 

@@ -123,7 +123,7 @@ def test_cli_reports_the_smooth_deviation_with_units(tmp_path):
         assert main([*args, "--json"]) == 0
     rec = json.loads(out.getvalue())["tests"][0]["adequacy"]
     sm = rec["smooth_deviation"]
-    assert sm["amplitude"]["unit"] == "rad/s²"
+    assert sm["amplitude"]["unit"] == "rad/s^2"
     assert sm["amplitude"]["value"] == pytest.approx(rep.smooth.amplitude)
     assert sm["delta_bic"] > 6 and not rec["adequate"]
     assert any("unexplained smooth deviation" in line for line in rec["summary"])

@@ -149,7 +149,7 @@ def test_paper_table_verdict_through_the_cli(capsys) -> None:
     v = out["verdict"]
     assert v["code"] in ("no_difference", "difference", "undetermined")
     go = v["group_offset"]
-    assert go["unit"] == "rad/s²" and go["minuend"] == "s" and go["subtrahend"] == "as"
+    assert go["unit"] == "rad/s^2" and go["minuend"] == "s" and go["subtrahend"] == "as"
     assert go["ci_low"] < go["value"] < go["ci_high"]
     assert set(v["shared_track"]) >= {"adequate", "p_value"}
     assert v["lambda_assumptions"]["slope"]["unit"] == "rad"
@@ -158,7 +158,7 @@ def test_paper_table_verdict_through_the_cli(capsys) -> None:
     assert {c["name"] for c in v["confounds"]} >= {
         "launch_direction", "plate_flatness", "collar_unbalance", "run_in", "lateral_creep",
         "air_drag"}
-    assert all(c["equivalent_acceleration"]["unit"] == "rad/s²" for c in v["confounds"])
+    assert all(c["equivalent_acceleration"]["unit"] == "rad/s^2" for c in v["confounds"])
 
 
 def _rig(tmp_path, **change) -> str:

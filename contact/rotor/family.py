@@ -50,22 +50,22 @@ __all__ = [
 
 
 PARAM_UNITS = {
-    "eps0": "rad/s²",
-    "eta": "1/s²",
+    "eps0": "rad/s^2",
+    "eta": "1/s^2",
     "gamma": "1/s",
-    "a_c": "rad/s²",
-    "a_s": "rad/s²",
+    "a_c": "rad/s^2",
+    "a_s": "rad/s^2",
     "t0": "s",
     "phi0": "rad",
-    "c2": "rad/s²",
+    "c2": "rad/s^2",
     "c1": "rad/s",
     "c0": "rad",
-    "amplitude": "rad/s²",
+    "amplitude": "rad/s^2",
     "phase": "rad",
-    "wave_c": "rad/s²",
-    "wave_s": "rad/s²",
+    "wave_c": "rad/s^2",
+    "wave_s": "rad/s^2",
     "wave_period": "rad",
-    "wave_amplitude": "rad/s²",
+    "wave_amplitude": "rad/s^2",
     "wave_phase": "rad",
 }
 

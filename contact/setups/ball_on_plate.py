@@ -155,8 +155,8 @@ class SphereContact:
                 # checked in solve(): a truncated answer is still allowed with on_edge="warn"
                 self._uncovered = (
                     "the scans do not overlap the contact: the roughness data end "
-                    f"{covered * 5e5:.4g} um from the ball's apex, inside the "
-                    f"{reach * 1e6:.4g} um contact diameter expected (Hertz); use larger "
+                    f"{covered * 5e5:.4g} µm from the ball's apex, inside the "
+                    f"{reach * 1e6:.4g} µm contact diameter expected (Hertz); use larger "
                     f"scans or a smaller load{TRUNCATED_ADVICE}"
                 )
             if dom.n > fit:

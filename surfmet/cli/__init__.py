@@ -18,6 +18,7 @@ import sys
 from collections.abc import Sequence
 
 from surfmet._version import __version__
+from surfmet.cli._inputs import stating_inputs
 
 SUBCOMMANDS = (
     "info",
@@ -93,7 +94,7 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name != f"surfmet.cli.{name}":
                 raise
             continue
-        mod.add_parser(sub)
+        stating_inputs(mod.add_parser(sub))  # every command states what it was given
     return parser
 
 

@@ -17,9 +17,13 @@ T = TypeVar("T")
 def _argtype(parse: Any, what: str) -> Any:
     def convert(text: str) -> Any:
         try:
-            return parse(text)
+            value = parse(text)
         except SurfmetInputError as exc:
             raise argparse.ArgumentTypeError(str(exc)) from None
+        note = units.bare_number_note(text, value, what)
+        if note:  # "20" for a radius: read as metres, as documented, and said so
+            log(f"note: {note}")
+        return value
 
     convert.__name__ = what  # argparse names the type in its messages
     return convert
@@ -103,8 +107,11 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
 
 
 def emit_json(obj: Any) -> None:
-    """Write ``obj`` as JSON on stdout (NaN/inf become null)."""
-    text = json.dumps(units.jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False)
+    """Write ``obj`` as JSON on stdout (NaN/inf become null), with the ``"inputs"`` of the
+    command being run (:func:`surfmet.cli._inputs.attach`)."""
+    from surfmet.cli._inputs import attach
+
+    text = json.dumps(units.jsonable(attach(obj)), indent=2, ensure_ascii=False, allow_nan=False)
     sys.stdout.write(text + "\n")
     sys.stdout.flush()
 

@@ -143,7 +143,7 @@ def _print_line(run_: Any) -> None:
     cyc, law = res.cycle, res.law
     print(f"cylinder        R = {format_length(res.radius)}, E* = {res.e_star / 1e9:.4g} GPa "
           "(plane strain, per unit length)")
-    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
+    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m², range {format_length(law.range)}, "
           f"peak tension {law.peak / 1e6:.4g} MPa")
     print(f"Maugis lambda   {res.maugis_parameter:.4g}   (Tabor mu {res.tabor_parameter:.4g})")
     print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
@@ -165,7 +165,7 @@ def _print(run_: Any) -> None:
     ball = run_.result
     cyc, law = ball.cycle, ball.law
     print(f"sphere          R = {format_length(ball.radius)}, E* = {ball.e_star / 1e9:.4g} GPa")
-    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m^2, range {format_length(law.range)}, "
+    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m², range {format_length(law.range)}, "
           f"peak tension {law.peak / 1e6:.4g} MPa")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
     if getattr(law, "smoothing", 0.0) > 0.0:
@@ -176,10 +176,10 @@ def _print(run_: Any) -> None:
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
     in_w_r = cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius)
-    print(f"pull-off force  {_pull_off(cyc, 'uN', 1e6)}"
+    print(f"pull-off force  {_pull_off(cyc, 'µN', 1e6)}"
           + (f" = {in_w_r:.4g} pi w R (JKR 1.5, DMT 2)" if in_w_r > 0 else
              " (JKR 1.5 pi w R, DMT 2 pi w R)"))
-    _print_cycle(cyc, "uN", 1e6, "J")
+    _print_cycle(cyc, "µN", 1e6, "J")
     if run_.scans is not None:
         print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
               f"{run_.scans['ball'] or '-'}; roughness rms on the grid "

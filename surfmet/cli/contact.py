@@ -141,14 +141,16 @@ def _print(sol: Any, args: argparse.Namespace) -> None:
     res, pair = sol.result, sol.pair
     ball_m, plate_m = sol.ball_material, sol.plate_material
     hz = res.hertz
-    print(f"materials      {ball_m.name} on {plate_m.name}, E* = {res.e_star / 1e9:.4g} GPa")
+    print(f"materials      {ball_m.name} on {plate_m.name}, E* = "
+          f"{format_quantity(res.e_star, 'Pa')}")
     if sol.preparation is not None:
         print(f"scans          {spike_summary(sol.preparation)}")
     print(f"grid           {res.shape[1]} x {res.shape[0]} cells, pixel "
           f"{format_length(res.dx)} ({pixel_source(res.dx, pair, args.grid)}), side "
           f"{format_length(res.shape[1] * res.dx)}{' (periodic)' if res.periodic else ''}")
-    print(f"load           {res.load:.6g} N")
-    print(f"max pressure   {res.pmax / 1e6:.6g} MPa   (Hertz p0 {hz.p0 / 1e6:.6g} MPa)")
+    print(f"load           {format_quantity(res.load, 'N', 6)}")
+    print(f"max pressure   {format_quantity(res.pmax, 'Pa', 6)}   (Hertz p0 "
+          f"{format_quantity(hz.p0, 'Pa', 6)})")
     print(f"contact radius {format_length(res.contact_radius)} = sqrt(A/pi), real area   "
           f"(95 % of the load within {format_length(res.radius_95)})")
     print(f"effective a*   {format_length(res.effective_radius)} = sqrt(5/2 <r^2>_p)   "

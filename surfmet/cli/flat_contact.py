@@ -124,7 +124,7 @@ def adhesion_law(args: argparse.Namespace) -> Any:
         return None
     if not args.work_of_adhesion > 0:
         raise SurfmetInputError(f"--work-of-adhesion must be positive, got "
-                                f"{args.work_of_adhesion!r} J/m^2")
+                                f"{args.work_of_adhesion!r} J/m²")
     return interaction_law(args.interaction, args.work_of_adhesion, args.range_)
 
 
@@ -224,8 +224,8 @@ def _print(rec: dict[str, Any]) -> None:
           f"{g['nx']} x {g['ny']} cells, "
           f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
           f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
-    print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} "
-          f"{'K (MPa/um)':>11} {'err A':>8} {'err gap':>8}")
+    print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (µm)':>9} "
+          f"{'K (MPa/µm)':>11} {'err A':>8} {'err gap':>8}")
     for r in rec["results"]:
         pm = r["pressure"]["value"] / 1e6
         b = r["bem"]
@@ -257,7 +257,7 @@ def _print_adhesion(rec: dict[str, Any]) -> None:
     """The adhesive solve beside the non-adhesive one, per pressure."""
     ad = rec["adhesion"]
     print(f"  adhesion: {ad['interaction']} law, w = {ad['work_of_adhesion']['value'] * 1e3:.4g} "
-          f"mJ/m^2, range {ad['range']['value'] * 1e9:.4g} nm, peak tension "
+          f"mJ/m², range {ad['range']['value'] * 1e9:.4g} nm, peak tension "
           f"{ad['peak_tension']['value'] / 1e6:.4g} MPa (periodic solve)")
     if ad["step_smoothing"]["value"] > 0.0:
         scale = ("the pixel's scale, capped at the range"

@@ -164,7 +164,7 @@ def _print_adhesion(a: Any) -> None:
     from surfmet.units import format_length
 
     print()
-    print(f"adhesion: w = {a.work:.4g} J/m^2, range {format_length(a.range)}: "
+    print(f"adhesion: w = {a.work:.4g} J/m², range {format_length(a.range)}: "
           f"{'changes' if a.changes_contact else 'does not change'} the contact")
     print(f"  Tabor parameter  contact {a.tabor_contact:.3g}"
           + ("" if a.tabor_asperity is None else

@@ -29,7 +29,7 @@ def add_visco_arguments(p: argparse.ArgumentParser) -> None:
     energy = _argtype(parse_surface_energy, "work")
     p.add_argument("--work-of-adhesion", type=energy, default=None, metavar="W",
                    help="--model all: work of adhesion of the adhesion-hysteresis mechanism "
-                   "(default for steel on aluminium in air 0.1 J/m2, contact.adhesion.rolling)")
+                   "(default for steel on aluminium in air 0.1 J/m², contact.adhesion.rolling)")
     p.add_argument("--adhesion-hysteresis", type=energy, default=None, metavar="DW",
                    help="--model all: w_sep - w_app (default W itself, the upper bound)")
     p.add_argument("--viscoelastic", action="append", default=None,
@@ -122,7 +122,7 @@ def _print_all(rep: Any) -> None:
     ns, n1, n2 = c.rotor_loads
     a = c.assumptions
     print(f"rotor ball loads   symmetric {ns:.3f} N; asymmetric {n2:.3f} N and {n1:.3f} N; "
-          f"J + M R^2 = {c.rolling_inertia:.4g} kg m^2")
+          f"J + M R² = {c.rolling_inertia:.4g} kg m²")
     print(f"assumed            speed {a['speed']:g} m/s, loss factor ball {a['loss_ball']:g}, "
           f"plate {a['loss_plate']:g} (alpha_h = {a['alpha_h']:.3g}), H = "
           f"{a['hardness'] / 1e9:.3g} GPa, smooth pair")
@@ -131,7 +131,7 @@ def _print_all(rep: Any) -> None:
     v = rep.verdict
     o = v.offset
     print(f"VERDICT            {v.sentence}")
-    print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s2, "
+    print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s², "
           f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (joint model of Table 3, "
           "surfmet rotor paper2022)")
     print(f"{'mechanism':>19}{'M_r(Ns)':>12}{'M_r(N1)':>12}{'M_r(N2)':>12}{'2nd diff':>12}"

@@ -25,9 +25,11 @@ from surfmet.mechanics.rotor_verdict import (
     verdict_plot_path,
     verdict_record,
 )
-from surfmet.units import quantity
+from surfmet.units import display_unit, quantity
 
 PAPER_ALIAS = "paper2022"
+#: The JSON unit of an angular acceleration (surfmet.units.JSON_UNITS).
+ACC = "rad/s^2"
 
 EPILOG = """examples:
   surfmet rotor paper2022
@@ -133,8 +135,8 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
                          "effect_evidence_delta_bic": t.effect_evidence,
                          "false_alarm_probability": t.false_alarm,
                          "weak": t.weak_evidence},
-            "eps0": quantity(t.eps0, "rad/s²"),
-            "eps0_stderr": quantity(t.eps0_stderr, "rad/s²"),
+            "eps0": quantity(t.eps0, "rad/s^2"),
+            "eps0_stderr": quantity(t.eps0_stderr, "rad/s^2"),
             "start": {
                 "t0": quantity(sel.params.get("t0", 0.0), "s"),
                 "phi0": quantity(sel.params.get("phi0", 0.0), "rad"),
@@ -155,7 +157,7 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
                 amp * sym.rolling_inertia / (sym.mass * G_STANDARD), "m")
         tests.append(rec)
     groups = []
-    units = ("rad/s²", "rad/s", "rad")
+    units = ("rad/s^2", "rad/s", "rad")
     for g in an.groups:
         groups.append({
             "name": g.name,
@@ -164,8 +166,8 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
             "paper_parabola_stderr": [quantity(float(c), u)
                                       for c, u in zip(g.paper_parabola_stderr, units)],
             "paper_parabola_rms": quantity(g.paper_rms, "rad"),
-            "eps0": {m: {"mean": quantity(v[0], "rad/s²"), "uncertainty": quantity(v[1], "rad/s²"),
-                         "values": quantity(list(v[2]), "rad/s²")} for m, v in g.eps.items()},
+            "eps0": {m: {"mean": quantity(v[0], ACC), "uncertainty": quantity(v[1], ACC),
+                         "values": quantity(list(v[2]), ACC)} for m, v in g.eps.items()},
             "study_params": {k: {"mean": quantity(v[0], _unit(k)),
                                  "uncertainty": quantity(v[1], _unit(k)),
                                  "values": quantity(list(v[2]), _unit(k))}
@@ -175,7 +177,7 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
         })
     comps = []
     for c in an.comparisons:
-        unit = "rad/s²" if c.quantity == "eps0" else _unit(c.quantity)
+        unit = "rad/s^2" if c.quantity == "eps0" else _unit(c.quantity)
         comps.append({
             "groups": [c.a, c.b],
             "model": c.model,
@@ -224,7 +226,7 @@ def adequacy_sentences(t: Any) -> list[str]:
     if named is not None:
         lines.append(f"a plate wave is named ({t.selected}): period {named.revolutions:.2f} rev "
                      f"({named.track_length * 1e3:.0f} mm of track), amplitude "
-                     f"{named.amplitude:.3f} rad/s2; the in-family choice {t.family_choice} did "
+                     f"{named.amplitude:.3f} rad/s²; the in-family choice {t.family_choice} did "
                      f"not explain the data (p {a_p(t.family_adequacy)})")
     if a.adequate:
         lines.append(f"adequate: what {t.selected} leaves looks like reading noise ({p}; {stats})")
@@ -234,7 +236,7 @@ def adequacy_sentences(t: Any) -> list[str]:
         if w is not None:
             lines.append(f"  what is left: a wave of period {w.revolutions:.2f} rev "
                          f"({w.track_length * 1e3:.0f} mm of track), amplitude "
-                         f"{w.amplitude:.3f} rad/s2, {100 * w.share:.0f} % of the residual")
+                         f"{w.amplitude:.3f} rad/s², {100 * w.share:.0f} % of the residual")
     shown = named if named is not None else (w if not a.adequate else None)
     if shown is not None and shown.unbalance_like:
         lines.append("  its period is one revolution within the resolution: a plate wave and "
@@ -246,7 +248,7 @@ def adequacy_sentences(t: Any) -> list[str]:
     if sm is not None:
         lines.append(f"  unexplained smooth deviation: {sm.modes} Legendre mode(s) of the "
                      f"rotation angle beat {sm.model} by {sm.delta_bic:.1f} in BIC; largest "
-                     f"{sm.amplitude:.3f} rad/s2, {sm.at_angle / (2 * math.pi):.2f} rev after "
+                     f"{sm.amplitude:.3f} rad/s², {sm.at_angle / (2 * math.pi):.2f} rev after "
                      "the first mark (no effect of the family or plate wave explains it)")
     if t.extension_tried and t.selected not in EXTENSION:
         lines.append(f"  plate-wave models tried ({', '.join(t.extension_tried)}): none won "
@@ -266,7 +268,7 @@ def _wave_record(w: Any) -> dict[str, Any]:
         "period": quantity(w.period, "rad"),
         "revolutions": w.revolutions,
         "track_length": quantity(w.track_length, "m"),
-        "amplitude": quantity(w.amplitude, "rad/s²"),
+        "amplitude": quantity(w.amplitude, "rad/s^2"),
         "phase_rotor": quantity(w.phase_rotor, "rad"),
         "phase_track": quantity(w.phase_track, "rad"),
         "unbalance_like": w.unbalance_like,
@@ -308,9 +310,9 @@ def _adequacy_record(t: Any) -> dict[str, Any]:
     if sm is not None:
         rec["smooth_deviation"] = {
             "added_to": sm.model, "modes": sm.modes, "basis": "Legendre P2..P(modes+1)",
-            "coefficients": quantity(list(sm.coefficients), "rad/s²"),
-            "amplitude": quantity(sm.amplitude, "rad/s²"),
-            "at_angle": quantity(sm.at_angle, "rad"), "rms": quantity(sm.rms, "rad/s²"),
+            "coefficients": quantity(list(sm.coefficients), "rad/s^2"),
+            "amplitude": quantity(sm.amplitude, "rad/s^2"),
+            "at_angle": quantity(sm.at_angle, "rad"), "rms": quantity(sm.rms, "rad/s^2"),
             "delta_bic": sm.delta_bic, "runs_z_after": sm.runs_z, "lag1_after": sm.lag1}
     return rec
 
@@ -320,7 +322,7 @@ def _alignment_record(al: Any) -> dict[str, Any] | None:
         return None
     return {"period": quantity(al.period, "rad"), "revolutions": al.revolutions,
             "track_length": quantity(al.track_length, "m"), "tests": list(al.tests),
-            "amplitude": quantity(list(al.amplitude), "rad/s²"),
+            "amplitude": quantity(list(al.amplitude), "rad/s^2"),
             "phase_rotor": quantity(list(al.phase_rotor), "rad"),
             "phase_track": quantity(list(al.phase_track), "rad"),
             "coherence_rotor": al.coherence_rotor, "coherence_track": al.coherence_track,
@@ -338,7 +340,7 @@ def _print_tests(an: Any) -> None:
     fps = an.fps
     print("per test (rms in frames; BIC; leave-one-out rms in frames)")
     print(f"  {'test':6s} {'model':26s} {'effect':19s} {'misread k':12s} "
-          f"{'eps0 rad/s2':>16s} {'rest':>6s} {'const':>6s} {'chosen':>7s}")
+          f"{'eps0 rad/s²':>16s} {'rest':>6s} {'const':>6s} {'chosen':>7s}")
     for t in an.tests:
         sel = t.fit
         # a short column may leave a model out (too few rows once misreads are set aside)
@@ -390,17 +392,17 @@ def _print_groups(an: Any) -> None:
     for g in an.groups:
         c2, c1, c0 = g.paper_parabola
         print(f"group {g.name!r} ({', '.join(g.tests)})")
-        print(f"  paper's parabola through the mean times: phi = {c2:.4f} t^2 {c1:+.4f} t "
+        print(f"  paper's parabola through the mean times: phi = {c2:.4f} t² {c1:+.4f} t "
               f"{c0:+.4f}   (rms {g.paper_rms:.3f} rad)")
         for m in dict.fromkeys(("paper", "rest", "const", an.study_model)):
             if m not in g.eps:
                 continue  # a short column leaves the model out
             mean, u, vals = g.eps[m]
             label = "paper (2 c2)" if m == "paper" else m
-            print(f"  eps0 {label:26s} {mean:7.3f} ± {u:5.3f} rad/s2   "
+            print(f"  eps0 {label:26s} {mean:7.3f} ± {u:5.3f} rad/s²   "
                   f"[{', '.join(f'{v:.3f}' for v in vals)}]")
         for k, (mean, u, _vals) in g.params.items():
-            print(f"  {k:31s} {mean:9.4f} ± {u:6.4f} {_unit(k)}")
+            print(f"  {k:31s} {mean:9.4f} ± {u:6.4f} {display_unit(_unit(k))}")
         loto = ", ".join(f"{m} {v * fps:.2f}" for m, v in g.loto_rms.items()
                          if m in ("rest", "const", an.study_model) and math.isfinite(v))
         print(f"  leave-one-test-out rms (frames): {loto}")

@@ -130,8 +130,8 @@ def _display(value: Any, unit: str) -> str:
 def _print_table(rec: dict[str, Any]) -> None:
     print(f"file  {rec['file']}")
     s = rec["settings"]
-    filters = ", ".join(f"{f['kind']}-filter {f['nesting_index']['value']:.4g} m ({f['edge']})"
-                        for f in s.get("filters", []) or [])
+    filters = ", ".join(f"{f['kind']}-filter {_display(f['nesting_index']['value'], 'm')} "
+                        f"({f['edge']})" for f in s.get("filters", []) or [])
     kind = s.get("kind", "") + (f" ({s['profile_kind']})" if s.get("profile_kind") else "")
     print(f"  kind {kind}, level {s.get('level')}"
           + (f", {filters}" if filters else ""))
@@ -210,10 +210,11 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             if sym not in units:
                 symbols.append(sym)
                 units[sym] = q["unit"]
-    cols = (["file", "status", "error", "standard", "lc_m", "ls_m", "n_sampling", "conditions",
-             "caveats"] + [f"{s}_{units[s]}" if units[s] else s for s in symbols])
     from surfmet.atomic import atomic_open
-    from surfmet.units import valid_text
+    from surfmet.units import csv_column, valid_text
+
+    cols = (["file", "status", "error", "standard", csv_column("lc", "m"), csv_column("ls", "m"),
+             "n_sampling", "conditions", "caveats"] + [csv_column(s, units[s]) for s in symbols])
 
     with (contextlib.nullcontext(sys.stdout) if out == "-"
           else atomic_open(out, "w", newline="", encoding="utf-8")) as fh:

@@ -123,7 +123,7 @@ def _print(a: Any) -> None:
 
 def print_all_scales(r: dict[str, Any]) -> None:
     """Text of an all-scales record: bands, rms values and Persson (when present)."""
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity
 
     def band(b: dict[str, Any]) -> str:
         w = b["wavelength"]["value"]
@@ -137,7 +137,7 @@ def print_all_scales(r: dict[str, Any]) -> None:
     print(f"  measured band  {band(r['psd']['measured_band'])}")
     h = r["hurst"]
     print(f"  h_rms {format_length(r['h_rms']['value'])}, h'_rms {r['slope_rms']['value']:.5g}, "
-          f"curvature rms {r['curvature_rms']['value']:.5g} 1/m"
+          f"curvature rms {format_quantity(r['curvature_rms']['value'], '1/m', 5)}"
           + ("" if h is None else f", Hurst H {h['value']:.4f}") + " (of the band)")
     if r.get("summits"):
         sm = r["summits"]
@@ -147,7 +147,7 @@ def print_all_scales(r: dict[str, Any]) -> None:
               + (f", plasticity psi {r['plasticity_index']:.4g}" if "plasticity_index" in r
                  else ""))
     if "persson" in r:
-        print(f"  {'p (MPa)':>9} {'A/A0':>10} {'kappa':>7} {'gap (um)':>9} {'K (MPa/um)':>11}"
+        print(f"  {'p (MPa)':>9} {'A/A0':>10} {'kappa':>7} {'gap (µm)':>9} {'K (MPa/µm)':>11}"
               "   Persson, all scales")
         for row in r["persson"]:
             print(f"  {row['pressure']['value'] / 1e6:9.4g} {row['area_fraction']:10.4g} "

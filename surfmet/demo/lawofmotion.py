@@ -14,7 +14,7 @@ from surfmet.units import quantity
 
 def _parabola(coef: Any) -> dict[str, Any]:
     c2, c1, c0 = (float(c) for c in coef)
-    return {"c2": quantity(c2, "rad/s²"), "c1": quantity(c1, "rad/s"), "c0": quantity(c0, "rad")}
+    return {"c2": quantity(c2, "rad/s^2"), "c1": quantity(c1, "rad/s"), "c0": quantity(c0, "rad")}
 
 
 #: What ``--quick`` leaves out of the rotor step, and why (the story says it).
@@ -79,7 +79,7 @@ def rotor_step(quick: bool = False) -> tuple[dict[str, Any], Any]:
         tests.append({
             "name": t.name, "group": t.group, "selected_model": t.selected,
             "effect": t.effect, "misread_rows": [int(k) for k in t.outliers],
-            "eps0": quantity(t.eps0, "rad/s²"), "eps0_stderr": quantity(t.eps0_stderr, "rad/s²"),
+            "eps0": quantity(t.eps0, "rad/s^2"), "eps0_stderr": quantity(t.eps0_stderr, "rad/s^2"),
             # the residual figure's titles print the same function's value
             "rms_paper_model": quantity(rms_frames(t, PAPER_MODEL, fps), "frame"),
             "rms_selected": quantity(t.fit.rms * fps, "frame"),
@@ -91,12 +91,13 @@ def rotor_step(quick: bool = False) -> tuple[dict[str, Any], Any]:
             "paper_parabola": _parabola(g.paper_parabola),
             "paper_parabola_stderr": _parabola(g.paper_parabola_stderr),
             "paper_parabola_rms": quantity(g.paper_rms, "rad"),
-            "eps0": {m: {"mean": quantity(v[0], "rad/s²"), "uncertainty": quantity(v[1], "rad/s²")}
+            "eps0": {m: {"mean": quantity(v[0], "rad/s^2"),
+                         "uncertainty": quantity(v[1], "rad/s^2")}
                      for m, v in g.eps.items() if m in ("paper", "rest", "const", an.study_model)},
         })
     comps = [{"groups": [c.a, c.b], "model": c.model, "quantity": c.quantity,
-              "difference": quantity(c.difference, "rad/s²"),
-              "uncertainty": quantity(c.uncertainty, "rad/s²"),
+              "difference": quantity(c.difference, "rad/s^2"),
+              "uncertainty": quantity(c.uncertainty, "rad/s^2"),
               "z": quantity(c.z, ""), "p_value": quantity(c.p_value, "")}
              for c in an.comparisons if c.quantity == "eps0"]
     rec = {

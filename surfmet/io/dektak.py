@@ -311,8 +311,8 @@ def decode(buf: bytes, name: str) -> Profile:
         stated = md["scan_length"]["value"]
         tolerance = 2 * md["resolution"]["value"] if "resolution" in md else 0.01 * stated
         if stated and span < stated - max(tolerance, 1e-3 * stated):
-            raise _fail(name, f"truncated: the data span {span * 1e6:.6g} um but the header "
-                              f"states a scan length of {stated * 1e6:.6g} um")
+            raise _fail(name, f"truncated: the data span {span * 1e6:.6g} µm but the header "
+                              f"states a scan length of {stated * 1e6:.6g} µm")
     return positions_profile(z, x, mean_step, _UNIFORM_RTOL, md)
 
 

@@ -203,6 +203,19 @@ def _get(r: ByteReader, tree: dict[str, Any], path: str, kind: type | tuple) -> 
     return value
 
 
+def _setting(q: Any) -> Any:
+    """A measurement setting as JSON: a length in metres and a unit of the JSON vocabulary
+    (:data:`surfmet.units.JSON_UNITS`) as quantities, anything else (``3 mg`` of stylus
+    force, a mass the instrument states for a force) as the instrument's words."""
+    from surfmet.units import JSON_UNITS, TYPED_LENGTH_UNITS
+
+    if q.symbol in TYPED_LENGTH_UNITS:  # exact: "A" (an ampere) is no Ångström here
+        return quantity(q.value * TYPED_LENGTH_UNITS[q.symbol], "m")
+    if q.symbol in JSON_UNITS:
+        return quantity(q.value, q.symbol)
+    return f"{q.value:g} {q.symbol}"
+
+
 def _filetime(raw: bytes) -> str | None:
     # A flag byte, then 100-ns ticks since 1601-01-01 (Windows FILETIME).
     if len(raw) != 9:
@@ -242,7 +255,7 @@ def _metadata(tree: dict[str, Any]) -> dict[str, Any]:
             continue
         key = path[len(prefix):]
         if isinstance(value, Quantity):
-            settings[key] = {"value": value.value, "unit": value.symbol}
+            settings[key] = _setting(value)
         elif isinstance(value, (str, bool, int, float)):
             settings[key] = value
     if settings:

@@ -153,8 +153,8 @@ def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIK
 def scan_too_small(pair: Any, size: float) -> str:
     """The one line refusing scans smaller than the domain of side ``size`` (m)."""
     ny, nx = pair.roughness.shape
-    return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} um "
-            f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} um a side): "
+    return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} µm "
+            f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} µm a side): "
             "give a smaller --size or larger scans")
 
 

@@ -33,11 +33,13 @@ def poisson_ratio(value: str) -> float:
 
 
 def material_constant(value: str, what: str) -> float:
-    """A modulus or hardness (Pa) from an option's text, with its unit required: ``E=200``
-    meant as GPa would otherwise be read as 200 Pa, a body 1e9 times too soft. No range is
-    imposed (a gel's kPa and a "rigid" ball's 1e24 Pa are both legitimate inputs)."""
+    """A modulus or hardness (Pa) from an option's text, with its unit required, as every
+    typed pressure (:func:`surfmet.units.parse_pressure`; ``--hardness`` and ``--e-star``
+    alike): ``E=200`` meant as GPa would otherwise be read as 200 Pa, a body 1e9 times too
+    soft. No range is imposed (a gel's kPa and a "rigid" ball's 1e24 Pa are both legitimate
+    inputs)."""
     try:
-        return parse_pressure(value, unit_required=True)
+        return parse_pressure(value, example="GPa")
     except SurfmetInputError as exc:
         raise SurfmetInputError(f"{what}: {exc}") from None
 

@@ -183,7 +183,7 @@ def prepare_pair(
     if max(pitches) > MAX_PITCH_RATIO * min(pitches) * (1 + 1e-9):
         raise SurfmetInputError(
             f"the scans' pixels differ by {max(pitches) / min(pitches):.3g}x "
-            f"({min(pitches) * 1e6:.4g} um against {max(pitches) * 1e6:.4g} um), more than "
+            f"({min(pitches) * 1e6:.4g} µm against {max(pitches) * 1e6:.4g} µm), more than "
             f"{MAX_PITCH_RATIO:g}x: resampling would invent the coarse scan's detail; "
             "measure both at comparable resolution"
         )
@@ -220,7 +220,7 @@ def prepare_pair(
                      "nearest measured value")
     if len(parts) == 2:
         notes.append(f"scans resampled onto a common {nx} x {ny} grid of pitch "
-                     f"{pitch * 1e6:.4g} um")
+                     f"{pitch * 1e6:.4g} µm")
     return PairedRoughness(
         roughness=total, dx=float(pitch), dy=float(pitch), plate_rms=rms.get("plate"),
         ball_rms=rms.get("ball"), ball_radius=ball_radius, filled_fraction=filled,

@@ -78,7 +78,7 @@ def paper_verdict() -> Any:
 def offset_record(v: Any) -> dict[str, Any]:
     """The group offset as an interval quantity (the one JSON form every entry point uses)."""
     o = v.offset
-    return {"value": o.value, "unit": "rad/s²", "ci_low": o.ci_low, "ci_high": o.ci_high,
+    return {"value": o.value, "unit": "rad/s^2", "ci_low": o.ci_low, "ci_high": o.ci_high,
             "level": o.level, "minuend": o.minuend, "subtrahend": o.subtrahend}
 
 
@@ -95,7 +95,7 @@ def _calibration_record() -> dict[str, Any]:
         "difference_false_alarm_zero_offset": quantity(ot["false_alarm_zero_offset"], ""),
         "difference_rate_lambda_4_3": quantity(ot["difference_rate_lambda_4_3"], ""),
         "difference_power_by_offset": [
-            {"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s²"), "tables": r["n"],
+            {"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s^2"), "tables": r["n"],
              "rate": quantity(r["rate"], "")} for r in ot["power_by_offset"]],
     }
 
@@ -106,24 +106,24 @@ def verdict_record(v: Any) -> dict[str, Any]:
     o = v.offset
     rec: dict[str, Any] = {
         "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
-        "group_offset_stderr": quantity(o.stderr, "rad/s²"), "dof": o.dof,
-        "launch_sd": quantity(o.launch_sd, "rad/s²"),
+        "group_offset_stderr": quantity(o.stderr, "rad/s^2"), "dof": o.dof,
+        "launch_sd": quantity(o.launch_sd, "rad/s^2"),
         "shared_track": {"adequate": v.shared_track_adequate,
                          "p_value": quantity(v.shared_track_p, ""),
                          "f_statistic": quantity(v.f_statistic, ""),
                          "f_critical": quantity(v.f_critical, ""),
                          "track_degree": v.shared.layout.degree},
         "calibration": _calibration_record(),
-        "mean_acceleration": quantity(v.mean_acceleration, "rad/s²"),
+        "mean_acceleration": quantity(v.mean_acceleration, "rad/s^2"),
         "misread_rows": [{"column": c, "k": k} for c, k in v.misread_rows],
         "lambda_needed": None, "launches_needed": None, "confounds": [],
     }
     d = v.difference
     if d is not None:
         rec["track_difference"] = {
-            "trend": quantity(d.trend, "rad/s² per m"),
-            "waviness_rms": quantity(d.waviness_rms, "rad/s²"),
-            "at_release": quantity(d.start, "rad/s²"), "at_last_mark": quantity(d.end, "rad/s²"),
+            "trend": quantity(d.trend, "rad/s^2/m"),
+            "waviness_rms": quantity(d.waviness_rms, "rad/s^2"),
+            "at_release": quantity(d.start, "rad/s^2"), "at_last_mark": quantity(d.end, "rad/s^2"),
             "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")} for a, b in d.regions]}
     e = v.exponent
     if e is None:
@@ -134,11 +134,11 @@ def verdict_record(v: Any) -> dict[str, Any]:
     rec["lambda_assumptions"] = {
         "slope": quantity(e.slope, "rad"), "slope_basis": e.slope_basis,
         "slope_lower_bound": quantity(e.slope_lower_bound, "rad"),
-        "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s²")}
-    rec["launches_needed"] = quantity(e.launches, "launches per group")
+        "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s^2")}
+    rec["launches_needed"] = e.launches  # a count, plain as every count in the records
     rec["launches_needed_for"] = "lambda 4/3 told from 1 with 90 % power at 2 % (two-sided)"
     rec["confounds"] = [{"name": c.name,
-                         "equivalent_acceleration": quantity(c.equivalent_acceleration, "rad/s²"),
+                         "equivalent_acceleration": quantity(c.equivalent_acceleration, "rad/s^2"),
                          "can_explain": c.can_explain, "formula": c.formula,
                          "assumption": c.assumption, "source": c.source}
                         for c in v.confounds]

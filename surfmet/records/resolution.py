@@ -14,7 +14,7 @@ def study_record(study: Any) -> dict[str, Any]:
     from surfmet.mechanics.resolution_study import QUANTITIES
 
     def q(name: str, v: float) -> Any:
-        unit = QUANTITIES.get(name, (name, "1"))[1]
+        unit = QUANTITIES.get(name, (name, ""))[1]
         return quantity(v, unit) if unit != "1" else v
 
     levels = []
