@@ -91,3 +91,18 @@ def test_a_failing_scan_gets_its_error_in_the_page(tmp_path, capsys, monkeypatch
     body = page.read_text(encoding="utf-8")
     assert "could not be evaluated: internal error: IndexError" in body
     assert "dektak-1.csv" in body and 'data-symbol="Ra"' in body
+
+
+def test_report_json_carries_the_rotor_verdict_it_prints(tmp_path, capsys, realdata):
+    """The rotor section's numbers are in --json too, as the verdict record ``surfmet
+    rotor paper2022 --json`` emits (main: the page printed them, the JSON had no rotor)."""
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from surfmet.units import jsonable
+
+    page = tmp_path / "rotor.html"
+    rep = _json(capsys, ["report", str(realdata("sdf-1.sdf")), "-o", str(page), "--no-3d",
+                         "--rotor", "paper2022", "--json"])
+    expected = json.loads(json.dumps(jsonable(verdict_record(paper_verdict()))))
+    assert rep["rotor"]["verdict"] == expected
+    offset = expected["group_offset"]["value"]
+    assert f"{offset:+.4f} rad/s²" in page.read_text(encoding="utf-8")

@@ -103,7 +103,13 @@ def run(args: argparse.Namespace) -> int:
         if s.hertz_error:
             log(f"surfmet: error: {s.file}: Hertz check: {s.hertz_error}")
     if args.json:
-        emit_json({"output": args.output, "scans": [s.summary() for s in sections]})
+        rec: dict[str, Any] = {"output": args.output,
+                               "scans": [s.summary() for s in sections]}
+        if rotor is not None:  # the verdict record surfmet rotor --json emits
+            from surfmet.mechanics.rotor_verdict import verdict_record
+
+            rec["rotor"] = {"verdict": verdict_record(rotor)}
+        emit_json(rec)
     else:
         log(f"wrote {args.output} ({len(sections) - len(failed)} of {len(sections)} scans)")
     return 1 if failed or any(s.hertz_error for s in sections) else 0
