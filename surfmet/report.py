@@ -353,7 +353,9 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
     from surfmet import __version__
 
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    opts = {k: v for k, v in (options or {}).items() if v not in (None, False)}
+    # the options given, not the defaults surfmet roughness fills in
+    opts = {k: v for k, v in (options or {}).items()
+            if v not in (None, False) and (k, v) != ("edge", "discard")}
     parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
              '<meta name="viewport" content="width=device-width, initial-scale=1">',
              f"<title>{esc(title)}</title><style>{_CSS}</style></head><body>",
