@@ -8,18 +8,25 @@ HTML-escaped, so a scan whose metadata says ``<script>`` shows that text and run
 For each scan the report holds:
 
 * the instrument metadata and the grid (as ``surfmet info`` reports them);
-* the parameter table from :func:`surfmet.roughness.roughness`, each value with its unit
+* the parameter table from :func:`surfmet.roughness.roughness`, called on the file with the
+  options ``surfmet roughness`` takes (so a profile keeps the conditions its file states),
+  each value with its unit
   (lengths in µm, Spd in 1/mm², Spc in 1/µm; the exact SI value is kept in the cell's
   ``data-si`` attribute), and the processing settings used (form removal, S/L filters
   with nesting indices and edge treatment, spikes, window, the full settings as JSON);
 * pictures: the 3D view (:func:`surfmet.render.render_3d`), the height map, the
-  Abbott–Firestone curve with the Sk construction, the PSD with its Hurst fit; for a
-  profile, the primary / waviness / roughness figure instead of the two maps;
+  Abbott–Firestone curve with the Sk construction, the PSD with its Hurst fit exactly as
+  ``surfmet spectrum FILE`` gives it (:func:`surfmet.mechanics.spectrum.scan_spectrum`); for
+  a profile, the primary / waviness / roughness figure instead of the two maps;
 * when a ball radius, a load and the materials are given, the Hertz-check section
   (:mod:`surfmet.mechanics.hertz_check`): verdict, reasons, Hertz against boundary elements and the
   radial pressure profile.
 
-A scan that cannot be read or evaluated gets a section with its error; the others go on.
+A scan that cannot be read or evaluated (an internal error included) gets a section with
+its error; the others go on. :meth:`ScanSection.summary` (``report --json``) carries every
+number the page prints, in the records the commands emit: ``info`` (``surfmet info
+--json``), ``roughness`` (one record of ``surfmet roughness --json``), ``spectrum``
+(``surfmet spectrum --json``) and ``hertz_check`` (``surfmet hertz-check --json``).
 """
 
 from __future__ import annotations
@@ -31,15 +38,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet.report_figures import figures_areal, figures_profile, spectrum_section
 from surfmet.report_hertz import HertzOptions, hertz_figure, hertz_html, run_hertz_check
 from surfmet.report_html import (
-    array_png,
     esc,
-    figure_png,
     figures_html,
     kv_table,
     quantity_text,
@@ -86,93 +89,37 @@ class ScanSection:
     hertz: dict[str, Any] | None = None
     hertz_figure: bytes | None = None
     hertz_error: str | None = None
+    #: the ``surfmet roughness --json`` record of the scan
+    roughness: dict[str, Any] | None = None
+    #: the ``surfmet spectrum --json`` record (areal scans), or ``{"error": message}``
+    spectrum: dict[str, Any] | None = None
+    #: the roughness profile's PSD fit the profile page draws (profiles)
+    profile_psd: dict[str, Any] | None = None
 
     def summary(self) -> dict[str, Any]:
+        """The ``report --json`` entry of the scan: every number its section prints, in
+        the records the commands emit (see the module docstring)."""
         out: dict[str, Any] = {"file": self.file, "status": self.status}
+        if self.info:
+            out["info"] = self.info
         if self.error:
             out["error"] = self.error
-        else:
-            out["kind"] = self.kind
-            out["figures"] = [name for name, _ in self.figures]
-            out["hertz_check"] = self.hertz is not None
-            if self.info and self.info.get("units"):  # which units the file states
-                out["units"] = self.info["units"]
-            if self.hertz_error:
-                out["hertz_error"] = self.hertz_error
+            return out
+        out["kind"] = self.kind
+        out["figures"] = [name for name, _ in self.figures]
+        out["roughness"] = self.roughness
+        if self.spectrum is not None:
+            out["spectrum"] = self.spectrum
+        if self.profile_psd is not None:
+            out["profile_psd"] = self.profile_psd
+        out["hertz_check"] = self.hertz
+        if self.hertz_error:
+            out["hertz_error"] = self.hertz_error
         return out
 
 
 # ---------------------------------------------------------------------------------------
 # computing a section
-
-
-def _view_installed() -> bool:
-    """The 3D view's extra is installed (without it the report leaves the 3D picture out)."""
-    import importlib.util
-
-    try:
-        return importlib.util.find_spec("pyvista") is not None
-    except (ImportError, ValueError, AttributeError):  # a broken or blocked install
-        return False
-
-
-def _figures_areal(surface: Topography, params: dict[str, Any], include_3d: bool
-                   ) -> list[tuple[str, bytes]]:
-    from surfmet.plots.areal import abbott_firestone, height_map
-
-    figs: list[tuple[str, bytes]] = []
-    if include_3d and _view_installed():
-        from surfmet.render import render_3d
-
-        img = render_3d(surface, window_size=(1000, 750))
-        figs.append(("3D view of the evaluated surface (heights exaggerated, see the "
-                     "picture)", array_png(img)))
-    figs.append(("height map of the evaluated surface", figure_png(height_map(surface))))
-    figs.append(("Abbott–Firestone curve with the ISO 13565-2 / 25178-2 Sk construction",
-                 figure_png(abbott_firestone(surface, parameters=params))))
-    if surface.nx >= 16 and surface.ny >= 16:
-        figs.append(_spectrum_figure(surface))
-    return figs
-
-
-def _spectrum_figure(surface: Topography) -> tuple[str, bytes]:
-    """The PSD as ``surfmet spectrum`` describes it: the power law fitted between the
-    spectrum's cut-offs and below its noise floor, never across a plateau."""
-    from surfmet.mechanics.spectrum import spectrum
-    from surfmet.plots.areal import psd_figure
-    from surfmet.plots.spectrum import spectrum_figure
-    from surfmet.psd import psd
-
-    try:
-        s = spectrum(surface)
-    except SurfmetInputError:
-        return ("radially averaged PSD (Hann window; no power-law band to fit)",
-                figure_png(psd_figure(psd(surface))))
-    caveats = [c for c in s.settings.get("caveats", []) if "Hurst" in c]
-    return ("radially averaged PSD with the power law fitted over its band, as "
-            "surfmet spectrum gives it" + (f" (caveat: {caveats[0]})" if caveats else ""),
-            figure_png(spectrum_figure(s)))
-
-
-def _figures_profile(analysis: Any, name: str) -> list[tuple[str, bytes]]:
-    from surfmet.plots.areal import abbott_firestone, psd_figure
-    from surfmet.plots.profile import profile_figure
-    from surfmet.psd import fit_hurst, profile_psd
-
-    figs = [("primary profile and mean line, waviness, roughness",
-             figure_png(profile_figure(analysis, title=name)))]
-    rough = np.asarray(analysis.roughness)[np.asarray(analysis.evaluated)]
-    figs.append(("Abbott–Firestone curve of the roughness profile (evaluation length)",
-                 figure_png(abbott_firestone(rough))))
-    if rough.size >= 16:
-        spec = profile_psd(rough, float(analysis.settings["dx"]))
-        try:
-            fit = fit_hurst(spec)
-        except SurfmetInputError:
-            fit = None
-        figs.append(("PSD of the roughness profile (Hann window)",
-                     figure_png(psd_figure(spec, fits=[fit] if fit else None))))
-    return figs
 
 
 def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
@@ -185,33 +132,22 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
     path : str or Path
     options : dict, optional
         Keyword arguments of :func:`surfmet.roughness.roughness` (level, ls, lc, window,
-        profile, spikes, edge).
+        profile, spikes, edge, standard, n_sampling, rk_line, valley_suppression), as
+        ``surfmet roughness`` passes them.
     include_3d : bool
         Render the 3D view (pyvista) for areal scans.
     hertz : HertzOptions, optional
         Add the Hertz-check section.
     """
     import surfmet
-    from surfmet.errors import user_error_types
-    from surfmet.records import scan_record
-    from surfmet.roughness import roughness
 
     options = dict(options or {})
     sec = ScanSection(file=str(path))
     try:
         scan = surfmet.read(path, **(read_options or {}))  # --height-unit, --pixel...
-        sec.info = scan_record(scan)
-        res = roughness(scan, **options)
-        sec.kind = res.kind  # "profile" also for a row of an areal scan
-        sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
-        sec.settings = res.settings
-        name = valid_text(Path(str(path)).name)
-        if res.kind == "areal":
-            sec.figures = _figures_areal(res.surface, res.parameters, include_3d)
-        else:
-            sec.figures = _figures_profile(res.analysis, name)
-    except user_error_types() as exc:
-        sec.status, sec.error = "error", str(exc)
+        _evaluate(sec, scan, options, include_3d)
+    except Exception as exc:  # a failing scan (a bug too) is reported; the others go on
+        sec.status, sec.error = "error", _error_text(exc)
         return sec
     if hertz is not None:
         # its own failure (no convergence, contact at the domain edge...) must not hide
@@ -219,9 +155,43 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         try:
             sec.hertz = run_hertz_check(scan, hertz)
             sec.hertz_figure = hertz_figure(sec.hertz)
-        except user_error_types() as exc:
-            sec.hertz_error = str(exc)
+        except Exception as exc:  # as above
+            sec.hertz_error = _error_text(exc)
     return sec
+
+
+def _error_text(exc: BaseException) -> str:
+    """A scan's error as the page and the JSON state it: the message of a user error, and
+    for anything else (a bug) that it is an internal error, as ``surfmet roughness`` rows
+    say it."""
+    from surfmet.errors import user_error_types
+
+    if isinstance(exc, user_error_types()):
+        return str(exc)
+    return f"internal error: {type(exc).__name__}: {exc}"
+
+
+def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: bool) -> None:
+    """Fill ``sec`` from the functions the commands call: ``scan_record`` (info),
+    :func:`surfmet.roughness.roughness` with the roughness command's options, and the
+    spectrum command's :func:`surfmet.mechanics.spectrum.scan_spectrum`."""
+    from surfmet.records import scan_record
+    from surfmet.roughness import roughness
+
+    sec.info = _jsonable(scan_record(scan))
+    res = roughness(scan, **options)
+    sec.roughness = {"file": sec.file, "status": "ok", **res.to_json()}
+    sec.kind = res.kind  # "profile" also for a row of an areal scan
+    sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
+    sec.settings = res.settings
+    name = valid_text(Path(sec.file).name)
+    if res.kind == "areal":
+        sec.figures = figures_areal(res.surface, res.parameters, include_3d)
+        sec.spectrum, fig = spectrum_section(scan, sec.file)
+        if fig is not None:
+            sec.figures.append(fig)
+    else:
+        sec.figures, sec.profile_psd = figures_profile(res.analysis, name)
 
 
 # ---------------------------------------------------------------------------------------
@@ -351,6 +321,9 @@ def _section_html(k: int, sec: ScanSection, hz: HertzOptions | None) -> str:
     out.append('<div class="cols"><div>' + _params_html(sec.parameters) + "</div><div>"
                + _settings_html(sec.settings) + "</div></div>")
     out.append(figures_html(sec.figures))
+    if sec.spectrum is not None and "error" in sec.spectrum:
+        out.append(f'<p class="small">no PSD: surfmet spectrum refuses the scan: '
+                   f"{esc(sec.spectrum['error'])}</p>")
     if sec.hertz is not None:
         out.append(hertz_html(sec.hertz, sec.hertz_figure, hz))
     elif sec.hertz_error:
@@ -382,7 +355,9 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
     from surfmet import __version__
 
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    opts = {k: v for k, v in (options or {}).items() if v not in (None, False)}
+    # the options given, not the defaults surfmet roughness fills in
+    opts = {k: v for k, v in (options or {}).items()
+            if v not in (None, False) and (k, v) != ("edge", "discard")}
     parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
              '<meta name="viewport" content="width=device-width, initial-scale=1">',
              f"<title>{esc(title)}</title><style>{_CSS}</style></head><body>",

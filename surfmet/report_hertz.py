@@ -74,13 +74,20 @@ def hertz_figure(check: dict[str, Any]) -> bytes | None:
     return figure_png(radial_pressure(r, pb, ph, float(a0)))
 
 
-# Hertz's quantity and the boundary elements' answer to the same question, side by side:
-# (row name, Hertz key, BEM keys in order of preference)
+# Hertz's quantity and the boundary elements' answer to the same question, side by side,
+# as ``surfmet hertz-check`` prints them: (row name, Hertz key or a fixed Hertz value, BEM
+# key). Hertz's a is the radius of the loaded disc, so beside it goes the BEM's a* (the
+# second-moment radius of the pressure, the same question); the radius of the real contact
+# area (asperity spots only) answers another one and gets its own row.
 PAIRS = (
-    ("contact radius", "a", ("contact_radius_second_moment", "a_star", "contact_radius")),
-    ("approach", "delta", ("approach",)),
-    ("peak pressure", "p0", ("pmax",)),
+    ("peak pressure (p0 / pmax)", "p0", "pmax"),
+    ("contact radius (a / a*, second moment of the pressure)", "a", "effective_radius"),
+    ("approach (δ / approach)", "delta", "approach"),
+    ("area / πa0²", {"value": 1.0, "unit": ""}, "area_fraction"),
+    ("yielded area / πa0²", {"value": 0.0, "unit": ""}, "plastic_fraction"),
 )
+#: BEM quantities without a Hertz counterpart: (row name, BEM key)
+BEM_ONLY = (("radius of the real contact area √(A/π)", "contact_radius"),)
 
 
 def _is_quantity(q: Any) -> bool:
@@ -89,8 +96,8 @@ def _is_quantity(q: Any) -> bool:
 
 def _comparison_rows(hertz: dict[str, Any], bem: dict[str, Any]) -> list[str]:
     """Table rows: each Hertz quantity beside the BEM's answer to the same question and
-    their relative difference, then what only one side has."""
-    rows, used = [], set()
+    their relative difference, then the BEM's quantities that Hertz has no counterpart of."""
+    rows = []
 
     def row(name: str, h: Any, b: Any) -> str:
         diff = ""
@@ -99,17 +106,14 @@ def _comparison_rows(hertz: dict[str, Any], bem: dict[str, Any]) -> list[str]:
         return (f"<tr><td>{esc(name)}</td><td>{esc(quantity_text(h))}</td>"
                 f"<td>{esc(quantity_text(b))}</td><td>{esc(diff)}</td></tr>")
 
-    for name, hkey, bkeys in PAIRS:
-        bkey = next((k for k in (*bkeys, hkey) if _is_quantity(bem.get(k))), None)
-        if hkey in hertz or bkey is not None:
-            label = name + (f" ({hkey} / {bkey})" if bkey not in (None, hkey) else f" ({hkey})")
-            rows.append(row(label, hertz.get(hkey, ""), bem.get(bkey, "") if bkey else ""))
-            used.update({hkey, bkey})
-    for key in [k for k in hertz if k not in used] + [k for k in bem if k not in used]:
-        h, b = hertz.get(key, ""), bem.get(key, "")
-        if (key in hertz and not _is_quantity(h)) or (key in bem and not _is_quantity(b)):
-            continue
-        rows.append(row(key, h, b))
+    for name, hkey, bkey in PAIRS:
+        h = hkey if isinstance(hkey, dict) else hertz.get(hkey, "")
+        b = bem.get(bkey, "")
+        if _is_quantity(b) or (not isinstance(hkey, dict) and _is_quantity(h)):
+            rows.append(row(name, h, b))
+    for name, bkey in BEM_ONLY:
+        if _is_quantity(bem.get(bkey)):
+            rows.append(row(name, "—", bem[bkey]))
     return rows
 
 

@@ -111,10 +111,9 @@ def test_report_psd_is_the_spectrum_commands(tmp_path):
     quickstart's plate its own fit crossed the plateau, H = -0.479) and carries its caveat."""
     from pathlib import Path
 
-    from surfmet.mechanics.spectrum import prepared_scan
-    from surfmet.report import _spectrum_figure
+    from surfmet.report_figures import spectrum_section
 
     plate = surfmet.read(Path(surfmet.__file__).parent / "data" / "paper_plate.x3p")
-    caption, png = _spectrum_figure(prepared_scan(plate)[0])
+    _rec, (caption, png) = spectrum_section(plate, "paper_plate.x3p")
     assert png.startswith(b"\x89PNG")
     assert "as surfmet spectrum gives it" in caption and "Hurst" in caption

@@ -15,6 +15,7 @@ from surfmet.cli._common import (
     positive_length,
     show_progress,
 )
+from surfmet.cli._roughness_options import add_roughness_options, roughness_options
 from surfmet.cli._scan_options import add_scan_options, read_bodies, read_options
 
 EPILOG = """examples:
@@ -29,7 +30,13 @@ The page holds, per scan: the instrument metadata, the parameter table with unit
 the filters used, the 3D view, height map, Abbott-Firestone curve and PSD (profile plots
 for a profile), and with --radius, --load and --materials the Hertz check. Pictures are
 embedded (data URIs): the single file opens offline. A scan that fails gets its error in
-the page and the exit status is 1.
+the page (the others are reported all the same) and the exit status is 1.
+
+Every number is the one the commands give for the same file and options: the parameters
+are surfmet roughness's (the evaluation options below are its options, with its defaults:
+a profile keeps the λc, λs, standard and sampling lengths its file states), the PSD is
+surfmet spectrum's and the Hertz check surfmet hertz-check's. --json prints, per scan, the
+records those commands emit (info, roughness, spectrum, hertz_check).
 """
 
 
@@ -44,14 +51,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
     p.add_argument("-o", "--output", required=True, metavar="HTML", help="report to write")
     p.add_argument("--title", default="surfmet report", help="page title")
-    p.add_argument("--level", default="plane",
-                   help="form removal: none, mean, plane, poly:N, sphere, cylinder")
-    p.add_argument("--ls", type=positive_length, default=None, help="S-filter λs, e.g. 2.5um")
-    p.add_argument("--lc", type=positive_length, default=None, help="L-filter λc, e.g. 0.8mm")
-    p.add_argument("--window", default=None, metavar="X0:X1", help="evaluate x in X0..X1 only")
-    p.add_argument("--profile", default=None, metavar="row:K|col:K",
-                   help="evaluate one row or column of areal scans (R-parameters)")
-    p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
+    add_roughness_options(p)
     p.add_argument("--no-3d", dest="no_3d", action="store_true",
                    help="leave out the 3D views (faster)")
     p.add_argument("--rotor", metavar="TABLE", help="put the rotor verdict on a frame table "
@@ -77,8 +77,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.report import write_report
     from surfmet.report_hertz import HertzOptions, hertz_check_available
 
-    options = {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
-               "profile": args.profile, "spikes": args.spikes}
+    options = roughness_options(args)
     given = [n for n in ("radius", "load", "materials") if getattr(args, n) is not None]
     hertz = None
     if given or args.ball:
@@ -108,7 +107,13 @@ def run(args: argparse.Namespace) -> int:
         if s.hertz_error:
             log(f"surfmet: error: {s.file}: Hertz check: {s.hertz_error}")
     if args.json:
-        emit_json({"output": args.output, "scans": [s.summary() for s in sections]})
+        rec: dict[str, Any] = {"output": args.output,
+                               "scans": [s.summary() for s in sections]}
+        if rotor is not None:  # the verdict record surfmet rotor --json emits
+            from surfmet.mechanics.rotor_verdict import verdict_record
+
+            rec["rotor"] = {"verdict": verdict_record(rotor)}
+        emit_json(rec)
     else:
         log(f"wrote {args.output} ({len(sections) - len(failed)} of {len(sections)} scans)")
     return 1 if failed or any(s.hertz_error for s in sections) else 0

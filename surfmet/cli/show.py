@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.cli._common import add_json_flag, check_output, emit_json, log
+from surfmet.cli._roughness_options import add_roughness_options, roughness_options
 from surfmet.cli._scan_options import add_scan_options, print_caveats, read_scan, scan_caveats
 
 EPILOG = """examples:
@@ -21,7 +22,14 @@ EPILOG = """examples:
 The 3D view is rendered off-screen with pyvista (no display needed) and saved as PNG;
 heights are exaggerated by a round factor written in the picture. --2d draws a matplotlib
 height map (colour bar in µm, scale bar), saved in any format matplotlib knows (png, pdf,
-svg). The scan is levelled first (--level, default plane; none keeps it as measured).
+svg).
+
+The picture is of the surface surfmet roughness evaluates, with the same options and
+defaults (below): the same form removal (default plane, a line on profiles, none for an
+instrument's R-profile), the same S/L filters and, for a profile, the λc, λs, standard and
+sampling lengths its file states; nothing is levelled or filtered a second time. --json
+states what was drawn and its numbers: the surfmet roughness record of the drawn surface
+(the profile view's legend shows its Ra and Rq).
 """
 
 
@@ -51,9 +59,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", required=True, metavar="IMAGE", help="image to write")
     p.add_argument("--2d", dest="two_d", action="store_true",
                    help="matplotlib height map instead of the 3D view")
-    p.add_argument("--level", default="plane",
-                   help="form removal before drawing: none, mean, plane, poly:N, sphere, "
-                   "cylinder (default plane)")
     p.add_argument("--format", help="force a reader (see 'surfmet formats')")
     p.add_argument("--exaggeration", type=float, default=None, metavar="X",
                    help="vertical exaggeration of the 3D view (default: automatic)")
@@ -62,6 +67,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="3D image size in pixels (default 1200x900)")
     p.add_argument("--max-points", type=int, default=300_000, metavar="N",
                    help="decimate larger scans to about N points for the 3D view")
+    add_roughness_options(p, what="draw")
     add_json_flag(p)
     p.set_defaults(func=run)
     return p
@@ -69,49 +75,40 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.errors import SurfmetInputError
-    from surfmet.model import Profile
+    from surfmet.roughness import roughness
 
     out = Path(args.output)
     check_output(out, "-o")
     _check_picture(args)
     scan = read_scan(args.file, args)
-    rec: dict[str, Any] = {"file": args.file, "output": str(out), "level": args.level,
+    profile_view = scan.kind == "profile" or args.profile is not None
+    if not (profile_view or args.two_d) and out.suffix.lower() != ".png":
+        raise SurfmetInputError(f"the 3D view is written as PNG; name the output "
+                                f"*.png (got {out.name}), or use --2d for pdf/svg")
+    # the surface surfmet roughness evaluates, with its options: one file, one answer
+    res = roughness(scan, **roughness_options(args))
+    rec: dict[str, Any] = {"file": args.file, "output": str(out),
                            "caveats": scan_caveats(scan)}
-    if isinstance(scan, Profile):
-        import profiles
-        from surfmet.plots._style import close
-        from surfmet.plots.profile import profile_figure
-        from surfmet.roughness import _profile_level
-
+    if res.kind == "profile":
         if not args.two_d:
             log("surfmet: a profile has no 3D view; drawing its profiles")
-        ap = profiles.analyze_profile(scan.z, scan.dx, x=scan.x,
-                                      level=_profile_level(args.level), lc="auto")
-        fig = profile_figure(ap, title=Path(args.file).name)
+        rec.update(view="profile", shown=["Ra", "Rq"])
+        _draw_profile(res, out, Path(args.file).name)
+    elif args.two_d:
+        from surfmet.plots._style import close
+        from surfmet.plots.areal import height_map
+
+        fig = height_map(res.surface, cmap=args.cmap)
         _save(fig, out)
         close(fig)
-        rec.update(view="profile", lc={"value": ap.settings.get("lc"), "unit": "m"})
+        rec.update(view="2d", shown=[])
     else:
-        from surfmet.areal.form import remove_form
+        from surfmet.render import render_3d
 
-        levelled, _ = remove_form(scan, args.level)
-        if args.two_d:
-            from surfmet.plots._style import close
-            from surfmet.plots.areal import height_map
-
-            fig = height_map(levelled, cmap=args.cmap)
-            _save(fig, out)
-            close(fig)
-            rec["view"] = "2d"
-        else:
-            from surfmet.render import render_3d
-
-            if out.suffix.lower() != ".png":
-                raise SurfmetInputError(f"the 3D view is written as PNG; name the output "
-                                        f"*.png (got {out.name}), or use --2d for pdf/svg")
-            img = render_3d(levelled, out, exaggeration=args.exaggeration, cmap=args.cmap,
-                            window_size=args.size, max_points=args.max_points)
-            rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])])
+        img = render_3d(res.surface, out, exaggeration=args.exaggeration, cmap=args.cmap,
+                        window_size=args.size, max_points=args.max_points)
+        rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])], shown=[])
+    rec["roughness"] = {"file": args.file, "status": "ok", **res.to_json()}
     if args.json:
         emit_json(rec)
     else:
@@ -140,6 +137,16 @@ def _check_picture(args: argparse.Namespace) -> None:
         raise SurfmetInputError(
             f"-o {args.output}: {what}; name the picture with one of .{', .'.join(formats)} "
             "(the 3D view: .png)")
+
+
+def _draw_profile(res: Any, out: Path, name: str) -> None:
+    """The primary / waviness / roughness figure of the analysis behind ``res``."""
+    from surfmet.plots._style import close
+    from surfmet.plots.profile import profile_figure
+
+    fig = profile_figure(res.analysis, title=name)
+    _save(fig, out)
+    close(fig)
 
 
 def _save(fig: Any, out: Path) -> None:

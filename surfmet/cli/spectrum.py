@@ -68,23 +68,18 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.cli.scales import read_measurements
-    from surfmet.mechanics.spectrum import prepared_scan, spectrum
-    from surfmet.records import spectrum_record
+    from surfmet.mechanics.spectrum import scan_spectrum
+    from surfmet.records.spectrum import spectrum_command_record
 
     check_output(args.plot, "--plot")
     scans = read_measurements(args.files, **read_options(args))
     if len(scans) > 1:
         return _run_several(args, scans)
-    scan, per, level, preparation = prepared_scan(scans[0], periodic=periodic_flag(args.periodic),
-                                                  spikes=args.spikes)
     # the facade resolves the materials (surfmet.mechanics.material_spec.scan_pair)
-    s = spectrum(scan, periodic=per, materials=args.materials or None, hardness=args.hardness)
-    rec = {"file": args.files[0], "levelling": level, "scan_preparation": preparation,
-           **spectrum_record(s)}
-    if s.materials is not None:
-        rec["materials"] = s.materials.names
-        rec["e_star"] = {"value": s.materials.e_star, "unit": "Pa"}
-        rec["hardness"] = {"value": s.materials.hardness, "unit": "Pa"}
+    s, level, preparation = scan_spectrum(scans[0], periodic=periodic_flag(args.periodic),
+                                          spikes=args.spikes, materials=args.materials or None,
+                                          hardness=args.hardness)
+    rec = spectrum_command_record(args.files[0], s, level, preparation)
     if args.plot:
         from surfmet.plots.spectrum import spectrum_figure
 

@@ -357,6 +357,25 @@ def prepared_scan(topo: Any, *, periodic: bool | None = None, spikes: Any = None
     return out, per, level, record
 
 
+def scan_spectrum(topo: Any, *, periodic: bool | None = None, spikes: Any = None,
+                  materials: Any = None, hardness: float | None = None
+                  ) -> tuple[Spectrum, str, dict[str, Any]]:
+    """The spectrum of one scan exactly as ``surfmet spectrum FILE`` gives it: the shared
+    preparation (:func:`prepared_scan`) on the scan as read, then :func:`spectrum`.
+
+    Every entry point that shows a scan's spectrum (the command, the report) calls this,
+    so that one file has one Hurst exponent, one window and one levelling.
+
+    Returns
+    -------
+    (Spectrum, str, dict)
+        The spectrum, the levelling used and the scan-preparation record.
+    """
+    scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
+    s = spectrum(scan, periodic=per, materials=materials, hardness=hardness)
+    return s, level, preparation
+
+
 def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography, bool, str]:
     """Level a scan for spectral or contact analysis: (scan, periodic, levelling).
 

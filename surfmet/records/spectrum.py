@@ -54,3 +54,17 @@ def spectrum_record(s: Any) -> dict[str, Any]:
                 "C": {"value": s.psd.C.tolist(), "unit": "m^4"}},
     }
     return rec
+
+
+def spectrum_command_record(file: str, s: Any, levelling: str,
+                            preparation: dict[str, Any]) -> dict[str, Any]:
+    """The record ``surfmet spectrum FILE --json`` emits for one scan (and the report
+    carries): the file, its levelling and preparation, :func:`spectrum_record`, and the
+    materials when the plasticity index was asked for."""
+    rec = {"file": file, "levelling": levelling, "scan_preparation": preparation,
+           **spectrum_record(s)}
+    if s.materials is not None:
+        rec["materials"] = s.materials.names
+        rec["e_star"] = {"value": s.materials.e_star, "unit": "Pa"}
+        rec["hardness"] = {"value": s.materials.hardness, "unit": "Pa"}
+    return rec
