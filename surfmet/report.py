@@ -145,7 +145,7 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
     sec = ScanSection(file=str(path))
     try:
         scan = surfmet.read(path, **(read_options or {}))  # --height-unit, --pixel...
-        _evaluate(sec, scan, options, include_3d)
+        _evaluate(sec, scan, options, include_3d, read_options)
     except Exception as exc:  # a failing scan (a bug too) is reported; the others go on
         sec.status, sec.error = "error", _error_text(exc)
         return sec
@@ -171,14 +171,15 @@ def _error_text(exc: BaseException) -> str:
     return f"internal error: {type(exc).__name__}: {exc}"
 
 
-def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: bool) -> None:
+def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: bool,
+              read_options: dict[str, Any] | None = None) -> None:
     """Fill ``sec`` from the functions the commands call: ``scan_record`` (info),
     :func:`surfmet.roughness.roughness` with the roughness command's options, and the
     spectrum command's :func:`surfmet.mechanics.spectrum.scan_spectrum`."""
-    from surfmet.records import scan_record
+    from surfmet.file_info import info_record
     from surfmet.roughness import roughness
 
-    sec.info = _jsonable(scan_record(scan))
+    sec.info = _jsonable(info_record(sec.file, scan, read_options=read_options))
     res = roughness(scan, **options)
     sec.roughness = {"file": sec.file, "status": "ok", **res.to_json()}
     sec.kind = res.kind  # "profile" also for a row of an areal scan

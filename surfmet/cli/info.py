@@ -8,7 +8,7 @@ from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json
 from surfmet.cli._scan_options import add_scan_options, read_options
-from surfmet.errors import SurfmetError
+from surfmet.file_info import channel_summary
 from surfmet.model import SOURCE_WORDS, STATED, unit_text
 from surfmet.units import format_length
 
@@ -33,33 +33,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     return p
 
 
-def _choices(scan: Any) -> list[tuple[Any, str]]:
-    """(what ``channel=`` takes, a label) for each channel the file holds, or []."""
-    names = scan.metadata.get("channels")
-    if not isinstance(names, (list, tuple)) or len(names) < 2:
-        return []
-    out = []
-    for i, entry in enumerate(names):
-        if isinstance(entry, dict):  # Gwyddion: numbered channels with a title
-            out.append((entry.get("number", i), str(entry.get("title") or "untitled")))
-        else:
-            out.append((i, str(entry)))
-    return out
-
-
 def _pixel(scan: Any) -> str:
     if scan.kind == "areal":
         return f"{format_length(scan.dx)} x {format_length(scan.dy)}"
     return format_length(scan.dx)
-
-
-def _summary(scan: Any) -> dict[str, Any]:
-    """One channel's or measurement's record: kind, grid, pixel and units."""
-    from surfmet.units import quantity
-
-    return {"kind": scan.kind, "nx": scan.nx, "ny": scan.ny,
-            "dx": quantity(scan.dx, "m"), "dy": quantity(getattr(scan, "dy", None), "m"),
-            "units": scan.calibration.record()}
 
 
 def _line(index: Any, label: str, rec: dict[str, Any] | None, error: str | None,
@@ -75,35 +52,15 @@ def _line(index: Any, label: str, rec: dict[str, Any] | None, error: str | None,
             f"in {unit_text(cal.height_unit)}{note}")
 
 
-def _measurements(path: str, scan: Any, args: argparse.Namespace
-                  ) -> list[tuple[Any, str, Any, str | None]]:
-    """Every channel (or container measurement) of the file, each read on its own."""
-    import surfmet
-
-    opts = {k: v for k, v in read_options(args).items() if k != "channel"}
-    out = []
-    for choice, label in _choices(scan):
-        try:
-            out.append((choice, label, surfmet.read(path, format=args.format, channel=choice,
-                                                    **opts), None))
-        except SurfmetError as exc:
-            out.append((choice, label, None, str(exc)))
-    return out
-
-
 def run(args: argparse.Namespace) -> int:
     import surfmet
 
     scan = surfmet.read(args.file, format=args.format, **read_options(args))
-    from surfmet.records import scan_record
+    from surfmet.file_info import channel_listing, info_record
 
-    rec = scan_record(scan)
     cal = scan.calibration
-    listing = _measurements(args.file, scan, args)
-    if listing:
-        rec["channels_read"] = [
-            {"channel": c, "name": label, **({"error": err} if err else _summary(s))}
-            for c, label, s, err in listing]
+    listing = channel_listing(args.file, scan, args.format, read_options(args))
+    rec = info_record(args.file, scan, listing=listing)
     if args.json:
         emit_json(rec)
         return 0
@@ -127,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"{word:13s} {len(listing)} (this one: {scan.metadata.get('channel')}; "
               "--channel picks another)")
         for c, label, s, err in listing:
-            print(_line(c, label, None if s is None else _summary(s), err, s))
+            print(_line(c, label, None if s is None else channel_summary(s), err, s))
     for key, value in rec["metadata"].items():
         text = str(value)
         if len(text) > 100:
