@@ -102,10 +102,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     from surfmet.batch import progress_bar
     from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
-    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record
+    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record, refuse_ball
+
+    if args.line:
+        refuse_ball(args.ball)  # before the scans are read
+    read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
 
     check_output(args.plot, "--plot")
     with progress_bar(2 * args.steps, "adhesion, steps", show_progress(args)) as bar:

@@ -26,6 +26,14 @@ from surfmet.mechanics.adhesion import (
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
+
+def refuse_ball(ball: Any) -> None:
+    """A line contact takes no ball scan: refused (before any file is read)."""
+    if ball is not None:
+        raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
+                                "would be removed from a cylinder): give the plate's scan only")
+
+
 #: Cells across the period of a line contact, unless told.
 LINE_CELLS = 2048
 
@@ -53,9 +61,7 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
     mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
     cells = grid
-    if ball is not None:
-        raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
-                                "would be removed from a cylinder): give the plate's scan only")
+    refuse_ball(ball)
     cells = LINE_CELLS if cells is None else cells
     if int(cells) != cells or cells < 64:
         raise SurfmetInputError(f"the cells of a line contact must be an integer of at least "
