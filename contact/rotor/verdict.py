@@ -31,6 +31,7 @@ import numpy as np
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
+from contact.rotor.arm import ArmBound, arm_bound
 from contact.rotor.confounds import Confound, confound_budget
 from contact.rotor.joint import (
     GroupOffset,
@@ -42,6 +43,7 @@ from contact.rotor.joint import (
     shared_track_f,
 )
 from contact.rotor.mechanics import G_STANDARD
+from contact.rotor.permutation import PermutationTest, permutation_test
 from contact.rotor.rig import (
     UPPER_SLOPE,
     Rig,
@@ -116,6 +118,16 @@ class RotorVerdict:
     shared: JointFit
     groupwise: JointFit
     rig: Rig | None
+    permutation: PermutationTest | None = None
+    arm: ArmBound | None = None
+
+    @property
+    def weaker_p(self) -> float:
+        """The weaker of the model-calibrated and the design's permutation p of the shared
+        track test: the one the wording follows."""
+        if self.permutation is None or not math.isfinite(self.permutation.f_p):
+            return self.shared_track_p
+        return max(self.shared_track_p, self.permutation.f_p)
 
     @property
     def misread_rows(self) -> tuple[tuple[str, int], ...]:
@@ -184,10 +196,12 @@ def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
 def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Sequence[str]],
                 *, fps: float, step: float, k: Sequence[int] | None = None,
                 rig: Rig | None = None,
-                mechanisms: Mapping[str, float] | None = None) -> RotorVerdict:
+                mechanisms: Mapping[str, float] | None = None,
+                permutation: bool = True) -> RotorVerdict:
     """The verdict on a table: ``groups`` ({name: columns}, two groups; the offset is the
-    second minus the first), ``rig`` for the exponent and the confounds, ``mechanisms``
-    ({name: implied offset, rad/s²}) to put into the confound budget."""
+    second minus the first), ``rig`` for the exponent, the arm bound and the confounds,
+    ``mechanisms`` ({name: implied offset, rad/s²}) to put into the confound budget;
+    ``permutation``: also the design's exact permutation test (a refit per split)."""
     data = prepare_table(columns, groups, fps, step, k)
     if len(data.group_names) != 2:
         raise ContactInputError(f"the verdict compares two groups; the table has "
@@ -208,6 +222,8 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
     code = "undetermined" if not adequate else (
         "difference" if abs(off.t_statistic) > t_crit else "no_difference")
     exponent = _exponent(rig, off, mean_acc) if rig is not None else None
+    arm = None if rig is None else arm_bound(rig, off.minuend, off.subtrahend, exponent.slope,
+                                             mean_acc, off.value, off.ci_low, off.ci_high)
     confounds: tuple[Confound, ...] = ()
     if rig is not None:
         smallest = 0.0 if off.ci_low <= 0 <= off.ci_high else min(abs(off.ci_low),
@@ -215,26 +231,62 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
         confounds = confound_budget(rig, off.value, max(smallest, 1e-300), exponent.slope,
                                     mean_acc, float(np.ptp(prof)), float(np.max(s)),
                                     off.minuend, off.subtrahend, mechanisms)
-    sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig)
+    perm = permutation_test(data, shared, groupwise) if permutation else None
+    sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig, perm, arm)
     return RotorVerdict(code, sentence, off, adequate, _p_value(f), f, f_crit, diff, exponent,
-                        confounds, mean_acc, data, shared, groupwise, rig)
+                        confounds, mean_acc, data, shared, groupwise, rig, perm, arm)
+
+
+BLOCK_CAVEAT = ("with each group filmed as one block (the groups one after the other), a "
+                "session effect (run-in, lane, slope reset) cannot be told from the collar's "
+                "position")
+"""What a block design cannot separate (said wherever the groups are compared)."""
+
+
+def _design_p(p: float, perm: PermutationTest, what: str) -> str:
+    smallest = " (the smallest the design allows)" if p <= perm.smallest_p * (1 + 1e-9) else ""
+    return (f"the design's exact permutation p = {p:.2g}{smallest} for the {what} over the "
+            f"{perm.n_splits} splits of the launches into groups"
+            f"{'' if perm.exact else ' (sampled)'}")
+
+
+def _level_text(level: float) -> str:
+    return f"{level * 100:g} %"
+
+
+def _shared_track_clause(f: float, p: float, perm: PermutationTest | None) -> str:
+    """The shared-track test in words that follow the weaker of the model's calibrated p and
+    the design's permutation p."""
+    level = float(calibration()["shared_track_test"]["level"])
+    model = f"F = {f:.1f}, calibrated p {_p_text(p)}"
+    if perm is None or not math.isfinite(perm.f_p):
+        return f"the paper's constant-offset model is rejected: no shared track explains both " \
+               f"groups ({model})"
+    design = _design_p(perm.f_p, perm, "shared-track F")
+    if max(p, perm.f_p) <= level:
+        return (f"the paper's constant-offset model is rejected: no shared track explains both "
+                f"groups ({model}; {design})")
+    return (f"the paper's constant-offset model is rejected by the joint model, not by the "
+            f"design alone: no shared track explains both groups under the model ({model}), "
+            f"but {design}, so the launches' own evidence cannot reach {_level_text(level)}")
 
 
 def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDifference | None,
-              exponent: ExponentNeeded | None, rig: Rig | None) -> str:
+              exponent: ExponentNeeded | None, rig: Rig | None,
+              perm: PermutationTest | None = None, arm: ArmBound | None = None) -> str:
     pair = f"{off.minuend} - {off.subtrahend}"
     ci = f"[{off.ci_low:+.3f}, {off.ci_high:+.3f}] rad/s² ({off.level:.0%})"
     if code == "undetermined":
         where = ", ".join(f"{a * 1e3:.0f}-{b * 1e3:.0f} mm" for a, b in diff.regions) or "nowhere"
         length = diff.length
         kind = "trend" if abs(diff.trend) * length > 2 * diff.waviness_rms else "waviness"
-        return (f"undetermined: no shared track explains both groups (F = {f:.1f}, calibrated "
-                f"p {_p_text(p)}); the groups' accelerations differ by a {kind} along the track "
+        return (f"undetermined: {_shared_track_clause(f, p, perm)}; the groups' accelerations "
+                f"differ by a {kind} along the track "
                 f"({pair}: {diff.start:+.3f} rad/s² at the release, trend {diff.trend:+.3g} "
                 f"rad/s² per m over {length * 1e3:.0f} mm, waviness {diff.waviness_rms:.3f} "
-                f"rad/s² rms), beyond two standard errors at {where} of track; they did not "
-                f"run under the same conditions, so the offset {off.value:+.3f} rad/s² cannot "
-                f"be laid to rolling friction.")
+                f"rad/s² rms), beyond two standard errors at {where} of track; "
+                f"{BLOCK_CAVEAT}, so the offset {off.value:+.3f} rad/s² cannot be laid to "
+                f"rolling friction.")
     if code == "no_difference":
         tail = ""
         if exponent is not None:
@@ -245,6 +297,11 @@ def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDiffer
                 f"rad/s², {ci}): nothing here contradicts lambda = 1.{tail}")
     text = (f"difference: a constant offset on a shared track, {pair} = {off.value:+.3f} rad/s² "
             f"{ci}")
+    if perm is not None:
+        level = float(calibration()["shared_track_test"]["level"])
+        text += f" ({_design_p(perm.offset_p, perm, 'offset')}"
+        text += (f"; the design alone cannot show it at {_level_text(level)})"
+                 if perm.offset_p > level else ")")
     if rig is not None and exponent is not None:
         torque = off.value * rig.rolling_inertia
         dslope = torque / (rig.mass * G_STANDARD * rig.ball_radius)
@@ -253,4 +310,7 @@ def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDiffer
         text += (f", a torque of {torque:+.3g} N m or a slope change of "
                  f"{math.degrees(dslope):+.3g} deg; at a slope of "
                  f"{math.degrees(exponent.slope):.3g} deg ({exponent.slope_basis}) it needs {lam}")
-    return text + "."
+        if arm is not None and math.isfinite(arm.lambda_at_bound):
+            text += (f"; with the friction arm at its bound (the contact radius "
+                     f"{arm.arm_bound * 1e6:.0f} µm) at least lambda = {arm.lambda_at_bound:.3g}")
+    return text + f"; {BLOCK_CAVEAT}."

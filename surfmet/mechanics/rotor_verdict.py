@@ -100,9 +100,29 @@ def _calibration_record() -> dict[str, Any]:
     }
 
 
-def verdict_record(v: Any) -> dict[str, Any]:
-    """The JSON ``verdict`` object: every value a quantity with its unit (the group offset
-    and the exponent as interval quantities)."""
+def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
+    """The JSON ``verdict`` object, the one record builder every entry point calls: every
+    value a quantity with its unit (the group offset and the exponent as interval
+    quantities). With the table's per-test ``analysis``
+    (:func:`contact.rotor.groups.analyse_table`) it also carries the table of the four
+    differences and the two misread rules."""
+    from surfmet.mechanics.rotor_argument import (
+        argument_record,
+        differences_record,
+        permutation_record,
+        rig_record,
+    )
+
+    rec = _verdict_record(v)
+    rec["permutation_p"] = permutation_record(v)
+    rec["rig"] = rig_record(v.rig)
+    rec.update(argument_record(v))
+    if analysis is not None:
+        rec.update(differences_record(v, analysis))
+    return rec
+
+
+def _verdict_record(v: Any) -> dict[str, Any]:
     o = v.offset
     rec: dict[str, Any] = {
         "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
@@ -167,6 +187,11 @@ def verdict_lines(v: Any) -> list[str]:
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
+    from surfmet.mechanics.rotor_argument import argument_lines, permutation_line
+
+    perm = permutation_line(v)
+    if perm:
+        lines.append(perm)
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
@@ -177,7 +202,9 @@ def verdict_lines(v: Any) -> list[str]:
     lam = (f"{e.value:.3g} [{e.ci_low:.3g}, {e.ci_high:.3g}]" if math.isfinite(e.value)
            else "none in 0.05-20")
     lines += [f"  lambda needed at slope {math.degrees(e.slope):.3g} deg ({e.slope_basis}; the "
-              f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam}",
+              f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam} "
+              f"(conditional on the slope)",
+              *argument_lines(v),
               f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s²; "
               f"launches per group to tell 4/3 from 1 (90 % power, 2 %): "
               f"{e.launches if e.launches is not None else 'more than 100000'}",
