@@ -248,3 +248,23 @@ def test_verdict_json_four_differences_in_one_table(paper_run):
     only = {(x["column"], x["k"]) for x in m["only_per_test"]}
     assert only == per - joint
     assert m["joint_without_both"]["shared_track_outcome_unchanged"] is True
+
+
+def test_differences_on_a_clean_table_read_the_constant_acceleration_as_fitting(tmp_path,
+                                                                                capsys):
+    """Simulated launches at constant acceleration (no effect): the constant-acceleration
+    rows fit, and the study model (const) is not listed twice."""
+    from contact.rotor.simulator import simulate_random_run
+
+    fr = [simulate_random_run(40 + i, "none", n_misread=0).frames for i in range(5)]
+    rows = ["k\tx1\tx2\ty1\ty2\ty3"] + ["\t".join([str(k)] + [str(int(f[k - 1])) for f in fr])
+                                        for k in range(1, len(fr[0]) + 1)]
+    table = tmp_path / "t.tsv"
+    table.write_text("\n".join(rows) + "\n")
+    assert main(["rotor", str(table), "--json"]) == 0
+    v = json.loads(capsys.readouterr().out)["verdict"]
+    got = {r["model"]: r for r in v["differences"]["rows"]}
+    assert list(got) == ["paper", "const", "joint"]
+    assert got["const"]["model_fits"] and got["paper"]["model_fits"]
+    assert v["permutation_p"]["n_splits"] == 10  # C(5, 2): groups of 2 and 3
+    assert v["rig"] is None and v["friction_arm"] is None
