@@ -177,6 +177,15 @@ def _p_shown(p: float) -> str:
             else f"= {p:.3g}")
 
 
+def _rejected(v: Any) -> str:
+    """REJECTED, said as the model's alone when the design's permutation p is weaker than
+    the test's level (the wording follows the weaker p)."""
+    from contact.rotor.verdict import calibration
+
+    level = float(calibration()["shared_track_test"]["level"])
+    return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
+
+
 def verdict_lines(v: Any) -> list[str]:
     """The verdict in words, first thing every entry point prints."""
     o = v.offset
@@ -185,7 +194,7 @@ def verdict_lines(v: Any) -> list[str]:
              f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (launch-to-launch sd "
              f"{o.launch_sd:.4f} rad/s², t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
-             f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
+             f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
     from surfmet.mechanics.rotor_argument import argument_lines, permutation_line
 
