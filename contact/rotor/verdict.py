@@ -53,6 +53,7 @@ from contact.rotor.rig import (
     solve_lambda,
 )
 from contact.rotor.track import track_acceleration, track_basis
+from contact.rotor.windows import WindowedDifference, windowed_difference
 
 __all__ = ["CODES", "ExponentNeeded", "RotorVerdict", "TrackDifference", "calibration",
            "judge_table"]
@@ -70,9 +71,14 @@ def calibration() -> dict:
 @dataclass(frozen=True)
 class TrackDifference:
     """How the group-specific tracks differ (minuend - subtrahend): ``trend`` (rad/s² per m
-    of track), ``waviness_rms`` (rad/s², what the trend leaves), ``regions`` ((start, end) m
-    of track where the difference exceeds two standard errors), ``start``/``end`` its value at
-    the release and the last mark (rad/s²), ``length`` the track covered (m)."""
+    of track, the straight line through the joint model's difference) with its
+    ``trend_stderr``, ``waviness_rms`` (rad/s², what the trend leaves), ``length`` the track
+    covered (m), and ``windows``: the model-free windowed difference
+    (:mod:`contact.rotor.windows`) beside it.
+
+    ``start``/``end`` (the polynomial's value at the release and the last mark, rad/s²) and
+    ``regions`` ((start, end) m where it exceeds two standard errors) are end values of a
+    polynomial, where it is least constrained: kept for the record, never the headline."""
 
     trend: float
     waviness_rms: float
@@ -80,6 +86,8 @@ class TrackDifference:
     start: float
     end: float
     length: float
+    trend_stderr: float = math.nan
+    windows: WindowedDifference | None = None
 
 
 @dataclass(frozen=True)
@@ -167,6 +175,9 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
     x = s * radius
     coef = np.polyfit(x, d, 1)
     wav = float(np.sqrt(np.mean((d - np.polyval(coef, x)) ** 2)))
+    # the trend is a linear functional of the parameters: its row of the line's pseudo-inverse
+    slope_row = np.linalg.pinv(np.column_stack([x, np.ones_like(x)]))[0] @ grad
+    trend_se = math.sqrt(max(float(slope_row @ fit.cov @ slope_row) * scale, 0.0))
     out = np.abs(d) > 2 * se
     regions, start = [], None
     for i, flag in enumerate(out):
@@ -177,7 +188,25 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
             regions.append((float(x[start]), float(x[end])))
             start = None
     return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]),
-                           float(x[-1]))
+                           float(x[-1]), trend_se, frame_windows(data, fit, mi, si, radius))
+
+
+WINDOWS = 4
+"""Windows the track is cut into for the model-free accelerations (six marks each on the
+paper's 25-row table: three parameters and three degrees of freedom per launch)."""
+
+
+def frame_windows(data: TableData, fit: JointFit, mi: int, si: int, radius: float,
+                  n_windows: int = WINDOWS) -> WindowedDifference:
+    """The model-free windowed difference of groups ``mi - si`` from the frames alone, each
+    launch's rows placed on the track by ``fit``'s release point (its used rows, their
+    reading noise)."""
+    _, _, phi0, _ = fit.layout.split(fit.x)
+    rows = [np.flatnonzero(fit.used[i]) for i in range(data.times.shape[0])]
+    return windowed_difference([data.angles[i, r] - phi0[i] for i, r in enumerate(rows)],
+                               [data.times[i, r] for i, r in enumerate(rows)],
+                               [fit.sigma[i, r] for i, r in enumerate(rows)],
+                               data.group_of_launch, mi, si, radius, n_windows)
 
 
 def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
@@ -271,20 +300,39 @@ def _shared_track_clause(f: float, p: float, perm: PermutationTest | None) -> st
             f"but {design}, so the launches' own evidence cannot reach {_level_text(level)}")
 
 
+def window_clause(w: WindowedDifference | None) -> str:
+    """What the frames alone say (the model-free windows), and where they cannot resolve the
+    difference."""
+    if w is None or not np.any(np.isfinite(w.difference)):
+        return ""
+    ok = np.isfinite(w.stderr)
+    band = f"{2 * np.min(w.stderr[ok]):#.2g}-{2 * np.max(w.stderr[ok]):#.2g} rad/s²"
+    head = (f"; read off the frames alone ({w.difference.size} windows of "
+            f"{w.window_length * 1e3:.0f} mm, no track model) the trend is "
+            f"{w.trend:+#.2g} ± {w.trend_stderr:#.2g} rad/s² per m")
+    res = w.resolved
+    if not np.any(res):
+        return (f"{head} and no window's difference exceeds its two standard errors "
+                f"({band}): the frames alone cannot resolve the difference")
+    where = ", ".join(f"{(c - w.window_length / 2) * 1e3:.0f}-"
+                      f"{(c + w.window_length / 2) * 1e3:.0f} mm" for c in w.centres[res])
+    return (f"{head}; the difference exceeds two standard errors at {where} only (two "
+            f"standard errors {band}): the frames cannot resolve it elsewhere")
+
+
 def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDifference | None,
               exponent: ExponentNeeded | None, rig: Rig | None,
               perm: PermutationTest | None = None, arm: ArmBound | None = None) -> str:
     pair = f"{off.minuend} - {off.subtrahend}"
     ci = f"[{off.ci_low:+.3f}, {off.ci_high:+.3f}] rad/s² ({off.level:.0%})"
     if code == "undetermined":
-        where = ", ".join(f"{a * 1e3:.0f}-{b * 1e3:.0f} mm" for a, b in diff.regions) or "nowhere"
         length = diff.length
         kind = "trend" if abs(diff.trend) * length > 2 * diff.waviness_rms else "waviness"
         return (f"undetermined: {_shared_track_clause(f, p, perm)}; the groups' accelerations "
                 f"differ by a {kind} along the track "
-                f"({pair}: {diff.start:+.3f} rad/s² at the release, trend {diff.trend:+.3g} "
-                f"rad/s² per m over {length * 1e3:.0f} mm, waviness {diff.waviness_rms:.3f} "
-                f"rad/s² rms), beyond two standard errors at {where} of track; "
+                f"({pair}: trend {diff.trend:+.3g} ± {diff.trend_stderr:#.2g} rad/s² per m over "
+                f"{length * 1e3:.0f} mm in the joint model, waviness {diff.waviness_rms:.3f} "
+                f"rad/s² rms){window_clause(diff.windows)}; "
                 f"{BLOCK_CAVEAT}, so the offset {off.value:+.3f} rad/s² cannot be laid to "
                 f"rolling friction.")
     if code == "no_difference":

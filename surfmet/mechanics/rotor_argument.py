@@ -13,7 +13,8 @@ from typing import Any
 from surfmet.units import quantity
 
 __all__ = ["argument_lines", "argument_record", "differences_lines", "differences_record",
-           "permutation_line", "permutation_record", "rig_record"]
+           "permutation_line", "permutation_record", "rig_record", "windows_lines",
+           "windows_record"]
 
 LOWER_BOUND = ("a lower bound on lambda conditional on the slope, not a confidence interval: "
                "a smaller arm (a smaller slope) needs a larger lambda, and lambda -> infinity "
@@ -214,4 +215,52 @@ def differences_lines(v: Any, analysis: Any) -> list[str]:
                  f"[{j['group_offset']['ci_low']:+.3f}, {j['group_offset']['ci_high']:+.3f}], "
                  f"F = {j['f_statistic']['value']:.1f}: the shared-track test's outcome "
                  f"{'does not change' if j['shared_track_outcome_unchanged'] else 'CHANGES'}")
+    return lines
+
+
+def _num(x: float) -> float | None:
+    return float(x) if math.isfinite(x) else None
+
+
+def windows_record(w: Any) -> dict[str, Any] | None:
+    """``verdict.track_difference.windowed``: the model-free windowed accelerations
+    (:mod:`contact.rotor.windows`) and where they resolve the difference."""
+    if w is None:
+        return None
+
+    def group(gw: Any) -> list[dict[str, Any]]:
+        return [{"value": _num(m), "unit": "rad/s²", "stderr": _num(e), "launches": int(n)}
+                for m, e, n in zip(gw.mean, gw.stderr, gw.n, strict=True)]
+
+    return {
+        "method": "per launch, per window, a parabola phi(t) = c0 + c1 tau + c2 tau^2 "
+                  "through the marks' crossing times (no track model): eps = 2 c2; a "
+                  "group's value the launches' mean with the larger of the propagated and "
+                  "the scatter's standard error",
+        "window_length": quantity(w.window_length, "m"),
+        "windows": [{"centre": quantity(float(c), "m"),
+                     "difference": {"value": _num(d), "unit": "rad/s²", "stderr": _num(e)},
+                     "resolved": bool(r)}
+                    for c, d, e, r in zip(w.centres, w.difference, w.stderr, w.resolved,
+                                          strict=True)],
+        "minuend": group(w.minuend), "subtrahend": group(w.subtrahend),
+        "trend": {**quantity(w.trend, "rad/s² per m"), "stderr": _num(w.trend_stderr)},
+        "resolved_anywhere": bool(w.resolved.any()),
+    }
+
+
+def windows_lines(v: Any) -> list[str]:
+    """The model-free windows in words, one line per window (after the verdict's lines)."""
+    d = v.difference
+    w = None if d is None else d.windows
+    if w is None:
+        return []
+    o = v.offset
+    lines = [f"  model-free windowed accelerations ({o.minuend} - {o.subtrahend}, rad/s², "
+             f"windows of {w.window_length * 1e3:.0f} mm; resolved: beyond two standard "
+             f"errors): trend {w.trend:+#.2g} ± {w.trend_stderr:#.2g} rad/s² per m, the "
+             f"joint model's {d.trend:+#.3g} ± {d.trend_stderr:#.2g}"]
+    for c, dv, e, r in zip(w.centres, w.difference, w.stderr, w.resolved, strict=True):
+        lines.append(f"    at {c * 1e3:5.0f} mm  {dv:+8.3f} ± {e:6.3f}  "
+                     f"{'resolved' if r else 'not resolved'}")
     return lines

@@ -114,6 +114,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     )
 
     rec = _verdict_record(v)
+    rec["shared_track"]["p_text"] = f"calibrated p {_p_shown(v.shared_track_p)}"
     rec["permutation_p"] = permutation_record(v)
     rec["rig"] = rig_record(v.rig)
     rec.update(argument_record(v))
@@ -140,11 +141,20 @@ def _verdict_record(v: Any) -> dict[str, Any]:
     }
     d = v.difference
     if d is not None:
+        from surfmet.mechanics.rotor_argument import windows_record
+
         rec["track_difference"] = {
             "trend": quantity(d.trend, "rad/s² per m"),
+            "trend_stderr": quantity(d.trend_stderr, "rad/s² per m"),
             "waviness_rms": quantity(d.waviness_rms, "rad/s²"),
-            "at_release": quantity(d.start, "rad/s²"), "at_last_mark": quantity(d.end, "rad/s²"),
-            "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")} for a, b in d.regions]}
+            "windowed": windows_record(d.windows),
+            "polynomial_end_values": {
+                "note": "end values of the joint model's track polynomial, where it is least "
+                        "constrained: not robust, never the headline",
+                "at_release": quantity(d.start, "rad/s²"),
+                "at_last_mark": quantity(d.end, "rad/s²"),
+                "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")}
+                            for a, b in d.regions]}}
     e = v.exponent
     if e is None:
         rec["note"] = "no rig: the lambda outputs and the confounds need --rig RIG.json"
@@ -196,11 +206,12 @@ def verdict_lines(v: Any) -> list[str]:
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
-    from surfmet.mechanics.rotor_argument import argument_lines, permutation_line
+    from surfmet.mechanics.rotor_argument import argument_lines, permutation_line, windows_lines
 
     perm = permutation_line(v)
     if perm:
         lines.append(perm)
+    lines += windows_lines(v)
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
