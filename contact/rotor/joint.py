@@ -30,7 +30,8 @@ from contact.rotor.noise import Noise, estimate_noise, quantisation_sigma
 from contact.rotor.track import TrackLayout, track_acceleration, track_times
 
 __all__ = ["DEGREES", "GroupOffset", "JointFit", "TableData", "fit_table", "group_offset",
-           "groupwise_fit", "local_accelerations", "prepare_table", "shared_track_f"]
+           "groupwise_fit", "lane_f", "launchwise_fit", "local_accelerations", "prepare_table",
+           "shared_track_f"]
 
 DEGREES = (1, 2, 3, 4, 5, 6, 8)
 """Track degrees the BIC chooses among (1: a linear trend of the slope; more: waviness)."""
@@ -299,6 +300,27 @@ def shared_track_f(shared: JointFit, groupwise: JointFit) -> float:
     if q <= 0 or dof <= 0 or groupwise.chi2 <= 0:
         return math.nan
     return float(max(shared.chi2 - groupwise.chi2, 0.0) / q / (groupwise.chi2 / dof))
+
+
+def launchwise_fit(data: TableData, shared: JointFit) -> JointFit:
+    """A track of the shared fit's degree for every launch (each on a lane of its own), with
+    the shared fit's noise and misread rows."""
+    n = data.group_of_launch.size
+    return groupwise_fit(data, shared, np.arange(n), n)
+
+
+def lane_f(shared: JointFit, groupwise: JointFit, launchwise: JointFit) -> float:
+    """Do the groups' tracks differ more than the launches' within a group do? The drop of
+    chi² from one shared track to group-specific ones per added parameter, over the drop from
+    group-specific tracks to launch-specific ones per added parameter: launches differing
+    among themselves (lanes) raise both alike, so they are not read as groups differing
+    (its null distribution calibrated by simulation with lanes in the null)."""
+    q_g = groupwise.layout.n_params - shared.layout.n_params
+    q_l = launchwise.layout.n_params - groupwise.layout.n_params
+    within = max(groupwise.chi2 - launchwise.chi2, 0.0)
+    if q_g <= 0 or q_l <= 0 or within <= 0:
+        return math.nan
+    return float(max(shared.chi2 - groupwise.chi2, 0.0) / q_g / (within / q_l))
 
 
 def local_accelerations(data: TableData, fit: JointFit, gap: int = 2

@@ -42,6 +42,7 @@ from contact.rotor.joint import (
     prepare_table,
     shared_track_f,
 )
+from contact.rotor.lanes import LaneTest, lane_test, lane_words
 from contact.rotor.mechanics import G_STANDARD
 from contact.rotor.permutation import PermutationTest, permutation_test
 from contact.rotor.rig import (
@@ -128,6 +129,7 @@ class RotorVerdict:
     rig: Rig | None
     permutation: PermutationTest | None = None
     arm: ArmBound | None = None
+    lanes: LaneTest | None = None
 
     @property
     def weaker_p(self) -> float:
@@ -248,7 +250,10 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
     prof = track_acceleration(s, beta[0], shared.layout.span)
     mean_acc = float(np.mean(delta) + np.mean(prof))
     t_crit = float(student_t.ppf(0.5 + cal["offset_test"]["t_level"] / 2, max(off.dof, 1)))
-    code = "undetermined" if not adequate else (
+    lanes = lane_test(shared, groupwise, data)
+    # launches on lanes of their own are not groups differing: undetermined only when the
+    # groups' tracks differ beyond the noise and beyond the launches' own variation
+    code = "undetermined" if not adequate and lanes.groups_differ else (
         "difference" if abs(off.t_statistic) > t_crit else "no_difference")
     exponent = _exponent(rig, off, mean_acc) if rig is not None else None
     arm = None if rig is None else arm_bound(rig, off.minuend, off.subtrahend, exponent.slope,
@@ -262,8 +267,14 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
                                     off.minuend, off.subtrahend, mechanisms)
     perm = permutation_test(data, shared, groupwise) if permutation else None
     sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig, perm, arm)
+    if not adequate:
+        body = sentence.split(": ", 1)[1]
+        body = body.replace("the groups agree on a shared track", "the groups' offsets agree")
+        body = body.replace("a constant offset on a shared track",
+                            "a constant offset between the groups")
+        sentence = lane_words(code, lanes, f) + body
     return RotorVerdict(code, sentence, off, adequate, _p_value(f), f, f_crit, diff, exponent,
-                        confounds, mean_acc, data, shared, groupwise, rig, perm, arm)
+                        confounds, mean_acc, data, shared, groupwise, rig, perm, arm, lanes)
 
 
 BLOCK_CAVEAT = ("with each group filmed as one block (the groups one after the other), a "

@@ -13,8 +13,8 @@ from typing import Any
 from surfmet.units import quantity
 
 __all__ = ["argument_lines", "argument_record", "differences_lines", "differences_record",
-           "permutation_line", "permutation_record", "rig_record", "windows_lines",
-           "windows_record"]
+           "lane_line", "lane_record", "permutation_line", "permutation_record",
+           "rig_record", "windows_lines", "windows_record"]
 
 LOWER_BOUND = ("a lower bound on lambda conditional on the slope, not a confidence interval: "
                "a smaller arm (a smaller slope) needs a larger lambda, and lambda -> infinity "
@@ -264,3 +264,51 @@ def windows_lines(v: Any) -> list[str]:
         lines.append(f"    at {c * 1e3:5.0f} mm  {dv:+8.3f} ± {e:6.3f}  "
                      f"{'resolved' if r else 'not resolved'}")
     return lines
+
+
+def lane_record(v: Any) -> dict[str, Any] | None:
+    """``verdict.lane_test``: do the groups' tracks differ more than the launches' within a
+    group do (:mod:`contact.rotor.lanes`), with its calibration's held-out rates."""
+    lt = v.lanes
+    if lt is None:
+        return None
+    from contact.rotor.lanes import lane_calibration
+
+    cal = lane_calibration()
+
+    def power(rows: list[dict]) -> list[dict[str, Any]]:
+        return [{"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s²"), "tables": r["n"],
+                 "difference_rate": quantity(r["difference_rate"], ""),
+                 "true_offset_in_ci_when_difference": r["true_offset_in_ci_when_difference"]}
+                for r in rows]
+
+    held = cal["held_out"]
+    return {
+        "f_statistic": quantity(lt.f, ""), "dof": [lt.q_g, lt.q_l],
+        "p_nominal": quantity(lt.p_nominal, ""), "p_critical": quantity(lt.p_critical, ""),
+        "calibrated_p": quantity(lt.p, ""), "groups_differ": lt.groups_differ,
+        "launch_f": quantity(lt.launch_f, ""),
+        "rule": cal["rule"], "prior": cal["prior"], "generated_by": cal["generated_by"],
+        "tables": cal["tables"], "split": cal["split"],
+        "false_difference_zero_offset": {k: quantity(held[k]["difference"], "")
+                                         for k in ("null0", "lane0")},
+        "false_undetermined_zero_offset": {k: quantity(held[k]["undetermined"], "")
+                                           for k in ("null0", "lane0")},
+        "held_out_tables": {k: held[k]["n"] for k in held},
+        "power_by_offset_lanes": power(cal["power_by_offset_lanes"]),
+        "power_by_offset_no_lanes": power(cal["power_by_offset_no_lanes"]),
+        "undetermined_rate_group_tracks": {k: quantity(held[k]["undetermined"], "")
+                                           for k in ("track", "lanetrack")},
+    }
+
+
+def lane_line(v: Any) -> str | None:
+    """The lane test in one line (after the shared-track test's)."""
+    lt = v.lanes
+    if lt is None:
+        return None
+    return (f"  lane test (do the groups' tracks differ more than the launches' within a "
+            f"group?): F = {lt.f:.2f} on {lt.q_g} and {lt.q_l} dof, nominal p = "
+            f"{lt.p_nominal:.2g} (critical {lt.p_critical:.2g}, calibrated with launch-level "
+            f"lanes in the null): {'yes' if lt.groups_differ else 'no'}; the launches' own "
+            f"tracks differ by F = {lt.launch_f:.2f} per parameter over the noise")

@@ -109,6 +109,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     from surfmet.mechanics.rotor_argument import (
         argument_record,
         differences_record,
+        lane_record,
         permutation_record,
         rig_record,
     )
@@ -116,6 +117,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     rec = _verdict_record(v)
     rec["shared_track"]["p_text"] = f"calibrated p {_p_shown(v.shared_track_p)}"
     rec["permutation_p"] = permutation_record(v)
+    rec["lane_test"] = lane_record(v)
     rec["rig"] = rig_record(v.rig)
     rec.update(argument_record(v))
     if analysis is not None:
@@ -206,11 +208,14 @@ def verdict_lines(v: Any) -> list[str]:
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
-    from surfmet.mechanics.rotor_argument import argument_lines, permutation_line, windows_lines
+    from surfmet.mechanics.rotor_argument import (
+        argument_lines,
+        lane_line,
+        permutation_line,
+        windows_lines,
+    )
 
-    perm = permutation_line(v)
-    if perm:
-        lines.append(perm)
+    lines += [x for x in (lane_line(v), permutation_line(v)) if x]
     lines += windows_lines(v)
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
