@@ -163,6 +163,11 @@ def test_rotor_paragraph_quotes_the_verdict_with_its_design_p_and_arm_bound():
     assert int(m.group(3)) == d.windows.difference.size
     assert int(m.group(4)) == round(d.windows.window_length * 1e3)
     assert not d.windows.resolved.any()
+    m = quoted(r"the groups' tracks differing more than the launches' within a group do "
+               r"\(nominal p = (0\.\d+) against a critical (0\.\d+)\)")
+    assert v.lanes.groups_differ
+    assert float(m.group(1)) == float(f"{v.lanes.p_nominal:.2g}")
+    assert float(m.group(2)) == float(f"{v.lanes.p_critical:.2g}")
     m = quoted(r"of the (\d+) ways to split the six launches into two groups of three the real "
                r"split has the largest F, so the design's exact permutation p is (0\.\d)")
     splits = math.comb(6, 3) // 2
