@@ -27,6 +27,8 @@ def rotor_html(v: Any) -> str:
                                       f"{lam['ci_high']:.3g}] "
                                       f"({rec['lambda_assumptions']['slope_basis']}; "
                                       f"conditional on the slope)"))
+    if rec.get("label_swap"):
+        rows.append(("labels", rec["label_swap"]))
     parts = ["<h2>The paper's question: is M<sub>r</sub> linear in N?</h2>",
              f'<p class="verdict">{esc(v.sentence)}</p>', kv_table(rows)]
     if rec["confounds"]:

@@ -120,9 +120,22 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     rec["lane_test"] = lane_record(v)
     rec["rig"] = rig_record(v.rig)
     rec.update(argument_record(v))
+    rec.update(_sensitivity_fields(v))
     if analysis is not None:
         rec.update(differences_record(v, analysis))
     return rec
+
+
+def _sensitivity_fields(v: Any) -> dict[str, Any]:
+    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`contact.rotor.sensitivity`)."""
+    from surfmet.mechanics.rotor_sensitivity import (
+        experiment_record,
+        label_swap_text,
+        sensitivity_record,
+    )
+
+    return {"label_swap": label_swap_text(v), "sensitivity": sensitivity_record(v),
+            "experiment": experiment_record(v)}
 
 
 def _verdict_record(v: Any) -> dict[str, Any]:
@@ -237,7 +250,15 @@ def verdict_lines(v: Any) -> list[str]:
     for c in v.confounds:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
-    return lines
+    from surfmet.mechanics.rotor_sensitivity import (
+        experiment_lines,
+        label_swap_text,
+        sensitivity_lines,
+    )
+
+    swap = label_swap_text(v)
+    return lines + ([f"  labels: {swap}"] if swap else []) + sensitivity_lines(v) + \
+        experiment_lines(v)
 
 
 def verdict_plot_path(plot: str | Path) -> str:

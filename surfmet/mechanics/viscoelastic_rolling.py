@@ -168,6 +168,7 @@ class MechanismsReport:
 
     def to_json(self) -> dict[str, Any]:
         from contact.viscoelastic.mechanisms import BOUNDS_ONLY
+        from surfmet.mechanics.rotor_sensitivity import label_swap_text
         from surfmet.mechanics.rotor_verdict import offset_record
 
         c = self.comparison
@@ -193,7 +194,8 @@ class MechanismsReport:
                 "rotor_loads": quantity(list(c.rotor_loads), "N"),
                 "rolling_inertia": quantity(c.rolling_inertia, "kg m^2"),
                 "dominant": name, "dominant_factor": quantity(factor, ""),
-                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence},
+                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence,
+                            "label_swap": label_swap_text(self.verdict)},
                 "group_offset": offset_record(self.verdict),
                 "assumptions": {k: quantity(v, _UNITS.get(k, "")) for k, v in
                                 c.assumptions.items()},
