@@ -82,3 +82,28 @@ def test_paper_verdict_headline_is_robust() -> None:
     assert rec["windowed"]["resolved_anywhere"] is False
     assert len(rec["windowed"]["windows"]) == w.difference.size
     assert rec["polynomial_end_values"]["at_release"]["unit"] == "rad/s²"
+
+
+def test_verdict_figure_has_the_difference_panel_not_dominated_by_its_ends() -> None:
+    """The middle panel: the joint model's difference with its band, the windowed points,
+    and lambda = 4/3's offset with the arm at its bound (a * sum N_s * c(4/3) / (J + M R²));
+    its limits leave out the last mark's error bar."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.plots.rotor_verdict import draw_verdict
+
+    v = paper_verdict()
+    fig = draw_verdict(v)
+    ax = fig.axes[1]
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any("frames alone" in t for t in labels)
+    rig, a = v.rig, v.arm.arm_bound
+    ns, na = rig.group("s").ball_loads, rig.group("as").ball_loads
+    sa, ss = sum(n ** (4 / 3) for n in na), sum(n ** (4 / 3) for n in ns)
+    want = a * sum(ns) * 2 * (sa - ss) / (sa + ss) / rig.rolling_inertia
+    assert any(f"({want:+.3f})" in t and "4/3" in t for t in labels)
+    _x, c, se = v.difference.curve
+    assert ax.get_ylim()[1] < c[-1] + 2 * se[-1]
+    assert ax.get_ylim()[0] < v.difference.windows.difference[0] < ax.get_ylim()[1]

@@ -89,6 +89,8 @@ class TrackDifference:
     length: float
     trend_stderr: float = math.nan
     windows: WindowedDifference | None = None
+    curve: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+    """``(x m, difference rad/s², stderr rad/s²)`` along the track: the figure's band."""
 
 
 @dataclass(frozen=True)
@@ -190,7 +192,8 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
             regions.append((float(x[start]), float(x[end])))
             start = None
     return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]),
-                           float(x[-1]), trend_se, frame_windows(data, fit, mi, si, radius))
+                           float(x[-1]), trend_se, frame_windows(data, fit, mi, si, radius),
+                           (x, d, se))
 
 
 WINDOWS = 4
