@@ -21,10 +21,9 @@ LOWER_BOUND = ("a lower bound on lambda conditional on the slope, not a confiden
                "as the slope falls to where the rolling torque vanishes")
 
 
-def _interval(value: float, low: float, high: float, unit: str, kind: str) -> dict[str, Any]:
+def _interval(value: float, low: float, high: float, unit: str) -> dict[str, Any]:
     q = quantity(value, unit)
-    q.update(ci_low=quantity(low, unit)["value"], ci_high=quantity(high, unit)["value"],
-             interval=kind)
+    q.update(ci_low=quantity(low, unit)["value"], ci_high=quantity(high, unit)["value"])
     return q
 
 
@@ -84,26 +83,25 @@ def argument_record(v: Any) -> dict[str, Any]:
     if b is None:
         return {"friction_arm": None, "arm_bound": None, "lambda_at_arm_bound": None,
                 "slope_lambda_4_3": None, "arm_lambda_4_3": None}
+    ends = "at the offset's interval ends nearer to and farther from zero"
     return {
-        "friction_arm": {**quantity(b.friction_arm, "m"), "lambda": 1,
+        "friction_arm": {"arm": quantity(b.friction_arm, "m"), "lambda": 1,
                          "slope": quantity(b.slope, "rad"),
                          "ratio_to_bound": quantity(b.arm_ratio, ""),
                          "formula": "s_r = (M g R sin(theta) - eps_mean (J + M R^2)) / sum N"},
-        "arm_bound": {**quantity(b.arm_bound, "m"), "basis": b.bound_basis,
+        "arm_bound": {"radius": quantity(b.arm_bound, "m"), "basis": b.bound_basis,
                       "load": quantity(b.bound_load, "N"), "group": b.bound_group,
                       "e_star": quantity(b.e_star, "Pa")},
         "lambda_at_arm_bound": {
-            **_interval(b.lambda_at_bound, b.lambda_low, b.lambda_high, "",
-                        "over the offset's interval, at the slope where s_r = a"),
-            "level": v.offset.level, "meaning": LOWER_BOUND,
-            "slope": quantity(b.slope_at_bound, "rad"),
+            "lambda": {**_interval(b.lambda_at_bound, b.lambda_low, b.lambda_high, ""),
+                       "level": v.offset.level},
+            "interval": "over the offset's interval, at the slope where s_r = a",
+            "meaning": LOWER_BOUND, "slope": quantity(b.slope_at_bound, "rad"),
             "slope_lambda_infinite": quantity(b.slope_lambda_infinite, "rad")},
-        "slope_lambda_4_3": _interval(b.slope_4_3, b.slope_4_3_low, b.slope_4_3_high, "rad",
-                                      "at the offset's interval ends nearer to and farther "
-                                      "from zero"),
-        "arm_lambda_4_3": _interval(b.arm_4_3, b.arm_4_3_low, b.arm_4_3_high, "m",
-                                    "at the offset's interval ends nearer to and farther "
-                                    "from zero"),
+        "slope_lambda_4_3": {"slope": _interval(b.slope_4_3, b.slope_4_3_low,
+                                                b.slope_4_3_high, "rad"), "interval": ends},
+        "arm_lambda_4_3": {"arm": _interval(b.arm_4_3, b.arm_4_3_low, b.arm_4_3_high, "m"),
+                           "interval": ends},
     }
 
 
@@ -229,8 +227,8 @@ def windows_record(w: Any) -> dict[str, Any] | None:
         return None
 
     def group(gw: Any) -> list[dict[str, Any]]:
-        return [{"value": _num(m), "unit": "rad/s²", "stderr": _num(e), "launches": int(n)}
-                for m, e, n in zip(gw.mean, gw.stderr, gw.n, strict=True)]
+        return [{"mean": quantity(_num(m), "rad/s²"), "stderr": quantity(_num(e), "rad/s²"),
+                 "launches": int(n)} for m, e, n in zip(gw.mean, gw.stderr, gw.n, strict=True)]
 
     return {
         "method": "per launch, per window, a parabola phi(t) = c0 + c1 tau + c2 tau^2 "
@@ -239,12 +237,13 @@ def windows_record(w: Any) -> dict[str, Any] | None:
                   "the scatter's standard error",
         "window_length": quantity(w.window_length, "m"),
         "windows": [{"centre": quantity(float(c), "m"),
-                     "difference": {"value": _num(d), "unit": "rad/s²", "stderr": _num(e)},
-                     "resolved": bool(r)}
+                     "difference": quantity(_num(d), "rad/s²"),
+                     "stderr": quantity(_num(e), "rad/s²"), "resolved": bool(r)}
                     for c, d, e, r in zip(w.centres, w.difference, w.stderr, w.resolved,
                                           strict=True)],
         "minuend": group(w.minuend), "subtrahend": group(w.subtrahend),
-        "trend": {**quantity(w.trend, "rad/s² per m"), "stderr": _num(w.trend_stderr)},
+        "trend": quantity(_num(w.trend), "rad/s² per m"),
+        "trend_stderr": quantity(_num(w.trend_stderr), "rad/s² per m"),
         "resolved_anywhere": bool(w.resolved.any()),
     }
 
@@ -279,7 +278,8 @@ def lane_record(v: Any) -> dict[str, Any] | None:
     def power(rows: list[dict]) -> list[dict[str, Any]]:
         return [{"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s²"), "tables": r["n"],
                  "difference_rate": quantity(r["difference_rate"], ""),
-                 "true_offset_in_ci_when_difference": r["true_offset_in_ci_when_difference"]}
+                 "true_offset_in_ci_when_difference": quantity(
+                     r["true_offset_in_ci_when_difference"], "")}
                 for r in rows]
 
     held = cal["held_out"]
