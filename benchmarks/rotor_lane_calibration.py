@@ -146,6 +146,8 @@ def main() -> None:
     ap.add_argument("--scale", type=float, default=1.0, help="fraction of the tables")
     ap.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "contact" /
                                          "rotor" / "lane_calibration.json"))
+    ap.add_argument("--extend", metavar="JSON",
+                    help="keep a previous run's rows and simulate only the tables it lacks")
     ap.add_argument("--resummarise", metavar="JSON",
                     help="recompute the summary from a previous run's rows, simulating nothing")
     a = ap.parse_args()
@@ -155,8 +157,13 @@ def main() -> None:
         _write(out | {"rows": prev["rows"]}, a.out)
         return
     jobs = [(k, i) for k, n in KINDS.items() for i in range(max(int(n * a.scale), 4))]
-    t0 = time.time()
-    rows = []
+    rows, seconds = [], 0.0
+    if a.extend:
+        prev = json.loads(Path(a.extend).read_text())
+        rows, seconds = prev["rows"], float(prev["seconds"])
+        done = {(r["kind"], r["seed"]) for r in rows}
+        jobs = [j for j in jobs if j not in done]
+    t0 = time.time() - seconds
     with get_context("spawn").Pool(a.workers) as pool:
         for i, r in enumerate(pool.imap(one, jobs, chunksize=2)):
             rows.append(r)
