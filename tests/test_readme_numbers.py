@@ -194,3 +194,13 @@ def test_rotor_paragraph_quotes_the_verdict_with_its_design_p_and_arm_bound():
                                                     round(b.lambda_high, 1)]
     assert float(m.group(7)) == round(b.arm_4_3 * 1e3, 2)
     assert float(m.group(8)) == round(math.degrees(b.slope_4_3), 2)
+    from contact.rotor.sensitivity import LARGER_CONTRAST, settling_experiment
+
+    m = quoted(r"With s_r at the bound, telling 4/3 from 1 would take (\d+) launches per group "
+               r"on these loads, and (\d+) with a larger load contrast \((\d\.\d) and "
+               r"(\d\.\d) N\)")
+    e = settling_experiment(v)
+    at_bound = [r for r in e.rows if r.arm == b.arm_bound]
+    assert [int(m.group(1)), int(m.group(2))] == [r.launches for r in at_bound]
+    assert sorted([float(m.group(3)), float(m.group(4))]) == sorted(LARGER_CONTRAST)
+    assert "swaps the labels of its two parabolas" in README
