@@ -20,11 +20,15 @@ def rotor_html(v: Any) -> str:
              f"{o['value']:+.4f} rad/s² ({o['level']:.0%} CI {o['ci_low']:+.4f} … "
              f"{o['ci_high']:+.4f})"),
             ("shared track", f"{'adequate' if v.shared_track_adequate else 'rejected'} "
-                             f"(F = {v.f_statistic:.2f}, calibrated p = {v.shared_track_p:.3g})")]
+                             f"(F = {v.f_statistic:.2f}, {rec['shared_track']['p_text']})")]
     lam = rec["lambda_needed"]
     if lam is not None and lam["value"] is not None:
-        rows.append(("lambda needed", f"{lam['value']:.3g} "
-                                      f"({rec['lambda_assumptions']['slope_basis']})"))
+        rows.append(("lambda needed", f"{lam['value']:.3g} [{lam['ci_low']:.3g}, "
+                                      f"{lam['ci_high']:.3g}] "
+                                      f"({rec['lambda_assumptions']['slope_basis']}; "
+                                      f"conditional on the slope)"))
+    if rec.get("label_swap"):
+        rows.append(("labels", rec["label_swap"]))
     parts = ["<h2>The paper's question: is M<sub>r</sub> linear in N?</h2>",
              f'<p class="verdict">{esc(v.sentence)}</p>', kv_table(rows)]
     if rec["confounds"]:

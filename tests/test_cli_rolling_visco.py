@@ -90,3 +90,29 @@ def test_all_mechanisms_adhesion_hysteresis(capsys) -> None:
     rc = main([*base, "--adhesion-hysteresis", "0.2J/m2"])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 1 and len(err) == 1 and "hysteresis" in err[0]
+
+
+def test_all_mechanisms_refuse_a_ball_that_is_not_the_rotors(capsys) -> None:
+    """Issue 35 item 8: --model all sets the mechanisms beside the 20 mm rotor; a 10 mm ball
+    would compare 10 mm contacts with it without a word."""
+    rc = main(["rolling", "--radius", "10mm", "--materials", "steel,aluminium", "--loads",
+               "2N:12N:4", "--model", "all", "--grid", "32", "--no-microslip"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1
+    assert "10 mm contacts" in err[0] and "20 mm rotor" in err[0]
+
+
+def test_all_mechanisms_say_that_loads_only_set_the_fit(capsys) -> None:
+    """Issue 35 item 8: the moments are at the rotor's ball loads, not at --loads: said in
+    the notes of the JSON and of the text."""
+    base = ["rolling", "--radius", "20mm", "--materials", "steel,aluminium", "--loads",
+            "1N:100N:3", "--model", "all", "--grid", "32", "--no-microslip"]
+    assert main([*base, "--json"]) == 0
+    notes = " ".join(json.loads(capsys.readouterr().out)["notes"])
+    assert "--loads sweep (1-100 N, 3 loads)" in notes
+    # the paper's loads: 2 x 4.67 N symmetric, 3.97 and 5.36 N asymmetric
+    assert ("rotor's ball loads (symmetric 4.67 N; asymmetric 3.97 and 5.36 N), which "
+            "--loads does not set") in notes
+    assert main(base) == 0
+    cap = capsys.readouterr()
+    assert "which --loads does not set" in cap.out + cap.err

@@ -157,3 +157,116 @@ def test_ragged_table_at_any_frame_rate_and_step(tmp_path, capsys):
         ev = t["evidence"]
         assert ev["weak"] is False and ev["effect_evidence_delta_bic"] < 6
         assert 0 < ev["false_alarm_probability"] <= 1
+
+
+def test_verdict_json_permutation_p_over_the_group_labels(paper_run):
+    """Issue 35 item 1: the design's exact permutation p beside the model's, and the verdict
+    worded by the weaker. 3 + 3 launches have C(6, 3)/2 = 10 splits; p = rank / splits."""
+    import itertools
+    import math
+
+    _, rec, _ = paper_run
+    v = rec["verdict"]
+    pp = v["permutation_p"]
+    n = len({frozenset({c, frozenset(range(6)) - frozenset(c)})
+             for c in map(frozenset, itertools.combinations(range(6), 3))})
+    assert pp["n_splits"] == n == 10 and pp["exact"]
+    fs = [q["value"] for q in pp["f_by_split"]]
+    assert len(fs) == n and fs[0] == pytest.approx(v["shared_track"]["f_statistic"]["value"])
+    rank = 1 + sum(f > fs[0] for f in fs[1:])
+    assert pp["f_rank"] == rank == 1  # the real split has the largest F (17.4)
+    assert pp["shared_track_f"]["value"] == pytest.approx(rank / n) == pytest.approx(0.1)
+    assert pp["smallest_possible"]["value"] == pytest.approx(1 / n)
+    offs = [abs(q["value"]) for q in pp["offset_by_split"]]
+    assert pp["offset"]["value"] == pytest.approx(sum(o >= offs[0] for o in offs) / n)
+    weaker = max(pp["shared_track_f"]["value"], v["shared_track"]["p_value"]["value"])
+    assert pp["weaker_p"]["value"] == pytest.approx(weaker)
+    # the model's p alone would say 0.0083; the wording follows the design's 0.1
+    s = v["sentence"]
+    assert "exact permutation p = 0.1" in s and "not by the design alone" in s
+    assert "constant-offset model is rejected" in s
+    assert "session effect (run-in, lane, slope reset)" in s and "block" in s
+    assert not math.isnan(weaker)
+
+
+def test_verdict_json_arm_against_its_bound(paper_run):
+    """Issue 35 item 2: the friction arm, its bound and lambda there, from the record's own
+    rig and mean acceleration by the closed forms (Eq. 49; Hertz)."""
+    import math
+
+    _, rec, _ = paper_run
+    v = rec["verdict"]
+    rig = v["rig"]
+    assert rig["ball_radius"] == {"value": 0.02, "unit": "m"}
+    assert rig["mass"]["unit"] == "kg" and rig["axial_inertia"]["unit"] == "kg m^2"
+    loads = {g["name"]: [q["value"] for q in g["ball_loads"]] for g in rig["groups"]}
+    assert all(q["unit"] == "N" for g in rig["groups"] for q in g["ball_loads"])
+    m, r, j = rig["mass"]["value"], 0.02, rig["axial_inertia"]["value"]
+    inertia = j + m * r * r
+    eps = v["mean_acceleration"]["value"]
+    slope = v["lambda_assumptions"]["slope"]["value"]
+    sum_n = 0.5 * (sum(loads["s"]) + sum(loads["as"]))
+    arm = v["friction_arm"]["arm"]
+    assert arm["unit"] == "m" and v["friction_arm"]["lambda"] == 1
+    assert arm["value"] == pytest.approx((m * 9.80665 * r * math.sin(slope) - eps * inertia)
+                                         / sum_n, rel=1e-9)
+    e_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.33**2) / 70e9)
+    a = (3 * loads["s"][0] * r / (4 * e_star)) ** (1 / 3)
+    bound = v["arm_bound"]["radius"]
+    assert bound["value"] == pytest.approx(a, rel=1e-9) and bound["unit"] == "m"
+    basis = v["arm_bound"]["basis"]
+    assert "Hertz" in basis and "4.67 N" in basis
+    assert arm["value"] / a == pytest.approx(v["friction_arm"]["ratio_to_bound"]["value"]) \
+        and arm["value"] > 2 * a
+    lam = v["lambda_at_arm_bound"]
+    assert lam["lambda"]["value"] == pytest.approx(3.7, abs=0.1)
+    assert lam["lambda"]["ci_low"] >= 2.95
+    assert "lower bound" in lam["meaning"] and "not a confidence interval" in lam["meaning"]
+    assert lam["slope_lambda_infinite"]["value"] == pytest.approx(
+        math.asin(eps * inertia / (m * 9.80665 * r)), rel=1e-9)
+    s43 = v["slope_lambda_4_3"]["slope"]
+    assert s43["unit"] == "rad" and math.degrees(s43["ci_low"]) > 4
+
+
+def test_verdict_json_four_differences_in_one_table(paper_run):
+    """Issue 35 item 4: the four differences, their models, whether each fits, the one the
+    verdict uses; the two misread rules side by side (as2 k = 24, frame 951, is the
+    per-test analysis' alone)."""
+    _, rec, _ = paper_run
+    rows = rec["verdict"]["differences"]["rows"]
+    assert [r["model"] for r in rows] == ["paper", "const", "joint", "position"]
+    vals = {r["model"]: r["difference"]["value"] for r in rows}
+    # the paper's parabolas: 2 (0.9506 - 0.8211) rad/s² (its phi_s and phi_a, swapped labels)
+    assert vals["paper"] == pytest.approx(2 * (0.9506 - 0.8211), abs=5e-4)
+    assert vals["const"] == pytest.approx(0.204, abs=5e-4)
+    assert vals["joint"] == pytest.approx(0.200, abs=5e-4)
+    assert vals["position"] == pytest.approx(-0.006, abs=5e-4)
+    assert [r["used_by_verdict"] for r in rows] == [False, False, True, False]
+    assert not any(r["model_fits"] for r in rows)
+    m = rec["verdict"]["misread_rules"]
+    joint = {(x["column"], x["k"]) for x in m["joint"]}
+    per = {(x["column"], x["k"]) for x in m["per_test"]}
+    assert ("as2", 24) in per - joint and joint <= per
+    only = {(x["column"], x["k"]) for x in m["only_per_test"]}
+    assert only == per - joint
+    assert m["joint_without_both"]["shared_track_outcome_unchanged"] is True
+
+
+def test_differences_on_a_clean_table_read_the_constant_acceleration_as_fitting(tmp_path,
+                                                                                capsys):
+    """Simulated launches at constant acceleration (no effect): the constant-acceleration
+    rows fit, and the study model (const) is not listed twice."""
+    from contact.rotor.simulator import simulate_random_run
+
+    fr = [simulate_random_run(40 + i, "none", n_misread=0).frames for i in range(5)]
+    rows = ["k\tx1\tx2\ty1\ty2\ty3"] + ["\t".join([str(k)] + [str(int(f[k - 1])) for f in fr])
+                                        for k in range(1, len(fr[0]) + 1)]
+    table = tmp_path / "t.tsv"
+    table.write_text("\n".join(rows) + "\n")
+    assert main(["rotor", str(table), "--json"]) == 0
+    v = json.loads(capsys.readouterr().out)["verdict"]
+    got = {r["model"]: r for r in v["differences"]["rows"]}
+    assert list(got) == ["paper", "const", "joint"]
+    assert got["const"]["model_fits"] and got["paper"]["model_fits"]
+    assert v["permutation_p"]["n_splits"] == 10  # C(5, 2): groups of 2 and 3
+    assert v["rig"] is None and v["friction_arm"] is None

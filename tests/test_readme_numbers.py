@@ -134,3 +134,73 @@ def test_quickstart_figures():
     m = re.search(r'or model="plastic"; the default loads: (\d+)', doc)
     default = inspect.signature(rolling_resistance).parameters["loads"].default
     assert m and default.endswith(f":{m.group(1)}")
+
+
+def test_rotor_paragraph_quotes_the_verdict_with_its_design_p_and_arm_bound():
+    """The paragraph on the paper's question (issue 35): the critical F, the calibration's
+    floor, the trend and the frames-only windows, the design's permutation p (10 splits of
+    six launches into 3 + 3: C(6, 3) / 2, the real split the largest, so p = 1/10), and the
+    friction arm against the Hertz radius, each checked against the verdict and the arm and
+    radius against their closed forms."""
+    import math
+
+    from contact.materials import composite_modulus, material
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+
+    v = paper_verdict()
+    m = quoted(r"critical value of (\d\.\d\d) calibrated by simulation at (\d) % false alarms, "
+               r"calibrated p ≤ (0\.\d+), the calibration's floor")
+    assert float(m.group(1)) == round(v.f_critical, 2) and m.group(2) == "2"
+    floor = float(m.group(3))
+    assert v.shared_track_p <= floor and abs(v.shared_track_p - floor) < 5e-5
+    assert "not the design's" in README and "permutation p is 0.1" in README
+    m = quoted(r"a trend of s − as of \+(\d\.\d\d) ± (\d\.\d) rad/s² per m in the joint model; "
+               r"read off the frames alone, in (\d) windows of (\d+) mm, no window's difference "
+               r"exceeds its two standard errors")
+    d = v.difference
+    assert float(m.group(1)) == round(d.trend, 2) and float(m.group(2)) == round(
+        d.trend_stderr, 1)
+    assert int(m.group(3)) == d.windows.difference.size
+    assert int(m.group(4)) == round(d.windows.window_length * 1e3)
+    assert not d.windows.resolved.any()
+    m = quoted(r"the groups' tracks differing more than the launches' within a group do "
+               r"\(nominal p = (0\.\d+) against a critical (0\.\d+)\)")
+    assert v.lanes.groups_differ
+    assert float(m.group(1)) == float(f"{v.lanes.p_nominal:.2g}")
+    assert float(m.group(2)) == float(f"{v.lanes.p_critical:.2g}")
+    m = quoted(r"of the (\d+) ways to split the six launches into two groups of three the real "
+               r"split has the largest F, so the design's exact permutation p is (0\.\d)")
+    splits = math.comb(6, 3) // 2
+    assert int(m.group(1)) == splits == v.permutation.n_splits
+    assert v.permutation.f_rank == 1 and float(m.group(2)) == 1 / splits == v.permutation.f_p
+    m = quoted(r"at 1° the friction arm s_r = M_r/N would be (\d\.\d+) mm, (\d\.\d) times the "
+               r"Hertz contact radius \((\d+) µm\).*?the offset needs λ ≥ (\d\.\d+) "
+               r"\((\d\.\d+) to (\d\.\d+) over its interval.*?only with s_r = (\d\.\d+) mm on a "
+               r"slope of (\d\.\d+)°")
+    rig, b = v.rig, v.arm
+    # closed forms: a = (3 N R / (4 E*))^(1/3) at the symmetric ball load; the torque of both
+    # contacts M g R sin(1 deg) - eps_mean (J + M R^2) shared by the loads of one rotor
+    e_star = composite_modulus(material("steel"), material("aluminium"))
+    n_sym = 0.5 * sum(rig.group("s").ball_loads)
+    a = (3 * n_sym * rig.ball_radius / (4 * e_star)) ** (1 / 3)
+    torque = (rig.mass * 9.80665 * rig.ball_radius * math.sin(math.radians(1.0))
+              - v.mean_acceleration * rig.rolling_inertia)
+    arm = torque / sum(rig.group("s").ball_loads)
+    assert float(m.group(1)) == round(arm * 1e3, 3) == round(b.friction_arm * 1e3, 3)
+    assert float(m.group(2)) == round(arm / a, 1)
+    assert int(m.group(3)) == round(a * 1e6) == round(b.arm_bound * 1e6)
+    assert [float(g) for g in m.groups()[3:6]] == [round(b.lambda_at_bound, 2),
+                                                    round(b.lambda_low, 2),
+                                                    round(b.lambda_high, 1)]
+    assert float(m.group(7)) == round(b.arm_4_3 * 1e3, 2)
+    assert float(m.group(8)) == round(math.degrees(b.slope_4_3), 2)
+    from contact.rotor.sensitivity import LARGER_CONTRAST, settling_experiment
+
+    m = quoted(r"With s_r at the bound, telling 4/3 from 1 would take (\d+) launches per group "
+               r"on these loads, and (\d+) with a larger load contrast \((\d\.\d) and "
+               r"(\d\.\d) N\)")
+    e = settling_experiment(v)
+    at_bound = [r for r in e.rows if r.arm == b.arm_bound]
+    assert [int(m.group(1)), int(m.group(2))] == [r.launches for r in at_bound]
+    assert sorted([float(m.group(3)), float(m.group(4))]) == sorted(LARGER_CONTRAST)
+    assert "swaps the labels of its two parabolas" in README

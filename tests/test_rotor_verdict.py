@@ -240,3 +240,21 @@ def test_report_puts_the_same_verdict_first() -> None:
     page = html.unescape(render_html([], rotor=v))
     assert v.sentence in page
     assert page.index("The paper's question") < page.index('class="overview"')
+
+
+def test_report_keeps_the_p_floor_and_the_lambda_interval() -> None:
+    """The report's table says the calibrated p as the verdict does (<= the calibration's
+    floor, never 0.00826) and the lambda needed with its interval, conditional on the
+    slope."""
+    import html
+
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.report_rotor import rotor_html
+
+    v = paper_verdict()
+    page = html.unescape(rotor_html(v))
+    assert "0.00826" not in page
+    assert "calibrated p <= 0.0083 (the calibration's floor)" in page
+    e = v.exponent
+    assert f"{e.value:.3g} [{e.ci_low:.3g}, {e.ci_high:.3g}]" in page
+    assert "conditional on the slope" in page

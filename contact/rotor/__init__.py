@@ -17,6 +17,11 @@ One module per concept:
 ``misreads``     misread-row detection
 ``analysis``     the analysis of one test (one column)
 ``groups``       groups of tests and the whole table
+``arm``          the friction arm against the contact radius: the least lambda an offset needs
+``permutation``  the design's exact permutation tests over the launches' group labels
+``reconcile``    the four differences between the groups, and the two misread rules
+``lanes``        the lane test: the groups' tracks against the launches' own (lanes in the null)
+``windows``      model-free windowed accelerations from the frames alone
 
 The rotor study imports nothing from the contact-mechanics modules but the error family and
 the input checks, and nothing from ``surfmet``.

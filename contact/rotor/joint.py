@@ -30,7 +30,8 @@ from contact.rotor.noise import Noise, estimate_noise, quantisation_sigma
 from contact.rotor.track import TrackLayout, track_acceleration, track_times
 
 __all__ = ["DEGREES", "GroupOffset", "JointFit", "TableData", "fit_table", "group_offset",
-           "local_accelerations", "prepare_table", "shared_track_f"]
+           "groupwise_fit", "lane_f", "launchwise_fit", "local_accelerations", "prepare_table",
+           "shared_track_f"]
 
 DEGREES = (1, 2, 3, 4, 5, 6, 8)
 """Track degrees the BIC chooses among (1: a linear trend of the slope; more: waviness)."""
@@ -226,9 +227,12 @@ def _u_of(fit: JointFit, launch: int, s: np.ndarray) -> np.ndarray:
     return np.interp(s, grid, u)
 
 
-def fit_table(data: TableData, degree: int | None = None) -> tuple[JointFit, JointFit]:
+def fit_table(data: TableData, degree: int | None = None,
+              exclude: np.ndarray | None = None) -> tuple[JointFit, JointFit]:
     """The shared-track fit of the BIC's degree (or ``degree``) and the group-specific fit
-    of the same degree, with the noise and misread rows of a flexible robust fit."""
+    of the same degree, with the noise and misread rows of a flexible robust fit;
+    ``exclude`` (launches, K; True: leave out) leaves further rows out (another misread
+    rule's, to see what the rule changes)."""
     n_groups = len(data.group_names)
     span = data.span
     sq = quantisation_sigma(data.fps)
@@ -239,6 +243,8 @@ def fit_table(data: TableData, degree: int | None = None) -> tuple[JointFit, Joi
     rough = _fit(data, flex, np.full(data.times.shape, sq), data.mask,
                  _start(data, flex, first), loss="soft_l1")
     sigma, used = _noise_and_misreads(data, rough)
+    if exclude is not None:
+        used = used & ~np.asarray(exclude, dtype=bool)
     fits: list[JointFit] = []
     prev = first
     for m in (DEGREES if degree is None else (degree,)):
@@ -246,9 +252,16 @@ def fit_table(data: TableData, degree: int | None = None) -> tuple[JointFit, Joi
         prev = _fit(data, lay, sigma, used, _start(data, lay, prev))
         fits.append(prev)
     shared = min(fits, key=lambda f: f.bic)
-    lay_g = TrackLayout(span, shared.layout.degree, data.group_of_launch, n_groups)
-    groupwise = _fit(data, lay_g, sigma, used, _start(data, lay_g, shared))
-    return shared, groupwise
+    return shared, groupwise_fit(data, shared, data.group_of_launch, n_groups)
+
+
+def groupwise_fit(data: TableData, shared: JointFit, group_of_launch: np.ndarray,
+                  n_groups: int) -> JointFit:
+    """Group-specific tracks of the shared fit's degree for the labels ``group_of_launch``
+    (the table's own, or a relabelling for a permutation test), with the shared fit's
+    noise and misread rows: the labels are the only thing that changes."""
+    lay = TrackLayout(data.span, shared.layout.degree, np.asarray(group_of_launch), n_groups)
+    return _fit(data, lay, shared.sigma, shared.used, _start(data, lay, shared))
 
 
 def group_offset(data: TableData, fit: JointFit, minuend: int = 1, subtrahend: int = 0,
@@ -287,6 +300,27 @@ def shared_track_f(shared: JointFit, groupwise: JointFit) -> float:
     if q <= 0 or dof <= 0 or groupwise.chi2 <= 0:
         return math.nan
     return float(max(shared.chi2 - groupwise.chi2, 0.0) / q / (groupwise.chi2 / dof))
+
+
+def launchwise_fit(data: TableData, shared: JointFit) -> JointFit:
+    """A track of the shared fit's degree for every launch (each on a lane of its own), with
+    the shared fit's noise and misread rows."""
+    n = data.group_of_launch.size
+    return groupwise_fit(data, shared, np.arange(n), n)
+
+
+def lane_f(shared: JointFit, groupwise: JointFit, launchwise: JointFit) -> float:
+    """Do the groups' tracks differ more than the launches' within a group do? The drop of
+    chi² from one shared track to group-specific ones per added parameter, over the drop from
+    group-specific tracks to launch-specific ones per added parameter: launches differing
+    among themselves (lanes) raise both alike, so they are not read as groups differing
+    (its null distribution calibrated by simulation with lanes in the null)."""
+    q_g = groupwise.layout.n_params - shared.layout.n_params
+    q_l = launchwise.layout.n_params - groupwise.layout.n_params
+    within = max(groupwise.chi2 - launchwise.chi2, 0.0)
+    if q_g <= 0 or q_l <= 0 or within <= 0:
+        return math.nan
+    return float(max(shared.chi2 - groupwise.chi2, 0.0) / q_g / (within / q_l))
 
 
 def local_accelerations(data: TableData, fit: JointFit, gap: int = 2

@@ -12,7 +12,7 @@ slopes of 0.6-1.0 degrees and the scatter Table 3 shows.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -20,7 +20,8 @@ from contact.rotor.mechanics import G_STANDARD, MassProperties, mass_properties
 from contact.rotor.paper import FPS, MARK_STEP
 from contact.rotor.simulator import HiddenEffects, simulate_rotor
 
-__all__ = ["PlateTrack", "Scenario", "draw_scenario", "group_loads", "simulate_table"]
+__all__ = ["LANE_PRIOR", "LanePrior", "PlateTrack", "Scenario", "draw_lanes", "draw_scenario",
+           "group_loads", "lane_track", "simulate_table"]
 
 GROUPS = {"as": "end", "s": "symmetric"}
 """The paper's two collar positions, as :func:`~contact.rotor.mechanics.mass_properties`
@@ -40,10 +41,42 @@ class PlateTrack:
 
 
 @dataclass(frozen=True)
+class LanePrior:
+    """Lane-to-lane variation: each launch rolls on a lane of its own, as a rotor released a
+    few mm aside sees the plate. Its lane's wave is the table's wave shifted by a phase
+    uniform in ``+-phase_spread`` (rad) with its amplitude scaled by a factor uniform in
+    ``1 +- amplitude_spread``, and its slope trend changed by a normal ``trend_sd`` (rad/s² of
+    acceleration per rad of turn). ``phase_spread``, ``amplitude_spread`` and ``trend_sd`` are
+    themselves drawn per table, uniform in the given ranges."""
+
+    phase_spread: tuple[float, float] = (0.3, math.pi)
+    amplitude_spread: tuple[float, float] = (0.0, 0.5)
+    trend_sd: tuple[float, float] = (0.0, 0.01)
+    wave_amplitude: tuple[float, float] = (0.1, 0.4)
+
+
+LANE_PRIOR = LanePrior()
+"""The calibration's stated prior for lane-to-lane variation (``benchmarks/
+rotor_verdict_calibration.py``): up to half a wave period of phase, half the amplitude and
+0.01 rad/s² per rad of trend between lanes, on a wave of 0.1-0.4 rad/s²."""
+
+
+@dataclass(frozen=True)
+class Lanes:
+    """One table's draw from a :class:`LanePrior`: the half-widths and sd applied to each
+    launch."""
+
+    phase_spread: float
+    amplitude_spread: float
+    trend_sd: float
+
+
+@dataclass(frozen=True)
 class Scenario:
     """One simulated table's truth: per group its track and rolling-friction law
     (``s_r``, ``lam``), the launch spread ``launch_sd`` (rad/s²), the reading scatter
-    ``reading_sd`` (rad) and the launches per group."""
+    ``reading_sd`` (rad) and the launches per group; ``lanes``: each launch on a lane of
+    its own (None: every launch of a group on the group's track)."""
 
     tracks: dict[str, PlateTrack]
     s_r: dict[str, float]
@@ -53,6 +86,7 @@ class Scenario:
     launches: int = 3
     n_marks: int = 25
     misreads: bool = True
+    lanes: Lanes | None = None
 
 
 def _props(group: str) -> MassProperties:
@@ -66,13 +100,35 @@ def group_loads(group: str, g: float = G_STANDARD) -> tuple[float, float]:
     return mg * p.d2 / (p.d1 + p.d2), mg * p.d1 / (p.d1 + p.d2)
 
 
+def draw_lanes(rng: np.random.Generator, prior: LanePrior = LANE_PRIOR) -> Lanes:
+    """One table's lane-to-lane variation from ``prior``."""
+    return Lanes(rng.uniform(*prior.phase_spread), rng.uniform(*prior.amplitude_spread),
+                 rng.uniform(*prior.trend_sd))
+
+
+def lane_track(track: PlateTrack, lanes: Lanes, rng: np.random.Generator) -> PlateTrack:
+    """A launch's own lane: ``track`` with its wave shifted and scaled and its trend
+    changed as ``lanes`` says."""
+    p = _props("s")
+    to_kappa = p.rolling_inertia / (p.mass * G_STANDARD * p.ball_radius**2)
+    return replace(
+        track, wave_phase=track.wave_phase + rng.uniform(-lanes.phase_spread,
+                                                         lanes.phase_spread),
+        wave_amplitude=track.wave_amplitude * rng.uniform(1 - lanes.amplitude_spread,
+                                                          1 + lanes.amplitude_spread),
+        slope_gradient=track.slope_gradient + lanes.trend_sd * rng.standard_normal() * to_kappa)
+
+
 def draw_scenario(rng: np.random.Generator, *, offset: float = 0.0, track_differs: bool = False,
-                  lam: float = 1.0, slope_deg: tuple[float, float] = (0.6, 1.0)) -> Scenario:
+                  lam: float = 1.0, slope_deg: tuple[float, float] = (0.6, 1.0),
+                  lanes: LanePrior | None = None) -> Scenario:
     """A table from the calibration's prior.
 
     The symmetric group's acceleration exceeds the asymmetric one's by ``offset`` rad/s²
     (through its rolling-friction coefficient); ``track_differs`` gives the groups tracks of
-    their own (another trend and another wave); ``lam`` the exponent of ``M_r = s_r N**lam``.
+    their own (another trend and another wave); ``lam`` the exponent of ``M_r = s_r N**lam``;
+    ``lanes``: each launch on a lane of its own, drawn from this prior (its wave amplitude
+    range replaces the plate's).
     """
     p = _props("s")
     j = p.rolling_inertia
@@ -87,13 +143,16 @@ def draw_scenario(rng: np.random.Generator, *, offset: float = 0.0, track_differ
     # eta (rad/s² per rad of turn) = M g R^2 kappa / (J + M R^2)
     to_kappa = j / (p.mass * G_STANDARD * p.ball_radius**2)
 
+    wave = (0.0, 0.4) if lanes is None else lanes.wave_amplitude
+
     def track() -> PlateTrack:
-        return PlateTrack(slope, rng.uniform(-0.02, 0.06) * to_kappa, rng.uniform(0.0, 0.4),
+        return PlateTrack(slope, rng.uniform(-0.02, 0.06) * to_kappa, rng.uniform(*wave),
                           rng.uniform(1.5, 6.0) * 2 * math.pi, rng.uniform(0, 2 * math.pi))
 
     shared = track()
     tracks = {"as": shared, "s": track() if track_differs else shared}
-    return Scenario(tracks, s_r, lam, rng.uniform(0.01, 0.06), rng.uniform(0.02, 0.08))
+    return Scenario(tracks, s_r, lam, rng.uniform(0.01, 0.06), rng.uniform(0.02, 0.08),
+                    lanes=None if lanes is None else draw_lanes(rng, lanes))
 
 
 def simulate_table(scn: Scenario, rng: np.random.Generator, fps: float = FPS,
@@ -105,6 +164,8 @@ def simulate_table(scn: Scenario, rng: np.random.Generator, fps: float = FPS,
         n = group_loads(group)
         tr = scn.tracks[group]
         for i in range(1, scn.launches + 1):
+            if scn.lanes is not None:
+                tr = lane_track(scn.tracks[group], scn.lanes, rng)
             d_eps = scn.launch_sd * rng.standard_normal()
             s_r = scn.s_r[group] + d_eps * p.rolling_inertia / (n[0] ** scn.lam + n[1] ** scn.lam)
             mis = ()

@@ -31,6 +31,7 @@ import numpy as np
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
+from contact.rotor.arm import ArmBound, arm_bound
 from contact.rotor.confounds import Confound, confound_budget
 from contact.rotor.joint import (
     GroupOffset,
@@ -41,7 +42,9 @@ from contact.rotor.joint import (
     prepare_table,
     shared_track_f,
 )
+from contact.rotor.lanes import LaneTest, lane_test, lane_words
 from contact.rotor.mechanics import G_STANDARD
+from contact.rotor.permutation import PermutationTest, permutation_test
 from contact.rotor.rig import (
     UPPER_SLOPE,
     Rig,
@@ -51,6 +54,7 @@ from contact.rotor.rig import (
     solve_lambda,
 )
 from contact.rotor.track import track_acceleration, track_basis
+from contact.rotor.windows import WindowedDifference, windowed_difference
 
 __all__ = ["CODES", "ExponentNeeded", "RotorVerdict", "TrackDifference", "calibration",
            "judge_table"]
@@ -68,9 +72,14 @@ def calibration() -> dict:
 @dataclass(frozen=True)
 class TrackDifference:
     """How the group-specific tracks differ (minuend - subtrahend): ``trend`` (rad/s² per m
-    of track), ``waviness_rms`` (rad/s², what the trend leaves), ``regions`` ((start, end) m
-    of track where the difference exceeds two standard errors), ``start``/``end`` its value at
-    the release and the last mark (rad/s²), ``length`` the track covered (m)."""
+    of track, the straight line through the joint model's difference) with its
+    ``trend_stderr``, ``waviness_rms`` (rad/s², what the trend leaves), ``length`` the track
+    covered (m), and ``windows``: the model-free windowed difference
+    (:mod:`contact.rotor.windows`) beside it.
+
+    ``start``/``end`` (the polynomial's value at the release and the last mark, rad/s²) and
+    ``regions`` ((start, end) m where it exceeds two standard errors) are end values of a
+    polynomial, where it is least constrained: kept for the record, never the headline."""
 
     trend: float
     waviness_rms: float
@@ -78,6 +87,10 @@ class TrackDifference:
     start: float
     end: float
     length: float
+    trend_stderr: float = math.nan
+    windows: WindowedDifference | None = None
+    curve: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+    """``(x m, difference rad/s², stderr rad/s²)`` along the track: the figure's band."""
 
 
 @dataclass(frozen=True)
@@ -116,6 +129,17 @@ class RotorVerdict:
     shared: JointFit
     groupwise: JointFit
     rig: Rig | None
+    permutation: PermutationTest | None = None
+    arm: ArmBound | None = None
+    lanes: LaneTest | None = None
+
+    @property
+    def weaker_p(self) -> float:
+        """The weaker of the model-calibrated and the design's permutation p of the shared
+        track test: the one the wording follows."""
+        if self.permutation is None or not math.isfinite(self.permutation.f_p):
+            return self.shared_track_p
+        return max(self.shared_track_p, self.permutation.f_p)
 
     @property
     def misread_rows(self) -> tuple[tuple[str, int], ...]:
@@ -155,6 +179,9 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
     x = s * radius
     coef = np.polyfit(x, d, 1)
     wav = float(np.sqrt(np.mean((d - np.polyval(coef, x)) ** 2)))
+    # the trend is a linear functional of the parameters: its row of the line's pseudo-inverse
+    slope_row = np.linalg.pinv(np.column_stack([x, np.ones_like(x)]))[0] @ grad
+    trend_se = math.sqrt(max(float(slope_row @ fit.cov @ slope_row) * scale, 0.0))
     out = np.abs(d) > 2 * se
     regions, start = [], None
     for i, flag in enumerate(out):
@@ -165,7 +192,26 @@ def _difference(data: TableData, fit: JointFit, mi: int, si: int,
             regions.append((float(x[start]), float(x[end])))
             start = None
     return TrackDifference(float(coef[0]), wav, tuple(regions), float(d[0]), float(d[-1]),
-                           float(x[-1]))
+                           float(x[-1]), trend_se, frame_windows(data, fit, mi, si, radius),
+                           (x, d, se))
+
+
+WINDOWS = 4
+"""Windows the track is cut into for the model-free accelerations (six marks each on the
+paper's 25-row table: three parameters and three degrees of freedom per launch)."""
+
+
+def frame_windows(data: TableData, fit: JointFit, mi: int, si: int, radius: float,
+                  n_windows: int = WINDOWS) -> WindowedDifference:
+    """The model-free windowed difference of groups ``mi - si`` from the frames alone, each
+    launch's rows placed on the track by ``fit``'s release point (its used rows, their
+    reading noise)."""
+    _, _, phi0, _ = fit.layout.split(fit.x)
+    rows = [np.flatnonzero(fit.used[i]) for i in range(data.times.shape[0])]
+    return windowed_difference([data.angles[i, r] - phi0[i] for i, r in enumerate(rows)],
+                               [data.times[i, r] for i, r in enumerate(rows)],
+                               [fit.sigma[i, r] for i, r in enumerate(rows)],
+                               data.group_of_launch, mi, si, radius, n_windows)
 
 
 def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
@@ -184,10 +230,12 @@ def _exponent(rig: Rig, off: GroupOffset, mean_acc: float) -> ExponentNeeded:
 def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Sequence[str]],
                 *, fps: float, step: float, k: Sequence[int] | None = None,
                 rig: Rig | None = None,
-                mechanisms: Mapping[str, float] | None = None) -> RotorVerdict:
+                mechanisms: Mapping[str, float] | None = None,
+                permutation: bool = True) -> RotorVerdict:
     """The verdict on a table: ``groups`` ({name: columns}, two groups; the offset is the
-    second minus the first), ``rig`` for the exponent and the confounds, ``mechanisms``
-    ({name: implied offset, rad/s²}) to put into the confound budget."""
+    second minus the first), ``rig`` for the exponent, the arm bound and the confounds,
+    ``mechanisms`` ({name: implied offset, rad/s²}) to put into the confound budget;
+    ``permutation``: also the design's exact permutation test (a refit per split)."""
     data = prepare_table(columns, groups, fps, step, k)
     if len(data.group_names) != 2:
         raise ContactInputError(f"the verdict compares two groups; the table has "
@@ -205,9 +253,14 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
     prof = track_acceleration(s, beta[0], shared.layout.span)
     mean_acc = float(np.mean(delta) + np.mean(prof))
     t_crit = float(student_t.ppf(0.5 + cal["offset_test"]["t_level"] / 2, max(off.dof, 1)))
-    code = "undetermined" if not adequate else (
+    lanes = lane_test(shared, groupwise, data)
+    # launches on lanes of their own are not groups differing: undetermined only when the
+    # groups' tracks differ beyond the noise and beyond the launches' own variation
+    code = "undetermined" if not adequate and lanes.groups_differ else (
         "difference" if abs(off.t_statistic) > t_crit else "no_difference")
     exponent = _exponent(rig, off, mean_acc) if rig is not None else None
+    arm = None if rig is None else arm_bound(rig, off.minuend, off.subtrahend, exponent.slope,
+                                             mean_acc, off.value, off.ci_low, off.ci_high)
     confounds: tuple[Confound, ...] = ()
     if rig is not None:
         smallest = 0.0 if off.ci_low <= 0 <= off.ci_high else min(abs(off.ci_low),
@@ -215,26 +268,87 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
         confounds = confound_budget(rig, off.value, max(smallest, 1e-300), exponent.slope,
                                     mean_acc, float(np.ptp(prof)), float(np.max(s)),
                                     off.minuend, off.subtrahend, mechanisms)
-    sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig)
+    perm = permutation_test(data, shared, groupwise) if permutation else None
+    sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig, perm, arm)
+    if not adequate:
+        body = sentence.split(": ", 1)[1]
+        body = body.replace("the groups agree on a shared track", "the groups' offsets agree")
+        body = body.replace("a constant offset on a shared track",
+                            "a constant offset between the groups")
+        sentence = lane_words(code, lanes, f) + body
     return RotorVerdict(code, sentence, off, adequate, _p_value(f), f, f_crit, diff, exponent,
-                        confounds, mean_acc, data, shared, groupwise, rig)
+                        confounds, mean_acc, data, shared, groupwise, rig, perm, arm, lanes)
+
+
+BLOCK_CAVEAT = ("with each group filmed as one block (the groups one after the other), a "
+                "session effect (run-in, lane, slope reset) cannot be told from the collar's "
+                "position")
+"""What a block design cannot separate (said wherever the groups are compared)."""
+
+
+def _design_p(p: float, perm: PermutationTest, what: str) -> str:
+    smallest = " (the smallest the design allows)" if p <= perm.smallest_p * (1 + 1e-9) else ""
+    return (f"the design's exact permutation p = {p:.2g}{smallest} for the {what} over the "
+            f"{perm.n_splits} splits of the launches into groups"
+            f"{'' if perm.exact else ' (sampled)'}")
+
+
+def _level_text(level: float) -> str:
+    return f"{level * 100:g} %"
+
+
+def _shared_track_clause(f: float, p: float, perm: PermutationTest | None) -> str:
+    """The shared-track test in words that follow the weaker of the model's calibrated p and
+    the design's permutation p."""
+    level = float(calibration()["shared_track_test"]["level"])
+    model = f"F = {f:.1f}, calibrated p {_p_text(p)}"
+    if perm is None or not math.isfinite(perm.f_p):
+        return f"the paper's constant-offset model is rejected: no shared track explains both " \
+               f"groups ({model})"
+    design = _design_p(perm.f_p, perm, "shared-track F")
+    if max(p, perm.f_p) <= level:
+        return (f"the paper's constant-offset model is rejected: no shared track explains both "
+                f"groups ({model}; {design})")
+    return (f"the paper's constant-offset model is rejected by the joint model, not by the "
+            f"design alone: no shared track explains both groups under the model ({model}), "
+            f"but {design}, so the launches' own evidence cannot reach {_level_text(level)}")
+
+
+def window_clause(w: WindowedDifference | None) -> str:
+    """What the frames alone say (the model-free windows), and where they cannot resolve the
+    difference."""
+    if w is None or not np.any(np.isfinite(w.difference)):
+        return ""
+    ok = np.isfinite(w.stderr)
+    band = f"{2 * np.min(w.stderr[ok]):#.2g}-{2 * np.max(w.stderr[ok]):#.2g} rad/s²"
+    head = (f"; read off the frames alone ({w.difference.size} windows of "
+            f"{w.window_length * 1e3:.0f} mm, no track model) the trend is "
+            f"{w.trend:+#.2g} ± {w.trend_stderr:#.2g} rad/s² per m")
+    res = w.resolved
+    if not np.any(res):
+        return (f"{head} and no window's difference exceeds its two standard errors "
+                f"({band}): the frames alone cannot resolve the difference")
+    where = ", ".join(f"{(c - w.window_length / 2) * 1e3:.0f}-"
+                      f"{(c + w.window_length / 2) * 1e3:.0f} mm" for c in w.centres[res])
+    return (f"{head}; the difference exceeds two standard errors at {where} only (two "
+            f"standard errors {band}): the frames cannot resolve it elsewhere")
 
 
 def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDifference | None,
-              exponent: ExponentNeeded | None, rig: Rig | None) -> str:
+              exponent: ExponentNeeded | None, rig: Rig | None,
+              perm: PermutationTest | None = None, arm: ArmBound | None = None) -> str:
     pair = f"{off.minuend} - {off.subtrahend}"
     ci = f"[{off.ci_low:+.3f}, {off.ci_high:+.3f}] rad/s² ({off.level:.0%})"
     if code == "undetermined":
-        where = ", ".join(f"{a * 1e3:.0f}-{b * 1e3:.0f} mm" for a, b in diff.regions) or "nowhere"
         length = diff.length
         kind = "trend" if abs(diff.trend) * length > 2 * diff.waviness_rms else "waviness"
-        return (f"undetermined: no shared track explains both groups (F = {f:.1f}, calibrated "
-                f"p {_p_text(p)}); the groups' accelerations differ by a {kind} along the track "
-                f"({pair}: {diff.start:+.3f} rad/s² at the release, trend {diff.trend:+.3g} "
-                f"rad/s² per m over {length * 1e3:.0f} mm, waviness {diff.waviness_rms:.3f} "
-                f"rad/s² rms), beyond two standard errors at {where} of track; they did not "
-                f"run under the same conditions, so the offset {off.value:+.3f} rad/s² cannot "
-                f"be laid to rolling friction.")
+        return (f"undetermined: {_shared_track_clause(f, p, perm)}; the groups' accelerations "
+                f"differ by a {kind} along the track "
+                f"({pair}: trend {diff.trend:+.3g} ± {diff.trend_stderr:#.2g} rad/s² per m over "
+                f"{length * 1e3:.0f} mm in the joint model, waviness {diff.waviness_rms:.3f} "
+                f"rad/s² rms){window_clause(diff.windows)}; "
+                f"{BLOCK_CAVEAT}, so the offset {off.value:+.3f} rad/s² cannot be laid to "
+                f"rolling friction.")
     if code == "no_difference":
         tail = ""
         if exponent is not None:
@@ -245,6 +359,11 @@ def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDiffer
                 f"rad/s², {ci}): nothing here contradicts lambda = 1.{tail}")
     text = (f"difference: a constant offset on a shared track, {pair} = {off.value:+.3f} rad/s² "
             f"{ci}")
+    if perm is not None:
+        level = float(calibration()["shared_track_test"]["level"])
+        text += f" ({_design_p(perm.offset_p, perm, 'offset')}"
+        text += (f"; the design alone cannot show it at {_level_text(level)})"
+                 if perm.offset_p > level else ")")
     if rig is not None and exponent is not None:
         torque = off.value * rig.rolling_inertia
         dslope = torque / (rig.mass * G_STANDARD * rig.ball_radius)
@@ -253,4 +372,7 @@ def _sentence(code: str, off: GroupOffset, f: float, p: float, diff: TrackDiffer
         text += (f", a torque of {torque:+.3g} N m or a slope change of "
                  f"{math.degrees(dslope):+.3g} deg; at a slope of "
                  f"{math.degrees(exponent.slope):.3g} deg ({exponent.slope_basis}) it needs {lam}")
-    return text + "."
+        if arm is not None and math.isfinite(arm.lambda_at_bound):
+            text += (f"; with the friction arm at its bound (the contact radius "
+                     f"{arm.arm_bound * 1e6:.0f} µm) at least lambda = {arm.lambda_at_bound:.3g}")
+    return text + f"; {BLOCK_CAVEAT}."

@@ -79,7 +79,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                                        "all"),
                    default="hysteresis", help="dissipation model (default hysteresis; "
                    "microslip: frictional slip of dissimilar bodies, contact.tangential; "
-                   "all: the mechanisms side by side at the rotor's ball loads)")
+                   "all: the mechanisms side by side at the rotor's ball loads, with "
+                   "the rotor's --radius 20mm; --loads sets only the lambda fit)")
     p.add_argument("--traction-ratio", type=float, default=0.0, metavar="T",
                    help="microslip: tangential force over normal force opposing the rolling "
                    "(e.g. the rotor's acceleration; default 0, free rolling)")

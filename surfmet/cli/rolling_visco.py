@@ -131,7 +131,11 @@ def _print_all(rep: Any) -> None:
     v = rep.verdict
     o = v.offset
     print(f"VERDICT            {v.sentence}")
-    print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s², "
+    from surfmet.mechanics.rotor_sensitivity import label_swap_text
+
+    if label_swap_text(v):
+        print(f"labels             {label_swap_text(v)}")
+    print(f"group offset       {o.minuend} - {o.subtrahend} = {o.value:+.4f} rad/s²,, "
           f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (joint model of Table 3, "
           "surfmet rotor paper2022)")
     print(f"{'mechanism':>19}{'M_r(Ns)':>12}{'M_r(N1)':>12}{'M_r(N2)':>12}{'2nd diff':>12}"

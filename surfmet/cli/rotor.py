@@ -18,6 +18,7 @@ from typing import Any
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.rotor_argument import differences_lines
 from surfmet.mechanics.rotor_verdict import (
     table_verdict,
     verdict_figure,
@@ -473,11 +474,13 @@ def run(args: argparse.Namespace) -> int:
             verdict_figure(verdict, vpath)
             log(f"verdict figure written to {vpath}")
     if args.json:
-        emit_json({"verdict": None if verdict is None else verdict_record(verdict),
+        emit_json({"verdict": None if verdict is None else verdict_record(verdict, an),
                    **analysis_record(an, source)})
     else:
         if verdict is not None:
             print("\n".join(verdict_lines(verdict)))
+            print()
+            print("\n".join(differences_lines(verdict, an)))
             print()
         _print_summary(an, source)
     return 0

@@ -221,6 +221,8 @@ def _verdict(t: _Text, summary: dict[str, Any]) -> None:
         return
     t.head("The paper's question: is M_r linear in N? (the rotor verdict)")
     t.para(v["sentence"], "  ")
+    if v.get("label_swap"):
+        t.para(f"Labels: {v['label_swap']}.", "  ")
     o = v["group_offset"]
     t.add(f"  group offset {o['minuend']} - {o['subtrahend']}: {o['value']:+.4f} rad/s², "
           f"{o['level']:.0%} CI [{o['ci_low']:+.4f}, {o['ci_high']:+.4f}]")

@@ -100,9 +100,45 @@ def _calibration_record() -> dict[str, Any]:
     }
 
 
-def verdict_record(v: Any) -> dict[str, Any]:
-    """The JSON ``verdict`` object: every value a quantity with its unit (the group offset
-    and the exponent as interval quantities)."""
+def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
+    """The JSON ``verdict`` object, the one record builder every entry point calls: every
+    value a quantity with its unit (the group offset and the exponent as interval
+    quantities). With the table's per-test ``analysis``
+    (:func:`contact.rotor.groups.analyse_table`) it also carries the table of the four
+    differences and the two misread rules."""
+    from surfmet.mechanics.rotor_argument import (
+        argument_record,
+        differences_record,
+        lane_record,
+        permutation_record,
+        rig_record,
+    )
+
+    rec = _verdict_record(v)
+    rec["shared_track"]["p_text"] = f"calibrated p {_p_shown(v.shared_track_p)}"
+    rec["permutation_p"] = permutation_record(v)
+    rec["lane_test"] = lane_record(v)
+    rec["rig"] = rig_record(v.rig)
+    rec.update(argument_record(v))
+    rec.update(_sensitivity_fields(v))
+    if analysis is not None:
+        rec.update(differences_record(v, analysis))
+    return rec
+
+
+def _sensitivity_fields(v: Any) -> dict[str, Any]:
+    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`contact.rotor.sensitivity`)."""
+    from surfmet.mechanics.rotor_sensitivity import (
+        experiment_record,
+        label_swap_text,
+        sensitivity_record,
+    )
+
+    return {"label_swap": label_swap_text(v), "sensitivity": sensitivity_record(v),
+            "experiment": experiment_record(v)}
+
+
+def _verdict_record(v: Any) -> dict[str, Any]:
     o = v.offset
     rec: dict[str, Any] = {
         "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
@@ -120,11 +156,20 @@ def verdict_record(v: Any) -> dict[str, Any]:
     }
     d = v.difference
     if d is not None:
+        from surfmet.mechanics.rotor_argument import windows_record
+
         rec["track_difference"] = {
             "trend": quantity(d.trend, "rad/s^2/m"),
+            "trend_stderr": quantity(d.trend_stderr, "rad/s^2/m"),
             "waviness_rms": quantity(d.waviness_rms, "rad/s^2"),
-            "at_release": quantity(d.start, "rad/s^2"), "at_last_mark": quantity(d.end, "rad/s^2"),
-            "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")} for a, b in d.regions]}
+            "windowed": windows_record(d.windows),
+            "polynomial_end_values": {
+                "note": "end values of the joint model's track polynomial, where it is least "
+                        "constrained: not robust, never the headline",
+                "at_release": quantity(d.start, "rad/s^2"),
+                "at_last_mark": quantity(d.end, "rad/s^2"),
+                "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")}
+                            for a, b in d.regions]}}
     e = v.exponent
     if e is None:
         rec["note"] = "no rig: the lambda outputs and the confounds need --rig RIG.json"
@@ -157,6 +202,15 @@ def _p_shown(p: float) -> str:
             else f"= {p:.3g}")
 
 
+def _rejected(v: Any) -> str:
+    """REJECTED, said as the model's alone when the design's permutation p is weaker than
+    the test's level (the wording follows the weaker p)."""
+    from contact.rotor.verdict import calibration
+
+    level = float(calibration()["shared_track_test"]["level"])
+    return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
+
+
 def verdict_lines(v: Any) -> list[str]:
     """The verdict in words, first thing every entry point prints."""
     o = v.offset
@@ -165,8 +219,17 @@ def verdict_lines(v: Any) -> list[str]:
              f"{o.level:.0%} CI [{o.ci_low:+.4f}, {o.ci_high:+.4f}] (launch-to-launch sd "
              f"{o.launch_sd:.4f} rad/s², t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
-             f"{'adequate' if v.shared_track_adequate else 'REJECTED'}, F = {v.f_statistic:.2f} "
+             f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
+    from surfmet.mechanics.rotor_argument import (
+        argument_lines,
+        lane_line,
+        permutation_line,
+        windows_lines,
+    )
+
+    lines += [x for x in (lane_line(v), permutation_line(v)) if x]
+    lines += windows_lines(v)
     if v.misread_rows:
         lines.append("  misread rows left out by the joint model: "
                      + ", ".join(f"{c} k={k}" for c, k in v.misread_rows))
@@ -177,7 +240,9 @@ def verdict_lines(v: Any) -> list[str]:
     lam = (f"{e.value:.3g} [{e.ci_low:.3g}, {e.ci_high:.3g}]" if math.isfinite(e.value)
            else "none in 0.05-20")
     lines += [f"  lambda needed at slope {math.degrees(e.slope):.3g} deg ({e.slope_basis}; the "
-              f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam}",
+              f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam} "
+              f"(conditional on the slope)",
+              *argument_lines(v),
               f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s²; "
               f"launches per group to tell 4/3 from 1 (90 % power, 2 %): "
               f"{e.launches if e.launches is not None else 'more than 100000'}",
@@ -185,7 +250,15 @@ def verdict_lines(v: Any) -> list[str]:
     for c in v.confounds:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
-    return lines
+    from surfmet.mechanics.rotor_sensitivity import (
+        experiment_lines,
+        label_swap_text,
+        sensitivity_lines,
+    )
+
+    swap = label_swap_text(v)
+    return lines + ([f"  labels: {swap}"] if swap else []) + sensitivity_lines(v) + \
+        experiment_lines(v)
 
 
 def verdict_plot_path(plot: str | Path) -> str:

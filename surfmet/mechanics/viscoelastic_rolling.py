@@ -168,6 +168,7 @@ class MechanismsReport:
 
     def to_json(self) -> dict[str, Any]:
         from contact.viscoelastic.mechanisms import BOUNDS_ONLY
+        from surfmet.mechanics.rotor_sensitivity import label_swap_text
         from surfmet.mechanics.rotor_verdict import offset_record
 
         c = self.comparison
@@ -193,7 +194,8 @@ class MechanismsReport:
                 "rotor_loads": quantity(list(c.rotor_loads), "N"),
                 "rolling_inertia": quantity(c.rolling_inertia, "kg m^2"),
                 "dominant": name, "dominant_factor": quantity(factor, ""),
-                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence},
+                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence,
+                            "label_swap": label_swap_text(self.verdict)},
                 "group_offset": offset_record(self.verdict),
                 "assumptions": {k: quantity(v, _UNITS.get(k, "")) for k, v in
                                 c.assumptions.items()},
@@ -252,17 +254,30 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     if mats.hardness is None:
         raise SurfmetInputError("the plastic mechanism needs a hardness (--hardness)")
     sym = mass_properties(collar_offset="symmetric")
+    if not math.isclose(radius, sym.ball_radius, rel_tol=1e-9):
+        # the implied offsets divide by the rotor's J + M R^2: another ball would set its
+        # contacts beside a rotor it is not part of
+        raise SurfmetInputError(
+            f"--model all sets the mechanisms beside the paper's rotor, whose balls have "
+            f"R = {sym.ball_radius * 1e3:g} mm; --radius {radius * 1e3:g} mm would compare "
+            f"{radius * 1e3:g} mm contacts with the {sym.ball_radius * 1e3:g} mm rotor: give "
+            f"--radius {sym.ball_radius * 1e3:g}mm, or another --model for another ball")
     asym = mass_properties(collar_offset="end")
     ns = normal_reactions(sym)[0]
     n1, n2 = normal_reactions(asym)
     sweep = log_loads(*loads) if isinstance(loads, tuple) else np.asarray(loads, float)
+    loads_note = (f"lambda is fitted over the --loads sweep ({min(sweep):.3g}-{max(sweep):.3g} "
+                  f"N, {len(sweep)} loads); the moments M_r(Ns), M_r(N1), M_r(N2) and the "
+                  f"implied eps_s - eps_a are at the rotor's ball loads (symmetric {ns:.3g} N; "
+                  f"asymmetric {min(n1, n2):.3g} and {max(n1, n2):.3g} N), which --loads does "
+                  f"not set")
     ms = None if mu is None else microslip_sweep(radius, (ball_m, plate_m), mu)
     adh, adh_notes = _adhesion_numbers(ball_m.name, plate_m.name, *adhesion)
     comp = compare_mechanisms(radius, mats, loads=sweep, rotor_loads=(ns, n1, n2),
                               rolling_inertia=sym.rolling_inertia, speed=speed, loss=loss,
                               grid=grid, microslip=ms, adhesion=adh)
-    notes = (() if mu is not None else ("micro-slip left out (no friction coefficient)",)) \
-        + adh_notes
+    notes = (loads_note,) + (() if mu is not None else (
+        "micro-slip left out (no friction coefficient)",)) + adh_notes
     from surfmet.mechanics.rotor_verdict import paper_verdict
 
     return MechanismsReport(comp, paper_verdict(), notes)

@@ -70,13 +70,58 @@ def _lambda_panel(ax: Any, v: Any) -> None:
     ax.legend(fontsize=7)
 
 
+def _difference_panel(ax: Any, v: Any) -> None:
+    """The groups' difference along the track: the joint model's with its two-standard-error
+    band (group-specific tracks; the shared offset's interval when one track explains both),
+    the model-free windowed points, and what lambda = 4/3 gives with the arm at its bound."""
+    from contact.rotor.verdict import frame_windows
+
+    o = v.offset
+    radius = v.rig.ball_radius if v.rig is not None else 0.02
+    d = v.difference
+    if d is not None and d.curve is not None:
+        x, c, se = d.curve
+        w = d.windows
+        what = "joint model (group tracks), ±2 s.e."
+    else:
+        x = np.linspace(0.0, float(np.max(v.data.angles)) * radius, 50)
+        c, se = np.full(x.size, o.value), np.full(x.size, o.stderr)
+        w = frame_windows(v.data, v.shared, 1, 0, radius)
+        what = "joint model (shared track), ±2 s.e."
+    ax.fill_between(x * 1e3, c - 2 * se, c + 2 * se, color="tab:blue", alpha=0.2, lw=0)
+    ax.plot(x * 1e3, c, color="tab:blue", lw=1.6, label=what)
+    ax.errorbar(w.centres * 1e3, w.difference, yerr=2 * w.stderr, fmt="s", color="k", ms=4,
+                capsize=3, label="frames alone, windows, ±2 s.e.")
+    ax.axhline(0.0, color="grey", lw=0.8)
+    ax.axhline(o.value, color="tab:blue", ls=":", lw=1.0,
+               label=f"constant offset on one shared track ({o.value:+.3f})")
+    if v.arm is not None:
+        from contact.rotor.sensitivity import settling_experiment
+
+        e = settling_experiment(v)
+        ax.axhline(e.rows[0].offset_4_3, color="tab:red", ls="--", lw=1.2,
+                   label=f"lambda = 4/3, arm at its bound ({e.rows[0].offset_4_3:+.3f})")
+    # the limits follow the model and the windows' values, not the end points' error bars
+    core = slice(x.size // 10, x.size - x.size // 10)
+    vals = np.concatenate([(c - 2 * se)[core], (c + 2 * se)[core],
+                           w.difference[np.isfinite(w.difference)], [0.0]])
+    pad = 0.15 * max(float(np.ptp(vals)), 0.1)
+    ax.set_ylim(float(np.min(vals)) - pad, float(np.max(vals)) + pad)
+    ax.set_xlabel("track position from the release (mm)")
+    ax.set_ylabel(f"acceleration difference {o.minuend} - {o.subtrahend} (rad/s²)")
+    ax.set_title("the groups' difference along the track", fontsize=9)
+    ax.legend(fontsize=7, loc="best")
+
+
 def draw_verdict(v: Any, path: str | Path | None = None) -> Any:
-    """Two panels (one without a rig): local acceleration along the track with the joint
-    model per group, and the lambda the offset needs against the slope."""
-    panels = 2 if v.exponent is not None else 1
-    fig, axes = new_figure(1, panels, size=(6.0 * panels, 4.4))
+    """Three panels (two without a rig): local acceleration along the track with the joint
+    model per group, the groups' difference along the track (band, windowed points and
+    lambda = 4/3 at the arm bound), and the lambda the offset needs against the slope."""
+    panels = 3 if v.exponent is not None else 2
+    fig, axes = new_figure(1, panels, size=(5.5 * panels, 4.4))
     axes = np.atleast_1d(axes)
     _track_panel(axes[0], v)
-    if panels == 2:
-        _lambda_panel(axes[1], v)
+    _difference_panel(axes[1], v)
+    if panels == 3:
+        _lambda_panel(axes[2], v)
     return finish(fig, path)
