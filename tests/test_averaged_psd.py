@@ -84,3 +84,17 @@ def test_container_average_is_no_slower_than_surfacetopography(realdata):
         best = min(best, time.perf_counter() - t0)
     # measured 0.13 s against ST's 0.37 s on this shared machine
     assert best <= ST["per_decade_10"]["seconds"], (best, ST["per_decade_10"]["seconds"])
+
+
+@pytest.mark.realdata
+def test_cli_psd_does_not_follow_the_distance_grid(realdata, capsys):
+    # `--per-decade 1` sets the distance grid only: the PSD keeps its 10 bins per decade
+    from surfmet.cli import main
+
+    assert main(["scales", str(realdata("container-2.zip")), "--per-decade", "1",
+                 "--json"]) == 0
+    psd = json.loads(capsys.readouterr().out)["psd"]
+    ref = ST["per_decade_10"]
+    assert psd["bins_per_decade"] == 10 and psd["C"]["unit"] == "m^3"
+    np.testing.assert_allclose(psd["q"]["value"], ref["q"], rtol=1e-3)
+    np.testing.assert_allclose(psd["C"]["value"], ref["C"], rtol=1e-2)
