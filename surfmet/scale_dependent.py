@@ -16,12 +16,14 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
 * the reliability cut-off comes from the probe: the tip radius that the file states, else
   ``tip_radius=`` (``--tip-radius``), through :func:`profiles.scales.tip_cutoff`; without
   a radius there is no cut-off (stated as such);
-* PSD: each measurement's 1D PSD along x (Hann window, mean removed: the data are not
-  periodic; maps: mean of the row PSDs; nonuniform profiles resampled at their mean step),
-  kept for ``2π/q`` above the cut-off, averaged over the DFT points in each log bin around
-  ``q = 2π/d`` of the grid (log-log interpolation where a bin holds none) and averaged
-  over the measurements with equal votes; variable-bandwidth rms height is interpolated
-  log-log onto the distance grid and averaged likewise.
+* PSD: averaged as contact.engineering averages it (:mod:`surfmet.averaged_psd`): each
+  measurement's 1D PSD along x on its own DFT wavevectors (periodic Hann window, levelled
+  as the container states; maps: mean of the rows; nonuniform profiles: their
+  piecewise-linear curve, 5x oversampled), kept below ``2π/cut-off``, bin-averaged in log
+  bins of q of its own decades and averaged over the measurements with data in each bin
+  (equal votes, abscissas averaged too); ``q`` and ``psd`` are on those bins (10 per
+  decade by default), not on the distance grid; variable-bandwidth rms height is
+  interpolated log-log onto the distance grid and averaged likewise.
 
 Bad input (one :class:`~surfmet.errors.SurfmetInputError` line each): a tip radius that
 leaves no reliable scale in any measurement, and measurements whose reliable bandwidths
@@ -32,7 +34,7 @@ hole in scale that the average would hide).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -40,7 +42,6 @@ from profiles.scales import (
     Scan,
     height_difference_acf,
     make_scan,
-    resample,
     scale_variance,
     tip_cutoff,
     variable_bandwidth,
@@ -88,6 +89,7 @@ class ScaleAnalysis:
     psd: np.ndarray
     measurements: tuple[Measurement, ...]
     per_decade: int
+    psd_per_decade: int = 10
 
     def contributors(self, quantity: str = "slope") -> np.ndarray:
         """Boolean (measurements x distances): who votes where."""
@@ -152,30 +154,15 @@ def _cutoff(m: Profile | Topography, scan: Scan, tip_radius: float | None
     return tip_cutoff(scan, float(radius)), f"tip radius from {source}", float(radius)
 
 
-def _psd_on_grid(m: Profile | Topography, scan: Scan, q: np.ndarray, shortest: float
-                 ) -> np.ndarray:
-    from surfmet.psd import profile_psd
+def measurement_spectrum(m: Profile | Topography, scan: Scan, cutoff: float | None
+                     ) -> tuple[np.ndarray, np.ndarray]:
+    """The measurement's reliable 1D PSD on its own wavevectors
+    (:func:`surfmet.averaged_psd.measurement_psd`, levelled as its container states)."""
+    from surfmet.averaged_psd import measurement_psd
 
-    if scan.x is not None:
-        lower, _ = scan.bandwidth()
-        spec = profile_psd(resample(scan.x, scan.z, lower), lower)
-    else:
-        spec = profile_psd(m)
-    keep = (spec.C > 0) & (2 * np.pi / spec.q > shortest)
-    out = np.full(q.size, np.nan)
-    if keep.sum() < 2:
-        return out
-    qk, ck = spec.q[keep], spec.C[keep]
-    sel = (q >= qk.min()) & (q <= qk.max())
-    out[sel] = np.exp(np.interp(np.log(q[sel]), np.log(qk), np.log(ck)))
-    # where a grid bin holds DFT points, their mean replaces the interpolated value
-    half = math.sqrt(q[1] / q[0]) if q.size > 1 else 1.0
-    lo, hi = np.minimum(q / half, q * half), np.maximum(q / half, q * half)
-    for j in np.flatnonzero(sel):
-        inside = (qk >= lo[j]) & (qk < hi[j])
-        if inside.any():
-            out[j] = float(np.mean(ck[inside]))
-    return out
+    mode = str(m.metadata.get("detrend_mode") or "")
+    degree = {"center": 0, "height": 1, "curvature": 2}.get(mode)
+    return measurement_psd(scan, cutoff, degree=degree, centre=mode == "")
 
 
 def _vbm_on_grid(scan: Scan, d: np.ndarray, shortest: float) -> np.ndarray:
@@ -205,7 +192,7 @@ def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None
     name = str(m.metadata.get("member") or m.metadata.get("source") or "<scan>")
     kind = "map" if scan.is_map else ("profile" if scan.x is None else "nonuniform profile")
     return Measurement(name, kind, pixel, size, cut, source, radius, vs, vc, acf,
-                       _vbm_on_grid(scan, d, low), _psd_on_grid(m, scan, 2 * np.pi / d, low))
+                       _vbm_on_grid(scan, d, low), measurement_spectrum(m, scan, cut))
 
 
 def _check_overlap(ms: list[Measurement]) -> None:
@@ -235,7 +222,7 @@ def _mean(values: list[np.ndarray]) -> np.ndarray:
 
 
 def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | None = None,
-                   per_decade: int = 5) -> ScaleAnalysis:
+                   per_decade: int = 5, psd_per_decade: int | None = None) -> ScaleAnalysis:
     """Scale-dependent statistics of one surface measured by ``scans``.
 
     Parameters
@@ -248,6 +235,9 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
         Probe radius (m) for the measurements whose file states none.
     per_decade : int
         Points per decade of the distance grid.
+    psd_per_decade : int, optional
+        Bins per decade of q of the averaged PSD, independent of the distance grid
+        (default :data:`surfmet.averaged_psd.PSD_PER_DECADE`, contact.engineering's).
 
     Raises
     ------
@@ -263,8 +253,14 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     d = distance_grid(min(b[0] for b in bands), max(b[1] for b in bands), per_decade)
     ms = [_measure(s, d, tip_radius) for s in scans]
     _check_overlap(ms)
+    from surfmet.averaged_psd import PSD_PER_DECADE, average_psd
+
+    if psd_per_decade is not None and psd_per_decade < 1:
+        raise SurfmetInputError(f"PSD bins per decade must be at least 1, got {psd_per_decade}")
+    spec = average_psd([m.psd for m in ms], psd_per_decade or PSD_PER_DECADE)
+    ms = [replace(m, psd=c) for m, c in zip(ms, spec.per_measurement)]
     vs = _mean([m.variance_slope for m in ms])
     vc = _mean([m.variance_curvature for m in ms])
     return ScaleAnalysis(d, np.sqrt(vs), np.sqrt(vc), _mean([m.acf for m in ms]),
-                         _mean([m.vbm for m in ms]), 2 * np.pi / d, _mean([m.psd for m in ms]),
-                         tuple(ms), per_decade)
+                         _mean([m.vbm for m in ms]), spec.q, spec.C, tuple(ms), per_decade,
+                         spec.per_decade)

@@ -112,14 +112,16 @@ def test_persson_from_three_measurements_matches_the_known_spectrum(hurst, seed)
     assert hi == pytest.approx(np.pi / 2e-8, rel=0.26)
     e = 2 - 2 * hurst
     slope = math.sqrt(c0 / (2 * math.pi) * (hi**e - lo**e) / e)  # closed form over the band
-    # every measurement is sampled, so its top octave holds aliased power: over 10
-    # realisations (benchmarks/all_scales_persson.py, H = 0.5 and 0.8) the rms slope came
-    # out +0.4 % .. +5.6 % from the closed form, the area -5.3 % .. -0.4 %; tolerance 7 %
-    assert s.slope_rms == pytest.approx(slope, rel=0.07)
+    # every measurement is sampled, so its top octave holds aliased power, and the PSD is
+    # kept up to the last DFT point below Nyquist (contact.engineering's rule, no cut-off
+    # without a tip radius): over 10 realisations (benchmarks/all_scales_persson.py, H =
+    # 0.5 and 0.8) the rms slope came out +3.9 % .. +7.7 % from the closed form, the area
+    # -7.1 % .. -3.7 %; tolerance 9 %
+    assert s.slope_rms == pytest.approx(slope, rel=0.09)
     p, e_star = np.array([0.05, 0.2]) * slope * 1e10, 1e10
     curve = persson_all_scales(s, p, e_star)
     np.testing.assert_allclose(curve.area_fraction,
-                               erf(math.sqrt(2) * p / (e_star * slope)), rtol=0.07)
+                               erf(math.sqrt(2) * p / (e_star * slope)), rtol=0.09)
 
 
 def test_profiles_alone_give_a_spectrum_too():
@@ -215,7 +217,9 @@ def test_no_overlapping_band_is_one_line(cmd, files, capsys):
 
 
 def test_a_spectrum_with_no_points_is_refused():
-    a = analyze_scales([Topography(np.random.default_rng(1).normal(size=(8, 8)) * 1e-9,
+    # a 4-pixel map has one DFT wavevector below Nyquist (the PSD's own sampling, not the
+    # distance grid's, decides)
+    a = analyze_scales([Topography(np.random.default_rng(1).normal(size=(4, 4)) * 1e-9,
                                    1e-8, 1e-8)], per_decade=1)
     with pytest.raises(SurfmetInputError, match="fewer than two points"):
         all_scales_spectrum(a)

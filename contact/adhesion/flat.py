@@ -107,7 +107,9 @@ class AdhesiveFlatPoint:
     area_fraction : float
         Share of the cells where the gap is zero.
     mean_gap : float
-        Mean of the deformed gap (m).
+        Mean of the deformed gap over all cells, touching ones (gap zero) included (m):
+        the mean separation of the deformed surfaces, Persson's u-bar and the mean of
+        Tamaas' gap field (:func:`gap_means`).
     attractive_pressure : float
         The law's traction averaged over the nominal area, touching points included (Pa).
     approach : float
@@ -118,6 +120,9 @@ class AdhesiveFlatPoint:
     solve : SolveRecord
         The record (:mod:`contact.record`): the iterations in all, the solves as outer
         iterations, the last equilibrium's residual.
+    mean_gap_out_of_contact : float
+        Mean of the deformed gap over the cells that do not touch only (m; NaN where all
+        touch), the other definition in use (:func:`gap_means`).
     """
 
     pressure: float
@@ -128,6 +133,7 @@ class AdhesiveFlatPoint:
     solves: int
     iterations: int
     solve: SolveRecord
+    mean_gap_out_of_contact: float = math.nan
 
     @property
     def repulsive_pressure(self) -> float:
@@ -161,6 +167,23 @@ class AdhesiveFlat:
     @property
     def attractive_pressure(self) -> np.ndarray:
         return np.array([pt.attractive_pressure for pt in self.points])
+
+
+def gap_means(gap: np.ndarray) -> tuple[float, float]:
+    """The two means of a deformed gap field (m): (over all cells, over free cells only).
+
+    The gap is measured from the flat to the deformed surface, so it is zero where they
+    touch, whatever the undeformed surface's datum (its mean plane or its highest point:
+    the datum only shifts the approach). The first mean counts the touching cells as
+    zeros: the mean separation of the two deformed surfaces, the one that enters
+    p(u-bar) and the contact stiffness, and the one Tamaas' gap field gives (its
+    PolonskyKeerRey on the gap, on the same array: tests/data/tamaas_adhesive_gap.json).
+    The second leaves them out (the mean opening where the surfaces are apart); it is the
+    larger by a factor 1 / (1 - area fraction).
+    """
+    g = np.asarray(gap, dtype=float)
+    free = g > 0.0
+    return float(np.mean(g)), float(np.mean(g[free])) if free.any() else math.nan
 
 
 def attractive_pressure(law: InteractionLaw, gap: np.ndarray) -> float:
@@ -436,9 +459,11 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
                                            warm, rtol=rtol, tol=tol,
                                            max_change=max_change)
         warm = (xk, st)
+        every, free = gap_means(st.gap)
         points.append(AdhesiveFlatPoint(
             pressure=st.load / (h.size * problem.cell_area),
-            area_fraction=float(np.mean(st.gap <= 0.0)), mean_gap=float(np.mean(st.gap)),
+            area_fraction=float(np.mean(st.gap <= 0.0)), mean_gap=every,
+            mean_gap_out_of_contact=free,
             attractive_pressure=attractive_pressure(law, st.gap), approach=st.approach,
             solves=n, iterations=its,
             solve=replace(st.solve, method=METHODS[pk > 0], iterations=its,

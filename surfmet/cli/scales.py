@@ -118,7 +118,8 @@ def _print(a: Any) -> None:
         print(f"{format_length(d):>12} {a.rms_slope[j]:11.4g} {a.rms_curvature[j]:14.4g}  {who}")
     band = a.psd_band()
     if band:
-        print(f"PSD measured over q = {band[0]:.4g}..{band[1]:.4g} rad/m (Hann window)")
+        print(f"PSD measured over q = {band[0]:.4g}..{band[1]:.4g} rad/m (periodic Hann "
+              f"window, {a.psd_per_decade} bins per decade)")
 
 
 def print_all_scales(r: dict[str, Any]) -> None:

@@ -105,7 +105,9 @@ def _adhesion_header(ad: Any) -> dict[str, Any]:
         "notes": ["per pressure, 'adhesive' is the periodic adhesive solve and 'bem' the "
                   "non-adhesive one; attractive_pressure is the law's tension averaged over "
                   "the nominal area, touching points included: pressure = repulsive - "
-                  "attractive"],
+                  "attractive; mean_gap is the mean of the deformed gap over all cells "
+                  "(zero where touching: the mean separation, as Tamaas' gap field), "
+                  "mean_gap_out_of_contact its mean over the cells apart only"],
     }
 
 
@@ -115,6 +117,7 @@ def _adhesive_row(a: Any, bare: Any) -> dict[str, Any]:
         "pressure": quantity(a.pressure, "Pa"),
         "contact_area_fraction": quantity(a.area_fraction, ""),
         "mean_gap": quantity(a.mean_gap, "m"),
+        "mean_gap_out_of_contact": quantity(a.mean_gap_out_of_contact, "m"),
         "attractive_pressure": quantity(a.attractive_pressure, "Pa"),
         "repulsive_pressure": quantity(a.repulsive_pressure, "Pa"),
         "approach": quantity(a.approach, "m"),

@@ -4,7 +4,7 @@ Distances and wavevectors on the analysis grid; ``null`` where no measurement co
 Per measurement: its bandwidth, its reliability cut-off and where it came from, the
 distance from which it is reliable, its own curves and, per grid point, whether it votes
 (``contributes_slope``, ``contributes_curvature``, ``contributes_vbm`` on the distance
-grid; ``contributes_psd`` on ``psd.q``).
+grid; ``contributes_psd`` on ``psd.q``, the PSD's own log bins of q).
 """
 
 from __future__ import annotations
@@ -33,7 +33,12 @@ def scales_record(a: ScaleAnalysis) -> dict[str, Any]:
         "variable_bandwidth": {"bandwidth": q(a.distance, "m"),
                                "rms_height": q(a.vbm_rms_height, "m")},
         "psd": {"q": q(a.q, "rad/m"), "C": q(a.psd, "m^3"),
-                "window": "hann (non-periodic data), mean removed; maps: mean of the rows",
+                "window": "periodic hann (mean square 1), after the container's levelling "
+                          "(none stated: mean removed); maps: mean of the rows",
+                "bins_per_decade": a.psd_per_decade,
+                "averaging": "contact.engineering's: each measurement's DFT values below its "
+                             "cut-off, bin-averaged in log bins of q, then an equal vote per "
+                             "measurement in each bin (q averaged too)",
                 "measured_band": None if band is None else q(band, "rad/m")},
         "measurements": [{
             "file": m.file, "kind": m.kind, "pixel": {"value": m.pixel, "unit": "m"},
