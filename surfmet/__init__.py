@@ -23,11 +23,11 @@ from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
 from surfmet.model import Profile, Topography
 
 
-def read(path: Any, format: str | None = None, **options: Any) -> Topography | Profile:
-    """Read a scan file (see :func:`surfmet.io.read`)."""
+def read(source: Any, format: str | None = None, **options: Any) -> Topography | Profile:
+    """Read a scan from a path, its bytes or a binary stream (see :func:`surfmet.io.read`)."""
     from surfmet.io import read as _read
 
-    return _read(path, format=format, **options)
+    return _read(source, format=format, **options)
 
 
 def write(scan: Topography | Profile, path: Any, format: str | None = None, **options: Any) -> Any:
