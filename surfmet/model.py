@@ -297,6 +297,12 @@ class Topography:
             f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
         )
 
+    def _repr_html_(self) -> str:
+        """A small height map and the grid, pixel and height range (Jupyter)."""
+        from surfmet.display import topography_html
+
+        return topography_html(self)
+
 
 @dataclass(frozen=True, eq=False)
 class Profile:
@@ -401,6 +407,12 @@ class Profile:
             f"Profile(n={self.n}, dx={self.dx:.6g} m, {kind}, "
             f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
         )
+
+    def _repr_html_(self) -> str:
+        """A line of the profile and its length, spacing and height range (Jupyter)."""
+        from surfmet.display import profile_html
+
+        return profile_html(self)
 
 
 Scan = Topography | Profile

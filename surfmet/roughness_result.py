@@ -61,6 +61,17 @@ class RoughnessResult:
                 f"{symbol!r} was not computed; have {', '.join(self.parameters)}"
             ) from None
 
+    def __repr__(self) -> str:
+        from surfmet.display import roughness_repr
+
+        return roughness_repr(self)
+
+    def _repr_html_(self) -> str:
+        """Every parameter with its unit (Jupyter)."""
+        from surfmet.display import roughness_html
+
+        return roughness_html(self)
+
     def to_json(self) -> dict[str, Any]:
         """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types).
 

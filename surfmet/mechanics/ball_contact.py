@@ -60,6 +60,17 @@ class BallContact:
     warnings: tuple[str, ...] = ()
     preparation: Any = None
 
+    def __repr__(self) -> str:
+        from surfmet.display import ball_contact_repr
+
+        return ball_contact_repr(self)
+
+    def _repr_html_(self) -> str:
+        """Load, approach, contact radius and area, peak pressure, with units (Jupyter)."""
+        from surfmet.display import ball_contact_html
+
+        return ball_contact_html(self)
+
     def to_json(self) -> dict[str, Any]:
         """The ``surfmet contact`` record (every value with its unit), with what was done
         to the scans and the warnings."""

@@ -117,6 +117,17 @@ class HertzCheck:
         scan = [] if c.judged else [c.criterion("resolution").reason]
         return [*scan, *grid_warnings(self.result)]
 
+    def __repr__(self) -> str:
+        from surfmet.display import hertz_check_repr
+
+        return hertz_check_repr(self)
+
+    def _repr_html_(self) -> str:
+        """The verdict and the numbers it rests on, with units (Jupyter)."""
+        from surfmet.display import hertz_check_html
+
+        return hertz_check_html(self)
+
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
         :func:`surfmet.records.hertz.hertz_check_record`)."""
