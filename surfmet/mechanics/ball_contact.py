@@ -15,10 +15,13 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 #: Fewest cells a contact may cover before the answer is called under-resolved.
 MIN_CONTACT_CELLS = 20
@@ -184,12 +187,12 @@ def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: Any,
 
 
 def ball_contact(
-    plate: Any = None,
-    ball: Any = None,
+    plate: ScanSource | None = None,
+    ball: ScanSource | None = None,
     *,
     radius: float,
     load: float,
-    materials: Any = "steel,aluminium",
+    materials: Materials = "steel,aluminium",
     hardness: float | None = None,
     plastic: bool = False,
     grid: int | None = None,
@@ -200,7 +203,7 @@ def ball_contact(
     max_iter: int = 2000,
     max_grid: int | None = MAX_GRID,
     callback: Callable[[int, float], None] | None = None,
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     offset: tuple[float, float] | None = None,
 ) -> BallContact:
     """Normal contact of a ball on a plate from their scans.

@@ -35,11 +35,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import parse_materials
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, prepare_scans
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 
 @dataclass(frozen=True, eq=False)
@@ -149,15 +152,15 @@ class HertzCheck:
 
 
 def hertz_check(
-    scan: Any = None,
+    scan: ScanSource | None = None,
     *,
     radius: float,
     load: float,
-    materials: Any = "steel,aluminium",
-    ball: Any = None,
+    materials: Materials = "steel,aluminium",
+    ball: ScanSource | None = None,
     hardness: float | None = None,
     plastic: bool = True,
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     grid: int | None = None,
     max_grid: int | None = MAX_GRID,
     on_edge: str = "enlarge",

@@ -20,10 +20,13 @@ import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import ScanSource, Spikes
 
 #: The largest automatic contact grid, for every entry point (CLI, API, report, sweep):
 #: None runs on the scans' own pixel at any size that fits in memory, so that two ways of
@@ -36,7 +39,7 @@ SPIKE_CHOICES = ("remove", "keep")
 SPIKES = SPIKE_CHOICES[0]
 
 
-def spike_mode(spikes: Any) -> str:
+def spike_mode(spikes: Spikes) -> str:
     """``"remove"`` or ``"keep"`` from the text or a flag (True: remove, False: keep)."""
     if isinstance(spikes, bool):
         return "remove" if spikes else "keep"
@@ -72,7 +75,7 @@ def read_areal(obj: Any, what: str) -> Topography | None:
     return obj
 
 
-def clean_spikes(scan: Topography, what: str, spikes: Any = SPIKES
+def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES
                  ) -> tuple[Topography, int, str | None]:
     """The scan with its spikes removed (``spikes="remove"``) or as measured (``"keep"``):
     the scan, the number of spikes removed, and a note saying what was done."""
@@ -127,8 +130,8 @@ class PreparedScans:
                 "notes": list(self.notes)}
 
 
-def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
-                  ) -> PreparedScans:
+def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
+                  spikes: Spikes = SPIKES) -> PreparedScans:
     """Spikes, levelling, sphere removal and pairing of a plate and a ball scan.
 
     Parameters
@@ -177,7 +180,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
                          residuals=residuals, spikes=mode)
 
 
-def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[str, Any]]:
+def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topography, dict[str, Any]]:
     """A single scan made ready for a flat contact: spikes as :func:`prepare_scans` does
     them, then every non-measured point filled with its nearest measured value.
 
@@ -190,6 +193,8 @@ def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[s
 
     mode = spike_mode(spikes)
     scan = read_areal(topo, "scan")
+    if scan is None:
+        raise SurfmetInputError("give a scan (a height map or its file)")
     if not np.isfinite(scan.heights).any():
         raise SurfmetInputError("the scan has no measured point")
     scan, count, note = clean_spikes(scan, "areal", mode)

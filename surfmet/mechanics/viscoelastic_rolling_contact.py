@@ -23,12 +23,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, ScanSource
 
 #: |K| at or below this is quasi-identical (the viscoelastic traction solvers' model).
 QUASI_IDENTICAL_K = 1e-6
@@ -94,9 +97,10 @@ def coupling_reason(kalker_k: tuple[float, float], free_rolling: bool) -> str | 
             f"the coupled elastic solve")
 
 
-def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
+def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Materials,
                                  viscoelastic: list[str], speed: float, line: bool = False,
-                                 grid: int | None = None, plate: Any = None, ball: Any = None,
+                                 grid: int | None = None, plate: ScanSource | None = None,
+                                 ball: ScanSource | None = None,
                                  spikes: bool = True, mu: float | None = None,
                                  creepage: float | None = None) -> ViscoRollingContact:
     """One steady viscoelastic rolling solve of a ball or a cylinder: the normal problem,
