@@ -1,9 +1,10 @@
-"""How scans and results show themselves in a notebook: ``_repr_html_`` and short reprs.
+"""How scans and results show themselves in a notebook (``_repr_html_``).
 
 Jupyter calls ``_repr_html_`` on the last value of a cell. A scan shows a small height map
 (an inline PNG encoded here with :mod:`zlib`, so that displaying a scan never imports
 matplotlib) beside its grid and pixel; a result shows its key numbers with their units,
-through the same :func:`surfmet.units.split_quantity` as the command line's text.
+through the same :func:`surfmet.units.split_quantity` as the command line's text. Each
+class names its own rows; this module only draws them (it imports none of the classes).
 """
 
 from __future__ import annotations
@@ -12,18 +13,12 @@ import base64
 import html
 import struct
 import zlib
-from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 
-from surfmet.units import format_quantity, split_quantity
-
-if TYPE_CHECKING:
-    from surfmet.mechanics.ball_contact import BallContact
-    from surfmet.mechanics.hertz_check import HertzCheck
-    from surfmet.model import Profile, Topography
-    from surfmet.roughness_result import RoughnessResult
+from surfmet.units import split_quantity
 
 #: A row of a result's table: a name, an SI value (or a text) and its unit.
 Row = tuple[str, Any, str]
@@ -75,7 +70,7 @@ def png_bytes(values: np.ndarray, pixels: int = MAP_PIXELS) -> bytes:
         return (struct.pack(">I", len(data)) + kind + data
                 + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
 
-    header = struct.pack(">IIBBBBB", grey.shape[1], grey.shape[0], 8, 0, 0, 0, 0)
+    header = struct.pack(">IIBBBBB", grey.shape[-1], grey.shape[0], 8, 0, 0, 0, 0)
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header)
             + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b""))
 
@@ -104,106 +99,18 @@ def _side_by_side(picture: str, table: str) -> str:
     return f"<div style='display:flex;align-items:flex-start'>{picture}{table}</div>"
 
 
-def _range(values: np.ndarray) -> float:
+def value_range(values: np.ndarray) -> float:
+    """Peak-to-valley of the measured (finite) values; NaN when none is."""
     finite = values[np.isfinite(values)]
     return float(np.ptp(finite)) if finite.size else float("nan")
 
 
-def topography_html(topo: Topography) -> str:
-    """A height map and the scan's grid, pixel, height range and format."""
-    rows: list[Row] = [
-        ("grid", f"{topo.nx} × {topo.ny}", "points"),
-        ("size", f"{format_quantity(topo.size_x, 'm')} × {format_quantity(topo.size_y, 'm')}",
-         ""),
-        ("pixel", f"{format_quantity(topo.dx, 'm')} × {format_quantity(topo.dy, 'm')}", ""),
-        ("height range", _range(topo.heights), "m"),
-        ("non-measured", 100 * topo.nan_fraction, "%"),
-        ("format", topo.metadata.get("format") or "-", ""),
-    ]
-    return _side_by_side(_image(topo.heights), quantity_table("Topography", rows))
+def map_html(heights: np.ndarray, title: str, rows: Iterable[Row]) -> str:
+    """A small height map beside a table of the scan's numbers."""
+    return _side_by_side(_image(heights), quantity_table(title, rows))
 
 
-def profile_html(profile: Profile) -> str:
-    """A line of the profile and its points, length, spacing, height range and format."""
-    rows: list[Row] = [
-        ("points", profile.n, ""),
-        ("length", profile.length, "m"),
-        ("spacing", profile.dx, "m"),
-        ("spacing is", "uniform" if profile.is_uniform else "non-uniform", ""),
-        ("height range", _range(profile.z), "m"),
-        ("non-measured", 100 * profile.nan_fraction, "%"),
-        ("format", profile.metadata.get("format") or "-", ""),
-    ]
-    return _side_by_side(_profile_svg(profile.positions, profile.z),
-                         quantity_table("Profile", rows))
-
-
-def roughness_html(result: RoughnessResult) -> str:
-    """Every parameter of a roughness result with its unit."""
-    rows = [(name, value, unit) for name, (value, unit) in result.parameters.items()]
-    title = f"Roughness ({result.kind})" + (f": {result.file}" if result.file else "")
-    return quantity_table(title, rows)
-
-
-def roughness_repr(result: RoughnessResult, first: Sequence[str] = ("a", "q", "z")) -> str:
-    """``RoughnessResult(areal, 30 parameters: Sa=1.823 µm, Sq=2.416 µm, Sz=243.4 µm)``."""
-    prefix = "S" if result.kind == "areal" else "R"
-    shown = [f"{prefix}{s}={format_quantity(*result.parameters[prefix + s])}"
-             for s in first if prefix + s in result.parameters]
-    return (f"RoughnessResult({result.kind}, {len(result.parameters)} parameters"
-            + (": " + ", ".join(shown) if shown else "") + ")")
-
-
-def hertz_check_html(check: HertzCheck) -> str:
-    """The verdict and the numbers it rests on: GJM alpha, sigma, load, radius, E*,
-    Hertz's and the boundary elements' contact radius and peak pressure."""
-    c, res = check.comparison, check.result
-    rows: list[Row] = [
-        ("verdict", check.verdict, ""),
-        ("Hertz holds", "yes" if check.hertz_holds else "no", ""),
-        ("GJM alpha", check.alpha, ""),
-        ("sigma", check.sigma, "m"),
-        ("load", check.load, "N"),
-        ("ball radius", check.radius, "m"),
-        ("E*", check.e_star, "Pa"),
-        ("Hertz contact radius a0", c.hertz.a, "m"),
-        ("Hertz peak pressure p0", c.hertz.p0, "Pa"),
-        ("BEM contact radius", res.contact_radius, "m"),
-        ("BEM peak pressure", c.pmax, "Pa"),
-    ]
-    return quantity_table("Hertz check", rows)
-
-
-def hertz_check_repr(check: HertzCheck) -> str:
-    """``HertzCheck(verdict='bem', alpha=3.2, load=10 N, radius=20 mm)``."""
-    return (f"HertzCheck(verdict={check.verdict!r}, alpha={check.alpha:.4g}, "
-            f"load={format_quantity(check.load, 'N')}, "
-            f"radius={format_quantity(check.radius, 'm')})")
-
-
-def ball_contact_html(contact: BallContact) -> str:
-    """The solved contact's load, approach, contact radius and area, peak pressure."""
-    res = contact.result
-    rows: list[Row] = [
-        ("load", res.load, "N"),
-        ("ball radius", contact.radius, "m"),
-        ("E*", res.e_star, "Pa"),
-        ("approach", res.approach, "m"),
-        ("contact radius", res.contact_radius, "m"),
-        ("contact area", res.contact_area, "m^2"),
-        ("peak pressure", res.pmax, "Pa"),
-        ("grid", f"{res.pressure.shape[1]} × {res.pressure.shape[0]}", "cells"),
-    ]
-    if res.hertz is not None:
-        rows += [("Hertz contact radius a0", res.hertz.a, "m"),
-                 ("Hertz peak pressure p0", res.hertz.p0, "Pa")]
-    return quantity_table("Ball contact", rows)
-
-
-def ball_contact_repr(contact: BallContact) -> str:
-    """``BallContact(load=10 N, radius=20 mm, contact radius=97.3 µm, pmax=1.2 GPa)``."""
-    res = contact.result
-    return (f"BallContact(load={format_quantity(res.load, 'N')}, "
-            f"radius={format_quantity(contact.radius, 'm')}, "
-            f"contact radius={format_quantity(res.contact_radius, 'm')}, "
-            f"pmax={format_quantity(res.pmax, 'Pa')})")
+def line_html(x: np.ndarray, z: np.ndarray, title: str, rows: Iterable[Row]) -> str:
+    """A line of a profile beside a table of its numbers."""
+    return _side_by_side(_profile_svg(np.asarray(x, float), np.asarray(z, float)),
+                         quantity_table(title, rows))

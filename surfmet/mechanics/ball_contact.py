@@ -64,15 +64,26 @@ class BallContact:
     preparation: Any = None
 
     def __repr__(self) -> str:
-        from surfmet.display import ball_contact_repr
+        from surfmet.units import format_quantity as q
 
-        return ball_contact_repr(self)
+        res = self.result
+        return (f"BallContact(load={q(res.load, 'N')}, radius={q(self.radius, 'm')}, "
+                f"contact radius={q(res.contact_radius, 'm')}, pmax={q(res.pmax, 'Pa')})")
 
     def _repr_html_(self) -> str:
         """Load, approach, contact radius and area, peak pressure, with units (Jupyter)."""
-        from surfmet.display import ball_contact_html
+        from surfmet.display import quantity_table
 
-        return ball_contact_html(self)
+        res = self.result
+        rows = [("load", res.load, "N"), ("ball radius", self.radius, "m"),
+                ("E*", res.e_star, "Pa"), ("approach", res.approach, "m"),
+                ("contact radius", res.contact_radius, "m"),
+                ("contact area", res.contact_area, "m^2"), ("peak pressure", res.pmax, "Pa"),
+                ("grid", f"{res.pressure.shape[1]} × {res.pressure.shape[0]}", "cells")]
+        if res.hertz is not None:
+            rows += [("Hertz contact radius a0", res.hertz.a, "m"),
+                     ("Hertz peak pressure p0", res.hertz.p0, "Pa")]
+        return quantity_table("Ball contact", rows)
 
     def to_json(self) -> dict[str, Any]:
         """The ``surfmet contact`` record (every value with its unit), with what was done

@@ -121,15 +121,30 @@ class HertzCheck:
         return [*scan, *grid_warnings(self.result)]
 
     def __repr__(self) -> str:
-        from surfmet.display import hertz_check_repr
+        from surfmet.units import format_quantity as q
 
-        return hertz_check_repr(self)
+        return (f"HertzCheck(verdict={self.verdict!r}, alpha={self.alpha:.4g}, "
+                f"load={q(self.load, 'N')}, radius={q(self.radius, 'm')})")
 
     def _repr_html_(self) -> str:
-        """The verdict and the numbers it rests on, with units (Jupyter)."""
-        from surfmet.display import hertz_check_html
+        """The verdict and the numbers it rests on: GJM alpha, sigma, load, radius, E*,
+        Hertz's and the boundary elements' contact radius and peak pressure (Jupyter)."""
+        from surfmet.display import quantity_table
 
-        return hertz_check_html(self)
+        c = self.comparison
+        return quantity_table("Hertz check", [
+            ("verdict", self.verdict, ""),
+            ("Hertz holds", "yes" if self.hertz_holds else "no", ""),
+            ("GJM alpha", self.alpha, ""),
+            ("sigma", self.sigma, "m"),
+            ("load", self.load, "N"),
+            ("ball radius", self.radius, "m"),
+            ("E*", self.e_star, "Pa"),
+            ("Hertz contact radius a0", c.hertz.a, "m"),
+            ("Hertz peak pressure p0", c.hertz.p0, "Pa"),
+            ("BEM contact radius", self.result.contact_radius, "m"),
+            ("BEM peak pressure", c.pmax, "Pa"),
+        ])
 
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
