@@ -70,7 +70,9 @@ def png_bytes(values: np.ndarray, pixels: int = MAP_PIXELS) -> bytes:
         return (struct.pack(">I", len(data)) + kind + data
                 + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
 
-    header = struct.pack(">IIBBBBB", grey.shape[-1], grey.shape[0], 8, 0, 0, 0, 0)
+    shape: tuple[int, ...] = grey.shape
+    height, width = shape[0], shape[-1]
+    header = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header)
             + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b""))
 
