@@ -21,7 +21,10 @@ from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 if TYPE_CHECKING:
+    from contact.bem.result import ContactResult
+    from contact.material_pair import MaterialPair
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
+    from surfmet.mechanics.pairing import PairedRoughness
 
 #: Fewest cells a contact may cover before the answer is called under-resolved.
 MIN_CONTACT_CELLS = 20
@@ -124,7 +127,7 @@ def _file(obj: Any) -> str | None:
     return getattr(obj, "metadata", {}).get("source")  # a scan read by the caller
 
 
-def grid_warnings(res: Any) -> list[str]:
+def grid_warnings(res: ContactResult) -> list[str]:
     """A grid too coarse for the contact: fewer than :data:`MIN_CELLS_PER_RADIUS` cells
     per Hertz contact radius a0 (empty for a grid fine enough, or without a Hertz value)."""
     from surfmet.units import format_length
@@ -141,7 +144,7 @@ def grid_warnings(res: Any) -> list[str]:
             "scans' own pixel"]
 
 
-def solution_warnings(res: Any, mats: Any) -> list[str]:
+def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
     """What makes a solved contact's answer doubtful, as sentences.
 
     - an elastic solution whose peak pressure exceeds the softer body's hardness (or, with
@@ -173,7 +176,8 @@ def solution_warnings(res: Any, mats: Any) -> list[str]:
     return out
 
 
-def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: Any,
+def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
+                  e_star: MaterialPair | float,
                   hardness: float | None = None, offset: tuple[float, float] | None = None,
                   max_grid: int | None = MAX_GRID, **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).

@@ -27,6 +27,7 @@ from surfmet.model import Topography
 
 if TYPE_CHECKING:
     from surfmet.mechanics._types import ScanSource, Spikes
+    from surfmet.mechanics.pairing import PairedRoughness
 
 #: The largest automatic contact grid, for every entry point (CLI, API, report, sweep):
 #: None runs on the scans' own pixel at any size that fits in memory, so that two ways of
@@ -48,7 +49,7 @@ def spike_mode(spikes: Spikes) -> str:
     raise SurfmetInputError(f"spikes must be one of {', '.join(SPIKE_CHOICES)}, got {spikes!r}")
 
 
-def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
+def pixel_source(dx: float, pair: PairedRoughness | None, grid: int | None) -> str:
     """Where a contact grid's pixel came from, for the output."""
     if grid is not None:
         return f"--grid {grid}"
@@ -59,20 +60,21 @@ def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
     return "automatic, smooth ball"
 
 
-def read_areal(obj: Any, what: str) -> Topography | None:
+def read_areal(obj: ScanSource | None, what: str) -> Topography | None:
     """The scan of the ``what`` (a Topography, or a file read with :func:`surfmet.read`)."""
     if obj is None:
         return None
+    scan: object = obj
     if isinstance(obj, (str, os.PathLike, Path)):
         import surfmet
 
-        obj = surfmet.read(obj)
-    if not isinstance(obj, Topography):
-        kind = getattr(obj, "kind", type(obj).__name__)
+        scan = surfmet.read(obj)
+    if not isinstance(scan, Topography):
+        kind = getattr(scan, "kind", type(scan).__name__)
         whose = "" if what == "scan" else f" of the {what}"
         raise SurfmetInputError(f"a contact needs an areal scan (a height map){whose}, got "
                                 f"a {kind}: give a map, not a single profile")
-    return obj
+    return scan
 
 
 def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES

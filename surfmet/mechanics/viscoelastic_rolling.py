@@ -29,6 +29,7 @@ from surfmet.records.rolling import sweep_solve
 from surfmet.units import quantity
 
 if TYPE_CHECKING:
+    from contact.materials import Material
     from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -48,7 +49,7 @@ def _parse_time(text: str) -> float:
         raise SurfmetInputError(f"cannot read the time {text!r}: write e.g. 2ms") from None
 
 
-def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
+def parse_viscoelastic(text: str, ball: Material, plate: Material) -> tuple[str, Any]:
     """``BODY:Eg=..:Er=..:tau=..[:nu=..]`` -> (body, StandardLinearSolid).
 
     Raises

@@ -31,6 +31,7 @@ from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
 if TYPE_CHECKING:
+    from contact.materials import Material
     from surfmet.mechanics._types import Materials, ScanSource
 
 #: |K| at or below this is quasi-identical (the viscoelastic traction solvers' model).
@@ -74,7 +75,7 @@ def _shear(body: Any, glassy: bool) -> tuple[float, float]:
     return float(body.shear_modulus), float(body.nu)
 
 
-def pair_kalker_k(ball: Any, plate: Any) -> tuple[float, float]:
+def pair_kalker_k(ball: Material, plate: Material) -> tuple[float, float]:
     """Kalker's K of the pair (ball = body 1) with glassy and with relaxed moduli
     (:func:`contact.halfspace.constants.pair_constants_from`)."""
     from contact.halfspace.constants import pair_constants_from
