@@ -95,6 +95,10 @@ def test_ball_contact_shows_load_radius_and_hertz(smooth_contact):
         assert text in html, text
     text = repr(smooth_contact)
     assert text.startswith("BallContact(load=10 N, radius=20 mm") and len(text) < 120
+    # the engine's record too: one line, not every array in full
+    engine = repr(smooth_contact.result)
+    assert engine.startswith("ContactResult(64 x 64 cells, load=10 N")
+    assert f"contact_radius={a:.4g} m"[:20] in engine and len(engine) < 160
 
 
 def test_hertz_check_shows_verdict_and_numbers():
