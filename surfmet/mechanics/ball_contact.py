@@ -23,8 +23,10 @@ from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 if TYPE_CHECKING:
     from contact.bem.result import ContactResult
     from contact.material_pair import MaterialPair
+    from contact.materials import Material
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
+    from surfmet.mechanics.scan_preparation import PreparedScans
 
 #: Fewest cells a contact may cover before the answer is called under-resolved.
 MIN_CONTACT_CELLS = 20
@@ -56,15 +58,15 @@ class BallContact:
         What was done to the scans.
     """
 
-    result: Any
-    ball_material: Any
-    plate_material: Any
-    pair: Any
+    result: ContactResult
+    ball_material: Material
+    plate_material: Material
+    pair: PairedRoughness | None
     radius: float
     plate_file: str | None = None
     ball_file: str | None = None
     warnings: tuple[str, ...] = ()
-    preparation: Any = None
+    preparation: PreparedScans | None = None
 
     def __repr__(self) -> str:
         from surfmet.units import format_quantity as q

@@ -42,6 +42,10 @@ from surfmet.mechanics.material_spec import parse_materials
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, prepare_scans
 
 if TYPE_CHECKING:
+    from contact.bem.result import ContactResult
+    from contact.hertzcheck import HertzComparison
+    from contact.material_pair import MaterialPair
+    from contact.materials import Material
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 
@@ -63,21 +67,21 @@ class HertzCheck:
         The resolved pair (E*, the default hardness and its source).
     """
 
-    comparison: Any
-    elastic: Any
-    plastic: Any
+    comparison: HertzComparison
+    elastic: ContactResult
+    plastic: ContactResult | None
     radius: float
     load: float
     e_star: float
-    ball_material: Any
-    plate_material: Any
+    ball_material: Material
+    plate_material: Material
     scans: PreparedScans
     notes: tuple[str, ...]
     hierarchy: Any = None
     summits: Any = None
     grid: int | None = None
     adhesion: Any = None  # surfmet.mechanics.hertz_adhesion.HertzAdhesion
-    materials: Any = None  # contact.material_pair.MaterialPair
+    materials: MaterialPair | None = None
 
     @property
     def verdict(self) -> str:
