@@ -15,22 +15,29 @@ after a bare ``import surfmet`` and loads only what it names.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet._lazy import attach
 from surfmet._version import __version__
 from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
 from surfmet.model import Profile, Topography
 
+if TYPE_CHECKING:
+    import os
+    from pathlib import Path
 
-def read(source: Any, format: str | None = None, **options: Any) -> Topography | Profile:
+    from surfmet.io.registry import Source
+
+
+def read(source: Source, format: str | None = None, **options: Any) -> Topography | Profile:
     """Read a scan from a path, its bytes or a binary stream (see :func:`surfmet.io.read`)."""
     from surfmet.io import read as _read
 
     return _read(source, format=format, **options)
 
 
-def write(scan: Topography | Profile, path: Any, format: str | None = None, **options: Any) -> Any:
+def write(scan: Topography | Profile, path: str | os.PathLike[str], format: str | None = None,
+          **options: Any) -> Path:
     """Write a scan file (see :func:`surfmet.io.write`)."""
     from surfmet.io import write as _write
 
