@@ -28,8 +28,7 @@ Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 
 from __future__ import annotations
 
-from typing import Any
-
+from contact._lazy import attach
 from contact.errors import (
     ContactError,
     ContactInputError,
@@ -61,7 +60,6 @@ _LAZY = {
     "CompositeRoughness": "contact.setups.composite",
     "flat_contact": "contact.setups.flat",
     "solve_normal": "contact.bem",
-    "SolverStats": "contact.bem",
     "ContactResult": "contact.bem.result",
     "SphereContact": "contact.setups.ball_on_plate",
     "solve_sphere": "contact.setups.ball_on_plate",
@@ -81,12 +79,11 @@ _LAZY = {
 }
 
 
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        import importlib
+#: The engine's rooms, reachable as ``contact.<room>`` without an explicit import.
+SUBPACKAGES = ("adhesion", "bem", "halfspace", "rotor", "roughcontact", "setups", "tangential",
+               "viscoelastic")
 
-        return getattr(importlib.import_module(_LAZY[name]), name)
-    raise AttributeError(f"module 'contact' has no attribute {name!r}")
+__getattr__, __dir__ = attach(__name__, SUBPACKAGES, _LAZY)
 
 
 __all__ = [
@@ -103,7 +100,6 @@ __all__ = [
     "HertzSphere",
     "Material",
     "MaterialPair",
-    "SolverStats",
     "SphereContact",
     "analyse_table",
     "analyse_test",

@@ -297,6 +297,20 @@ class Topography:
             f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
         )
 
+    def _repr_html_(self) -> str:
+        """A small height map and the grid, pixel and height range (Jupyter)."""
+        from surfmet.display import map_html, value_range
+        from surfmet.units import format_quantity as q
+
+        return map_html(self.heights, "Topography", [
+            ("grid", f"{self.nx} × {self.ny}", "points"),
+            ("size", f"{q(self.size_x, 'm')} × {q(self.size_y, 'm')}", ""),
+            ("pixel", f"{q(self.dx, 'm')} × {q(self.dy, 'm')}", ""),
+            ("height range", value_range(self.heights), "m"),
+            ("non-measured", 100 * self.nan_fraction, "%"),
+            ("format", self.metadata.get("format") or "-", ""),
+        ])
+
 
 @dataclass(frozen=True, eq=False)
 class Profile:
@@ -401,6 +415,20 @@ class Profile:
             f"Profile(n={self.n}, dx={self.dx:.6g} m, {kind}, "
             f"nan_fraction={self.nan_fraction:.4g}, format={self.metadata.get('format')!r})"
         )
+
+    def _repr_html_(self) -> str:
+        """A line of the profile and its length, spacing and height range (Jupyter)."""
+        from surfmet.display import line_html, value_range
+
+        return line_html(self.positions, self.z, "Profile", [
+            ("points", self.n, ""),
+            ("length", self.length, "m"),
+            ("spacing", self.dx, "m"),
+            ("spacing is", "uniform" if self.is_uniform else "non-uniform", ""),
+            ("height range", value_range(self.z), "m"),
+            ("non-measured", 100 * self.nan_fraction, "%"),
+            ("format", self.metadata.get("format") or "-", ""),
+        ])
 
 
 Scan = Topography | Profile

@@ -61,6 +61,24 @@ class RoughnessResult:
                 f"{symbol!r} was not computed; have {', '.join(self.parameters)}"
             ) from None
 
+    def __repr__(self) -> str:
+        # RoughnessResult(areal, 19 parameters: Sa=1.823 µm, Sq=2.416 µm, Sz=243.4 µm)
+        from surfmet.units import format_quantity
+
+        prefix = "S" if self.kind == "areal" else "R"
+        shown = [f"{prefix}{s}={format_quantity(*self.parameters[prefix + s])}"
+                 for s in ("a", "q", "z") if prefix + s in self.parameters]
+        return (f"RoughnessResult({self.kind}, {len(self.parameters)} parameters"
+                + (": " + ", ".join(shown) if shown else "") + ")")
+
+    def _repr_html_(self) -> str:
+        """Every parameter with its unit (Jupyter)."""
+        from surfmet.display import quantity_table
+
+        title = f"Roughness ({self.kind})" + (f": {self.file}" if self.file else "")
+        return quantity_table(title, [(name, value, unit)
+                                      for name, (value, unit) in self.parameters.items()])
+
     def to_json(self) -> dict[str, Any]:
         """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types).
 

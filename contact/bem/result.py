@@ -85,6 +85,13 @@ class ContactResult:
     hertz: Any = None
     extra: dict[str, Any] = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        # one line of SI numbers: the dataclass's own repr printed every array in full
+        ny, nx = self.pressure.shape
+        return (f"ContactResult({nx} x {ny} cells, load={self.load:.4g} N, "
+                f"contact_radius={self.contact_radius:.4g} m, pmax={self.pmax:.4g} Pa, "
+                f"converged={self.converged})")
+
     @property
     def shape(self) -> tuple[int, int]:
         """Grid shape (ny, nx)."""

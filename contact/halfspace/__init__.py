@@ -16,3 +16,18 @@
 The Love kernels are for a composite modulus E* = 1 (divide by E* for metres); the pair's
 blocks carry the pair's constants (m/Pa).
 """
+
+from contact._lazy import attach
+
+# Each room loads on first use (contact.halfspace.<room>), so that importing the package
+# imports none of them.
+__all__ = [
+    "cerruti",
+    "constants",
+    "convolution",
+    "influence",
+    "padding",
+    "pair",
+]
+
+__getattr__, __dir__ = attach(__name__, __all__)

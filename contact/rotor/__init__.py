@@ -26,3 +26,39 @@ One module per concept:
 The rotor study imports nothing from the contact-mechanics modules but the error family and
 the input checks, and nothing from ``surfmet``.
 """
+
+from contact._lazy import attach
+
+# Each room loads on first use (contact.rotor.<room>), so that importing the package
+# imports none of them.
+__all__ = [
+    "adequacy",
+    "alignment",
+    "analysis",
+    "arrays",
+    "confounds",
+    "diagnostics",
+    "extension",
+    "family",
+    "fitting",
+    "forward",
+    "frames",
+    "groups",
+    "inference",
+    "joint",
+    "mechanics",
+    "misreads",
+    "noise",
+    "paper",
+    "parabola",
+    "rig",
+    "selection",
+    "simulator",
+    "smooth",
+    "starts",
+    "tables",
+    "track",
+    "verdict",
+]
+
+__getattr__, __dir__ = attach(__name__, __all__)

@@ -192,3 +192,6 @@ def _no_room(exc: OSError) -> int:
     print(f"surfmet: error: cannot write the output: {exc.strerror or exc}; free some "
           "space and run again", file=sys.stderr)
     return 1
+
+
+__all__ = ["SUBCOMMANDS", "UserError", "build_parser", "main"]

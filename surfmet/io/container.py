@@ -31,8 +31,6 @@ the mean step by more than 1e-6 in the file's unit (the peer's XYZ rule), with t
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -40,7 +38,7 @@ import numpy as np
 from surfmet.errors import SurfmetFormatError
 from surfmet.io._binary import format_error
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip, read_member
-from surfmet.io.registry import read_bytes, register_reader
+from surfmet.io.registry import Source, read_bytes, register_reader, source_bytes
 from surfmet.model import STATED, Profile, Topography, unit_sources
 from surfmet.units import length_factor, quantity
 
@@ -179,8 +177,13 @@ def decode(buf: bytes, name: str, measurement: int | None = None,
     return scans[index].with_metadata(channel=names[index], channels=names)
 
 
-def read_container(path: str | os.PathLike[str]) -> list[Profile | Topography]:
-    """Every measurement of a contact.engineering container file.
+def read_container(source: Source) -> list[Profile | Topography]:
+    """Every measurement of a contact.engineering container.
+
+    Parameters
+    ----------
+    source : path-like, bytes or binary file-like object
+        The container file, its bytes or a binary stream (as :func:`surfmet.io.read`).
 
     Raises
     ------
@@ -188,16 +191,12 @@ def read_container(path: str | os.PathLike[str]) -> list[Profile | Topography]:
         Not a readable container, a data file that ``meta.yml`` names is missing, or a
         measurement that cannot be read (the message names the member).
     """
-    p = Path(path)
-    try:
-        buf = p.read_bytes()
-    except OSError as exc:
-        raise SurfmetFormatError(f"{p}: cannot read the file ({exc.strerror or exc})") from None
+    buf, name, source_name = source_bytes(source)
     if not _is_container(buf):
-        raise SurfmetFormatError(f"{p}: not a contact.engineering container (a zip holding "
+        raise SurfmetFormatError(f"{name}: not a contact.engineering container (a zip holding "
                                  "meta.yml)")
-    scans = decode_all(buf, str(p))
-    return [s.with_metadata(source=str(p)) for s in scans]
+    scans = decode_all(buf, name)
+    return [s.with_metadata(source=source_name) if source_name else s for s in scans]
 
 
 __all__ = ["decode", "decode_all", "read_container"]

@@ -17,7 +17,7 @@ import zlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 
@@ -281,13 +281,22 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     return scan.replace(metadata=md)
 
 
-def read(path: str | os.PathLike[str], format: str | None = None, **options: Any) -> Scan:
-    """Read a scan file.
+#: What :func:`read` takes: a path, the file's bytes, or a binary file-like object.
+Source = str | os.PathLike[str] | bytes | bytearray | memoryview | BinaryIO
+
+
+def read(source: Source, format: str | None = None, **options: Any) -> Scan:
+    """Read a scan from a file, from its bytes or from a binary stream.
 
     Parameters
     ----------
-    path : path-like
-        The file.
+    source : path-like, bytes or binary file-like object
+        The file; or its content (``bytes``, ``bytearray``, ``memoryview``); or an object
+        with a ``read()`` that returns bytes (an open file, ``io.BytesIO``, an upload), read
+        from its current position to its end. The format is detected from the bytes' magic
+        signature; failing that, from the extension of the file's or the stream's
+        ``name``. Bytes and nameless streams have no extension: give ``format=`` for the
+        formats without a signature (text matrices and columns, see :func:`formats`).
     format : str, optional
         Registry name; overrides detection (see :func:`formats`).
     **options
@@ -301,15 +310,52 @@ def read(path: str | os.PathLike[str], format: str | None = None, **options: Any
     Returns
     -------
     Topography or Profile
-        Heights in metres, NaN where not measured, ``metadata["format"]`` set.
+        Heights in metres, NaN where not measured, ``metadata["format"]`` set;
+        ``metadata["source"]`` is the path (or the stream's name) the scan was read from.
 
     Raises
     ------
     SurfmetFormatError
         Unknown format, unreadable, truncated, corrupted or inconsistent file, zero points
-        or all points non-measured. The message names the file and the problem.
+        or all points non-measured. The message names the file (``<bytes>``, or the
+        stream's name or ``<stream>``) and the problem.
+    SurfmetInputError
+        A source that is none of the above (a text-mode stream, a number...).
     """
-    p = Path(path)
+    buf, name, source_name = source_bytes(source)
+    scan = read_bytes(buf, format=format, name=name, **options)
+    return scan.with_metadata(source=source_name) if source_name else scan
+
+
+def source_bytes(source: Source) -> tuple[bytes, str, str | None]:
+    """The bytes of a path, a bytes object or a binary stream, the name that messages give
+    it, and the name to record as ``metadata["source"]`` (None for bare bytes).
+
+    Raises
+    ------
+    SurfmetFormatError
+        A file that cannot be read (missing, a directory, a device, too large for memory)
+        or a stream whose ``read()`` fails.
+    SurfmetInputError
+        A source that is neither a path, bytes nor a binary stream.
+    """
+    if isinstance(source, (bytes, bytearray, memoryview)):
+        return bytes(source), "<bytes>", None
+    if hasattr(source, "read"):
+        label = getattr(source, "name", None)
+        name = os.fsdecode(label) if isinstance(label, (str, bytes, os.PathLike)) else "<stream>"
+        try:
+            buf = source.read()
+        except (OSError, ValueError) as exc:  # ValueError: a closed file
+            raise SurfmetFormatError(f"{name}: cannot read the stream ({exc})") from None
+        if not isinstance(buf, (bytes, bytearray, memoryview)):
+            raise SurfmetInputError(f"{name}: the stream gives {type(buf).__name__}, not bytes: "
+                                    "open the file in binary mode ('rb')")
+        return bytes(buf), name, (name if name != "<stream>" else None)
+    if not isinstance(source, (str, os.PathLike)):
+        raise SurfmetInputError(f"cannot read a scan from a {type(source).__name__}: give a "
+                                "path, bytes or a binary file-like object")
+    p = Path(source)
     _check_readable(p)
     try:
         buf = p.read_bytes()
@@ -319,8 +365,7 @@ def read(path: str | os.PathLike[str], format: str | None = None, **options: Any
         raise SurfmetFormatError(f"{p}: is a directory, not a scan file") from None
     except OSError as exc:
         raise SurfmetFormatError(f"{p}: cannot read the file ({exc.strerror or exc})") from None
-    scan = read_bytes(buf, format=format, name=str(p), **options)
-    return scan.with_metadata(source=str(p))
+    return buf, str(p), str(p)
 
 
 #: Reading holds the file's bytes and the decoded float64 heights (at least as many bytes

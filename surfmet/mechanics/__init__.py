@@ -15,3 +15,29 @@ engine and returns a small result object with ``to_json()`` (its record is built
 Shared by them: :mod:`~surfmet.mechanics.pairing` (a plate and a ball scan on one grid)
 and :mod:`~surfmet.mechanics.material_spec` (``steel,aluminium`` text to materials).
 """
+
+from surfmet._lazy import attach
+
+# Each room loads on first use (surfmet.mechanics.<room>), so that importing the package
+# imports none of them.
+__all__ = [
+    "adhesion",
+    "adhesion_line",
+    "all_scales",
+    "ball_contact",
+    "flat_contact",
+    "hertz_adhesion",
+    "hertz_check",
+    "material_spec",
+    "pairing",
+    "resolution_study",
+    "rolling_contact",
+    "rolling_resistance",
+    "rotor_verdict",
+    "scan_preparation",
+    "spectrum",
+    "viscoelastic_rolling",
+    "viscoelastic_rolling_contact",
+]
+
+__getattr__, __dir__ = attach(__name__, __all__)

@@ -14,11 +14,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
 
 INTERACTIONS = ("dugdale", "exponential")
 #: The adhesion law of every command and facade unless told otherwise: the one with a
@@ -67,10 +70,11 @@ class Adhesion:
         return hasattr(self.result, "cells")
 
 
-def adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
+def adhesion(radius: float, *, work: float, range_: float, materials: Materials | None = None,
              e_star: float | None = None, interaction: str = INTERACTION,
              grid: int | None = None, size: float | None = None, steps: int = 40,
-             plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
+             plate: ScanSource | None = None, ball: ScanSource | None = None,
+             spikes: Spikes = SPIKES,
              progress: Callable[[int, int], None] | None = None) -> Adhesion:
     """The approach-retraction cycle of a sphere of ``radius`` on a flat (a cylinder:
     :func:`surfmet.mechanics.adhesion_line.line_adhesion`).
@@ -102,7 +106,7 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     return Adhesion(res, scans)
 
 
-def adhesion_pair(materials: Any, e_star: float | None) -> Any:
+def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`) of exactly one of a
     material pair and E* itself (Pa), by
     :func:`surfmet.mechanics.material_spec.material_pair`."""
@@ -113,8 +117,8 @@ def adhesion_pair(materials: Any, e_star: float | None) -> Any:
     return material_pair(materials, e_star=e_star)
 
 
-def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIKES
-               ) -> tuple[Any, dict[str, Any] | None]:
+def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, size: float,
+               spikes: Spikes = SPIKES) -> tuple[Any, dict[str, Any] | None]:
     """The scans' composite roughness on the solver's ``grid`` x ``grid`` cells of side
     ``size`` (m), centred on the middle of the scans, and the record of the scans.
 
@@ -243,7 +247,7 @@ def adhesion_record(run: Adhesion) -> dict[str, Any]:
     }
 
 
-def plot(run: Adhesion, path: Any = None) -> Any:
+def plot(run: Adhesion, path: PathLike | None = None) -> Any:
     """Load against approach, and contact radius against load, in and out."""
     from surfmet.plots._style import finish, new_figure
 

@@ -11,7 +11,7 @@ levelled plate, sampled by the engine's
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion import (
@@ -26,6 +26,9 @@ from surfmet.mechanics.adhesion import (
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
+
 
 def refuse_ball(ball: Any) -> None:
     """A line contact takes no ball scan: refused (before any file is read)."""
@@ -38,10 +41,11 @@ def refuse_ball(ball: Any) -> None:
 LINE_CELLS = 2048
 
 
-def line_adhesion(radius: float, *, work: float, range_: float, materials: Any = None,
+def line_adhesion(radius: float, *, work: float, range_: float, materials: Materials | None = None,
                   e_star: float | None = None, interaction: str = "dugdale",
                   grid: int | None = None, size: float | None = None, steps: int = 40,
-                  plate: Any = None, ball: Any = None, spikes: Any = SPIKES,
+                  plate: ScanSource | None = None, ball: ScanSource | None = None,
+                  spikes: Spikes = SPIKES,
                   progress: Callable[[int, int], None] | None = None) -> Adhesion:
     """The approach-retraction cycle of a cylinder of ``radius`` on a flat, per unit length,
     with the arguments of :func:`surfmet.mechanics.adhesion.adhesion` (``grid``: cells
@@ -128,7 +132,7 @@ def line_record(run: Any) -> dict[str, Any]:
     }
 
 
-def line_plot(run: Any, path: Any = None) -> Any:
+def line_plot(run: Any, path: PathLike | None = None) -> Any:
     """Load per length against approach, and contact half-width against load."""
     from surfmet.plots._style import finish, new_figure
 

@@ -15,10 +15,18 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
+
+if TYPE_CHECKING:
+    from contact.bem.result import ContactResult
+    from contact.material_pair import MaterialPair
+    from contact.materials import Material
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
+    from surfmet.mechanics.pairing import PairedRoughness
+    from surfmet.mechanics.scan_preparation import PreparedScans
 
 #: Fewest cells a contact may cover before the answer is called under-resolved.
 MIN_CONTACT_CELLS = 20
@@ -50,15 +58,37 @@ class BallContact:
         What was done to the scans.
     """
 
-    result: Any
-    ball_material: Any
-    plate_material: Any
-    pair: Any
+    result: ContactResult
+    ball_material: Material
+    plate_material: Material
+    pair: PairedRoughness | None
     radius: float
     plate_file: str | None = None
     ball_file: str | None = None
     warnings: tuple[str, ...] = ()
-    preparation: Any = None
+    preparation: PreparedScans | None = None
+
+    def __repr__(self) -> str:
+        from surfmet.units import format_quantity as q
+
+        res = self.result
+        return (f"BallContact(load={q(res.load, 'N')}, radius={q(self.radius, 'm')}, "
+                f"contact radius={q(res.contact_radius, 'm')}, pmax={q(res.pmax, 'Pa')})")
+
+    def _repr_html_(self) -> str:
+        """Load, approach, contact radius and area, peak pressure, with units (Jupyter)."""
+        from surfmet.display import quantity_table
+
+        res = self.result
+        rows = [("load", res.load, "N"), ("ball radius", self.radius, "m"),
+                ("E*", res.e_star, "Pa"), ("approach", res.approach, "m"),
+                ("contact radius", res.contact_radius, "m"),
+                ("contact area", res.contact_area, "m^2"), ("peak pressure", res.pmax, "Pa"),
+                ("grid", f"{res.pressure.shape[1]} × {res.pressure.shape[0]}", "cells")]
+        if res.hertz is not None:
+            rows += [("Hertz contact radius a0", res.hertz.a, "m"),
+                     ("Hertz peak pressure p0", res.hertz.p0, "Pa")]
+        return quantity_table("Ball contact", rows)
 
     def to_json(self) -> dict[str, Any]:
         """The ``surfmet contact`` record (every value with its unit), with what was done
@@ -99,7 +129,7 @@ def _file(obj: Any) -> str | None:
     return getattr(obj, "metadata", {}).get("source")  # a scan read by the caller
 
 
-def grid_warnings(res: Any) -> list[str]:
+def grid_warnings(res: ContactResult) -> list[str]:
     """A grid too coarse for the contact: fewer than :data:`MIN_CELLS_PER_RADIUS` cells
     per Hertz contact radius a0 (empty for a grid fine enough, or without a Hertz value)."""
     from surfmet.units import format_length
@@ -116,7 +146,7 @@ def grid_warnings(res: Any) -> list[str]:
             "scans' own pixel"]
 
 
-def solution_warnings(res: Any, mats: Any) -> list[str]:
+def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
     """What makes a solved contact's answer doubtful, as sentences.
 
     - an elastic solution whose peak pressure exceeds the softer body's hardness (or, with
@@ -148,7 +178,8 @@ def solution_warnings(res: Any, mats: Any) -> list[str]:
     return out
 
 
-def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: Any,
+def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
+                  e_star: MaterialPair | float,
                   hardness: float | None = None, offset: tuple[float, float] | None = None,
                   max_grid: int | None = MAX_GRID, **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).
@@ -173,12 +204,12 @@ def solve_on_pair(pair: Any, *, radius: float, load: float, e_star: Any,
 
 
 def ball_contact(
-    plate: Any = None,
-    ball: Any = None,
+    plate: ScanSource | None = None,
+    ball: ScanSource | None = None,
     *,
     radius: float,
     load: float,
-    materials: Any = "steel,aluminium",
+    materials: Materials = "steel,aluminium",
     hardness: float | None = None,
     plastic: bool = False,
     grid: int | None = None,
@@ -189,7 +220,7 @@ def ball_contact(
     max_iter: int = 2000,
     max_grid: int | None = MAX_GRID,
     callback: Callable[[int, float], None] | None = None,
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     offset: tuple[float, float] | None = None,
 ) -> BallContact:
     """Normal contact of a ball on a plate from their scans.

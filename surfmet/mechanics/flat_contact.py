@@ -22,7 +22,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -32,6 +32,11 @@ from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.mechanics.spectrum import Spectrum
 from surfmet.model import Topography
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from surfmet.mechanics._types import Materials, PathLike, Spikes
 
 
 @dataclass(frozen=True, eq=False)
@@ -69,9 +74,9 @@ def parse_pressures(text: str) -> np.ndarray:
 
 def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: Any,
                  hardness: float | None = None, periodic: bool | None = None,
-                 stiffness: str = "curve", progress: Any = None,
-                 spikes: Any = SPIKES, material_hardness: float | None = None,
-                 adhesion: Any = None, materials: Any = None) -> FlatContactReport:
+                 stiffness: str = "curve", progress: Callable[[int, int], Any] | None = None,
+                 spikes: Spikes = SPIKES, material_hardness: float | None = None,
+                 adhesion: Any = None, materials: Materials | None = None) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -257,8 +262,8 @@ def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:
             "the elastic theories (nor an elastic BEM) describes it",)
 
 
-def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve | None = None
-         ) -> Any:
+def plot(rep: FlatContactReport | None, path: PathLike | None = None,
+         all_scales: ModelCurve | None = None) -> Any:
     """A/A0 and ū against p for the BEM and the three theories, and Persson's theory from
     all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone."""
     from surfmet.plots._style import finish, new_figure

@@ -35,11 +35,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import parse_materials
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, prepare_scans
+
+if TYPE_CHECKING:
+    from contact.bem.result import ContactResult
+    from contact.hertzcheck import HertzComparison
+    from contact.material_pair import MaterialPair
+    from contact.materials import Material
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 
 @dataclass(frozen=True, eq=False)
@@ -60,21 +67,21 @@ class HertzCheck:
         The resolved pair (E*, the default hardness and its source).
     """
 
-    comparison: Any
-    elastic: Any
-    plastic: Any
+    comparison: HertzComparison
+    elastic: ContactResult
+    plastic: ContactResult | None
     radius: float
     load: float
     e_star: float
-    ball_material: Any
-    plate_material: Any
+    ball_material: Material
+    plate_material: Material
     scans: PreparedScans
     notes: tuple[str, ...]
     hierarchy: Any = None
     summits: Any = None
     grid: int | None = None
     adhesion: Any = None  # surfmet.mechanics.hertz_adhesion.HertzAdhesion
-    materials: Any = None  # contact.material_pair.MaterialPair
+    materials: MaterialPair | None = None
 
     @property
     def verdict(self) -> str:
@@ -117,6 +124,32 @@ class HertzCheck:
         scan = [] if c.judged else [c.criterion("resolution").reason]
         return [*scan, *grid_warnings(self.result)]
 
+    def __repr__(self) -> str:
+        from surfmet.units import format_quantity as q
+
+        return (f"HertzCheck(verdict={self.verdict!r}, alpha={self.alpha:.4g}, "
+                f"load={q(self.load, 'N')}, radius={q(self.radius, 'm')})")
+
+    def _repr_html_(self) -> str:
+        """The verdict and the numbers it rests on: GJM alpha, sigma, load, radius, E*,
+        Hertz's and the boundary elements' contact radius and peak pressure (Jupyter)."""
+        from surfmet.display import quantity_table
+
+        c = self.comparison
+        return quantity_table("Hertz check", [
+            ("verdict", self.verdict, ""),
+            ("Hertz holds", "yes" if self.hertz_holds else "no", ""),
+            ("GJM alpha", self.alpha, ""),
+            ("sigma", self.sigma, "m"),
+            ("load", self.load, "N"),
+            ("ball radius", self.radius, "m"),
+            ("E*", self.e_star, "Pa"),
+            ("Hertz contact radius a0", c.hertz.a, "m"),
+            ("Hertz peak pressure p0", c.hertz.p0, "Pa"),
+            ("BEM contact radius", self.result.contact_radius, "m"),
+            ("BEM peak pressure", c.pmax, "Pa"),
+        ])
+
     def to_json(self) -> dict[str, Any]:
         """The record with exactly the issue's keys (see
         :func:`surfmet.records.hertz.hertz_check_record`)."""
@@ -138,15 +171,15 @@ class HertzCheck:
 
 
 def hertz_check(
-    scan: Any = None,
+    scan: ScanSource | None = None,
     *,
     radius: float,
     load: float,
-    materials: Any = "steel,aluminium",
-    ball: Any = None,
+    materials: Materials = "steel,aluminium",
+    ball: ScanSource | None = None,
     hardness: float | None = None,
     plastic: bool = True,
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     grid: int | None = None,
     max_grid: int | None = MAX_GRID,
     on_edge: str = "enlarge",

@@ -8,10 +8,13 @@ only parses the user's text, with units, into it.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.units import parse_pressure
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials
 
 
 def spec_options(opts: Iterable[str], what: str) -> Iterator[tuple[str, str]]:
@@ -68,7 +71,7 @@ def parse_material(text: str) -> Any:
     return material(name, **kw)
 
 
-def parse_materials(materials: Any) -> tuple[Any, Any]:
+def parse_materials(materials: Materials) -> tuple[Any, Any]:
     """``"BALL,PLATE"`` text, a pair of :class:`contact.materials.Material` or a resolved
     :class:`contact.material_pair.MaterialPair` -> ``(ball, plate)``."""
     from contact.material_pair import MaterialPair
@@ -90,7 +93,7 @@ def parse_materials(materials: Any) -> tuple[Any, Any]:
     return parse_material(parts[0]), parse_material(parts[1])
 
 
-def material_pair(materials: Any = None, *, e_star: float | None = None,
+def material_pair(materials: Materials | None = None, *, e_star: float | None = None,
                   hardness: float | None = None, rigid_flat: bool = False) -> Any:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`) of the user's materials.
 
@@ -117,7 +120,7 @@ def material_pair(materials: Any = None, *, e_star: float | None = None,
     return resolve_pair(*parse_materials(materials), hardness=hardness)
 
 
-def scan_pair(materials: Any = None, *, e_star: float | None = None,
+def scan_pair(materials: Materials | None = None, *, e_star: float | None = None,
               hardness: float | None = None) -> Any:
     """The pair of a scan pressed on a flat (``spectrum``, ``flat-contact``): ``"A"`` (the
     scan's material on a rigid flat), ``"A,B"`` (on an elastic flat of B), a resolved pair,

@@ -14,10 +14,15 @@ This module prints the study as a table (its JSON record is
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import SPIKES
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Sequence
+
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 #: Each quantity of a study: label, JSON unit, scale to the text unit, text unit.
 QUANTITIES = {
@@ -51,17 +56,17 @@ def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any,
 
 
 def contact_study(
-    plate: Any = None,
-    ball: Any = None,
+    plate: ScanSource | None = None,
+    ball: ScanSource | None = None,
     *,
     radius: float,
     load: float,
-    materials: Any = "steel,aluminium",
+    materials: Materials = "steel,aluminium",
     hardness: float | None = None,
     plastic: bool = False,
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
-    progress: Any = None,
+    progress: Callable[[str], Any] | None = None,
 ) -> tuple[Any, Any]:
     """Resolution study of a ball on a plate from scans.
 
@@ -99,17 +104,17 @@ def contact_study(
 
 
 def rolling_study(
-    plate: Any = None,
-    ball: Any = None,
+    plate: ScanSource | None = None,
+    ball: ScanSource | None = None,
     *,
     radius: float,
-    loads: Any,
-    materials: Any = "steel,aluminium",
+    loads: Sequence[float],
+    materials: Materials = "steel,aluminium",
     hardness: float | None = None,
     lossy: str = "both",
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
-    progress: Any = None,
+    progress: Callable[[str], Any] | None = None,
     **sweep_kwargs: Any,
 ) -> tuple[Any, Any]:
     """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;

@@ -17,9 +17,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials
 
 SIGN_CONVENTION = (
     "body 1 = ball, body 2 = plate; the contact moves in +x (leading edge at +x); "
@@ -76,7 +79,7 @@ ENLARGEMENTS = 3
 def solve_rolling_contact(
     radius: float,
     load: float,
-    materials: Any,
+    materials: Materials,
     mu: float,
     *,
     creepage: float | None = None,

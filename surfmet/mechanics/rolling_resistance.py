@@ -17,12 +17,15 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Loads, Materials, ScanSource, Spikes
 
 LOSSY = ("both", "plate", "ball")
 
@@ -82,18 +85,18 @@ def _load_list(loads: Any) -> np.ndarray:
 
 
 def rolling_resistance(
-    plate: Any = None,
-    ball: Any = None,
+    plate: ScanSource | None = None,
+    ball: ScanSource | None = None,
     *,
     radius: float,
-    materials: Any = "steel,aluminium",
-    loads: Any = "1N:100N:9",
+    materials: Materials = "steel,aluminium",
+    loads: Loads | str = "1N:100N:9",
     model: str = "hysteresis",
     hardness: float | None = None,
     alpha_h: float = 1.0,
     lossy: str = "both",
     kinematics: str = "rolling",
-    spikes: Any = SPIKES,
+    spikes: Spikes = SPIKES,
     grid: int | None = None,
     max_grid: int | None = MAX_GRID,
     centre: tuple[float, float] | None = None,
@@ -251,7 +254,7 @@ class TrackReport:
         return tracks_record(self)
 
 
-def rolling_tracks(plate: Any = None, ball: Any = None, *,
+def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
                    positions: Sequence[tuple[float, float] | None],
                    workers: int | None = None, scheduler: Any = None,
                    progress: bool | None = None, **options: Any) -> TrackReport:

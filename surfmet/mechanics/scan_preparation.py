@@ -20,10 +20,14 @@ import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import ScanSource, Spikes
+    from surfmet.mechanics.pairing import PairedRoughness
 
 #: The largest automatic contact grid, for every entry point (CLI, API, report, sweep):
 #: None runs on the scans' own pixel at any size that fits in memory, so that two ways of
@@ -36,7 +40,7 @@ SPIKE_CHOICES = ("remove", "keep")
 SPIKES = SPIKE_CHOICES[0]
 
 
-def spike_mode(spikes: Any) -> str:
+def spike_mode(spikes: Spikes) -> str:
     """``"remove"`` or ``"keep"`` from the text or a flag (True: remove, False: keep)."""
     if isinstance(spikes, bool):
         return "remove" if spikes else "keep"
@@ -45,7 +49,7 @@ def spike_mode(spikes: Any) -> str:
     raise SurfmetInputError(f"spikes must be one of {', '.join(SPIKE_CHOICES)}, got {spikes!r}")
 
 
-def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
+def pixel_source(dx: float, pair: PairedRoughness | None, grid: int | None) -> str:
     """Where a contact grid's pixel came from, for the output."""
     if grid is not None:
         return f"--grid {grid}"
@@ -56,23 +60,24 @@ def pixel_source(dx: float, pair: Any, grid: int | None) -> str:
     return "automatic, smooth ball"
 
 
-def read_areal(obj: Any, what: str) -> Topography | None:
+def read_areal(obj: ScanSource | None, what: str) -> Topography | None:
     """The scan of the ``what`` (a Topography, or a file read with :func:`surfmet.read`)."""
     if obj is None:
         return None
+    scan: object = obj
     if isinstance(obj, (str, os.PathLike, Path)):
         import surfmet
 
-        obj = surfmet.read(obj)
-    if not isinstance(obj, Topography):
-        kind = getattr(obj, "kind", type(obj).__name__)
+        scan = surfmet.read(obj)
+    if not isinstance(scan, Topography):
+        kind = getattr(scan, "kind", type(scan).__name__)
         whose = "" if what == "scan" else f" of the {what}"
         raise SurfmetInputError(f"a contact needs an areal scan (a height map){whose}, got "
                                 f"a {kind}: give a map, not a single profile")
-    return obj
+    return scan
 
 
-def clean_spikes(scan: Topography, what: str, spikes: Any = SPIKES
+def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES
                  ) -> tuple[Topography, int, str | None]:
     """The scan with its spikes removed (``spikes="remove"``) or as measured (``"keep"``):
     the scan, the number of spikes removed, and a note saying what was done."""
@@ -127,8 +132,8 @@ class PreparedScans:
                 "notes": list(self.notes)}
 
 
-def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
-                  ) -> PreparedScans:
+def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
+                  spikes: Spikes = SPIKES) -> PreparedScans:
     """Spikes, levelling, sphere removal and pairing of a plate and a ball scan.
 
     Parameters
@@ -177,7 +182,7 @@ def prepare_scans(plate: Any = None, ball: Any = None, *, spikes: Any = SPIKES
                          residuals=residuals, spikes=mode)
 
 
-def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[str, Any]]:
+def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topography, dict[str, Any]]:
     """A single scan made ready for a flat contact: spikes as :func:`prepare_scans` does
     them, then every non-measured point filled with its nearest measured value.
 
@@ -190,6 +195,8 @@ def prepare_flat(topo: Any, *, spikes: Any = SPIKES) -> tuple[Topography, dict[s
 
     mode = spike_mode(spikes)
     scan = read_areal(topo, "scan")
+    if scan is None:
+        raise SurfmetInputError("give a scan (a height map or its file)")
     if not np.isfinite(scan.heights).any():
         raise SurfmetInputError("the scan has no measured point")
     scan, count, note = clean_spikes(scan, "areal", mode)

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -41,6 +41,9 @@ from contact.roughcontact import (
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
+
+if TYPE_CHECKING:
+    from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 #: Values that change with the scan's lateral resolution (pixel size / short cut-off).
 RESOLUTION_DEPENDENT = ("slope_rms", "curvature_rms", "nayak_alpha", "summit_density",
@@ -252,7 +255,7 @@ def _noise_floor(spec: PSD, band: tuple[float, float]) -> float | None:
 
 
 def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | None = None,
-             hardness: float | None = None, materials: Any = None) -> Spectrum:
+             hardness: float | None = None, materials: Materials | None = None) -> Spectrum:
     """Describe a scan's spectrum (see the module docstring).
 
     Parameters
@@ -343,7 +346,7 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
                     settings=settings, noise_floor=floor, materials=pair)
 
 
-def prepared_scan(topo: Any, *, periodic: bool | None = None, spikes: Any = None
+def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None
                   ) -> tuple[Topography, bool, str, dict[str, Any]]:
     """The shared scan preparation for a spectrum or a flat contact: spikes removed (by
     default) and non-measured points filled as every contact command does
@@ -357,8 +360,8 @@ def prepared_scan(topo: Any, *, periodic: bool | None = None, spikes: Any = None
     return out, per, level, record
 
 
-def scan_spectrum(topo: Any, *, periodic: bool | None = None, spikes: Any = None,
-                  materials: Any = None, hardness: float | None = None
+def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None,
+                  materials: Materials | None = None, hardness: float | None = None
                   ) -> tuple[Spectrum, str, dict[str, Any]]:
     """The spectrum of one scan exactly as ``surfmet spectrum FILE`` gives it: the shared
     preparation (:func:`prepared_scan`) on the scan as read, then :func:`spectrum`.

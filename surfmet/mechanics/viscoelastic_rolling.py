@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,6 +27,10 @@ from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
 from surfmet.records.rolling import sweep_solve
 from surfmet.units import quantity
+
+if TYPE_CHECKING:
+    from contact.materials import Material
+    from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
 
@@ -45,7 +49,7 @@ def _parse_time(text: str) -> float:
         raise SurfmetInputError(f"cannot read the time {text!r}: write e.g. 2ms") from None
 
 
-def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
+def parse_viscoelastic(text: str, ball: Material, plate: Material) -> tuple[str, Any]:
     """``BODY:Eg=..:Er=..:tau=..[:nu=..]`` -> (body, StandardLinearSolid).
 
     Raises
@@ -107,11 +111,13 @@ class ViscoRollingReport:
         }
 
 
-def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
-                         materials: Any, loads: Any, speed: float,
+def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
+                         radius: float,
+                         materials: Materials, loads: Loads, speed: float,
                          viscoelastic: list[str] | None = None,
                          loss: tuple[float, float] | None = None, grid: int = 128,
-                         spikes: bool = True, progress: Any = None) -> ViscoRollingReport:
+                         spikes: bool = True, progress: Progress | None = None
+                         ) -> ViscoRollingReport:
     """Rolling resistance of viscoelastic bodies over a load sweep (smooth or scans).
 
     Each body is the ``--viscoelastic`` SLS given for it, else, with ``loss``, the SLS of
@@ -206,7 +212,7 @@ _UNITS = {"speed": "m/s", "hardness": "Pa", "peak_time": "s",
           "contact_radius_symmetric": "m"}
 
 
-def microslip_sweep(radius: float, materials: Any, mu: float,
+def microslip_sweep(radius: float, materials: Materials, mu: float,
                     grid: int | None = None) -> Any:
     """loads -> RollingSweep of micro-slip dissipation in free rolling (the tangential
     solver, :func:`surfmet.mechanics.rolling_contact.solve_rolling_contact`): F_r is the frictional
@@ -225,8 +231,8 @@ def microslip_sweep(radius: float, materials: Any, mu: float,
     return run
 
 
-def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminium",
-                       loads: Any = (2.0, 12.0, 7), speed: float = 0.1,
+def rolling_mechanisms(*, radius: float = 0.02, materials: Materials = "steel,aluminium",
+                       loads: Loads = (2.0, 12.0, 7), speed: float = 0.1,
                        loss: tuple[float, float] | None = None,
                        hardness: float | None = None, grid: int = 128,
                        mu: float | None = 0.3,

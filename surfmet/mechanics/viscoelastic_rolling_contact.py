@@ -23,12 +23,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
+
+if TYPE_CHECKING:
+    from contact.materials import Material
+    from surfmet.mechanics._types import Materials, ScanSource
 
 #: |K| at or below this is quasi-identical (the viscoelastic traction solvers' model).
 QUASI_IDENTICAL_K = 1e-6
@@ -71,7 +75,7 @@ def _shear(body: Any, glassy: bool) -> tuple[float, float]:
     return float(body.shear_modulus), float(body.nu)
 
 
-def pair_kalker_k(ball: Any, plate: Any) -> tuple[float, float]:
+def pair_kalker_k(ball: Material, plate: Material) -> tuple[float, float]:
     """Kalker's K of the pair (ball = body 1) with glassy and with relaxed moduli
     (:func:`contact.halfspace.constants.pair_constants_from`)."""
     from contact.halfspace.constants import pair_constants_from
@@ -94,9 +98,10 @@ def coupling_reason(kalker_k: tuple[float, float], free_rolling: bool) -> str | 
             f"the coupled elastic solve")
 
 
-def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
+def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Materials,
                                  viscoelastic: list[str], speed: float, line: bool = False,
-                                 grid: int | None = None, plate: Any = None, ball: Any = None,
+                                 grid: int | None = None, plate: ScanSource | None = None,
+                                 ball: ScanSource | None = None,
                                  spikes: bool = True, mu: float | None = None,
                                  creepage: float | None = None) -> ViscoRollingContact:
     """One steady viscoelastic rolling solve of a ball or a cylinder: the normal problem,
