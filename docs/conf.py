@@ -23,6 +23,7 @@ from pathlib import Path
 DOCS = Path(__file__).resolve().parent
 ROOT = DOCS.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(DOCS / "_ext"))
 os.environ.setdefault("MPLBACKEND", "Agg")
 
 import surfmet  # noqa: E402
@@ -40,6 +41,7 @@ extensions = [
     "numpydoc",
     "myst_parser",
     "sphinx_gallery.gen_gallery",
+    "surfmet_xref",  # docs/_ext: a reference to a name that does not exist fails
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -175,47 +177,6 @@ def write_api_pages(app: object = None) -> None:
         "",
     ] + [f"   {name}" for name in pages]
     _write_if_changed(api / "index.rst", "\n".join(index) + "\n")
-
-
-def _resolves(target: str) -> bool:
-    """Whether a dotted name is an object of the project (a module, or an attribute of one,
-    a dataclass field included)."""
-    parts = target.split(".")
-    for cut in range(len(parts), 0, -1):
-        try:
-            obj = import_module(".".join(parts[:cut]))
-        except ImportError:
-            continue
-        for attr in parts[cut:]:
-            fields = getattr(obj, "__dataclass_fields__", {})
-            if attr in fields:
-                obj = fields[attr]
-                continue
-            try:
-                obj = getattr(obj, attr)
-            except AttributeError:
-                return False
-        return True
-    return False
-
-
-def _own_object(app: object, domain: object, node: object) -> bool | None:
-    """Silence a reference to a real object of the project that the API pages do not
-    document (an engine's inner module, say); a name that resolves to nothing (a typo, a
-    renamed or removed function) still warns, and so fails the build."""
-    if getattr(domain, "name", None) != "py":
-        return None
-    target = node.get("reftarget", "")  # type: ignore[attr-defined]
-    module = node.get("py:module") or ""  # type: ignore[attr-defined]
-    if target.split(".")[0] not in ("surfmet", "contact", "profiles") and module:
-        target = f"{module}.{target}"
-    if target.split(".")[0] in ("surfmet", "contact", "profiles") and _resolves(target):
-        return True
-    return None
-
-
-def setup(app: object) -> None:
-    app.connect("warn-missing-reference", _own_object)  # type: ignore[attr-defined]
 
 
 write_api_pages()
