@@ -19,7 +19,8 @@ Rooms: set-ups (``contact.setups``: ball on plate, line, flat, the composite rou
 field post-processing (``contact.fields``), roughness statistics (``contact.roughstats``),
 theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hertzcheck``,
 ``contact.resolution``), rolling resistance (``contact.rolling``) and its load exponent
-(``contact.exponent``).
+(``contact.exponent``)::
+
     sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
     analyse_table(columns)                 # rotor law of motion (rotor.groups)
 

@@ -33,6 +33,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
+from typing import Any
 
 from contact.errors import ContactInputError
 
@@ -171,7 +172,8 @@ def material(
             f"unknown material {name!r}; known materials: {known}; or define it by giving "
             "its Young's modulus and Poisson's ratio (and optionally its hardness)")
     base = MATERIALS[key]
-    changes = {k: v for k, v in (("E", E), ("nu", nu), ("hardness", hardness)) if v is not None}
+    given = (("E", E), ("nu", nu), ("hardness", hardness))
+    changes: dict[str, Any] = {k: v for k, v in given if v is not None}
     if not changes:
         return base
     return dataclasses.replace(base, source=base.source + " (user overrides)", **changes)

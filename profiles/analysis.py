@@ -412,9 +412,7 @@ def analyze_profile(
     settings["standard"] = standard
     settings["definitions"] = _DEFINITIONS[standard]
 
-    def frozen(a: np.ndarray | None) -> np.ndarray | None:
-        if a is None:
-            return None
+    def frozen(a: np.ndarray) -> np.ndarray:
         a = np.array(a, dtype=float)
         a.setflags(write=False)
         return a
@@ -426,7 +424,7 @@ def analyze_profile(
         x=frozen(pos),
         form=frozen(fit.form),
         primary=frozen(primary),
-        waviness=frozen(waviness),
+        waviness=None if waviness is None else frozen(waviness),
         roughness=frozen(rough),
         evaluated=evaluated,
     )

@@ -305,6 +305,8 @@ def significant_motifs(m: Motifs, dx: float, significant: tuple[str, Any] | str,
     if significant == "all":
         return m
     try:
+        if isinstance(significant, str):  # a word other than "all" is no (kind, value) pair
+            raise ValueError(significant)
         kind, value = significant
     except (TypeError, ValueError):
         raise ProfileError(f"significant features must be 'all', ('top', N), ('bot', N), "

@@ -68,7 +68,7 @@ def material_ratio_curve(z: Any, n: int | None = None) -> tuple[np.ndarray, np.n
     if n is None:
         return mr, zv
     grid = np.linspace(0.0, 1.0, int(n))
-    return grid, height_at_ratio(z, grid)
+    return grid, np.asarray(height_at_ratio(z, grid), dtype=float)
 
 
 def height_at_ratio(z: Any, mr: Any) -> float | np.ndarray:

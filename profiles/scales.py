@@ -65,7 +65,8 @@ class Scan:
             return float(np.mean(np.diff(self.x))), float(self.x[-1] - self.x[0])
         if self.is_map:
             ny, nx = self.z.shape
-            return 0.5 * (self.dx + self.dy), 0.5 * (nx * self.dx + ny * self.dy)
+            dy = self.dx if self.dy is None else self.dy  # square pixels, as make_scan
+            return 0.5 * (self.dx + dy), 0.5 * (nx * self.dx + ny * dy)
         return self.dx, self.z.size * self.dx
 
 
@@ -115,7 +116,7 @@ def _uniform_derivative(z: np.ndarray, dx: float, dy: float | None, d: float, n:
         centre = z[..., c:c + m]
         out = (_shift(z, -s, c, m) - 2.0 * centre + _shift(z, s, c, m)) / (s * dx) ** 2
     if z.ndim == 2:
-        cy = math.ceil(d / (n * dy))
+        cy = math.ceil(d / (n * (dx if dy is None else dy)))  # square pixels, as make_scan
         ny = z.shape[0]
         rows = slice(0, ny - cy) if n == 1 else slice(cy, ny - cy)
         out = out[rows]

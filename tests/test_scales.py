@@ -231,3 +231,12 @@ def test_container_slope_and_curvature_at_five_per_decade_match_the_peer(realdat
         sel = np.isfinite(mine)
         np.testing.assert_allclose(a.distance[sel], ref[key]["distance_m"], rtol=1e-12)
         np.testing.assert_allclose(mine[sel], ref[key]["value"], rtol=1e-9)
+
+
+def test_a_map_scan_without_dy_has_square_pixels():
+    # found by the type check (issue 36): Scan(z_map, dx) without dy raised TypeError in
+    # bandwidth(); make_scan's rule is dy = dx, so the longest distance is the mean side
+    from profiles.scales import Scan
+
+    s = Scan(np.zeros((4, 8)), 1e-6)
+    assert s.bandwidth() == pytest.approx((1e-6, 0.5 * (8e-6 + 4e-6)))

@@ -87,7 +87,7 @@ def solve_normal(
     nested : bool
         Start from the solution of a twice coarser grid when no warm start is given.
     precondition : bool
-        Precondition the conjugate gradient with the periodic stiffness |q|/2 (the
+        Precondition the conjugate gradient with the periodic stiffness ``|q|/2`` (the
         approximate inverse of the influence operator; Vollebregt 2014, J. Comput. Phys.
         257:333). Cuts the iterations several-fold for one unpadded FFT pair each.
     workers : int, optional

@@ -1,4 +1,7 @@
-"""The ball-on-plate contact of Alaci et al. (2022), end to end: does Hertz hold, do the
+"""Ball on plate: Hertz, yield and the contact's own lambda
+========================================================
+
+The ball-on-plate contact of Alaci et al. (2022), end to end: does Hertz hold, do the
 asperities yield at the experiment's loads, and what exponent lambda does the contact
 itself give M_r = s_r N^lambda?
 
@@ -82,7 +85,7 @@ def table2_check(plate: surfmet.Topography, ball: surfmet.Topography) -> dict:
 def main(argv: list[str]) -> int:
     import argparse
 
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
     parser.add_argument("outdir", nargs="?", default="contact_out",
                         help="output folder (default contact_out)")
     parser.add_argument("--quick", action="store_true",

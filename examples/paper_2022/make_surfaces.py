@@ -1,4 +1,7 @@
-"""Synthetic stand-ins for the two scans of Alaci et al. (2022), built from the paper's
+"""The bundled stand-in scans and how they are made
+================================================
+
+Synthetic stand-ins for the two scans of Alaci et al. (2022), built from the paper's
 statistics and written with surfmet's own X3P writer.
 
 Run:  python examples/paper_2022/make_surfaces.py [OUTDIR]
@@ -159,7 +162,7 @@ def main(argv: list[str]) -> int:
     import argparse
 
     root = Path(__file__).resolve().parents[2]
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
     parser.add_argument("outdir", nargs="?", default=str(root / "surfmet" / "data"),
                         help="where to write paper_plate.x3p and paper_ball.x3p "
                         "(default: surfmet/data, the shipped copies)")

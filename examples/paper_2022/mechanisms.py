@@ -1,4 +1,7 @@
-"""Which mechanism makes the rolling friction of the paper's rotor? (Alaci et al. 2022)
+"""Which mechanism makes the rotor's rolling friction
+==================================================
+
+Which mechanism makes the rolling friction of the paper's rotor? (Alaci et al. 2022)
 
 Run:  python examples/paper_2022/mechanisms.py [--scans] [--grid N]
 

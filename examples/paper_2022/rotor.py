@@ -1,4 +1,7 @@
-"""The rotor study: confront the constant-acceleration model of Alaci et al. (2022) with their
+"""The rotor study: Table 3's law of motion
+========================================
+
+The rotor study: confront the constant-acceleration model of Alaci et al. (2022) with their
 own Table 3, find what it gets wrong and why, fit a better model and measure the gain, and
 ask what is left of the claim that lambda != 1.
 
@@ -53,7 +56,7 @@ def heading(text: str) -> None:
 def main(argv: list[str]) -> int:
     import argparse
 
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
     parser.add_argument("outdir", nargs="?", default="rotor_out",
                         help="output folder (default rotor_out)")
     parser.add_argument("--fast", action="store_true",

@@ -5,7 +5,7 @@ and runs :func:`contact.adhesion.line.adhesive_line`; :func:`line_record` is the
 (forces per unit length in N/m, energies in J/m), :func:`line_plot` the figure. The
 cylinder's axis lies along the scan's y; the profile is the row through the middle of the
 levelled plate, sampled by the engine's
-:func:`contact.tangential.grid.sample_roughness` (as ``rolling-contact --line`` does).
+:func:`contact.sampling.sample_roughness` (as ``rolling-contact --line`` does).
 """
 
 from __future__ import annotations

@@ -118,7 +118,7 @@ def solve_rolling_contact(
         Elements per side (default 64 in 3D, 256 in plane strain).
     roughness : (ndarray, dx, dy), optional
         Composite roughness map and its pitch (m), e.g. from
-        :func:`surfmet.pairing.prepare_pair`.
+        :func:`surfmet.mechanics.pairing.prepare_pair`.
     size : float, optional
         Side of the (square) domain (m); default: automatic, as above.
     """

@@ -142,7 +142,7 @@ def rolling_resistance(
         Wraps the iterable of loads (a progress bar).
     mu, traction_ratio : float
         Microslip model (:mod:`contact.tangential.microslip`): friction coefficient and
-        |F_x|/N opposing the rolling (0: free rolling).
+        ``|F_x|/N`` opposing the rolling (0: free rolling).
     """
     from contact.rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness

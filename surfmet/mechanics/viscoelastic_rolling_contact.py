@@ -1,7 +1,8 @@
 """One steady viscoelastic rolling solve (``surfmet rolling-contact --viscoelastic``): the
 normal problem, the tangential one where the model can answer it, and its JSON record in
-the elastic command's vocabulary (:func:`surfmet.mechanics.rolling_contact.
-rolling_contact_record`: the same keys, sign convention and grid record).
+the elastic command's vocabulary
+(:func:`~surfmet.mechanics.rolling_contact.rolling_contact_record`: the same keys, sign
+convention and grid record).
 
 What the tangential solve leaves out. The plane-strain traction solver
 (:func:`contact.viscoelastic.steady_traction`) is that of quasi-identical bodies: Kalker's
@@ -34,7 +35,7 @@ if TYPE_CHECKING:
     from contact.materials import Material
     from surfmet.mechanics._types import Materials, ScanSource
 
-#: |K| at or below this is quasi-identical (the viscoelastic traction solvers' model).
+#: ``|K|`` at or below this is quasi-identical (the viscoelastic traction solvers' model).
 QUASI_IDENTICAL_K = 1e-6
 
 
