@@ -285,7 +285,7 @@ def _stated_level(data: Topography | Profile, level: str | None) -> tuple[str | 
     return DETREND_LEVELS[mode], f"the container's detrend_mode ({mode}) for this measurement"
 
 
-def roughness_file(path: str | os.PathLike | Measurement,
+def roughness_file(path: str | os.PathLike[str] | Measurement,
                    read_options: dict[str, Any] | None = None, **options: Any) -> dict[str, Any]:
     """Roughness of one file (or container measurement) as a JSON-ready dict; errors are
     returned, not raised.
@@ -300,12 +300,13 @@ def roughness_file(path: str | os.PathLike | Measurement,
     name = str(path)
     try:
         scan: Any = path
-        if read_options and isinstance(path, Measurement):
-            scan = read_measurement(path, **read_options)
-        elif read_options:  # the units and channel the user states (--height-unit, ...)
-            from surfmet.io import read
+        if read_options:  # the units and channel the user states (--height-unit, ...)
+            if isinstance(path, Measurement):
+                scan = read_measurement(path, **read_options)
+            else:
+                from surfmet.io import read
 
-            scan = read(path, **read_options)
+                scan = read(path, **read_options)
         res = roughness(scan, **options)
     except user_error_types() as exc:
         return {"file": name, "status": "error", "error": str(exc)}

@@ -118,7 +118,8 @@ def _with_rotor(name: str, sweep: Any, at: Callable[[float], float],
     return Mechanism(name, sweep, moms, eps, text, loads)
 
 
-def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *, loads: Sequence[float],
+def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *,
+                       loads: Sequence[float] | np.ndarray,
                        rotor_loads: tuple[float, float, float], rolling_inertia: float,
                        speed: float, loss: tuple[float, float], hardness: float | None = None,
                        grid: int = 128,

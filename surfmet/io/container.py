@@ -70,7 +70,7 @@ def _meta(text: bytes, name: str) -> list[dict[str, Any]]:
         raise format_error(name, FORMAT, f"meta.yml is not readable YAML ({exc})") from None
     if not isinstance(meta, dict) or not isinstance(meta.get("surfaces"), list):
         raise format_error(name, FORMAT, "meta.yml has no 'surfaces' list")
-    out = []
+    out: list[dict[str, Any]] = []
     for surface in meta["surfaces"]:
         topos = surface.get("topographies") if isinstance(surface, dict) else None
         if not isinstance(topos, list):

@@ -216,6 +216,7 @@ GENERIC_OPTIONS = ("height_unit", "dx", "dy")
 
 
 def _accepts(spec: FormatSpec, option: str) -> bool:
+    assert spec.decode is not None  # the read refused a format without a decoder first
     params = inspect.signature(spec.decode).parameters
     return option in params or any(p.kind is inspect.Parameter.VAR_KEYWORD
                                    for p in params.values())
@@ -244,6 +245,7 @@ def _check_options(spec: FormatSpec, options: dict[str, Any]) -> None:
     # decoder runs, rather than letting a TypeError pass for a corrupted file.
     if not options:
         return
+    assert spec.decode is not None  # the read refused a format without a decoder first
     params = inspect.signature(spec.decode).parameters
     if any(p.kind is inspect.Parameter.VAR_KEYWORD for p in params.values()):
         return

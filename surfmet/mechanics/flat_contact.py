@@ -285,6 +285,8 @@ def plot(rep: FlatContactReport | None, path: PathLike | None = None,
         a1.set_title("periodic BEM" if rep.periodic else "free-boundary BEM")
     if all_scales is not None:
         ps = np.asarray(all_scales.pressure) / 1e6
+        # Persson's curve always states its mean gap (contact.roughcontact.persson)
+        assert all_scales.mean_gap is not None
         a1.loglog(ps, all_scales.area_fraction, "s:", color="C3",
                   label="PERSSON, all scales")
         a2.semilogx(ps, all_scales.mean_gap * 1e6, "s:", color="C3",

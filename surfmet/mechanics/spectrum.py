@@ -193,7 +193,10 @@ def _cutoffs(spec: PSD, q_min: float = 0.0
     if short is None:
         cands += [(None, g) for g in grid if g >= x[-4]]
         cands += [(g, h) for k, g in enumerate(grid) for h in grid[k + 10:] if h >= x[-4]]
-    best = (math.inf, None, None, None)
+    # (BIC, roll-off knot, short knot, coefficients); the knot-free candidate, first, always
+    # replaces the start, whose empty coefficients are never read
+    best: tuple[float, float | None, float | None, np.ndarray] = (math.inf, None, None,
+                                                                  np.empty(0))
     for xr, xs in cands:
         cols = [np.ones(m), x]
         if xr is not None:

@@ -24,7 +24,7 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         "band": quantity(st.get("band"), ""),
         "grid": st.get("grid"),
         "dx": quantity(st.get("dx"), "m"),
-        "pixel_source": pixel_source(st.get("dx"), None if rep.scans is None else
+        "pixel_source": pixel_source(st["dx"], None if rep.scans is None else
                                      rep.scans.pair, rep.grid),
         "sigma": quantity(rep.scans.sigma if rep.scans is not None else 0.0, "m"),
         "confidence": quantity(s.fit.confidence if s.fit is not None else None, ""),

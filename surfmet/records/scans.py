@@ -84,12 +84,12 @@ def fit_record(scan: Any, shape: str, profile: str | None = None, loss: str = "l
         prof = scan
     else:  # pragma: no cover
         raise SurfmetInputError(f"cannot fit {type(scan).__name__}")
-    f = profiles.fit_circle(np.asarray(prof.positions), np.asarray(prof.z), loss=loss)
+    fc = profiles.fit_circle(np.asarray(prof.positions), np.asarray(prof.z), loss=loss)
     return {
         "shape": "circle",
         "profile": prof.metadata.get("profile"),
-        **_fit_fields(f),
-        "form_pv": quantity(f.form_pv, "m"),
+        **_fit_fields(fc),
+        "form_pv": quantity(fc.form_pv, "m"),
         "names": {"form_pv": "form deviation: PV of the degree-4 component of the "
                   "circle residual", "pv_form_deviation": "residual PV (all points)"},
         "loss": loss,
