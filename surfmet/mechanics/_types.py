@@ -8,7 +8,9 @@ that the facades' imports stay lazy: nothing here is loaded when a facade runs).
 - :data:`Spikes`: ``"remove"`` / ``"keep"``, or True (remove) / False (keep);
 - :data:`Loads`: the loads of a sweep (N, or N/m for a line);
 - :data:`Progress`: wraps an iterable to show progress (``tqdm``'s calling form);
-- :data:`PathLike`: an output file (as :func:`surfmet.plots._style.finish` takes it).
+- :data:`PathLike`: an output file (as :func:`surfmet.plots._style.finish` takes it);
+- :data:`AdhesionLaw`: an adhesion law of :mod:`contact.adhesion.laws`;
+- :data:`RoughnessMap`: a composite roughness map and its pitch, ``(z, dx, dy)`` (m).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from typing import Any, TypeAlias
 
 import numpy as np
 
+from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.material_pair import MaterialPair
 from contact.materials import Material
 from surfmet.model import Topography
@@ -30,5 +33,8 @@ Spikes: TypeAlias = bool | str
 Loads: TypeAlias = Sequence[float] | np.ndarray
 Progress: TypeAlias = Callable[[Iterable[Any]], Iterable[Any]]
 PathLike: TypeAlias = str | Path
+AdhesionLaw: TypeAlias = DugdaleLaw | ExponentialLaw
+RoughnessMap: TypeAlias = tuple[np.ndarray, float, float]
 
-__all__ = ["Loads", "Materials", "PathLike", "Progress", "ScanSource", "Spikes"]
+__all__ = ["AdhesionLaw", "Loads", "Materials", "PathLike", "Progress", "RoughnessMap",
+           "ScanSource", "Spikes"]

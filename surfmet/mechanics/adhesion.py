@@ -21,7 +21,12 @@ from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
 if TYPE_CHECKING:
-    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
+    import numpy as np
+
+    from contact.adhesion.cycle import Branch, Jump
+    from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
+    from surfmet.mechanics.pairing import PairedRoughness
+    from surfmet.mechanics.scan_preparation import PreparedScans
 
 INTERACTIONS = ("dugdale", "exponential")
 #: The adhesion law of every command and facade unless told otherwise: the one with a
@@ -43,7 +48,7 @@ def interaction_law(interaction: str, work: float, range_: float) -> Any:
             else ExponentialLaw(work, range_))
 
 
-def interaction_name(law: Any) -> str:
+def interaction_name(law: AdhesionLaw) -> str:
     """``"dugdale"`` or ``"exponential"``: the name of an adhesion law."""
     return "dugdale" if hasattr(law, "sigma0") else "exponential"
 
@@ -154,7 +159,7 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     return z, scans_record(prep, plate, ball, dx, z)
 
 
-def scan_too_small(pair: Any, size: float) -> str:
+def scan_too_small(pair: PairedRoughness, size: float) -> str:
     """The one line refusing scans smaller than the domain of side ``size`` (m)."""
     ny, nx = pair.roughness.shape
     return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} µm "
@@ -162,7 +167,8 @@ def scan_too_small(pair: Any, size: float) -> str:
             "give a smaller --size or larger scans")
 
 
-def scans_record(prep: Any, plate: Any, ball: Any, dx: float, z: Any) -> dict[str, Any]:
+def scans_record(prep: PreparedScans, plate: ScanSource | None, ball: ScanSource | None,
+                 dx: float, z: np.ndarray) -> dict[str, Any]:
     """What scans were used, what was done to them, and the roughness on the grid."""
     import math
 
@@ -174,7 +180,7 @@ def scans_record(prep: Any, plate: Any, ball: Any, dx: float, z: Any) -> dict[st
         notes.append(f"the solver's pixel ({dx * 1e9:.4g} nm) is finer than the scans' "
                      f"({pair.dx * 1e9:.4g} nm): the roughness is interpolated between "
                      "measured points")
-    record = {
+    record: dict[str, Any] = {
         "plate": _scan_name(plate),
         "ball": _scan_name(ball),
         "pixel": quantity(pair.dx, "m"),
@@ -186,7 +192,7 @@ def scans_record(prep: Any, plate: Any, ball: Any, dx: float, z: Any) -> dict[st
     return record
 
 
-def _scan_name(scan: Any) -> str | None:
+def _scan_name(scan: ScanSource | None) -> str | None:
     """A scan's file name, "(in memory)" for a Topography, None when not given."""
     if scan is None:
         return None
@@ -197,13 +203,13 @@ def _scan_name(scan: Any) -> str | None:
     return str(scan)
 
 
-def _leg(branch: Any) -> dict[str, Any]:
+def _leg(branch: Branch) -> dict[str, Any]:
     return {"approach": quantity(branch.surface_approach, "m"),
             "load": quantity(branch.load, "N"),
             "contact_radius": quantity(branch.contact_radius, "m")}
 
 
-def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
+def jump_record(jump: Jump | None, force_unit: str = "N") -> dict[str, Any] | None:
     """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line)."""
     if jump is None:
         return None

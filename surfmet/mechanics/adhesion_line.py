@@ -27,10 +27,11 @@ from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
 if TYPE_CHECKING:
+    from contact.adhesion.cycle import Branch
     from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
 
 
-def refuse_ball(ball: Any) -> None:
+def refuse_ball(ball: ScanSource | None) -> None:
     """A line contact takes no ball scan: refused (before any file is read)."""
     if ball is not None:
         raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
@@ -93,13 +94,13 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Mater
     return Adhesion(res, scans)
 
 
-def _leg(branch: Any) -> dict[str, Any]:
+def _leg(branch: Branch) -> dict[str, Any]:
     return {"approach": quantity(branch.surface_approach, "m"),
             "load": quantity(branch.load, "N/m"),
             "contact_half_width": quantity(0.5 * branch.contact_area, "m")}
 
 
-def line_record(run: Any) -> dict[str, Any]:
+def line_record(run: Adhesion) -> dict[str, Any]:
     """The JSON record of a line-contact run (forces per unit length)."""
     res = run.result
     cyc, law = res.cycle, res.law
@@ -132,7 +133,7 @@ def line_record(run: Any) -> dict[str, Any]:
     }
 
 
-def line_plot(run: Any, path: PathLike | None = None) -> Any:
+def line_plot(run: Adhesion, path: PathLike | None = None) -> Any:
     """Load per length against approach, and contact half-width against load."""
     from surfmet.plots._style import finish, new_figure
 

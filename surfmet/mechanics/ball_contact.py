@@ -110,7 +110,7 @@ class BallContact:
         return pressure_map(self.result, path)
 
 
-def _hardness(hardness: float | None, plastic: bool, mats: Any) -> float | None:
+def _hardness(hardness: float | None, plastic: bool, mats: MaterialPair) -> float | None:
     if hardness is not None and plastic:
         raise SurfmetInputError("give a hardness or plastic=True, not both")
     if not plastic:
@@ -121,7 +121,7 @@ def _hardness(hardness: float | None, plastic: bool, mats: Any) -> float | None:
     return h
 
 
-def _file(obj: Any) -> str | None:
+def _file(obj: ScanSource | None) -> str | None:
     if obj is None:
         return None
     if isinstance(obj, (str, Path)):

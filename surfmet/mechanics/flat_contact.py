@@ -36,7 +36,7 @@ from surfmet.model import Topography
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from surfmet.mechanics._types import Materials, PathLike, Spikes
+    from surfmet.mechanics._types import AdhesionLaw, Loads, Materials, PathLike, Spikes
 
 
 @dataclass(frozen=True, eq=False)
@@ -72,11 +72,13 @@ def parse_pressures(text: str) -> np.ndarray:
     return np.unique(parse_values(str(text), parse_pressure, "pressures"))
 
 
-def flat_contact(topo: Topography, *, e_star: float | None = None, pressures: Any,
+def flat_contact(topo: Topography, *, e_star: float | None = None,
+                 pressures: Loads | float | str,
                  hardness: float | None = None, periodic: bool | None = None,
                  stiffness: str = "curve", progress: Callable[[int, int], Any] | None = None,
                  spikes: Spikes = SPIKES, material_hardness: float | None = None,
-                 adhesion: Any = None, materials: Materials | None = None) -> FlatContactReport:
+                 adhesion: AdhesionLaw | None = None, materials: Materials | None = None
+                 ) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
 
     Parameters
@@ -220,7 +222,7 @@ def gap_caveats(models: dict[str, ModelCurve]) -> tuple[str, ...]:
 SQUARE_PIXEL = 1e-3
 
 
-def adhesive_sweep(scan: Topography, bem: FlatContact, law: Any) -> Any:
+def adhesive_sweep(scan: Topography, bem: FlatContact, law: AdhesionLaw) -> Any:
     """The scan pressed with adhesion at the BEM's pressures, started from its solves
     (:func:`contact.adhesion.flat.adhesive_flat`: periodic, square pixels, elastic).
 

@@ -22,9 +22,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.units import quantity
+
+if TYPE_CHECKING:
+    from contact.roughcontact import SummitParameters
 
 #: Interaction range z0 when none is given (m).
 DEFAULT_RANGE = 0.3e-9
@@ -87,8 +90,8 @@ class HertzAdhesion:
                 f"strength; {bound}")
 
 
-def assess_adhesion(summits: Any, *, radius: float, load: float, e_star: float, work: float,
-                    range_: float = DEFAULT_RANGE) -> HertzAdhesion:
+def assess_adhesion(summits: SummitParameters | None, *, radius: float, load: float,
+                    e_star: float, work: float, range_: float = DEFAULT_RANGE) -> HertzAdhesion:
     """The assessment for GW ``summits`` (or None, a smooth pair); see the module."""
     from contact.adhesion.laws import tabor_parameter
     from contact.adhesion.stickiness import pastewka_robbins, rms_gradient_curvature

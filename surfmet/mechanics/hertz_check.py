@@ -43,9 +43,10 @@ from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, 
 
 if TYPE_CHECKING:
     from contact.bem.result import ContactResult
-    from contact.hertzcheck import HertzComparison
+    from contact.hertzcheck import HertzComparison, SphereCheck
     from contact.material_pair import MaterialPair
     from contact.materials import Material
+    from contact.roughcontact import SummitParameters
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
 
 
@@ -278,8 +279,8 @@ def hertz_check(
                       adhesion=adhesion, materials=mats)
 
 
-def _adhesion(summits: Any, radius: float, load: float, e_star: float, work: float | None,
-              range_: float | None) -> Any:
+def _adhesion(summits: SummitParameters | None, radius: float, load: float, e_star: float,
+              work: float | None, range_: float | None) -> Any:
     """The adhesion assessment, or None without a work of adhesion."""
     from surfmet.mechanics.hertz_adhesion import DEFAULT_RANGE, assess_adhesion
 
@@ -315,8 +316,8 @@ def scan_summits(prep: PreparedScans) -> Any:
         return None
 
 
-def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
-                      e_star: float, hardness: float | None) -> Any:
+def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, radius: float,
+                      load: float, e_star: float, hardness: float | None) -> Any:
     """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
     from contact.errors import ContactInputError, ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
@@ -325,8 +326,8 @@ def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
     extended: dict[str, Any] = {}
     left_out: dict[str, str] = {}
     if summits is not None:
-        kw = dict(sigma_s=summits.sigma_s, density=summits.density,
-                  summit_radius=summits.radius)
+        kw: dict[str, Any] = dict(sigma_s=summits.sigma_s, density=summits.density,
+                                  summit_radius=summits.radius)
         # a model that cannot be solved is left out of the hierarchy with its reason, not
         # fatal to the check
         for name, h in (("greenwood_tripp", None), ("greenwood_tripp_plastic", hardness)):

@@ -81,7 +81,7 @@ class PairedRoughness:
                                   centre=apex_centre(self, offset))
 
 
-def _areal(scan: Any, what: str) -> Topography:
+def _areal(scan: object, what: str) -> Topography:
     if not isinstance(scan, Topography):
         kind = getattr(scan, "kind", type(scan).__name__)
         raise SurfmetInputError(f"the {what} must be an areal scan (Topography), got {kind}")

@@ -22,7 +22,10 @@ from surfmet.mechanics.scan_preparation import SPIKES
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
 
+    from contact.material_pair import MaterialPair
+    from contact.resolution import ResolutionStudy
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
+    from surfmet.mechanics.scan_preparation import PreparedScans
 
 #: Each quantity of a study: label, JSON unit, scale to the text unit, text unit.
 QUANTITIES = {
@@ -40,8 +43,9 @@ QUANTITIES = {
 }
 
 
-def _study_inputs(plate: Any, ball: Any, materials: Any, spikes: Any,
-                  hardness: float | None = None) -> tuple[Any, Any]:
+def _study_inputs(plate: ScanSource | None, ball: ScanSource | None, materials: Materials,
+                  spikes: Spikes, hardness: float | None = None
+                  ) -> tuple[MaterialPair, PreparedScans]:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`, ``hardness`` in place
     of the table's) and the prepared scans of a study."""
     from surfmet.mechanics.material_spec import material_pair, parse_materials
@@ -67,7 +71,7 @@ def contact_study(
     spikes: Spikes = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Callable[[str], Any] | None = None,
-) -> tuple[Any, Any]:
+) -> tuple[ResolutionStudy, PreparedScans]:
     """Resolution study of a ball on a plate from scans.
 
     Parameters
@@ -116,7 +120,7 @@ def rolling_study(
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Callable[[str], Any] | None = None,
     **sweep_kwargs: Any,
-) -> tuple[Any, Any]:
+) -> tuple[ResolutionStudy, PreparedScans]:
     """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
     ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`.
 
@@ -140,7 +144,7 @@ def rolling_study(
     return study, prep
 
 
-def study_lines(study: Any) -> list[str]:
+def study_lines(study: ResolutionStudy) -> list[str]:
     """A table (one row per quantity, one column per pixel) and the trend sentences."""
     head = f"{'':18}" + "".join(f"{p * 1e6:>10.4g} µm" for p in study.pixels) + "   status"
     lines = [f"resolution study: same {study.side * 1e3:.4g} mm domain, pixel coarsened "

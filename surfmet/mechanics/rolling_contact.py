@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 from surfmet.errors import SurfmetInputError
 
 if TYPE_CHECKING:
-    from surfmet.mechanics._types import Materials
+    from surfmet.mechanics._types import Materials, RoughnessMap
 
 SIGN_CONVENTION = (
     "body 1 = ball, body 2 = plate; the contact moves in +x (leading edge at +x); "
@@ -86,7 +86,7 @@ def solve_rolling_contact(
     line: bool = False,
     speed: float | None = None,
     grid: int | None = None,
-    roughness: Any = None,
+    roughness: RoughnessMap | None = None,
     size: float | None = None,
 ) -> RollingContact:
     """Solve one steady-rolling case.
@@ -167,7 +167,7 @@ def solve_rolling_contact(
 COARSER_THAN_SCANS = 1.5
 
 
-def _coarser_than_scans(element: float, roughness: Any) -> str | None:
+def _coarser_than_scans(element: float, roughness: RoughnessMap | None) -> str | None:
     """The note for elements much coarser than the scans' pixel, or None: the scans are
     sampled at the elements' centres, so the real contact area and the peak pressure are
     those of this element size (on rough contacts both change with it), not the scans'."""
@@ -184,7 +184,7 @@ def _coarser_than_scans(element: float, roughness: Any) -> str | None:
 
 
 def _half_width(radius: float, load: float, e_star: float, line: bool,
-                roughness: Any) -> float:
+                roughness: RoughnessMap | None) -> float:
     """The automatic half-width of the domain (m): see :func:`solve_rolling_contact`."""
     import numpy as np
 
@@ -201,7 +201,7 @@ def _half_width(radius: float, load: float, e_star: float, line: bool,
     return ROUGH_MARGIN * contact_extent(radius, load, e_star, rms)
 
 
-def _grid(radius: float, half: float, n: int, line: bool, roughness: Any) -> Any:
+def _grid(radius: float, half: float, n: int, line: bool, roughness: RoughnessMap | None) -> Any:
     """The tangential grid of half-width ``half``, with the roughness sampled onto it."""
     from contact.grid import cylinder_grid, sphere_grid
     from contact.sampling import sample_roughness

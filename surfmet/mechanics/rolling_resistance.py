@@ -25,7 +25,7 @@ from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 if TYPE_CHECKING:
-    from surfmet.mechanics._types import Loads, Materials, ScanSource, Spikes
+    from surfmet.mechanics._types import Loads, Materials, PathLike, ScanSource, Spikes
 
 LOSSY = ("both", "plate", "ball")
 
@@ -65,14 +65,14 @@ class RollingReport:
 
         return rolling_record(self)
 
-    def figure(self, path: Any = None) -> Any:
+    def figure(self, path: PathLike | None = None) -> Any:
         """M_r(N) and the local exponent (:func:`surfmet.plots.hertz.rolling_figure`)."""
         from surfmet.plots.hertz import rolling_figure
 
         return rolling_figure(self.sweep, path)
 
 
-def _load_list(loads: Any) -> np.ndarray:
+def _load_list(loads: Loads | str) -> np.ndarray:
     from surfmet.units import parse_force
     from surfmet.value_lists import parse_values
 

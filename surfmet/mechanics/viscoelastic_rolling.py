@@ -30,6 +30,7 @@ from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.materials import Material
+    from contact.rotor.joint import GroupOffset
     from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -220,7 +221,7 @@ def microslip_sweep(radius: float, materials: Materials, mu: float,
     from contact.viscoelastic.sweep import sweep_record
     from surfmet.mechanics.rolling_contact import solve_rolling_contact
 
-    def run(loads: Any) -> Any:
+    def run(loads: Loads) -> Any:
         w = np.asarray(loads, dtype=float)
         res = [solve_rolling_contact(radius, float(n), materials, mu, grid=grid).result
                for n in w]
@@ -312,7 +313,7 @@ def _adhesion_numbers(ball: str, plate: str, work: float | None, hysteresis: flo
                         "ranked among the mechanisms",)
 
 
-def reaches_offset(delta_eps: float, offset: Any) -> bool:
+def reaches_offset(delta_eps: float, offset: GroupOffset) -> bool:
     """Whether an implied offset reaches the smallest one the verdict's interval allows."""
     if offset.ci_low <= 0.0 <= offset.ci_high:
         return abs(delta_eps) >= abs(offset.value)

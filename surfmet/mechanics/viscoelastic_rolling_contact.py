@@ -33,6 +33,7 @@ from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.materials import Material
+    from contact.viscoelastic.rheology import CreepSeries
     from surfmet.mechanics._types import Materials, ScanSource
 
 #: ``|K|`` at or below this is quasi-identical (the viscoelastic traction solvers' model).
@@ -68,6 +69,8 @@ class ViscoRollingContact:
     notes: tuple[str, ...] = ()
 
 
+# ``body``: a Material or a StandardLinearSolid, told apart by duck typing (hasattr), which
+# mypy cannot narrow a union by
 def _shear(body: Any, glassy: bool) -> tuple[float, float]:
     """(G, nu) of an elastic Material or, glassy or relaxed, a standard linear solid."""
     if hasattr(body, "E_g"):
@@ -81,7 +84,8 @@ def pair_kalker_k(ball: Material, plate: Material) -> tuple[float, float]:
     (:func:`contact.halfspace.constants.pair_constants_from`)."""
     from contact.halfspace.constants import pair_constants_from
 
-    return tuple(pair_constants_from(*_shear(ball, g), *_shear(plate, g)).K  # type: ignore
+    # a tuple() of a two-item generator: mypy cannot count its items
+    return tuple(pair_constants_from(*_shear(ball, g), *_shear(plate, g)).K  # type: ignore[return-value]
                  for g in (True, False))
 
 
@@ -170,7 +174,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
                                creepage is None, n, kk, reason, tuple(notes))
 
 
-def _line(radius: float, load: float, creep: Any, speed: float, n: int, mu: float | None,
+def _line(radius: float, load: float, creep: CreepSeries, speed: float, n: int, mu: float | None,
           creepage: float | None) -> tuple[Any, Any]:
     """The plane-strain normal solve and, with ``mu``, Carter's problem with creep."""
     from contact.tangential.memory import check_rolling_memory
@@ -187,9 +191,10 @@ def _line(radius: float, load: float, creep: Any, speed: float, n: int, mu: floa
     return res, steady_traction(A, res.pressure, dx, mu, creepage=creepage)
 
 
-def _ball(radius: float, load: float, creep: Any, speed: float, n: int, plate: Any,
-          ball: Any, spikes: bool, bodies: dict[str, Any], mu: float | None,
-          creepage: float | None, coupled: bool) -> tuple[Any, Any]:
+def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
+          plate: ScanSource | None, ball: ScanSource | None, spikes: bool,
+          bodies: dict[str, Any], mu: float | None, creepage: float | None,
+          coupled: bool) -> tuple[Any, Any]:
     """The 3D normal solve (smooth or with the scans) and, with ``mu``, the tractions
     (``coupled``: with the pressure's tangential displacement of a dissimilar pair)."""
     from contact.viscoelastic.surface import rolling_sphere
