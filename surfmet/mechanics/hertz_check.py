@@ -47,7 +47,9 @@ if TYPE_CHECKING:
     from contact.material_pair import MaterialPair
     from contact.materials import Material
     from contact.roughcontact import SummitParameters
+    from contact.roughcontact.hierarchy import ModelHierarchy
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
+    from surfmet.mechanics.hertz_adhesion import HertzAdhesion
 
 
 @dataclass(frozen=True, eq=False)
@@ -78,10 +80,10 @@ class HertzCheck:
     plate_material: Material
     scans: PreparedScans
     notes: tuple[str, ...]
-    hierarchy: Any = None
-    summits: Any = None
+    hierarchy: ModelHierarchy | None = None
+    summits: SummitParameters | None = None
     grid: int | None = None
-    adhesion: Any = None  # surfmet.mechanics.hertz_adhesion.HertzAdhesion
+    adhesion: HertzAdhesion | None = None
     materials: MaterialPair | None = None
 
     @property
@@ -280,7 +282,7 @@ def hertz_check(
 
 
 def _adhesion(summits: SummitParameters | None, radius: float, load: float, e_star: float,
-              work: float | None, range_: float | None) -> Any:
+              work: float | None, range_: float | None) -> HertzAdhesion | None:
     """The adhesion assessment, or None without a work of adhesion."""
     from surfmet.mechanics.hertz_adhesion import DEFAULT_RANGE, assess_adhesion
 
@@ -290,7 +292,7 @@ def _adhesion(summits: SummitParameters | None, radius: float, load: float, e_st
                            range_=DEFAULT_RANGE if range_ is None else range_)
 
 
-def scan_summits(prep: PreparedScans) -> Any:
+def scan_summits(prep: PreparedScans) -> SummitParameters | None:
     """Combined Greenwood-Williamson summit parameters of the plate and ball residuals.
 
     Each residual's areal PSD (:func:`surfmet.psd.areal_psd`, Hann-windowed) gives its

@@ -71,7 +71,7 @@ def contact_study(
     spikes: Spikes = SPIKES,
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Callable[[str], Any] | None = None,
-) -> tuple[ResolutionStudy, PreparedScans]:
+) -> tuple[Any, Any]:
     """Resolution study of a ball on a plate from scans.
 
     Parameters
@@ -120,7 +120,7 @@ def rolling_study(
     factors: tuple[int, ...] = (8, 4, 2, 1),
     progress: Callable[[str], Any] | None = None,
     **sweep_kwargs: Any,
-) -> tuple[ResolutionStudy, PreparedScans]:
+) -> tuple[Any, Any]:
     """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
     ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`.
 
