@@ -76,19 +76,19 @@ def material_ratio(z: Any, c: Any, *, reference: str = "mean") -> float | np.nda
 def material_ratio_curve(z: Any, n: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The Abbott-Firestone (material ratio) curve.
 
-    Returns
-    -------
-    (mr, height) : ndarrays
-        ``height[i]`` is the level at which the material ratio is ``mr[i]``; heights
-        decrease as ``mr`` goes from ``1/N`` to 1 (``N`` measured points). With ``n``
-        given, the curve is interpolated at ``n`` evenly spaced ratios in [0, 1].
-
     Parameters
     ----------
     z : array_like
         Heights in metres; NaN where not measured.
     n : int, optional
         Number of evenly spaced ratios to interpolate the curve at.
+
+    Returns
+    -------
+    (mr, height) : ndarrays
+        ``height[i]`` is the level at which the material ratio is ``mr[i]``; heights
+        decrease as ``mr`` goes from ``1/N`` to 1 (``N`` measured points). With ``n``
+        given, the curve is interpolated at ``n`` evenly spaced ratios in [0, 1].
 
     Raises
     ------

@@ -221,11 +221,6 @@ def _load_all() -> None:
 def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
     """Name of the format of ``buf``: magic bytes first, then the file extension.
 
-    Raises
-    ------
-    SurfmetFormatError
-        If neither the content nor the extension identifies a registered format.
-
     Parameters
     ----------
     buf : bytes
@@ -237,6 +232,11 @@ def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
     -------
     str
         The registry name.
+
+    Raises
+    ------
+    SurfmetFormatError
+        If neither the content nor the extension identifies a registered format.
 
     See Also
     --------
