@@ -81,19 +81,6 @@ DOCTEST_MODULES = (
 # test_every_face_definition_has_examples fails on a name missing from it that has no
 # example (a new public function must come with one) and on a name in it that now has one.
 PENDING: frozenset[str] = frozenset({
-    "contact.ContactResult",
-    "contact.SphereContact",
-    "contact.analyse_table",
-    "contact.analyse_test",
-    "contact.angular_acceleration",
-    "contact.check_sphere",
-    "contact.cylinder_sweep",
-    "contact.fit_exponent",
-    "contact.flat_contact",
-    "contact.mass_properties",
-    "contact.solve_cylinder",
-    "contact.solve_normal",
-    "contact.sphere_sweep",
     "surfmet.mechanics.adhesion.Adhesion",
     "surfmet.mechanics.adhesion.adhesion",
     "surfmet.mechanics.adhesion.adhesion_pair",
