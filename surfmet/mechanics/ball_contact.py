@@ -48,6 +48,19 @@ class BallContact:
         elastic limit, a contact on a handful of cells): :func:`solution_warnings`.
     preparation : surfmet.mechanics.scan_preparation.PreparedScans or None
         What was done to the scans.
+
+    See Also
+    --------
+    ball_contact : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.ball_contact import ball_contact
+    >>> run = ball_contact(radius=0.02, load=10.0, grid=64)
+    >>> run.result.pressure.shape, run.warnings
+    ((64, 64), ())
+    >>> print(f"{run.to_json()['pmax']['value'] / 1e6:.0f} MPa")
+    255 MPa
     """
 
     result: Any
@@ -220,6 +233,41 @@ def ball_contact(
     Returns
     -------
     BallContact
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Bad inputs, scans that cannot be paired, a solver failure.
+
+    See Also
+    --------
+    contact.solve_sphere : the engine's solve, on arrays.
+    surfmet.mechanics.hertz_check.hertz_check : the same contact against Hertz.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.2.
+    .. [2] I. A. Polonsky, L. M. Keer, "A numerical method for solving rough contact
+       problems based on the multi-level multi-summation and conjugate gradient
+       techniques", Wear 231 (1999) 206-219.
+
+    Examples
+    --------
+    Smooth surfaces give the Hertz peak pressure; the bundled plate's roughness
+    concentrates the load on a few asperities, far above the aluminium's hardness (the
+    warnings say so):
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.ball_contact import ball_contact
+    >>> smooth = ball_contact(radius=0.02, load=10.0, grid=64)
+    >>> print(f"{smooth.result.pmax / smooth.result.hertz.p0:.3f}")
+    1.000
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> rough = ball_contact(patch, radius=0.02, load=10.0, grid=64)
+    >>> bool(rough.result.pmax > 5 * smooth.result.pmax), len(rough.warnings) > 0
+    (True, True)
     """
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans

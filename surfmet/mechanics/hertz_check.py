@@ -58,6 +58,21 @@ class HertzCheck:
     notes : tuple of str
     materials : contact.material_pair.MaterialPair
         The resolved pair (E*, the default hardness and its source).
+
+    See Also
+    --------
+    hertz_check : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import hertz_check
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> check = hertz_check(patch, radius=0.02, load=10.0, grid=64)
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}", sorted(check.to_json())[:3])
+    False alpha = 2.42 [...]
     """
 
     comparison: Any
@@ -189,10 +204,52 @@ def hertz_check(
         assessment (:mod:`surfmet.mechanics.hertz_adhesion`); without a work of adhesion it
         is left out, with a note.
 
+    Returns
+    -------
+    HertzCheck
+        The verdict (``hertz_holds``, ``reasons``), the roughness parameter ``alpha``, the
+        elastic and elastic-plastic solutions and the scans' preparation; ``to_json()``
+        and ``figure()``.
+
     Raises
     ------
     SurfmetInputError, ContactError
         Bad inputs, a scan too small for the contact, a solver failure.
+
+    See Also
+    --------
+    contact.check_sphere : the engine's check, on arrays.
+    surfmet.mechanics.ball_contact.ball_contact : the contact alone.
+
+    References
+    ----------
+    .. [1] H. Hertz, "Über die Berührung fester elastischer Körper", J. reine angew. Math.
+       92 (1882) 156-171.
+    .. [2] J. A. Greenwood, K. L. Johnson, E. Matsubara, "A surface roughness parameter in
+       Hertz contact", Wear 100 (1984) 47-57.
+    .. [3] J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres", J. Appl.
+       Mech. 34 (1967) 153-159.
+    .. [4] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    The paper's 20 mm steel ball at 10 N on a 0.64 mm patch of the bundled aluminium
+    plate: its roughness (α = σR/a0² ≈ 2.4) is far beyond Hertz's smooth surfaces:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import hertz_check
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> check = hertz_check(patch, radius=0.02, load=10.0, grid=64)
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}")
+    False alpha = 2.42
+
+    Smooth surfaces (no scan) do follow Hertz:
+
+    >>> hertz_check(radius=0.02, load=10.0, grid=64).hertz_holds
+    True
     """
     from contact.hertzcheck import check_sphere
     from surfmet.mechanics.material_spec import material_pair
