@@ -126,14 +126,6 @@ PENDING: frozenset[str] = frozenset({
     "surfmet.mechanics.rolling_contact.parse_line_load",
     "surfmet.mechanics.rolling_contact.rolling_contact_record",
     "surfmet.mechanics.rolling_contact.solve_rolling_contact",
-    "surfmet.mechanics.rotor_verdict.column_groups",
-    "surfmet.mechanics.rotor_verdict.judge",
-    "surfmet.mechanics.rotor_verdict.load_rig",
-    "surfmet.mechanics.rotor_verdict.table_verdict",
-    "surfmet.mechanics.rotor_verdict.verdict_figure",
-    "surfmet.mechanics.rotor_verdict.verdict_lines",
-    "surfmet.mechanics.rotor_verdict.verdict_plot_path",
-    "surfmet.mechanics.rotor_verdict.verdict_record",
     "surfmet.mechanics.scan_preparation.PreparedScans",
     "surfmet.mechanics.scan_preparation.clean_spikes",
     "surfmet.mechanics.scan_preparation.pixel_source",
@@ -158,12 +150,17 @@ PENDING: frozenset[str] = frozenset({
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 
 
+def _is_definition(obj) -> bool:
+    # functions (also behind functools wrappers such as lru_cache) and classes
+    return inspect.isclass(obj) or inspect.isfunction(inspect.unwrap(obj)) if callable(obj) else False
+
+
 def _module_face(module) -> list[str]:
     names = getattr(module, "__all__", None)
     if names is not None:
         return list(names)
     return [n for n, obj in vars(module).items()
-            if not n.startswith("_") and (inspect.isfunction(obj) or inspect.isclass(obj))
+            if not n.startswith("_") and _is_definition(obj)
             and obj.__module__ == module.__name__]
 
 
@@ -179,7 +176,7 @@ def face_definitions() -> dict[str, object]:
     for module in modules:
         for name in _module_face(module):
             obj = getattr(module, name, None)
-            if inspect.isfunction(obj) or inspect.isclass(obj):
+            if _is_definition(obj):
                 out[f"{module.__name__}.{name}"] = obj
     return out
 
