@@ -152,7 +152,9 @@ OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 
 def _is_definition(obj) -> bool:
     # functions (also behind functools wrappers such as lru_cache) and classes
-    return inspect.isclass(obj) or inspect.isfunction(inspect.unwrap(obj)) if callable(obj) else False
+    if not callable(obj):
+        return False
+    return inspect.isclass(obj) or inspect.isfunction(inspect.unwrap(obj))
 
 
 def _module_face(module) -> list[str]:
