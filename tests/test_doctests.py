@@ -81,20 +81,12 @@ DOCTEST_MODULES = (
 # test_every_face_definition_has_examples fails on a name missing from it that has no
 # example (a new public function must come with one) and on a name in it that now has one.
 PENDING: frozenset[str] = frozenset({
-    "surfmet.mechanics.adhesion.Adhesion",
-    "surfmet.mechanics.adhesion.adhesion",
-    "surfmet.mechanics.adhesion.adhesion_pair",
-    "surfmet.mechanics.adhesion.adhesion_record",
-    "surfmet.mechanics.adhesion.interaction_law",
-    "surfmet.mechanics.adhesion.interaction_name",
     "surfmet.mechanics.adhesion.jump_record",
     "surfmet.mechanics.adhesion.plot",
     "surfmet.mechanics.adhesion.rough_grid",
     "surfmet.mechanics.adhesion.scan_too_small",
     "surfmet.mechanics.adhesion.scans_record",
-    "surfmet.mechanics.adhesion_line.line_adhesion",
     "surfmet.mechanics.adhesion_line.line_plot",
-    "surfmet.mechanics.adhesion_line.line_record",
     "surfmet.mechanics.all_scales.AllScalesSpectrum",
     "surfmet.mechanics.all_scales.all_scales_spectrum",
     "surfmet.mechanics.all_scales.persson_all_scales",

@@ -30,7 +30,38 @@ INTERACTION = "dugdale"
 
 def interaction_law(interaction: str, work: float, range_: float) -> Any:
     """The adhesion law named ``interaction`` of work ``work`` (J/m^2) and range ``range_``
-    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``."""
+    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``.
+
+    Parameters
+    ----------
+    interaction : {"dugdale", "exponential"}
+        The law's name.
+    work : float
+        Work of adhesion (J/m²).
+    range_ : float
+        Its range (m).
+
+    Returns
+    -------
+    DugdaleLaw or ExponentialLaw
+        The law (:mod:`contact.adhesion.laws`).
+
+    See Also
+    --------
+    interaction_name : the inverse.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
+    >>> law = interaction_law("exponential", 0.05, 1e-9)
+    >>> law, interaction_name(law)
+    (ExponentialLaw(work=0.05, rho=1e-09), 'exponential')
+    """
     from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 
     if interaction not in INTERACTIONS:
@@ -41,7 +72,24 @@ def interaction_law(interaction: str, work: float, range_: float) -> Any:
 
 
 def interaction_name(law: Any) -> str:
-    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law."""
+    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law.
+
+    Parameters
+    ----------
+    law : DugdaleLaw or ExponentialLaw
+        An adhesion law.
+
+    Returns
+    -------
+    str
+        Its name.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
+    >>> interaction_name(interaction_law("dugdale", 0.05, 1e-9))
+    'dugdale'
+    """
     return "dugdale" if hasattr(law, "sigma0") else "exponential"
 
 
@@ -56,6 +104,20 @@ class Adhesion:
         :class:`contact.adhesion.line.AdhesiveLine` (a cylinder, per unit length).
     scans : dict or None
         What scans were used and what was done to them (None: smooth surfaces).
+
+    See Also
+    --------
+    adhesion : makes it.
+    adhesion_record : its JSON record.
+
+    Examples
+    --------
+    A coarse run: the result's warnings say what the grid does not resolve:
+
+    >>> from surfmet.mechanics.adhesion import adhesion
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
+    >>> type(run.result).__name__, run.scans, run.result.warnings[0][:32]
+    ('AdhesiveBall', None, 'grid too coarse for the interact')
     """
 
     result: Any
@@ -83,6 +145,72 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     scale (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak, so the
     same Maugis parameter), which removes most of the pixel pinning of the zone's end;
     the Maugis-Dugdale validation (tests/test_adhesion_validation.py) is of this law.
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius R (m).
+    work, range_ : float
+        Work of adhesion w (J/m²) and the interaction's range (m).
+    materials : str or (Material, Material), optional
+        ``"BALL,PLATE"``; or give ``e_star``.
+    e_star : float, optional
+        Composite modulus E* (Pa).
+    interaction : {"dugdale", "exponential"}
+        The adhesion law (:func:`interaction_law`).
+    grid, size : optional
+        Cells per side and domain side (m).
+    steps : int
+        Approach and retraction steps.
+    plate, ball : Topography or path, optional
+        Scans (smooth surfaces without).
+    spikes : {"remove", "keep"} or bool
+        Spike handling of the scans.
+    progress : callable, optional
+        ``progress(done, total)`` after each step.
+
+    Returns
+    -------
+    Adhesion
+        The cycle (loads, approaches, contact radii, jumps), the pull-off force beside
+        JKR's and DMT's, the Tabor and Maugis parameters.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Both or neither of ``materials`` and ``e_star``, bad values, scans too small for
+        the domain, a solver failure.
+
+    See Also
+    --------
+    surfmet.mechanics.adhesion_line.line_adhesion : the cylinder.
+    surfmet.mechanics.hertz_adhesion.assess_adhesion : whether adhesion matters at all.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+    .. [2] K. L. Johnson, K. Kendall, A. D. Roberts, "Surface energy and the contact of
+       elastic solids", Proc. R. Soc. Lond. A 324 (1971) 301-313.
+    .. [3] B. V. Derjaguin, V. M. Muller, Yu. P. Toporov, "Effect of contact deformations
+       on the adhesion of particles", J. Colloid Interface Sci. 53 (1975) 314-326.
+
+    Examples
+    --------
+    A 10 µm sphere, w = 0.05 J/m², E* = 1 GPa: the Maugis parameter 1.6 lies between the
+    JKR and DMT limits, and so does the pull-off force (1.5 π w R = 2.36 µN, 2 π w R =
+    3.14 µN); this coarse grid overestimates it slightly, as its warning says:
+
+    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=10)
+    >>> rec = adhesion_record(run)
+    >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
+    lambda = 1.65
+    >>> for key in ("jkr_pull_off_force", "pull_off_force", "dmt_pull_off_force"):
+    ...     print(key, f"{rec[key]['value'] * 1e6:.2f} µN")
+    jkr_pull_off_force 2.36 µN
+    pull_off_force 2.68 µN
+    dmt_pull_off_force 3.14 µN
     """
     from contact.adhesion.ball import adhesive_ball, default_size
     from contact.adhesion.memory import check_adhesion_memory
@@ -105,7 +233,31 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
 def adhesion_pair(materials: Any, e_star: float | None) -> Any:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`) of exactly one of a
     material pair and E* itself (Pa), by
-    :func:`surfmet.mechanics.material_spec.material_pair`."""
+    :func:`surfmet.mechanics.material_spec.material_pair`.
+
+    Parameters
+    ----------
+    materials : str or (Material, Material) or None
+        ``"BALL,PLATE"``.
+    e_star : float or None
+        Composite modulus (Pa).
+
+    Returns
+    -------
+    contact.material_pair.MaterialPair
+        The pair.
+
+    Raises
+    ------
+    SurfmetInputError
+        Both or neither given.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion_pair
+    >>> print(f"{adhesion_pair('steel,aluminium', None).e_star / 1e9:.2f} GPa")
+    58.61 GPa
+    """
     from surfmet.mechanics.material_spec import material_pair
 
     if (materials is None) == (e_star is None):
@@ -210,7 +362,30 @@ def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
 
 
 def adhesion_record(run: Adhesion) -> dict[str, Any]:
-    """The JSON record of an :class:`Adhesion` run."""
+    """The JSON record of an :class:`Adhesion` run.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A run.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    See Also
+    --------
+    adhesion
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
+    >>> rec = adhesion_record(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16,
+    ...                                steps=6))
+    >>> rec["geometry"], rec["pull_off_force"]["unit"]
+    ('sphere', 'N')
+    """
     ball = run.result
     cyc, law = ball.cycle, ball.law
     return {

@@ -40,11 +40,34 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
     across the period, default :data:`LINE_CELLS`); ``plate`` is a scan whose middle row
     is the roughness profile.
 
+    Returns
+    -------
+    Adhesion
+        The cycle per unit length (loads in N/m) and the pull-off force.
+
     Raises
     ------
     SurfmetInputError
         A ball scan (a cylinder's scan is not a sphere's cap), or a plate scan narrower than
         the period.
+
+    See Also
+    --------
+    surfmet.mechanics.adhesion.adhesion : the sphere.
+    line_record : the JSON record.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269 (and its plane-strain analogue).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
+    >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=20)
+    >>> rec = line_record(run)
+    >>> rec["geometry"], rec["pull_off_force"]["unit"], run.line
+    ('line', 'N/m', True)
     """
     import numpy as np
 
@@ -90,7 +113,26 @@ def _leg(branch: Any) -> dict[str, Any]:
 
 
 def line_record(run: Any) -> dict[str, Any]:
-    """The JSON record of a line-contact run (forces per unit length)."""
+    """The JSON record of a line-contact run (forces per unit length).
+
+    Parameters
+    ----------
+    run : Adhesion
+        A line run.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``, forces per unit length.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
+    >>> rec = line_record(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
+    ...                                 steps=8))
+    >>> rec["pull_off_force"]["unit"], rec["work_of_adhesion"]
+    ('N/m', {'value': 0.05, 'unit': 'J/m^2'})
+    """
     res = run.result
     cyc, law = res.cycle, res.law
     return {
