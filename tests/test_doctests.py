@@ -97,22 +97,12 @@ PENDING: frozenset[str] = frozenset({
     "surfmet.mechanics.resolution_study.contact_study",
     "surfmet.mechanics.resolution_study.rolling_study",
     "surfmet.mechanics.resolution_study.study_lines",
-    "surfmet.mechanics.rolling_contact.RollingContact",
-    "surfmet.mechanics.rolling_contact.parse_line_load",
-    "surfmet.mechanics.rolling_contact.rolling_contact_record",
-    "surfmet.mechanics.rolling_contact.solve_rolling_contact",
     "surfmet.mechanics.viscoelastic_rolling.MechanismsReport",
-    "surfmet.mechanics.viscoelastic_rolling.ViscoRollingReport",
     "surfmet.mechanics.viscoelastic_rolling.microslip_sweep",
-    "surfmet.mechanics.viscoelastic_rolling.parse_viscoelastic",
     "surfmet.mechanics.viscoelastic_rolling.reaches_offset",
     "surfmet.mechanics.viscoelastic_rolling.rolling_mechanisms",
-    "surfmet.mechanics.viscoelastic_rolling.viscoelastic_rolling",
-    "surfmet.mechanics.viscoelastic_rolling_contact.ViscoRollingContact",
     "surfmet.mechanics.viscoelastic_rolling_contact.coupling_reason",
     "surfmet.mechanics.viscoelastic_rolling_contact.pair_kalker_k",
-    "surfmet.mechanics.viscoelastic_rolling_contact.visco_rolling_contact_record",
-    "surfmet.mechanics.viscoelastic_rolling_contact.viscoelastic_rolling_contact",
 })
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE

@@ -48,10 +48,33 @@ def _parse_time(text: str) -> float:
 def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
     """``BODY:Eg=..:Er=..:tau=..[:nu=..]`` -> (body, StandardLinearSolid).
 
+    Parameters
+    ----------
+    text : str
+        ``BODY:Eg=..:Er=..:tau=..[:nu=..]``, BODY ``ball`` or ``plate``.
+    ball, plate : Material
+        The elastic bodies (their Poisson's ratio is the default ``nu``).
+
+    Returns
+    -------
+    (str, StandardLinearSolid)
+        The body and its standard linear solid.
+
     Raises
     ------
     SurfmetInputError
         Unreadable text; contact.ContactInputError for Er > Eg or tau <= 0.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 6.6.
+
+    Examples
+    --------
+    >>> from contact import material
+    >>> from surfmet.mechanics.viscoelastic_rolling import parse_viscoelastic
+    >>> parse_viscoelastic("plate:Eg=3GPa:Er=1GPa:tau=1ms", material("steel"), material("pmma"))
+    ('plate', StandardLinearSolid(E_g=3000000000.0, E_r=1000000000.0, tau_c=0.001, nu=0.37))
     """
     from contact.viscoelastic import StandardLinearSolid
 
@@ -80,7 +103,21 @@ def parse_viscoelastic(text: str, ball: Any, plate: Any) -> tuple[str, Any]:
 @dataclass(frozen=True, eq=False)
 class ViscoRollingReport:
     """Viscoelastic rolling resistance over a load sweep (``surfmet rolling --model
-    viscoelastic``)."""
+    viscoelastic``).
+
+    See Also
+    --------
+    viscoelastic_rolling : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling
+    >>> report = viscoelastic_rolling(radius=0.02, materials="steel,pmma", loads=[1.0, 3.0, 10.0],
+    ...                               speed=0.01, viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                               grid=32)
+    >>> report.sweep.moments.shape, sorted(report.to_json())[:2]
+    ((3,), [...])
+    """
 
     sweep: Any
     radius: float
@@ -117,6 +154,60 @@ def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
     Each body is the ``--viscoelastic`` SLS given for it, else, with ``loss``, the SLS of
     that loss factor peaking at V/a (:func:`contact.viscoelastic.loss.sls_from_loss`), else
     elastic.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path, optional
+        Scans (smooth surfaces without).
+    radius : float
+        Ball radius (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    loads : sequence of float
+        Normal loads (N).
+    speed : float
+        Rolling speed V (m/s).
+    viscoelastic : list of str, optional
+        ``BODY:Eg=..:Er=..:tau=..`` per viscoelastic body (:func:`parse_viscoelastic`).
+    loss : (float, float), optional
+        Loss factors of ball and plate, instead of ``viscoelastic``.
+    grid : int
+        Cells per side.
+    spikes : bool
+        Remove the scans' spikes.
+    progress : callable, optional
+        Wraps the iterable of loads.
+
+    Returns
+    -------
+    ViscoRollingReport
+        The sweep (loads, moments, the fitted exponent) and the bodies.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Unreadable bodies or loads, a solver failure.
+
+    See Also
+    --------
+    surfmet.mechanics.rolling_resistance.rolling_resistance : the elastic-hysteresis model.
+
+    References
+    ----------
+    .. [1] S. C. Hunter, "The rolling contact of a rigid cylinder with a viscoelastic half
+       space", J. Appl. Mech. 28 (1961) 611-617.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 8.6.
+
+    Examples
+    --------
+    A steel ball rolling slowly on a PMMA-like standard linear solid:
+
+    >>> from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling
+    >>> report = viscoelastic_rolling(radius=0.02, materials="steel,pmma", loads=[1.0, 3.0, 10.0],
+    ...                               speed=0.01, viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                               grid=32)
+    >>> print(f"lambda = {report.sweep.fit.exponent:.2f}")
+    lambda = 1.03
     """
     from contact.hertz import hertz_sphere
     from contact.viscoelastic.loss import sls_from_loss

@@ -48,6 +48,19 @@ class ViscoRollingContact:
         The pair's K with glassy and with relaxed moduli (body 1 = ball).
     not_solved : str or None
         Why the tangential problem was not solved (None: solved, or no ``mu``).
+
+    See Also
+    --------
+    viscoelastic_rolling_contact : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import viscoelastic_rolling_contact
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> vc.traction is None, vc.normal.pressure.ndim
+    (True, 2)
     """
 
     normal: Any
@@ -125,6 +138,38 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Any,
         Coefficient of friction and creepage (default free rolling) for the tangential
         tractions: plane strain (:func:`contact.viscoelastic.steady_traction`) or, for a
         ball, 3D (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`).
+
+    Returns
+    -------
+    ViscoRollingContact
+        The normal solution, the tractions (with ``mu``) and the pair's Kalker constants.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Unreadable bodies, bad values, a solver failure.
+
+    See Also
+    --------
+    visco_rolling_contact_record : its JSON record.
+    surfmet.mechanics.rolling_contact.solve_rolling_contact : the elastic case.
+
+    References
+    ----------
+    .. [1] S. C. Hunter, "The rolling contact of a rigid cylinder with a viscoelastic half
+       space", J. Appl. Mech. 28 (1961) 611-617.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 8.6.
+
+    Examples
+    --------
+    The delayed recovery of the viscoelastic plate behind the ball resists the rolling:
+
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import viscoelastic_rolling_contact
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> bool(vc.normal.rolling_resistance > 0)
+    True
     """
     from contact.tangential.memory import check_rolling_memory
     from contact.viscoelastic import pair_creep
@@ -223,7 +268,29 @@ VISCO_RESISTANCE_DEFINITION = (
 
 def visco_rolling_contact_record(vc: ViscoRollingContact) -> dict[str, Any]:
     """The JSON record, keyed as the elastic one
-    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`)."""
+    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`).
+
+    Parameters
+    ----------
+    vc : ViscoRollingContact
+        A solve.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import (
+    ...     visco_rolling_contact_record, viscoelastic_rolling_contact)
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> rec = visco_rolling_contact_record(vc)
+    >>> rec["geometry"], rec["speed"]
+    ('sphere on flat', {'value': 0.01, 'unit': 'm/s'})
+    """
     from surfmet.mechanics.rolling_contact import SIGN_CONVENTION
 
     r = vc.normal
