@@ -321,6 +321,35 @@ def scan_summits(prep: PreparedScans) -> Any:
     independent surfaces the moments of the composite (sum) surface add, and Nayak/McCool
     (:func:`contact.roughcontact.summit_parameters`) turn the sums into η, R_s, σ_s.
     None when no scan has roughness. The results depend on the scans' lateral resolution.
+
+    Parameters
+    ----------
+    prep : PreparedScans
+        The prepared scans.
+
+    Returns
+    -------
+    contact.roughcontact.SummitParameters or None
+        Spectral moments, summit density, radius and height spread (None without scans).
+
+    References
+    ----------
+    .. [1] P. R. Nayak, "Random process model of rough surfaces", J. Lubr. Technol. 93
+       (1971) 398-407.
+    .. [2] J. A. Greenwood, J. B. P. Williamson, "Contact of nominally flat surfaces",
+       Proc. R. Soc. Lond. A 295 (1966) 300-319.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import scan_summits
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> s = scan_summits(prepare_scans(patch))
+    >>> print(f"summit radius {s.radius * 1e6:.1f} µm, Nayak alpha {s.alpha:.2f}")
+    summit radius 8.6 µm, Nayak alpha 2.99
     """
     from contact.roughcontact import summit_parameters
     from surfmet.psd import areal_psd

@@ -86,7 +86,32 @@ def _shear(body: Any, glassy: bool) -> tuple[float, float]:
 
 def pair_kalker_k(ball: Any, plate: Any) -> tuple[float, float]:
     """Kalker's K of the pair (ball = body 1) with glassy and with relaxed moduli
-    (:func:`contact.halfspace.constants.pair_constants_from`)."""
+    (:func:`contact.halfspace.constants.pair_constants_from`).
+
+    Parameters
+    ----------
+    ball, plate : Material or StandardLinearSolid
+        The bodies (ball = body 1).
+
+    Returns
+    -------
+    (float, float)
+        K with the glassy and with the relaxed moduli.
+
+    References
+    ----------
+    .. [1] J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling Contact, Kluwer
+       (1990).
+
+    Examples
+    --------
+    Quasi-identical bodies have no normal-tangential coupling:
+
+    >>> from contact import material
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import pair_kalker_k
+    >>> pair_kalker_k(material("steel"), material("steel"))
+    (0.0, 0.0)
+    """
     from contact.halfspace.constants import pair_constants_from
 
     return tuple(pair_constants_from(*_shear(ball, g), *_shear(plate, g)).K  # type: ignore
@@ -95,7 +120,28 @@ def pair_kalker_k(ball: Any, plate: Any) -> tuple[float, float]:
 
 def coupling_reason(kalker_k: tuple[float, float], free_rolling: bool) -> str | None:
     """Why the tangential problem is not solved (free rolling of a dissimilar pair), or
-    None."""
+    None.
+
+    Parameters
+    ----------
+    kalker_k : (float, float)
+        The pair's K (glassy, relaxed).
+    free_rolling : bool
+        No creepage imposed.
+
+    Returns
+    -------
+    str or None
+        The sentence, or None when the tangential problem is solved.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import coupling_reason
+    >>> coupling_reason((0.0, 0.0), True) is None
+    True
+    >>> print(coupling_reason((-0.1, -0.12), True)[:40])
+    tangential problem not solved: in free r
+    """
     if not free_rolling or max(abs(k) for k in kalker_k) <= QUASI_IDENTICAL_K:
         return None
     kg, kr = kalker_k
