@@ -81,15 +81,9 @@ DOCTEST_MODULES = (
 # test_every_face_definition_has_examples fails on a name missing from it that has no
 # example (a new public function must come with one) and on a name in it that now has one.
 PENDING: frozenset[str] = frozenset({
-    "surfmet.mechanics.adhesion.jump_record",
     "surfmet.mechanics.adhesion.plot",
-    "surfmet.mechanics.adhesion.rough_grid",
-    "surfmet.mechanics.adhesion.scan_too_small",
     "surfmet.mechanics.adhesion.scans_record",
     "surfmet.mechanics.adhesion_line.line_plot",
-    "surfmet.mechanics.ball_contact.grid_warnings",
-    "surfmet.mechanics.ball_contact.solution_warnings",
-    "surfmet.mechanics.ball_contact.solve_on_pair",
     "surfmet.mechanics.flat_contact.adhesive_sweep",
     "surfmet.mechanics.flat_contact.plot",
     "surfmet.mechanics.hertz_check.rough_ball_models",

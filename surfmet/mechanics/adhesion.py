@@ -144,7 +144,7 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     the cells per side (default 128). The Dugdale law's step is smoothed on the grid's
     scale (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak, so the
     same Maugis parameter), which removes most of the pixel pinning of the zone's end;
-    the Maugis-Dugdale validation (tests/test_adhesion_validation.py) is of this law.
+    it is this law that reproduces Maugis (1992).
 
     Parameters
     ----------
@@ -276,10 +276,37 @@ def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIK
     pixels are resampled) and sampled with the engine's
     :func:`contact.sampling.sample_roughness`. (None, None) without scans.
 
+    Parameters
+    ----------
+    plate, ball : Topography, path or None
+        The scans.
+    grid : int
+        Cells per side.
+    size : float
+        Domain side (m).
+    spikes : {"remove", "keep"} or bool
+        Spike handling.
+
+    Returns
+    -------
+    (ndarray or None, dict or None)
+        The roughness on the grid (m) and the scans' record.
+
     Raises
     ------
     SurfmetInputError
         A scan smaller than the domain, or a grid that is not an integer of at least 16.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> z, record = rough_grid(surfmet.Topography(plate.heights[:128, :128], plate.dx,
+    ...                                           plate.dy), None, 32, 3e-4)
+    >>> z.shape, sorted(record)
+    ((32, 32), ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms'])
     """
     if plate is None and ball is None:
         return None, None
@@ -303,7 +330,32 @@ def rough_grid(plate: Any, ball: Any, grid: int, size: float, spikes: Any = SPIK
 
 
 def scan_too_small(pair: Any, size: float) -> str:
-    """The one line refusing scans smaller than the domain of side ``size`` (m)."""
+    """The one line refusing scans smaller than the domain of side ``size`` (m).
+
+    Parameters
+    ----------
+    pair : PairedRoughness
+        The paired scans.
+    size : float
+        The domain's side (m).
+
+    Returns
+    -------
+    str
+        The message.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import scan_too_small
+    >>> from surfmet.mechanics.pairing import prepare_pair
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> pair = prepare_pair(surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy))
+    >>> print(scan_too_small(pair, 1e-3))
+    the scans (635 x 635 µm in common) are smaller than the adhesion domain (1000 µm a
+    side): give a smaller --size or larger scans
+    """
     ny, nx = pair.roughness.shape
     return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} µm "
             f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} µm a side): "
@@ -352,7 +404,28 @@ def _leg(branch: Any) -> dict[str, Any]:
 
 
 def jump_record(jump: Any, force_unit: str = "N") -> dict[str, Any] | None:
-    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line)."""
+    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line).
+
+    Parameters
+    ----------
+    jump : Jump or None
+        A jump of the cycle.
+    force_unit : str
+        ``"N"`` or ``"N/m"``.
+
+    Returns
+    -------
+    dict or None
+        Approach, step and the loads before and after, with units (None without a jump).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, jump_record
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
+    >>> rec = jump_record(run.result.cycle.jump_in)
+    >>> rec["load_after"]["unit"], rec["load_after"]["value"] < 0
+    ('N', True)
+    """
     if jump is None:
         return None
     return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
