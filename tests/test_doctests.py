@@ -86,12 +86,8 @@ PENDING: frozenset[str] = frozenset({
     "surfmet.mechanics.adhesion_line.line_plot",
     "surfmet.mechanics.flat_contact.adhesive_sweep",
     "surfmet.mechanics.flat_contact.plot",
-    "surfmet.mechanics.hertz_check.rough_ball_models",
     "surfmet.mechanics.resolution_study.rolling_study",
-    "surfmet.mechanics.viscoelastic_rolling.MechanismsReport",
     "surfmet.mechanics.viscoelastic_rolling.microslip_sweep",
-    "surfmet.mechanics.viscoelastic_rolling.reaches_offset",
-    "surfmet.mechanics.viscoelastic_rolling.rolling_mechanisms",
 })
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE

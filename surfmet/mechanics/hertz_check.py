@@ -370,7 +370,46 @@ def scan_summits(prep: PreparedScans) -> Any:
 
 def rough_ball_models(check: Any, summits: Any, *, radius: float, load: float,
                       e_star: float, hardness: float | None) -> Any:
-    """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
+    """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM.
+
+    Parameters
+    ----------
+    check : contact.hertzcheck.SphereCheck
+        The BEM check.
+    summits : SummitParameters or None
+        The scans' summit parameters (:func:`scan_summits`).
+    radius, load, e_star : float
+        Ball radius (m), load (N), composite modulus (Pa).
+    hardness : float or None
+        Hardness of the softer body (Pa): adds the plastic Greenwood-Tripp model.
+
+    Returns
+    -------
+    contact.roughcontact.hierarchy.ModelHierarchy
+        The models side by side, the verdict on which one the contact needs, and the
+        models left out with their reasons.
+
+    References
+    ----------
+    .. [1] J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres", J. Appl.
+       Mech. 34 (1967) 153-159.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from contact import check_sphere
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import rough_ball_models, scan_summits
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> prep = prepare_scans(surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy))
+    >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=prep.pair.composite(None),
+    ...                      sigma=prep.sigma, hardness=1.05e9, grid=64)
+    >>> models = rough_ball_models(check, scan_summits(prep), radius=0.02, load=10.0,
+    ...                            e_star=58.6e9, hardness=1.05e9)
+    >>> list(models.models)
+    ['hertz', 'greenwood_tripp', 'greenwood_tripp_plastic', 'bem']
+    """
     from contact.errors import ContactInputError, ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy

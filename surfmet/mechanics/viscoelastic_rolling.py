@@ -243,7 +243,19 @@ def viscoelastic_rolling(plate: Any = None, ball: Any = None, *, radius: float,
 
 @dataclass(frozen=True, eq=False)
 class MechanismsReport:
-    """Mechanisms side by side with what Table 3 measures (``--model all``)."""
+    """Mechanisms side by side with what Table 3 measures (``--model all``).
+
+    See Also
+    --------
+    rolling_mechanisms : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
+    >>> report = rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))
+    >>> type(report).__name__, len(report.group_offset) > 0
+    ('MechanismsReport', True)
+    """
 
     comparison: Any
     verdict: Any
@@ -329,6 +341,50 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     sets the adhesion-hysteresis mechanism; None entries take steel on aluminium in air
     (:data:`contact.adhesion.rolling.STEEL_ALUMINIUM_AIR`, Delta_w = w), and another pair
     without a w leaves it out with a note.
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    loads : (float, float, int) or sequence of float
+        The ball loads (N): a log range or the values.
+    speed : float
+        Rolling speed (m/s).
+    loss : (float, float), optional
+        Loss factors of ball and plate.
+    hardness : float, optional
+        Hardness of the softer body (Pa).
+    grid : int
+        Cells per side.
+    mu : float or None
+        Coefficient of friction of the micro-slip mechanism (None leaves it out).
+    adhesion : (float or None, float or None)
+        Work of adhesion and its hysteresis (J/m²).
+
+    Returns
+    -------
+    MechanismsReport
+        Each mechanism's exponent and the acceleration difference it implies, beside the
+        rotor verdict.
+
+    See Also
+    --------
+    surfmet.mechanics.rotor_verdict.paper_verdict : what Table 3 measures.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 8-9.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
+    >>> report = rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))
+    >>> report.verdict.code, type(report.to_json()).__name__
+    ('undetermined', 'dict')
     """
     from contact.rolling import log_loads
     from contact.rotor.mechanics import mass_properties, normal_reactions
@@ -383,7 +439,30 @@ def _adhesion_numbers(ball: str, plate: str, work: float | None, hysteresis: flo
 
 
 def reaches_offset(delta_eps: float, offset: Any) -> bool:
-    """Whether an implied offset reaches the smallest one the verdict's interval allows."""
+    """Whether an implied offset reaches the smallest one the verdict's interval allows.
+
+    Parameters
+    ----------
+    delta_eps : float
+        The acceleration difference a mechanism implies (rad/s²).
+    offset : interval quantity
+        The verdict's group offset (``value``, ``ci_low``, ``ci_high``).
+
+    Returns
+    -------
+    bool
+        True when the mechanism can make the measured offset.
+
+    Examples
+    --------
+    Against the paper's offset of +0.20 rad/s² (95 % CI +0.12..+0.28):
+
+    >>> from types import SimpleNamespace
+    >>> from surfmet.mechanics.viscoelastic_rolling import reaches_offset
+    >>> offset = SimpleNamespace(value=0.20, ci_low=0.12, ci_high=0.28)
+    >>> reaches_offset(0.022, offset), reaches_offset(0.15, offset), reaches_offset(-0.15, offset)
+    (False, True, False)
+    """
     if offset.ci_low <= 0.0 <= offset.ci_high:
         return abs(delta_eps) >= abs(offset.value)
     return abs(delta_eps) >= min(abs(offset.ci_low), abs(offset.ci_high)) and \
