@@ -81,12 +81,7 @@ DOCTEST_MODULES = (
 # test_every_face_definition_has_examples fails on a name missing from it that has no
 # example (a new public function must come with one) and on a name in it that now has one.
 PENDING: frozenset[str] = frozenset({
-    "surfmet.mechanics.adhesion.plot",
-    "surfmet.mechanics.adhesion.scans_record",
-    "surfmet.mechanics.adhesion_line.line_plot",
     "surfmet.mechanics.flat_contact.adhesive_sweep",
-    "surfmet.mechanics.flat_contact.plot",
-    "surfmet.mechanics.resolution_study.rolling_study",
     "surfmet.mechanics.viscoelastic_rolling.microslip_sweep",
 })
 

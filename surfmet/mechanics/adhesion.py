@@ -363,7 +363,36 @@ def scan_too_small(pair: Any, size: float) -> str:
 
 
 def scans_record(prep: Any, plate: Any, ball: Any, dx: float, z: Any) -> dict[str, Any]:
-    """What scans were used, what was done to them, and the roughness on the grid."""
+    """What scans were used, what was done to them, and the roughness on the grid.
+
+    Parameters
+    ----------
+    prep : PreparedScans
+        The prepared scans.
+    plate, ball : Topography, path or None
+        The scans as given.
+    dx : float
+        The grid's pixel (m).
+    z : ndarray
+        The roughness on the grid (m).
+
+    Returns
+    -------
+    dict
+        The scans, their preparation, the pixel and the rms of the roughness on the grid.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid, scans_record
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> z, _ = rough_grid(patch, None, 32, 3e-4)
+    >>> sorted(scans_record(prepare_scans(patch), patch, None, 1e-5, z))
+    ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms']
+    """
     import math
 
     from surfmet.units import quantity
@@ -492,7 +521,27 @@ def adhesion_record(run: Adhesion) -> dict[str, Any]:
 
 
 def plot(run: Adhesion, path: Any = None) -> Any:
-    """Load against approach, and contact radius against load, in and out."""
+    """Load against approach, and contact radius against load, in and out.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A run.
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, plot
+    >>> fig = plot(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6))
+    >>> len(fig.axes)
+    2
+    """
     from surfmet.plots._style import finish, new_figure
 
     ball = run.result

@@ -165,7 +165,28 @@ def line_record(run: Any) -> dict[str, Any]:
 
 
 def line_plot(run: Any, path: Any = None) -> Any:
-    """Load per length against approach, and contact half-width against load."""
+    """Load per length against approach, and contact half-width against load.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A line run.
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_plot
+    >>> fig = line_plot(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
+    ...                               steps=8))
+    >>> type(fig).__name__
+    'Figure'
+    """
     from surfmet.plots._style import finish, new_figure
 
     res = run.result

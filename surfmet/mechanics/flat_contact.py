@@ -375,7 +375,33 @@ def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:
 def plot(rep: FlatContactReport | None, path: Any = None, all_scales: ModelCurve | None = None
          ) -> Any:
     """A/A0 and ū against p for the BEM and the three theories, and Persson's theory from
-    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone."""
+    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone.
+
+    Parameters
+    ----------
+    rep : FlatContactReport or None
+        The report (None: the all-scales curve alone).
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+    all_scales : ModelCurve, optional
+        Persson's theory from all scales.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.flat_contact import flat_contact, plot
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> fig = plot(flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium"))
+    >>> type(fig).__name__
+    'Figure'
+    """
     from surfmet.plots._style import finish, new_figure
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))

@@ -136,7 +136,27 @@ def rolling_study(
 
     The materials are resolved here: ``lossy`` ("ball" or "plate") scales the hysteresis
     moment by that body's share of the displacement, and the plastic model takes the pair's
-    hardness (``hardness`` when given, else the softer body's)."""
+    hardness (``hardness`` when given, else the softer body's).
+
+    See Also
+    --------
+    contact_study : the same for one contact.
+    contact.resolution : the engine's study.
+
+    Examples
+    --------
+    A 1.3 mm patch of the bundled plate: λ_eff changes with the pixel, so the scan's
+    rolling exponent is not resolved at 5 µm:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.resolution_study import rolling_study, study_lines
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:256, :256], plate.dx, plate.dy)
+    >>> study, prep = rolling_study(patch, radius=0.02, loads=[2.0, 5.0, 10.0], factors=(2, 1))
+    >>> print(study_lines(study)[2])
+    λ_eff                     3.287       1.2213   keeps moving (169 %)
+    """
     from contact.resolution import rolling_study as engine
 
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
