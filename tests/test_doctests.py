@@ -80,10 +80,7 @@ DOCTEST_MODULES = (
 # Face definitions that still lack an Examples section. This list may only shrink:
 # test_every_face_definition_has_examples fails on a name missing from it that has no
 # example (a new public function must come with one) and on a name in it that now has one.
-PENDING: frozenset[str] = frozenset({
-    "surfmet.mechanics.flat_contact.adhesive_sweep",
-    "surfmet.mechanics.viscoelastic_rolling.microslip_sweep",
-})
+PENDING: frozenset[str] = frozenset()
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 

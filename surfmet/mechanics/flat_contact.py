@@ -337,7 +337,44 @@ def adhesive_sweep(scan: Topography, bem: FlatContact, law: Any) -> Any:
     A Dugdale law's step is smoothed on the pixel's scale, as the sphere's is
     (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak), which removes
     most of the pixels' pinning of the cohesive zone's end (Johnson's wavy surface under
-    a prescribed pressure, tests/test_flat_adhesion.py)."""
+    a prescribed pressure, Johnson 1995, is the check).
+
+    Parameters
+    ----------
+    scan : Topography
+        The prepared scan (:func:`surfmet.mechanics.spectrum.prepared_scan`).
+    bem : contact.setups.flat.FlatContact
+        The non-adhesive sweep to start from.
+    law : DugdaleLaw or ExponentialLaw
+        The adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`).
+
+    Returns
+    -------
+    contact.adhesion.flat.AdhesiveFlat
+        Area fraction, mean gap and attractive pressure at each pressure, with warnings.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+    .. [2] K. L. Johnson, "The adhesion of two elastic bodies with slightly wavy surfaces",
+       Int. J. Solids Struct. 32 (1995) 423-430.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import interaction_law
+    >>> from surfmet.mechanics.flat_contact import adhesive_sweep, flat_contact
+    >>> from surfmet.mechanics.spectrum import prepared_scan
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> report = flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium")
+    >>> sticky = adhesive_sweep(prepared_scan(patch)[0], report.bem,
+    ...                         interaction_law("dugdale", 0.05, 2e-9))
+    >>> bool((sticky.area_fraction >= report.bem.area_fraction).all())
+    True
+    """
     from contact.adhesion.flat import adhesive_flat
     from contact.adhesion.laws import DugdaleLaw
 
