@@ -365,8 +365,7 @@ def sphere_sweep(
     Returns
     -------
     RollingSweep
-        Loads, rolling-resistance forces and moments, the fitted load exponent and the
-        local exponents.
+        Loads, forces, moments, the fitted load exponent and the local exponents.
 
     Raises
     ------
@@ -375,23 +374,19 @@ def sphere_sweep(
 
     See Also
     --------
-    cylinder_sweep : the line contact.
-    contact.fit_exponent : the exponent fit.
+    cylinder_sweep, contact.fit_exponent
 
     References
     ----------
     .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 9.
-    .. [2] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
-       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
 
     Examples
     --------
     Elastic hysteresis under a smooth ball grows as W^(4/3):
 
     >>> from contact import sphere_sweep
-    >>> sweep = sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], grid=64)
-    >>> print(f"exponent = {sweep.fit.exponent:.2f}")
-    exponent = 1.33
+    >>> print(f"{sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], grid=64).fit.exponent:.2f}")
+    1.33
     """
     from contact.setups.ball_on_plate import SphereContact
 
@@ -463,16 +458,10 @@ def cylinder_sweep(
         Cylinder radius R (m), composite modulus E* (Pa).
     loads_per_length : iterable of float
         Loads per unit length (N/m).
-    alpha_h, share, kinematics
-        As for :func:`sphere_sweep`.
-    n, size : optional
-        Cells across the domain and its width (m).
-    roughness, roughness_dx : optional
-        A composite roughness profile and its pitch, as for :func:`contact.solve_cylinder`.
-    confidence : float
-        Level of the exponent's confidence interval.
-    progress : callable, optional
-        Wraps the iterable of loads.
+    alpha_h, share, kinematics, confidence, progress : as for :func:`sphere_sweep`
+    n, size, roughness, roughness_dx : optional
+        Cells and width of the domain (m), a roughness profile and its pitch, as for
+        :func:`contact.solve_cylinder`.
 
     Returns
     -------
@@ -482,24 +471,14 @@ def cylinder_sweep(
     Raises
     ------
     ContactInputError
-        Non-positive loads, radius or modulus.
-
-    See Also
-    --------
-    sphere_sweep
-
-    References
-    ----------
-    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 9.
+        Non-positive loads.
 
     Examples
     --------
     Elastic hysteresis of a smooth line contact grows as W'^(3/2):
-
     >>> from contact import cylinder_sweep
-    >>> sweep = cylinder_sweep(0.01, 58.6e9, [1e3, 3e3, 1e4], n=256)
-    >>> print(f"exponent = {sweep.fit.exponent:.2f}")
-    exponent = 1.50
+    >>> print(f"{cylinder_sweep(0.01, 58.6e9, [1e3, 3e3, 1e4], n=256).fit.exponent:.2f}")
+    1.50
     """
     from contact.hertz import hertz_cylinder
     from contact.setups.line import solve_cylinder

@@ -232,14 +232,6 @@ class Topography:
     6 µm x 8 µm
     >>> topo.heights.flags.writeable
     False
-
-    A scan read from a file is a Topography too:
-
-    >>> import surfmet
-    >>> from surfmet.data import path
-    >>> ball = surfmet.read(path("paper_ball.x3p"))
-    >>> type(ball).__name__, ball.metadata["format"]
-    ('Topography', 'x3p')
     """
 
     heights: np.ndarray
@@ -361,19 +353,8 @@ class Profile:
     >>> import numpy as np
     >>> from surfmet import Profile
     >>> prof = Profile(np.sin(np.linspace(0, 2 * np.pi, 101)) * 1e-6, dx=1e-5)
-    >>> prof.n, prof.is_uniform
-    (101, True)
-    >>> print(f"{prof.length * 1e3:.1f} mm")
-    1.0 mm
-
-    A row of a topography is a profile:
-
-    >>> import surfmet
-    >>> from surfmet.data import path
-    >>> plate = surfmet.read(path("paper_plate.x3p"))
-    >>> row = Profile(plate.heights[256], dx=plate.dx)
-    >>> row.n
-    1024
+    >>> prof.n, prof.is_uniform, f"{prof.length * 1e3:.1f} mm"
+    (101, True, '1.0 mm')
     """
 
     z: np.ndarray

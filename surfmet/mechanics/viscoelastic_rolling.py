@@ -252,9 +252,8 @@ class MechanismsReport:
     Examples
     --------
     >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
-    >>> report = rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))
-    >>> type(report).__name__, len(report.group_offset) > 0
-    ('MechanismsReport', True)
+    >>> type(rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))).__name__
+    'MechanismsReport'
     """
 
     comparison: Any
@@ -414,9 +413,8 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Any = "steel,aluminiu
     Examples
     --------
     >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
-    >>> report = rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))
-    >>> report.verdict.code, type(report.to_json()).__name__
-    ('undetermined', 'dict')
+    >>> rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3)).verdict.code
+    'undetermined'
     """
     from contact.rolling import log_loads
     from contact.rotor.mechanics import mass_properties, normal_reactions
@@ -491,8 +489,8 @@ def reaches_offset(delta_eps: float, offset: Any) -> bool:
 
     >>> from types import SimpleNamespace
     >>> from surfmet.mechanics.viscoelastic_rolling import reaches_offset
-    >>> offset = SimpleNamespace(value=0.20, ci_low=0.12, ci_high=0.28)
-    >>> reaches_offset(0.022, offset), reaches_offset(0.15, offset), reaches_offset(-0.15, offset)
+    >>> o = SimpleNamespace(value=0.20, ci_low=0.12, ci_high=0.28)
+    >>> reaches_offset(0.022, o), reaches_offset(0.15, o), reaches_offset(-0.15, o)
     (False, True, False)
     """
     if offset.ci_low <= 0.0 <= offset.ci_high:
