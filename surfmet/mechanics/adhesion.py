@@ -202,7 +202,7 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Any = None
     3.14 µN); this coarse grid overestimates it slightly, as its warning says:
 
     >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
-    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=10)
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=6)
     >>> rec = adhesion_record(run)
     >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
     lambda = 1.65

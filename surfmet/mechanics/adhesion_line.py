@@ -64,7 +64,7 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Any =
     Examples
     --------
     >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
-    >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=20)
+    >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=8)
     >>> rec = line_record(run)
     >>> rec["geometry"], rec["pull_off_force"]["unit"], run.line
     ('line', 'N/m', True)
