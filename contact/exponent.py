@@ -48,10 +48,42 @@ def fit_exponent(loads: Sequence[float], moments: Sequence[float],
                  confidence: float = 0.95) -> ExponentFit:
     """Fit ln M = ln s + lambda ln N by least squares, with a confidence interval.
 
+    Parameters
+    ----------
+    loads : sequence of float
+        Normal loads N (N).
+    moments : sequence of float
+        Rolling-friction moments M (N m).
+    confidence : float
+        Level of the interval on lambda.
+
+    Returns
+    -------
+    ExponentFit
+        ``exponent`` (lambda) with its ``ci``, ``prefactor`` (s), ``stderr`` and the rms
+        residual in ln M.
+
     Raises
     ------
     ContactInputError
         Fewer than 3 points, non-positive values, or a single load value.
+
+    See Also
+    --------
+    contact.sphere_sweep : computes moments to fit.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    >>> from contact import fit_exponent
+    >>> loads = [1.0, 2.0, 4.0, 8.0]
+    >>> fit = fit_exponent(loads, [2e-5 * n ** (4 / 3) for n in loads])
+    >>> print(f"lambda = {fit.exponent:.3f}, s = {fit.prefactor:.1e}")
+    lambda = 1.333, s = 2.0e-05
     """
     from scipy import stats
 

@@ -31,6 +31,35 @@ def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
     ``exact=False`` gives the Hertz paraboloid r^2/(2R); ``exact=True`` the sphere
     R - sqrt(R^2 - r^2) (it differs by r^4/(8R^3), a relative 1e-5 at r = a for the
     paper's ball).
+
+    Parameters
+    ----------
+    n : int
+        Cells along x.
+    dx : float
+        Cell pitch along x (m).
+    radius : float
+        Sphere radius R (m).
+    ny, dy : optional
+        Cells and pitch along y (default ``n`` and ``dx``).
+    exact : bool
+        The true sphere instead of the paraboloid.
+
+    Returns
+    -------
+    ndarray, shape (ny, n)
+        The gap in metres, 0 at the apex.
+
+    See Also
+    --------
+    cylinder_gap, contact.solve_normal
+
+    Examples
+    --------
+    >>> from contact import sphere_gap
+    >>> gap = sphere_gap(5, 1e-5, 0.01)
+    >>> print(gap.shape, (gap[2] * 1e9).round(1))
+    (5, 5) [20.  5.  0.  5. 20.]
     """
     radius = positive(radius, "the sphere radius", "m")
     ny = n if ny is None else ny
@@ -44,7 +73,35 @@ def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
 
 
 def cylinder_gap(n: int, dx: float, radius: float, *, ny: int | None = None) -> np.ndarray:
-    """Initial gap x^2/(2R) of a cylinder with its axis along y, shape (ny, n)."""
+    """Initial gap x^2/(2R) of a cylinder with its axis along y, shape (ny, n).
+
+    Parameters
+    ----------
+    n : int
+        Cells along x (across the axis).
+    dx : float
+        Cell pitch (m).
+    radius : float
+        Cylinder radius R (m).
+    ny : int, optional
+        Cells along the axis (default ``n``).
+
+    Returns
+    -------
+    ndarray, shape (ny, n)
+        The gap in metres, 0 on the axis.
+
+    See Also
+    --------
+    sphere_gap, contact.solve_cylinder
+
+    Examples
+    --------
+    >>> from contact import cylinder_gap
+    >>> print((cylinder_gap(5, 1e-5, 0.01, ny=2) * 1e9).round(1))
+    [[20.  5.  0.  5. 20.]
+     [20.  5.  0.  5. 20.]]
+    """
     radius = positive(radius, "the cylinder radius", "m")
     ny = n if ny is None else ny
     x = centred_coordinates(n, dx)
@@ -148,6 +205,24 @@ def auto_domain(
       the memory, :mod:`contact.bem.memory`), unless the pixel leaves fewer than 16 cells per
       Hertz radius;
     - ``grid`` overrides the cell count. Counts are rounded up to fast FFT sizes.
+
+    Returns
+    -------
+    Domain
+        Cells per side ``n``, pitch ``dx`` and the reason for the choice.
+
+    See Also
+    --------
+    contact.SphereContact : uses it.
+
+    Examples
+    --------
+    The paper's 20 mm ball at 10 N: 256 cells over 2.5 Hertz radii each side:
+
+    >>> from contact import auto_domain
+    >>> dom = auto_domain(0.02, 10.0, 58.6e9)
+    >>> print(dom.n, f"{dom.dx * 1e6:.2f} µm", dom.reason)
+    256 1.34 µm 2.5 x the Hertz radius; 256 cells for a smooth ball
     """
     a = hertz_sphere(radius, load, e_star).a
     if size is not None:

@@ -37,6 +37,23 @@ class HertzSphere:
         Approach of distant points (m), delta = a^2 / R.
     p0 : float
         Maximum pressure (Pa), p0 = 3 W / (2 pi a^2).
+
+    See Also
+    --------
+    hertz_sphere, hertz_sphere_from_approach : make it.
+
+    References
+    ----------
+    .. [1] H. Hertz, "Über die Berührung fester elastischer Körper", J. reine angew. Math.
+       92 (1882) 156-171.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.2.
+
+    Examples
+    --------
+    >>> from contact import hertz_sphere
+    >>> h = hertz_sphere(0.02, 10.0, 58.6e9)
+    >>> print(f"a = {h.a * 1e6:.0f} µm, delta = {h.delta * 1e6:.3f} µm, p0 = {h.p0 / 1e6:.0f} MPa")
+    a = 137 µm, delta = 0.936 µm, p0 = 255 MPa
     """
 
     radius: float
@@ -98,6 +115,28 @@ def hertz_sphere(radius: float, load: float, e_star: float) -> HertzSphere:
     e_star : float
         Composite modulus E* in Pa.
 
+    Returns
+    -------
+    HertzSphere
+        Contact radius, approach and peak pressure.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, load or modulus that is not positive and finite.
+
+    See Also
+    --------
+    hertz_sphere_from_approach : the same for a given approach.
+    contact.solve_sphere : the numerical (BEM) solution, rough or smooth.
+
+    References
+    ----------
+    .. [1] H. Hertz, "Über die Berührung fester elastischer Körper", J. reine angew. Math.
+       92 (1882) 156-171.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eqs.
+       (4.22)-(4.23).
+
     Examples
     --------
     The check of Alaci et al. (2022): a 20 mm steel ball on aluminium at 10 N.
@@ -130,7 +169,44 @@ def _representable(radius: float, load: float, e_star: float, **values: float) -
 
 
 def hertz_sphere_from_approach(radius: float, delta: float, e_star: float) -> HertzSphere:
-    """The Hertz solution for a prescribed approach delta: W = (4/3) E* R^(1/2) delta^(3/2)."""
+    """The Hertz solution for a prescribed approach delta: W = (4/3) E* R^(1/2) delta^(3/2).
+
+    Parameters
+    ----------
+    radius : float
+        Sphere radius R in metres.
+    delta : float
+        Approach of distant points in metres.
+    e_star : float
+        Composite modulus E* in Pa.
+
+    Returns
+    -------
+    HertzSphere
+        The load that gives that approach, with a and p0.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, approach or modulus that is not positive and finite.
+
+    See Also
+    --------
+    hertz_sphere
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. (4.23).
+
+    Examples
+    --------
+    The inverse of :func:`hertz_sphere`:
+
+    >>> from contact import hertz_sphere, hertz_sphere_from_approach
+    >>> h = hertz_sphere(0.02, 10.0, 58.6e9)
+    >>> print(f"{hertz_sphere_from_approach(0.02, h.delta, 58.6e9).load:.6f} N")
+    10.000000 N
+    """
     R = positive(radius, "radius", "m")
     d = positive(delta, "approach", "m")
     E = positive(e_star, "E*", "Pa")
@@ -151,12 +227,23 @@ class HertzCylinder:
     p0 : float
         Maximum pressure (Pa), p0 = 2 W' / (pi a) = sqrt(W' E* / (pi R)).
 
+    See Also
+    --------
+    hertz_cylinder : makes it.
+
     Notes
     -----
     A line contact has no finite approach on a half-space: the displacement of a 2D
     half-space grows like log(distance), so delta depends on the datum where it is measured
     (Johnson 1985, sec. 4.3). This class therefore gives the surface displacement
     relative to the contact centre, :meth:`relative_displacement`, not a delta.
+
+    Examples
+    --------
+    >>> from contact import hertz_cylinder
+    >>> h = hertz_cylinder(0.01, 1e4, 58.6e9)
+    >>> print(f"a = {h.a * 1e6:.1f} µm, p0 = {h.p0 / 1e6:.1f} MPa")
+    a = 46.6 µm, p0 = 136.6 MPa
     """
 
     radius: float
@@ -197,6 +284,36 @@ def hertz_cylinder(radius: float, load_per_length: float, e_star: float) -> Hert
         Normal load per unit length W' in N/m.
     e_star : float
         Composite modulus E* in Pa.
+
+    Returns
+    -------
+    HertzCylinder
+        Contact half-width and peak pressure.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, load or modulus that is not positive and finite.
+
+    See Also
+    --------
+    contact.solve_cylinder : the numerical (BEM) line contact.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.3.
+
+    Examples
+    --------
+    A 10 mm roller at 10 kN/m on E* = 58.6 GPa; ``p0 = sqrt(W' E* / (π R))``:
+
+    >>> import math
+    >>> from contact import hertz_cylinder
+    >>> h = hertz_cylinder(0.01, 1e4, 58.6e9)
+    >>> print(f"a = {h.a * 1e6:.1f} µm, p0 = {h.p0 / 1e6:.1f} MPa")
+    a = 46.6 µm, p0 = 136.6 MPa
+    >>> print(f"{math.sqrt(1e4 * 58.6e9 / (math.pi * 0.01)) / 1e6:.1f} MPa")
+    136.6 MPa
     """
     R = positive(radius, "radius", "m")
     W = positive(load_per_length, "load per length", "N/m")

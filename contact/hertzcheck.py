@@ -430,6 +430,41 @@ def check_sphere(
         (:meth:`contact.setups.ball_on_plate.SphereContact.solve` with ``hardness``).
     grid, size, max_grid, on_edge, tol
         Passed to :class:`contact.setups.ball_on_plate.SphereContact` and its ``solve``.
+
+    Returns
+    -------
+    SphereCheck
+        ``comparison`` (the criteria against Hertz and the verdict ``hertz_holds``), the
+        ``elastic`` and, with a hardness, the ``plastic`` :class:`ContactResult`.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, load, modulus or hardness that is not positive and finite.
+
+    See Also
+    --------
+    contact.solve_sphere, contact.gjm_alpha
+
+    References
+    ----------
+    .. [1] H. Hertz, "Über die Berührung fester elastischer Körper", J. reine angew. Math.
+       92 (1882) 156-171.
+    .. [2] J. A. Greenwood, K. L. Johnson, E. Matsubara, "A surface roughness parameter in
+       Hertz contact", Wear 100 (1984) 47-57.
+
+    Examples
+    --------
+    The bundled plate's roughness (α ≈ 2.6) is far from Hertz's smooth surfaces:
+
+    >>> import surfmet
+    >>> from contact import CompositeRoughness, check_sphere
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> rough = CompositeRoughness(plate.heights[128:384, 384:640], plate.dx)
+    >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=rough, grid=64).comparison
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.1f}")
+    False alpha = 2.6
     """
     from contact.geometry import remove_plane
     from contact.setups.ball_on_plate import SphereContact

@@ -61,6 +61,18 @@ class MaterialPair:
     hardness_source : str
         Where ``hardness`` comes from: ``"given"`` (the user's, for the pair), ``"material:
         NAME"`` (that body's hardness: the table's, or the user's override of it) or ``"none"``.
+
+    See Also
+    --------
+    resolve_pair : makes it.
+
+    Examples
+    --------
+    >>> from contact import material, resolve_pair
+    >>> pair = resolve_pair(material("steel"), material("aluminium"))
+    >>> print(f"E* = {pair.e_star / 1e9:.2f} GPa, H = {pair.hardness / 1e9:.2f} GPa "
+    ...       f"({pair.hardness_source})")
+    E* = 58.61 GPa, H = 1.05 GPa (material: aluminium)
     """
 
     body1: Material | None
@@ -160,10 +172,37 @@ def resolve_pair(
     hardness : float, optional
         The user's hardness (Pa), replacing the softer body's table value.
 
+    Returns
+    -------
+    MaterialPair
+        E*, the default hardness and where it comes from.
+
     Raises
     ------
     ContactInputError
         Neither or both of bodies and ``e_star``; a non-positive E* or hardness.
+
+    See Also
+    --------
+    contact.composite_modulus : E* of two materials.
+    contact.solve_sphere : takes a pair for its ``e_star``.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. (4.22).
+
+    Examples
+    --------
+    >>> from contact import material, resolve_pair
+    >>> pair = resolve_pair(material("steel"))          # a steel body on a rigid flat
+    >>> print(f"{pair.e_star / 1e9:.1f} GPa", pair.hardness_source)
+    230.8 GPa material: steel
+    >>> resolve_pair(e_star=1e9).hardness is None
+    True
+    >>> resolve_pair()
+    Traceback (most recent call last):
+    ...
+    contact.errors.ContactInputError: give the materials (at least the first body) or E*
     """
     if e_star is not None:
         if body1 is not None or body2 is not None:

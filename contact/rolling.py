@@ -361,6 +361,32 @@ def sphere_sweep(
         Level of the exponent's confidence interval.
     progress : callable, optional
         Wraps the iterable of loads (e.g. a progress bar).
+
+    Returns
+    -------
+    RollingSweep
+        Loads, forces, moments, the fitted load exponent and the local exponents.
+
+    Raises
+    ------
+    ContactInputError
+        An unknown model, ``"plastic"`` without a hardness, or non-positive loads.
+
+    See Also
+    --------
+    cylinder_sweep, contact.fit_exponent
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 9.
+
+    Examples
+    --------
+    Elastic hysteresis under a smooth ball grows as W^(4/3):
+
+    >>> from contact import sphere_sweep
+    >>> print(f"{sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], grid=64).fit.exponent:.2f}")
+    1.33
     """
     from contact.setups.ball_on_plate import SphereContact
 
@@ -425,6 +451,34 @@ def cylinder_sweep(
 
     Loads, forces and moments are per unit length of the cylinder (N/m, N/m, N m/m). One
     domain, 2.5 contact widths of the largest load (unless ``size``), serves every load.
+
+    Parameters
+    ----------
+    radius, e_star : float
+        Cylinder radius R (m), composite modulus E* (Pa).
+    loads_per_length : iterable of float
+        Loads per unit length (N/m).
+    alpha_h, share, kinematics, confidence, progress : as for :func:`sphere_sweep`
+    n, size, roughness, roughness_dx : optional
+        Cells and width of the domain (m), a roughness profile and its pitch, as for
+        :func:`contact.solve_cylinder`.
+
+    Returns
+    -------
+    RollingSweep
+        Loads, forces and moments per unit length, the fitted exponent.
+
+    Raises
+    ------
+    ContactInputError
+        Non-positive loads.
+
+    Examples
+    --------
+    Elastic hysteresis of a smooth line contact grows as W'^(3/2):
+    >>> from contact import cylinder_sweep
+    >>> print(f"{cylinder_sweep(0.01, 58.6e9, [1e3, 3e3, 1e4], n=256).fit.exponent:.2f}")
+    1.50
     """
     from contact.hertz import hertz_cylinder
     from contact.setups.line import solve_cylinder

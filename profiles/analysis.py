@@ -82,6 +82,21 @@ class ProfileAnalysis:
         parameters were computed from; NaN where not measured or discarded.
     evaluated : ndarray of bool
         True for the points inside the evaluation length.
+
+    See Also
+    --------
+    analyze_profile : makes it.
+
+    Examples
+    --------
+    >>> import surfmet, profiles
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> res = profiles.analyze_profile(plate.heights[256], plate.dx)
+    >>> res.settings["lc"], res.settings["parameters_of"]
+    (0.0008, 'roughness profile')
+    >>> res.roughness.shape == res.primary.shape
+    True
     """
 
     parameters: ProfileParameters
@@ -347,6 +362,30 @@ def analyze_profile(
     ProfileError
         All-NaN profile, empty window, a profile too short for the requested cut-off and
         sampling lengths, bad arguments.
+
+    See Also
+    --------
+    profile_parameters : the parameters of a profile already filtered.
+    split_profile : the filtering alone.
+    iso4288_cutoff : the automatic cut-off.
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, Geometrical product specifications (GPS) -- Surface texture:
+       Profile -- Part 2: Terms, definitions and surface texture parameters.
+    .. [2] ISO 16610-21:2011, Filtration -- Part 21: Linear profile filters: Gaussian filters.
+    .. [3] ISO 4288:1996, Rules and procedures for the assessment of surface texture.
+
+    Examples
+    --------
+    A row of the bundled plate scan, with the cut-off chosen by ISO 4288:
+
+    >>> import surfmet, profiles
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> res = profiles.analyze_profile(plate.heights[256], plate.dx)
+    >>> print(f"lc = {res.settings['lc'] * 1e3} mm, Ra = {res.parameters.Ra * 1e6:.2f} µm")
+    lc = 0.8 mm, Ra = 1.71 µm
     """
     z = as_heights(z)
     standard = parse_standard(standard)

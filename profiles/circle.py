@@ -114,6 +114,19 @@ class CircleFit:
         Loss of the geometric refinement.
     f_scale : float
         Residual scale of the robust loss in metres (NaN for the linear loss).
+
+    See Also
+    --------
+    fit_circle : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import fit_circle
+    >>> t = np.linspace(-0.3, 0.3, 61)
+    >>> fit = fit_circle(0.01 * np.sin(t), 0.01 * np.cos(t))
+    >>> print(f"R = {fit.radius * 1e3:.3f} mm, rms = {fit.rms_residual:.0e} m")
+    R = 10.000 mm, rms = ... m
     """
 
     radius: float
@@ -245,6 +258,26 @@ def fit_circle(
     ProfileError
         Fewer than 3 usable points, collinear points, unknown method or loss, or a
         curvature the data do not resolve.
+
+    See Also
+    --------
+    CircleFit : the result.
+
+    References
+    ----------
+    .. [1] G. Taubin, "Estimation of planar curves, surfaces and nonplanar space curves
+       defined by implicit equations", IEEE Trans. PAMI 13 (1991) 1115-1138.
+
+    Examples
+    --------
+    Points on an arc of a 10 mm ball, apex at the origin:
+
+    >>> import numpy as np
+    >>> from profiles import fit_circle
+    >>> t = np.linspace(-0.3, 0.3, 61)
+    >>> fit = fit_circle(0.01 * np.sin(t), 0.01 * np.cos(t) - 0.01)
+    >>> print(f"R = {fit.radius * 1e3:.4f} mm, centre z = {fit.center[1] * 1e3:.4f} mm")
+    R = 10.0000 mm, centre z = -10.0000 mm
     """
     method = str(method).lower()
     loss = str(loss).lower()

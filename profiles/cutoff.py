@@ -73,6 +73,19 @@ class CutoffChoice:
         Every cut-off tried and the value measured with it, in order.
     note : str
         Anything a user should know (value outside the tables, oscillation...).
+
+    See Also
+    --------
+    iso4288_cutoff : makes it.
+
+    Examples
+    --------
+    >>> import surfmet, profiles
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> choice = profiles.iso4288_cutoff(plate.heights[256], plate.dx)
+    >>> choice.lc, choice.ls, choice.parameter
+    (0.0008, 2.5e-06, 'Ra')
     """
 
     lc: float
@@ -243,6 +256,24 @@ def iso4288_cutoff(
     ------
     ProfileError
         All-NaN or too few points, or the parameter is undefined (e.g. no RSm element).
+
+    See Also
+    --------
+    analyze_profile : uses it for ``lc="auto"``.
+
+    References
+    ----------
+    .. [1] ISO 4288:1996, Geometrical product specifications (GPS) -- Surface texture:
+       Profile method -- Rules and procedures for the assessment of surface texture.
+
+    Examples
+    --------
+    >>> import surfmet, profiles
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> choice = profiles.iso4288_cutoff(plate.heights[256], plate.dx)
+    >>> print(f"lc = {choice.lc * 1e3} mm ({choice.parameter} = {choice.value * 1e6:.2f} µm)")
+    lc = 0.8 mm (Ra = 1.70 µm)
     """
     z = as_heights(z)
     dx = as_step(dx)

@@ -4,7 +4,19 @@ from __future__ import annotations
 
 
 class ProfileError(ValueError):
-    """Unusable profile input: too short for the cut-off, all NaN, bad spacing, bad fit data."""
+    """Unusable profile input: too short for the cut-off, all NaN, bad spacing, bad fit data.
+
+    A :class:`ValueError`, so ``except ValueError`` catches it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import profile_parameters
+    >>> profile_parameters(np.full(10, np.nan), 1e-6)
+    Traceback (most recent call last):
+    ...
+    profiles.errors.ProfileError: the profile has no measured points (all heights are NaN)
+    """
 
 
 class ProfileTooShortError(ProfileError):

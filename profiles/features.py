@@ -373,7 +373,21 @@ def feature_characterization(
 
 @dataclass(frozen=True)
 class FeatureParameters:
-    """The named feature parameters of ISO 21920-2 (SI; NaN where no feature exists)."""
+    """The named feature parameters of ISO 21920-2 (SI; NaN where no feature exists).
+
+    See Also
+    --------
+    feature_parameters : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import feature_parameters
+    >>> x = np.arange(4000) * 1e-6
+    >>> fp = feature_parameters(1e-6 * np.sin(2 * np.pi * x / 100e-6), 1e-6)
+    >>> print(f"Rpd = {fp.Rpd:.0f} peaks/m, R5p = {fp.R5p * 1e6:.2f} µm")
+    Rpd = 9750 peaks/m, R5p = 1.00 µm
+    """
 
     Rpd: float
     Rvd: float
@@ -398,6 +412,30 @@ def feature_parameters(z: Any, dx: float, *, wolf: float = WOLF_DEFAULT,
     """Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z of a roughness profile (ISO 21920-2 defaults).
 
     Each feature type is segmented once and all its parameters read from that segmentation.
+
+    See Also
+    --------
+    FeatureParameters : the result.
+    profile_parameters : the amplitude parameters.
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, Geometrical product specifications (GPS) -- Surface texture:
+       Profile -- Part 2: Terms, definitions and surface texture parameters.
+    .. [2] ISO 16610-85:2013, Filtration -- Part 85: Morphological areal filters:
+       Segmentation (Wolf pruning).
+
+    Examples
+    --------
+    A sine of 100 µm wavelength and 1 µm amplitude over 4 mm: 39 complete hills (the
+    partial ones at the ends do not count) in 4 mm, each 1 µm high:
+
+    >>> import numpy as np
+    >>> from profiles import feature_parameters
+    >>> x = np.arange(4000) * 1e-6
+    >>> fp = feature_parameters(1e-6 * np.sin(2 * np.pi * x / 100e-6), 1e-6)
+    >>> print(f"Rpd = {fp.Rpd:.0f} 1/m, R5p = {fp.R5p * 1e6:.2f} µm, R10z = {fp.R10z * 1e6:.2f} µm")
+    Rpd = 9750 1/m, R5p = 1.00 µm, R10z = 2.00 µm
     """
     z = as_heights(z)
     rz = _rz(z) if rz is None else rz

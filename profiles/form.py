@@ -34,6 +34,18 @@ class FormFit:
         Polynomial degree (-1 for no levelling).
     method : str
         ``"none"``, ``"mean"``, ``"line"`` or ``"poly:N"``.
+
+    See Also
+    --------
+    remove_form, level_profile : make it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import remove_form
+    >>> fit = remove_form(0.5e-6 + 1e-3 * np.arange(10) * 1e-6, 1e-6)
+    >>> fit.degree, fit.method
+    (1, 'line')
     """
 
     residuals: np.ndarray
@@ -100,6 +112,22 @@ def remove_form(z: Any, dx: float = 1.0, *, x: Any = None, degree: int = 1) -> F
     ------
     ProfileError
         All-NaN profile or fewer measured points than coefficients.
+
+    See Also
+    --------
+    level_profile : the same, by a levelling name.
+    FormFit : the result.
+
+    Examples
+    --------
+    A tilted line leaves no residual; its coefficients are the offset and the slope:
+
+    >>> import numpy as np
+    >>> from profiles import remove_form
+    >>> z = 0.5e-6 + 1e-3 * np.arange(10) * 1e-6     # 0.5 µm offset, slope 1e-3
+    >>> fit = remove_form(z, 1e-6)
+    >>> print([f"{c:.3g}" for c in fit.coefficients], f"{np.abs(fit.residuals).max():.0e}")
+    ['5e-07', '0.001'] ...
     """
     z = as_heights(z)
     pos = as_positions(x, z.size) if x is not None else np.arange(z.size) * as_step(dx)
@@ -126,7 +154,42 @@ def remove_form(z: Any, dx: float = 1.0, *, x: Any = None, degree: int = 1) -> F
 
 
 def level_profile(z: Any, dx: float = 1.0, *, x: Any = None, level: Any = "line") -> FormFit:
-    """:func:`remove_form` driven by a levelling name (see :func:`parse_level`)."""
+    """:func:`remove_form` driven by a levelling name (see :func:`parse_level`).
+
+    Parameters
+    ----------
+    z : array_like
+        Heights in metres.
+    dx : float
+        Step in metres (for uniform profiles).
+    x : array_like, optional
+        Positions in metres (non-uniform profiles).
+    level : str or int
+        A levelling name: ``"none"``, ``"mean"``, ``"line"``, ``"poly:N"`` or an int degree.
+
+    Returns
+    -------
+    FormFit
+        Residuals, form and coefficients.
+
+    Raises
+    ------
+    ProfileError
+        An unknown levelling name or too few points for the degree.
+
+    See Also
+    --------
+    remove_form
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import level_profile
+    >>> x = np.arange(11) * 1e-6
+    >>> fit = level_profile(1e3 * (x - 5e-6) ** 2, 1e-6, level=2)
+    >>> fit.degree, bool(np.abs(fit.residuals).max() < 1e-20)
+    (2, True)
+    """
     _, degree = parse_level(level)
     return remove_form(z, dx, x=x, degree=degree)
 

@@ -41,6 +41,26 @@ def material_ratio(z: Any, c: Any, *, reference: str = "mean") -> float | np.nda
     -------
     float or ndarray
         Material ratio(s) in [0, 1].
+
+    See Also
+    --------
+    material_ratio_curve : the whole curve.
+    height_at_ratio : the inverse.
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, Surface texture: Profile -- Part 2, material ratio Rmr(c).
+
+    Examples
+    --------
+    Heights spread evenly from -1 µm to 1 µm: half the profile lies at or above the mean
+    line, a quarter at or above +0.5 µm:
+
+    >>> import numpy as np
+    >>> from profiles import material_ratio
+    >>> z = np.linspace(-1e-6, 1e-6, 1001)
+    >>> print(f"{material_ratio(z, 0.0):.2f} {material_ratio(z, 0.5e-6):.2f}")
+    0.50 0.25
     """
     zv = np.sort(_heights(z))
     levels = np.asarray(c, dtype=float)
@@ -56,12 +76,42 @@ def material_ratio(z: Any, c: Any, *, reference: str = "mean") -> float | np.nda
 def material_ratio_curve(z: Any, n: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The Abbott-Firestone (material ratio) curve.
 
+    Parameters
+    ----------
+    z : array_like
+        Heights in metres; NaN where not measured.
+    n : int, optional
+        Number of evenly spaced ratios to interpolate the curve at.
+
     Returns
     -------
     (mr, height) : ndarrays
         ``height[i]`` is the level at which the material ratio is ``mr[i]``; heights
         decrease as ``mr`` goes from ``1/N`` to 1 (``N`` measured points). With ``n``
         given, the curve is interpolated at ``n`` evenly spaced ratios in [0, 1].
+
+    Raises
+    ------
+    ProfileError
+        If no point is measured.
+
+    See Also
+    --------
+    material_ratio, height_at_ratio
+
+    References
+    ----------
+    .. [1] E. J. Abbott, F. A. Firestone, "Specifying surface quality", Mechanical
+       Engineering 55 (1933) 569-572.
+    .. [2] ISO 21920-2:2021, material ratio curve.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import material_ratio_curve
+    >>> mr, height = material_ratio_curve(np.linspace(-1e-6, 1e-6, 1001), n=5)
+    >>> print(mr, (height * 1e6).round(2))
+    [0.   0.25 0.5  0.75 1.  ] [ 1.   0.5  0.  -0.5 -1. ]
     """
     zv = np.sort(_heights(z))[::-1]
     mr = np.arange(1, zv.size + 1) / zv.size
@@ -72,7 +122,33 @@ def material_ratio_curve(z: Any, n: int | None = None) -> tuple[np.ndarray, np.n
 
 
 def height_at_ratio(z: Any, mr: Any) -> float | np.ndarray:
-    """Inverse material ratio curve: the level at which the ratio is ``mr`` (0..1)."""
+    """Inverse material ratio curve: the level at which the ratio is ``mr`` (0..1).
+
+    Parameters
+    ----------
+    z : array_like
+        Heights in metres (from the mean line); NaN where not measured.
+    mr : float or array_like
+        Material ratio(s) as fractions in [0, 1].
+
+    Returns
+    -------
+    float or ndarray
+        The level(s) in metres, interpolated along the material ratio curve.
+
+    See Also
+    --------
+    material_ratio : the forward curve.
+    material_ratio_height : the ISO 21920-2 step version, from the top.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import height_at_ratio
+    >>> z = np.linspace(-1e-6, 1e-6, 1001)
+    >>> print(f"{height_at_ratio(z, 0.25) * 1e6:.2f} µm")
+    0.50 µm
+    """
     zv = np.sort(_heights(z))[::-1]
     m = np.asarray(mr, dtype=float)
     if np.any((m < 0) | (m > 1)):
@@ -103,6 +179,27 @@ def material_ratio_height(z: Any, p: Any) -> float | np.ndarray:
         Heights in metres; NaN where not measured.
     p : float or array_like
         Material ratio(s) as fractions in [0, 1].
+
+    Returns
+    -------
+    float or ndarray
+        ``z(k) - z(1)`` in metres: zero or negative.
+
+    See Also
+    --------
+    height_at_ratio : the interpolated level, from the mean line.
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, inverse material ratio Rcm(p).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import material_ratio_height
+    >>> z = np.linspace(-1e-6, 1e-6, 1001)
+    >>> print(f"{material_ratio_height(z, 0.25) * 1e6:.2f} µm below the top")
+    -0.50 µm below the top
     """
     zv = np.sort(_heights(z))[::-1]
     m = np.asarray(p, dtype=float)
@@ -115,5 +212,34 @@ def material_ratio_height(z: Any, p: Any) -> float | np.ndarray:
 
 
 def section_height_difference(z: Any, mr1: float, mr2: float) -> float:
-    """Rδc: height difference between the levels of material ratios ``mr1 < mr2``."""
+    """Rδc: height difference between the levels of material ratios ``mr1 < mr2``.
+
+    Parameters
+    ----------
+    z : array_like
+        Heights in metres.
+    mr1, mr2 : float
+        Material ratios as fractions, ``mr1 < mr2``.
+
+    Returns
+    -------
+    float
+        ``c(mr1) - c(mr2)`` in metres.
+
+    See Also
+    --------
+    height_at_ratio
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, section height difference Rδc.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import section_height_difference
+    >>> z = np.linspace(-1e-6, 1e-6, 1001)
+    >>> print(f"Rδc(25 %, 75 %) = {section_height_difference(z, 0.25, 0.75) * 1e6:.2f} µm")
+    Rδc(25 %, 75 %) = 1.00 µm
+    """
     return float(height_at_ratio(z, mr1) - height_at_ratio(z, mr2))

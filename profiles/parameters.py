@@ -75,6 +75,19 @@ class ProfileParameters:
 
     NaN means "not defined for this profile" (e.g. ``Rsm`` when no complete profile
     element exists, ``Rsk`` of a perfectly flat profile).
+
+    See Also
+    --------
+    profile_parameters : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import profile_parameters
+    >>> x = np.arange(4000) * 1e-6
+    >>> p = profile_parameters(1e-6 * np.sin(2 * np.pi * x / 100e-6), 1e-6)
+    >>> print(f"Ra = {p.Ra * 1e6:.3f} µm, Rq = {p.Rq * 1e6:.3f} µm, RSm = {p.Rsm * 1e6:.0f} µm")
+    Ra = 0.636 µm, Rq = 0.707 µm, RSm = 100 µm
     """
 
     Ra: float
@@ -212,6 +225,31 @@ def profile_parameters(
         All-NaN profile, bad step/positions, a profile shorter than the requested
         sampling lengths, or sampling lengths under three sampling distances
         (:mod:`profiles.resolution`).
+
+    See Also
+    --------
+    analyze_profile : levelling and filtering first, then these.
+    rk_parameters, feature_parameters : the other parameter families.
+
+    References
+    ----------
+    .. [1] ISO 21920-2:2021, Geometrical product specifications (GPS) -- Surface texture:
+       Profile -- Part 2: Terms, definitions and surface texture parameters.
+    .. [2] ISO 4287:1997, Surface texture: Profile method -- Terms, definitions and surface
+       texture parameters.
+
+    Examples
+    --------
+    A sine of amplitude A has Ra = 2A/π, Rq = A/√2, Rz = 2A, RSm its wavelength:
+
+    >>> import numpy as np
+    >>> from profiles import profile_parameters
+    >>> x = np.arange(4000) * 1e-6
+    >>> p = profile_parameters(1e-6 * np.sin(2 * np.pi * x / 100e-6), 1e-6)
+    >>> print(f"Ra = {p.Ra * 1e6:.3f} µm (2/π = {2 / np.pi:.3f}), Rq = {p.Rq * 1e6:.3f} µm")
+    Ra = 0.636 µm (2/π = 0.637), Rq = 0.707 µm
+    >>> print(f"Rz = {p.Rz * 1e6:.2f} µm, RSm = {p.Rsm * 1e6:.0f} µm")
+    Rz = 2.00 µm, RSm = 100 µm
     """
     z = as_heights(z)
     standard = parse_standard(standard)

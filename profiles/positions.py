@@ -45,6 +45,19 @@ class RegularProfile:
     info : dict
         What was found: the position resolution, largest deviation from the grid, number
         of points before and after.
+
+    See Also
+    --------
+    regularize : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import regularize
+    >>> x = np.round(np.arange(20) * 0.15625, 1) * 1e-6   # a 0.15625 µm grid printed to 0.1 µm
+    >>> reg = regularize(np.zeros(20), x)
+    >>> reg.method, reg.z.size
+    ('uniform-rounded', 20)
     """
 
     z: np.ndarray
@@ -104,6 +117,25 @@ def regularize(z: Any, x: Any) -> RegularProfile:
     Returns
     -------
     RegularProfile
+
+    See Also
+    --------
+    RegularProfile : the result.
+
+    Examples
+    --------
+    Positions printed with one decimal hide a uniform grid: the heights are kept as they
+    are. Truly irregular positions are resampled by linear interpolation:
+
+    >>> import numpy as np
+    >>> from profiles import regularize
+    >>> x = np.round(np.arange(20) * 0.15625, 1) * 1e-6
+    >>> print(regularize(np.zeros(20), x).method)
+    uniform-rounded
+    >>> x = np.arange(50) ** 1.5 * 1e-7
+    >>> reg = regularize(np.sin(x * 1e4), x)
+    >>> print(reg.method, f"{reg.dx * 1e6:.3f} µm")
+    resampled 0.742 µm
     """
     z = as_heights(z)
     x = as_positions(x, z.size)

@@ -57,7 +57,20 @@ _WIDTH = 0.4  # the central region's width in material ratio (ISO 13565-2)
 
 @dataclass(frozen=True)
 class RkParameters:
-    """ISO 13565-2 parameters: heights in metres, Mr1/Mr2 as fractions, A1/A2 in m."""
+    """ISO 13565-2 parameters: heights in metres, Mr1/Mr2 as fractions, A1/A2 in m.
+
+    See Also
+    --------
+    rk_parameters : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import rk_parameters
+    >>> rk = rk_parameters(np.linspace(-1e-6, 1e-6, 2001))
+    >>> print(f"Rk = {rk.Rk * 1e6:.2f} µm, Rvk = {rk.Rvk * 1e6:.2f} µm")
+    Rk = 2.00 µm, Rvk = 0.00 µm
+    """
 
     Rk: float
     Rpk: float
@@ -79,7 +92,20 @@ class RkParameters:
 
 @dataclass(frozen=True)
 class ProbabilityParameters:
-    """ISO 13565-3 parameters: Rpq, Rvq in metres, Rmq as a fraction."""
+    """ISO 13565-3 parameters: Rpq, Rvq in metres, Rmq as a fraction.
+
+    See Also
+    --------
+    probability_parameters : makes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from profiles import probability_parameters
+    >>> heights = np.random.default_rng(0).normal(0.0, 1e-6, 20000)
+    >>> print(f"Rpq = {probability_parameters(heights).Rpq * 1e6:.1f} µm")
+    Rpq = 1.0 µm
+    """
 
     Rpq: float
     Rvq: float
@@ -136,6 +162,27 @@ def rk_parameters(z: Any, *, construction: str = "secant", resolution: float = 1
     ------
     ProfileError
         Fewer than 10 measured points, a flat profile, an unknown construction.
+
+    See Also
+    --------
+    RkParameters : the result.
+    probability_parameters : the ISO 13565-3 family.
+
+    References
+    ----------
+    .. [1] ISO 13565-2:1996, Surfaces having stratified functional properties -- Part 2:
+       Height characterization using the linear material ratio curve.
+
+    Examples
+    --------
+    Heights spread evenly make a straight material ratio curve: all core, no peaks above it
+    and no valleys below:
+
+    >>> import numpy as np
+    >>> from profiles import rk_parameters
+    >>> rk = rk_parameters(np.linspace(-1e-6, 1e-6, 2001))
+    >>> print(f"Rk = {rk.Rk * 1e6:.2f} µm, Rpk = {rk.Rpk * 1e6:.2f} µm, Mr2 = {rk.Mr2:.0%}")
+    Rk = 2.00 µm, Rpk = 0.00 µm, Mr2 = 100%
     """
     if construction not in CONSTRUCTIONS:
         raise ProfileError(f"unknown Rk construction {construction!r}: use "
@@ -197,6 +244,28 @@ def probability_parameters(z: Any, *, trim: float = 0.005) -> ProbabilityParamet
         Heights in metres (NaN = not measured); at least 20 measured points.
     trim : float
         Material ratio (fraction) left out at each end of the curve.
+
+    See Also
+    --------
+    ProbabilityParameters : the result.
+    rk_parameters : the ISO 13565-2 family.
+
+    References
+    ----------
+    .. [1] ISO 13565-3:1998, Surfaces having stratified functional properties -- Part 3:
+       Height characterization using the material probability curve.
+
+    Examples
+    --------
+    Gaussian heights lie on a straight line of the probability plot whose slope is their
+    standard deviation:
+
+    >>> import numpy as np
+    >>> from profiles import probability_parameters
+    >>> heights = np.random.default_rng(0).normal(0.0, 1e-6, 20000)
+    >>> pq = probability_parameters(heights)
+    >>> print(f"Rpq = {pq.Rpq * 1e6:.1f} µm, Rvq = {pq.Rvq * 1e6:.1f} µm")
+    Rpq = 1.0 µm, Rvq = 1.0 µm
     """
     from scipy.special import ndtri
 

@@ -30,7 +30,43 @@ if TYPE_CHECKING:
 
 
 def read(source: Source, format: str | None = None, **options: Any) -> Topography | Profile:
-    """Read a scan from a path, its bytes or a binary stream (see :func:`surfmet.io.read`)."""
+    """Read a scan file (see :func:`surfmet.io.read`).
+
+    Parameters
+    ----------
+    path : path-like
+        The scan file.
+    format : str, optional
+        Registry name (``"x3p"``, ``"plu"``...); by default detected from the magic bytes,
+        then from the extension (see :func:`surfmet.io.formats`).
+    **options
+        Passed to the format's reader (``channel=``, ``height_unit=``, ``dx=``...).
+
+    Returns
+    -------
+    Topography or Profile
+        Heights in metres, NaN where not measured.
+
+    Raises
+    ------
+    SurfmetFormatError
+        Unknown format, unreadable, truncated or inconsistent file.
+
+    See Also
+    --------
+    surfmet.io.read : the reader this calls, with every option.
+    write : the other direction.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> plate.shape, plate.dx
+    ((512, 1024), 5e-06)
+    >>> print(f"{plate.size_x * 1e3:.2f} mm x {plate.size_y * 1e3:.2f} mm")
+    5.12 mm x 2.56 mm
+    """
     from surfmet.io import read as _read
 
     return _read(source, format=format, **options)
@@ -38,7 +74,47 @@ def read(source: Source, format: str | None = None, **options: Any) -> Topograph
 
 def write(scan: Topography | Profile, path: str | os.PathLike[str], format: str | None = None,
           **options: Any) -> Path:
-    """Write a scan file (see :func:`surfmet.io.write`)."""
+    """Write a scan file (see :func:`surfmet.io.write`).
+
+    Parameters
+    ----------
+    scan : Topography or Profile
+        What to write.
+    path : path-like
+        The output file; its extension names the format unless ``format=`` does.
+    format : str, optional
+        Registry name of a format with a writer (``"x3p"``, ``"npy"``, ``"npz"``).
+    **options
+        Passed to the format's writer.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written (whole or not at all).
+
+    Raises
+    ------
+    SurfmetInputError
+        No writer for the format, or an extension that names none.
+    SurfmetWriteError
+        The operating system refused the file (disk full, no permission).
+
+    See Also
+    --------
+    surfmet.io.write, read
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     out = surfmet.write(plate, pathlib.Path(tmp) / "copy.x3p")
+    ...     back = surfmet.read(out)
+    >>> bool((back.heights == plate.heights).all())
+    True
+    """
     from surfmet.io import write as _write
 
     return _write(scan, path, format=format, **options)

@@ -26,18 +26,58 @@ from __future__ import annotations
 
 
 class SurfmetError(Exception):
-    """Base class of the errors surfmet raises on purpose."""
+    """Base class of the errors surfmet raises on purpose.
+
+    Catch it to handle any error surfmet raises on purpose.
+
+    See Also
+    --------
+    SurfmetFormatError, SurfmetInputError
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> try:
+    ...     surfmet.read("no-such-file.x3p")
+    ... except surfmet.SurfmetError as exc:
+    ...     print(type(exc).__name__, "-", exc)
+    SurfmetFormatError - no-such-file.x3p: no such file
+    """
 
 
 class SurfmetFormatError(SurfmetError, ValueError):
     """A scan file is unknown, truncated, corrupted or inconsistent.
 
     The message names the file and the problem.
+
+    See Also
+    --------
+    surfmet.read : raises it for a file it cannot read.
+
+    Examples
+    --------
+    >>> import surfmet.io
+    >>> surfmet.io.read_bytes(b"not a scan", name="junk.dat")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetFormatError: junk.dat: ...
+    >>> issubclass(surfmet.SurfmetFormatError, ValueError)
+    True
     """
 
 
 class SurfmetInputError(SurfmetError, ValueError):
-    """An argument is unusable: wrong unit, malformed range, all-NaN data, too short a scan."""
+    """An argument is unusable: wrong unit, malformed range, all-NaN data, too short a scan.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import surfmet
+    >>> surfmet.Topography(np.zeros((2, 2)), dx=-1.0, dy=1.0)
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: dx must be a positive finite length in metres, got -1.0
+    """
 
 
 class SurfmetWriteError(SurfmetError, OSError):

@@ -209,6 +209,29 @@ class Topography:
         Pixel sizes along x (columns) and y (rows), in metres.
     metadata : mapping, optional
         Instrument, date, original units and whatever else the file carries.
+
+    Raises
+    ------
+    SurfmetInputError
+        Heights not a 2D numeric array, no point at all, or a pixel size that is not a
+        positive finite length.
+
+    See Also
+    --------
+    Profile : the line scan.
+    surfmet.read : a Topography from a scan file.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from surfmet import Topography
+    >>> topo = Topography(np.zeros((4, 6)), dx=1e-6, dy=2e-6, metadata={"instrument": "test"})
+    >>> topo.shape, topo.nx, topo.ny
+    ((4, 6), 6, 4)
+    >>> print(f"{topo.size_x * 1e6:g} µm x {topo.size_y * 1e6:g} µm")
+    6 µm x 8 µm
+    >>> topo.heights.flags.writeable
+    False
     """
 
     heights: np.ndarray
@@ -327,6 +350,25 @@ class Profile:
         (e.g. a Dektak export). ``None`` means uniform: ``x = i * dx``.
     metadata : mapping, optional
         As for :class:`Topography`.
+
+    Raises
+    ------
+    SurfmetInputError
+        Heights not a 1D numeric array, no point, a bad step, or positions that do not
+        increase.
+
+    See Also
+    --------
+    Topography : the areal scan.
+    profiles.analyze_profile : ISO 21920-2 parameters of a profile's heights.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from surfmet import Profile
+    >>> prof = Profile(np.sin(np.linspace(0, 2 * np.pi, 101)) * 1e-6, dx=1e-5)
+    >>> prof.n, prof.is_uniform, f"{prof.length * 1e3:.1f} mm"
+    (101, True, '1.0 mm')
     """
 
     z: np.ndarray

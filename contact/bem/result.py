@@ -57,6 +57,19 @@ class ContactResult:
         pressure on the outermost ring of a free-boundary domain
         (:func:`contact.record.edge_contact`). ``iterations``, ``residual``, ``converged``
         and ``touches_edge`` read it.
+
+    See Also
+    --------
+    contact.solve_normal, contact.solve_sphere : make it.
+
+    Examples
+    --------
+    >>> from contact import solve_sphere
+    >>> res = solve_sphere(0.02, 10.0, 58.6e9, grid=64)
+    >>> res.pressure.shape, res.n_clusters, res.solve.converged
+    ((64, 64), 1, True)
+    >>> print(f"W = {res.load:.3f} N, pmax = {res.pmax / 1e6:.0f} MPa")
+    W = 10.000 N, pmax = 255 MPa
     """
 
     pressure: np.ndarray

@@ -114,6 +114,38 @@ def solve_normal(
     ContactResult
         Its ``solve`` record's ``iterations`` counts the finest grid; ``extra["levels"]``
         lists (ny, nx, iterations) of every grid solved, coarsest first.
+
+    Raises
+    ------
+    ContactInputError
+        A gap that is not finite, a non-positive modulus, load or pitch, both or neither of
+        ``load`` and ``approach``.
+    ConvergenceError
+        The iteration stopped before ``tol``.
+    ContactMemoryError
+        A grid that would not fit in memory.
+
+    See Also
+    --------
+    contact.solve_sphere : the ball-on-plate set-up around it.
+    contact.flat_contact : a rough surface on a flat.
+
+    References
+    ----------
+    .. [1] I. A. Polonsky, L. M. Keer, "A numerical method for solving rough contact
+       problems based on the multi-level multi-summation and conjugate gradient
+       techniques", Wear 231 (1999) 206-219.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 3.
+
+    Examples
+    --------
+    A paraboloid gap of R = 20 mm at 10 N gives the Hertz peak pressure,
+    ``p0 = (6 W E*² / (π³ R²))^(1/3)`` = 255 MPa:
+
+    >>> from contact import solve_normal, sphere_gap
+    >>> res = solve_normal(sphere_gap(64, 8e-6, 0.02), 8e-6, e_star=58.6e9, load=10.0)
+    >>> print(f"pmax = {res.pmax / 1e6:.0f} MPa, W = {res.load:.2f} N")
+    pmax = 255 MPa, W = 10.00 N
     """
     given = gap0 if isinstance(gap0, Grid) else None
     if given is not None:

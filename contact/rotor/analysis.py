@@ -219,6 +219,41 @@ def analyse_test(
     extend : bool
         Try the plate-wave models (:func:`contact.rotor.extension.extend_family`); False
         keeps to the core family (as the calibrations measure it).
+
+    Returns
+    -------
+    TestReport
+        The selected model (``selected``), its initial angular acceleration ``eps0`` with
+        ``eps0_stderr`` (rad/s²), the misread rows (``outliers``) and every fit.
+
+    Raises
+    ------
+    ContactInputError
+        Too few readings, frames that do not increase, or an unknown ``cv``.
+
+    See Also
+    --------
+    analyse_table : every column of a table, by group.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+    .. [2] G. Schwarz, "Estimating the dimension of a model", Ann. Statist. 6 (1978)
+       461-464 (the BIC).
+
+    Examples
+    --------
+    Frames of a rotor that starts at 1 rad/s and accelerates at 2 rad/s², a mark every
+    quarter turn filmed at 120 frames/s (rounded to whole frames):
+
+    >>> import numpy as np
+    >>> from contact import analyse_test
+    >>> phi = np.arange(12) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> report = analyse_test("s1", np.round(1000 + 120 * t), extend=False)
+    >>> print(report.selected, f"eps0 = {report.eps0:.2f} rad/s²")
+    const eps0 = 2.01 rad/s²
     """
     if cv not in ("approx", "exact"):
         raise ContactInputError(f"cv must be 'approx' or 'exact', got {cv!r}")

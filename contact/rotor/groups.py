@@ -206,6 +206,53 @@ def analyse_table(
     compare like with like. Groups are compared pairwise under ``paper``, ``rest``,
     ``const`` and the study model, and on the study model's decay and unbalance
     parameters. ``progress(name, i, n)`` is called before each test is analysed.
+
+    Parameters
+    ----------
+    columns : mapping of str to sequence of float
+        Column name -> frame index per row (NaN for a missing reading).
+    k : sequence of int, optional
+        Row numbers (default 1, 2, ...).
+    fps, step, margin, cv, threshold, min_frames
+        As for :func:`contact.rotor.analysis.analyse_test`.
+    progress : callable, optional
+        ``progress(name, i, n)``, called before each test.
+
+    Returns
+    -------
+    LawOfMotionAnalysis
+        The per-test reports (``tests``), the per-group reports (``groups``), the study
+        model and the pairwise group comparisons.
+
+    Raises
+    ------
+    ContactInputError
+        An empty table or a column that :func:`analyse_test` refuses.
+
+    See Also
+    --------
+    contact.analyse_test : one column.
+    surfmet.mechanics.rotor_verdict.table_verdict : the verdict on a table file.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Table 3.
+
+    Examples
+    --------
+    Two groups (``s`` and ``as``, the names without their digits) of constant-acceleration
+    runs:
+
+    >>> import numpy as np
+    >>> from contact import analyse_table
+    >>> phi = np.arange(12) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> table = {"s1": np.round(1000 + 120 * t), "as1": np.round(500 + 118 * t)}
+    >>> result = analyse_table(table)
+    >>> result.study_model, [g.name for g in result.groups]
+    ('const', ['s', 'as'])
     """
     if not columns:
         raise ContactInputError("no test columns to analyse")

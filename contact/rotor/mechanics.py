@@ -189,6 +189,32 @@ def mass_properties(
     Returns
     -------
     MassProperties
+
+    Raises
+    ------
+    ContactInputError
+        An unknown collar position name, or an offset that puts the collar off the rod.
+
+    See Also
+    --------
+    angular_acceleration : uses them.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    The paper's rotor: two 20 mm steel balls on a rod, with a collar:
+
+    >>> from contact import mass_properties
+    >>> props = mass_properties()
+    >>> print(f"M = {props.mass:.3f} kg, J + M R² = {props.rolling_inertia:.3e} kg m²")
+    M = 0.951 kg, J + M R² = 5.438e-04 kg m²
+    >>> end = mass_properties(collar_offset="end")
+    >>> print(f"collar at the end: centre of mass {end.com_offset * 1e3:.2f} mm off")
+    collar at the end: centre of mass 10.46 mm off
     """
     g = paper_rotor() if geometry is None else geometry
     half_span = g.rod_length / 2
@@ -312,6 +338,45 @@ def angular_acceleration(
     ``eps = [M g R sin(a) sin(b) - s_r (N1**lam + N2**lam)] / (J + M R^2)``. For the symmetric
     collar (``d1 = d2``) this is Eq. (48); for ``lam = 1`` it is Eq. (49) and does not depend
     on the collar's position.
+
+    Parameters
+    ----------
+    s_r, lam : float
+        Rolling-friction coefficient and load exponent of ``M = s_r N**lam`` (SI).
+    alpha, beta : float
+        Plate inclination and the direction of rolling on it (rad).
+    props : MassProperties
+        The rotor (:func:`mass_properties`).
+    g : float
+        Gravity (m/s²).
+
+    Returns
+    -------
+    float
+        The angular acceleration (rad/s²).
+
+    See Also
+    --------
+    mass_properties
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Eqs. (43)-(49).
+
+    Examples
+    --------
+    Without rolling friction the rotor accelerates as ``M g R sin(a) / (J + M R²)``:
+
+    >>> import math
+    >>> from contact import angular_acceleration, mass_properties
+    >>> props = mass_properties()
+    >>> a = math.radians(1.0)
+    >>> eps = angular_acceleration(0.0, 1.0, a, math.pi / 2, props)
+    >>> free = props.mass * 9.80665 * props.ball_radius * math.sin(a) / props.rolling_inertia
+    >>> print(f"{eps:.4f} {free:.4f} rad/s²")
+    5.9889 5.9889 rad/s²
     """
     drive = props.mass * g * props.ball_radius * math.sin(alpha) * math.sin(beta)
     return (drive - rolling_torque(s_r, lam, props, alpha, beta, g)) / props.rolling_inertia

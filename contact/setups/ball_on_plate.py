@@ -90,6 +90,32 @@ class SphereContact:
         :func:`contact.bem.memory.check_grid_memory`).
     exact_sphere : bool
         Use R - sqrt(R^2 - r^2) instead of the Hertz paraboloid.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, modulus, load or hardness that is not positive and finite.
+    ContactMemoryError
+        A grid that would not fit in memory.
+
+    See Also
+    --------
+    contact.solve_sphere : one load in one call.
+    contact.CompositeRoughness : the roughness under the ball.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.2.
+
+    Examples
+    --------
+    A warm-started load sweep on one domain; the contact radius follows Hertz:
+
+    >>> from contact import SphereContact
+    >>> problem = SphereContact(0.02, 58.6e9, 10.0, grid=64)
+    >>> results = problem.sweep([1.0, 3.0, 10.0])
+    >>> print([f"{r.contact_radius / r.hertz.a:.2f}" for r in results])
+    ['1.00', '1.01', '1.01']
     """
 
     def __init__(

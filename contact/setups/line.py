@@ -183,6 +183,33 @@ def solve_cylinder(
         ``roughness_dx`` and centred on the cylinder's axis; resampled onto the grid.
     roughness_dx : float, optional
         Pitch of the roughness profile (m).
+
+    Returns
+    -------
+    LineContactResult
+        Pressure, gap and displacement on the line, ``pmax``, ``half_width`` and the
+        ``hertz`` solution of the smooth cylinder.
+
+    Raises
+    ------
+    ContactInputError
+        A radius, load or modulus that is not positive and finite, or a roughness without
+        its pitch.
+
+    See Also
+    --------
+    contact.hertz_cylinder : the closed form.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.3.
+
+    Examples
+    --------
+    >>> from contact import solve_cylinder
+    >>> res = solve_cylinder(0.01, 1e4, 58.6e9, n=256)
+    >>> print(f"pmax / p0 = {res.pmax / res.hertz.p0:.4f}")
+    pmax / p0 = 1.0000
     """
     radius = positive(radius, "the cylinder's radius", "m")
     load = positive(load, "the cylinder's load", "N/m")

@@ -67,7 +67,39 @@ for _mod in FORMAT_MODULES:
             raise
 
 def read_container(path):
-    """Every measurement of a contact.engineering container (see :mod:`surfmet.io.container`)."""
+    """Every measurement of a contact.engineering container (see :mod:`surfmet.io.container`).
+
+    Parameters
+    ----------
+    path : path-like
+        A contact.engineering container (a zip holding ``meta.yml`` and the data files).
+
+    Returns
+    -------
+    list of Topography or Profile
+        One scan per measurement, in the container's order.
+
+    Raises
+    ------
+    SurfmetFormatError
+        Not a readable container, a data file that ``meta.yml`` names is missing, or a
+        measurement that cannot be read.
+
+    See Also
+    --------
+    surfmet.io.container : the format; read : one scan file.
+
+    Examples
+    --------
+    An x3p file is a zip too, but without ``meta.yml`` it is no container:
+
+    >>> from surfmet.io import read_container
+    >>> from surfmet.data import path
+    >>> read_container(path("paper_plate.x3p"))
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetFormatError: ...: not a contact.engineering container ...)
+    """
     from surfmet.io.container import read_container as _read
 
     return _read(path)

@@ -38,7 +38,34 @@ MagicCheck = Callable[[bytes], bool]
 
 @dataclass(frozen=True)
 class FormatSpec:
-    """What the registry knows about one format."""
+    """What the registry knows about one format.
+
+    Attributes
+    ----------
+    name : str
+        Registry name (``read(..., format=name)``).
+    extensions : tuple of str
+        File extensions, lower case, without the dot.
+    description : str
+        One line for ``surfmet formats``.
+    decode, encode : callable or None
+        The reader and the writer (None where the format has none).
+    magic : callable or None
+        ``magic(buf) -> bool``, the content check used by :func:`detect_format`.
+    priority : int
+        Order of the magic checks (lower first).
+
+    See Also
+    --------
+    formats : every registered FormatSpec.
+
+    Examples
+    --------
+    >>> from surfmet.io import formats
+    >>> spec = formats()["x3p"]
+    >>> spec.extensions, spec.encode is not None
+    (('x3p',), True)
+    """
 
     name: str
     extensions: tuple[str, ...]
@@ -76,6 +103,32 @@ def register_reader(
     priority : int
         Order of magic checks; strong binary signatures use small numbers, text heuristics
         larger ones.
+
+    Returns
+    -------
+    callable
+        A decorator that registers the decoder and returns it unchanged.
+
+    See Also
+    --------
+    register_writer, formats
+
+    Examples
+    --------
+    A reader for a made-up text format of whitespace-separated heights in metres:
+
+    >>> import numpy as np
+    >>> from surfmet import Topography
+    >>> from surfmet.io import read_bytes
+    >>> from surfmet.io import register_reader
+    >>> @register_reader("demo-heights", extensions=("dhz",), description="demo heights")
+    ... def decode(buf, name, **options):
+    ...     z = np.loadtxt(buf.decode().splitlines())
+    ...     return Topography(z, dx=1e-6, dy=1e-6, metadata={"format": "demo-heights"})
+    >>> read_bytes(b"0 1e-9\\n2e-9 3e-9", format="demo-heights").shape
+    (2, 2)
+    >>> from surfmet.io.registry import _FORMATS
+    >>> del _FORMATS["demo-heights"]  # keep the registry as it was
     """
 
     def deco(func: Decoder) -> Decoder:
@@ -95,7 +148,35 @@ def register_reader(
 
 
 def register_writer(name: str) -> Callable[[Encoder], Encoder]:
-    """Register ``encode(scan, **options) -> bytes`` for an already registered format."""
+    """Register ``encode(scan, **options) -> bytes`` for an already registered format.
+
+    Parameters
+    ----------
+    name : str
+        Registry name of a format whose reader is registered.
+
+    Returns
+    -------
+    callable
+        A decorator that registers ``encode(scan, **options) -> bytes`` and returns it.
+
+    Raises
+    ------
+    KeyError
+        If no reader of that name is registered yet.
+
+    See Also
+    --------
+    register_reader, encode
+
+    Examples
+    --------
+    >>> from surfmet.io import register_writer
+    >>> register_writer("no-such-format")(lambda scan: b"")
+    Traceback (most recent call last):
+    ...
+    KeyError: "register the reader of 'no-such-format' before its writer"
+    """
 
     def deco(func: Encoder) -> Encoder:
         if name not in _FORMATS:
@@ -108,7 +189,26 @@ def register_writer(name: str) -> Callable[[Encoder], Encoder]:
 
 
 def formats() -> dict[str, FormatSpec]:
-    """All registered formats, by name."""
+    """All registered formats, by name.
+
+    Returns
+    -------
+    dict of str to FormatSpec
+        Every format surfmet reads, with its extensions and description.
+
+    See Also
+    --------
+    FormatSpec, read
+
+    Examples
+    --------
+    >>> from surfmet.io import formats
+    >>> table = formats()
+    >>> "x3p" in table and "plu" in table
+    True
+    >>> sorted(name for name, spec in table.items() if spec.encode)
+    ['npy', 'npz', 'x3p']
+    """
     _load_all()
     return dict(_FORMATS)
 
@@ -121,10 +221,37 @@ def _load_all() -> None:
 def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
     """Name of the format of ``buf``: magic bytes first, then the file extension.
 
+    Parameters
+    ----------
+    buf : bytes
+        The file's content (its first bytes suffice for most formats).
+    filename : path-like, optional
+        The file's name, whose extension is the fall-back.
+
+    Returns
+    -------
+    str
+        The registry name.
+
     Raises
     ------
     SurfmetFormatError
         If neither the content nor the extension identifies a registered format.
+
+    See Also
+    --------
+    read, formats
+
+    Examples
+    --------
+    >>> from surfmet.io import detect_format
+    >>> from surfmet.data import path
+    >>> detect_format(path("paper_plate.x3p").read_bytes())
+    'x3p'
+    >>> detect_format(b"", "scan.unknown-extension")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetFormatError: ...
     """
     _load_all()
     for spec in sorted(_FORMATS.values(), key=lambda s: s.priority):
@@ -173,7 +300,43 @@ _DAMAGE = (
 def read_bytes(
     buf: bytes, format: str | None = None, name: str = "<bytes>", **options: Any
 ) -> Scan:
-    """Decode a scan held in memory. See :func:`read`."""
+    """Decode a scan held in memory. See :func:`read`.
+
+    Parameters
+    ----------
+    buf : bytes-like
+        The file's content.
+    format : str, optional
+        Registry name; by default detected from the bytes, then from ``name``'s extension.
+    name : str
+        A name for messages (and the extension fall-back).
+    **options
+        As for :func:`read`.
+
+    Returns
+    -------
+    Topography or Profile
+        Heights in metres, NaN where not measured, ``metadata["format"]`` set.
+
+    Raises
+    ------
+    SurfmetFormatError
+        Empty, unknown, truncated or inconsistent content.
+    SurfmetInputError
+        ``buf`` is not a bytes-like object.
+
+    See Also
+    --------
+    read : the same from a file.
+
+    Examples
+    --------
+    >>> from surfmet.io import read_bytes
+    >>> from surfmet.data import path
+    >>> scan = read_bytes(path("paper_ball.x3p").read_bytes(), name="ball.x3p")
+    >>> scan.shape, scan.metadata["format"]
+    ((152, 147), 'x3p')
+    """
     _load_all()
     if not isinstance(buf, (bytes, bytearray, memoryview)):
         raise SurfmetInputError("read_bytes needs a bytes object")
@@ -323,6 +486,27 @@ def read(source: Source, format: str | None = None, **options: Any) -> Scan:
         stream's name or ``<stream>``) and the problem.
     SurfmetInputError
         A source that is none of the above (a text-mode stream, a number...).
+
+    See Also
+    --------
+    read_bytes : the same from bytes in memory.
+    formats : the formats known.
+    surfmet.read : the same, at the package's top level.
+
+    References
+    ----------
+    .. [1] ISO 25178-72:2017, Geometrical product specifications (GPS) -- Surface texture:
+       Areal -- Part 72: XML file format x3p.
+
+    Examples
+    --------
+    >>> from surfmet.io import read
+    >>> from surfmet.data import path
+    >>> plate = read(path("paper_plate.x3p"))
+    >>> plate.shape, plate.metadata["format"]
+    ((512, 1024), 'x3p')
+    >>> print(f"Sq = {plate.heights.std() * 1e6:.3f} µm")
+    Sq = ... µm
     """
     buf, name, source_name = source_bytes(source)
     scan = read_bytes(buf, format=format, name=name, **options)
@@ -404,7 +588,44 @@ def _check_readable(p: Path) -> None:
 
 
 def encode(scan: Scan, format: str, **options: Any) -> bytes:
-    """Encode a scan into the bytes of ``format`` (a format with a writer)."""
+    """Encode a scan into the bytes of ``format`` (a format with a writer).
+
+    Parameters
+    ----------
+    scan : Topography or Profile
+        What to encode.
+    format : str
+        Registry name of a format with a writer.
+    **options
+        Passed to the writer.
+
+    Returns
+    -------
+    bytes
+        The file's content.
+
+    Raises
+    ------
+    SurfmetInputError
+        If the format has no writer.
+
+    See Also
+    --------
+    write, read_bytes
+
+    Examples
+    --------
+    >>> from surfmet.io import encode, read_bytes
+    >>> from surfmet.data import path
+    >>> ball = read_bytes(path("paper_ball.x3p").read_bytes())
+    >>> buf = encode(ball, "npy")
+    >>> read_bytes(buf, format="npy").shape
+    (152, 147)
+    >>> encode(ball, "plu")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: no writer for format 'plu'; writable formats: [...]
+    """
     _load_all()
     spec = _FORMATS.get(format)
     if spec is None or spec.encode is None:
@@ -419,6 +640,44 @@ def write(
     """Write a scan; the format comes from ``format=`` or the file extension.
 
     The file is written whole or not at all (:mod:`surfmet.atomic`).
+
+    Parameters
+    ----------
+    scan : Topography or Profile
+        What to write.
+    path : path-like
+        The output file.
+    format : str, optional
+        Registry name; by default the one the extension names.
+    **options
+        Passed to the writer.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+
+    Raises
+    ------
+    SurfmetInputError
+        No writer for the format, or an extension that names none.
+    SurfmetWriteError
+        The operating system refused the file.
+
+    See Also
+    --------
+    encode, read
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from surfmet.io import read, write
+    >>> from surfmet.data import path
+    >>> ball = read(path("paper_ball.x3p"))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     out = write(ball, pathlib.Path(tmp) / "ball.npy")
+    ...     print(out.name, read(out).shape)
+    ball.npy (152, 147)
     """
     _load_all()
     p = Path(path)

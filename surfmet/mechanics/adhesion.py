@@ -38,7 +38,38 @@ INTERACTION = "dugdale"
 
 def interaction_law(interaction: str, work: float, range_: float) -> Any:
     """The adhesion law named ``interaction`` of work ``work`` (J/m^2) and range ``range_``
-    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``."""
+    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``.
+
+    Parameters
+    ----------
+    interaction : {"dugdale", "exponential"}
+        The law's name.
+    work : float
+        Work of adhesion (J/m²).
+    range_ : float
+        Its range (m).
+
+    Returns
+    -------
+    DugdaleLaw or ExponentialLaw
+        The law (:mod:`contact.adhesion.laws`).
+
+    See Also
+    --------
+    interaction_name : the inverse.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
+    >>> law = interaction_law("exponential", 0.05, 1e-9)
+    >>> law, interaction_name(law)
+    (ExponentialLaw(work=0.05, rho=1e-09), 'exponential')
+    """
     from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 
     if interaction not in INTERACTIONS:
@@ -49,7 +80,24 @@ def interaction_law(interaction: str, work: float, range_: float) -> Any:
 
 
 def interaction_name(law: AdhesionLaw) -> str:
-    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law."""
+    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law.
+
+    Parameters
+    ----------
+    law : DugdaleLaw or ExponentialLaw
+        An adhesion law.
+
+    Returns
+    -------
+    str
+        Its name.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
+    >>> interaction_name(interaction_law("dugdale", 0.05, 1e-9))
+    'dugdale'
+    """
     return "dugdale" if hasattr(law, "sigma0") else "exponential"
 
 
@@ -64,6 +112,20 @@ class Adhesion:
         :class:`contact.adhesion.line.AdhesiveLine` (a cylinder, per unit length).
     scans : dict or None
         What scans were used and what was done to them (None: smooth surfaces).
+
+    See Also
+    --------
+    adhesion : makes it.
+    adhesion_record : its JSON record.
+
+    Examples
+    --------
+    A coarse run: the result's warnings say what the grid does not resolve:
+
+    >>> from surfmet.mechanics.adhesion import adhesion
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
+    >>> type(run.result).__name__, run.scans, run.result.warnings[0][:32]
+    ('AdhesiveBall', None, 'grid too coarse for the interact')
     """
 
     result: Any
@@ -91,7 +153,73 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     the cells per side (default 128). The Dugdale law's step is smoothed on the grid's
     scale (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak, so the
     same Maugis parameter), which removes most of the pixel pinning of the zone's end;
-    the Maugis-Dugdale validation (tests/test_adhesion_validation.py) is of this law.
+    it is this law that reproduces Maugis (1992).
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius R (m).
+    work, range_ : float
+        Work of adhesion w (J/m²) and the interaction's range (m).
+    materials : str or (Material, Material), optional
+        ``"BALL,PLATE"``; or give ``e_star``.
+    e_star : float, optional
+        Composite modulus E* (Pa).
+    interaction : {"dugdale", "exponential"}
+        The adhesion law (:func:`interaction_law`).
+    grid, size : optional
+        Cells per side and domain side (m).
+    steps : int
+        Approach and retraction steps.
+    plate, ball : Topography or path, optional
+        Scans (smooth surfaces without).
+    spikes : {"remove", "keep"} or bool
+        Spike handling of the scans.
+    progress : callable, optional
+        ``progress(done, total)`` after each step.
+
+    Returns
+    -------
+    Adhesion
+        The cycle (loads, approaches, contact radii, jumps), the pull-off force beside
+        JKR's and DMT's, the Tabor and Maugis parameters.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Both or neither of ``materials`` and ``e_star``, bad values, scans too small for
+        the domain, a solver failure.
+
+    See Also
+    --------
+    surfmet.mechanics.adhesion_line.line_adhesion : the cylinder.
+    surfmet.mechanics.hertz_adhesion.assess_adhesion : whether adhesion matters at all.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+    .. [2] K. L. Johnson, K. Kendall, A. D. Roberts, "Surface energy and the contact of
+       elastic solids", Proc. R. Soc. Lond. A 324 (1971) 301-313.
+    .. [3] B. V. Derjaguin, V. M. Muller, Yu. P. Toporov, "Effect of contact deformations
+       on the adhesion of particles", J. Colloid Interface Sci. 53 (1975) 314-326.
+
+    Examples
+    --------
+    A 10 µm sphere, w = 0.05 J/m², E* = 1 GPa: the Maugis parameter 1.6 lies between the
+    JKR and DMT limits, and so does the pull-off force (1.5 π w R = 2.36 µN, 2 π w R =
+    3.14 µN); this coarse grid overestimates it slightly, as its warning says:
+
+    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=6)
+    >>> rec = adhesion_record(run)
+    >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
+    lambda = 1.65
+    >>> for key in ("jkr_pull_off_force", "pull_off_force", "dmt_pull_off_force"):
+    ...     print(key, f"{rec[key]['value'] * 1e6:.2f} µN")
+    jkr_pull_off_force 2.36 µN
+    pull_off_force 2.68 µN
+    dmt_pull_off_force 3.14 µN
     """
     from contact.adhesion.ball import adhesive_ball, default_size
     from contact.adhesion.memory import check_adhesion_memory
@@ -114,7 +242,31 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
 def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
     """The resolved pair (:class:`contact.material_pair.MaterialPair`) of exactly one of a
     material pair and E* itself (Pa), by
-    :func:`surfmet.mechanics.material_spec.material_pair`."""
+    :func:`surfmet.mechanics.material_spec.material_pair`.
+
+    Parameters
+    ----------
+    materials : str or (Material, Material) or None
+        ``"BALL,PLATE"``.
+    e_star : float or None
+        Composite modulus (Pa).
+
+    Returns
+    -------
+    contact.material_pair.MaterialPair
+        The pair.
+
+    Raises
+    ------
+    SurfmetInputError
+        Both or neither given.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion_pair
+    >>> print(f"{adhesion_pair('steel,aluminium', None).e_star / 1e9:.2f} GPa")
+    58.61 GPa
+    """
     from surfmet.mechanics.material_spec import material_pair
 
     if (materials is None) == (e_star is None):
@@ -133,10 +285,37 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     pixels are resampled) and sampled with the engine's
     :func:`contact.sampling.sample_roughness`. (None, None) without scans.
 
+    Parameters
+    ----------
+    plate, ball : Topography, path or None
+        The scans.
+    grid : int
+        Cells per side.
+    size : float
+        Domain side (m).
+    spikes : {"remove", "keep"} or bool
+        Spike handling.
+
+    Returns
+    -------
+    (ndarray or None, dict or None)
+        The roughness on the grid (m) and the scans' record.
+
     Raises
     ------
     SurfmetInputError
         A scan smaller than the domain, or a grid that is not an integer of at least 16.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> z, record = rough_grid(surfmet.Topography(plate.heights[:128, :128], plate.dx,
+    ...                                           plate.dy), None, 32, 3e-4)
+    >>> z.shape, sorted(record)
+    ((32, 32), ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms'])
     """
     if plate is None and ball is None:
         return None, None
@@ -160,7 +339,32 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
 
 
 def scan_too_small(pair: PairedRoughness, size: float) -> str:
-    """The one line refusing scans smaller than the domain of side ``size`` (m)."""
+    """The one line refusing scans smaller than the domain of side ``size`` (m).
+
+    Parameters
+    ----------
+    pair : PairedRoughness
+        The paired scans.
+    size : float
+        The domain's side (m).
+
+    Returns
+    -------
+    str
+        The message.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import scan_too_small
+    >>> from surfmet.mechanics.pairing import prepare_pair
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> pair = prepare_pair(surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy))
+    >>> print(scan_too_small(pair, 1e-3))
+    the scans (635 x 635 µm in common) are smaller than the adhesion domain (1000 µm a
+    side): give a smaller --size or larger scans
+    """
     ny, nx = pair.roughness.shape
     return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} µm "
             f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} µm a side): "
@@ -169,7 +373,36 @@ def scan_too_small(pair: PairedRoughness, size: float) -> str:
 
 def scans_record(prep: PreparedScans, plate: ScanSource | None, ball: ScanSource | None,
                  dx: float, z: np.ndarray) -> dict[str, Any]:
-    """What scans were used, what was done to them, and the roughness on the grid."""
+    """What scans were used, what was done to them, and the roughness on the grid.
+
+    Parameters
+    ----------
+    prep : PreparedScans
+        The prepared scans.
+    plate, ball : Topography, path or None
+        The scans as given.
+    dx : float
+        The grid's pixel (m).
+    z : ndarray
+        The roughness on the grid (m).
+
+    Returns
+    -------
+    dict
+        The scans, their preparation, the pixel and the rms of the roughness on the grid.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid, scans_record
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> z, _ = rough_grid(patch, None, 32, 3e-4)
+    >>> sorted(scans_record(prepare_scans(patch), patch, None, 1e-5, z))
+    ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms']
+    """
     import math
 
     from surfmet.units import quantity
@@ -210,7 +443,28 @@ def _leg(branch: Branch) -> dict[str, Any]:
 
 
 def jump_record(jump: Jump | None, force_unit: str = "N") -> dict[str, Any] | None:
-    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line)."""
+    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line).
+
+    Parameters
+    ----------
+    jump : Jump or None
+        A jump of the cycle.
+    force_unit : str
+        ``"N"`` or ``"N/m"``.
+
+    Returns
+    -------
+    dict or None
+        Approach, step and the loads before and after, with units (None without a jump).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, jump_record
+    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
+    >>> rec = jump_record(run.result.cycle.jump_in)
+    >>> rec["load_after"]["unit"], rec["load_after"]["value"] < 0
+    ('N', True)
+    """
     if jump is None:
         return None
     return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
@@ -220,7 +474,30 @@ def jump_record(jump: Jump | None, force_unit: str = "N") -> dict[str, Any] | No
 
 
 def adhesion_record(run: Adhesion) -> dict[str, Any]:
-    """The JSON record of an :class:`Adhesion` run."""
+    """The JSON record of an :class:`Adhesion` run.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A run.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    See Also
+    --------
+    adhesion
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
+    >>> rec = adhesion_record(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16,
+    ...                                steps=6))
+    >>> rec["geometry"], rec["pull_off_force"]["unit"]
+    ('sphere', 'N')
+    """
     ball = run.result
     cyc, law = ball.cycle, ball.law
     return {
@@ -254,7 +531,27 @@ def adhesion_record(run: Adhesion) -> dict[str, Any]:
 
 
 def plot(run: Adhesion, path: PathLike | None = None) -> Any:
-    """Load against approach, and contact radius against load, in and out."""
+    """Load against approach, and contact radius against load, in and out.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A run.
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion, plot
+    >>> fig = plot(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6))
+    >>> len(fig.axes)
+    2
+    """
     from surfmet.plots._style import finish, new_figure
 
     ball = run.result

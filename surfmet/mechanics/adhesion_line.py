@@ -53,11 +53,34 @@ def line_adhesion(radius: float, *, work: float, range_: float, materials: Mater
     across the period, default :data:`LINE_CELLS`); ``plate`` is a scan whose middle row
     is the roughness profile.
 
+    Returns
+    -------
+    Adhesion
+        The cycle per unit length (loads in N/m) and the pull-off force.
+
     Raises
     ------
     SurfmetInputError
         A ball scan (a cylinder's scan is not a sphere's cap), or a plate scan narrower than
         the period.
+
+    See Also
+    --------
+    surfmet.mechanics.adhesion.adhesion : the sphere.
+    line_record : the JSON record.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269 (and its plane-strain analogue).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
+    >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=8)
+    >>> rec = line_record(run)
+    >>> rec["geometry"], rec["pull_off_force"]["unit"], run.line
+    ('line', 'N/m', True)
     """
     import numpy as np
 
@@ -101,7 +124,26 @@ def _leg(branch: Branch) -> dict[str, Any]:
 
 
 def line_record(run: Adhesion) -> dict[str, Any]:
-    """The JSON record of a line-contact run (forces per unit length)."""
+    """The JSON record of a line-contact run (forces per unit length).
+
+    Parameters
+    ----------
+    run : Adhesion
+        A line run.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``, forces per unit length.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
+    >>> rec = line_record(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
+    ...                                 steps=8))
+    >>> rec["pull_off_force"]["unit"], rec["work_of_adhesion"]
+    ('N/m', {'value': 0.05, 'unit': 'J/m^2'})
+    """
     res = run.result
     cyc, law = res.cycle, res.law
     return {
@@ -134,7 +176,28 @@ def line_record(run: Adhesion) -> dict[str, Any]:
 
 
 def line_plot(run: Adhesion, path: PathLike | None = None) -> Any:
-    """Load per length against approach, and contact half-width against load."""
+    """Load per length against approach, and contact half-width against load.
+
+    Parameters
+    ----------
+    run : Adhesion
+        A line run.
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_plot
+    >>> fig = line_plot(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
+    ...                               steps=8))
+    >>> type(fig).__name__
+    'Figure'
+    """
     from surfmet.plots._style import finish, new_figure
 
     res = run.result

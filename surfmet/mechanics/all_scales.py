@@ -53,6 +53,24 @@ class AllScalesSpectrum:
     notes : tuple of str
         What the conversion had to do (negative ``C^iso`` set to zero), or why there are no
         summit statistics.
+
+    See Also
+    --------
+    all_scales_spectrum : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.scale_dependent import analyze_scales
+    >>> from surfmet.mechanics.all_scales import all_scales_spectrum
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> half = surfmet.Topography(plate.heights[:, :512], plate.dx, plate.dy)
+    >>> zoom = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> spec = all_scales_spectrum(analyze_scales([half, zoom]))
+    >>> low, high = spec.band
+    >>> print(f"band {low:.3g}..{high:.3g} rad/m, h_rms = {spec.h_rms * 1e6:.2f} µm")
+    band 2.5e+03..3.96e+05 rad/m, h_rms = 2.24 µm
     """
 
     analysis: ScaleAnalysis
@@ -98,10 +116,47 @@ def all_scales_spectrum(analysis: ScaleAnalysis, per_decade: int = QUAD_PER_DECA
                         ) -> AllScalesSpectrum:
     """The isotropic PSD over the measured band of ``analysis`` and its rms values.
 
+    Parameters
+    ----------
+    analysis : ScaleAnalysis
+        The scale-dependent analysis of the measurements
+        (:func:`surfmet.scale_dependent.analyze_scales`).
+    per_decade : int
+        Quadrature points per decade of wavevector.
+
+    Returns
+    -------
+    AllScalesSpectrum
+        The isotropic PSD over the measured band, its rms height, slope and curvature.
+
     Raises
     ------
     SurfmetInputError
         Fewer than two points of measured PSD, or a profile PSD with no isotropic inverse.
+
+    See Also
+    --------
+    persson_all_scales : Persson's theory on it.
+
+    References
+    ----------
+    .. [1] L. Jacobs, T. Junge, L. Pastewka, "Quantitative characterization of surface
+       topography using spectral analysis", Surf. Topogr.: Metrol. Prop. 5 (2017) 013001.
+
+    Examples
+    --------
+    Half of the bundled plate and a 0.64 mm zoom of it, one surface measured twice:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.scale_dependent import analyze_scales
+    >>> from surfmet.mechanics.all_scales import all_scales_spectrum
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> half = surfmet.Topography(plate.heights[:, :512], plate.dx, plate.dy)
+    >>> zoom = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> spec = all_scales_spectrum(analyze_scales([half, zoom]))
+    >>> print(f"h_rms = {spec.h_rms * 1e6:.2f} µm, slope_rms = {spec.slope_rms:.3f}")
+    h_rms = 2.24 µm, slope_rms = 0.429
     """
     from contact.errors import ContactInputError
     from contact.roughcontact import isotropic_moments, summit_parameters
@@ -151,7 +206,52 @@ def _negative_note(q: np.ndarray, raw: np.ndarray, w: np.ndarray) -> str:
 
 def persson_all_scales(s: AllScalesSpectrum, pressures: np.ndarray, e_star: float
                        ) -> ModelCurve:
-    """Persson's area, Yang-Persson mean gap and stiffness from the averaged PSD's band."""
+    """Persson's area, Yang-Persson mean gap and stiffness from the averaged PSD's band.
+
+    Parameters
+    ----------
+    s : AllScalesSpectrum
+        The averaged spectrum.
+    pressures : ndarray
+        Nominal pressures (Pa).
+    e_star : float
+        Composite modulus (Pa).
+
+    Returns
+    -------
+    contact.roughcontact.ModelCurve
+        Area fraction, mean gap and stiffness at each pressure.
+
+    See Also
+    --------
+    surfmet.mechanics.flat_contact.flat_contact : the same theory on one scan, beside the
+        BEM.
+
+    References
+    ----------
+    .. [1] B. N. J. Persson, "Theory of rubber friction and contact mechanics", J. Chem.
+       Phys. 115 (2001) 3840-3861.
+    .. [2] C. Yang, B. N. J. Persson, "Contact mechanics: contact area and interfacial
+       separation from small contact to full contact", J. Phys.: Condens. Matter 20
+       (2008) 215214.
+
+    Examples
+    --------
+    At small loads Persson's real contact area grows in proportion to the pressure:
+
+    >>> import numpy as np
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.scale_dependent import analyze_scales
+    >>> from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> half = surfmet.Topography(plate.heights[:, :512], plate.dx, plate.dy)
+    >>> zoom = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> spec = all_scales_spectrum(analyze_scales([half, zoom]))
+    >>> curve = persson_all_scales(spec, np.array([1e6, 1e7]), 58.6e9)
+    >>> print([f"{a:.2e}" for a in curve.area_fraction])
+    ['6.34e-05', '6.34e-04']
+    """
     from contact.errors import ContactInputError
     from contact.roughcontact import persson
 

@@ -56,6 +56,19 @@ class BallContact:
         elastic limit, a contact on a handful of cells): :func:`solution_warnings`.
     preparation : surfmet.mechanics.scan_preparation.PreparedScans or None
         What was done to the scans.
+
+    See Also
+    --------
+    ball_contact : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.ball_contact import ball_contact
+    >>> run = ball_contact(radius=0.02, load=10.0, grid=64)
+    >>> run.result.pressure.shape, run.warnings
+    ((64, 64), ())
+    >>> print(f"{run.to_json()['pmax']['value'] / 1e6:.0f} MPa")
+    255 MPa
     """
 
     result: ContactResult
@@ -131,7 +144,27 @@ def _file(obj: ScanSource | None) -> str | None:
 
 def grid_warnings(res: ContactResult) -> list[str]:
     """A grid too coarse for the contact: fewer than :data:`MIN_CELLS_PER_RADIUS` cells
-    per Hertz contact radius a0 (empty for a grid fine enough, or without a Hertz value)."""
+    per Hertz contact radius a0 (empty for a grid fine enough, or without a Hertz value).
+
+    Parameters
+    ----------
+    res : ContactResult
+        A solved contact.
+
+    Returns
+    -------
+    list of str
+        The sentence, or nothing.
+
+    Examples
+    --------
+    Eight cells over the paper's Hertz contact are too few:
+
+    >>> from surfmet.mechanics.ball_contact import grid_warnings, solve_on_pair
+    >>> res, _ = solve_on_pair(None, radius=0.02, load=10.0, e_star=58.6e9, grid=8)
+    >>> print(grid_warnings(res)[0][:44])
+    the grid is too coarse for this contact: pix
+    """
     from surfmet.units import format_length
 
     hz = getattr(res, "hertz", None)
@@ -156,6 +189,38 @@ def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
       pressure are not resolved by the grid;
     - a grid with fewer than :data:`MIN_CELLS_PER_RADIUS` cells per Hertz radius
       (:func:`grid_warnings`).
+
+    Parameters
+    ----------
+    res : ContactResult
+        A solved contact.
+    mats : MaterialPair
+        The pair (its hardness).
+
+    Returns
+    -------
+    list of str
+        One sentence per doubt.
+
+    See Also
+    --------
+    grid_warnings
+
+    Examples
+    --------
+    The bundled plate's asperities carry the ball at pressures beyond aluminium's hardness:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.ball_contact import solution_warnings, solve_on_pair
+    >>> from surfmet.mechanics.material_spec import material_pair
+    >>> from surfmet.mechanics.pairing import prepare_pair
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> res, _ = solve_on_pair(prepare_pair(patch), radius=0.02, load=10.0, e_star=58.6e9,
+    ...                        grid=64)
+    >>> print(solution_warnings(res, material_pair("steel,aluminium"))[0][:60])
+    max pressure 3367 MPa exceeds the softer body's hardness (10
     """
     from surfmet.units import format_length
 
@@ -188,6 +253,27 @@ def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
     ``options`` go to the set-up and the solver (``grid``, ``size``, ``periodic``,
     ``max_grid``, ``on_edge``, ``tol``, ``max_iter``, ``callback``). Returns the result and
     the warnings of the solve as text (a contact reaching the domain's edge).
+
+    Returns
+    -------
+    (ContactResult, tuple of str)
+        The solution and the solve's warnings.
+
+    Raises
+    ------
+    ContactError
+        A solver failure, a grid that does not fit in memory.
+
+    See Also
+    --------
+    ball_contact : reads and prepares the scans, then calls this.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.ball_contact import solve_on_pair
+    >>> res, warnings = solve_on_pair(None, radius=0.02, load=10.0, e_star=58.6e9, grid=64)
+    >>> print(f"{res.pmax / 1e6:.0f} MPa", warnings)
+    255 MPa ()
     """
     from contact.errors import EdgeContactWarning
     from contact.setups.ball_on_plate import solve_sphere
@@ -251,6 +337,41 @@ def ball_contact(
     Returns
     -------
     BallContact
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Bad inputs, scans that cannot be paired, a solver failure.
+
+    See Also
+    --------
+    contact.solve_sphere : the engine's solve, on arrays.
+    surfmet.mechanics.hertz_check.hertz_check : the same contact against Hertz.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 4.2.
+    .. [2] I. A. Polonsky, L. M. Keer, "A numerical method for solving rough contact
+       problems based on the multi-level multi-summation and conjugate gradient
+       techniques", Wear 231 (1999) 206-219.
+
+    Examples
+    --------
+    Smooth surfaces give the Hertz peak pressure; the bundled plate's roughness
+    concentrates the load on a few asperities, far above the aluminium's hardness (the
+    warnings say so):
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.ball_contact import ball_contact
+    >>> smooth = ball_contact(radius=0.02, load=10.0, grid=64)
+    >>> print(f"{smooth.result.pmax / smooth.result.hertz.p0:.3f}")
+    1.000
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> rough = ball_contact(patch, radius=0.02, load=10.0, grid=64)
+    >>> bool(rough.result.pmax > 5 * smooth.result.pmax), len(rough.warnings) > 0
+    (True, True)
     """
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans

@@ -41,7 +41,36 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True, eq=False)
 class FlatContactReport:
-    """BEM and theories at each nominal pressure (SI)."""
+    """BEM and theories at each nominal pressure (SI).
+
+    Attributes
+    ----------
+    bem : contact.setups.flat.FlatContact
+        The boundary-element sweep.
+    models : dict of str to ModelCurve
+        The theories (``"persson"``, ``"gw"``, ``"bgt"``) at the same pressures.
+    spectrum : Spectrum
+        The scan's spectrum the theories are fed with.
+    levelling : str
+        How the scan was levelled.
+    settings, preparation, caveats, adhesion, materials
+        What was asked, done and doubted.
+
+    See Also
+    --------
+    flat_contact : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.flat_contact import flat_contact
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> report = flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium")
+    >>> sorted(report.models), report.bem.pressure.tolist()
+    (['bgt', 'gw', 'persson'], [10000000.0, 30000000.0])
+    """
 
     bem: FlatContact
     models: dict[str, ModelCurve]
@@ -65,7 +94,33 @@ class FlatContactReport:
 
 def parse_pressures(text: str) -> np.ndarray:
     """``P[,P...]`` or ``P1:P2[:N]`` (N log-spaced values), the grammar of
-    :func:`surfmet.value_lists.parse_values` -> the distinct pressures in Pa, ascending."""
+    :func:`surfmet.value_lists.parse_values` -> the distinct pressures in Pa, ascending.
+
+    Parameters
+    ----------
+    text : str
+        ``"1MPa,10MPa"`` or ``"1MPa:100MPa:3"``; a number without a unit is in Pa.
+
+    Returns
+    -------
+    ndarray
+        The pressures in Pa.
+
+    Raises
+    ------
+    SurfmetInputError
+        Text that is not a pressure list or range.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.flat_contact import parse_pressures
+    >>> parse_pressures("1MPa,10MPa").tolist(), parse_pressures("1MPa:100MPa:3").tolist()
+    ([1000000.0, 10000000.0], [1000000.0, 10000000.0, 100000000.0])
+    >>> parse_pressures("ten")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: cannot read pressure 'ten': ...
+    """
     from surfmet.units import parse_pressure
     from surfmet.value_lists import parse_values
 
@@ -115,10 +170,50 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     A scan dominated by a curved form (a ball's cap) has its second-order surface removed,
     and a caveat says so (:func:`surfmet.mechanics.spectrum.prepare`).
 
+    Returns
+    -------
+    FlatContactReport
+        The BEM sweep and the theories at each pressure; ``to_json()`` and ``figure()``.
+
     Raises
     ------
     SurfmetInputError
         Not an areal scan, bad pressures or moduli, unmeasured points.
+
+    See Also
+    --------
+    contact.flat_contact : the engine's sweep, on arrays.
+    surfmet.mechanics.spectrum.spectrum : the spectrum the theories use.
+
+    References
+    ----------
+    .. [1] B. N. J. Persson, "Theory of rubber friction and contact mechanics", J. Chem.
+       Phys. 115 (2001) 3840-3861.
+    .. [2] J. A. Greenwood, J. B. P. Williamson, "Contact of nominally flat surfaces",
+       Proc. R. Soc. Lond. A 295 (1966) 300-319.
+    .. [3] A. W. Bush, R. D. Gibson, T. R. Thomas, "The elastic contact of a rough
+       surface", Wear 35 (1975) 87-111.
+    .. [4] C. Yang, B. N. J. Persson, "Contact mechanics: contact area and interfacial
+       separation from small contact to full contact", J. Phys.: Condens. Matter 20
+       (2008) 215214 (the mean gap).
+
+    Examples
+    --------
+    A 0.32 mm patch of the bundled plate on a rigid flat: the BEM's real contact area
+    beside Persson's, Greenwood-Williamson's and Bush-Gibson-Thomas's:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.flat_contact import flat_contact
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> report = flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium")
+    >>> for name, curve in [("bem", report.bem)] + sorted(report.models.items()):
+    ...     print(name, [f"{a:.1e}" for a in curve.area_fraction])
+    bem ['7.3e-04', '2.7e-03']
+    bgt ['7.0e-04', '2.1e-03']
+    gw ['8.1e-04', '2.3e-03']
+    persson ['4.5e-04', '1.3e-03']
     """
     from contact.errors import ContactInputError
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
@@ -196,6 +291,26 @@ def gap_caveats(models: dict[str, ModelCurve]) -> tuple[str, ...]:
     positive; GW's comes out negative at high pressure, where its independent asperities
     (valid for a small contact fraction) no longer describe the contact. Such a value is
     not a gap: it is kept in the table and the JSON, flagged here, and left out of the plot.
+
+    Parameters
+    ----------
+    models : dict of str to ModelCurve
+        The theories' curves.
+
+    Returns
+    -------
+    tuple of str
+        One sentence per model with a mean gap at or below zero.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.flat_contact import flat_contact, gap_caveats
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> gap_caveats(flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium").models)
+    ()
     """
     from surfmet.units import format_length
 
@@ -229,7 +344,44 @@ def adhesive_sweep(scan: Topography, bem: FlatContact, law: AdhesionLaw) -> Any:
     A Dugdale law's step is smoothed on the pixel's scale, as the sphere's is
     (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak), which removes
     most of the pixels' pinning of the cohesive zone's end (Johnson's wavy surface under
-    a prescribed pressure, tests/test_flat_adhesion.py)."""
+    a prescribed pressure, Johnson 1995, is the check).
+
+    Parameters
+    ----------
+    scan : Topography
+        The prepared scan (:func:`surfmet.mechanics.spectrum.prepared_scan`).
+    bem : contact.setups.flat.FlatContact
+        The non-adhesive sweep to start from.
+    law : DugdaleLaw or ExponentialLaw
+        The adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`).
+
+    Returns
+    -------
+    contact.adhesion.flat.AdhesiveFlat
+        Area fraction, mean gap and attractive pressure at each pressure, with warnings.
+
+    References
+    ----------
+    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
+       J. Colloid Interface Sci. 150 (1992) 243-269.
+    .. [2] K. L. Johnson, "The adhesion of two elastic bodies with slightly wavy surfaces",
+       Int. J. Solids Struct. 32 (1995) 423-430.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import interaction_law
+    >>> from surfmet.mechanics.flat_contact import adhesive_sweep, flat_contact
+    >>> from surfmet.mechanics.spectrum import prepared_scan
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> report = flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium")
+    >>> sticky = adhesive_sweep(prepared_scan(patch)[0], report.bem,
+    ...                         interaction_law("dugdale", 0.05, 2e-9))
+    >>> bool((sticky.area_fraction >= report.bem.area_fraction).all())
+    True
+    """
     from contact.adhesion.flat import adhesive_flat
     from contact.adhesion.laws import DugdaleLaw
 
@@ -267,7 +419,33 @@ def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:
 def plot(rep: FlatContactReport | None, path: PathLike | None = None,
          all_scales: ModelCurve | None = None) -> Any:
     """A/A0 and ū against p for the BEM and the three theories, and Persson's theory from
-    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone."""
+    all scales (:mod:`surfmet.mechanics.all_scales`) when given; ``rep`` None: that alone.
+
+    Parameters
+    ----------
+    rep : FlatContactReport or None
+        The report (None: the all-scales curve alone).
+    path : path-like, optional
+        Image file to write; None returns the figure only.
+    all_scales : ModelCurve, optional
+        Persson's theory from all scales.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.flat_contact import flat_contact, plot
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:64, :64], plate.dx, plate.dy)
+    >>> fig = plot(flat_contact(patch, pressures="10MPa,30MPa", materials="aluminium"))
+    >>> type(fig).__name__
+    'Figure'
+    """
     from surfmet.plots._style import finish, new_figure
 
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))

@@ -37,7 +37,19 @@ PULL_OFF_SHARE = 0.01
 
 @dataclass(frozen=True)
 class HertzAdhesion:
-    """The adhesion assessment of a ball on a plate (SI; None where no spectrum)."""
+    """The adhesion assessment of a ball on a plate (SI; None where no spectrum).
+
+    See Also
+    --------
+    assess_adhesion : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.hertz_adhesion import assess_adhesion
+    >>> a = assess_adhesion(None, radius=0.02, load=10.0, e_star=58.6e9, work=0.05)
+    >>> print(f"DMT pull-off 2πwR = {a.dmt_pull_off * 1e3:.2f} mN", a.changes_contact)
+    DMT pull-off 2πwR = 6.28 mN False
+    """
 
     work: float
     range: float
@@ -92,7 +104,53 @@ class HertzAdhesion:
 
 def assess_adhesion(summits: SummitParameters | None, *, radius: float, load: float,
                     e_star: float, work: float, range_: float = DEFAULT_RANGE) -> HertzAdhesion:
-    """The assessment for GW ``summits`` (or None, a smooth pair); see the module."""
+    """The assessment for GW ``summits`` (or None, a smooth pair); see the module.
+
+    Parameters
+    ----------
+    summits : SummitParameters or None
+        The combined Greenwood-Williamson summit parameters of the scans
+        (:func:`surfmet.mechanics.hertz_check.scan_summits`); None for a smooth pair.
+    radius, load : float
+        Ball radius (m) and load (N).
+    e_star : float
+        Composite modulus (Pa).
+    work : float
+        Work of adhesion (J/m²).
+    range_ : float
+        Interaction range z0 (m).
+
+    Returns
+    -------
+    HertzAdhesion
+        Tabor's parameters, the pull-off forces, Pastewka & Robbins' stickiness and the
+        verdict ``changes_contact`` with its ``reason``.
+
+    See Also
+    --------
+    surfmet.mechanics.hertz_check.hertz_check : adds it with ``work_of_adhesion``.
+    surfmet.mechanics.adhesion.adhesion : the adhesive solve itself.
+
+    References
+    ----------
+    .. [1] D. Tabor, "Surface forces and surface interactions", J. Colloid Interface Sci.
+       58 (1977) 2-13.
+    .. [2] L. Pastewka, M. O. Robbins, "Contact between rough surfaces and a criterion for
+       macroscopic adhesion", PNAS 111 (2014) 3298-3303.
+    .. [3] B. V. Derjaguin, V. M. Muller, Yu. P. Toporov, "Effect of contact deformations
+       on the adhesion of particles", J. Colloid Interface Sci. 53 (1975) 314-326.
+
+    Examples
+    --------
+    The paper's smooth ball at 10 N: the most adhesion can add (DMT, 6 mN) is far below the
+    load; at 0.1 mN it is not:
+
+    >>> from surfmet.mechanics.hertz_adhesion import assess_adhesion
+    >>> assess_adhesion(None, radius=0.02, load=10.0, e_star=58.6e9, work=0.05).changes_contact
+    False
+    >>> assess_adhesion(None, radius=0.02, load=1e-4, e_star=58.6e9, work=0.05).changes_contact
+    True
+    """
     from contact.adhesion.laws import tabor_parameter
     from contact.adhesion.stickiness import pastewka_robbins, rms_gradient_curvature
     from surfmet.errors import SurfmetInputError
@@ -115,7 +173,26 @@ def assess_adhesion(summits: SummitParameters | None, *, radius: float, load: fl
 
 
 def hertz_adhesion_record(a: HertzAdhesion) -> dict[str, Any]:
-    """The JSON record (every value {value, unit})."""
+    """The JSON record (every value {value, unit}).
+
+    Parameters
+    ----------
+    a : HertzAdhesion
+        The assessment.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.hertz_adhesion import assess_adhesion, hertz_adhesion_record
+    >>> rec = hertz_adhesion_record(assess_adhesion(None, radius=0.02, load=10.0,
+    ...                                             e_star=58.6e9, work=0.05))
+    >>> rec["jkr_pull_off_force"]["unit"], rec["adhesion_changes_contact"]
+    ('N', False)
+    """
     return {
         "work_of_adhesion": quantity(a.work, "J/m^2"),
         "range": quantity(a.range, "m"),

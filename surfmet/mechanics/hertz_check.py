@@ -17,7 +17,7 @@ nearest measured value, which the notes report).
 does not resolve the contact, no verdict), ``alpha``, ``sigma``,
 ``hertz`` {a, delta, p0}, ``bem`` {pmax, effective_radius, contact_radius, approach,
 area_fraction, plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz},
-and (issue 11) ``models``
+and ``models``
 {hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
@@ -68,6 +68,21 @@ class HertzCheck:
     notes : tuple of str
     materials : contact.material_pair.MaterialPair
         The resolved pair (E*, the default hardness and its source).
+
+    See Also
+    --------
+    hertz_check : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import hertz_check
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> check = hertz_check(patch, radius=0.02, load=10.0, grid=64)
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}", sorted(check.to_json())[:3])
+    False alpha = 2.42 [...]
     """
 
     comparison: HertzComparison
@@ -225,10 +240,52 @@ def hertz_check(
         assessment (:mod:`surfmet.mechanics.hertz_adhesion`); without a work of adhesion it
         is left out, with a note.
 
+    Returns
+    -------
+    HertzCheck
+        The verdict (``hertz_holds``, ``reasons``), the roughness parameter ``alpha``, the
+        elastic and elastic-plastic solutions and the scans' preparation; ``to_json()``
+        and ``figure()``.
+
     Raises
     ------
     SurfmetInputError, ContactError
         Bad inputs, a scan too small for the contact, a solver failure.
+
+    See Also
+    --------
+    contact.check_sphere : the engine's check, on arrays.
+    surfmet.mechanics.ball_contact.ball_contact : the contact alone.
+
+    References
+    ----------
+    .. [1] H. Hertz, "Über die Berührung fester elastischer Körper", J. reine angew. Math.
+       92 (1882) 156-171.
+    .. [2] J. A. Greenwood, K. L. Johnson, E. Matsubara, "A surface roughness parameter in
+       Hertz contact", Wear 100 (1984) 47-57.
+    .. [3] J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres", J. Appl.
+       Mech. 34 (1967) 153-159.
+    .. [4] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    The paper's 20 mm steel ball at 10 N on a 0.64 mm patch of the bundled aluminium
+    plate: its roughness (α = σR/a0² ≈ 2.4) is far beyond Hertz's smooth surfaces:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import hertz_check
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> check = hertz_check(patch, radius=0.02, load=10.0, grid=64)
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}")
+    False alpha = 2.42
+
+    Smooth surfaces (no scan) do follow Hertz:
+
+    >>> hertz_check(radius=0.02, load=10.0, grid=64).hertz_holds
+    True
     """
     from contact.hertzcheck import check_sphere
     from surfmet.mechanics.material_spec import material_pair
@@ -300,6 +357,35 @@ def scan_summits(prep: PreparedScans) -> SummitParameters | None:
     independent surfaces the moments of the composite (sum) surface add, and Nayak/McCool
     (:func:`contact.roughcontact.summit_parameters`) turn the sums into η, R_s, σ_s.
     None when no scan has roughness. The results depend on the scans' lateral resolution.
+
+    Parameters
+    ----------
+    prep : PreparedScans
+        The prepared scans.
+
+    Returns
+    -------
+    contact.roughcontact.SummitParameters or None
+        Spectral moments, summit density, radius and height spread (None without scans).
+
+    References
+    ----------
+    .. [1] P. R. Nayak, "Random process model of rough surfaces", J. Lubr. Technol. 93
+       (1971) 398-407.
+    .. [2] J. A. Greenwood, J. B. P. Williamson, "Contact of nominally flat surfaces",
+       Proc. R. Soc. Lond. A 295 (1966) 300-319.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import scan_summits
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> s = scan_summits(prepare_scans(patch))
+    >>> print(f"summit radius {s.radius * 1e6:.1f} µm, Nayak alpha {s.alpha:.2f}")
+    summit radius 8.6 µm, Nayak alpha 2.99
     """
     from contact.roughcontact import summit_parameters
     from surfmet.psd import areal_psd
@@ -320,7 +406,46 @@ def scan_summits(prep: PreparedScans) -> SummitParameters | None:
 
 def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, radius: float,
                       load: float, e_star: float, hardness: float | None) -> Any:
-    """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM."""
+    """Hertz, Greenwood-Tripp (elastic, and capped at the hardness) against the BEM.
+
+    Parameters
+    ----------
+    check : contact.hertzcheck.SphereCheck
+        The BEM check.
+    summits : SummitParameters or None
+        The scans' summit parameters (:func:`scan_summits`).
+    radius, load, e_star : float
+        Ball radius (m), load (N), composite modulus (Pa).
+    hardness : float or None
+        Hardness of the softer body (Pa): adds the plastic Greenwood-Tripp model.
+
+    Returns
+    -------
+    contact.roughcontact.hierarchy.ModelHierarchy
+        The models side by side, the verdict on which one the contact needs, and the
+        models left out with their reasons.
+
+    References
+    ----------
+    .. [1] J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres", J. Appl.
+       Mech. 34 (1967) 153-159.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from contact import check_sphere
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.hertz_check import rough_ball_models, scan_summits
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> prep = prepare_scans(surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy))
+    >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=prep.pair.composite(None),
+    ...                      sigma=prep.sigma, hardness=1.05e9, grid=64)
+    >>> models = rough_ball_models(check, scan_summits(prep), radius=0.02, load=10.0,
+    ...                            e_star=58.6e9, hardness=1.05e9)
+    >>> list(models.models)
+    ['hertz', 'greenwood_tripp', 'greenwood_tripp_plastic', 'bem']
+    """
     from contact.errors import ContactInputError, ConvergenceError
     from contact.roughcontact.greenwood_tripp import greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy

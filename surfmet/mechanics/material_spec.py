@@ -19,7 +19,31 @@ if TYPE_CHECKING:
 
 def spec_options(opts: Iterable[str], what: str) -> Iterator[tuple[str, str]]:
     """The ``KEY=VALUE`` options of a ``NAME:KEY=VALUE:...`` text, one at a time, as
-    (lower-case key, value); ``what`` names them in the message of one without ``=``."""
+    (lower-case key, value); ``what`` names them in the message of one without ``=``.
+
+    Parameters
+    ----------
+    opts : iterable of str
+        The ``KEY=VALUE`` parts after the name.
+    what : str
+        What they are options of, for the message.
+
+    Yields
+    ------
+    (str, str)
+        Lower-case key and its value text.
+
+    Raises
+    ------
+    SurfmetInputError
+        A part without ``=``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import spec_options
+    >>> list(spec_options(["E=70GPa", "NU=0.33"], "material"))
+    [('e', '70GPa'), ('nu', '0.33')]
+    """
     for opt in opts:
         key, sep, value = opt.partition("=")
         if not sep:
@@ -28,7 +52,33 @@ def spec_options(opts: Iterable[str], what: str) -> Iterator[tuple[str, str]]:
 
 
 def poisson_ratio(value: str) -> float:
-    """Poisson's ratio from an option's text."""
+    """Poisson's ratio from an option's text.
+
+    Parameters
+    ----------
+    value : str
+        The option's text.
+
+    Returns
+    -------
+    float
+        The ratio (its range is checked by :class:`contact.materials.Material`).
+
+    Raises
+    ------
+    SurfmetInputError
+        Text that is not a number.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import poisson_ratio
+    >>> poisson_ratio("0.33")
+    0.33
+    >>> poisson_ratio("half")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: Poisson's ratio 'half' is not a number
+    """
     try:
         return float(value)
     except ValueError:
@@ -40,7 +90,39 @@ def material_constant(value: str, what: str) -> float:
     typed pressure (:func:`surfmet.units.parse_pressure`; ``--hardness`` and ``--e-star``
     alike): ``E=200`` meant as GPa would otherwise be read as 200 Pa, a body 1e9 times too
     soft. No range is imposed (a gel's kPa and a "rigid" ball's 1e24 Pa are both legitimate
-    inputs)."""
+    inputs).
+
+    Parameters
+    ----------
+    value : str
+        The option's text, with a pressure unit.
+    what : str
+        The option's name, for the message.
+
+    Returns
+    -------
+    float
+        The value in Pa.
+
+    Raises
+    ------
+    SurfmetInputError
+        A bare number or an unknown unit.
+
+    See Also
+    --------
+    surfmet.units.parse_pressure
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import material_constant
+    >>> material_constant("70GPa", "E")
+    70000000000.0
+    >>> material_constant("70", "E")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: E: pressure '70' has no unit: write it with one, ...
+    """
     try:
         return parse_pressure(value, example="GPa")
     except SurfmetInputError as exc:
@@ -54,6 +136,34 @@ def parse_material(text: str) -> Any:
     refused. A name that is
     not in the table is a custom material when ``E`` and ``nu`` are both given
     (:func:`contact.materials.material`).
+
+    Parameters
+    ----------
+    text : str
+        ``NAME[:E=..][:nu=..][:H=..]``.
+
+    Returns
+    -------
+    contact.materials.Material
+        The material, the user's values replacing the table's.
+
+    Raises
+    ------
+    SurfmetInputError, ContactInputError
+        An unreadable option, or an unknown name without both ``E`` and ``nu``.
+
+    See Also
+    --------
+    contact.material : the table.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import parse_material
+    >>> al = parse_material("al:H=0.9GPa")
+    >>> print(al.name, f"E = {al.E / 1e9:.0f} GPa, H = {al.hardness / 1e9} GPa")
+    aluminium E = 70 GPa, H = 0.9 GPa
+    >>> parse_material("gel:E=50kPa:nu=0.5").E
+    50000.0
     """
     from contact.materials import material
 
@@ -73,7 +183,33 @@ def parse_material(text: str) -> Any:
 
 def parse_materials(materials: Materials) -> tuple[Any, Any]:
     """``"BALL,PLATE"`` text, a pair of :class:`contact.materials.Material` or a resolved
-    :class:`contact.material_pair.MaterialPair` -> ``(ball, plate)``."""
+    :class:`contact.material_pair.MaterialPair` -> ``(ball, plate)``.
+
+    Parameters
+    ----------
+    materials : str, (Material, Material) or MaterialPair
+        The pair.
+
+    Returns
+    -------
+    (Material, Material)
+        Ball and plate.
+
+    Raises
+    ------
+    SurfmetInputError
+        Text without two names.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import parse_materials
+    >>> [m.name for m in parse_materials("steel,al")]
+    ['steel', 'aluminium']
+    >>> parse_materials("steel")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: materials need two names, BALL,PLATE; got 'steel'
+    """
     from contact.material_pair import MaterialPair
     from contact.materials import Material
 
@@ -101,6 +237,38 @@ def material_pair(materials: Materials | None = None, *, e_star: float | None = 
     ``rigid_flat`` allows it), a pair of :class:`contact.materials.Material`, or an already
     resolved pair; or give ``e_star`` (Pa) instead. ``hardness`` (Pa) replaces the softer
     body's table value.
+
+    Parameters
+    ----------
+    materials : str, (Material, Material) or MaterialPair, optional
+        The bodies.
+    e_star : float, optional
+        Composite modulus (Pa), instead of ``materials``.
+    hardness : float, optional
+        The user's hardness (Pa).
+    rigid_flat : bool
+        Allow a single name (a body on a rigid flat).
+
+    Returns
+    -------
+    contact.material_pair.MaterialPair
+        E*, the default hardness and its source.
+
+    Raises
+    ------
+    SurfmetInputError, ContactInputError
+        Unreadable or unknown materials, both or neither of ``materials`` and ``e_star``.
+
+    See Also
+    --------
+    contact.resolve_pair : the engine's resolution.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.material_spec import material_pair
+    >>> pair = material_pair("steel,aluminium")
+    >>> print(f"E* = {pair.e_star / 1e9:.2f} GPa, H = {pair.hardness / 1e9:.2f} GPa")
+    E* = 58.61 GPa, H = 1.05 GPa
     """
     from contact.material_pair import MaterialPair, resolve_pair
 
@@ -125,7 +293,27 @@ def scan_pair(materials: Materials | None = None, *, e_star: float | None = None
     """The pair of a scan pressed on a flat (``spectrum``, ``flat-contact``): ``"A"`` (the
     scan's material on a rigid flat), ``"A,B"`` (on an elastic flat of B), a resolved pair,
     or ``e_star`` (Pa) instead; ``hardness`` (Pa) replaces the softer body's table value
-    (:func:`material_pair` with ``rigid_flat``)."""
+    (:func:`material_pair` with ``rigid_flat``).
+
+    Returns
+    -------
+    contact.material_pair.MaterialPair
+        The pair.
+
+    Raises
+    ------
+    SurfmetInputError, ContactInputError
+        As for :func:`material_pair`.
+
+    Examples
+    --------
+    An aluminium scan on a rigid flat: E* = E / (1 - ν²):
+
+    >>> from surfmet.mechanics.material_spec import scan_pair
+    >>> pair = scan_pair("aluminium")
+    >>> print(pair.names, f"E* = {pair.e_star / 1e9:.2f} GPa", f"{70 / (1 - 0.33 ** 2):.2f}")
+    ['aluminium'] E* = 78.55 GPa 78.55
+    """
     if isinstance(materials, str) and len([s for s in materials.split(",")
                                            if s.strip()]) not in (1, 2):
         raise SurfmetInputError(f"--materials takes A or A,B; got {materials!r}")

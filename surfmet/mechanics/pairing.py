@@ -53,6 +53,20 @@ class PairedRoughness:
         filled.
     notes : tuple of str
         What was done, for the user.
+
+    See Also
+    --------
+    prepare_pair : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.pairing import prepare_pair
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> pair = prepare_pair(plate, surfmet.read(path("paper_ball.x3p")))
+    >>> pair.roughness.shape, pair.dx
+    ((512, 1024), 5e-06)
     """
 
     roughness: np.ndarray
@@ -92,7 +106,26 @@ def _areal(scan: object, what: str) -> Topography:
 
 def fill_nearest(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``z`` with each non-finite point given its nearest finite neighbour's value, and the
-    mask of the points filled."""
+    mask of the points filled.
+
+    Parameters
+    ----------
+    z : ndarray
+        Heights, NaN where not measured.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        The filled heights and the mask of the filled points.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from surfmet.mechanics.pairing import fill_nearest
+    >>> filled, mask = fill_nearest(np.array([[1.0, np.nan, 3.0]]))
+    >>> filled.tolist(), mask.tolist()
+    ([[1.0, 1.0, 3.0]], [[False, True, False]])
+    """
     from scipy.ndimage import distance_transform_edt
 
     bad = ~np.isfinite(z)
@@ -152,6 +185,24 @@ def prepare_pair(
     SurfmetInputError
         No scan, a profile instead of an areal scan, an all-NaN scan, too few measured
         points, a bad pitch, or pixels differing by more than :data:`MAX_PITCH_RATIO`.
+
+    See Also
+    --------
+    surfmet.mechanics.scan_preparation.prepare_scans : spikes and levelling first, then this.
+    contact.CompositeRoughness : what the engine takes.
+
+    Examples
+    --------
+    The bundled plate and ball: the ball's best-fit sphere (R ≈ 20 mm) is removed and its
+    residual resampled onto the plate's 5 µm grid:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.pairing import prepare_pair
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> pair = prepare_pair(plate, surfmet.read(path("paper_ball.x3p")))
+    >>> print(f"R = {pair.ball_radius * 1e3:.2f} mm, plate rms = {pair.plate_rms * 1e6:.2f} µm")
+    R = 19.96 mm, plate rms = 2.42 µm
     """
     from surfmet.areal.form import remove_form
 
@@ -234,10 +285,31 @@ def apex_centre(pair: PairedRoughness | None,
     the paired roughness map (a track position); None keeps the engine's default (the
     middle).
 
+    Parameters
+    ----------
+    pair : PairedRoughness or None
+        The paired scans.
+    offset : (float, float) or None
+        Displacement (x, y) of the apex from the middle of the map (m).
+
+    Returns
+    -------
+    (float, float) or None
+        Scan coordinates of the apex (m); None without an offset.
+
     Raises
     ------
     SurfmetInputError
         An offset without a scan, or one that is not two finite lengths.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.pairing import apex_centre, prepare_pair
+    >>> pair = prepare_pair(surfmet.read(path("paper_plate.x3p")))
+    >>> [round(v * 1e3, 4) for v in apex_centre(pair, (1e-4, 0.0))]
+    [2.6575, 1.2775]
     """
     if offset is None:
         return None

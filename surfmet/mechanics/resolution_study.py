@@ -94,6 +94,25 @@ def contact_study(
     Returns
     -------
     (contact.resolution.ResolutionStudy, surfmet.mechanics.scan_preparation.PreparedScans)
+
+    See Also
+    --------
+    contact.resolution : the engine's study.
+    study_lines : the table in words.
+
+    Examples
+    --------
+    A 0.64 mm patch of the bundled plate at its own 5 µm pixel and coarsened to 10 µm:
+    the rough contact's radius still moves with the pixel, so it is not converged:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.resolution_study import contact_study
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> study, prep = contact_study(patch, radius=0.02, load=10.0, factors=(2, 1))
+    >>> type(study).__name__, prep.spikes_removed
+    ('ResolutionStudy', {'plate': 2})
     """
     from contact.resolution import sphere_study
 
@@ -126,7 +145,27 @@ def rolling_study(
 
     The materials are resolved here: ``lossy`` ("ball" or "plate") scales the hysteresis
     moment by that body's share of the displacement, and the plastic model takes the pair's
-    hardness (``hardness`` when given, else the softer body's)."""
+    hardness (``hardness`` when given, else the softer body's).
+
+    See Also
+    --------
+    contact_study : the same for one contact.
+    contact.resolution : the engine's study.
+
+    Examples
+    --------
+    A 1.3 mm patch of the bundled plate: λ_eff changes with the pixel, so the scan's
+    rolling exponent is not resolved at 5 µm:
+
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.resolution_study import rolling_study, study_lines
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:256, :256], plate.dx, plate.dy)
+    >>> study, prep = rolling_study(patch, radius=0.02, loads=[2.0, 5.0, 10.0], factors=(2, 1))
+    >>> print(study_lines(study)[2])
+    λ_eff                     3.287       1.2213   keeps moving (169 %)
+    """
     from contact.resolution import rolling_study as engine
 
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
@@ -145,7 +184,31 @@ def rolling_study(
 
 
 def study_lines(study: ResolutionStudy) -> list[str]:
-    """A table (one row per quantity, one column per pixel) and the trend sentences."""
+    """A table (one row per quantity, one column per pixel) and the trend sentences.
+
+    Parameters
+    ----------
+    study : ResolutionStudy
+        A study.
+
+    Returns
+    -------
+    list of str
+        The table, then the trend sentences.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.resolution_study import contact_study, study_lines
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> study, _ = contact_study(patch, radius=0.02, load=10.0, factors=(2, 1))
+    >>> print("\\n".join(study_lines(study)[:3]))
+    resolution study: same 0.58 mm domain, pixel coarsened 2x, 1x
+                              10 µm         5 µm   status
+    a* (µm)                  254.73       293.76   keeps moving (13.3 %)
+    """
     head = f"{'':18}" + "".join(f"{p * 1e6:>10.4g} µm" for p in study.pixels) + "   status"
     lines = [f"resolution study: same {study.side * 1e3:.4g} mm domain, pixel coarsened "
              + ", ".join(f"{lv.factor}x" for lv in study.levels), head]

@@ -42,7 +42,38 @@ RESISTANCE_DEFINITION = (
 
 @dataclass(frozen=True)
 class RollingContact:
-    """A solved rolling contact and the set-up it came from."""
+    """A solved rolling contact and the set-up it came from.
+
+    Attributes
+    ----------
+    result : contact.tangential.results.TangentialResult
+        The normal and tangential solution (pressure, tractions, stick/slip, forces).
+    radius, load : float
+        Ball or cylinder radius (m) and load (N, or N/m for a line).
+    line : bool
+        Plane strain.
+    speed : float or None
+        Rolling speed (m/s).
+    free_rolling : bool
+        No creepage was imposed.
+    grid : int
+        Elements per side.
+    side : float
+        Domain side (m).
+    notes : tuple of str
+        Caveats.
+
+    See Also
+    --------
+    solve_rolling_contact : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_contact import solve_rolling_contact
+    >>> rc = solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3, creepage=1e-4, grid=32)
+    >>> rc.line, rc.free_rolling, rc.grid
+    (False, False, 32)
+    """
 
     result: Any  # contact.tangential.TangentialResult
     radius: float
@@ -56,7 +87,29 @@ class RollingContact:
 
 
 def parse_line_load(text: str) -> float:
-    """A load per unit length such as ``"100N/mm"`` or ``"2e4 N/m"`` -> N/m."""
+    """A load per unit length such as ``"100N/mm"`` or ``"2e4 N/m"`` -> N/m.
+
+    Parameters
+    ----------
+    text : str
+        A force per length with its unit.
+
+    Returns
+    -------
+    float
+        N/m.
+
+    Raises
+    ------
+    SurfmetInputError
+        Text that is not a force per length.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_contact import parse_line_load
+    >>> parse_line_load("100N/mm"), parse_line_load("2e4 N/m")
+    (100000.0, 20000.0)
+    """
     from surfmet import units
 
     if "/" not in str(text):
@@ -121,6 +174,40 @@ def solve_rolling_contact(
         :func:`surfmet.mechanics.pairing.prepare_pair`.
     size : float, optional
         Side of the (square) domain (m); default: automatic, as above.
+
+    Returns
+    -------
+    RollingContact
+        The solution and its set-up.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Bad values or materials, a solver failure.
+
+    See Also
+    --------
+    rolling_contact_record : its JSON record.
+
+    References
+    ----------
+    .. [1] J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling Contact, Kluwer
+       (1990).
+    .. [2] F. W. Carter, "On the action of a locomotive driving wheel", Proc. R. Soc.
+       Lond. A 112 (1926) 151-157.
+    .. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 8.
+
+    Examples
+    --------
+    A steel ball on steel at 10 N with a creepage of 1e-4: the tangential force stays
+    within Coulomb's μN = 3 N:
+
+    >>> from surfmet.mechanics.rolling_contact import (rolling_contact_record,
+    ...                                                 solve_rolling_contact)
+    >>> rc = solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3, creepage=1e-4, grid=32)
+    >>> fx = rolling_contact_record(rc)["fx"]
+    >>> print(fx["unit"], 0 < abs(fx["value"]) < 0.3 * 10.0)
+    N True
     """
     from contact.errors import EdgeContactError
     from contact.record import LEADING_EDGE, raise_edge
@@ -216,7 +303,27 @@ def _grid(radius: float, half: float, n: int, line: bool, roughness: RoughnessMa
 
 
 def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
-    """The JSON record of a solve: every value with its unit."""
+    """The JSON record of a solve: every value with its unit.
+
+    Parameters
+    ----------
+    rc : RollingContact
+        A solve.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_contact import (rolling_contact_record,
+    ...                                                 solve_rolling_contact)
+    >>> rec = rolling_contact_record(solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3,
+    ...                                                    creepage=1e-4, grid=32))
+    >>> rec["creepage"], rec["pmax"]["unit"]
+    ({'value': 0.0001, 'unit': ''}, 'Pa')
+    """
     from contact.tangential.results import edge_note
     from surfmet.units import quantity
 

@@ -41,6 +41,17 @@ class RollingReport:
     ball_material, plate_material : contact.materials.Material
     scans : surfmet.mechanics.scan_preparation.PreparedScans
     notes : tuple of str
+
+    See Also
+    --------
+    rolling_resistance : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_resistance import rolling_resistance
+    >>> report = rolling_resistance(radius=0.02, loads="1N:10N:3", grid=64)
+    >>> print(report.sweep.loads, f"lambda = {report.lambda_eff:.3f}")
+    [ 1.          3.16227766 10.        ] lambda = 1.334
     """
 
     sweep: Any
@@ -143,6 +154,39 @@ def rolling_resistance(
     mu, traction_ratio : float
         Microslip model (:mod:`contact.tangential.microslip`): friction coefficient and
         ``|F_x|/N`` opposing the rolling (0: free rolling).
+
+    Returns
+    -------
+    RollingReport
+        The sweep (loads, forces, moments), the fitted exponent ``lambda_eff`` with its
+        interval ``lambda_ci``, the notes; ``to_json()`` and ``figure()``.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Bad loads or materials, scans that cannot be paired, a solver failure.
+
+    See Also
+    --------
+    contact.sphere_sweep : the engine's sweep, on arrays.
+    rolling_tracks : several track positions.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 9.
+    .. [2] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    Elastic hysteresis of the paper's smooth steel ball on aluminium: the moment grows as
+    the load to the power 4/3 (Johnson 1985):
+
+    >>> from surfmet.mechanics.rolling_resistance import rolling_resistance
+    >>> report = rolling_resistance(radius=0.02, loads="1N:10N:3", grid=64)
+    >>> low, high = report.lambda_ci
+    >>> print(f"lambda = {report.lambda_eff:.3f}, 95 % CI {low:.3f}..{high:.3f}")
+    lambda = 1.334, 95 % CI 1.331..1.338
     """
     from contact.rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness
@@ -199,7 +243,28 @@ def rolling_resistance(
 @dataclass(frozen=True)
 class TrackJob:
     """One track position of :func:`rolling_tracks`: the arguments of
-    :func:`rolling_resistance` (scans as paths, so that the job pickles small)."""
+    :func:`rolling_resistance` (scans as paths, so that the job pickles small).
+
+    Attributes
+    ----------
+    plate, ball : Topography, path or None
+        The scans.
+    offset : (float, float) or None
+        The track position (m from the middle of the paired map).
+    options : tuple of (str, value)
+        The other keyword arguments of :func:`rolling_resistance`.
+
+    See Also
+    --------
+    track_moments : runs it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_resistance import TrackJob, track_moments
+    >>> job = TrackJob(None, None, None, (("radius", 0.02), ("loads", "1N:10N:3"), ("grid", 64)))
+    >>> print(f"lambda = {track_moments(job)['lambda']:.3f}")
+    lambda = 1.334
+    """
 
     plate: Any
     ball: Any
@@ -208,7 +273,30 @@ class TrackJob:
 
 
 def track_moments(job: TrackJob) -> dict[str, Any]:
-    """Moments of one track position (a top-level function, for worker processes)."""
+    """Moments of one track position (a top-level function, for worker processes).
+
+    Parameters
+    ----------
+    job : TrackJob
+        The scans, the track position and the options.
+
+    Returns
+    -------
+    dict
+        ``offset``, ``loads``, ``moments``, ``lambda``, ``grid``, ``dx``, ``notes`` and
+        ``error`` (None, or the one line of a failed position).
+
+    See Also
+    --------
+    rolling_tracks
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_resistance import TrackJob, track_moments
+    >>> job = TrackJob(None, None, None, (("radius", 0.02), ("loads", "1N:10N:3"), ("grid", 64)))
+    >>> sorted(track_moments(job))
+    ['dx', 'error', 'grid', 'lambda', 'loads', 'moments', 'notes', 'offset']
+    """
     rep = rolling_resistance(job.plate, job.ball, offset=job.offset, **dict(job.options))
     s = rep.sweep
     return {"offset": job.offset, "loads": np.asarray(s.loads), "moments": np.asarray(s.moments),
@@ -236,6 +324,18 @@ class TrackReport:
         Mean moment over the positions that succeeded (N m), summed in position order.
     fit : contact.exponent.ExponentFit or None
         Power law fitted to the mean moments (None with fewer than 3 dissipating loads).
+
+    See Also
+    --------
+    rolling_tracks : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rolling_resistance import rolling_tracks
+    >>> report = rolling_tracks(positions=[None, None], workers=1, radius=0.02,
+    ...                         loads="1N:10N:3", grid=64)
+    >>> len(report.tracks), f"{report.fit.exponent:.3f}"
+    (2, '1.334')
     """
 
     tracks: tuple[dict[str, Any], ...]
@@ -266,10 +366,31 @@ def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = No
     bitwise those of the serial run (``workers=1``). A position that fails keeps its error
     in ``tracks`` and is left out of the mean.
 
+    Returns
+    -------
+    TrackReport
+        Every position's moments (``tracks``), the mean moments and their exponent fit.
+
     Raises
     ------
     SurfmetInputError
         No position, or every position failed (the first error is named).
+
+    See Also
+    --------
+    rolling_resistance : one position.
+    surfmet.batch.batch_map : the parallel map.
+
+    Examples
+    --------
+    Two positions of a smooth pair give the same moments, so their mean has the Hertz
+    exponent 4/3:
+
+    >>> from surfmet.mechanics.rolling_resistance import rolling_tracks
+    >>> report = rolling_tracks(positions=[None, None], workers=1, radius=0.02,
+    ...                         loads="1N:10N:3", grid=64)
+    >>> print(len(report.tracks), f"lambda = {report.fit.exponent:.3f}")
+    2 lambda = 1.334
     """
     from contact.exponent import fit_exponent
     from surfmet.batch import batch_map

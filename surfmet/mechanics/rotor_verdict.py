@@ -21,7 +21,35 @@ __all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "table_verdict
 
 
 def load_rig(path: str | Path) -> Any:
-    """A :class:`contact.rotor.rig.Rig` from a rig JSON file (one line on any error)."""
+    """A :class:`contact.rotor.rig.Rig` from a rig JSON file (one line on any error).
+
+    Parameters
+    ----------
+    path : str or Path
+        The rig JSON file (the rotor's geometry, its groups and the plate).
+
+    Returns
+    -------
+    contact.rotor.rig.Rig
+        The rig.
+
+    Raises
+    ------
+    SurfmetInputError
+        No such file, not JSON, or a rig the engine refuses.
+
+    See Also
+    --------
+    table_verdict : takes ``rig_path``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import load_rig
+    >>> load_rig("no-such-rig.json")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: --rig no-such-rig.json: no such file
+    """
     from contact.errors import ContactInputError
     from contact.rotor.rig import rig_from_mapping
 
@@ -39,7 +67,24 @@ def load_rig(path: str | Path) -> Any:
 
 def column_groups(names: Sequence[str]) -> dict[str, list[str]]:
     """Groups from the column names' prefixes (``as1, as2`` -> ``as``), in order of first
-    appearance."""
+    appearance.
+
+    Parameters
+    ----------
+    names : sequence of str
+        Column names.
+
+    Returns
+    -------
+    dict of str to list of str
+        Prefix -> its columns.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import column_groups
+    >>> column_groups(["as1", "as2", "s1", "s2", "s3"])
+    {'as': ['as1', 'as2'], 's': ['s1', 's2', 's3']}
+    """
     out: dict[str, list[str]] = {}
     for n in names:
         out.setdefault(re.sub(r"\d+$", "", n) or n, []).append(n)
@@ -48,7 +93,46 @@ def column_groups(names: Sequence[str]) -> dict[str, list[str]]:
 
 def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps: float,
           step: float, rig: Any = None, mechanisms: Mapping[str, float] | None = None) -> Any:
-    """The verdict on a table; with a rig its groups, fps and step, else the column prefixes."""
+    """The verdict on a table; with a rig its groups, fps and step, else the column prefixes.
+
+    Parameters
+    ----------
+    cols : mapping of str to sequence of float
+        Column name -> frame index per row.
+    ks : sequence of int or None
+        Row numbers (default 1, 2, ...).
+    fps, step : float
+        Frame rate (1/s) and mark step (rad).
+    rig : contact.rotor.rig.Rig, optional
+        The rig: its groups, and the lambda outputs and confounds.
+    mechanisms : mapping of str to float, optional
+        Contact mechanisms' accelerations to weigh as confounds.
+
+    Returns
+    -------
+    contact.rotor.verdict.RotorVerdict
+        The verdict.
+
+    Raises
+    ------
+    SurfmetInputError
+        A table without two groups of two launches.
+
+    See Also
+    --------
+    table_verdict : chooses the rig the way ``surfmet rotor`` does.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from surfmet.mechanics.rotor_verdict import judge
+    >>> phi = np.arange(12) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> judge({"s1": np.round(1000 + 120 * t)}, None, fps=120.0, step=np.pi / 2)
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: ...
+    """
     from contact.errors import ContactInputError
     from contact.rotor.verdict import judge_table
 
@@ -65,7 +149,31 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
 
 @lru_cache(maxsize=1)
 def paper_verdict() -> Any:
-    """The verdict on the paper's Table 3 with the paper's rig (cached: one answer)."""
+    """The verdict on the paper's Table 3 with the paper's rig (cached: one answer).
+
+    Returns
+    -------
+    contact.rotor.verdict.RotorVerdict
+        The verdict on Table 3 of Alaci et al. (2022): the group offset, the shared-track
+        test, the lambda needed, the confounds.
+
+    See Also
+    --------
+    table_verdict, verdict_lines, verdict_record
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Table 3.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict
+    >>> verdict = paper_verdict()
+    >>> verdict.code
+    'undetermined'
+    """
     from contact.rotor.rig import paper_rig
     from surfmet.data import path as data_path
     from surfmet.frames import read_frames_table
@@ -103,9 +211,32 @@ def _calibration_record() -> dict[str, Any]:
 def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     """The JSON ``verdict`` object, the one record builder every entry point calls: every
     value a quantity with its unit (the group offset and the exponent as interval
-    quantities). With the table's per-test ``analysis``
-    (:func:`contact.rotor.groups.analyse_table`) it also carries the table of the four
-    differences and the two misread rules."""
+    quantities).
+
+    Parameters
+    ----------
+    v : RotorVerdict
+        The verdict.
+    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds
+        the table of the four differences and the two misread rules.
+
+    Returns
+    -------
+    dict
+        The JSON object, every value ``{"value": v, "unit": u}``.
+
+    See Also
+    --------
+    verdict_lines : the same in words.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    >>> record = verdict_record(paper_verdict())
+    >>> record["code"], record["group_offset"]["unit"]
+    ('undetermined', 'rad/s^2')
+    """
     from surfmet.mechanics.rotor_argument import (
         argument_record,
         differences_record,
@@ -212,7 +343,28 @@ def _rejected(v: Any) -> str:
 
 
 def verdict_lines(v: Any) -> list[str]:
-    """The verdict in words, first thing every entry point prints."""
+    """The verdict in words, first thing every entry point prints.
+
+    Parameters
+    ----------
+    v : RotorVerdict
+        The verdict.
+
+    Returns
+    -------
+    list of str
+        The headline first, then one line per finding.
+
+    See Also
+    --------
+    verdict_record : the same as JSON.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_lines
+    >>> print(verdict_lines(paper_verdict())[0])
+    VERDICT  undetermined: no shared track explains both groups ...
+    """
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
              f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s², "
@@ -262,7 +414,24 @@ def verdict_lines(v: Any) -> list[str]:
 
 
 def verdict_plot_path(plot: str | Path) -> str:
-    """Where ``--plot PATH`` puts the verdict's figure: ``PATH_verdict`` beside it."""
+    """Where ``--plot PATH`` puts the verdict's figure: ``PATH_verdict`` beside it.
+
+    Parameters
+    ----------
+    plot : str or Path
+        The ``--plot`` path of the command.
+
+    Returns
+    -------
+    str
+        The verdict figure's path.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import verdict_plot_path
+    >>> verdict_plot_path("out/fig.png")
+    'out/fig_verdict.png'
+    """
     p = Path(plot)
     return str(p.with_name(p.stem + "_verdict" + p.suffix))
 
@@ -272,7 +441,51 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
                   ) -> tuple[Any, list[str]]:
     """The verdict ``surfmet rotor`` prints, and notes: the paper's rig for the paper's table,
     the rig file when given, else groups from the column prefixes and no rig (None when such
-    a table has no two groups of two launches: the per-launch analysis still stands)."""
+    a table has no two groups of two launches: the per-launch analysis still stands).
+
+    Parameters
+    ----------
+    ks : sequence of int
+        Row numbers.
+    cols : mapping of str to sequence of float
+        Column name -> frame index per row.
+    paper : bool
+        The table is the paper's Table 3 (use the paper's rig).
+    fps, step : float
+        Frame rate (1/s) and mark step (rad).
+    rig_path : str, optional
+        A rig JSON file (:func:`load_rig`).
+
+    Returns
+    -------
+    (RotorVerdict or None, list of str)
+        The verdict and the notes on how it was reached.
+
+    Raises
+    ------
+    SurfmetInputError
+        An unreadable rig file.
+
+    See Also
+    --------
+    paper_verdict, judge, verdict_lines
+
+    Examples
+    --------
+    The paper's Table 3 with the paper's rig and frame rate:
+
+    >>> import csv
+    >>> from contact.rotor.paper import FPS, MARK_STEP
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.rotor_verdict import table_verdict
+    >>> with open(path("table3_frames.tsv")) as f:
+    ...     rows = list(csv.DictReader(f, delimiter="\\t"))
+    >>> ks = [int(r["k"]) for r in rows]
+    >>> cols = {c: [float(r[c]) for r in rows] for c in rows[0] if c != "k"}
+    >>> verdict, notes = table_verdict(ks, cols, paper=True, fps=FPS, step=MARK_STEP)
+    >>> verdict.code, notes
+    ('undetermined', [])
+    """
     from contact.rotor.paper import FPS, MARK_STEP
     from contact.rotor.rig import paper_rig
 
@@ -292,7 +505,29 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
 
 def verdict_figure(v: Any, path: str | Path) -> None:
     """Local accelerations from the frames against track position, per group, with the
-    joint model; and the lambda needed against the assumed slope."""
+    joint model; and the lambda needed against the assumed slope.
+
+    Parameters
+    ----------
+    v : RotorVerdict
+        The verdict.
+    path : str or Path
+        The image file to write.
+
+    See Also
+    --------
+    verdict_plot_path : where the commands put it.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_figure
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     out = pathlib.Path(tmp) / "verdict.png"
+    ...     verdict_figure(paper_verdict(), out)
+    ...     print(out.stat().st_size > 10_000)
+    True
+    """
     from surfmet.plots.rotor_verdict import draw_verdict
 
     draw_verdict(v, path)

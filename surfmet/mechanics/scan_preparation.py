@@ -41,7 +41,29 @@ SPIKES = SPIKE_CHOICES[0]
 
 
 def spike_mode(spikes: Spikes) -> str:
-    """``"remove"`` or ``"keep"`` from the text or a flag (True: remove, False: keep)."""
+    """``"remove"`` or ``"keep"`` from the text or a flag (True: remove, False: keep).
+
+    Parameters
+    ----------
+    spikes : str or bool
+        ``"remove"``, ``"keep"``, True (remove) or False (keep).
+
+    Returns
+    -------
+    str
+        ``"remove"`` or ``"keep"``.
+
+    Raises
+    ------
+    SurfmetInputError
+        Any other value.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.scan_preparation import spike_mode
+    >>> spike_mode(True), spike_mode("keep")
+    ('remove', 'keep')
+    """
     if isinstance(spikes, bool):
         return "remove" if spikes else "keep"
     if spikes in SPIKE_CHOICES:
@@ -50,7 +72,28 @@ def spike_mode(spikes: Spikes) -> str:
 
 
 def pixel_source(dx: float, pair: PairedRoughness | None, grid: int | None) -> str:
-    """Where a contact grid's pixel came from, for the output."""
+    """Where a contact grid's pixel came from, for the output.
+
+    Parameters
+    ----------
+    dx : float
+        The grid's pixel (m).
+    pair : PairedRoughness or None
+        The paired scans.
+    grid : int or None
+        The user's grid, if any.
+
+    Returns
+    -------
+    str
+        A few words for the output.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.scan_preparation import pixel_source
+    >>> pixel_source(5e-6, None, 64)
+    '--grid 64'
+    """
     if grid is not None:
         return f"--grid {grid}"
     if pair is not None and abs(dx - pair.dx) <= 1e-9 * pair.dx:
@@ -61,7 +104,32 @@ def pixel_source(dx: float, pair: PairedRoughness | None, grid: int | None) -> s
 
 
 def read_areal(obj: ScanSource | None, what: str) -> Topography | None:
-    """The scan of the ``what`` (a Topography, or a file read with :func:`surfmet.read`)."""
+    """The scan of the ``what`` (a Topography, or a file read with :func:`surfmet.read`).
+
+    Parameters
+    ----------
+    obj : Topography, path or None
+        The scan or its file.
+    what : str
+        ``"plate"``, ``"ball"``..., for the messages.
+
+    Returns
+    -------
+    Topography or None
+        The scan (None for None).
+
+    Raises
+    ------
+    SurfmetFormatError, SurfmetInputError
+        An unreadable file, or a profile where an areal scan is needed.
+
+    Examples
+    --------
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import read_areal
+    >>> read_areal(path("paper_ball.x3p"), "ball").shape, read_areal(None, "ball")
+    ((152, 147), None)
+    """
     if obj is None:
         return None
     scan: object = obj
@@ -80,7 +148,35 @@ def read_areal(obj: ScanSource | None, what: str) -> Topography | None:
 def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES
                  ) -> tuple[Topography, int, str | None]:
     """The scan with its spikes removed (``spikes="remove"``) or as measured (``"keep"``):
-    the scan, the number of spikes removed, and a note saying what was done."""
+    the scan, the number of spikes removed, and a note saying what was done.
+
+    Parameters
+    ----------
+    scan : Topography
+        The scan.
+    what : str
+        Its role, for the note.
+    spikes : {"remove", "keep"} or bool
+        What to do.
+
+    Returns
+    -------
+    (Topography, int, str or None)
+        The scan, the number of spikes removed and the note.
+
+    See Also
+    --------
+    surfmet.spikes : the spike detector.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import clean_spikes
+    >>> scan, n, note = clean_spikes(surfmet.read(path("paper_plate.x3p")), "plate")
+    >>> n, note
+    (60, '60 spike(s) removed from the plate scan (60 points made non-measured)')
+    """
     if spike_mode(spikes) == "keep":
         return scan, 0, f"spikes kept in the {what} scan (--spikes keep)"
     from surfmet.spikes import remove_spikes
@@ -110,6 +206,19 @@ class PreparedScans:
         Each scan's own form residual (plane for the plate, sphere for the ball).
     spikes : str
         ``"remove"`` or ``"keep"``.
+
+    See Also
+    --------
+    prepare_scans : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> prep = prepare_scans(surfmet.read(path("paper_plate.x3p")))
+    >>> print(f"sigma = {prep.sigma * 1e6:.2f} µm", prep.spikes_removed)
+    sigma = 2.28 µm {'plate': 60}
     """
 
     pair: Any
@@ -143,6 +252,29 @@ def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = Non
     spikes : {"remove", "keep"} or bool
         Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first (they
         become non-measured points), or keep them. True means "remove".
+
+    Returns
+    -------
+    PreparedScans
+        The paired roughness, the rms roughness of each scan and of the pair, the notes and
+        the spikes removed.
+
+    See Also
+    --------
+    surfmet.mechanics.pairing.prepare_pair : the pairing step.
+    prepare_flat : one scan for a flat contact.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> prep = prepare_scans(plate, surfmet.read(path("paper_ball.x3p")))
+    >>> print(f"sigma = {prep.sigma * 1e6:.2f} µm (plate {prep.sigma_plate * 1e6:.2f} µm)")
+    sigma = 2.42 µm (plate 2.28 µm)
+    >>> print(prep.notes[3])
+    ball: best-fit sphere of radius 19.956 mm removed, residual mirrored in x
     """
     from surfmet.areal.form import remove_form
     from surfmet.mechanics.pairing import prepare_pair
@@ -187,6 +319,31 @@ def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topograp
     them, then every non-measured point filled with its nearest measured value.
 
     Returns the scan and the record of what was done (as :meth:`PreparedScans.record`).
+
+    Parameters
+    ----------
+    topo : Topography or path
+        The scan.
+    spikes : {"remove", "keep"} or bool
+        Spike handling.
+
+    Raises
+    ------
+    SurfmetFormatError, SurfmetInputError
+        An unreadable file or an unusable scan.
+
+    See Also
+    --------
+    prepare_scans
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import prepare_flat
+    >>> scan, record = prepare_flat(surfmet.read(path("paper_plate.x3p")))
+    >>> bool(scan.has_nan), record["spikes_removed"]
+    (False, {'scan': 60})
     """
     import numpy as np
 

@@ -87,6 +87,19 @@ class Spectrum:
         ψ = (E*/H) √(σ_s/R_s) when E* and the hardness were given.
     materials : MaterialPair or None
         The resolved pair the plasticity index used, when materials were given.
+
+    See Also
+    --------
+    spectrum : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import spectrum
+    >>> spec = spectrum(surfmet.read(path("paper_plate.x3p")))
+    >>> print(f"h_rms = {spec.h_rms * 1e6:.2f} µm, slope_rms = {spec.slope_rms:.2f}")
+    h_rms = 2.44 µm, slope_rms = 0.61
     """
 
     psd: PSD
@@ -114,6 +127,36 @@ def is_periodic(topo: Topography, tol: float = 0.1) -> bool:
     exceed ``1 + tol`` times the largest rms jump between neighbouring interior rows: a
     periodic surface wraps as smoothly as it runs anywhere inside, whereas a cropped one
     jumps by about √2 h_rms, far above its interior steps unless it is white noise.
+
+    Parameters
+    ----------
+    topo : Topography
+        The scan.
+    tol : float
+        Largest edge mismatch, as a fraction of the scan's height range.
+
+    Returns
+    -------
+    bool
+        True when both pairs of opposite edges match within ``tol``.
+
+    See Also
+    --------
+    spectrum : uses it to choose the window.
+
+    Examples
+    --------
+    The bundled plate is a periodic synthetic surface; a tilted plane is not periodic:
+
+    >>> import numpy as np
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import is_periodic
+    >>> is_periodic(surfmet.read(path("paper_plate.x3p")))
+    True
+    >>> ramp = surfmet.Topography(np.tile(np.arange(32) * 1e-7, (32, 1)), 1e-6, 1e-6)
+    >>> is_periodic(ramp)
+    False
     """
     z = np.asarray(topo.heights, dtype=float)
     if not np.all(np.isfinite(z)) or min(z.shape) < 4:
@@ -275,10 +318,42 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
         (:func:`surfmet.mechanics.material_spec.scan_pair`; ``hardness`` overrides it), and
         the pair is kept in :attr:`Spectrum.materials`.
 
+    Returns
+    -------
+    Spectrum
+        The isotropic PSD, the Hurst fit, the rms height, slope and curvature (spectral and
+        real-space), the Greenwood-Williamson summit parameters and, with materials, the
+        plasticity index.
+
     Raises
     ------
     SurfmetInputError
         Not an areal scan, too small, or a spectrum without a power-law band.
+
+    See Also
+    --------
+    scan_spectrum : the same from a file, with the shared preparation.
+    surfmet.psd : the power spectral density itself.
+
+    References
+    ----------
+    .. [1] B. N. J. Persson, O. Albohr, U. Tartaglino, A. I. Volokitin, E. Tosatti, "On the
+       nature of surface roughness with application to contact mechanics, sealing, rubber
+       friction and adhesion", J. Phys.: Condens. Matter 17 (2005) R1-R62.
+    .. [2] P. R. Nayak, "Random process model of rough surfaces", J. Lubr. Technol. 93
+       (1971) 398-407 (spectral moments).
+    .. [3] J. A. Greenwood, J. B. P. Williamson, "Contact of nominally flat surfaces",
+       Proc. R. Soc. Lond. A 295 (1966) 300-319 (plasticity index).
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import spectrum
+    >>> spec = spectrum(surfmet.read(path("paper_plate.x3p")), materials="steel,aluminium")
+    >>> print(f"H = {spec.hurst.hurst:.2f}, h_rms = {spec.h_rms * 1e6:.2f} µm, "
+    ...       f"plasticity index = {spec.plasticity:.0f}")
+    H = 0.91, h_rms = 2.44 µm, plasticity index = 42
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"spectrum needs an areal scan, got {type(topo).__name__}")
@@ -354,7 +429,35 @@ def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
     """The shared scan preparation for a spectrum or a flat contact: spikes removed (by
     default) and non-measured points filled as every contact command does
     (:func:`surfmet.mechanics.scan_preparation.prepare_flat`), then levelled
-    (:func:`prepare`). Returns (scan, periodic, levelling, preparation record)."""
+    (:func:`prepare`). Returns (scan, periodic, levelling, preparation record).
+
+    Parameters
+    ----------
+    topo : Topography or path
+        The scan.
+    periodic : bool, optional
+        Force periodic (True) or windowed (False); default detected (:func:`is_periodic`).
+    spikes : {"remove", "keep"} or bool, optional
+        Spike handling (default remove).
+
+    Returns
+    -------
+    (Topography, bool, str, dict)
+        The prepared scan, whether it is treated as periodic, the levelling and the
+        preparation record.
+
+    See Also
+    --------
+    prepare : the levelling step.
+
+    Examples
+    --------
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import prepared_scan
+    >>> scan, periodic, levelling, record = prepared_scan(path("paper_plate.x3p"))
+    >>> scan.shape, periodic, levelling
+    ((512, 1024), True, 'mean')
+    """
     from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
 
     scan, record = prepare_flat(topo, spikes=SPIKES if spikes is None else spikes)
@@ -376,6 +479,18 @@ def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
     -------
     (Spectrum, str, dict)
         The spectrum, the levelling used and the scan-preparation record.
+
+    See Also
+    --------
+    spectrum, prepared_scan
+
+    Examples
+    --------
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import scan_spectrum
+    >>> spec, levelling, record = scan_spectrum(path("paper_plate.x3p"))
+    >>> print(levelling, record["spikes_removed"], f"h_rms = {spec.h_rms * 1e6:.2f} µm")
+    mean {'scan': 60} h_rms = 2.30 µm
     """
     scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)
     s = spectrum(scan, periodic=per, materials=materials, hardness=hardness)
@@ -390,6 +505,28 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     or its second-order surface when a curved form dominates what the plane leaves
     (:func:`surfmet.areal.form.dominant_form`: a ball's cap is form, not roughness; the
     levelling is then ``"poly:2"``).
+
+    Parameters
+    ----------
+    topo : Topography
+        The scan.
+    periodic : bool, optional
+        As for :func:`prepared_scan`.
+
+    Returns
+    -------
+    (Topography, bool, str)
+        The levelled scan, periodic or not, and the levelling (``"mean"`` for a periodic
+        scan, ``"plane"`` otherwise).
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import prepare
+    >>> scan, periodic, levelling = prepare(surfmet.read(path("paper_plate.x3p")))
+    >>> periodic, levelling
+    (True, 'mean')
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"an areal scan is needed, got "
@@ -417,7 +554,29 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
 def spectrum_caveats(hfit: HurstFit, h_rms: float, h_rms_real: float) -> list[str]:
     """What makes a spectrum's numbers doubtful: a Hurst exponent fitted over less than
     :data:`MIN_HURST_DECADES`, or a spectral h_rms more than :data:`H_RMS_TOLERANCE` away
-    from the real-space one."""
+    from the real-space one.
+
+    Parameters
+    ----------
+    hfit : HurstFit
+        The Hurst exponent fit.
+    h_rms, h_rms_real : float
+        The spectral and the real-space rms heights (m).
+
+    Returns
+    -------
+    list of str
+        One sentence per caveat; empty when there is none.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.spectrum import spectrum, spectrum_caveats
+    >>> spec = spectrum(surfmet.read(path("paper_plate.x3p")))
+    >>> print(spectrum_caveats(spec.hurst, spec.h_rms, spec.h_rms_real)[0])
+    the Hurst exponent H = 0.912 is fitted over 0.44 decades of wavevector only ...
+    """
     from surfmet.units import format_length
 
     out = []

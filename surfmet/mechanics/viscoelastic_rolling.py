@@ -53,10 +53,33 @@ def _parse_time(text: str) -> float:
 def parse_viscoelastic(text: str, ball: Material, plate: Material) -> tuple[str, Any]:
     """``BODY:Eg=..:Er=..:tau=..[:nu=..]`` -> (body, StandardLinearSolid).
 
+    Parameters
+    ----------
+    text : str
+        ``BODY:Eg=..:Er=..:tau=..[:nu=..]``, BODY ``ball`` or ``plate``.
+    ball, plate : Material
+        The elastic bodies (their Poisson's ratio is the default ``nu``).
+
+    Returns
+    -------
+    (str, StandardLinearSolid)
+        The body and its standard linear solid.
+
     Raises
     ------
     SurfmetInputError
         Unreadable text; contact.ContactInputError for Er > Eg or tau <= 0.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 6.6.
+
+    Examples
+    --------
+    >>> from contact import material
+    >>> from surfmet.mechanics.viscoelastic_rolling import parse_viscoelastic
+    >>> parse_viscoelastic("plate:Eg=3GPa:Er=1GPa:tau=1ms", material("steel"), material("pmma"))
+    ('plate', StandardLinearSolid(E_g=3000000000.0, E_r=1000000000.0, tau_c=0.001, nu=0.37))
     """
     from contact.viscoelastic import StandardLinearSolid
 
@@ -85,7 +108,21 @@ def parse_viscoelastic(text: str, ball: Material, plate: Material) -> tuple[str,
 @dataclass(frozen=True, eq=False)
 class ViscoRollingReport:
     """Viscoelastic rolling resistance over a load sweep (``surfmet rolling --model
-    viscoelastic``)."""
+    viscoelastic``).
+
+    See Also
+    --------
+    viscoelastic_rolling : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling
+    >>> report = viscoelastic_rolling(radius=0.02, materials="steel,pmma", loads=[1.0, 3.0, 10.0],
+    ...                               speed=0.01, viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                               grid=32)
+    >>> report.sweep.moments.shape, sorted(report.to_json())[:2]
+    ((3,), [...])
+    """
 
     sweep: Any
     radius: float
@@ -124,6 +161,60 @@ def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | Non
     Each body is the ``--viscoelastic`` SLS given for it, else, with ``loss``, the SLS of
     that loss factor peaking at V/a (:func:`contact.viscoelastic.loss.sls_from_loss`), else
     elastic.
+
+    Parameters
+    ----------
+    plate, ball : Topography or path, optional
+        Scans (smooth surfaces without).
+    radius : float
+        Ball radius (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    loads : sequence of float
+        Normal loads (N).
+    speed : float
+        Rolling speed V (m/s).
+    viscoelastic : list of str, optional
+        ``BODY:Eg=..:Er=..:tau=..`` per viscoelastic body (:func:`parse_viscoelastic`).
+    loss : (float, float), optional
+        Loss factors of ball and plate, instead of ``viscoelastic``.
+    grid : int
+        Cells per side.
+    spikes : bool
+        Remove the scans' spikes.
+    progress : callable, optional
+        Wraps the iterable of loads.
+
+    Returns
+    -------
+    ViscoRollingReport
+        The sweep (loads, moments, the fitted exponent) and the bodies.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Unreadable bodies or loads, a solver failure.
+
+    See Also
+    --------
+    surfmet.mechanics.rolling_resistance.rolling_resistance : the elastic-hysteresis model.
+
+    References
+    ----------
+    .. [1] S. C. Hunter, "The rolling contact of a rigid cylinder with a viscoelastic half
+       space", J. Appl. Mech. 28 (1961) 611-617.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 8.6.
+
+    Examples
+    --------
+    A steel ball rolling slowly on a PMMA-like standard linear solid:
+
+    >>> from surfmet.mechanics.viscoelastic_rolling import viscoelastic_rolling
+    >>> report = viscoelastic_rolling(radius=0.02, materials="steel,pmma", loads=[1.0, 3.0, 10.0],
+    ...                               speed=0.01, viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                               grid=32)
+    >>> print(f"lambda = {report.sweep.fit.exponent:.2f}")
+    lambda = 1.03
     """
     from contact.hertz import hertz_sphere
     from contact.viscoelastic.loss import sls_from_loss
@@ -159,7 +250,18 @@ def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | Non
 
 @dataclass(frozen=True, eq=False)
 class MechanismsReport:
-    """Mechanisms side by side with what Table 3 measures (``--model all``)."""
+    """Mechanisms side by side with what Table 3 measures (``--model all``).
+
+    See Also
+    --------
+    rolling_mechanisms : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
+    >>> type(rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3))).__name__
+    'MechanismsReport'
+    """
 
     comparison: Any
     verdict: Any
@@ -217,7 +319,39 @@ def microslip_sweep(radius: float, materials: Materials, mu: float,
                     grid: int | None = None) -> Any:
     """loads -> RollingSweep of micro-slip dissipation in free rolling (the tangential
     solver, :func:`surfmet.mechanics.rolling_contact.solve_rolling_contact`): F_r is the frictional
-    power per unit rolling speed, M_r = F_r R."""
+    power per unit rolling speed, M_r = F_r R.
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``, a dissimilar pair (micro-slip needs Kalker's K ≠ 0).
+    mu : float
+        Coefficient of friction.
+    grid : int, optional
+        Elements per side of each frictional solve.
+
+    Returns
+    -------
+    callable
+        ``loads -> RollingSweep``.
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 8.2
+       (free rolling of dissimilar bodies).
+
+    Examples
+    --------
+    Steel on aluminium in free rolling: the micro-slip moment grows as the load to 4/3, as
+    every Hertzian mechanism does:
+
+    >>> from surfmet.mechanics.viscoelastic_rolling import microslip_sweep
+    >>> sweep = microslip_sweep(0.02, "steel,aluminium", 0.3, grid=16)([2.0, 4.0, 8.0])
+    >>> print(f"lambda = {sweep.fit.exponent:.3f}")
+    lambda = 1.333
+    """
     from contact.viscoelastic.sweep import sweep_record
     from surfmet.mechanics.rolling_contact import solve_rolling_contact
 
@@ -247,6 +381,49 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Materials = "steel,al
     sets the adhesion-hysteresis mechanism; None entries take steel on aluminium in air
     (:data:`contact.adhesion.rolling.STEEL_ALUMINIUM_AIR`, Delta_w = w), and another pair
     without a w leaves it out with a note.
+
+    Parameters
+    ----------
+    radius : float
+        Ball radius (m).
+    materials : str or (Material, Material)
+        ``"BALL,PLATE"``.
+    loads : (float, float, int) or sequence of float
+        The ball loads (N): a log range or the values.
+    speed : float
+        Rolling speed (m/s).
+    loss : (float, float), optional
+        Loss factors of ball and plate.
+    hardness : float, optional
+        Hardness of the softer body (Pa).
+    grid : int
+        Cells per side.
+    mu : float or None
+        Coefficient of friction of the micro-slip mechanism (None leaves it out).
+    adhesion : (float or None, float or None)
+        Work of adhesion and its hysteresis (J/m²).
+
+    Returns
+    -------
+    MechanismsReport
+        Each mechanism's exponent and the acceleration difference it implies, beside the
+        rotor verdict.
+
+    See Also
+    --------
+    surfmet.mechanics.rotor_verdict.paper_verdict : what Table 3 measures.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 8-9.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
+    >>> rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3)).verdict.code
+    'undetermined'
     """
     from contact.rolling import log_loads
     from contact.rotor.mechanics import mass_properties, normal_reactions
@@ -314,7 +491,30 @@ def _adhesion_numbers(ball: str, plate: str, work: float | None, hysteresis: flo
 
 
 def reaches_offset(delta_eps: float, offset: GroupOffset) -> bool:
-    """Whether an implied offset reaches the smallest one the verdict's interval allows."""
+    """Whether an implied offset reaches the smallest one the verdict's interval allows.
+
+    Parameters
+    ----------
+    delta_eps : float
+        The acceleration difference a mechanism implies (rad/s²).
+    offset : interval quantity
+        The verdict's group offset (``value``, ``ci_low``, ``ci_high``).
+
+    Returns
+    -------
+    bool
+        True when the mechanism can make the measured offset.
+
+    Examples
+    --------
+    Against the paper's offset of +0.20 rad/s² (95 % CI +0.12..+0.28):
+
+    >>> from types import SimpleNamespace
+    >>> from surfmet.mechanics.viscoelastic_rolling import reaches_offset
+    >>> o = SimpleNamespace(value=0.20, ci_low=0.12, ci_high=0.28)
+    >>> reaches_offset(0.022, o), reaches_offset(0.15, o), reaches_offset(-0.15, o)
+    (False, True, False)
+    """
     if offset.ci_low <= 0.0 <= offset.ci_high:
         return abs(delta_eps) >= abs(offset.value)
     return abs(delta_eps) >= min(abs(offset.ci_low), abs(offset.ci_high)) and \

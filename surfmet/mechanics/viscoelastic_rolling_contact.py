@@ -54,6 +54,19 @@ class ViscoRollingContact:
         The pair's K with glassy and with relaxed moduli (body 1 = ball).
     not_solved : str or None
         Why the tangential problem was not solved (None: solved, or no ``mu``).
+
+    See Also
+    --------
+    viscoelastic_rolling_contact : makes it.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import viscoelastic_rolling_contact
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> vc.traction is None, vc.normal.pressure.ndim
+    (True, 2)
     """
 
     normal: Any
@@ -81,7 +94,32 @@ def _shear(body: Any, glassy: bool) -> tuple[float, float]:
 
 def pair_kalker_k(ball: Material, plate: Material) -> tuple[float, float]:
     """Kalker's K of the pair (ball = body 1) with glassy and with relaxed moduli
-    (:func:`contact.halfspace.constants.pair_constants_from`)."""
+    (:func:`contact.halfspace.constants.pair_constants_from`).
+
+    Parameters
+    ----------
+    ball, plate : Material or StandardLinearSolid
+        The bodies (ball = body 1).
+
+    Returns
+    -------
+    (float, float)
+        K with the glassy and with the relaxed moduli.
+
+    References
+    ----------
+    .. [1] J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling Contact, Kluwer
+       (1990).
+
+    Examples
+    --------
+    Quasi-identical bodies have no normal-tangential coupling:
+
+    >>> from contact import material
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import pair_kalker_k
+    >>> pair_kalker_k(material("steel"), material("steel"))
+    (0.0, 0.0)
+    """
     from contact.halfspace.constants import pair_constants_from
 
     # a tuple() of a two-item generator: mypy cannot count its items
@@ -91,7 +129,28 @@ def pair_kalker_k(ball: Material, plate: Material) -> tuple[float, float]:
 
 def coupling_reason(kalker_k: tuple[float, float], free_rolling: bool) -> str | None:
     """Why the tangential problem is not solved (free rolling of a dissimilar pair), or
-    None."""
+    None.
+
+    Parameters
+    ----------
+    kalker_k : (float, float)
+        The pair's K (glassy, relaxed).
+    free_rolling : bool
+        No creepage imposed.
+
+    Returns
+    -------
+    str or None
+        The sentence, or None when the tangential problem is solved.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import coupling_reason
+    >>> coupling_reason((0.0, 0.0), True) is None
+    True
+    >>> print(coupling_reason((-0.1, -0.12), True)[:40])
+    tangential problem not solved: in free r
+    """
     if not free_rolling or max(abs(k) for k in kalker_k) <= QUASI_IDENTICAL_K:
         return None
     kg, kr = kalker_k
@@ -135,6 +194,38 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
         Coefficient of friction and creepage (default free rolling) for the tangential
         tractions: plane strain (:func:`contact.viscoelastic.steady_traction`) or, for a
         ball, 3D (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`).
+
+    Returns
+    -------
+    ViscoRollingContact
+        The normal solution, the tractions (with ``mu``) and the pair's Kalker constants.
+
+    Raises
+    ------
+    SurfmetInputError, ContactError
+        Unreadable bodies, bad values, a solver failure.
+
+    See Also
+    --------
+    visco_rolling_contact_record : its JSON record.
+    surfmet.mechanics.rolling_contact.solve_rolling_contact : the elastic case.
+
+    References
+    ----------
+    .. [1] S. C. Hunter, "The rolling contact of a rigid cylinder with a viscoelastic half
+       space", J. Appl. Mech. 28 (1961) 611-617.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sec. 8.6.
+
+    Examples
+    --------
+    The delayed recovery of the viscoelastic plate behind the ball resists the rolling:
+
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import viscoelastic_rolling_contact
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> bool(vc.normal.rolling_resistance > 0)
+    True
     """
     from contact.tangential.memory import check_rolling_memory
     from contact.viscoelastic import pair_creep
@@ -234,7 +325,29 @@ VISCO_RESISTANCE_DEFINITION = (
 
 def visco_rolling_contact_record(vc: ViscoRollingContact) -> dict[str, Any]:
     """The JSON record, keyed as the elastic one
-    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`)."""
+    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`).
+
+    Parameters
+    ----------
+    vc : ViscoRollingContact
+        A solve.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.viscoelastic_rolling_contact import (
+    ...     visco_rolling_contact_record, viscoelastic_rolling_contact)
+    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
+    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
+    ...                                   speed=0.01, grid=32)
+    >>> rec = visco_rolling_contact_record(vc)
+    >>> rec["geometry"], rec["speed"]
+    ('sphere on flat', {'value': 0.01, 'unit': 'm/s'})
+    """
     from surfmet.mechanics.rolling_contact import SIGN_CONVENTION
 
     r = vc.normal
