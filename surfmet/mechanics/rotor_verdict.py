@@ -363,7 +363,7 @@ def verdict_lines(v: Any) -> list[str]:
     --------
     >>> from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_lines
     >>> print(verdict_lines(paper_verdict())[0])
-    VERDICT  undetermined: no shared track explains both groups ...
+    VERDICT  undetermined: the groups' tracks differ more than the launches' within a group do ...
     """
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
