@@ -42,3 +42,18 @@ def test_spike_caveat_of_a_result_names_the_option_not_the_api():
     diag = consistent_diagnosis(spike_diagnosis(z), values, "S", None)
     assert diag.suspected and "--spikes" in diag.message
     assert "spikes=True" not in diag.message and "roughness(" not in diag.message
+
+
+def test_inputs_echo_names_the_plate_file_not_its_topography(capsys):
+    """The text's inputs name the scan the user gave, as the JSON does (was the
+    Topography's repr, ``Topography(nx=1024, ... dx=5e-06 m ...)``)."""
+    from surfmet.data import path
+
+    plate = str(path("paper_plate.x3p"))
+    rc = main(["rolling-contact", plate, "--radius", "20mm", "--materials",
+               "steel,aluminium", "--load", "5N", "--mu", "0.3", "--grid", "16", "-q"])
+    out = capsys.readouterr().out
+    assert rc == 0
+    lines = out.split("\ninputs\n", 1)[1].splitlines()
+    assert any(ln.split() == ["plate", plate] for ln in lines), lines
+    assert "Topography(" not in out
