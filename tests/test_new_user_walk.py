@@ -57,3 +57,46 @@ def test_inputs_echo_names_the_plate_file_not_its_topography(capsys):
     lines = out.split("\ninputs\n", 1)[1].splitlines()
     assert any(ln.split() == ["plate", plate] for ln in lines), lines
     assert "Topography(" not in out
+
+
+def test_engine_quantities_in_text_as_the_one_formatter_writes_them():
+    """An engine's SI value (the engines cannot import surfmet.units) in text as
+    format_quantity writes it: 1.45e-05 m is 14.5 µm, 5.86e+10 Pa is 58.6 GPa."""
+    from surfmet.units import readable_quantities
+
+    assert readable_quantities("zone (= 1.45e-05 m) spans") == "zone (= 14.5 µm) spans"
+    assert readable_quantities("E* = 5.86e+10 Pa, W = 10 N") == "E* = 58.6 GPa, W = 10 N"
+    assert readable_quantities("this domain (1e-06 m^2)") == "this domain (1 mm²)"
+    assert readable_quantities("2 mm at 5 m/s") == "2 mm at 5 m/s"  # already readable
+
+
+def test_adhesion_warning_states_the_zone_in_nm(capsys):
+    """adhesion's coarse-grid warning: the cohesive zone pi E* w / (4 sigma0^2) of
+    E* = 1 GPa, w = 50 mJ/m², sigma0 = w / range = 25 MPa is 62.8 nm (was '6.28e-08 m')."""
+    rc = main(["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhesion",
+               "50mJ/m2", "--range", "2nm", "--grid", "32", "--steps", "8", "-q"])
+    out = capsys.readouterr().out
+    assert rc == 0
+    warning = next(ln for ln in out.splitlines() if ln.startswith("warning"))
+    assert "= 62.8 nm)" in warning and "e-08 m" not in warning
+    assert "E* = 1 GPa" in out and "peak tension 25 MPa" in out
+
+
+def test_contact_pressure_warning_and_hertz_row_in_the_formatters_units(capsys):
+    """contact's elastic-limit warning and hertz-check's Hertz/BEM row write pressures as
+    format_quantity does (aluminium's H = 1.04935 GPa, as the inputs print it; was
+    '1049 MPa' beside '1.04935 GPa')."""
+    from surfmet.data import path
+
+    plate = str(path("paper_plate.x3p"))
+    base = [plate, "--radius", "20mm", "--load", "10N", "--materials", "steel,aluminium",
+            "--grid", "32", "-q"]
+    assert main(["contact", *base]) == 0
+    out = capsys.readouterr().out
+    warning = next(ln for ln in out.splitlines() if "exceeds the softer" in ln)
+    assert "hardness (1.049 GPa)" in warning and "MPa" not in warning.split("(")[1]
+    assert main(["hertz-check", *base]) == 0
+    out = capsys.readouterr().out
+    row = next(ln for ln in out.splitlines() if ln.startswith("peak pressure "))
+    # the BEM's peak is capped at the hardness where asperities yield
+    assert row.split()[1:] == ["pressure", "255.2", "MPa", "1.049", "GPa"], row

@@ -151,9 +151,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
     except user_error_types() as exc:
         from surfmet.cli._terms import cli_terms, command_options
+        from surfmet.units import readable_quantities
 
-        print(f"surfmet: error: {cli_terms(str(exc), command_options(parser, argv))}",
-              file=sys.stderr)
+        text = readable_quantities(cli_terms(str(exc), command_options(parser, argv)))
+        print(f"surfmet: error: {text}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("surfmet: interrupted", file=sys.stderr)

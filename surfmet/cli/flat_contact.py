@@ -213,6 +213,8 @@ def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, law
 
 
 def _print(rec: dict[str, Any]) -> None:
+    from surfmet.units import format_quantity
+
     print(f"file  {rec['file']}")
     prep = rec["scan_preparation"]
     spikes = ("spikes kept (--spikes keep)" if prep["spikes"] == "keep" else
@@ -222,7 +224,7 @@ def _print(rec: dict[str, Any]) -> None:
     g = rec["grid"]
     print(f"  {rec['boundary']} boundary, levelling {rec['levelling']}, "
           f"{g['nx']} x {g['ny']} cells, "
-          f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
+          f"E* = {format_quantity(rec['e_star']['value'], 'Pa')}, "
           f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
     print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (µm)':>9} "
           f"{'K (MPa/µm)':>11} {'err A':>8} {'err gap':>8}")
