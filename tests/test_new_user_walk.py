@@ -100,3 +100,32 @@ def test_contact_pressure_warning_and_hertz_row_in_the_formatters_units(capsys):
     row = next(ln for ln in out.splitlines() if ln.startswith("peak pressure "))
     # the BEM's peak is capped at the hardness where asperities yield
     assert row.split()[1:] == ["pressure", "255.2", "MPa", "1.049", "GPa"], row
+
+
+def test_sweep_rows_carry_the_scans_unit_caveats(tmp_path, capsys):
+    """A sweep row of a scan whose file states no units says so in its CSV and JSON Lines
+    row (h5-multiple.h5 states neither height unit nor pixel), as the command's stderr
+    and --json caveats do; a scan with its units stated has none."""
+    import csv
+    import json
+
+    from conftest import REALDATA
+
+    from surfmet.data import path
+
+    h5 = REALDATA / "h5-multiple.h5"
+    if not h5.is_file():
+        pytest.skip("needs ../shared/realdata")
+    out_csv, out_jsonl = tmp_path / "s.csv", tmp_path / "s.jsonl"
+    rc = main(["sweep", "--plates", str(h5), str(path("paper_plate.x3p")), "--radius", "20mm",
+               "--loads", "1N", "--materials", "steel,aluminium", "--grid", "16", "-q",
+               "--csv", str(out_csv), "--json", str(out_jsonl)])
+    capsys.readouterr()
+    assert rc == 0
+    rows = list(csv.DictReader(out_csv.open(encoding="utf-8")))
+    lines = [json.loads(ln) for ln in out_jsonl.read_text(encoding="utf-8").splitlines()[1:]]
+    for row in (rows, lines):
+        by_plate = {r["plate"]: r["caveats"] for r in row}
+        assert "height unit assumed" in by_plate[str(h5)]
+        assert "pixel size assumed" in by_plate[str(h5)]
+        assert not by_plate[str(path("paper_plate.x3p"))]
