@@ -129,3 +129,24 @@ def test_sweep_rows_carry_the_scans_unit_caveats(tmp_path, capsys):
         assert "height unit assumed" in by_plate[str(h5)]
         assert "pixel size assumed" in by_plate[str(h5)]
         assert not by_plate[str(path("paper_plate.x3p"))]
+
+
+def test_show_on_a_container_says_which_measurement_it_draws(tmp_path, capsys):
+    """show draws one measurement of a container: the text says which, and how to draw
+    another; --json names it as the roughness command names its record."""
+    import json
+
+    from conftest import REALDATA
+
+    zp = REALDATA / "container-2.zip"
+    if not zp.is_file():
+        pytest.skip("needs ../shared/realdata")
+    assert main(["show", str(zp), "-o", str(tmp_path / "c.png"), "--2d", "--channel", "1",
+                 "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["measurement"]["index"] == 1 and rec["measurement"]["of"] == 3
+    assert rec["roughness"]["file"] == rec["measurement"]["name"]
+    assert rec["measurement"]["name"].startswith(f"{zp}:gain_control_uncd_35")
+    assert main(["show", str(zp), "-o", str(tmp_path / "d.png"), "--2d"]) == 0
+    err = capsys.readouterr().err
+    assert "drew measurement 1 of 3 of the container" in err and "--channel" in err
