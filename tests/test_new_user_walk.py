@@ -150,3 +150,13 @@ def test_show_on_a_container_says_which_measurement_it_draws(tmp_path, capsys):
     assert main(["show", str(zp), "-o", str(tmp_path / "d.png"), "--2d"]) == 0
     err = capsys.readouterr().err
     assert "drew measurement 1 of 3 of the container" in err and "--channel" in err
+
+
+def test_scales_says_no_cut_off_once(capsys):
+    """scales on a scan without a tip radius: 'cut-off none (no tip radius)', not
+    'cut-off none (no tip radius (no cut-off))'."""
+    from surfmet.data import path
+
+    assert main(["scales", str(path("paper_ball.x3p")), "--per-decade", "2"]) == 0
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if "cut-off" in ln)
+    assert line.endswith("cut-off none (no tip radius)"), line
