@@ -160,3 +160,33 @@ def test_scales_says_no_cut_off_once(capsys):
     assert main(["scales", str(path("paper_ball.x3p")), "--per-decade", "2"]) == 0
     line = next(ln for ln in capsys.readouterr().out.splitlines() if "cut-off" in ln)
     assert line.endswith("cut-off none (no tip radius)"), line
+
+
+def test_demo_states_the_ball_fit_as_fit_prints_it(capsys):
+    """The demo's sphere line and surfmet fit on the same ball: the same radius,
+    uncertainty and residuals in the same units (the demo wrote '± 0.74 µm' and '0.85 µm'
+    where fit wrote '± 745 nm' and '845.2 nm')."""
+    import importlib
+    import json
+
+    from surfmet.data import path
+
+    story = importlib.import_module("surfmet.demo.story")  # the package's story() shadows it
+    ball = str(path("paper_ball.x3p"))
+    assert main(["fit", ball, "--shape", "sphere", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert main(["fit", ball, "--shape", "sphere"]) == 0
+    fit_text = capsys.readouterr().out
+    radius_line = next(ln for ln in fit_text.splitlines() if ln.startswith("radius"))
+    rms = next(ln for ln in fit_text.splitlines() if ln.startswith("rms residual"))
+    form = next(ln for ln in fit_text.splitlines() if ln.startswith("form deviation"))
+    t = story._Text()
+    circle = {"profile": "row:1", "radius": {"value": 0.02, "unit": "m"}}
+    story._ball(t, {"ball": {"sphere": rec, "nominal_radius": {"value": 0.02, "unit": "m"},
+                             "radius_minus_nominal": {"value": 0.0, "unit": "m"},
+                             "radius_minus_nominal_in_uncertainties": 0.0,
+                             "row_circle": circle, "column_circle": circle}})
+    demo = "\n".join(t.lines)
+    assert f"R = {radius_line.split(None, 1)[1]}" in demo
+    assert f"sphere residual {rms.split(None, 2)[2]} rms" in demo
+    assert f"form deviation {form.split()[2]} {form.split()[3]} (PV" in demo

@@ -87,13 +87,15 @@ def _ball(t: _Text, summary: dict[str, Any]) -> None:
     b = summary["ball"]
     sp = b["sphere"]
     t.head("2. The ball's radius")
-    t.add(f"  best-fit sphere  R = {_v(sp['radius']) * 1e3:.4f} mm ± "
-          f"{_v(sp['radius_uncertainty']) * 1e6:.2f} µm (k = 1), nominal "
-          f"{_v(b['nominal_radius']) * 1e3:g} mm")
+    # the radius, its uncertainty and the residuals as surfmet fit prints them
+    t.add(f"  best-fit sphere  R = {format_length(_v(sp['radius']), 8)} ± "
+          f"{format_length(_v(sp['radius_uncertainty']), 3)} (k = 1), nominal "
+          f"{format_length(_v(b['nominal_radius']))}")
     t.add(f"  R - nominal = {_v(b['radius_minus_nominal']) * 1e6:+.1f} µm = "
           f"{_v(b['radius_minus_nominal_in_uncertainties']):+.0f} uncertainties")
-    t.add(f"  sphere residual {_um(sp['rms_residual'], 2)} rms (roughness, outliers, form);"
-          f" form deviation {_um(sp['form_pv'], 2)} (PV of its quadratic component)")
+    t.add(f"  sphere residual {format_length(_v(sp['rms_residual']))} rms (roughness, "
+          f"outliers, form); form deviation {format_length(_v(sp['form_pv']))} (PV of its "
+          "quadratic component)")
     t.add(f"  circle fits: {b['row_circle']['profile']} R = "
           f"{_v(b['row_circle']['radius']) * 1e3:.3f} mm, "
           f"{b['column_circle']['profile']} R = "
