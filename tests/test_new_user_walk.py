@@ -190,3 +190,26 @@ def test_demo_states_the_ball_fit_as_fit_prints_it(capsys):
     assert f"R = {radius_line.split(None, 1)[1]}" in demo
     assert f"sphere residual {rms.split(None, 2)[2]} rms" in demo
     assert f"form deviation {form.split()[2]} {form.split()[3]} (PV" in demo
+
+
+def test_demo_states_the_hardness_as_the_hertz_check_does():
+    """The demo's contact section gives aluminium's hardness H = 1.04935 GPa (the material
+    table) as its Hertz check's bullets do, '1.05 GPa' (was '1049 MPa')."""
+    import importlib
+
+    story = importlib.import_module("surfmet.demo.story")
+    q = lambda v, u: {"value": v, "unit": u}  # noqa: E731
+    solve = {"method": "normal BEM, elastic-plastic", "iterations": 8, "residual": q(1e-7, ""),
+             "residual_definition": "rms gap error", "tolerance": q(1e-6, ""),
+             "converged": True, "edge_contact": False, "warning": None}
+    contact = {"load": q(4.67, "N"), "rotor_loads": {k: q(4.0, "N") for k in (
+        "symmetric", "asymmetric_ball1", "asymmetric_ball2")},
+        "grid": {"nx": 8, "ny": 8, "dx": q(5e-6, "m")}, "solve": solve,
+        "radius_95": q(3e-4, "m"), "hertz": {"a": q(1e-4, "m"), "delta": q(5e-7, "m")},
+        "approach": q(2e-6, "m"), "n_clusters": 3, "contact_area": q(4e-9, "m^2"),
+        "plastic_area": q(3e-9, "m^2"), "hardness": q(1.04935e9, "Pa"),
+        "regime": "plastic"}
+    t = story._Text()
+    story._contact(t, {"contact": contact})
+    line = next(ln for ln in t.lines if "at the hardness" in ln)
+    assert line.endswith("at the hardness 1.05 GPa"), line

@@ -10,7 +10,7 @@ from typing import Any
 
 from contact.record import SolveRecord
 from surfmet.demo.outputs import SUMMARY
-from surfmet.units import format_length
+from surfmet.units import format_length, format_quantity
 
 
 def _v(q: Any) -> float:
@@ -109,7 +109,7 @@ def _hertz(t: _Text, summary: dict[str, Any]) -> None:
            f"{d['materials']['ball']} on {d['materials']['plate']})")
     t.add(f"  Hertz: δ0 = {_um(h['hertz']['delta'])} (paper {_um(h['paper']['delta'])}), "
           f"a0 = {_um(h['hertz']['a'], 1)} (paper {_um(h['paper']['a'], 1)}), p0 = "
-          f"{_v(h['hertz']['p0']) / 1e6:.0f} MPa")
+          f"{format_quantity(_v(h['hertz']['p0']), 'Pa', 3)}")
     verdict = ("Hertz cannot be judged (the scan's pixel does not resolve the contact)"
                if h.get("judged") is False else
                "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold")
@@ -133,7 +133,7 @@ def _contact(t: _Text, summary: dict[str, Any]) -> None:
     a_hz = math.pi * _v(c["hertz"]["a"]) ** 2
     t.add(f"  {c['n_clusters']} contact spots, real area {_v(c['contact_area']) / a_hz:.3g}"
           f" × π a0², of which {_v(c['plastic_area']) / a_hz:.3g} × π a0² at the "
-          f"hardness {_v(c['hardness']) / 1e6:.0f} MPa")
+          f"hardness {format_quantity(_v(c['hardness']), 'Pa', 3)}")  # as the Hertz check
     t.add(f"  regime: {c['regime']}")
 
 
