@@ -213,3 +213,24 @@ def test_demo_states_the_hardness_as_the_hertz_check_does():
     story._contact(t, {"contact": contact})
     line = next(ln for ln in t.lines if "at the hardness" in ln)
     assert line.endswith("at the hardness 1.05 GPa"), line
+
+
+def test_flat_contact_adhesive_table_states_its_units(tmp_path, capsys):
+    """flat-contact --work-of-adhesion: the gap columns name their unit (µm, as the bare
+    table's 'gap (µm)'), w = 200 mJ/m², range 5 nm, peak tension w/range = 40 MPa, and
+    the engine's warning writes its lengths as the one formatter does."""
+    import re
+
+    import surfmet
+    from surfmet.synth import self_affine
+
+    topo = self_affine(64, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
+    scan = str(surfmet.write(topo, tmp_path / "sa.npz"))
+    assert main(["flat-contact", scan, "--e-star", "1GPa", "--pressures", "1MPa",
+                 "--work-of-adhesion", "200mJ/m2", "--range", "5nm", "-q"]) == 0
+    out = capsys.readouterr().out
+    assert "w = 200 mJ/m², range 5 nm, peak tension 40 MPa" in out
+    head = next(ln for ln in out.splitlines() if "A/A0 bare" in ln)
+    assert "gap bare (µm)" in head and "gap adh (µm)" in head
+    warning = next(ln for ln in out.splitlines() if "WARNING" in ln)
+    assert not re.search(r"\de-\d+ m\b", warning), warning
