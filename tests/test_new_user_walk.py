@@ -234,3 +234,22 @@ def test_flat_contact_adhesive_table_states_its_units(tmp_path, capsys):
     assert "gap bare (µm)" in head and "gap adh (µm)" in head
     warning = next(ln for ln in out.splitlines() if "WARNING" in ln)
     assert not re.search(r"\de-\d+ m\b", warning), warning
+
+
+def test_spectrum_curvature_in_the_unit_of_the_all_scales_summary(capsys):
+    """spectrum's curvature rms in 1/µm, the unit its several-measurement summary and Spc
+    print (it wrote '1.285e+05 1/m' for one file and '0.1285 1/µm' for several); the
+    number is the JSON's 1/m value times 1e-6."""
+    import json
+
+    from surfmet.data import path
+
+    plate = str(path("paper_plate.x3p"))
+    assert main(["spectrum", plate, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)["curvature_rms"]
+    assert main(["spectrum", plate]) == 0
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if "curvature rms" in ln)
+    words = line.split()
+    k = words.index("1/µm")
+    assert float(words[k - 1]) == pytest.approx(rec["spectrum"]["value"] * 1e-6, rel=1e-4)
+    assert "1/m " not in line
