@@ -253,3 +253,19 @@ def test_spectrum_curvature_in_the_unit_of_the_all_scales_summary(capsys):
     k = words.index("1/µm")
     assert float(words[k - 1]) == pytest.approx(rec["spectrum"]["value"] * 1e-6, rel=1e-4)
     assert "1/m " not in line
+
+
+def test_info_text_states_units_once_and_quantities_readably(capsys):
+    """info dektak-1.csv: the height unit once, as µm (the metadata dump repeated it as
+    'height_unit: um'), and the stylus tip radius 2.5 µm (the file's 'Radius: 2.5 µm'),
+    not "{'value': 2.5e-06, 'unit': 'm'}"."""
+    from conftest import REALDATA
+
+    f = REALDATA / "dektak-1.csv"
+    if not f.is_file():
+        pytest.skip("needs ../shared/realdata")
+    assert main(["info", str(f)]) == 0
+    out = capsys.readouterr().out
+    assert "height unit   µm" in out and "height_unit:" not in out
+    assert "  tip_radius: 2.5 µm" in out.splitlines()
+    assert "'unit': 'm'" not in out
