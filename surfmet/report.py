@@ -36,7 +36,7 @@ import json
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.report_figures import figures_areal, figures_profile, spectrum_section
@@ -48,6 +48,9 @@ from surfmet.report_html import (
     quantity_text,
 )
 from surfmet.units import valid_text
+
+if TYPE_CHECKING:
+    from surfmet.measurements import Measurement
 
 _CSS = """
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
@@ -122,14 +125,16 @@ class ScanSection:
 # computing a section
 
 
-def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
+def scan_section(path: str | Path | Measurement, options: dict[str, Any] | None = None, *,
                  include_3d: bool = True, hertz: HertzOptions | None = None,
                  read_options: dict[str, Any] | None = None) -> ScanSection:
     """Compute everything the report shows for one scan; errors end up in the section.
 
     Parameters
     ----------
-    path : str or Path
+    path : str, Path or surfmet.measurements.Measurement
+        A scan file, or one measurement of a container (its section is named
+        ``CONTAINER:MEMBER``, as the roughness command names its record).
     options : dict, optional
         Keyword arguments of :func:`surfmet.roughness.roughness` (level, ls, lc, window,
         profile, spikes, edge, standard, n_sampling, rk_line, valley_suppression), as
@@ -140,12 +145,17 @@ def scan_section(path: str | Path, options: dict[str, Any] | None = None, *,
         Add the Hertz-check section.
     """
     import surfmet
+    from surfmet.measurements import Measurement, read_measurement
 
     options = dict(options or {})
-    sec = ScanSection(file=str(path))
+    sec = ScanSection(file=str(path))  # a container's measurement: CONTAINER:MEMBER
     try:
-        scan = surfmet.read(path, **(read_options or {}))  # --height-unit, --pixel...
-        _evaluate(sec, scan, options, include_3d, read_options)
+        if isinstance(path, Measurement):
+            scan = read_measurement(path, **(read_options or {}))
+        else:
+            scan = surfmet.read(path, **(read_options or {}))  # --height-unit, --pixel...
+        _evaluate(sec, scan, options, include_3d, read_options,
+                  measurement=isinstance(path, Measurement))
     except Exception as exc:  # a failing scan (a bug too) is reported; the others go on
         sec.status, sec.error = "error", _error_text(exc)
         return sec
@@ -172,14 +182,16 @@ def _error_text(exc: BaseException) -> str:
 
 
 def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: bool,
-              read_options: dict[str, Any] | None = None) -> None:
+              read_options: dict[str, Any] | None = None, measurement: bool = False) -> None:
     """Fill ``sec`` from the functions the commands call: ``scan_record`` (info),
     :func:`surfmet.roughness.roughness` with the roughness command's options, and the
     spectrum command's :func:`surfmet.mechanics.spectrum.scan_spectrum`."""
     from surfmet.file_info import info_record
     from surfmet.roughness import roughness
 
-    sec.info = _jsonable(info_record(sec.file, scan, read_options=read_options))
+    # a measurement's info is its own (the container's listing is the container's)
+    sec.info = _jsonable(info_record(sec.file, scan, read_options=read_options,
+                                     listing=[] if measurement else None))
     res = roughness(scan, **options)
     sec.roughness = {"file": sec.file, "status": "ok", **res.to_json()}
     sec.kind = res.kind  # "profile" also for a row of an areal scan
@@ -393,6 +405,7 @@ def write_report(
     Parameters
     ----------
     paths : iterable of path
+        Scan files; a container's measurements each get a section.
     out : path
         The HTML file to write.
     options : dict, optional
@@ -413,8 +426,10 @@ def write_report(
         One per scan, in order (``status`` "ok" or "error").
     """
     from surfmet.batch import progress_bar
+    from surfmet.measurements import expand_measurements
 
-    paths = [str(p) for p in paths]
+    # a container's measurements each get a section, as each gets a roughness record
+    paths = expand_measurements(paths)
     if not paths:
         raise SurfmetInputError("the report needs at least one scan file")
     from surfmet.atomic import check_writable, write_text

@@ -120,7 +120,7 @@ def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
     """
     import dataclasses
 
-    from surfmet.spikes import OUTLIER_SIGMAS, SUSPECT_SQ_OVER_SA
+    from surfmet.spikes import OUTLIER_SIGMAS, REMOVE_ADVICE, SUSPECT_SQ_OVER_SA
 
     q, a, k = values.get(f"{prefix}q"), values.get(f"{prefix}a"), values.get(f"{prefix}ku")
     if not (q and a and k is not None and np.isfinite(k)):
@@ -139,8 +139,7 @@ def consistent_diagnosis(diag: Any, values: dict[str, float], prefix: str,
                f"{diag.gaussian_ratio:.3g}); no sign of spikes.")
     elif spikes_removed is None:
         msg = (f"{head} A few extreme heights (spikes, outliers, dust) dominate {names}: "
-               "remove spikes (roughness(..., spikes=True) / --spikes) or check the scan "
-               "before trusting them.")
+               + REMOVE_ADVICE)
     else:
         msg = (f"{head} This is after removing {spikes_removed} spike(s): the extreme "
                "heights left are not isolated spikes (wide dust, pits, scratches, steps or "

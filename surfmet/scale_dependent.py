@@ -150,7 +150,7 @@ def _cutoff(m: Profile | Topography, scan: Scan, tip_radius: float | None
     stated = (m.metadata.get("tip_radius") or {}).get("value")
     radius, source = (stated, "file") if stated else (tip_radius, "--tip-radius")
     if not radius:
-        return None, "no tip radius (no cut-off)", None
+        return None, "no tip radius", None
     return tip_cutoff(scan, float(radius)), f"tip radius from {source}", float(radius)
 
 

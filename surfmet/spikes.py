@@ -48,6 +48,10 @@ SUSPECT_SQ_OVER_SA = 1.5
 """Sq/Sa above this flags a surface as spiky (a Laplace distribution reaches 1.41)."""
 
 OUTLIER_SIGMAS = 10.0
+
+#: The advice a spike warning ends with (the option every scan command has; no API name).
+REMOVE_ADVICE = ("remove the spikes before levelling (--spikes) or check the scan before "
+                 "trusting them.")
 """Heights beyond this many robust σ of the height distribution count as outliers."""
 
 
@@ -166,8 +170,7 @@ def spike_diagnosis(heights: np.ndarray | Topography, prefix: str = "S") -> Spik
             f"Gaussian surface and at most ~1.4 for real textures; {k} = {sku:.3g}. "
             f"{n_out} point(s) lie beyond {OUTLIER_SIGMAS:g} robust sigma of the height "
             f"distribution. A few extreme heights (spikes, outliers, dust) dominate {q}, "
-            f"{z_}, {p_} and {k}: remove spikes (roughness(..., spikes=True) / --spikes) or "
-            "check the scan before trusting them."
+            f"{z_}, {p_} and {k}: " + REMOVE_ADVICE
         )
     else:
         msg = (

@@ -44,7 +44,7 @@ TASKS = ("contact", "hertz-check")
 BASE_COLUMNS: tuple[tuple[str, str], ...] = (
     ("index", ""), ("key", ""), ("task", ""), ("plate", ""), ("ball", ""),
     ("materials", ""), ("load", "N"), ("radius", "m"), ("position_x", "m"),
-    ("position_y", "m"), ("spikes", ""), ("status", ""), ("error", ""),
+    ("position_y", "m"), ("spikes", ""), ("status", ""), ("error", ""), ("caveats", ""),
 )
 #: The solve record (:class:`contact.record.SolveRecord`) of each row.
 SOLVE_COLUMNS: tuple[tuple[str, str], ...] = (
@@ -152,6 +152,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     row = _base(item)
     plate = surfmet.read(item.plate, **dict(item.plate_options)) if item.plate else None
     ball = surfmet.read(item.ball, **dict(item.ball_options)) if item.ball else None
+    row["caveats"] = (_scan_caveats(plate=plate, ball=ball), "")
     if item.task == "hertz-check":
         from surfmet.mechanics.hertz_check import hertz_check
         from surfmet.records.hertz import hertz_check_solve
@@ -195,6 +196,15 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     row["status"] = ("ok", "")
     row["error"] = (None, "")
     return row
+
+
+def _scan_caveats(**scans: Any) -> str | None:
+    """The units each scan's file does not state (assumed) or the user stated, as the
+    command's text and JSON give them (:meth:`surfmet.model.Calibration.caveats`), each
+    named by its body; ``; ``-joined as the ``warnings`` column, None when there are none."""
+    out = [f"{body}: {c}" for body, scan in scans.items() if scan is not None
+           for c in scan.calibration.caveats()]
+    return "; ".join(out) or None
 
 
 def _solve_columns(rec: Any) -> dict[str, tuple[Any, str]]:

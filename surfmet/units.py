@@ -369,3 +369,22 @@ def format_quantity(value: float | None, unit: str, digits: int = 4) -> str:
 def format_length(value: float, digits: int = 4) -> str:
     """Human display of a length in the most readable of nm, µm, mm, m."""
     return format_quantity(value, "m", digits)
+
+
+#: an SI value as the engines write it in their messages: ``1.45e-05 m``, ``3e+07 Pa``
+_ENGINE_QUANTITY = re.compile(
+    r"(?<![\w.^/])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) (m\^2|m|Pa|N/m|N)(?![\w^²/])")
+
+
+def readable_quantities(text: str) -> str:
+    """``text`` (an engine's message, which cannot use :func:`format_quantity`: the
+    engines never import surfmet) with each SI value written as :func:`format_quantity`
+    writes it, with as many digits as the engine gave (at least 3):
+    ``"zone (= 1.45e-05 m)"`` becomes ``"zone (= 14.5 µm)"``."""
+
+    def one(m: re.Match[str]) -> str:
+        number, unit = m.group(1), m.group(2)
+        mantissa = number.lstrip("-").split("e")[0].replace(".", "").lstrip("0")
+        return format_quantity(float(number), unit, max(3, min(len(mantissa), 6)))
+
+    return _ENGINE_QUANTITY.sub(one, text)

@@ -86,11 +86,12 @@ def test_an_ibw_with_a_subnormal_pixel_is_refused_by_every_command(tmp_path, cap
 
 
 def test_flat_contact_refuses_pressures_beyond_e_star_before_solving(capsys):
-    """--e-star 1 is 1 Pa: main ran both solves and died of a TypeError printing them."""
+    """--e-star 1Pa: main ran both solves and died of a TypeError printing them. (A bare
+    --e-star 1 is now refused for lacking its unit, the pressure rule.)"""
     assert main(["flat-contact", PLATE, "--e-star", "1Pa", "--pressures", "1MPa:10MPa:2",
                  "--quiet"]) == 1
     line = _line(capsys)
-    assert "not below E* = 1 Pa" in line and "1e+07 Pa" in line
+    assert "not below E* = 1 Pa" in line and "reach 10 MPa" in line
 
 
 def test_adhesion_refuses_a_grid_that_cannot_fit(capsys):

@@ -56,6 +56,8 @@ EPILOG = """examples:
 Lengths accept unit suffixes (nm, um, µm, mm, m); a bare number is in metres. Speeds
 accept m/s, mm/s, km/h (a bare number is m/s). A material's E and H need their unit
 (steel:E=200GPa); a name not in the table with E and nu given is a custom material.
+Pressures always need their unit (--hardness 1GPa, --e-star, --pressures); a bare
+number there is refused.
 
 One form per option in every command: the scan is the positional argument (--plate FILE
 its alias); options with several values (--loads, --pressures) take lists (4N,5N,6N) and
@@ -149,9 +151,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
     except user_error_types() as exc:
         from surfmet.cli._terms import cli_terms, command_options
+        from surfmet.units import readable_quantities
 
-        print(f"surfmet: error: {cli_terms(str(exc), command_options(parser, argv))}",
-              file=sys.stderr)
+        text = readable_quantities(cli_terms(str(exc), command_options(parser, argv)))
+        print(f"surfmet: error: {text}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("surfmet: interrupted", file=sys.stderr)

@@ -92,6 +92,9 @@ def command_inputs(actions: Iterable[argparse.Action], args: argparse.Namespace
             if name in NOT_INPUTS or action.dest in NOT_INPUTS:
                 continue
             value, unit = getattr(args, action.dest, None), _unit(action, name)
+            if hasattr(value, "calibration") and hasattr(value, "metadata"):
+                # a body read in place (read_bodies): the file the user named
+                value = value.metadata.get("source") or value.metadata.get("container")
             if name == "load" and getattr(args, "line", False) is True:
                 name, unit = "load_per_length", "N/m"  # rolling-contact --line 100N/mm
                 value = _parse_text("line_load", value) if isinstance(value, str) else value

@@ -32,8 +32,6 @@ _TERMS: tuple[tuple[str, str, str, str], ...] = (
     (r"no λc filter \(lc=None\)", "no λc filter (--lc none)", "--lc", "no λc filter"),
     (r"end_treatment='(\w+)'", r"--edge \1", "--edge", r"\1 end treatment"),
     (r"edge='(\w+)'", r"--edge \1", "--edge", r"\1 end treatment"),
-    (r"roughness\(\.\.\., spikes=True\) / --spikes", "--spikes", "--spikes",
-     "removing the spikes"),
     (r"\bplastic=True\b", "--plastic", "--plastic", "plastic"),
 )
 

@@ -105,6 +105,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
     from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record, refuse_ball
+    from surfmet.units import readable_quantities
 
     if args.line:
         refuse_ball(args.ball)  # before the scans are read
@@ -121,7 +122,7 @@ def run(args: argparse.Namespace) -> int:
         save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:
         for w in run_.result.warnings:
-            log(f"warning: {w}")
+            log(f"warning: {readable_quantities(w)}")
         emit_json((line_record if args.line else adhesion_record)(run_))
         return 0
     if run_.line:
@@ -140,14 +141,15 @@ _NEGATIVE = (" (negative: below the integration error of the approach steps; use
 
 def _print_line(run_: Any) -> None:
     """The text summary of a line-contact cycle."""
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity, readable_quantities
 
     res = run_.result
     cyc, law = res.cycle, res.law
-    print(f"cylinder        R = {format_length(res.radius)}, E* = {res.e_star / 1e9:.4g} GPa "
+    print(f"cylinder        R = {format_length(res.radius)}, E* = "
+          f"{format_quantity(res.e_star, 'Pa')} "
           "(plane strain, per unit length)")
-    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m², range {format_length(law.range)}, "
-          f"peak tension {law.peak / 1e6:.4g} MPa")
+    print(f"interaction     w = {format_quantity(law.work, 'J/m^2')}, range "
+          f"{format_length(law.range)}, peak tension {format_quantity(law.peak, 'Pa')}")
     print(f"Maugis lambda   {res.maugis_parameter:.4g}   (Tabor mu {res.tabor_parameter:.4g})")
     print(f"grid            {res.cells} cells, pixel {format_length(res.dx)}, "
           f"period {format_length(res.size)}")
@@ -158,18 +160,19 @@ def _print_line(run_: Any) -> None:
         print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
               f"{format_length(run_.scans['roughness_rms']['value'])}")
     for w in res.warnings:
-        print(f"warning         {w}")
+        print(f"warning         {readable_quantities(w)}")
 
 
 def _print(run_: Any) -> None:
     """The text summary of a cycle."""
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity, readable_quantities
 
     ball = run_.result
     cyc, law = ball.cycle, ball.law
-    print(f"sphere          R = {format_length(ball.radius)}, E* = {ball.e_star / 1e9:.4g} GPa")
-    print(f"interaction     w = {law.work * 1e3:.4g} mJ/m², range {format_length(law.range)}, "
-          f"peak tension {law.peak / 1e6:.4g} MPa")
+    print(f"sphere          R = {format_length(ball.radius)}, E* = "
+          f"{format_quantity(ball.e_star, 'Pa')}")
+    print(f"interaction     w = {format_quantity(law.work, 'J/m^2')}, range "
+          f"{format_length(law.range)}, peak tension {format_quantity(law.peak, 'Pa')}")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
     if getattr(law, "smoothing", 0.0) > 0.0:
         scale = ("the grid's scale, capped at the range" if law.smoothing >= law.range
@@ -188,7 +191,7 @@ def _print(run_: Any) -> None:
               f"{run_.scans['ball'] or '-'}; roughness rms on the grid "
               f"{format_length(run_.scans['roughness_rms']['value'])}")
     for w in ball.warnings:
-        print(f"warning         {w}")
+        print(f"warning         {readable_quantities(w)}")
 
 
 def _how(jump: Any) -> str:

@@ -136,7 +136,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _print(sol: Any, args: argparse.Namespace) -> None:
     """The text table of a solved contact."""
-    from surfmet.units import format_length, format_quantity
+    from surfmet.units import format_length, format_quantity, readable_quantities
 
     res, pair = sol.result, sol.pair
     ball_m, plate_m = sol.ball_material, sol.plate_material
@@ -163,9 +163,9 @@ def _print(sol: Any, args: argparse.Namespace) -> None:
               f"hardness {format_quantity(res.hardness, 'Pa', 5)})")
     print_solve(res.solve, "solver", warned=sol.warnings)
     for note in res.notes:
-        print(f"note           {note}")
+        print(f"note           {readable_quantities(note)}")
     for w in sol.warnings:
-        print(f"warning        {w}")
+        print(f"warning        {readable_quantities(w)}")
     if args.out:
         print(f"fields saved   {args.out}")
 

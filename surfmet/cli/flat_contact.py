@@ -213,6 +213,8 @@ def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, law
 
 
 def _print(rec: dict[str, Any]) -> None:
+    from surfmet.units import format_quantity
+
     print(f"file  {rec['file']}")
     prep = rec["scan_preparation"]
     spikes = ("spikes kept (--spikes keep)" if prep["spikes"] == "keep" else
@@ -222,7 +224,7 @@ def _print(rec: dict[str, Any]) -> None:
     g = rec["grid"]
     print(f"  {rec['boundary']} boundary, levelling {rec['levelling']}, "
           f"{g['nx']} x {g['ny']} cells, "
-          f"E* = {rec['e_star']['value'] / 1e9:.4g} GPa, "
+          f"E* = {format_quantity(rec['e_star']['value'], 'Pa')}, "
           f"h'_rms = {rec['spectrum']['slope_rms']['spectrum']['value']:.4g}")
     print(f"  {'p (MPa)':>9} {'model':>8} {'A/A0':>10} {'kappa':>7} {'gap (µm)':>9} "
           f"{'K (MPa/µm)':>11} {'err A':>8} {'err gap':>8}")
@@ -255,23 +257,27 @@ def _print(rec: dict[str, Any]) -> None:
 
 def _print_adhesion(rec: dict[str, Any]) -> None:
     """The adhesive solve beside the non-adhesive one, per pressure."""
+    from surfmet.units import format_length, format_quantity, readable_quantities
+
     ad = rec["adhesion"]
-    print(f"  adhesion: {ad['interaction']} law, w = {ad['work_of_adhesion']['value'] * 1e3:.4g} "
-          f"mJ/m², range {ad['range']['value'] * 1e9:.4g} nm, peak tension "
-          f"{ad['peak_tension']['value'] / 1e6:.4g} MPa (periodic solve)")
+    print(f"  adhesion: {ad['interaction']} law, w = "
+          f"{format_quantity(ad['work_of_adhesion']['value'], 'J/m^2')}, range "
+          f"{format_length(ad['range']['value'])}, peak tension "
+          f"{format_quantity(ad['peak_tension']['value'], 'Pa')} (periodic solve)")
     if ad["step_smoothing"]["value"] > 0.0:
         scale = ("the pixel's scale, capped at the range"
                  if ad["step_smoothing"]["value"] >= ad["range"]["value"] else "the pixel's scale")
-        print(f"  Dugdale step smoothed over {ad['step_smoothing']['value'] * 1e9:.3g} nm of "
+        print(f"  Dugdale step smoothed over {format_length(ad['step_smoothing']['value'], 3)} of "
               f"gap ({scale}: removes the pixels' pinning of the zone's end)")
-    print(f"  {'p (MPa)':>9} {'A/A0 bare':>10} {'A/A0 adh':>10} {'gap bare':>9} {'gap adh':>9} "
-          f"{'attractive (MPa)':>17}")
+    # the gaps in µm, as the non-adhesive table's 'gap (µm)'
+    print(f"  {'p (MPa)':>9} {'A/A0 bare':>10} {'A/A0 adh':>10} {'gap bare (µm)':>14} "
+          f"{'gap adh (µm)':>13} {'attractive (MPa)':>17}")
     for r in rec["results"]:
         a, b = r["adhesive"], r["bem"]
         print(f"  {r['pressure']['value'] / 1e6:9.4g} {b['area_fraction']:10.4g} "
               f"{a['contact_area_fraction']['value']:10.4g} "
-              f"{b['mean_gap']['value'] * 1e6:9.4g} {a['mean_gap']['value'] * 1e6:9.4g} "
+              f"{b['mean_gap']['value'] * 1e6:14.4g} {a['mean_gap']['value'] * 1e6:13.4g} "
               f"{a['attractive_pressure']['value'] / 1e6:17.4g}")
     print_solve(ad["solve"], "  solve")
     for w in ad["warnings"]:
-        print(f"  WARNING: {w}")
+        print(f"  WARNING: {readable_quantities(w)}")

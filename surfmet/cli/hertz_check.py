@@ -95,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.hertz_check import hertz_check
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity, readable_quantities
 
     require_plate(args.plate, "hertz-check")
     check_grid(args.grid)
@@ -127,11 +127,11 @@ def run(args: argparse.Namespace) -> int:
     for reason in c.reasons:
         print(f"  - {reason}")
     for w in check.warnings:
-        print(f"warning: {w}")
+        print(f"warning: {readable_quantities(w)}")
     print()
     print(f"{'':16}{'Hertz':>14}{'BEM':>14}")
     rows = [
-        ("peak pressure", f"{hz.p0 / 1e6:.4g} MPa", f"{c.pmax / 1e6:.4g} MPa"),
+        ("peak pressure", format_quantity(hz.p0, "Pa"), format_quantity(c.pmax, "Pa")),
         ("radius a, a*", format_length(hz.a), format_length(c.effective_radius)),
         ("approach", format_length(hz.delta), format_length(c.approach)),
         ("area / πa0²", "1", f"{c.area_fraction:.3g}"),

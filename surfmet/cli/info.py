@@ -86,8 +86,29 @@ def run(args: argparse.Namespace) -> int:
         for c, label, s, err in listing:
             print(_line(c, label, None if s is None else channel_summary(s), err, s))
     for key, value in rec["metadata"].items():
-        text = str(value)
+        if key in _SHOWN_ABOVE:  # the lines above state them, in the text's units
+            continue
+        text = _metadata_text(value)
         if len(text) > 100:
             text = text[:97] + "..."
         print(f"  {key}: {text}")
     return 0
+
+
+#: metadata the header lines already state (units, their sources, the channel listing)
+_SHOWN_ABOVE = frozenset({"height_unit", "lateral_unit", "lateral_calibrated",
+                          "height_unit_source", "lateral_unit_source", "channels",
+                          "channel_grids"})
+
+
+def _metadata_text(value: Any) -> str:
+    """A metadata value as text: a quantity ``{"value", "unit"}`` as the one formatter
+    writes it (``8.786 nm``, not ``{'value': 8.78e-09, 'unit': 'm'}``)."""
+    from surfmet.units import format_quantity
+
+    if isinstance(value, dict) and set(value) == {"value", "unit"} and isinstance(
+            value["value"], (int, float)) and not isinstance(value["value"], bool):
+        return format_quantity(float(value["value"]), str(value["unit"]), 6)
+    if isinstance(value, dict):  # e.g. a region's x, y, width: each as above
+        return "{" + ", ".join(f"{k}: {_metadata_text(v)}" for k, v in value.items()) + "}"
+    return str(value)

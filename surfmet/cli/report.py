@@ -29,8 +29,10 @@ EPILOG = """examples:
 The page holds, per scan: the instrument metadata, the parameter table with units and
 the filters used, the 3D view, height map, Abbott-Firestone curve and PSD (profile plots
 for a profile), and with --radius, --load and --materials the Hertz check. Pictures are
-embedded (data URIs): the single file opens offline. A scan that fails gets its error in
-the page (the others are reported all the same) and the exit status is 1.
+embedded (data URIs): the single file opens offline. A container's measurements each get
+a section (CONTAINER:MEMBER, as surfmet roughness names its records). A scan that fails
+gets its error in the page (the others are reported all the same) and the exit status
+is 1.
 
 Every number is the one the commands give for the same file and options: the parameters
 are surfmet roughness's (the evaluation options below are its options, with its defaults:

@@ -120,7 +120,7 @@ def run(args: argparse.Namespace) -> int:
 
     from surfmet.errors import SurfmetInputError
     from surfmet.mechanics.rolling_resistance import rolling_resistance
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity
 
     args.loads = sorted(set(args.loads))  # a sweep runs up the loads (warm starts)
     refuse_unused(args, _DEFAULTS, args.model, MODEL_OPTIONS)
@@ -167,7 +167,7 @@ def run(args: argparse.Namespace) -> int:
              if s.model == "hysteresis" else
              f" (mu = {args.mu:g}, traction ratio {args.traction_ratio:g})"
              if s.model == "microslip" else
-             f" (first pass, hardness {s.settings['hardness'] / 1e9:.4g} GPa)"))
+             f" (first pass, hardness {format_quantity(s.settings['hardness'], 'Pa')})"))
     if s.fit is not None:
         print(f"lambda_eff     {s.lambda_eff:.4f}   "
               f"{100 * s.fit.confidence:.0f} % CI [{lo_ci:.4f}, {hi_ci:.4f}]  "

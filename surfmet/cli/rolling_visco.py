@@ -117,6 +117,7 @@ def _print_sweep(s: Any, speed: float) -> None:
 
 def _print_all(rep: Any) -> None:
     from surfmet.mechanics.viscoelastic_rolling import reaches_offset
+    from surfmet.units import format_quantity
 
     c = rep.comparison
     ns, n1, n2 = c.rotor_loads
@@ -125,7 +126,7 @@ def _print_all(rep: Any) -> None:
           f"J + M R² = {c.rolling_inertia:.4g} kg m²")
     print(f"assumed            speed {a['speed']:g} m/s, loss factor ball {a['loss_ball']:g}, "
           f"plate {a['loss_plate']:g} (alpha_h = {a['alpha_h']:.3g}), H = "
-          f"{a['hardness'] / 1e9:.3g} GPa, smooth pair")
+          f"{format_quantity(a['hardness'], 'Pa', 3)}, smooth pair")
     for m in c.mechanisms:
         print(f"  {m.name:19s} {m.assumption}")
     v = rep.verdict

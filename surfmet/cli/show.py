@@ -87,8 +87,11 @@ def run(args: argparse.Namespace) -> int:
                                 f"*.png (got {out.name}), or use --2d for pdf/svg")
     # the surface surfmet roughness evaluates, with its options: one file, one answer
     res = roughness(scan, **roughness_options(args))
+    drawn = _measurement_drawn(scan)
     rec: dict[str, Any] = {"file": args.file, "output": str(out),
                            "caveats": scan_caveats(scan)}
+    if drawn:
+        rec["measurement"] = drawn
     if res.kind == "profile":
         if not args.two_d:
             log("surfmet: a profile has no 3D view; drawing its profiles")
@@ -108,13 +111,28 @@ def run(args: argparse.Namespace) -> int:
         img = render_3d(res.surface, out, exaggeration=args.exaggeration, cmap=args.cmap,
                         window_size=args.size, max_points=args.max_points)
         rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])], shown=[])
-    rec["roughness"] = {"file": args.file, "status": "ok", **res.to_json()}
+    # named as the roughness command names the record of the same surface
+    rec["roughness"] = {"file": drawn["name"] if drawn else args.file, "status": "ok",
+                        **res.to_json()}
     if args.json:
         emit_json(rec)
     else:
         log(f"wrote {out}")
+        if drawn:
+            log(f"note: drew measurement {drawn['index'] + 1} of {drawn['of']} of the "
+                f"container ({drawn['name']}); --channel N|NAME draws another")
         print_caveats(rec["caveats"], sys.stderr)
     return 0
+
+
+def _measurement_drawn(scan: Any) -> dict[str, Any] | None:
+    """Which measurement of a container the view draws (None for a lone scan): its name
+    ``CONTAINER:MEMBER`` (that of its roughness record), index and the container's count."""
+    md = scan.metadata
+    if "container" not in md or "member" not in md:
+        return None
+    return {"name": f"{md['container']}:{md['member']}", "index": int(md["measurement"]),
+            "of": len(md.get("channels") or ()) or 1}
 
 
 def _check_picture(args: argparse.Namespace) -> None:

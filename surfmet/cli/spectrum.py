@@ -143,8 +143,9 @@ def _print(rec: dict[str, Any], s: Any) -> None:
     print(f"  h_rms            {format_length(s.h_rms)} (spectrum), "
           f"{format_length(s.h_rms_real)} (real space)")
     print(f"  h'_rms *         {s.slope_rms:.5g} (spectrum), {s.slope_rms_real:.5g} (real space)")
-    print(f"  curvature rms *  {s.curvature_rms:.5g} 1/m (spectrum), "
-          f"{s.curvature_rms_real:.5g} 1/m (real space)")
+    # in the unit the all-scales summary and Spc use (the one formatter's 1/µm)
+    print(f"  curvature rms *  {format_quantity(s.curvature_rms, '1/m', 5)} (spectrum), "
+          f"{format_quantity(s.curvature_rms_real, '1/m', 5)} (real space)")
     sm = s.summits
     print(f"  Nayak alpha *    {sm.alpha:.4g}")
     print(f"  summits *        density {format_quantity(sm.density, '1/m^2', 5)}, radius "

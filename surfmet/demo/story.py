@@ -10,7 +10,7 @@ from typing import Any
 
 from contact.record import SolveRecord
 from surfmet.demo.outputs import SUMMARY
-from surfmet.units import format_length
+from surfmet.units import format_length, format_quantity
 
 
 def _v(q: Any) -> float:
@@ -87,13 +87,15 @@ def _ball(t: _Text, summary: dict[str, Any]) -> None:
     b = summary["ball"]
     sp = b["sphere"]
     t.head("2. The ball's radius")
-    t.add(f"  best-fit sphere  R = {_v(sp['radius']) * 1e3:.4f} mm ± "
-          f"{_v(sp['radius_uncertainty']) * 1e6:.2f} µm (k = 1), nominal "
-          f"{_v(b['nominal_radius']) * 1e3:g} mm")
+    # the radius, its uncertainty and the residuals as surfmet fit prints them
+    t.add(f"  best-fit sphere  R = {format_length(_v(sp['radius']), 8)} ± "
+          f"{format_length(_v(sp['radius_uncertainty']), 3)} (k = 1), nominal "
+          f"{format_length(_v(b['nominal_radius']))}")
     t.add(f"  R - nominal = {_v(b['radius_minus_nominal']) * 1e6:+.1f} µm = "
           f"{_v(b['radius_minus_nominal_in_uncertainties']):+.0f} uncertainties")
-    t.add(f"  sphere residual {_um(sp['rms_residual'], 2)} rms (roughness, outliers, form);"
-          f" form deviation {_um(sp['form_pv'], 2)} (PV of its quadratic component)")
+    t.add(f"  sphere residual {format_length(_v(sp['rms_residual']))} rms (roughness, "
+          f"outliers, form); form deviation {format_length(_v(sp['form_pv']))} (PV of its "
+          "quadratic component)")
     t.add(f"  circle fits: {b['row_circle']['profile']} R = "
           f"{_v(b['row_circle']['radius']) * 1e3:.3f} mm, "
           f"{b['column_circle']['profile']} R = "
@@ -107,7 +109,7 @@ def _hertz(t: _Text, summary: dict[str, Any]) -> None:
            f"{d['materials']['ball']} on {d['materials']['plate']})")
     t.add(f"  Hertz: δ0 = {_um(h['hertz']['delta'])} (paper {_um(h['paper']['delta'])}), "
           f"a0 = {_um(h['hertz']['a'], 1)} (paper {_um(h['paper']['a'], 1)}), p0 = "
-          f"{_v(h['hertz']['p0']) / 1e6:.0f} MPa")
+          f"{format_quantity(_v(h['hertz']['p0']), 'Pa', 3)}")
     verdict = ("Hertz cannot be judged (the scan's pixel does not resolve the contact)"
                if h.get("judged") is False else
                "Hertz holds" if h["hertz_holds"] else "Hertz does NOT hold")
@@ -131,7 +133,7 @@ def _contact(t: _Text, summary: dict[str, Any]) -> None:
     a_hz = math.pi * _v(c["hertz"]["a"]) ** 2
     t.add(f"  {c['n_clusters']} contact spots, real area {_v(c['contact_area']) / a_hz:.3g}"
           f" × π a0², of which {_v(c['plastic_area']) / a_hz:.3g} × π a0² at the "
-          f"hardness {_v(c['hardness']) / 1e6:.0f} MPa")
+          f"hardness {format_quantity(_v(c['hardness']), 'Pa', 3)}")  # as the Hertz check
     t.add(f"  regime: {c['regime']}")
 
 

@@ -222,15 +222,16 @@ def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
     >>> print(solution_warnings(res, material_pair("steel,aluminium"))[0][:60])
     max pressure 3367 MPa exceeds the softer body's hardness (10
     """
-    from surfmet.units import format_length
+    from surfmet.units import format_length, format_quantity
 
     out = []
     if res.hardness is None:
         h = mats.hardness
         limit, what = (h, "the softer body's hardness") if h else (res.e_star, "E*")
         if res.pmax > limit:
-            out.append(f"max pressure {res.pmax / 1e6:.4g} MPa exceeds {what} "
-                       f"({limit / 1e6:.4g} MPa): beyond the elastic limit this model allows; "
+            out.append(f"max pressure {format_quantity(res.pmax, 'Pa')} exceeds {what} "
+                       f"({format_quantity(limit, 'Pa')}): beyond the elastic limit this model "
+                       "allows; "
                        "solve elastic-plastic (--plastic or --hardness), and check the scans "
                        "for spikes")
     coarse = grid_warnings(res)

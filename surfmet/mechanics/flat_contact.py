@@ -410,8 +410,11 @@ def _yield_caveats(p: np.ndarray, hardness: float | None) -> tuple[str, ...]:
     """A nominal pressure at or above the hardness: the nominal area flows (Tabor)."""
     if hardness is None or not np.any(p >= hardness):
         return ()
-    over = ", ".join(f"{v / 1e6:.4g} MPa" for v in p[p >= hardness])
-    return (f"nominal pressure {over} at or above the hardness H = {hardness / 1e6:.4g} MPa: "
+    from surfmet.units import format_quantity
+
+    over = ", ".join(format_quantity(v, "Pa") for v in p[p >= hardness])
+    return (f"nominal pressure {over} at or above the hardness H = "
+            f"{format_quantity(hardness, 'Pa')}: "
             "the whole nominal area would flow, so the contact is fully plastic and none of "
             "the elastic theories (nor an elastic BEM) describes it",)
 
