@@ -16,6 +16,14 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
 * the reliability cut-off comes from the probe: the tip radius that the file states, else
   ``tip_radius=`` (``--tip-radius``), through :func:`profiles.scales.tip_cutoff`; without
   a radius there is no cut-off (stated as such);
+* direction (``direction=``, ``--direction``): the derivatives of a map are taken along x
+  (the rows; the default, the one SurfaceTopography's tests of maps use), along y (the
+  columns: the map is transposed, for every statistic), or along ``both`` axes: as
+  SurfaceTopography hands the statistic the x and the y derivative, the two axes'
+  variances are added (for the slope, the rms of the gradient |∇h|, as Sdq is; for the
+  curvature, of (h_xx, h_yy)) and the ACF, rms height and PSD are the mean of the two
+  axes'; each axis' reliability cut-off is its own, the larger one stated. Profiles are
+  always taken along their length;
 * PSD: each measurement's 1D PSD along x (Hann window, mean removed: the data are not
   periodic; maps: mean of the row PSDs; nonuniform profiles resampled at their mean step),
   kept for ``2π/q`` above the cut-off, averaged over the DFT points in each log bin around
@@ -48,6 +56,16 @@ from profiles.scales import (
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Profile, Topography
 
+#: The axes a map's derivatives may be taken along (module notes).
+DIRECTIONS = ("x", "y", "both")
+#: What each direction means, in words (text and JSON state it).
+DIRECTION_WORDS = {
+    "x": "along x (rows); profiles along their length",
+    "y": "along y (columns); profiles along their length",
+    "both": "along x and y: slope and curvature variances of the two axes added "
+            "(rms gradient), ACF, rms height and PSD the mean of the two; profiles along "
+            "their length",
+}
 _EDGE = 1e-9  # relative margin on the grid's bandwidth tests (floating noise at decades)
 
 
@@ -88,6 +106,7 @@ class ScaleAnalysis:
     psd: np.ndarray
     measurements: tuple[Measurement, ...]
     per_decade: int
+    direction: str = "x"
 
     def contributors(self, quantity: str = "slope") -> np.ndarray:
         """Boolean (measurements x distances): who votes where."""
@@ -189,8 +208,17 @@ def _vbm_on_grid(scan: Scan, d: np.ndarray, shortest: float) -> np.ndarray:
     return out
 
 
-def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None
-             ) -> Measurement:
+def along_y(m: Topography) -> Topography:
+    """The map transposed (its columns as rows), so that 'along x' reads along y."""
+    return m.replace(heights=m.heights.T, dx=m.dy, dy=m.dx)
+
+
+def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None,
+             direction: str = "x") -> Measurement:
+    if isinstance(m, Topography) and direction == "y":
+        return _measure(along_y(m), d, tip_radius)
+    if isinstance(m, Topography) and direction == "both":
+        return _both_axes(_measure(m, d, tip_radius), _measure(along_y(m), d, tip_radius))
     scan = to_scan(m)
     pixel, size = scan.bandwidth()
     cut, source, radius = _cutoff(m, scan, tip_radius)
@@ -206,6 +234,19 @@ def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None
     kind = "map" if scan.is_map else ("profile" if scan.x is None else "nonuniform profile")
     return Measurement(name, kind, pixel, size, cut, source, radius, vs, vc, acf,
                        _vbm_on_grid(scan, d, low), _psd_on_grid(m, scan, 2 * np.pi / d, low))
+
+
+def _both_axes(mx: Measurement, my: Measurement) -> Measurement:
+    """One map's statistics along both axes from those along x and along y (module
+    notes): variances added, the other curves averaged; the larger cut-off stated."""
+    cuts = [c for c in (mx.cutoff, my.cutoff) if c is not None]
+    cut = max(cuts) if cuts else None
+    source = my.cutoff_source if cut is not None and cut == my.cutoff else mx.cutoff_source
+    return Measurement(mx.file, mx.kind, mx.pixel, mx.size, cut, source, mx.tip_radius,
+                       mx.variance_slope + my.variance_slope,
+                       mx.variance_curvature + my.variance_curvature,
+                       0.5 * (mx.acf + my.acf), 0.5 * (mx.vbm + my.vbm),
+                       0.5 * (mx.psd + my.psd))
 
 
 def _check_overlap(ms: list[Measurement]) -> None:
@@ -235,7 +276,7 @@ def _mean(values: list[np.ndarray]) -> np.ndarray:
 
 
 def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | None = None,
-                   per_decade: int = 5) -> ScaleAnalysis:
+                   per_decade: int = 5, direction: str = "x") -> ScaleAnalysis:
     """Scale-dependent statistics of one surface measured by ``scans``.
 
     Parameters
@@ -248,12 +289,18 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
         Probe radius (m) for the measurements whose file states none.
     per_decade : int
         Points per decade of the distance grid.
+    direction : {"x", "y", "both"}
+        The axis (or axes) a map's derivatives are taken along (module notes); profiles
+        are taken along their length whatever it is.
 
     Raises
     ------
     SurfmetInputError
-        No scan, a tip radius masking everything, or a gap between bandwidths.
+        No scan, a tip radius masking everything, a gap between bandwidths, or an
+        unknown direction.
     """
+    if direction not in DIRECTIONS:
+        raise SurfmetInputError(f"unknown direction {direction!r}: use x, y or both")
     if not scans:
         raise SurfmetInputError("no measurement to analyse")
     if tip_radius is not None and not (math.isfinite(tip_radius) and tip_radius > 0):
@@ -261,10 +308,10 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     scans = [level_as_stated(s) for s in scans]
     bands = [to_scan(s).bandwidth() for s in scans]
     d = distance_grid(min(b[0] for b in bands), max(b[1] for b in bands), per_decade)
-    ms = [_measure(s, d, tip_radius) for s in scans]
+    ms = [_measure(s, d, tip_radius, direction) for s in scans]
     _check_overlap(ms)
     vs = _mean([m.variance_slope for m in ms])
     vc = _mean([m.variance_curvature for m in ms])
     return ScaleAnalysis(d, np.sqrt(vs), np.sqrt(vc), _mean([m.acf for m in ms]),
                          _mean([m.vbm for m in ms]), 2 * np.pi / d, _mean([m.psd for m in ms]),
-                         tuple(ms), per_decade)
+                         tuple(ms), per_decade, direction)
