@@ -16,9 +16,18 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
 * the reliability cut-off comes from the probe: the tip radius that the file states, else
   ``tip_radius=`` (``--tip-radius``), through :func:`profiles.scales.tip_cutoff`; without
   a radius there is no cut-off (stated as such);
-* PSD: averaged as contact.engineering averages it (:mod:`surfmet.averaged_psd`): each
-  measurement's 1D PSD along x on its own DFT wavevectors (periodic Hann window, levelled
-  as the container states; maps: mean of the rows; nonuniform profiles: their
+* direction (``direction=``, ``--direction``): the derivatives of a map are taken along x
+  (the rows; the default, the one SurfaceTopography's tests of maps use), along y (the
+  columns: the map is transposed, for every statistic), or along ``both`` axes: as
+  SurfaceTopography hands the statistic the x and the y derivative, the two axes'
+  variances are added (for the slope, the rms of the gradient |∇h|, as Sdq is; for the
+  curvature, of (h_xx, h_yy)) and the ACF and rms height are the mean of the two axes';
+  each axis' reliability cut-off is its own, the larger one stated. Profiles are always
+  taken along their length;
+* PSD (along x; along y with ``direction="y"``; with ``both`` along x, as
+  contact.engineering averages a map's rows): averaged as contact.engineering averages it
+  (:mod:`surfmet.averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors
+  (periodic Hann window, levelled as the container states; maps: mean of the rows; nonuniform profiles: their
   piecewise-linear curve, 5x oversampled), kept below ``2π/cut-off``, bin-averaged in log
   bins of q of its own decades and averaged over the measurements with data in each bin
   (equal votes, abscissas averaged too); ``q`` and ``psd`` are on those bins (10 per
@@ -49,6 +58,16 @@ from profiles.scales import (
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Profile, Topography
 
+#: The axes a map's derivatives may be taken along (module notes).
+DIRECTIONS = ("x", "y", "both")
+#: What each direction means, in words (text and JSON state it).
+DIRECTION_WORDS = {
+    "x": "along x (rows); profiles along their length",
+    "y": "along y (columns); profiles along their length",
+    "both": "along x and y: slope and curvature variances of the two axes added "
+            "(rms gradient), ACF, rms height and PSD the mean of the two; profiles along "
+            "their length",
+}
 _EDGE = 1e-9  # relative margin on the grid's bandwidth tests (floating noise at decades)
 
 
@@ -90,6 +109,7 @@ class ScaleAnalysis:
     measurements: tuple[Measurement, ...]
     per_decade: int
     psd_per_decade: int = 10
+    direction: str = "x"
 
     def contributors(self, quantity: str = "slope") -> np.ndarray:
         """Boolean (measurements x distances): who votes where."""
@@ -176,8 +196,17 @@ def _vbm_on_grid(scan: Scan, d: np.ndarray, shortest: float) -> np.ndarray:
     return out
 
 
-def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None
-             ) -> Measurement:
+def along_y(m: Topography) -> Topography:
+    """The map transposed (its columns as rows), so that 'along x' reads along y."""
+    return m.replace(heights=m.heights.T, dx=m.dy, dy=m.dx)
+
+
+def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None,
+             direction: str = "x") -> Measurement:
+    if isinstance(m, Topography) and direction == "y":
+        return _measure(along_y(m), d, tip_radius)
+    if isinstance(m, Topography) and direction == "both":
+        return _both_axes(_measure(m, d, tip_radius), _measure(along_y(m), d, tip_radius))
     scan = to_scan(m)
     pixel, size = scan.bandwidth()
     cut, source, radius = _cutoff(m, scan, tip_radius)
@@ -193,6 +222,20 @@ def _measure(m: Profile | Topography, d: np.ndarray, tip_radius: float | None
     kind = "map" if scan.is_map else ("profile" if scan.x is None else "nonuniform profile")
     return Measurement(name, kind, pixel, size, cut, source, radius, vs, vc, acf,
                        _vbm_on_grid(scan, d, low), measurement_spectrum(m, scan, cut))
+
+
+def _both_axes(mx: Measurement, my: Measurement) -> Measurement:
+    """One map's statistics along both axes from those along x and along y (module
+    notes): variances added, the ACF and rms height averaged, the PSD that along x;
+    the larger cut-off stated."""
+    cuts = [c for c in (mx.cutoff, my.cutoff) if c is not None]
+    cut = max(cuts) if cuts else None
+    source = my.cutoff_source if cut is not None and cut == my.cutoff else mx.cutoff_source
+    return Measurement(mx.file, mx.kind, mx.pixel, mx.size, cut, source, mx.tip_radius,
+                       mx.variance_slope + my.variance_slope,
+                       mx.variance_curvature + my.variance_curvature,
+                       0.5 * (mx.acf + my.acf), 0.5 * (mx.vbm + my.vbm),
+                       mx.psd)  # the PSD along x: contact.engineering's average of rows
 
 
 def _check_overlap(ms: list[Measurement]) -> None:
@@ -222,7 +265,8 @@ def _mean(values: list[np.ndarray]) -> np.ndarray:
 
 
 def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | None = None,
-                   per_decade: int = 5, psd_per_decade: int | None = None) -> ScaleAnalysis:
+                   per_decade: int = 5, psd_per_decade: int | None = None,
+                   direction: str = "x") -> ScaleAnalysis:
     """Scale-dependent statistics of one surface measured by ``scans``.
 
     Parameters
@@ -238,12 +282,18 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     psd_per_decade : int, optional
         Bins per decade of q of the averaged PSD, independent of the distance grid
         (default :data:`surfmet.averaged_psd.PSD_PER_DECADE`, contact.engineering's).
+    direction : {"x", "y", "both"}
+        The axis (or axes) a map's derivatives are taken along (module notes); profiles
+        are taken along their length whatever it is.
 
     Raises
     ------
     SurfmetInputError
-        No scan, a tip radius masking everything, or a gap between bandwidths.
+        No scan, a tip radius masking everything, a gap between bandwidths, or an
+        unknown direction.
     """
+    if direction not in DIRECTIONS:
+        raise SurfmetInputError(f"unknown direction {direction!r}: use x, y or both")
     if not scans:
         raise SurfmetInputError("no measurement to analyse")
     if tip_radius is not None and not (math.isfinite(tip_radius) and tip_radius > 0):
@@ -251,7 +301,7 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     scans = [level_as_stated(s) for s in scans]
     bands = [to_scan(s).bandwidth() for s in scans]
     d = distance_grid(min(b[0] for b in bands), max(b[1] for b in bands), per_decade)
-    ms = [_measure(s, d, tip_radius) for s in scans]
+    ms = [_measure(s, d, tip_radius, direction) for s in scans]
     _check_overlap(ms)
     from surfmet.averaged_psd import PSD_PER_DECADE, average_psd
 
@@ -263,4 +313,4 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     vc = _mean([m.variance_curvature for m in ms])
     return ScaleAnalysis(d, np.sqrt(vs), np.sqrt(vc), _mean([m.acf for m in ms]),
                          _mean([m.vbm for m in ms]), spec.q, spec.C, tuple(ms), per_decade,
-                         spec.per_decade)
+                         spec.per_decade, direction)

@@ -77,7 +77,7 @@ def test_moment_edge_treatment_keeps_a_plane_exactly(holes):
         z[rng.random(z.shape) < 0.2] = np.nan
         z[40:70, 90:130] = np.nan
     topo = Topography(z, 1e-6, 1e-6)
-    r, info = l_filter(topo, 60e-6)
+    r, info = l_filter(topo, 60e-6, edge="moment")
     assert info.edge == "moment"
     assert np.nanmax(np.abs(r.heights)) < 1e-18
     assert np.array_equal(np.isnan(r.heights), np.isnan(z))
@@ -91,7 +91,7 @@ def test_discard_band_and_interior_equality():
     z = rng.standard_normal((200, 260)) * 1e-6
     topo = Topography(z, 1e-6, 1e-6)
     rd, info = l_filter(topo, 50e-6, edge="discard")
-    rm, _ = l_filter(topo, 50e-6)
+    rm, _ = l_filter(topo, 50e-6, edge="moment")
     assert info.discarded == (25, 25)
     assert np.isnan(rd.heights[:25]).all() and np.isnan(rd.heights[:, -25:]).all()
     # More than λc from every edge all treatments are the plain ISO filter.
@@ -106,7 +106,7 @@ def test_holes_do_not_spread_and_do_not_bias():
     z = np.sin(2 * np.pi * i * dx / lam) * 1e-6
     zh = z.copy()
     zh[rng.random(z.shape) < 0.3] = np.nan
-    m, _ = s_filter(Topography(zh, dx, dx), 2.5e-6)
+    m, _ = s_filter(Topography(zh, dx, dx), 2.5e-6, edge="moment")
     ok = np.isfinite(zh)
     assert np.array_equal(np.isfinite(m.heights), ok)
     # λ = 8 λs: the S-filter passes 99.1 %; a zero-filled filter would lose 30 %.

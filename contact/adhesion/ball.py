@@ -48,6 +48,8 @@ from contact.zone_resolution import (  # noqa: F401 (the thresholds, re-exported
     MIN_ZONE_PIXELS,
     MIN_ZONE_PIXELS_PLAIN,
     min_zone_pixels,
+    process_zone,
+    pull_off_excess,
 )
 
 #: A JKR contact radius at zero load of fewer pixels than this is under-resolved.
@@ -169,7 +171,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     farthest = -(1.5 * d_scale + 1.2 * (reach * reach / (2.0 * radius)))
     cycle = approach_retraction(problem, np.linspace(farthest, deepest, int(steps)), tol=tol,
                                 progress=progress)
-    zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)
+    zone = process_zone(e_star, law.work, law.peak)
     return AdhesiveBall(
         radius=float(radius), e_star=float(e_star), law=law, grid=int(grid),
         size=float(size), dx=dx,
@@ -198,7 +200,8 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
         out.append(
             f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) "
             f"= {zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {least:g}; "
-            f"{coarse_zone_effect(cycle)}: raise the grid or shrink the domain")
+            f"{coarse_zone_effect(cycle, zone / dx if smoothed else None)}: raise the "
+            "grid or shrink the domain")
     if a0 < MIN_CONTACT_PIXELS * dx:
         out.append(
             f"grid too coarse for the contact: the JKR radius at zero load ({a0:.3g} m) spans "
@@ -213,12 +216,18 @@ def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,
     return tuple(out)
 
 
-def coarse_zone_effect(cycle: Cycle) -> str:
+def coarse_zone_effect(cycle: Cycle, zone_pixels: float | None = None) -> str:
     """What an unresolved cohesive zone does to this cycle's answer, in words: the
     pull-off comes out too large (the pixels pin the contact edge, see the module notes),
-    or, where the retraction never pulled, there is no pull-off to overestimate and the
-    adhesive tractions are what is not resolved."""
+    by the measured excess at ``zone_pixels`` where given (smoothed Dugdale step:
+    :func:`contact.zone_resolution.pull_off_excess`), or, where the retraction never
+    pulled, there is no pull-off to overestimate and the adhesive tractions are what is
+    not resolved."""
     if cycle.pull_off_force > 0.0:
+        excess = None if zone_pixels is None else pull_off_excess(zone_pixels)
+        if excess is not None:
+            return (f"the pull-off is overestimated, by about +{excess:.2g} % at this "
+                    "resolution (measured convergence, docs/adhesion.md)")
         return "the pull-off is overestimated"
     return "the adhesive tractions are not resolved (no pull-off was found at this grid)"
 

@@ -38,6 +38,20 @@ def estimate_adhesion_bytes(cells: int, steps: int) -> int:
     return BASE_BYTES + per * int(cells)
 
 
+def largest_adhesion_grid(*, steps: int, line: bool = False,
+                          available: int | None = None) -> int | None:
+    """The largest even grid (cells per side; along x for a ``line``) whose estimated peak
+    fits in :data:`contact.bem.memory.SAFETY` of the available memory; None when the
+    available memory is unknown (no limit)."""
+    avail = available_bytes() if available is None else int(available)
+    if avail is None:
+        return None
+    per = BYTES_PER_CELL + STATE_BYTES_PER_CELL * 2 * int(steps)
+    room = int(max(SAFETY * avail - BASE_BYTES, 0) // per)
+    best = room if line else math.isqrt(room)
+    return best - best % 2
+
+
 def check_adhesion_memory(n: int, *, steps: int, line: bool = False,
                           available: int | None = None) -> int:
     """Refuse an adhesion grid whose estimated peak does not fit in the available memory.
@@ -70,10 +84,7 @@ def check_adhesion_memory(n: int, *, steps: int, line: bool = False,
     avail = available_bytes() if available is None else int(available)
     if avail is None or need <= SAFETY * avail:
         return need
-    per = BYTES_PER_CELL + STATE_BYTES_PER_CELL * 2 * int(steps)
-    room = int(max(SAFETY * avail - BASE_BYTES, 0) // per)
-    best = room if line else math.isqrt(room)
-    best -= best % 2
+    best = largest_adhesion_grid(steps=steps, line=line, available=avail)
     shape = f"{n} cells" if line else f"{n} x {n} cells"
     least = 64 if line else 16  # the solvers' smallest grids
     fits = (f"the largest grid that fits is {best}{'' if line else f' x {best}'} cells: use "

@@ -14,7 +14,11 @@ Missing points (and the area outside the scan) get zero weight, and the weights 
 remain are corrected at each point. Three treatments, the same as the profile engine's
 (:mod:`profiles.filters`, ISO 16610-28), recorded in :class:`FilterInfo`:
 
-``"moment"`` (default)
+``"discard"`` (default)
+    Zeroth order, then a band of λc/2 (the run-up/run-out of ISO 3274 / ISO 4288 for
+    profiles) along each edge becomes NaN: what is kept is the ISO 16610-61 filter with
+    its complete weights (the end effects are left out, not corrected).
+``"moment"``
     First-order moment criterion: at every point the local plane under the (truncated,
     hole-masked) Gaussian weights is fitted and its value taken, i.e. a Gaussian
     regression filter of order 1 (cf. ISO 16610-71). In the interior of a complete scan it
@@ -23,9 +27,6 @@ remain are corrected at each point. Three treatments, the same as the profile en
 ``"renormalise"``
     Zeroth order: normalised convolution (Knutsson & Westin 1993), the surviving weights
     divided by their sum.
-``"discard"``
-    Zeroth order, then a band of λc/2 (the run-up/run-out of ISO 3274 / ISO 4288 for
-    profiles) along each edge becomes NaN.
 
 Outputs are NaN where the input is NaN. Short kernels are applied directly
 (:func:`scipy.ndimage.correlate1d`); long ones by FFT along each axis with zero padding (a
@@ -47,6 +48,11 @@ ALPHA = math.sqrt(math.log(2.0) / math.pi)
 """ISO 16610-61 constant α = sqrt(ln 2 / π) ≈ 0.4697."""
 
 EDGE_MODES = ("moment", "renormalise", "discard")
+#: The default edge treatment of every areal filter (and of ``surfmet roughness``): the
+#: band where the Gaussian weights run past the scan is left out, so every value kept is
+#: the ISO 16610-61 filter itself (docs/parameters.md, "Filter edges": what the ISO 16610
+#: series says of end effects, and what surfalize does).
+DEFAULT_EDGE = "discard"
 EDGE_MEANING = {
     "discard": "the band of half a nesting index along each border, where the Gaussian "
     "weights run past the scan's end (end effects), is left out; parameters come from the "
@@ -71,7 +77,7 @@ class FilterInfo:
     kind: str  # "S" or "L"
     nesting_index: float  # metres
     standard: str = "ISO 16610-61 areal Gaussian"
-    edge: str = "moment"
+    edge: str = DEFAULT_EDGE
     truncation: float = 1.0  # kernel half-width in nesting indices
     discarded: tuple[int, int] = (0, 0)  # rows, columns set to NaN along each edge
 
@@ -278,7 +284,7 @@ def _moment_masked(z: np.ndarray, valid: np.ndarray, gx, kx, gy, ky) -> np.ndarr
     return np.where(weak, order0, order1)
 
 
-def mean_surface(topo: Topography, cutoff: float, *, edge: str = "moment",
+def mean_surface(topo: Topography, cutoff: float, *, edge: str = DEFAULT_EDGE,
                  what: str = "cut-off") -> np.ndarray:
     """The Gaussian-filtered (low-pass) mean surface at nesting index ``cutoff``.
 
@@ -349,7 +355,7 @@ def _apply(topo: Topography, cutoff: float, kind: str, edge: str) -> tuple[Topog
 
 
 def s_filter(
-    topo: Topography, ls: float, *, edge: str = "moment"
+    topo: Topography, ls: float, *, edge: str = DEFAULT_EDGE
 ) -> tuple[Topography, FilterInfo]:
     """S-filter: remove wavelengths shorter than ``ls`` (keeps the Gaussian mean surface).
 
@@ -363,7 +369,7 @@ def s_filter(
 
 
 def l_filter(
-    topo: Topography, lc: float, *, edge: str = "moment"
+    topo: Topography, lc: float, *, edge: str = DEFAULT_EDGE
 ) -> tuple[Topography, FilterInfo]:
     """L-filter: remove wavelengths longer than ``lc`` (returns ``z -`` mean surface).
 

@@ -40,9 +40,13 @@ h0 = w / sigma0 for the Dugdale (Maugis) law, rho for the exponential law
 t(g) = (w / rho) exp(-g / rho). The pull-off force is the largest tension on the way out
 (displacement control). A grid that leaves the cohesive zone pi E* w / (4 sigma0^2) fewer
 than {zone:g} pixels wide is warned about (JSON grid.process_zone_pixels): the pull-off then
-comes out too large. Measured against Maugis-Dugdale on this command's sphere, Dugdale
-step smoothed on the grid (benchmarks/adhesion_zone_threshold.py): within 2.1 % from 2
-pixels up (Maugis lambda 1 to 5), up to +3.8 % between 1.5 and 2, +4.6 % to +14 % below
+comes out too large, by the measured excess the warning states. Without --grid the Dugdale
+law's grid is the one (at least 128 cells) that makes the zone {zone:g} pixels wide; where
+the memory does not allow it, the largest grid that fits is used and a warning says by how
+much the pull-off is then off (JSON grid.why; measured convergence in docs/adhesion.md).
+Measured against Maugis-Dugdale on this command's sphere, Dugdale step smoothed on the
+grid (benchmarks/adhesion_zone_threshold.py): within 2.1 % from 2 pixels up (Maugis
+lambda 1 to 5), up to +3.8 % between 1.5 and 2, +4.6 % to +14 % below
 1.1. The exponential law and --line have no smoothed step: their warning starts at {plain:g}.
 
 PLATE and --ball add the scans' roughness: the plate levelled, the ball's best-fit
@@ -82,8 +86,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    dest="range_", help="interaction range, e.g. 2nm")
     add_interaction_argument(p)
     p.add_argument("--grid", type=int, default=None, metavar="N",
-                   help="cells per side (default 128; with --line, across the period, "
-                   "default 2048)")
+                   help="cells per side (default: with the Dugdale law the grid, at least "
+                   "128, that gives the cohesive zone 2 pixels, within memory; 128 with the "
+                   "exponential law; with --line, across the period, default 2048)")
     p.add_argument("--line", action="store_true",
                    help="a cylinder of radius --radius (plane strain), per unit length")
     p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
@@ -181,6 +186,7 @@ def _print(run_: Any) -> None:
               f"({scale}: removes the pixels' pinning of the zone's end)")
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
+    print(f"                {run_.grid_why}")
     in_w_r = cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius)
     print(f"pull-off force  {_pull_off(cyc, 'µN', 1e6)}"
           + (f" = {in_w_r:.4g} pi w R (JKR 1.5, DMT 2)" if in_w_r > 0 else

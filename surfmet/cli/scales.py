@@ -39,6 +39,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan files or containers")
     add_measurement_arguments(p, 5)
+    p.add_argument("--direction", choices=("x", "y", "both"), default="x",
+                   help="axis of a map's derivatives: x (rows, default), y (columns), or "
+                   "both (the two axes' slope and curvature variances added, as "
+                   "SurfaceTopography hands x and y to the statistic)")
     add_scan_options(p)
     p.add_argument("--plot", metavar="OUT.png", default=None,
                    help="write the figure (one curve per measurement and the average)")
@@ -85,7 +89,8 @@ def run(args: argparse.Namespace) -> int:
     check_output(args.plot, "--plot")
     scans = read_measurements(args.files, **read_options(args))
     log(f"{len(scans)} measurement(s) from {len(args.files)} file(s)")
-    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
+    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade,
+                       direction=args.direction)
     rec = {"files": args.files, **scales_record(a), "caveats": scan_caveats(*scans)}
     if args.plot:
         from surfmet.plots.scales import scales_figure
@@ -102,8 +107,10 @@ def run(args: argparse.Namespace) -> int:
 def _print(a: Any) -> None:
     import numpy as np
 
+    from surfmet.scale_dependent import DIRECTION_WORDS
     from surfmet.units import format_length
 
+    print(f"derivatives {DIRECTION_WORDS[a.direction]}")
     for m in a.measurements:
         cut = format_length(m.cutoff) if m.cutoff is not None else (
             "none, every scale reliable" if m.tip_radius else "none")

@@ -12,6 +12,7 @@ the exponential one.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -112,6 +113,8 @@ class Adhesion:
         :class:`contact.adhesion.line.AdhesiveLine` (a cylinder, per unit length).
     scans : dict or None
         What scans were used and what was done to them (None: smooth surfaces).
+    grid_why : str
+        How the grid was chosen (the default resolves the cohesive zone, within memory).
 
     See Also
     --------
@@ -130,6 +133,7 @@ class Adhesion:
 
     result: Any
     scans: dict[str, Any] | None = None
+    grid_why: str = "given by the user"
 
     @property
     def line(self) -> bool:
@@ -150,10 +154,12 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     (Pa). ``plate`` and ``ball`` are scans (paths or Topography): levelled, the ball's
     sphere removed, paired and sampled onto the solver's grid
     (:func:`rough_grid`); the scans are read and checked before any solve. ``grid`` is
-    the cells per side (default 128). The Dugdale law's step is smoothed on the grid's
-    scale (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak, so the
-    same Maugis parameter), which removes most of the pixel pinning of the zone's end;
-    it is this law that reproduces Maugis (1992).
+    the cells per side (default :func:`default_grid`: for the Dugdale law the grid, at
+    least 128, that gives the cohesive zone two pixels, within memory). The Dugdale law's
+    step is smoothed on the grid's scale
+    (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`: same work and peak, so the same
+    Maugis parameter), which removes most of the pixel pinning of the zone's end;
+    the Maugis-Dugdale validation (tests/test_adhesion_validation.py) is of this law.
 
     Parameters
     ----------
@@ -168,7 +174,7 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     interaction : {"dugdale", "exponential"}
         The adhesion law (:func:`interaction_law`).
     grid, size : optional
-        Cells per side and domain side (m).
+        Cells per side (default :func:`default_grid`) and domain side (m).
     steps : int
         Approach and retraction steps.
     plate, ball : Topography or path, optional
@@ -226,17 +232,39 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
 
     mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
-    grid = 128 if grid is None else grid
-    if isinstance(grid, int) and grid >= 16:
-        check_adhesion_memory(grid, steps=steps)  # before the scans are sampled onto it
     if size is None:
         size = default_size(radius, mats.e_star, law)
+    choice = None
+    if grid is None:
+        choice = default_grid(size, mats.e_star, law, interaction, steps)
+        grid = choice.grid
+    if isinstance(grid, int) and grid >= 16:
+        check_adhesion_memory(grid, steps=steps)  # before the scans are sampled onto it
     z, scans = rough_grid(plate, ball, grid, size, spikes)
     if interaction == "dugdale":
         law = law.on_grid(size / grid, mats.e_star)
     res = adhesive_ball(radius, mats, law, grid=grid, size=size, steps=steps,
                         roughness=z, progress=progress)
-    return Adhesion(res, scans)
+    if choice is not None and choice.capped:
+        res = dataclasses.replace(res, warnings=(*res.warnings, choice.why))
+    why = choice.why if choice is not None else "given by the user"
+    return Adhesion(res, scans, why)
+
+
+def default_grid(size: float, e_star: float, law: Any, interaction: str, steps: int) -> Any:
+    """The default grid (:class:`contact.adhesion.default_grid.GridChoice`) of a cell of
+    side ``size`` (m): for the Dugdale law, whose step is smoothed on the grid, the grid
+    that resolves the cohesive zone within memory
+    (:func:`contact.adhesion.default_grid.resolving_grid`); for the exponential law, whose
+    plain step would ask ten zone pixels, the fixed :data:`LEAST_GRID` (its coarse-grid
+    warning says when that is too coarse)."""
+    from contact.adhesion.default_grid import LEAST_GRID, GridChoice, resolving_grid
+    from contact.zone_resolution import process_zone
+
+    if interaction != "dugdale":
+        return GridChoice(LEAST_GRID, LEAST_GRID, f"default for the exponential law: "
+                          f"{LEAST_GRID} cells")
+    return resolving_grid(size, process_zone(e_star, law.work, law.peak), steps=steps)
 
 
 def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
@@ -521,7 +549,8 @@ def adhesion_record(run: Adhesion) -> dict[str, Any]:
         "grid": {"cells": ball.grid, "size": quantity(ball.size, "m"),
                  "pixel": quantity(ball.dx, "m"), "periodic": True,
                  "process_zone": quantity(ball.process_zone, "m"),
-                 "process_zone_pixels": quantity(ball.process_zone / ball.dx, "")},
+                 "process_zone_pixels": quantity(ball.process_zone / ball.dx, ""),
+                 "why": run.grid_why},
         "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
         "solve": cyc.solve.to_json(),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},

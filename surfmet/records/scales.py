@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.scale_dependent import ScaleAnalysis
+from surfmet.scale_dependent import DIRECTION_WORDS, ScaleAnalysis
 
 
 def scales_record(a: ScaleAnalysis) -> dict[str, Any]:
@@ -28,7 +28,9 @@ def scales_record(a: ScaleAnalysis) -> dict[str, Any]:
     return {
         "scale_dependent": {"distance": q(a.distance, "m"), "rms_slope": q(a.rms_slope, ""),
                             "rms_curvature": q(a.rms_curvature, "1/m"),
-                            "points_per_decade": a.per_decade},
+                            "points_per_decade": a.per_decade,
+                            "direction": {"value": a.direction,
+                                          "meaning": DIRECTION_WORDS[a.direction]}},
         "height_difference_acf": {"distance": q(a.distance, "m"), "A": q(a.acf, "m^2")},
         "variable_bandwidth": {"bandwidth": q(a.distance, "m"),
                                "rms_height": q(a.vbm_rms_height, "m")},
