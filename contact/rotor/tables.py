@@ -205,8 +205,8 @@ def simulate_table(scn: Scenario, rng: np.random.Generator, fps: float = FPS,
                 tr = lane_track(scn.tracks[group], scn.lanes, rng)
             d_eps = scn.launch_sd * rng.standard_normal()
             s_r = scn.s_r[group] + d_eps * p.rolling_inertia / (n[0] ** scn.lam + n[1] ** scn.lam)
-            mis = ()
-            by = ()
+            mis: tuple[int, ...] = ()
+            by: tuple[int, ...] = ()
             if scn.misreads and rng.random() < 0.5:
                 mis = (int(rng.integers(4, scn.n_marks + 1)),)
                 by = (int(rng.choice([-1, 1]) * rng.integers(3, 6)),)
