@@ -32,9 +32,10 @@ the torque times a load contrast that vanishes at ``lambda = 1``. Hence:
   ``T = offset (J + M R^2) / c(4/3)``, as an arm and as a slope.
 
 The contact radius is Hertz's, ``a = (3 N R / (4 E*))**(1/3)``, at the ball load of the rig's
-most nearly symmetric group (the paper's materials, steel on aluminium, unless ``e_star`` is
-given). Roughness can only shrink the contact's real extent below the Hertz radius at these
-loads (the asperities carry the load on a fraction of it), so the bound is generous.
+most nearly symmetric group (the paper's materials, steel on aluminium, unless ``e_star`` or the
+rig's own ``e_star``, its plate's, is given). Roughness can only shrink the contact's real
+extent below the Hertz radius at these loads (the asperities carry the load on a fraction of
+it), so the bound is generous.
 """
 
 from __future__ import annotations
@@ -132,6 +133,8 @@ def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
     """The arm argument for an offset ``minuend - subtrahend`` of ``offset`` (rad/s²; its
     interval ``ci_low``-``ci_high``) at ``slope`` (rad) and ``mean_acceleration``."""
     basis = "given E*"
+    if e_star is None and rig.e_star is not None:
+        e_star, basis = rig.e_star, f"the rig's {rig.plate or 'plate'}"
     if e_star is None:
         e_star = composite_modulus(material(PAPER_PAIR[0]), material(PAPER_PAIR[1]))
         basis = "steel ball on aluminium plate, the paper's materials"

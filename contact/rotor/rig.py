@@ -52,7 +52,10 @@ class RigGroup:
 @dataclass(frozen=True)
 class Rig:
     """The rotor and camera (SI): ``ball_radius`` (m), ``mass`` (kg), ``axial_inertia``
-    (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None)."""
+    (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None);
+    ``e_star``: the ball-plate contact's composite modulus (Pa) that sets the friction arm's
+    Hertz bound (:mod:`contact.rotor.arm`), None for the paper's steel on aluminium;
+    ``plate``: what it is, in words."""
 
     ball_radius: float
     mass: float
@@ -61,6 +64,8 @@ class Rig:
     step: float
     slope: float | None
     groups: tuple[RigGroup, ...]
+    e_star: float | None = None
+    plate: str = ""
 
     @property
     def rolling_inertia(self) -> float:
