@@ -28,8 +28,8 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
   contact.engineering averages a map's rows): averaged as contact.engineering averages it
   (:mod:`surfmet.averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors
   (periodic Hann window, levelled as the container states; maps: mean of the rows;
-  nonuniform profiles: their piecewise-linear curve, 5x oversampled), kept below ``2π/cut-off``, bin-averaged in log
-  bins of q of its own decades and averaged over the measurements with data in each bin
+  nonuniform profiles: their piecewise-linear curve, 5x oversampled), kept below
+  ``2π/cut-off``, bin-averaged in log bins of q of its own decades and averaged over the measurements with data in each bin
   (equal votes, abscissas averaged too); ``q`` and ``psd`` are on those bins (10 per
   decade by default), not on the distance grid; variable-bandwidth rms height is
   interpolated log-log onto the distance grid and averaged likewise.
