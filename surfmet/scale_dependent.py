@@ -24,15 +24,15 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
   curvature, of (h_xx, h_yy)) and the ACF and rms height are the mean of the two axes';
   each axis' reliability cut-off is its own, the larger one stated. Profiles are always
   taken along their length;
-* PSD (along x; along y with ``direction="y"``; with ``both`` along x, as
-  contact.engineering averages a map's rows): averaged as contact.engineering averages it
-  (:mod:`surfmet.averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors
-  (periodic Hann window, levelled as the container states; maps: mean of the rows;
-  nonuniform profiles: their piecewise-linear curve, 5x oversampled), kept below
-  ``2π/cut-off``, bin-averaged in log bins of q of its own decades and averaged over the measurements with data in each bin
-  (equal votes, abscissas averaged too); ``q`` and ``psd`` are on those bins (10 per
-  decade by default), not on the distance grid; variable-bandwidth rms height is
-  interpolated log-log onto the distance grid and averaged likewise.
+* PSD (along x; along y with ``direction="y"``; with ``both`` along x, as contact.engineering
+  averages a map's rows): averaged as contact.engineering averages it
+  (:mod:`surfmet.averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors (periodic
+  Hann window, levelled as the container states; maps: mean of the rows; nonuniform profiles:
+  their piecewise-linear curve, 5x oversampled), kept below ``2π/cut-off``, bin-averaged in log
+  bins of q of its own decades and averaged over the measurements with data in each bin (equal
+  votes, abscissas averaged too); ``q`` and ``psd`` are on those bins (10 per decade by
+  default), not on the distance grid; variable-bandwidth rms height is interpolated log-log onto
+  the distance grid and averaged likewise.
 
 Bad input (one :class:`~surfmet.errors.SurfmetInputError` line each): a tip radius that
 leaves no reliable scale in any measurement, and measurements whose reliable bandwidths
