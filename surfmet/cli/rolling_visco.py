@@ -132,7 +132,7 @@ def _print_all(rep: Any) -> None:
     v = rep.verdict
     o = v.offset
     print(f"VERDICT            {v.sentence}")
-    from surfmet.mechanics.rotor_sensitivity import label_swap_text
+    from surfmet.mechanics.rotor_verdict import label_swap_text
 
     if label_swap_text(v):
         print(f"labels             {label_swap_text(v)}")

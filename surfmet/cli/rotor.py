@@ -18,7 +18,6 @@ from typing import Any
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
 from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.rotor_argument import differences_lines
 from surfmet.mechanics.rotor_verdict import (
     table_verdict,
     verdict_figure,
@@ -478,9 +477,7 @@ def run(args: argparse.Namespace) -> int:
                    **analysis_record(an, source)})
     else:
         if verdict is not None:
-            print("\n".join(verdict_lines(verdict)))
-            print()
-            print("\n".join(differences_lines(verdict, an)))
+            print("\n".join(verdict_lines(verdict, an)))
             print()
         _print_summary(an, source)
     return 0

@@ -257,7 +257,39 @@ def default_grid(size: float, e_star: float, law: Any, interaction: str, steps: 
     that resolves the cohesive zone within memory
     (:func:`contact.adhesion.default_grid.resolving_grid`); for the exponential law, whose
     plain step would ask ten zone pixels, the fixed :data:`LEAST_GRID` (its coarse-grid
-    warning says when that is too coarse)."""
+    warning says when that is too coarse).
+
+    Parameters
+    ----------
+    size : float
+        Side of the periodic cell (m).
+    e_star : float
+        Composite modulus E* (Pa).
+    law : DugdaleLaw or ExponentialLaw
+        The interaction (:func:`interaction_law`).
+    interaction : {"dugdale", "exponential"}
+        Its name.
+    steps : int
+        Approach and retraction steps (the memory estimate keeps every state).
+
+    Returns
+    -------
+    contact.adhesion.default_grid.GridChoice
+        The cells per side, the cells the zone would want, and why (with the pull-off's
+        measured excess where memory caps the grid).
+
+    Examples
+    --------
+    Halving the range (at the same work) narrows the cohesive zone, so the default grid
+    that gives it two pixels grows:
+
+    >>> from surfmet.mechanics.adhesion import default_grid, interaction_law
+    >>> for range_ in (2e-9, 1e-9):
+    ...     law = interaction_law("dugdale", 0.05, range_)
+    ...     print(default_grid(4e-6, 1e9, law, "dugdale", 40).grid)
+    128
+    512
+    """
     from contact.adhesion.default_grid import LEAST_GRID, GridChoice, resolving_grid
     from contact.zone_resolution import process_zone
 

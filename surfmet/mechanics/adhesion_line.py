@@ -32,7 +32,27 @@ if TYPE_CHECKING:
 
 
 def refuse_ball(ball: ScanSource | None) -> None:
-    """A line contact takes no ball scan: refused (before any file is read)."""
+    """A line contact takes no ball scan: refused (before any file is read).
+
+    Parameters
+    ----------
+    ball : Topography, path or None
+        The ball's scan, if any.
+
+    Raises
+    ------
+    SurfmetInputError
+        A ball scan was given.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import refuse_ball
+    >>> refuse_ball(None)
+    >>> refuse_ball("ball.x3p")
+    Traceback (most recent call last):
+    ...
+    surfmet.errors.SurfmetInputError: --ball does not apply to a line contact ...
+    """
     if ball is not None:
         raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
                                 "would be removed from a cylinder): give the plate's scan only")

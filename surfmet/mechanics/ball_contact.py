@@ -220,7 +220,7 @@ def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
     >>> res, _ = solve_on_pair(prepare_pair(patch), radius=0.02, load=10.0, e_star=58.6e9,
     ...                        grid=64)
     >>> print(solution_warnings(res, material_pair("steel,aluminium"))[0][:60])
-    max pressure 3367 MPa exceeds the softer body's hardness (10
+    max pressure 3.367 GPa exceeds the softer body's hardness (1
     """
     from surfmet.units import format_length, format_quantity
 

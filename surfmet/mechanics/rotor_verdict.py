@@ -16,8 +16,9 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.units import quantity
 
-__all__ = ["column_groups", "judge", "load_rig", "paper_verdict", "table_verdict",
-           "verdict_figure", "verdict_lines", "verdict_plot_path", "verdict_record"]
+__all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
+           "paper_verdict", "table_verdict", "verdict_figure", "verdict_lines",
+           "verdict_plot_path", "verdict_record"]
 
 
 def load_rig(path: str | Path) -> Any:
@@ -237,7 +238,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     >>> record["code"], record["group_offset"]["unit"]
     ('undetermined', 'rad/s^2')
     """
-    from surfmet.mechanics.rotor_argument import (
+    from surfmet.mechanics._rotor_argument import (
         argument_record,
         differences_record,
         lane_record,
@@ -259,7 +260,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
 
 def _sensitivity_fields(v: Any) -> dict[str, Any]:
     """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`contact.rotor.sensitivity`)."""
-    from surfmet.mechanics.rotor_sensitivity import (
+    from surfmet.mechanics._rotor_sensitivity import (
         experiment_record,
         label_swap_text,
         sensitivity_record,
@@ -287,7 +288,7 @@ def _verdict_record(v: Any) -> dict[str, Any]:
     }
     d = v.difference
     if d is not None:
-        from surfmet.mechanics.rotor_argument import windows_record
+        from surfmet.mechanics._rotor_argument import windows_record
 
         rec["track_difference"] = {
             "trend": quantity(d.trend, "rad/s^2/m"),
@@ -342,13 +343,17 @@ def _rejected(v: Any) -> str:
     return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
 
 
-def verdict_lines(v: Any) -> list[str]:
+def verdict_lines(v: Any, analysis: Any = None) -> list[str]:
     """The verdict in words, first thing every entry point prints.
 
     Parameters
     ----------
     v : RotorVerdict
         The verdict.
+    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds,
+        after a blank line, the table of the four differences and the two misread rules
+        (as :func:`verdict_record` adds their JSON).
 
     Returns
     -------
@@ -365,6 +370,15 @@ def verdict_lines(v: Any) -> list[str]:
     >>> print(verdict_lines(paper_verdict())[0])
     VERDICT  undetermined: the groups' tracks differ more than the launches' within a group do ...
     """
+    lines = _verdict_text(v)
+    if analysis is not None:
+        from surfmet.mechanics._rotor_argument import differences_lines
+
+        lines += ["", *differences_lines(v, analysis)]
+    return lines
+
+
+def _verdict_text(v: Any) -> list[str]:
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
              f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s², "
@@ -373,7 +387,7 @@ def verdict_lines(v: Any) -> list[str]:
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
              f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
-    from surfmet.mechanics.rotor_argument import (
+    from surfmet.mechanics._rotor_argument import (
         argument_lines,
         lane_line,
         permutation_line,
@@ -402,7 +416,7 @@ def verdict_lines(v: Any) -> list[str]:
     for c in v.confounds:
         lines.append(f"    {c.name:32s} {c.equivalent_acceleration:10.3g}  "
                      f"{'yes' if c.can_explain else 'no '}  ({c.assumption})")
-    from surfmet.mechanics.rotor_sensitivity import (
+    from surfmet.mechanics._rotor_sensitivity import (
         experiment_lines,
         label_swap_text,
         sensitivity_lines,
@@ -531,3 +545,28 @@ def verdict_figure(v: Any, path: str | Path) -> None:
     from surfmet.plots.rotor_verdict import draw_verdict
 
     draw_verdict(v, path)
+
+
+def label_swap_text(v: Any) -> str | None:
+    """What the paper's swapped labels do (its φ_s/φ_a columns name the other group, which
+    flips the sign of λ − 1), for the paper's rig; None for another rig.
+
+    Parameters
+    ----------
+    v : contact.rotor.verdict.RotorVerdict
+        The verdict.
+
+    Returns
+    -------
+    str or None
+        The sentence every entry point prints beside the verdict.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import label_swap_text, paper_verdict
+    >>> "label" in label_swap_text(paper_verdict())
+    True
+    """
+    from surfmet.mechanics._rotor_sensitivity import label_swap_text as text
+
+    return text(v)

@@ -277,7 +277,7 @@ class MechanismsReport:
 
     def to_json(self) -> dict[str, Any]:
         from contact.viscoelastic.mechanisms import BOUNDS_ONLY
-        from surfmet.mechanics.rotor_sensitivity import label_swap_text
+        from surfmet.mechanics._rotor_sensitivity import label_swap_text
         from surfmet.mechanics.rotor_verdict import offset_record
 
         c = self.comparison
