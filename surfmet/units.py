@@ -253,7 +253,7 @@ JSON_UNITS: frozenset[str] = frozenset({
     "", "%", "°", "frame",
     "m", "m^2", "m^3", "m^4", "1/m", "1/m^2", "rad/m",
     "N", "N/m", "N m", "Pa", "Pa/m", "J", "J/m", "J/m^2", "W", "W/(m/s)", "W/(m/s)/m",
-    "m/s", "s", "1/s", "1/s^2", "rad", "rad/s", "rad/s^2", "rad/s^2/m", "kg m^2",
+    "m/s", "s", "1/s", "1/s^2", "rad", "rad/s", "rad/s^2", "rad/s^2/m", "kg", "kg m^2",
 })
 
 
