@@ -17,7 +17,8 @@ import surfmet
 from contact.adhesion.ball import default_size
 from contact.adhesion.laws import DugdaleLaw
 from surfmet.cli import main
-from surfmet.mechanics.adhesion import adhesion, adhesion_record
+from surfmet.mechanics.adhesion import adhesion
+from surfmet.mechanics.adhesion_records import adhesion_record
 from surfmet.model import Topography
 
 R, E_STAR, W, H0 = 10e-6, 1e9, 0.05, 10e-9

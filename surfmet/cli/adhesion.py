@@ -108,8 +108,9 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
-    from surfmet.mechanics.adhesion import adhesion, adhesion_record, plot
+    from surfmet.mechanics.adhesion import adhesion, plot
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record, refuse_ball
+    from surfmet.mechanics.adhesion_records import adhesion_record
     from surfmet.units import readable_quantities
 
     if args.line:

@@ -12,14 +12,13 @@ import importlib
 from surfmet.io.registry import (
     FormatSpec,
     detect_format,
-    encode,
     formats,
     read,
     read_bytes,
     register_reader,
     register_writer,
-    write,
 )
+from surfmet.io.writing import encode, write
 
 # Every built-in format module; each registers itself on import. Order matters only for
 # magic detection ties, which ``priority`` settles.

@@ -17,11 +17,12 @@ import zlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, BinaryIO
+from typing import Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
+from surfmet.io.sources import Source, source_bytes
 from surfmet.model import (
     MAX_HEIGHT_SPAN,
     MAX_NUMERIC_SPAN,
@@ -446,10 +447,6 @@ def _validated(scan: Any, fmt: str, name: str) -> Scan:
     return scan.replace(metadata=md)
 
 
-#: What :func:`read` takes: a path, the file's bytes, or a binary file-like object.
-Source = str | os.PathLike[str] | bytes | bytearray | memoryview | BinaryIO
-
-
 def read(source: Source, format: str | None = None, **options: Any) -> Scan:
     """Read a scan from a file, from its bytes or from a binary stream.
 
@@ -511,184 +508,3 @@ def read(source: Source, format: str | None = None, **options: Any) -> Scan:
     buf, name, source_name = source_bytes(source)
     scan = read_bytes(buf, format=format, name=name, **options)
     return scan.with_metadata(source=source_name) if source_name else scan
-
-
-def source_bytes(source: Source) -> tuple[bytes, str, str | None]:
-    """The bytes of a path, a bytes object or a binary stream, the name that messages give
-    it, and the name to record as ``metadata["source"]`` (None for bare bytes).
-
-    Raises
-    ------
-    SurfmetFormatError
-        A file that cannot be read (missing, a directory, a device, too large for memory)
-        or a stream whose ``read()`` fails.
-    SurfmetInputError
-        A source that is neither a path, bytes nor a binary stream.
-    """
-    if isinstance(source, (bytes, bytearray, memoryview)):
-        return bytes(source), "<bytes>", None
-    if hasattr(source, "read"):
-        label = getattr(source, "name", None)
-        name = os.fsdecode(label) if isinstance(label, (str, bytes, os.PathLike)) else "<stream>"
-        try:
-            buf = source.read()
-        except (OSError, ValueError) as exc:  # ValueError: a closed file
-            raise SurfmetFormatError(f"{name}: cannot read the stream ({exc})") from None
-        if not isinstance(buf, (bytes, bytearray, memoryview)):
-            raise SurfmetInputError(f"{name}: the stream gives {type(buf).__name__}, not bytes: "
-                                    "open the file in binary mode ('rb')")
-        return bytes(buf), name, (name if name != "<stream>" else None)
-    if not isinstance(source, (str, os.PathLike)):
-        raise SurfmetInputError(f"cannot read a scan from a {type(source).__name__}: give a "
-                                "path, bytes or a binary file-like object")
-    p = Path(source)
-    _check_readable(p)
-    try:
-        buf = p.read_bytes()
-    except FileNotFoundError:
-        raise SurfmetFormatError(f"{p}: no such file") from None
-    except IsADirectoryError:
-        raise SurfmetFormatError(f"{p}: is a directory, not a scan file") from None
-    except OSError as exc:
-        raise SurfmetFormatError(f"{p}: cannot read the file ({exc.strerror or exc})") from None
-    return buf, str(p), str(p)
-
-
-#: Reading holds the file's bytes and the decoded float64 heights (at least as many bytes
-#: as the file, 4 x for 16-bit data) and the validity masks at once: the least a read
-#: needs, in file sizes (2.4 measured with tracemalloc on a 200 MB float64 .npy).
-READ_BYTES_PER_FILE_BYTE = 2.5
-
-
-def _check_readable(p: Path) -> None:
-    """Refuse, before reading a byte, what cannot be a scan file (a device such as
-    /dev/zero, a pipe, a socket: they never end) and a file whose reading cannot fit in the
-    memory available now (:func:`contact.sysmem.available_bytes`, planned at its
-    ``SAFETY`` fraction, as the solvers plan)."""
-    import stat
-
-    from contact.sysmem import SAFETY, available_bytes
-
-    try:
-        st = p.stat()
-    except OSError:
-        return  # read_bytes says what is wrong (no such file, permission...)
-    if stat.S_ISDIR(st.st_mode):
-        return
-    if not stat.S_ISREG(st.st_mode):
-        raise SurfmetFormatError(f"{p}: not a regular file (a device, a pipe or a socket "
-                                 "never ends): give a scan file")
-    need = int(READ_BYTES_PER_FILE_BYTE * st.st_size)
-    avail = available_bytes()
-    if avail is not None and need > SAFETY * avail:
-        raise SurfmetFormatError(
-            f"{p}: reading this {st.st_size / 2**20:.4g} MB file needs at least "
-            f"{need / 2**20:.4g} MB of memory, but only {avail / 2**20:.4g} MB is available "
-            f"({100 * SAFETY:.0f} % of it may be used): free memory or crop the scan")
-
-
-def encode(scan: Scan, format: str, **options: Any) -> bytes:
-    """Encode a scan into the bytes of ``format`` (a format with a writer).
-
-    Parameters
-    ----------
-    scan : Topography or Profile
-        What to encode.
-    format : str
-        Registry name of a format with a writer.
-    **options
-        Passed to the writer.
-
-    Returns
-    -------
-    bytes
-        The file's content.
-
-    Raises
-    ------
-    SurfmetInputError
-        If the format has no writer.
-
-    See Also
-    --------
-    write, read_bytes
-
-    Examples
-    --------
-    >>> from surfmet.io import encode, read_bytes
-    >>> from surfmet.data import path
-    >>> ball = read_bytes(path("paper_ball.x3p").read_bytes())
-    >>> buf = encode(ball, "npy")
-    >>> read_bytes(buf, format="npy").shape
-    (152, 147)
-    >>> encode(ball, "plu")
-    Traceback (most recent call last):
-    ...
-    surfmet.errors.SurfmetInputError: no writer for format 'plu'; writable formats: [...]
-    """
-    _load_all()
-    spec = _FORMATS.get(format)
-    if spec is None or spec.encode is None:
-        writable = sorted(n for n, s in _FORMATS.items() if s.encode is not None)
-        raise SurfmetInputError(f"no writer for format {format!r}; writable formats: {writable}")
-    return spec.encode(scan, **options)
-
-
-def write(
-    scan: Scan, path: str | os.PathLike[str], format: str | None = None, **options: Any
-) -> Path:
-    """Write a scan; the format comes from ``format=`` or the file extension.
-
-    The file is written whole or not at all (:mod:`surfmet.atomic`).
-
-    Parameters
-    ----------
-    scan : Topography or Profile
-        What to write.
-    path : path-like
-        The output file.
-    format : str, optional
-        Registry name; by default the one the extension names.
-    **options
-        Passed to the writer.
-
-    Returns
-    -------
-    pathlib.Path
-        The file written.
-
-    Raises
-    ------
-    SurfmetInputError
-        No writer for the format, or an extension that names none.
-    SurfmetWriteError
-        The operating system refused the file.
-
-    See Also
-    --------
-    encode, read
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> from surfmet.io import read, write
-    >>> from surfmet.data import path
-    >>> ball = read(path("paper_ball.x3p"))
-    >>> with tempfile.TemporaryDirectory() as tmp:
-    ...     out = write(ball, pathlib.Path(tmp) / "ball.npy")
-    ...     print(out.name, read(out).shape)
-    ball.npy (152, 147)
-    """
-    _load_all()
-    p = Path(path)
-    if format is None:
-        ext = p.suffix.lower().lstrip(".")
-        candidates = [s.name for s in _FORMATS.values() if ext in s.extensions and s.encode]
-        if not candidates:
-            raise SurfmetInputError(
-                f"{p}: cannot tell the output format from the extension {ext!r}"
-            )
-        format = candidates[0]
-    from surfmet.atomic import write_bytes
-
-    return write_bytes(p, encode(scan, format, **options))

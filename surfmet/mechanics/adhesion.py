@@ -5,7 +5,7 @@ and retracted.
 law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver's grid
 (:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
 (the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
-:mod:`surfmet.mechanics.adhesion_line`); :func:`adhesion_record` is its JSON record,
+:mod:`surfmet.mechanics.adhesion_line`); :func:`surfmet.mechanics.adhesion_records.adhesion_record` is its JSON record,
 :func:`plot` its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
@@ -18,89 +18,18 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics.adhesion_laws import (  # noqa: F401  (the facade's face)
+    INTERACTION,
+    INTERACTIONS,
+    interaction_law,
+    interaction_name,
+)
 from surfmet.mechanics.scan_preparation import SPIKES
-from surfmet.units import quantity
 
 if TYPE_CHECKING:
-    import numpy as np
 
-    from contact.adhesion.cycle import Branch, Jump
-    from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
+    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
-    from surfmet.mechanics.scan_preparation import PreparedScans
-
-INTERACTIONS = ("dugdale", "exponential")
-#: The adhesion law of every command and facade unless told otherwise: the one with a
-#: closed form to check it by (Maugis 1992: the sphere's pull-off, tests/maugis_reference.py)
-#: and the one the coarse-grid threshold is measured on
-#: (:data:`contact.zone_resolution.MIN_ZONE_PIXELS`).
-INTERACTION = "dugdale"
-
-
-def interaction_law(interaction: str, work: float, range_: float) -> Any:
-    """The adhesion law named ``interaction`` of work ``work`` (J/m^2) and range ``range_``
-    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``.
-
-    Parameters
-    ----------
-    interaction : {"dugdale", "exponential"}
-        The law's name.
-    work : float
-        Work of adhesion (J/m²).
-    range_ : float
-        Its range (m).
-
-    Returns
-    -------
-    DugdaleLaw or ExponentialLaw
-        The law (:mod:`contact.adhesion.laws`).
-
-    See Also
-    --------
-    interaction_name : the inverse.
-
-    References
-    ----------
-    .. [1] D. Maugis, "Adhesion of spheres: the JKR-DMT transition using a Dugdale model",
-       J. Colloid Interface Sci. 150 (1992) 243-269.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
-    >>> law = interaction_law("exponential", 0.05, 1e-9)
-    >>> law, interaction_name(law)
-    (ExponentialLaw(work=0.05, rho=1e-09), 'exponential')
-    """
-    from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
-
-    if interaction not in INTERACTIONS:
-        raise SurfmetInputError(f"unknown interaction {interaction!r}: use "
-                                f"{' or '.join(INTERACTIONS)}")
-    return (DugdaleLaw.from_range(work, range_) if interaction == "dugdale"
-            else ExponentialLaw(work, range_))
-
-
-def interaction_name(law: AdhesionLaw) -> str:
-    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law.
-
-    Parameters
-    ----------
-    law : DugdaleLaw or ExponentialLaw
-        An adhesion law.
-
-    Returns
-    -------
-    str
-        Its name.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion import interaction_law, interaction_name
-    >>> interaction_name(interaction_law("dugdale", 0.05, 1e-9))
-    'dugdale'
-    """
-    return "dugdale" if hasattr(law, "sigma0") else "exponential"
-
 
 @dataclass(frozen=True, eq=False)
 class Adhesion:
@@ -119,7 +48,7 @@ class Adhesion:
     See Also
     --------
     adhesion : makes it.
-    adhesion_record : its JSON record.
+    surfmet.mechanics.adhesion_records.adhesion_record : its JSON record.
 
     Examples
     --------
@@ -216,7 +145,8 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     JKR and DMT limits, and so does the pull-off force (1.5 π w R = 2.36 µN, 2 π w R =
     3.14 µN); this coarse grid overestimates it slightly, as its warning says:
 
-    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
+    >>> from surfmet.mechanics.adhesion import adhesion
+    >>> from surfmet.mechanics.adhesion_records import adhesion_record
     >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=6)
     >>> rec = adhesion_record(run)
     >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
@@ -395,6 +325,8 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
         raise SurfmetInputError(scan_too_small(pair, size))
     z = sample_roughness(pair.roughness, pair.dx, pair.dy, centred_grid(int(grid), dx),
                          centre=centre)
+    from surfmet.mechanics.adhesion_records import scans_record
+
     return z, scans_record(prep, plate, ball, dx, z)
 
 
@@ -429,166 +361,6 @@ def scan_too_small(pair: PairedRoughness, size: float) -> str:
     return (f"the scans ({(nx - 1) * pair.dx * 1e6:.4g} x {(ny - 1) * pair.dy * 1e6:.4g} µm "
             f"in common) are smaller than the adhesion domain ({size * 1e6:.4g} µm a side): "
             "give a smaller --size or larger scans")
-
-
-def scans_record(prep: PreparedScans, plate: ScanSource | None, ball: ScanSource | None,
-                 dx: float, z: np.ndarray) -> dict[str, Any]:
-    """What scans were used, what was done to them, and the roughness on the grid.
-
-    Parameters
-    ----------
-    prep : PreparedScans
-        The prepared scans.
-    plate, ball : Topography, path or None
-        The scans as given.
-    dx : float
-        The grid's pixel (m).
-    z : ndarray
-        The roughness on the grid (m).
-
-    Returns
-    -------
-    dict
-        The scans, their preparation, the pixel and the rms of the roughness on the grid.
-
-    Examples
-    --------
-    >>> import surfmet
-    >>> from surfmet.data import path
-    >>> from surfmet.mechanics.adhesion import rough_grid, scans_record
-    >>> from surfmet.mechanics.scan_preparation import prepare_scans
-    >>> plate = surfmet.read(path("paper_plate.x3p"))
-    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
-    >>> z, _ = rough_grid(patch, None, 32, 3e-4)
-    >>> sorted(scans_record(prepare_scans(patch), patch, None, 1e-5, z))
-    ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms']
-    """
-    import math
-
-    from surfmet.units import quantity
-
-    pair = prep.pair
-    notes = list(prep.notes)
-    if dx < pair.dx * (1 - 1e-9):
-        notes.append(f"the solver's pixel ({dx * 1e9:.4g} nm) is finer than the scans' "
-                     f"({pair.dx * 1e9:.4g} nm): the roughness is interpolated between "
-                     "measured points")
-    record: dict[str, Any] = {
-        "plate": _scan_name(plate),
-        "ball": _scan_name(ball),
-        "pixel": quantity(pair.dx, "m"),
-        "roughness_rms": quantity(float(math.sqrt(float(((z - z.mean()) ** 2).mean()))),
-                                  "m"),
-        "preparation": prep.record(),
-    }
-    record["preparation"]["notes"] = notes
-    return record
-
-
-def _scan_name(scan: ScanSource | None) -> str | None:
-    """A scan's file name, "(in memory)" for a Topography, None when not given."""
-    if scan is None:
-        return None
-    from surfmet.model import Topography
-
-    if isinstance(scan, Topography):  # read by the caller: its file, when it has one
-        return scan.metadata.get("source") or "(in memory)"
-    return str(scan)
-
-
-def _leg(branch: Branch) -> dict[str, Any]:
-    return {"approach": quantity(branch.surface_approach, "m"),
-            "load": quantity(branch.load, "N"),
-            "contact_radius": quantity(branch.contact_radius, "m")}
-
-
-def jump_record(jump: Jump | None, force_unit: str = "N") -> dict[str, Any] | None:
-    """A jump-in or jump-out, loads in ``force_unit`` (N, or N/m for a line).
-
-    Parameters
-    ----------
-    jump : Jump or None
-        A jump of the cycle.
-    force_unit : str
-        ``"N"`` or ``"N/m"``.
-
-    Returns
-    -------
-    dict or None
-        Approach, step and the loads before and after, with units (None without a jump).
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion import adhesion, jump_record
-    >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
-    >>> rec = jump_record(run.result.cycle.jump_in)
-    >>> rec["load_after"]["unit"], rec["load_after"]["value"] < 0
-    ('N', True)
-    """
-    if jump is None:
-        return None
-    return {"approach": quantity(jump.approach, "m"), "step": quantity(jump.step, "m"),
-            "load_before": quantity(jump.load_before, force_unit),
-            "load_after": quantity(jump.load_after, force_unit), "abrupt": jump.abrupt,
-            "resolved": jump.resolved}
-
-
-def adhesion_record(run: Adhesion) -> dict[str, Any]:
-    """The JSON record of an :class:`Adhesion` run.
-
-    Parameters
-    ----------
-    run : Adhesion
-        A run.
-
-    Returns
-    -------
-    dict
-        Every value as ``{"value": v, "unit": u}``.
-
-    See Also
-    --------
-    adhesion
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion import adhesion, adhesion_record
-    >>> rec = adhesion_record(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16,
-    ...                                steps=6))
-    >>> rec["geometry"], rec["pull_off_force"]["unit"]
-    ('sphere', 'N')
-    """
-    ball = run.result
-    cyc, law = ball.cycle, ball.law
-    return {
-        "geometry": "sphere",
-        "radius": quantity(ball.radius, "m"),
-        "e_star": quantity(ball.e_star, "Pa"),
-        "interaction": interaction_name(law),
-        "work_of_adhesion": quantity(law.work, "J/m^2"),
-        "range": quantity(law.range, "m"),
-        "peak_tension": quantity(law.peak, "Pa"),
-        "step_smoothing": quantity(getattr(law, "smoothing", 0.0), "m"),
-        "maugis_parameter": quantity(ball.maugis_parameter, ""),
-        "tabor_parameter": quantity(ball.tabor_parameter, ""),
-        "pull_off_force": quantity(cyc.pull_off_force, "N"),
-        "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
-        "jkr_pull_off_force": quantity(ball.jkr_pull_off, "N"),
-        "dmt_pull_off_force": quantity(ball.dmt_pull_off, "N"),
-        "jump_in": jump_record(cyc.jump_in),
-        "jump_out": jump_record(cyc.jump_out),
-        "hysteresis_energy": quantity(cyc.hysteresis_energy, "J"),
-        "grid": {"cells": ball.grid, "size": quantity(ball.size, "m"),
-                 "pixel": quantity(ball.dx, "m"), "periodic": True,
-                 "process_zone": quantity(ball.process_zone, "m"),
-                 "process_zone_pixels": quantity(ball.process_zone / ball.dx, ""),
-                 "why": run.grid_why},
-        "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
-        "solve": cyc.solve.to_json(),
-        "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
-        "scans": run.scans,
-        "warnings": list(ball.warnings),
-    }
 
 
 def plot(run: Adhesion, path: PathLike | None = None) -> Any:

@@ -19,10 +19,9 @@ from surfmet.mechanics.adhesion import (
     adhesion_pair,
     interaction_law,
     interaction_name,
-    jump_record,
     scan_too_small,
-    scans_record,
 )
+from surfmet.mechanics.adhesion_records import jump_record, scans_record
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.units import quantity
 
