@@ -5,8 +5,9 @@ and retracted.
 law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver's grid
 (:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
 (the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
-:mod:`surfmet.mechanics.adhesion_line`); :func:`surfmet.mechanics.adhesion_records.adhesion_record` is its JSON record,
-:func:`plot` its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
+:mod:`surfmet.mechanics.adhesion_line`);
+:func:`surfmet.mechanics.adhesion_records.adhesion_record` is its JSON record, :func:`plot`
+its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
 
