@@ -153,8 +153,13 @@ def test_demo_and_fit_state_the_same_form_deviation(capsys):
     text = _Text()
     _ball(text, {"ball": summary})
     line = next(s for s in text.lines if "form deviation" in s)
-    demo_um = float(re.search(r"form deviation ([0-9.]+) µm \(PV", line).group(1))
-    assert demo_um == round(rec["form_pv"]["value"] * 1e6, 2)
+    demo_um = re.search(r"form deviation ([0-9.]+ µm) \(PV", line).group(1)
+    # the same number in the same words as surfmet fit prints it (surfmet.units)
+    from surfmet.units import format_quantity
+
+    assert demo_um == format_quantity(rec["form_pv"]["value"], "m")
+    assert main(["fit", str(path), "--shape", "sphere"]) == 0
+    assert f"form deviation      {demo_um} PV" in capsys.readouterr().out
     # the residual PV is set by the ball's spikes, an order of magnitude above the form
     assert rec["pv_form_deviation"]["value"] > 5 * rec["form_pv"]["value"]
 
