@@ -270,3 +270,94 @@ def test_differences_on_a_clean_table_read_the_constant_acceleration_as_fitting(
     assert got["const"]["model_fits"] and got["paper"]["model_fits"]
     assert v["permutation_p"]["n_splits"] == 10  # C(5, 2): groups of 2 and 3
     assert v["rig"] is None and v["friction_arm"] is None
+
+
+def _stdout(args):
+    import io
+    import sys
+
+    buf = io.StringIO()
+    capture = pytest.MonkeyPatch()
+    capture.setattr(sys, "stdout", buf)
+    try:
+        code = main(args)
+    finally:
+        capture.undo()
+    assert code == 0
+    return buf.getvalue()
+
+
+@pytest.fixture(scope="module")
+def scans():
+    from surfmet.data import path
+
+    return str(path("paper_plate.x3p")), str(path("paper_ball.x3p"))
+
+
+@pytest.fixture(scope="module")
+def rough_run(scans):
+    """The paper's table with the bundled scans, on a coarse contact grid."""
+    plate, ball = scans
+    return json.loads(_stdout(["rotor", "paper2022", "--plate", plate, "--ball", ball,
+                               "--grid", "64", "--json", "-q"]))
+
+
+def test_arm_bound_states_the_rough_contacts_extent_beside_hertz(rough_run, paper_run, scans):
+    """Issue 35 item 2: with scans, ``arm_bound`` carries the rough contact's a* at the
+    symmetric load, equal to ``surfmet hertz-check``'s for the same inputs, beside the Hertz
+    radius, and says which decides (the larger)."""
+    plate, ball = scans
+    b = rough_run["verdict"]["arm_bound"]
+    hertz = paper_run[1]["verdict"]["arm_bound"]
+    assert b["radius"] == hertz["radius"] and b["basis"] == hertz["basis"]
+    load = b["load"]["value"]
+    check = json.loads(_stdout(["hertz-check", "--plate", plate, "--ball", ball,
+                                "--radius", "20mm", "--materials", "steel,aluminium",
+                                "--load", f"{load!r}N", "--grid", "64", "--json"]))
+    rough = b["rough"]
+    assert rough["radius"] == check["bem"]["effective_radius"]  # the same function's answer
+    assert rough["load"] == b["load"] and rough["files"] == {"plate": plate, "ball": ball}
+    assert rough["grid"] == [64, 64] and plate in rough["basis"] and "64 x 64" in rough["basis"]
+    larger = max(rough["radius"]["value"], b["radius"]["value"])
+    assert b["deciding_radius"] == {"value": larger, "unit": "m"}
+    assert b["decides"] == ("rough" if rough["radius"]["value"] > b["radius"]["value"]
+                            else "hertz")
+    arm = rough_run["verdict"]["friction_arm"]["arm"]["value"]
+    assert b["friction_arm_ratio_to_deciding"]["value"] == pytest.approx(arm / larger)
+
+
+def test_without_scans_the_verdict_is_unchanged(rough_run, paper_run):
+    v0, v1 = paper_run[1]["verdict"], rough_run["verdict"]
+    assert set(v0["arm_bound"]) == {"radius", "basis", "load", "group", "e_star"}
+    extra = {"rough", "decides", "deciding_radius", "friction_arm_ratio_to_deciding", "why"}
+    assert set(v1["arm_bound"]) == set(v0["arm_bound"]) | extra
+    strip = {k: v for k, v in v1.items() if k != "arm_bound"}
+    assert strip == {k: v for k, v in v0.items() if k != "arm_bound"}
+
+
+@pytest.mark.parametrize(("args", "needle"), [
+    (["--ball", "x.x3p"], "--ball needs --plate"),
+    (["--grid", "64"], "--grid is the rough contact's"),
+    (["--plate", "no_such_scan.x3p"], "no_such_scan.x3p: no such file"),
+])
+def test_scan_options_refused_in_one_line(capsys, args, needle):
+    assert main(["rotor", "paper2022", *args]) == 1
+    err = capsys.readouterr().err
+    assert "error" in err and needle in err and "Traceback" not in err
+
+
+def test_rough_bound_in_words_says_which_radius_decides():
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_lines
+
+    v = paper_verdict()
+    rb = RoughArmBound(radius=3 * v.arm.arm_bound, hertz_radius=v.arm.arm_bound,
+                       load=v.arm.bound_load, ball_radius=0.02, plate_file="p.x3p",
+                       ball_file=None, grid=(64, 64), cell=2e-5, warnings=())
+    plain, rough = verdict_lines(v), verdict_lines(v, rough=rb)
+    added = [x for x in rough if x not in plain]
+    assert len(rough) == len(plain) + 1 and "rough contact's extent a*" in added[-1]
+    assert "the rough contact's a* decides" in added[-1] and "p.x3p" in added[-1]
+    assert f"{3 * v.arm.arm_bound * 1e6:.0f} µm" in added[-1]
+    # the Hertz line says its judgement is Hertz's alone
+    assert any("by Hertz's radius alone" in x for x in added)

@@ -17,6 +17,7 @@ from typing import Any
 
 from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
+from surfmet.cli._rotor_scans import add_scan_arguments, read_rotor_scans, rough_bound
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.rotor_verdict import (
     table_verdict,
@@ -36,6 +37,7 @@ EPILOG = """examples:
   surfmet rotor table3_frames.tsv --plot residuals.png
   surfmet rotor runs.tsv --fps 240 --step-deg 45 --json
   surfmet rotor paper2022 --cv exact --json > rotor.json
+  surfmet rotor paper2022 --plate plate.x3p --ball ball.x3p --grid 64   (rough arm bound)
 
 Models (fitted on the times, weighted by a reading-noise model with the frame quantisation
 as its floor): rest (the paper's: constant acceleration from rest at the first mark),
@@ -72,6 +74,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "step_deg, optional slope_rad, groups {NAME: {ball_loads_N: [N1, N2], "
                    "columns: [...]}}; gives the verdict's lambda outputs and confounds "
                    f"({PAPER_ALIAS} carries the paper's rig)")
+    add_scan_arguments(p)
     add_quiet_flag(p)
     add_json_flag(p)
     p.set_defaults(func=run)
@@ -442,6 +445,7 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError(f"--fps must be positive, got {args.fps}")
     if not (math.isfinite(args.step_deg) and args.step_deg > 0):
         raise SurfmetInputError(f"--step-deg must be positive, got {args.step_deg}")
+    read_rotor_scans(args)
     source = str(_paper_path()) if args.file == PAPER_ALIAS else args.file
     from surfmet.frames import read_frames_table
 
@@ -452,6 +456,7 @@ def run(args: argparse.Namespace) -> int:
                                    step=math.radians(args.step_deg), rig_path=args.rig)
     for note in notes:
         log(f"note: {note}")
+    rough = rough_bound(args, verdict)
     # progress on stderr, unless asked for quiet, or JSON goes to a pipe and stderr is not a
     # terminal (it may be the same pipe)
     show = not getattr(args, "quiet", False) and (not args.json or sys.stderr.isatty())
@@ -473,11 +478,11 @@ def run(args: argparse.Namespace) -> int:
             verdict_figure(verdict, vpath)
             log(f"verdict figure written to {vpath}")
     if args.json:
-        emit_json({"verdict": None if verdict is None else verdict_record(verdict, an),
+        emit_json({"verdict": None if verdict is None else verdict_record(verdict, an, rough),
                    **analysis_record(an, source)})
     else:
         if verdict is not None:
-            print("\n".join(verdict_lines(verdict, an)))
+            print("\n".join(verdict_lines(verdict, an, rough)))
             print()
         _print_summary(an, source)
     return 0

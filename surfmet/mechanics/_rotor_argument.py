@@ -76,9 +76,10 @@ def rig_record(rig: Any) -> dict[str, Any] | None:
                    for g in rig.groups]}
 
 
-def argument_record(v: Any) -> dict[str, Any]:
-    """The arm fields of ``verdict``: ``friction_arm``, ``arm_bound``,
-    ``lambda_at_arm_bound``, ``slope_lambda_4_3`` (and ``arm_lambda_4_3``)."""
+def argument_record(v: Any, rough: Any = None) -> dict[str, Any]:
+    """The arm fields of ``verdict``: ``friction_arm``, ``arm_bound`` (with the rough
+    contact's extent, a :class:`~surfmet.mechanics.rotor_rough_bound.RoughArmBound`, where
+    given), ``lambda_at_arm_bound``, ``slope_lambda_4_3`` (and ``arm_lambda_4_3``)."""
     b = v.arm
     if b is None:
         return {"friction_arm": None, "arm_bound": None, "lambda_at_arm_bound": None,
@@ -91,7 +92,7 @@ def argument_record(v: Any) -> dict[str, Any]:
                          "formula": "s_r = (M g R sin(theta) - eps_mean (J + M R^2)) / sum N"},
         "arm_bound": {"radius": quantity(b.arm_bound, "m"), "basis": b.bound_basis,
                       "load": quantity(b.bound_load, "N"), "group": b.bound_group,
-                      "e_star": quantity(b.e_star, "Pa")},
+                      "e_star": quantity(b.e_star, "Pa"), **_rough_record(rough, b)},
         "lambda_at_arm_bound": {
             "lambda": {**_interval(b.lambda_at_bound, b.lambda_low, b.lambda_high, ""),
                        "level": v.offset.level},
@@ -105,17 +106,36 @@ def argument_record(v: Any) -> dict[str, Any]:
     }
 
 
+def _rough_record(rough: Any, b: Any) -> dict[str, Any]:
+    if rough is None:
+        return {}
+    from surfmet.mechanics.rotor_rough_bound import rough_bound_record
+
+    return rough_bound_record(rough, b.friction_arm)
+
+
+def _rough_lines(rough: Any, b: Any) -> list[str]:
+    if rough is None:
+        return []
+    from surfmet.mechanics.rotor_rough_bound import rough_bound_line
+
+    return rough_bound_line(rough, b.friction_arm)
+
+
 def _deg(x: float) -> str:
     return f"{math.degrees(x):.3g} deg" if math.isfinite(x) else "none (beyond 90 deg)"
 
 
-def argument_lines(v: Any) -> list[str]:
-    """The arm argument in words (after the exponent's line)."""
+def argument_lines(v: Any, rough: Any = None) -> list[str]:
+    """The arm argument in words (after the exponent's line; the rough contact's extent
+    after the friction arm's line, where given)."""
     b, rig = v.arm, v.rig
     if b is None:
         return []
     verdict = ("impossible: the normal force's resultant lies inside the contact, s_r <= a"
                if b.arm_ratio > 1 else "inside the bound")
+    if rough is not None:
+        verdict += " (by Hertz's radius alone)"
     lam = (f"{b.lambda_at_bound:.3g} [{b.lambda_low:.3g}, {b.lambda_high:.3g}]"
            if math.isfinite(b.lambda_at_bound) else "none in 0.05-20")
     loads = ", ".join(f"{g.name} {g.ball_loads[0]:.3g}/{g.ball_loads[1]:.3g} N"
@@ -125,6 +145,7 @@ def argument_lines(v: Any) -> list[str]:
         f"{b.friction_arm * 1e3:.3g} mm = {b.arm_ratio:.2g} x the contact radius "
         f"a = {b.arm_bound * 1e6:.0f} µm (Hertz at group {b.bound_group}'s ball load "
         f"{b.bound_load:.3g} N, E* {b.e_star / 1e9:.3g} GPa): {verdict}",
+        *_rough_lines(rough, b),
         f"  lambda at the arm bound (s_r = a, slope {_deg(b.slope_at_bound)}): {lam} over the "
         f"offset's interval; a lower bound conditional on the slope, not a confidence "
         f"interval (lambda -> infinity as the slope falls to {_deg(b.slope_lambda_infinite)}, "

@@ -209,7 +209,7 @@ def _calibration_record() -> dict[str, Any]:
     }
 
 
-def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
+def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str, Any]:
     """The JSON ``verdict`` object, the one record builder every entry point calls: every
     value a quantity with its unit (the group offset and the exponent as interval
     quantities).
@@ -221,6 +221,8 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
         The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds
         the table of the four differences and the two misread rules.
+    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
+        The scanned contact's extent: added to ``arm_bound`` beside the Hertz radius.
 
     Returns
     -------
@@ -251,7 +253,7 @@ def verdict_record(v: Any, analysis: Any = None) -> dict[str, Any]:
     rec["permutation_p"] = permutation_record(v)
     rec["lane_test"] = lane_record(v)
     rec["rig"] = rig_record(v.rig)
-    rec.update(argument_record(v))
+    rec.update(argument_record(v, rough))
     rec.update(_sensitivity_fields(v))
     if analysis is not None:
         rec.update(differences_record(v, analysis))
@@ -343,7 +345,7 @@ def _rejected(v: Any) -> str:
     return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
 
 
-def verdict_lines(v: Any, analysis: Any = None) -> list[str]:
+def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
     """The verdict in words, first thing every entry point prints.
 
     Parameters
@@ -354,6 +356,8 @@ def verdict_lines(v: Any, analysis: Any = None) -> list[str]:
         The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
         (as :func:`verdict_record` adds their JSON).
+    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
+        The scanned contact's extent, after the friction arm's line.
 
     Returns
     -------
@@ -370,7 +374,7 @@ def verdict_lines(v: Any, analysis: Any = None) -> list[str]:
     >>> print(verdict_lines(paper_verdict())[0])
     VERDICT  undetermined: the groups' tracks differ more than the launches' within a group do ...
     """
-    lines = _verdict_text(v)
+    lines = _verdict_text(v, rough)
     if analysis is not None:
         from surfmet.mechanics._rotor_argument import differences_lines
 
@@ -378,7 +382,7 @@ def verdict_lines(v: Any, analysis: Any = None) -> list[str]:
     return lines
 
 
-def _verdict_text(v: Any) -> list[str]:
+def _verdict_text(v: Any, rough: Any = None) -> list[str]:
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
              f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s², "
@@ -408,7 +412,7 @@ def _verdict_text(v: Any) -> list[str]:
     lines += [f"  lambda needed at slope {math.degrees(e.slope):.3g} deg ({e.slope_basis}; the "
               f"mean acceleration needs >= {math.degrees(e.slope_lower_bound):.3g} deg): {lam} "
               f"(conditional on the slope)",
-              *argument_lines(v),
+              *argument_lines(v, rough),
               f"  largest offset lambda = 4/3 gives there: {e.offset_lambda_4_3:+.4f} rad/s²; "
               f"launches per group to tell 4/3 from 1 (90 % power, 2 %): "
               f"{e.launches if e.launches is not None else 'more than 100000'}",

@@ -1,0 +1,135 @@
+"""The rough contact's extent as a bound on the rotor's friction arm.
+
+The arm argument (:mod:`contact.rotor.arm`) bounds the friction arm ``s_r = M_r / N`` by the
+contact radius, since the normal force's resultant lies inside the contact. Its bound is
+Hertz's radius at the symmetric group's ball load. Where the plate (and ball) are scanned, the
+rough contact at the same load spreads over a region of its own: :func:`rough_arm_bound` asks
+the one function that answers it, :func:`surfmet.mechanics.hertz_check.hertz_check` (the
+rig's ball radius, the symmetric ball load, the paper's materials steel on aluminium), and
+takes its boundary-element radius ``a*`` (the second-moment radius of the pressure, the
+radius of the Hertz distribution with the same spread of load; the same ``a*`` as
+``surfmet hertz-check`` prints). The larger of the two radii is the physical bound on the arm:
+the resultant lies inside whichever region carries the load.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from surfmet.units import quantity
+
+__all__ = ["MATERIALS", "RoughArmBound", "rough_arm_bound", "rough_bound_line",
+           "rough_bound_record"]
+
+MATERIALS = "steel,aluminium"
+"""The paper's ball and plate materials (:data:`contact.rotor.arm.PAPER_PAIR`)."""
+
+
+@dataclass(frozen=True)
+class RoughArmBound:
+    """The rough contact's extent at the arm bound's load (SI).
+
+    ``radius``: the BEM second-moment radius a*; ``hertz_radius``: the Hertz radius it is
+    set beside; ``load``, ``ball_radius``; ``plate_file``, ``ball_file`` (None when not
+    scanned); ``grid`` (cells per side, ny, nx) and ``cell`` (m) of the contact solution;
+    ``warnings``: a grid or scan too coarse for the contact."""
+
+    radius: float
+    hertz_radius: float
+    load: float
+    ball_radius: float
+    plate_file: str | None
+    ball_file: str | None
+    grid: tuple[int, int]
+    cell: float
+    warnings: tuple[str, ...]
+
+    @property
+    def decides(self) -> str:
+        """``"rough"`` or ``"hertz"``: the larger radius bounds the arm."""
+        return "rough" if self.radius > self.hertz_radius else "hertz"
+
+    @property
+    def deciding_radius(self) -> float:
+        return max(self.radius, self.hertz_radius)
+
+
+def _label(scan: Any) -> str | None:
+    if scan is None:
+        return None
+    if isinstance(scan, (str, bytes)) or hasattr(scan, "__fspath__"):
+        return str(scan)
+    return scan.metadata.get("source") or scan.metadata.get("container") or "scan"
+
+
+def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, *,
+                    grid: int | None = None) -> RoughArmBound:
+    """The rough contact's radius a* at the arm bound's load.
+
+    Parameters
+    ----------
+    arm : contact.rotor.arm.ArmBound
+        The Hertz arm bound (its ``bound_load`` and ``arm_bound``).
+    ball_radius : float
+        The rig's ball radius (m).
+    plate, ball : Topography or path
+        The scans (the ball optional).
+    grid : int, optional
+        Contact grid, cells per side (default :func:`hertz_check`'s).
+
+    Returns
+    -------
+    RoughArmBound
+    """
+    from surfmet.mechanics.hertz_check import hertz_check
+
+    check = hertz_check(plate, radius=ball_radius, load=arm.bound_load, materials=MATERIALS,
+                        ball=ball, grid=grid)
+    res = check.result
+    ny, nx = res.shape
+    return RoughArmBound(radius=float(check.comparison.effective_radius),
+                         hertz_radius=float(arm.arm_bound), load=float(arm.bound_load),
+                         ball_radius=float(ball_radius), plate_file=_label(plate),
+                         ball_file=_label(ball), grid=(int(ny), int(nx)),
+                         cell=float(res.dx), warnings=tuple(check.warnings))
+
+
+def _basis(rb: RoughArmBound) -> str:
+    ball = rb.ball_file if rb.ball_file else "a smooth ball"
+    return (f"boundary-element contact of the scans (plate {rb.plate_file}, ball {ball}) at "
+            f"the same ball load {rb.load:.3g} N, R = {rb.ball_radius * 1e3:.3g} mm, "
+            f"{MATERIALS.replace(',', ' on ')} (surfmet hertz-check); a* = sqrt(5/2 <r^2>_p), "
+            f"the radius of the region the load spreads over, on a {rb.grid[1]} x "
+            f"{rb.grid[0]} grid of {rb.cell * 1e6:.3g} µm cells")
+
+
+def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]:
+    """The fields :func:`~surfmet.mechanics.rotor_verdict.verdict_record` adds to
+    ``arm_bound``: ``rough`` {radius, basis, files, grid, cell, warnings}, ``decides``
+    and ``deciding_radius``, ``friction_arm_ratio_to_deciding``."""
+    return {
+        "rough": {"radius": quantity(rb.radius, "m"), "quantity": "effective_radius a*",
+                  "basis": _basis(rb), "load": quantity(rb.load, "N"),
+                  "files": {"plate": rb.plate_file, "ball": rb.ball_file},
+                  "grid": list(rb.grid), "cell": quantity(rb.cell, "m"),
+                  "materials": MATERIALS, "warnings": list(rb.warnings)},
+        "decides": rb.decides,
+        "deciding_radius": quantity(rb.deciding_radius, "m"),
+        "friction_arm_ratio_to_deciding": quantity(friction_arm / rb.deciding_radius, ""),
+        "why": "the larger radius is the physical bound: the normal force's resultant lies "
+               "inside the region that carries the load",
+    }
+
+
+def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
+    """The rough bound in words (after the friction arm's line)."""
+    ratio = friction_arm / rb.deciding_radius
+    which = ("the rough contact's a* decides (larger than Hertz)" if rb.decides == "rough"
+             else "Hertz decides (larger than the rough a*)")
+    inside = "impossible at lambda = 1" if ratio > 1 else "inside the bound at lambda = 1"
+    out = [f"  rough contact's extent a* = {rb.radius * 1e6:.0f} µm ({_basis(rb)}): {which}; "
+           f"s_r = {ratio:.2g} x {rb.deciding_radius * 1e6:.0f} µm: {inside}"
+           + ("; the lambda lines below are at the Hertz a" if rb.decides == "rough" else "")]
+    out += [f"    warning: {w}" for w in rb.warnings]
+    return out
