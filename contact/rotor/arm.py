@@ -35,7 +35,7 @@ The contact radius is Hertz's, ``a = (3 N R / (4 E*))**(1/3)``, at the ball load
 most nearly symmetric group (the paper's materials, steel on aluminium, unless ``e_star`` or the
 rig's own ``e_star``, its plate's, is given). Roughness shrinks the real contact area (the
 asperities carry the load on a fraction of it) but spreads the region the load acts over: on
-the bundled scans the rough contact's extent a* at the symmetric load is about 2.6-3 times
+the bundled scans the rough contact's extent a* at the symmetric load is about 2.6-2.9 times
 the Hertz radius (``surfmet rotor --plate --ball`` states it beside this one). With scans the
 larger radius is the bound; without them Hertz's is a bound of the smooth pair only.
 """
