@@ -331,8 +331,23 @@ def test_without_scans_the_verdict_is_unchanged(rough_run, paper_run):
     assert set(v0["arm_bound"]) == {"radius", "basis", "load", "group", "e_star"}
     extra = {"rough", "decides", "deciding_radius", "friction_arm_ratio_to_deciding", "why"}
     assert set(v1["arm_bound"]) == set(v0["arm_bound"]) | extra
-    strip = {k: v for k, v in v1.items() if k != "arm_bound"}
-    assert strip == {k: v for k, v in v0.items() if k != "arm_bound"}
+    moved = {"arm_bound", "lambda_at_arm_bound"}  # the lambda is at the deciding radius
+    strip = {k: v for k, v in v1.items() if k not in moved}
+    assert strip == {k: v for k, v in v0.items() if k not in moved}
+
+
+def test_lambda_at_the_arm_bound_is_at_the_radius_that_decides(rough_run, paper_run):
+    """With scans whose a* exceeds Hertz's radius, the least lambda the offset needs is
+    taken at a*: a wider bound allows a larger torque, so a smaller lambda (without scans
+    it stays at Hertz's radius)."""
+    v0, v1 = paper_run[1]["verdict"], rough_run["verdict"]
+    l0, l1 = v0["lambda_at_arm_bound"], v1["lambda_at_arm_bound"]
+    assert l0["radius"] == v0["arm_bound"]["radius"] and "Hertz" in l0["basis"]
+    assert l1["radius"] == v1["arm_bound"]["deciding_radius"]
+    if v1["arm_bound"]["decides"] == "rough":
+        assert "a*" in l1["basis"]
+        assert l1["lambda"]["value"] < l0["lambda"]["value"]
+        assert l1["slope"]["value"] > l0["slope"]["value"]  # s_r = a* needs a steeper slope
 
 
 @pytest.mark.parametrize(("args", "needle"), [
@@ -356,8 +371,12 @@ def test_rough_bound_in_words_says_which_radius_decides():
                        ball_file=None, grid=(64, 64), cell=2e-5, warnings=())
     plain, rough = verdict_lines(v), verdict_lines(v, rough=rb)
     added = [x for x in rough if x not in plain]
-    assert len(rough) == len(plain) + 1 and "rough contact's extent a*" in added[-1]
-    assert "the rough contact's a* decides" in added[-1] and "p.x3p" in added[-1]
-    assert f"{3 * v.arm.arm_bound * 1e6:.0f} µm" in added[-1]
+    assert len(rough) == len(plain) + 1
+    line = next(x for x in added if "rough contact's extent a*" in x)
+    assert "the rough contact's a* decides" in line and "p.x3p" in line
+    wide = f"{3 * v.arm.arm_bound * 1e6:.0f} µm"
+    assert wide in line
+    # the lambda at the bound is taken at the radius that decides, and says so
+    assert any(x.startswith("  lambda at the arm bound (s_r = a = " + wide) for x in added)
     # the Hertz line says its judgement is Hertz's alone
     assert any("by Hertz's radius alone" in x for x in added)

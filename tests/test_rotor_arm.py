@@ -75,6 +75,28 @@ def test_arm_its_bound_and_lambda_there_against_closed_forms() -> None:
         math.asin((t_far + eps * inertia) / (m * G * r)), rel=1e-9)
 
 
+def test_a_given_radius_is_the_bound_lambda_is_taken_at() -> None:
+    """The rough contact's extent as the bound: lambda at s_r = r from the same closed
+    form as at Hertz's radius, with r in place of a."""
+    rig = paper_rig()
+    eps, off, lo, hi = 1.55, 0.200, 0.117, 0.283
+    r_bound = 280e-6
+    b = arm_bound(rig, "s", "as", math.radians(1.0), eps, off, lo, hi, radius=r_bound,
+                  radius_basis="a test radius")
+    assert b.arm_bound == r_bound and b.bound_basis.startswith("a test radius")
+    m, r = rig.mass, rig.ball_radius
+    inertia = rig.axial_inertia + m * r * r
+    la, lb = rig.group("s").ball_loads, rig.group("as").ball_loads
+    sum_n = 0.5 * (sum(la) + sum(lb))
+    lams = [_bisect(lambda x, v=v: r_bound * sum_n * _contrast(la, lb, x) / inertia - v,
+                    1.0001, 20) for v in (off, lo, hi)]
+    assert (b.lambda_at_bound, b.lambda_low, b.lambda_high) == pytest.approx(lams, rel=1e-6)
+    assert b.slope_at_bound == pytest.approx(
+        math.asin((r_bound * sum_n + eps * inertia) / (m * G * r)), rel=1e-9)
+    with pytest.raises(Exception, match="positive length"):
+        arm_bound(rig, "s", "as", math.radians(1.0), eps, off, lo, hi, radius=-1.0)
+
+
 def test_arm_numbers_a_referee_checked_by_hand() -> None:
     """Issue 35: the arm 2.2-2.4 times the Hertz radius of 106 µm; lambda about 3.7 at the
     bound, 3.0 at the interval's lower end; lambda = 4/3 with an arm of some mm (3 mm for the

@@ -45,6 +45,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from contact.errors import ContactInputError
 from contact.hertz import hertz_sphere
 from contact.materials import composite_modulus, material
 from contact.rotor.mechanics import G_STANDARD
@@ -131,9 +132,14 @@ def _bound_group(rig: Rig) -> tuple[str, float]:
 
 def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
               mean_acceleration: float, offset: float, ci_low: float, ci_high: float,
-              e_star: float | None = None) -> ArmBound:
+              e_star: float | None = None, radius: float | None = None,
+              radius_basis: str = "") -> ArmBound:
     """The arm argument for an offset ``minuend - subtrahend`` of ``offset`` (rad/s²; its
-    interval ``ci_low``-``ci_high``) at ``slope`` (rad) and ``mean_acceleration``."""
+    interval ``ci_low``-``ci_high``) at ``slope`` (rad) and ``mean_acceleration``.
+
+    The bound is Hertz's radius at the symmetric group's ball load unless ``radius`` (m)
+    is given: another measure of the region that carries the load (the rough contact's
+    extent, said by ``radius_basis``)."""
     basis = "given E*"
     if e_star is None and rig.e_star is not None:
         e_star, basis = rig.e_star, f"the rig's {rig.plate or 'plate'}"
@@ -141,10 +147,18 @@ def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
         e_star = composite_modulus(material(PAPER_PAIR[0]), material(PAPER_PAIR[1]))
         basis = "steel ball on aluminium plate, the paper's materials"
     name, load = _bound_group(rig)
-    a = hertz_sphere(rig.ball_radius, load, e_star).a
-    basis = (f"Hertz contact radius (3 N R / (4 E*))^(1/3) at group {name}'s ball load "
-             f"{load:.3g} N, R = {rig.ball_radius * 1e3:.3g} mm, E* = {e_star / 1e9:.3g} GPa "
-             f"({basis}); the resultant of the contact pressure lies inside the contact")
+    if radius is not None:
+        if not (math.isfinite(radius) and radius > 0):
+            raise ContactInputError(f"the arm bound's radius must be a positive length, got "
+                                  f"{radius!r} m")
+        a, basis = float(radius), (radius_basis or "a given contact radius") + (
+            "; the resultant of the contact pressure lies inside the contact")
+    else:
+        a = hertz_sphere(rig.ball_radius, load, e_star).a
+        basis = (f"Hertz contact radius (3 N R / (4 E*))^(1/3) at group {name}'s ball load "
+                 f"{load:.3g} N, R = {rig.ball_radius * 1e3:.3g} mm, E* = "
+                 f"{e_star / 1e9:.3g} GPa ({basis}); the resultant of the contact pressure "
+                 "lies inside the contact")
     sum_n = 0.5 * sum(_load_sums(rig, minuend, subtrahend, 1.0))
     arm = rolling_torque(rig, slope, mean_acceleration) / sum_n
     slope_a = torque_slope(rig, a * sum_n, mean_acceleration)

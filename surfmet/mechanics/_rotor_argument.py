@@ -85,6 +85,7 @@ def argument_record(v: Any, rough: Any = None) -> dict[str, Any]:
         return {"friction_arm": None, "arm_bound": None, "lambda_at_arm_bound": None,
                 "slope_lambda_4_3": None, "arm_lambda_4_3": None}
     ends = "at the offset's interval ends nearer to and farther from zero"
+    d = _deciding(v, rough)  # the lambda at the bound is at the radius that decides
     return {
         "friction_arm": {"arm": quantity(b.friction_arm, "m"), "lambda": 1,
                          "slope": quantity(b.slope, "rad"),
@@ -94,16 +95,25 @@ def argument_record(v: Any, rough: Any = None) -> dict[str, Any]:
                       "load": quantity(b.bound_load, "N"), "group": b.bound_group,
                       "e_star": quantity(b.e_star, "Pa"), **_rough_record(rough, b)},
         "lambda_at_arm_bound": {
-            "lambda": {**_interval(b.lambda_at_bound, b.lambda_low, b.lambda_high, ""),
+            "lambda": {**_interval(d.lambda_at_bound, d.lambda_low, d.lambda_high, ""),
                        "level": v.offset.level},
             "interval": "over the offset's interval, at the slope where s_r = a",
-            "meaning": LOWER_BOUND, "slope": quantity(b.slope_at_bound, "rad"),
-            "slope_lambda_infinite": quantity(b.slope_lambda_infinite, "rad")},
+            "meaning": LOWER_BOUND, "slope": quantity(d.slope_at_bound, "rad"),
+            "radius": quantity(d.arm_bound, "m"), "basis": d.bound_basis,
+            "slope_lambda_infinite": quantity(d.slope_lambda_infinite, "rad")},
         "slope_lambda_4_3": {"slope": _interval(b.slope_4_3, b.slope_4_3_low,
                                                 b.slope_4_3_high, "rad"), "interval": ends},
         "arm_lambda_4_3": {"arm": _interval(b.arm_4_3, b.arm_4_3_low, b.arm_4_3_high, "m"),
                            "interval": ends},
     }
+
+
+def _deciding(v: Any, rough: Any) -> Any:
+    if rough is None:
+        return v.arm
+    from surfmet.mechanics.rotor_rough_bound import deciding_bound
+
+    return deciding_bound(v, rough)
 
 
 def _rough_record(rough: Any, b: Any) -> dict[str, Any]:
@@ -136,8 +146,10 @@ def argument_lines(v: Any, rough: Any = None) -> list[str]:
                if b.arm_ratio > 1 else "inside the bound")
     if rough is not None:
         verdict += " (by Hertz's radius alone)"
-    lam = (f"{b.lambda_at_bound:.3g} [{b.lambda_low:.3g}, {b.lambda_high:.3g}]"
-           if math.isfinite(b.lambda_at_bound) else "none in 0.05-20")
+    d = _deciding(v, rough)
+    lam = (f"{d.lambda_at_bound:.3g} [{d.lambda_low:.3g}, {d.lambda_high:.3g}]"
+           if math.isfinite(d.lambda_at_bound) else "none in 0.05-20")
+    at = f"s_r = a = {d.arm_bound * 1e6:.0f} µm" if d is not b else "s_r = a"
     loads = ", ".join(f"{g.name} {g.ball_loads[0]:.3g}/{g.ball_loads[1]:.3g} N"
                       for g in rig.groups)
     return [
@@ -146,12 +158,12 @@ def argument_lines(v: Any, rough: Any = None) -> list[str]:
         f"a = {b.arm_bound * 1e6:.0f} µm (Hertz at group {b.bound_group}'s ball load "
         f"{b.bound_load:.3g} N, E* {b.e_star / 1e9:.3g} GPa): {verdict}",
         *_rough_lines(rough, b),
-        f"  lambda at the arm bound (s_r = a, slope {_deg(b.slope_at_bound)}): {lam} over the "
+        f"  lambda at the arm bound ({at}, slope {_deg(d.slope_at_bound)}): {lam} over the "
         f"offset's interval; a lower bound conditional on the slope, not a confidence "
-        f"interval (lambda -> infinity as the slope falls to {_deg(b.slope_lambda_infinite)}, "
+        f"interval (lambda -> infinity as the slope falls to {_deg(d.slope_lambda_infinite)}, "
         f"where the torque vanishes)",
         f"  lambda = 4/3 makes the offset only with s_r = {b.arm_4_3 * 1e3:.3g} mm "
-        f"({b.arm_4_3 / b.arm_bound:.2g} x a) on a slope of {_deg(b.slope_4_3)} "
+        f"({b.arm_4_3 / d.arm_bound:.2g} x a) on a slope of {_deg(b.slope_4_3)} "
         f"({_deg(b.slope_4_3_low)} to {_deg(b.slope_4_3_high)} over the offset's interval)",
         f"  rig: R = {rig.ball_radius * 1e3:.3g} mm, M = {rig.mass:.4g} kg, "
         f"J = {rig.axial_inertia:.4g} kg m², ball loads {loads}",

@@ -19,8 +19,8 @@ from typing import Any
 
 from surfmet.units import quantity
 
-__all__ = ["MATERIALS", "RoughArmBound", "rough_arm_bound", "rough_bound_line",
-           "rough_bound_record"]
+__all__ = ["MATERIALS", "RoughArmBound", "deciding_bound", "rough_arm_bound",
+           "rough_bound_line", "rough_bound_record"]
 
 MATERIALS = "steel,aluminium"
 """The paper's ball and plate materials (:data:`contact.rotor.arm.PAPER_PAIR`)."""
@@ -104,6 +104,21 @@ def _basis(rb: RoughArmBound) -> str:
             f"{rb.grid[0]} grid of {rb.cell * 1e6:.3g} µm cells")
 
 
+def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
+    """The arm argument (:class:`contact.rotor.arm.ArmBound`) at the radius that bounds
+    the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
+    recomputed there (:func:`contact.rotor.arm.arm_bound` with ``radius=``): the least
+    lambda the offset needs, its slope, and the friction arm's ratio to the bound."""
+    if rb is None or rb.decides != "rough":
+        return v.arm
+    from contact.rotor.arm import arm_bound
+
+    o = v.offset
+    return arm_bound(v.rig, o.minuend, o.subtrahend, v.arm.slope, v.mean_acceleration,
+                     o.value, o.ci_low, o.ci_high, e_star=v.arm.e_star, radius=rb.radius,
+                     radius_basis=f"the rough contact's extent a* ({_basis(rb)})")
+
+
 def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]:
     """The fields :func:`~surfmet.mechanics.rotor_verdict.verdict_record` adds to
     ``arm_bound``: ``rough`` {radius, basis, files, grid, cell, warnings}, ``decides``
@@ -130,6 +145,6 @@ def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
     inside = "impossible at lambda = 1" if ratio > 1 else "inside the bound at lambda = 1"
     out = [f"  rough contact's extent a* = {rb.radius * 1e6:.0f} µm ({_basis(rb)}): {which}; "
            f"s_r = {ratio:.2g} x {rb.deciding_radius * 1e6:.0f} µm: {inside}"
-           + ("; the lambda lines below are at the Hertz a" if rb.decides == "rough" else "")]
+           + ("; the lambda lines below are at this a*" if rb.decides == "rough" else "")]
     out += [f"    warning: {w}" for w in rb.warnings]
     return out
