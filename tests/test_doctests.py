@@ -72,6 +72,7 @@ DOCTEST_MODULES = (
     "surfmet.mechanics.resolution_study",
     "surfmet.mechanics.rolling_contact",
     "surfmet.mechanics.rolling_resistance",
+    "surfmet.mechanics.rotor_rough_bound",
     "surfmet.mechanics.rotor_verdict",
     "surfmet.mechanics.scan_preparation",
     "surfmet.mechanics.spectrum",

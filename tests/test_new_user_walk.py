@@ -109,13 +109,11 @@ def test_sweep_rows_carry_the_scans_unit_caveats(tmp_path, capsys):
     import csv
     import json
 
-    from conftest import REALDATA
+    from conftest import REALDATA, shared_file
 
     from surfmet.data import path
 
-    h5 = REALDATA / "h5-multiple.h5"
-    if not h5.is_file():
-        pytest.skip("needs ../shared/realdata")
+    h5 = shared_file(REALDATA / "h5-multiple.h5")  # under CI a missing file fails
     out_csv, out_jsonl = tmp_path / "s.csv", tmp_path / "s.jsonl"
     rc = main(["sweep", "--plates", str(h5), str(path("paper_plate.x3p")), "--radius", "20mm",
                "--loads", "1N", "--materials", "steel,aluminium", "--grid", "16", "-q",
@@ -136,11 +134,9 @@ def test_show_on_a_container_says_which_measurement_it_draws(tmp_path, capsys):
     another; --json names it as the roughness command names its record."""
     import json
 
-    from conftest import REALDATA
+    from conftest import REALDATA, shared_file
 
-    zp = REALDATA / "container-2.zip"
-    if not zp.is_file():
-        pytest.skip("needs ../shared/realdata")
+    zp = shared_file(REALDATA / "container-2.zip")  # under CI a missing file fails
     assert main(["show", str(zp), "-o", str(tmp_path / "c.png"), "--2d", "--channel", "1",
                  "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
@@ -259,11 +255,9 @@ def test_info_text_states_units_once_and_quantities_readably(capsys):
     """info dektak-1.csv: the height unit once, as µm (the metadata dump repeated it as
     'height_unit: um'), and the stylus tip radius 2.5 µm (the file's 'Radius: 2.5 µm'),
     not "{'value': 2.5e-06, 'unit': 'm'}"."""
-    from conftest import REALDATA
+    from conftest import REALDATA, shared_file
 
-    f = REALDATA / "dektak-1.csv"
-    if not f.is_file():
-        pytest.skip("needs ../shared/realdata")
+    f = shared_file(REALDATA / "dektak-1.csv")  # under CI a missing file fails
     assert main(["info", str(f)]) == 0
     out = capsys.readouterr().out
     assert "height unit   µm" in out and "height_unit:" not in out

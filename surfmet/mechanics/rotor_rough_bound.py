@@ -33,7 +33,17 @@ class RoughArmBound:
     ``radius``: the BEM second-moment radius a*; ``hertz_radius``: the Hertz radius it is
     set beside; ``load``, ``ball_radius``; ``plate_file``, ``ball_file`` (None when not
     scanned); ``grid`` (cells per side, ny, nx) and ``cell`` (m) of the contact solution;
-    ``warnings``: a grid or scan too coarse for the contact."""
+    ``warnings``: a grid or scan too coarse for the contact.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound
+    >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
+    ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
+    ...                    cell=2e-5, warnings=())
+    >>> rb.decides, round(rb.deciding_radius * 1e6)
+    ('rough', 318)
+    """
 
     radius: float
     hertz_radius: float
@@ -81,6 +91,17 @@ def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, 
     Returns
     -------
     RoughArmBound
+
+    Examples
+    --------
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.rotor_rough_bound import rough_arm_bound
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict
+    >>> v = paper_verdict()
+    >>> rb = rough_arm_bound(v.arm, 0.02, path("paper_plate.x3p"), path("paper_ball.x3p"),
+    ...                      grid=32)
+    >>> rb.decides, round(rb.hertz_radius * 1e6)
+    ('rough', 106)
     """
     from surfmet.mechanics.hertz_check import hertz_check
 
@@ -108,7 +129,21 @@ def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
     """The arm argument (:class:`contact.rotor.arm.ArmBound`) at the radius that bounds
     the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
     recomputed there (:func:`contact.rotor.arm.arm_bound` with ``radius=``): the least
-    lambda the offset needs, its slope, and the friction arm's ratio to the bound."""
+    lambda the offset needs, its slope, and the friction arm's ratio to the bound.
+
+    Examples
+    --------
+    A bound three times Hertz's radius allows a larger torque, so a smaller lambda:
+
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, deciding_bound
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict
+    >>> v = paper_verdict()
+    >>> rb = RoughArmBound(radius=3 * v.arm.arm_bound, hertz_radius=v.arm.arm_bound,
+    ...                    load=v.arm.bound_load, ball_radius=0.02, plate_file="plate.x3p",
+    ...                    ball_file=None, grid=(64, 64), cell=2e-5, warnings=())
+    >>> round(v.arm.lambda_at_bound, 2), round(deciding_bound(v, rb).lambda_at_bound, 2)
+    (3.76, 2.4)
+    """
     if rb is None or rb.decides != "rough":
         return v.arm
     from contact.rotor.arm import arm_bound
@@ -122,7 +157,18 @@ def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
 def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]:
     """The fields :func:`~surfmet.mechanics.rotor_verdict.verdict_record` adds to
     ``arm_bound``: ``rough`` {radius, basis, files, grid, cell, warnings}, ``decides``
-    and ``deciding_radius``, ``friction_arm_ratio_to_deciding``."""
+    and ``deciding_radius``, ``friction_arm_ratio_to_deciding``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_bound_record
+    >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
+    ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
+    ...                    cell=2e-5, warnings=())
+    >>> rec = rough_bound_record(rb, 0.258e-3)
+    >>> rec["decides"], round(rec["friction_arm_ratio_to_deciding"]["value"], 2)
+    ('rough', 0.81)
+    """
     return {
         "rough": {"radius": quantity(rb.radius, "m"), "quantity": "effective_radius a*",
                   "basis": _basis(rb), "load": quantity(rb.load, "N"),
@@ -138,7 +184,17 @@ def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]
 
 
 def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
-    """The rough bound in words (after the friction arm's line)."""
+    """The rough bound in words (after the friction arm's line).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_bound_line
+    >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
+    ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
+    ...                    cell=2e-5, warnings=())
+    >>> rough_bound_line(rb, 0.258e-3)[0][:38]
+    "  rough contact's extent a* = 318 µm ("
+    """
     ratio = friction_arm / rb.deciding_radius
     which = ("the rough contact's a* decides (larger than Hertz)" if rb.decides == "rough"
              else "Hertz decides (larger than the rough a*)")
