@@ -8,35 +8,61 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from surfmet.cli._common import positive_length
 
-def add_roughness_options(p: argparse.ArgumentParser, *, what: str = "evaluate") -> None:
+
+def positive_int(text: str) -> int:
+    """An integer of at least 1 (argparse type)."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {n}")
+    return n
+
+
+def cutoff(text: str) -> str | float:
+    """A nesting index: a length, or none / off / auto (argparse type)."""
+    if text.strip().lower() in ("none", "off", "auto"):
+        return text.strip().lower()
+    return positive_length(text)
+
+
+def add_roughness_options(p: argparse.ArgumentParser, *, what: str = "evaluate",
+                          group: bool = True) -> None:
     """Add ``--level --ls --lc --edge --standard --rk-line --valley-suppression
     --n-sampling --window --profile --spikes`` with ``surfmet roughness``'s meaning and
     defaults (``--level``: plane, a line on profiles, none for an instrument's R-profile;
     a profile's λc, λs, standard and sampling lengths: the ones its file states)."""
-    from surfmet.cli.roughness import _cutoff, _positive_int
-
-    g = p.add_argument_group("evaluation (as surfmet roughness)")
+    g: Any = p.add_argument_group("evaluation (as surfmet roughness)") if group else p
     g.add_argument("--level", default=None,
                    help="form removal: none, mean, plane, poly:N, sphere, cylinder (default "
                    "plane, a line on profiles; none for a file holding an instrument's "
                    "R-profile)")
-    g.add_argument("--ls", type=_cutoff, default=None,
+    g.add_argument("--ls", type=cutoff, default=None,
                    help="S-filter nesting index λs (e.g. 2.5um), or none")
-    g.add_argument("--lc", type=_cutoff, default=None,
+    g.add_argument("--lc", type=cutoff, default=None,
                    help="L-filter nesting index / cut-off λc (e.g. 0.8mm); profiles: none for "
                    "an already filtered profile, auto for the ISO 4288 rule (default: the "
                    "file's stated λc, else auto)")
     g.add_argument("--edge", choices=("discard", "moment", "renormalise"), default="discard",
-                   help="areal filters' edge treatment (as surfmet roughness; default discard)")
+                   help="areal filters: the band of half a nesting index along each border "
+                   "where the Gaussian weights run past the scan (end effects) is left out "
+                   "(discard, the default) or kept with a moment or renormalised correction "
+                   "(biased near λc); the output states which")
     g.add_argument("--standard", choices=("iso21920", "iso4287"), default=None,
-                   help="profiles: iso21920 or iso4287 (default: the file's, else iso21920)")
+                   help="profiles: iso21920 (ISO 21920-2, over the evaluation length; the "
+                   "default unless the file states another) or iso4287 (ISO 4287:1997, "
+                   "per sampling length, averaged)")
     g.add_argument("--rk-line", choices=("secant", "least-squares", "levels"), default=None,
-                   help="profiles: ISO 13565-2 equivalent straight line (default: the file's "
-                   "instrument's, else secant)")
+                   help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
+                   "40%% secant (default, unless the file states its instrument's), its "
+                   "least-squares fit, or 'levels' (the curve tabulated at 1%% of Rt, as a "
+                   "Mitutoyo SurfTest prints)")
     g.add_argument("--valley-suppression", action="store_true",
-                   help="profiles: ISO 13565-1 two-stage λc filter")
-    g.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
+                   help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
+    g.add_argument("--n-sampling", type=positive_int, default=None, metavar="N",
                    help="profiles: number of sampling lengths (default: the file's, else 5)")
     g.add_argument("--window", default=None, metavar="X0:X1", help=f"{what} x in X0..X1 only")
     g.add_argument("--profile", default=None, metavar="row:K|col:K",
@@ -47,6 +73,7 @@ def add_roughness_options(p: argparse.ArgumentParser, *, what: str = "evaluate")
 def roughness_options(args: argparse.Namespace) -> dict[str, Any]:
     """The keyword arguments of :func:`surfmet.roughness.roughness` the options give (the
     ones ``surfmet roughness`` passes)."""
-    from surfmet.cli.roughness import _options
-
-    return _options(args)
+    return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
+            "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
+            "n_sampling": args.n_sampling, "rk_line": args.rk_line,
+            "valley_suppression": args.valley_suppression, "edge": args.edge}

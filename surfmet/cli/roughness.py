@@ -8,7 +8,9 @@ import csv
 import sys
 from typing import Any
 
-from surfmet.cli._common import add_json_flag, check_output, emit_json, log, positive_length
+from surfmet.cli._common import add_json_flag, check_output, emit_json, log
+from surfmet.cli._roughness_options import add_roughness_options, positive_int
+from surfmet.cli._roughness_options import roughness_options as _options
 from surfmet.cli._scan_options import add_scan_options, read_options, read_scan
 
 EPILOG = """examples:
@@ -51,41 +53,8 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     )
     p.add_argument("files", nargs="+", metavar="FILE", help="scan file(s)")
     add_scan_options(p)
-    p.add_argument("--level", default=None,
-                   help="form removal: none, mean, plane, poly:N, sphere, cylinder "
-                   "(default plane, a line on profiles; none for a file holding an "
-                   "instrument's R-profile)")
-    p.add_argument("--ls", type=_cutoff, default=None,
-                   help="S-filter nesting index λs (e.g. 2.5um), or none")
-    p.add_argument("--lc", type=_cutoff, default=None,
-                   help="L-filter nesting index / cut-off λc (e.g. 0.8mm); profiles: none "
-                   "for an already filtered profile, auto for the ISO 4288 rule (default: "
-                   "the file's stated λc, else auto)")
-    p.add_argument("--edge", choices=("discard", "moment", "renormalise"), default="discard",
-                   help="areal filters: the band of half a nesting index along each border "
-                   "where the Gaussian weights run past the scan (end effects) is left out "
-                   "(discard, the default) or kept with a moment or renormalised correction "
-                   "(biased near λc); the output states which")
-    p.add_argument("--standard", choices=("iso21920", "iso4287"), default=None,
-                   help="profiles: iso21920 (ISO 21920-2, over the evaluation length; the "
-                   "default unless the file states another) or iso4287 (ISO 4287:1997, "
-                   "per sampling length, averaged)")
-    p.add_argument("--rk-line", choices=("secant", "least-squares", "levels"),
-                   default=None,
-                   help="profiles: ISO 13565-2 equivalent straight line: the least-gradient "
-                   "40%% secant (default, unless the file states its instrument's), its "
-                   "least-squares fit, or 'levels' (the curve tabulated at 1%% of Rt, as a "
-                   "Mitutoyo SurfTest prints)")
-    p.add_argument("--valley-suppression", action="store_true",
-                   help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
-    p.add_argument("--n-sampling", type=_positive_int, default=None, metavar="N",
-                   help="profiles: number of sampling lengths (default: the file's, else 5)")
-    p.add_argument("--window", default=None, metavar="X0:X1",
-                   help="evaluate only x in X0..X1 (e.g. 468um:733um)")
-    p.add_argument("--profile", default=None, metavar="row:K|col:K",
-                   help="evaluate one row or column of an areal scan (R-parameters)")
-    p.add_argument("--spikes", action="store_true", help="remove spikes before levelling")
-    p.add_argument("--workers", type=_positive_int, default=None, metavar="N",
+    add_roughness_options(p, group=False)
+    p.add_argument("--workers", type=positive_int, default=None, metavar="N",
                    help="local processes for several files (default: one per CPU; 1 = serial)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run several files on a Dask distributed cluster, e.g. "
@@ -96,29 +65,6 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                      help="write one row per file to OUT ('-' for stdout)")
     p.set_defaults(func=run)
     return p
-
-
-def _positive_int(text: str) -> int:
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {n}")
-    return n
-
-
-def _cutoff(text: str) -> str | float:
-    if text.strip().lower() in ("none", "off", "auto"):
-        return text.strip().lower()
-    return positive_length(text)
-
-
-def _options(args: argparse.Namespace) -> dict[str, Any]:
-    return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
-            "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
-            "n_sampling": args.n_sampling, "rk_line": args.rk_line,
-            "valley_suppression": args.valley_suppression, "edge": args.edge}
 
 
 def _display(value: Any, unit: str) -> str:
