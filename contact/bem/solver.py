@@ -50,6 +50,7 @@ def solve_normal(
     strict: bool = True,
     edge: str = "warn",
     stats: SolverStats | None = None,
+    kernel: str = "love",
 ) -> ContactResult:
     """Solve the normal contact of two rough elastic half-spaces on a regular grid.
 
@@ -108,6 +109,11 @@ def solve_normal(
     stats : SolverStats, optional
         Live counters (iterations, FFTs, grid levels), for a benchmark that reads them
         while the solve runs; the same counts end in ``result.solve.counters`` either way.
+    kernel : {"love", "spectral"}
+        The half-space operator (:func:`contact.halfspace.convolution.convolution`): Love's
+        uniform pressure on each cell (every domain), or the spectral 2/|q| of Tamaas and
+        ContactMechanics (periodic only). ``result.extra["kernel"]`` says which was used,
+        and a spectral solve's method says so.
 
     Returns
     -------
@@ -172,7 +178,7 @@ def solve_normal(
             coarsen(h), 2 * dx, 2 * dy, e_star=e_star, load=load, approach=approach,
             periodic=periodic, bounds=bounds, tol=max(tol, 1e-4), max_iter=max_iter,
             precision=precision, nested=True, precondition=precondition, workers=workers,
-            strict=False, edge="ignore", stats=stats,
+            strict=False, edge="ignore", stats=stats, kernel=kernel,
         )
         p_init = (np.clip(prolong(np.asarray(coarse.pressure)), 0.0, cap)
                   if coarse.load > 0 else None)
@@ -184,7 +190,7 @@ def solve_normal(
     problem = Problem(
         # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
         gap=(h * e_star).ravel(), grid=grid,
-        operator=convolution(ny, nx, float(dx), float(dy), grid.periodic),
+        operator=convolution(ny, nx, float(dx), float(dy), grid.periodic, kernel=kernel),
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
         bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
         tol=tol, max_iter=max_iter,
@@ -196,7 +202,8 @@ def solve_normal(
     stats.iterations = it
 
     result = _assemble(h, state, e_star, hardness, grid, ok, tol,
-                       {"levels": list(stats.levels), "tol": tol, "precision": precision})
+                       {"levels": list(stats.levels), "tol": tol, "precision": precision,
+                        "kernel": kernel})
     result = dataclasses.replace(
         result, solve=dataclasses.replace(result.solve, counters=stats.snapshot()))
     msg = edge_warning(edge == "warn" and result.touches_edge)
@@ -368,6 +375,7 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
         y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
         periodic=grid.periodic, approach=delta,
         iterations=state.iteration, residual=state.residual, converged=ok, tolerance=tol,
-        method="normal BEM" + (", elastic-plastic" if hardness is not None else ""),
+        method="normal BEM" + (", elastic-plastic" if hardness is not None else "")
+        + (f", {extra['kernel']} kernel" if extra["kernel"] != "love" else ""),
         extra=extra,
     )

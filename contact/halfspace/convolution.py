@@ -57,7 +57,16 @@ class Convolution:
     ahead : int
         Free boundary only: the displacement is also wanted on this many cells beyond the
         last column (+x); the result then has nx + ahead columns.
+
+    Notes
+    -----
+    One implementation of :class:`contact.halfspace.operator.Operator` (3D, the Love
+    kernel); :class:`contact.halfspace.spectral.SpectralConvolution` is the spectral one.
     """
+
+    #: the operator protocol's names (:mod:`contact.halfspace.operator`)
+    kernel = "love"
+    geometry = "3d"
 
     def __init__(self, ny: int, nx: int, dx: float, dy: float, periodic: bool,
                  ahead: int = 0):
@@ -166,8 +175,37 @@ class Convolution:
         return self._padded(x, span, single, workers)
 
 
-@lru_cache(maxsize=6)
 def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool,
-                ahead: int = 0) -> Convolution:
-    """The cached :class:`Convolution` of a grid (kept between calls)."""
+                ahead: int = 0, kernel: str = "love") -> Convolution:
+    """The cached 3D operator of a grid (kept between calls): the one factory.
+
+    ``kernel="love"`` (uniform pressure on each cell, every domain) gives a
+    :class:`Convolution`; ``kernel="spectral"`` (2/|q| at each wavevector, the peers'
+    choice; periodic only) a :class:`contact.halfspace.spectral.SpectralConvolution`.
+    Both implement :class:`contact.halfspace.operator.Operator`.
+
+    Raises
+    ------
+    ContactInputError
+        An unknown kernel, or the spectral kernel on a free or extended-ahead domain.
+    """
+    if kernel not in ("love", "spectral"):
+        raise ContactInputError(f"the half-space kernel is 'love' or 'spectral', got {kernel!r}")
+    if kernel == "spectral" and (not periodic or ahead):
+        raise ContactInputError("the spectral kernel is periodic only: use kernel='love' for "
+                                "a free or extended-ahead domain")
+    return _cached(int(ny), int(nx), float(dx), float(dy), bool(periodic), int(ahead), kernel)
+
+
+@lru_cache(maxsize=6)
+def _cached(ny: int, nx: int, dx: float, dy: float, periodic: bool, ahead: int,
+            kernel: str) -> Convolution:
+    if kernel == "spectral":
+        from contact.halfspace.spectral import SpectralConvolution
+
+        return SpectralConvolution(ny, nx, dx, dy, periodic, ahead)
     return Convolution(ny, nx, dx, dy, periodic, ahead)
+
+
+# the factory's cache, cleared as before (benchmarks time cold operators)
+convolution.cache_clear = _cached.cache_clear  # type: ignore[attr-defined]
