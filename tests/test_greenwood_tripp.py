@@ -17,10 +17,10 @@ from scipy.optimize import brentq
 
 from contact import composite_modulus, hertz_sphere, material
 from contact.errors import ContactInputError
+from contact.halfspace.axisymmetric import ring_influence
 from contact.roughcontact.greenwood_tripp import (
     asperity_mean_pressure,
     greenwood_tripp,
-    ring_influence,
 )
 from surfmet.mechanics.hertz_check import hertz_check
 from surfmet.model import Topography

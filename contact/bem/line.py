@@ -19,47 +19,23 @@ line load; ``delta`` is measured against that datum, so only differences of disp
 and approach are physical.
 
 Influence coefficient of a uniform pressure on cell j at the centre of cell i (Johnson
-eq. 2.25b integrated over the cell)::
+eq. 2.25b integrated over the cell; the strip integral of
+:mod:`contact.halfspace.plane_strain`, whose :class:`~contact.halfspace.plane_strain.StripOperator`
+is the operator solved here)::
 
     K_ij = -(2 / (pi E*)) [F(d + dx/2) - F(d - dx/2)],  F(v) = v ln|v| - v,  d = x_i - x_j
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
 
-from contact.errors import ContactInputError, ConvergenceError
+from contact.errors import ConvergenceError
+from contact.halfspace.plane_strain import StripOperator
 from contact.record import SolveRecord
-
-
-def _prim(v: np.ndarray) -> np.ndarray:
-    """F(v) = v ln|v| - v (0 at v = 0)."""
-    av = np.abs(v)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.where(av > 0, v * np.log(np.where(av > 0, av, 1.0)) - v, 0.0)
-    return out
-
-
-def line_column(d: np.ndarray, dx: float) -> np.ndarray:
-    """Displacement at offsets ``d`` (m) from a uniform-pressure cell of width ``dx`` on a
-    half-plane, E* = 1 (m per Pa; the datum of the module notes)."""
-    return -(2.0 / math.pi) * (_prim(d + dx / 2) - _prim(d - dx / 2))
-
-
-def line_influence(n: int, dx: float) -> np.ndarray:
-    """Dense (n, n) influence matrix of a uniform-pressure cell on a half-plane, E* = 1.
-
-    ``u = K @ p`` gives the combined displacement (m per Pa of pressure, times 1/E*).
-    """
-    if n < 1 or not (math.isfinite(dx) and dx > 0):
-        raise ContactInputError("the line grid needs n >= 1 cells of positive pitch")
-    col = line_column(np.arange(n) * dx, dx)
-    idx = np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])
-    return col[idx]
 
 
 def solve_active_set(A: np.ndarray, h: np.ndarray, weight: float, target: float,
@@ -106,7 +82,7 @@ def solve_active_set(A: np.ndarray, h: np.ndarray, weight: float, target: float,
 @lru_cache(maxsize=2)
 def _scaled_influence(n: int, dx: float, e_star: float) -> np.ndarray:
     # a rolling solve asks for the same grid's matrix at every coupling step; read-only
-    K = line_influence(n, dx) / e_star
+    K = StripOperator(n, dx).matrix / e_star
     K.setflags(write=False)
     return K
 

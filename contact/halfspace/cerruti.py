@@ -38,8 +38,10 @@ import math
 
 import numpy as np
 
+from contact.halfspace.alias import SYMBOLS, alias_sums
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.influence import corner_sum, love_corner
+from contact.halfspace.plane_strain import strip_log
 
 
 def _asinh_ratio(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -92,13 +94,8 @@ def line_integrals(x: np.ndarray, dx: float) -> dict[str, np.ndarray]:
     """Plane strain: integrals over the strip [-dx/2, dx/2] of -2 ln|x| and pi sign(x)."""
     x = np.asarray(x, dtype=float)
     hx = 0.5 * dx
-
-    def f_log(t):
-        at = np.abs(t)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(at > 0, t * np.log(np.where(at > 0, at, 1.0)) - t, 0.0)
-
-    return {"log": -2.0 * (f_log(x + hx) - f_log(x - hx)),
+    # the strip integral of the log kernel has one home (the normal line contact's too)
+    return {"log": strip_log(x, dx),
             "sign": math.pi * (np.abs(x + hx) - np.abs(x - hx))}
 
 
@@ -126,9 +123,10 @@ def periodic_spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants,
                      n_alias: int = 8) -> dict[str, np.ndarray]:
     """Spectra, shape (ny, nx//2 + 1), of the blocks periodised over the (ny, nx) grid.
 
-    As Love's periodic spectrum (:func:`contact.halfspace.influence.periodic_kernel_spectrum`):
-    the alias sums over q' = q + G_mn, |m|, |n| <= ``n_alias``, of the continuum symbols
-    times the transform of the uniform element, sinc(qx' dx/2) sinc(qy' dy/2). The symbols
+    As Love's periodic spectrum (:func:`contact.halfspace.influence.periodic_kernel_spectrum`),
+    from the one alias sum (:func:`contact.halfspace.alias.alias_sums`): the sums over
+    q' = q + G_mn, |m|, |n| <= ``n_alias``, of the continuum symbols times the transform
+    of the uniform element, sinc(qx' dx/2) sinc(qy' dy/2). The symbols
     are the Fourier transforms (e^{-i q.x}) of the point-load kernels over pi
     (Johnson 1985, eqs. 3.19, 3.86-3.87; Kalker 1990 sec. 1.5)::
 
@@ -139,26 +137,9 @@ def periodic_spectra(ny: int, nx: int, dx: float, dy: float, c: PairConstants,
     derivatives). q = 0 (a rigid displacement of a periodic problem) is zero. The truncated
     sums are made Hermitian, so that the real-space kernels are real.
     """
-    qx0 = 2 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
-    qy0 = 2 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
-    acc = {k: np.zeros((ny, nx // 2 + 1)) for k in ("one", "xx", "yy", "xy", "x", "y")}
-    for mx in range(-n_alias, n_alias + 1):
-        qx = qx0 + 2 * np.pi * mx / dx
-        sx = np.sinc(qx * dx / (2 * np.pi))
-        for my in range(-n_alias, n_alias + 1):
-            qy = qy0 + 2 * np.pi * my / dy
-            q2 = qx * qx + qy * qy
-            with np.errstate(divide="ignore", invalid="ignore"):
-                w = np.where(q2 > 0, sx * np.sinc(qy * dy / (2 * np.pi)) / q2, 0.0)
-            q = np.sqrt(q2)
-            acc["one"] += 2 * q * w
-            with np.errstate(divide="ignore", invalid="ignore"):
-                wq = np.where(q2 > 0, w / np.where(q2 > 0, q, 1.0), 0.0)
-            acc["xx"] += 2 * qy * qy * wq
-            acc["yy"] += 2 * qx * qx * wq
-            acc["xy"] -= 2 * qx * qy * wq
-            acc["x"] -= 2 * qx * w
-            acc["y"] -= 2 * qy * w
+    # the one alias sum of every symbol (contact.halfspace.alias)
+    acc = dict(zip(SYMBOLS, alias_sums(int(ny), int(nx), float(dx), float(dy), int(n_alias),
+                                       True)))
     f = 1.0 / c.G
     blocks = {"nn": f * (1 - c.nu) * acc["one"],
               "xx": f * ((1 - c.nu) * acc["one"] + c.nu * acc["xx"]),

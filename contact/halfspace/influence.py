@@ -30,7 +30,8 @@ the convolution operators that apply them are in :mod:`contact.halfspace.convolu
   displacement, a rigid-body motion in a periodic problem) is zero.
 
 All kernels here are for E* = 1; divide by E* to get displacements. The alias sum is
-compiled with numba (:func:`periodic_love_spectrum`); its plain-numpy twin lives in the
+the one of :mod:`contact.halfspace.alias` (compiled with numba; the pair operator's
+blocks use it too); the plain-numpy twin of :func:`periodic_love_spectrum` lives in the
 tests (``tests/kernel_twins.py``).
 """
 
@@ -39,10 +40,10 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-import numba as nb
 import numpy as np
 import scipy.fft as sfft
 
+from contact.halfspace.alias import alias_sums
 from contact.halfspace.padding import padded_shape, wrapped_offsets
 
 
@@ -147,58 +148,13 @@ def extended_kernel_spectrum(ny: int, nx: int, ahead: int, dx: float,
     return spec
 
 
-@nb.njit(cache=True)
-def _alias_terms(a, n_alias, step, s, q):  # pragma: no cover - compiled
-    """Fill s[k] = sinc(z) and q[k] = 2 z / step, z = a + pi m, m = k - n_alias.
+def periodic_love_spectrum(ny: int, nx: int, dx: float, dy: float,
+                           n_alias: int) -> np.ndarray:
+    """Alias sum of 2/|q'| sinc(qx' dx/2) sinc(qy' dy/2) on the rfft grid (E* = 1).
 
-    ``a`` is q step / 2 of the base wavenumber; z runs over its aliases. sin(z) is
-    +-sin(a), so one sine serves every alias.
+    The normal symbol of the one alias sum, :func:`contact.halfspace.alias.alias_sums`.
     """
-    sa = math.sin(a)
-    for k in range(2 * n_alias + 1):
-        m = k - n_alias
-        z = a + math.pi * m
-        if z == 0.0:
-            s[k] = 1.0
-        else:
-            s[k] = (sa if m % 2 == 0 else -sa) / z
-        q[k] = 2.0 * z / step
-
-
-@nb.njit(cache=True)
-def periodic_love_spectrum(ny, nx, dx, dy, n_alias):  # pragma: no cover - compiled
-    """Alias sum of 2/|q'| sinc(qx' dx/2) sinc(qy' dy/2) on the rfft grid (E* = 1)."""
-    nxh = nx // 2 + 1
-    na = 2 * n_alias + 1
-    out = np.zeros((ny, nxh))
-    # The same aliases serve every row: the x terms once per column, the y terms per row.
-    sxs = np.empty((nxh, na))
-    qxs = np.empty((nxh, na))
-    for j in range(nxh):
-        _alias_terms(math.pi * j / nx, n_alias, dx, sxs[j], qxs[j])
-    sy = np.empty(na)
-    qy = np.empty(na)
-    # The sum is even in qy: compute rows 0..ny/2 and mirror the others.
-    for i in range(ny // 2 + 1):
-        _alias_terms(math.pi * i / ny, n_alias, dy, sy, qy)
-        for j in range(nxh):
-            if i == 0 and j == 0:
-                continue
-            sx = sxs[j]
-            qx = qxs[j]
-            acc = 0.0
-            for kx in range(na):
-                if sx[kx] == 0.0:
-                    continue
-                for ky in range(na):
-                    if sy[ky] == 0.0:
-                        continue
-                    acc += 2.0 / math.sqrt(qx[kx] * qx[kx] + qy[ky] * qy[ky]) * sx[kx] * sy[ky]
-            out[i, j] = acc
-    for i in range(ny // 2 + 1, ny):
-        for j in range(nxh):
-            out[i, j] = out[ny - i, j]
-    return out
+    return alias_sums(int(ny), int(nx), float(dx), float(dy), int(n_alias), False)[0]
 
 
 @lru_cache(maxsize=8)

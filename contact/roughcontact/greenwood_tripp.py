@@ -11,7 +11,8 @@ separation between the deformed sphere and the mean summit plane is
 with d the depth of the sphere's apex below the mean summit plane (set by the load) and
 u(r) the combined normal displacement of the two half-spaces under the nominal pressure
 p(r) (Boussinesq; for axisymmetric loads the ring kernel with complete elliptic
-integrals, Johnson 1985, Eq. 3.39 for a uniform disc). The nominal pressure is the GW
+integrals, Johnson 1985, Eq. 3.39 for a uniform disc: the ring operator of
+:mod:`contact.halfspace.axisymmetric`). The nominal pressure is the GW
 asperity load per unit area at that separation,
 
     p(r) = η ∫_{g}^{∞} f(z - g) φ(z) dz,   f(w) = (4/3) E* R_s^{1/2} w^{3/2}  (Hertz),
@@ -64,10 +65,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.special import ellipe, ellipk, erfc
+from scipy.special import erfc
 
 from contact._validate import positive
 from contact.errors import ContactInputError, ConvergenceError
+from contact.halfspace.axisymmetric import RingOperator
 from contact.hertz import hertz_sphere
 
 #: Gauss-Legendre nodes for the summit-height integrals (in t = sqrt(z - g)).
@@ -140,31 +142,6 @@ class GreenwoodTripp:
         """Nominal pressure at radius ``r`` (Pa): linear between ring centres, 0 beyond."""
         rr = np.abs(np.asarray(r, dtype=float))
         return np.interp(rr, self.r, self.p, left=float(self.p[0]), right=0.0)
-
-
-def disc_displacement(r: np.ndarray, b: float, e_star: float) -> np.ndarray:
-    """Combined surface displacement at ``r`` of a unit uniform pressure on a disc of radius b.
-
-    Johnson (1985), Eq. 3.39 with (1-ν²)/E summed over both bodies = 1/E*:
-    ``u = 4 b E(r/b) / (π E*)`` for r ≤ b and
-    ``u = 4 r [E(b/r) - (1 - b²/r²) K(b/r)] / (π E*)`` for r > b (scipy's parameter m = k²).
-    """
-    r = np.asarray(r, dtype=float)
-    out = np.empty_like(r)
-    inside = r <= b
-    out[inside] = 4.0 * b * ellipe((r[inside] / b) ** 2) / (math.pi * e_star)
-    ro = r[~inside]
-    m = (b / ro) ** 2
-    out[~inside] = 4.0 * ro * (ellipe(m) - (1.0 - m) * ellipk(m)) / (math.pi * e_star)
-    return out
-
-
-def ring_influence(edges: np.ndarray, r: np.ndarray, e_star: float) -> np.ndarray:
-    """Matrix K[i, j]: displacement at r[i] of a unit pressure on ring j (edges[j], edges[j+1])."""
-    discs = np.stack([disc_displacement(r, float(b), e_star) for b in edges[1:]], axis=1)
-    out = discs.copy()
-    out[:, 1:] -= discs[:, :-1]
-    return out
 
 
 class _AsperityLaw:
@@ -351,7 +328,8 @@ def _solve(law: _AsperityLaw, hz, radius: float, e_star: float, load: float, r_m
     edges = np.linspace(0.0, r_max, n + 1)
     r = 0.5 * (edges[1:] + edges[:-1])
     area = math.pi * np.diff(edges**2)
-    K = ring_influence(edges, r, e_star)
+    # the axisymmetric half-space operator (E* = 1) of contact.halfspace
+    K = RingOperator(edges).matrix / e_star
     shape = r * r / (2.0 * radius)
     p0 = hz.p0
     # start: the Hertz pressure (the σ → 0 limit) and the depth that balances the load

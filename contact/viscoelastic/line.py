@@ -35,9 +35,10 @@ import math
 import numpy as np
 
 from contact._validate import positive
-from contact.bem.line import active_set_record, line_column, solve_active_set
+from contact.bem.line import active_set_record, solve_active_set
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid
+from contact.halfspace.plane_strain import line_column
 from contact.record import edge_contact, edge_warning
 from contact.viscoelastic.result import RollingResult, edges_1d, frozen
 from contact.viscoelastic.rheology import CreepSeries
