@@ -31,10 +31,9 @@ from contact import hertz_sphere, sphere_gap
 from contact.bem import solve_normal
 from contact.errors import ContactInputError
 from contact.halfspace.axisymmetric import RingOperator
-from contact.halfspace.convolution import Convolution, convolution
+from contact.halfspace.convolution import Convolution, SpectralConvolution, convolution
 from contact.halfspace.operator import GEOMETRIES, KERNELS, Operator, domain
 from contact.halfspace.plane_strain import StripOperator
-from contact.halfspace.spectral import SpectralConvolution
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -9,7 +9,9 @@ transforms of :mod:`contact.halfspace.padding`:
 - **extended ahead** (``ahead = m`` cells): the same, with the displacement also on the
   m cells beyond the last column (+x), which the steady-rolling operators of
   :mod:`contact.viscoelastic` integrate along the rolling direction;
-- **periodic**: the unpadded cyclic convolution with the periodised Love kernel.
+- **periodic**: the unpadded cyclic convolution with the periodised Love kernel, or
+  (:class:`SpectralConvolution`) with the spectral kernel 2/|q| of
+  :mod:`contact.halfspace.spectral`, the peers' choice.
 
 What keeps a convolution cheap inside an iterative solver:
 
@@ -31,6 +33,7 @@ import threading
 from functools import lru_cache
 
 import numpy as np
+from scipy.fft import irfft2
 
 from contact.errors import ContactInputError
 from contact.halfspace.influence import (
@@ -41,6 +44,7 @@ from contact.halfspace.influence import (
     periodic_kernel_spectrum,
 )
 from contact.halfspace.padding import forward, inverse, padded_shape, real_types
+from contact.halfspace.spectral import spectral_kernel_spectrum, spectral_wavenumbers
 
 
 class Convolution:
@@ -61,7 +65,7 @@ class Convolution:
     Notes
     -----
     One implementation of :class:`contact.halfspace.operator.Operator` (3D, the Love
-    kernel); :class:`contact.halfspace.spectral.SpectralConvolution` is the spectral one.
+    kernel); :class:`SpectralConvolution` is the spectral one.
     """
 
     #: the operator protocol's names (:mod:`contact.halfspace.operator`)
@@ -175,13 +179,65 @@ class Convolution:
         return self._padded(x, span, single, workers)
 
 
+class SpectralConvolution(Convolution):
+    """u = K * p on a periodic grid with the spectral kernel K^(q) = 2/|q| (E* = 1).
+
+    A :class:`Convolution` in every use (the same pruned
+    cyclic transform, work buffer and float32 path), built on the spectral kernel
+    instead of the periodised Love one; periodic only.
+
+    Parameters
+    ----------
+    ny, nx : int
+        Grid shape.
+    dx, dy : float
+        Cell pitch (m).
+    periodic : bool
+        Must be True: the spectral kernel is a periodic operator.
+    ahead : int
+        Must be 0.
+    """
+
+    kernel = "spectral"
+
+    def __init__(self, ny: int, nx: int, dx: float, dy: float, periodic: bool = True,
+                 ahead: int = 0):
+        # Convolution's own __init__ would build the Love spectra first (an alias sum
+        # per mode): the attributes are set here instead, the same ones
+        if not periodic or ahead:
+            raise ContactInputError(
+                "the spectral kernel is periodic only: use kernel='love' for a free or "
+                "extended-ahead domain")
+        self.ny, self.nx = int(ny), int(nx)
+        self.dx, self.dy = float(dx), float(dy)
+        self.periodic = True
+        self.ahead = 0
+        self.shape = (self.ny, self.nx)
+        self.spec64 = spectral_kernel_spectrum(self.ny, self.nx, self.dx, self.dy)
+        self.spec32 = self.spec64.astype(np.float32)
+        real = irfft2(self.spec64, s=self.shape)
+        real.setflags(write=False)
+        self.real = real
+        self.self_influence = float(self.real[0, 0])
+        self._stiff: dict[bool, np.ndarray] = {}
+        # one spectral work buffer per thread, as Convolution keeps
+        self._work = threading.local()
+
+    def stiffness(self, single: bool) -> np.ndarray:
+        """|q|/2 on this grid, 0 at q = 0: the exact inverse of the spectral kernel."""
+        if single not in self._stiff:
+            stiff = 0.5 * spectral_wavenumbers(self.ny, self.nx, self.dx, self.dy)
+            self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
+        return self._stiff[single]
+
+
 def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool,
                 ahead: int = 0, kernel: str = "love") -> Convolution:
     """The cached 3D operator of a grid (kept between calls): the one factory.
 
     ``kernel="love"`` (uniform pressure on each cell, every domain) gives a
     :class:`Convolution`; ``kernel="spectral"`` (2/|q| at each wavevector, the peers'
-    choice; periodic only) a :class:`contact.halfspace.spectral.SpectralConvolution`.
+    choice, :mod:`contact.halfspace.spectral`; periodic only) a :class:`SpectralConvolution`.
     Both implement :class:`contact.halfspace.operator.Operator`.
 
     Raises
@@ -201,8 +257,6 @@ def convolution(ny: int, nx: int, dx: float, dy: float, periodic: bool,
 def _cached(ny: int, nx: int, dx: float, dy: float, periodic: bool, ahead: int,
             kernel: str) -> Convolution:
     if kernel == "spectral":
-        from contact.halfspace.spectral import SpectralConvolution
-
         return SpectralConvolution(ny, nx, dx, dy, periodic, ahead)
     return Convolution(ny, nx, dx, dy, periodic, ahead)
 

@@ -6,7 +6,7 @@ takes its operator through this protocol:
 
 - :class:`~contact.halfspace.convolution.Convolution`: 3D, Love's uniform cells; free,
   periodic and extended-ahead domains (``kernel="love"``);
-- :class:`~contact.halfspace.spectral.SpectralConvolution`: 3D, the spectral kernel
+- :class:`~contact.halfspace.convolution.SpectralConvolution`: 3D, the spectral kernel
   2/|q| on the periodic domain (``kernel="spectral"``);
 - :class:`~contact.halfspace.plane_strain.StripOperator`: plane strain, uniform strips on
   a free line (``kernel="love"``, its 2D form);

@@ -16,19 +16,16 @@ surface that leaves 0.6-1.0 % less contact area than the peers (tests/test_tamaa
 
 The q = 0 coefficient (the mean displacement, a rigid-body motion of a periodic problem)
 is zero, as in the Love operator and in Tamaas: the solver's approach carries the mean.
-The operator's own inverse, |q|/2, is its stiffness (the solver's preconditioner).
+The kernel's own inverse, |q|/2, is its stiffness (the solver's preconditioner). The
+operator that applies it is
+:class:`contact.halfspace.convolution.SpectralConvolution`, beside the Love one.
 """
 
 from __future__ import annotations
 
-import threading
 from functools import lru_cache
 
 import numpy as np
-import scipy.fft as sfft
-
-from contact.errors import ContactInputError
-from contact.halfspace.convolution import Convolution
 
 
 @lru_cache(maxsize=8)
@@ -46,55 +43,3 @@ def spectral_wavenumbers(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
     qy = 2.0 * np.pi * np.fft.fftfreq(int(ny), float(dy))[:, None]
     qx = 2.0 * np.pi * np.fft.rfftfreq(int(nx), float(dx))[None, :]
     return np.hypot(qx, qy)
-
-
-class SpectralConvolution(Convolution):
-    """u = K * p on a periodic grid with the spectral kernel K^(q) = 2/|q| (E* = 1).
-
-    A :class:`~contact.halfspace.convolution.Convolution` in every use (the same pruned
-    cyclic transform, work buffer and float32 path), built on the spectral kernel
-    instead of the periodised Love one; periodic only.
-
-    Parameters
-    ----------
-    ny, nx : int
-        Grid shape.
-    dx, dy : float
-        Cell pitch (m).
-    periodic : bool
-        Must be True: the spectral kernel is a periodic operator.
-    ahead : int
-        Must be 0.
-    """
-
-    kernel = "spectral"
-
-    def __init__(self, ny: int, nx: int, dx: float, dy: float, periodic: bool = True,
-                 ahead: int = 0):
-        # Convolution's own __init__ would build the Love spectra first (an alias sum
-        # per mode): the attributes are set here instead, the same ones
-        if not periodic or ahead:
-            raise ContactInputError(
-                "the spectral kernel is periodic only: use kernel='love' for a free or "
-                "extended-ahead domain")
-        self.ny, self.nx = int(ny), int(nx)
-        self.dx, self.dy = float(dx), float(dy)
-        self.periodic = True
-        self.ahead = 0
-        self.shape = (self.ny, self.nx)
-        self.spec64 = spectral_kernel_spectrum(self.ny, self.nx, self.dx, self.dy)
-        self.spec32 = self.spec64.astype(np.float32)
-        real = sfft.irfft2(self.spec64, s=self.shape)
-        real.setflags(write=False)
-        self.real = real
-        self.self_influence = float(self.real[0, 0])
-        self._stiff: dict[bool, np.ndarray] = {}
-        # one spectral work buffer per thread, as Convolution keeps
-        self._work = threading.local()
-
-    def stiffness(self, single: bool) -> np.ndarray:
-        """|q|/2 on this grid, 0 at q = 0: the exact inverse of the spectral kernel."""
-        if single not in self._stiff:
-            stiff = 0.5 * spectral_wavenumbers(self.ny, self.nx, self.dx, self.dy)
-            self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
-        return self._stiff[single]
