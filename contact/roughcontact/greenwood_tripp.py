@@ -326,10 +326,11 @@ def greenwood_tripp(
 def _solve(law: _AsperityLaw, hz, radius: float, e_star: float, load: float, r_max: float,
            n: int, tol: float, max_iter: int):
     edges = np.linspace(0.0, r_max, n + 1)
-    r = 0.5 * (edges[1:] + edges[:-1])
+    # the axisymmetric half-space operator (E* = 1) of contact.halfspace, at ring centres
+    rings = RingOperator(edges)
+    r = rings.r
     area = math.pi * np.diff(edges**2)
-    # the axisymmetric half-space operator (E* = 1) of contact.halfspace
-    K = RingOperator(edges).matrix / e_star
+    K = rings.matrix / e_star
     shape = r * r / (2.0 * radius)
     p0 = hz.p0
     # start: the Hertz pressure (the σ → 0 limit) and the depth that balances the load
