@@ -58,8 +58,8 @@ def test_every_implementation_follows_the_protocol(name):
     x = np.random.default_rng(3).random(op.shape[-1] if line else (12, 16))
     u = op(x)
     assert u.shape == ((x.size,) if line else (12, 16 + op.ahead))
-    # a pressure displaces the surface into the body everywhere (positive kernels, free)
-    # and the cell under it most of all per unit pressure on itself
+    # a cell's pressure pushes its own centre into the body (for the strip: a micrometre
+    # cell, well inside the metre of the plane-strain datum)
     assert op.self_influence > 0
     assert op.stiffness(True).dtype == np.float32 and op.stiffness(False).dtype == np.float64
     assert op.precondition(x, (0, x.shape[0]) if not line else None).shape == x.shape
