@@ -70,13 +70,6 @@ class Operator(Protocol):
         """The approximate inverse of K applied to x."""
 
 
-def domain(op: Operator) -> str:
-    """The operator's domain in words: "periodic", "free" or "extended ahead"."""
-    if op.periodic:
-        return "periodic"
-    return "extended ahead" if op.ahead else "free"
-
-
 def line_stiffness(n: int, pitch: float, single: bool) -> np.ndarray:
     """|q|/2 on the rfft grid of n cells of ``pitch`` (0 at q = 0): the periodic stiffness
     of a half-plane under strip loads, 2/|q| being the transform of -2 ln|x| (E* = 1)."""
