@@ -215,8 +215,9 @@ def formats() -> dict[str, FormatSpec]:
 
 
 def _load_all() -> None:
-    # Importing surfmet.io registers every built-in format.
-    import surfmet.io  # noqa: F401
+    import surfmet.io  # every module its FORMAT_MODULES names registers on import
+
+    surfmet.io.load_format_modules()
 
 
 def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
