@@ -21,7 +21,7 @@ _RUNNING: list[dict[str, Any]] = []
 
 #: Unit of the value an argparse type returns, by the type's ``__name__``.
 TYPE_UNITS: dict[str, str] = {
-    "length": "m", "positive_length": "m", "force": "N",
+    "length": "m", "positive_length": "m", "force": "N", "load range": "N",
     "pressure": "Pa", "speed": "m/s", "work": "J/m^2", "energy": "J/m^2",
 }
 
