@@ -265,3 +265,16 @@ def test_a_new_interaction_law_touches_three_files():
     # for a capillary law), so there is nothing to check here yet; also confirm the paths
     # (contact/adhesion/laws/<law>.py, docs/adhesion.md) match the laws branch.
     assert files[0] == "contact/adhesion/laws/<law>.py"
+
+
+@pytest.mark.parametrize("doc", ["architecture.md", "contact_core.md"])
+def test_every_file_the_architecture_pages_name_exists(doc):
+    # The pages send a newcomer to files: each must be there (main named three modules of
+    # contact/ without their .py, as if they were packages).
+    text = (ROOT / "docs" / doc).read_text(encoding="utf-8")
+    named = set(re.findall(r"`((?:contact|surfmet|profiles|tests|benchmarks)/[^`<>* ]+)`", text))
+    core = set(re.findall(r"`((?:bem|halfspace|adhesion|tangential|viscoelastic|roughcontact"
+                          r"|setups)/[a-z_0-9]+\.py)`", text))
+    missing = sorted(p for p in named if not (ROOT / p.rstrip("/")).exists())
+    missing += sorted(p for p in core if not (ROOT / "contact" / p).exists())
+    assert not missing, f"docs/{doc} names files that do not exist: {missing}"
