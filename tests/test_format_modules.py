@@ -66,3 +66,21 @@ def test_a_module_that_exists_but_imports_something_missing_is_not_renamed(monke
     with pytest.raises(ModuleNotFoundError, match="_no_such_dependency_anywhere") as info:
         formats()
     assert "FORMAT_MODULES" not in str(info.value)
+
+
+def test_every_format_module_is_type_checked():
+    # Issue 36 left the readers outside the mypy scope (32 errors); the scope is the
+    # package now, so a new reader is checked from its first commit.
+    import re
+    from pathlib import Path
+
+    root = Path(surfmet.io.__file__).resolve().parents[2]
+    text = (root / "pyproject.toml").read_text(encoding="utf-8")  # no tomllib on 3.10
+    block = re.search(r"\[tool\.mypy\].*?^files = \[(.*?)^\]", text, re.S | re.M)
+    assert block, "pyproject.toml has no [tool.mypy] files"
+    files = re.findall(r'^\s*"([^"]+)"', block.group(1), re.M)
+    modules = sorted(p.relative_to(root).as_posix()
+                     for p in (root / "surfmet" / "io").glob("*.py"))
+    unchecked = [m for m in modules
+                 if not any(m == f or m.startswith(f.rstrip("/") + "/") for f in files)]
+    assert not unchecked, f"outside the mypy scope: {unchecked}"
