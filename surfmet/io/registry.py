@@ -215,9 +215,8 @@ def formats() -> dict[str, FormatSpec]:
 
 
 def _load_all() -> None:
-    import surfmet.io  # every module its FORMAT_MODULES names registers on import
-
-    surfmet.io.load_format_modules()
+    from surfmet.io import load_format_modules  # each listed module registers on import
+    load_format_modules()
 
 
 def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:
