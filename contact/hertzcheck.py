@@ -49,7 +49,6 @@ asperities and are stable under refinement.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -493,8 +492,3 @@ def check_sphere(
     comp = compare_with_hertz(elastic, radius=radius, sigma=float(sigma), plastic=plastic,
                               hardness=hardness, scan_pixel=scan_pixel)
     return SphereCheck(comparison=comp, elastic=elastic, plastic=plastic, notes=tuple(notes))
-
-
-def summary_lines(comp: HertzComparison) -> Sequence[str]:
-    """Human-readable lines: the verdict and its reasons."""
-    return [comp.headline, *(f"- {r}" for r in comp.reasons)]

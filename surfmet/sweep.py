@@ -447,16 +447,6 @@ def valid_rows(cols: Sequence[tuple[str, str]], csv_path: str | Path | None = No
     return out
 
 
-def done_keys(csv_path: str | Path | None = None,
-              json_path: str | Path | None = None, task: str = "contact") -> set[str]:
-    """Keys of the rows already written whole to every output given (:func:`valid_rows`);
-    a row missing from either file is not done."""
-    found = valid_rows(columns(task), csv_path, json_path)
-    given = [k for k, p in (("csv", csv_path), ("json", json_path)) if p is not None]
-    keys = [set(found.get(k, {})) for k in given]
-    return set.intersection(*keys) if keys else set()
-
-
 def _restore(cols: Sequence[tuple[str, str]], csv_path: str | Path | None,
              json_path: str | Path | None) -> set[str]:
     """Rewrite the existing outputs (atomically) with only the rows whole in all of them;

@@ -197,27 +197,6 @@ def parse_length_range(text: str) -> tuple[float, float]:
     return lo, hi
 
 
-def parse_force_range(text: str) -> tuple[float, float, int | None]:
-    """Parse ``"F1:F2[:N]"`` into (F1, F2, N) newtons; N is a point count or None."""
-    parts = text.split(":")
-    if len(parts) not in (2, 3):
-        raise SurfmetInputError(f"cannot read load range {text!r}: write F1:F2[:N], e.g. 1N:100N:9")
-    lo, hi = parse_force(parts[0]), parse_force(parts[1])
-    n: int | None = None
-    if len(parts) == 3:
-        try:
-            n = int(parts[2])
-        except ValueError:
-            raise SurfmetInputError(
-                f"point count {parts[2]!r} in {text!r} is not an integer"
-            ) from None
-        if n < 2:
-            raise SurfmetInputError(f"load range {text!r} needs at least 2 points")
-    if not (lo > 0 and hi > lo):
-        raise SurfmetInputError(f"load range {text!r} must satisfy 0 < F1 < F2")
-    return lo, hi, n
-
-
 def is_bare_number(text: Any) -> bool:
     """Whether ``text`` (as typed) is a number without a unit, e.g. ``"20"``."""
     if not isinstance(text, str):

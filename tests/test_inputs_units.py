@@ -91,13 +91,14 @@ def test_every_text_output_ends_with_its_inputs(argv, shown, scan, capsys):
 
 def test_inputs_record_reads_units_from_the_parsers():
     """Lists, ranges and values the command parses itself, each with its unit."""
-    from surfmet.cli._common import force, force_range, positive_length
+    from surfmet.cli._common import force, positive_length
     from surfmet.cli._inputs import command_inputs
+    from surfmet.cli._values import loads
     from surfmet.records.inputs import inputs_lines
 
     p = argparse.ArgumentParser()
     p.add_argument("--radius", type=positive_length)
-    p.add_argument("--loads", type=force_range)
+    p.add_argument("--loads", type=loads)  # the commands' list-or-range type
     p.add_argument("--load")  # parsed later by its command, as rolling-contact's
     p.add_argument("--pressures")
     p.add_argument("--f", type=force)
@@ -106,12 +107,11 @@ def test_inputs_record_reads_units_from_the_parsers():
                          "--pressures", "1MPa,2MPa", "--json"])
     rec = command_inputs(p._actions, args)
     assert rec["radius"] == {"value": pytest.approx(5e-3), "unit": "m"}
-    assert rec["loads"] == {"start": {"value": 1.0, "unit": "N"},
-                            "stop": {"value": 3.0, "unit": "N"}, "points": 3}
+    assert rec["loads"] == {"value": pytest.approx([1.0, 3.0 ** 0.5, 3.0]), "unit": "N"}
     assert rec["load"] == {"value": pytest.approx(0.25), "unit": "N"}
     assert rec["pressures"] == {"value": [1e6, 2e6], "unit": "Pa"}
     assert "f" not in rec and "json" not in rec  # unset, and not an input
-    assert "  loads              1 N to 3 N, 3 points" in inputs_lines(rec)
+    assert "  loads              1 N, 1.73205 N, 3 N" in inputs_lines(rec)
     p.add_argument("--line", action="store_true")  # rolling-contact's load per length
     rec = command_inputs(p._actions, p.parse_args(["--line", "--load", "100N/mm"]))
     assert rec["load_per_length"] == {"value": pytest.approx(1e5), "unit": "N/m"}

@@ -12,7 +12,6 @@ from surfmet.units import (
     jsonable,
     length_factor,
     parse_force,
-    parse_force_range,
     parse_length,
     parse_length_range,
     parse_pressure,
@@ -50,13 +49,9 @@ def test_other_quantities():
     assert parse_pressure("1.2GPa") == pytest.approx(1.2e9)
     assert parse_pressure("300 MPa") == pytest.approx(3e8)
     assert parse_length_range("468um:733um") == pytest.approx((468e-6, 733e-6))
-    assert parse_force_range("1N:100N:9") == (1.0, 100.0, 9)
     for bad in ("733um:468um", "1um", "a:b"):
         with pytest.raises(SurfmetInputError):
             parse_length_range(bad)
-    for bad in ("100:1", "0:1", "1:2:1", "1:2:x"):
-        with pytest.raises(SurfmetInputError):
-            parse_force_range(bad)
 
 
 def test_header_unit_names():

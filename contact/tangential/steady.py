@@ -201,23 +201,6 @@ def steady_rolling(
                             outer=s.outer, matvecs=s.matvecs, tol=tol)
 
 
-def rolling_residual(r: TangentialResult) -> float:
-    """The relative residual of a steady-rolling answer, formed afresh from it: the
-    largest slip left on the adhesion elements and slip across the traction on the slip
-    elements, over the slip the tractions cancel (:func:`contact.tangential.solver.
-    slip_residual`; inf when nothing drives a slip, e.g. free rolling of identical
-    bodies, where the tractions vanish)."""
-    from contact.tangential.solver import slip_residual
-
-    op = operator_for(r.grid, r.constants)
-    u0 = op.tangential_from_normal(r.p)
-    w = rigid_slip(r.grid.x, r.grid.y, r.creepage)
-    norm = np.hypot(r.q[0], r.q[1])
-    e = np.divide(r.q, norm, out=np.zeros_like(r.q), where=norm > 0)
-    res = slip_residual(r.s, r.state, e, w, u0, r.mu * r.p, r.grid.dx, True)
-    return 0.0 if math.isinf(res) and not np.any(r.s) else res
-
-
 def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
                   max_coupling) -> CoarseStart | None:
     """The coarse grid's answer copied to ``grid``, or None where nesting does not pay."""

@@ -104,10 +104,6 @@ class CreepSeries:
         f = positive(factor, "the compliance factor", "-")
         return CreepSeries(self.glassy * f, tuple(a * f for a in self.amplitudes), self.times)
 
-    def glassy_only(self) -> CreepSeries:
-        """The elastic limit tau -> inf (no creep within the passage)."""
-        return CreepSeries(self.glassy)
-
     def relaxed_only(self) -> CreepSeries:
         """The elastic limit tau -> 0 (fully relaxed before any change)."""
         return CreepSeries(self.relaxed)
@@ -147,11 +143,6 @@ class StandardLinearSolid:
     def tau_sigma(self) -> float:
         """Stress-relaxation time tau_sigma = tau_c E_r / E_g (s)."""
         return self.tau_c * self.E_r / self.E_g
-
-    @property
-    def fg(self) -> float:
-        """CONTACT's FG = E_g / E_r - 1."""
-        return self.E_g / self.E_r - 1.0
 
     def relaxation_modulus(self, t: np.ndarray | float) -> np.ndarray:
         """E(t) = E_r + (E_g - E_r) exp(-t / tau_sigma) (Pa)."""

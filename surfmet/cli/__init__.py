@@ -92,10 +92,12 @@ def build_parser() -> argparse.ArgumentParser:
     for name in SUBCOMMANDS:
         try:
             mod = importlib.import_module(f"surfmet.cli.{name}")
-        except ModuleNotFoundError as exc:  # subcommand not built yet
+        except ModuleNotFoundError as exc:  # a misspelt or missing entry is never skipped
             if exc.name != f"surfmet.cli.{name}":
                 raise
-            continue
+            raise ModuleNotFoundError(
+                f"surfmet.cli.SUBCOMMANDS names {name!r}, but there is no module "
+                f"surfmet/cli/{name}.py", name=exc.name) from None
         stating_inputs(mod.add_parser(sub))  # every command states what it was given
     return parser
 

@@ -33,8 +33,6 @@ length = _argtype(units.parse_length, "length")
 force = _argtype(units.parse_force, "force")
 pressure = _argtype(units.parse_pressure, "pressure")
 speed = _argtype(units.parse_speed, "speed")
-length_range = _argtype(units.parse_length_range, "length range")
-force_range = _argtype(units.parse_force_range, "load range")
 
 
 def positive_length(text: str) -> float:

@@ -58,12 +58,48 @@ FORMAT_MODULES = (
     "container",
 )
 
-for _mod in FORMAT_MODULES:
-    try:
-        importlib.import_module(f"surfmet.io.{_mod}")
-    except ModuleNotFoundError as _exc:  # a format module not written yet
-        if _exc.name != f"surfmet.io.{_mod}":
-            raise
+_LOADED: set[str] = set()
+
+
+def load_format_modules() -> None:
+    """Import every module ``FORMAT_MODULES`` names that is not imported yet.
+
+    Called at import and before every lookup in the registry, so that a module added to the
+    list is found without another step. A name with no module behind it is a mistake in the
+    list, never a format to skip: it raises.
+
+    Raises
+    ------
+    ModuleNotFoundError
+        If ``FORMAT_MODULES`` names a module that ``surfmet/io/`` does not hold.
+
+    Examples
+    --------
+    >>> from surfmet.io import FORMAT_MODULES, load_format_modules
+    >>> load_format_modules()  # every module is imported already: nothing to do
+    >>> "x3p" in FORMAT_MODULES
+    True
+    """
+    # FORMAT_MODULES is read at call time (a test may add a line to it).
+    for name in FORMAT_MODULES:
+        if name in _LOADED:
+            continue
+        full = f"{__name__}.{name}"
+        try:
+            importlib.import_module(full)
+        except ModuleNotFoundError as exc:
+            if exc.name != full:
+                raise  # the module exists; something it imports does not
+            raise ModuleNotFoundError(
+                f"surfmet.io.FORMAT_MODULES names {name!r}, but there is no module {full} "
+                f"(surfmet/io/{name}.py): a misspelt or missing format module",
+                name=full,
+            ) from None
+        _LOADED.add(name)
+
+
+load_format_modules()
+
 
 def read_container(path):
     """Every measurement of a contact.engineering container (see :mod:`surfmet.io.container`).
@@ -110,6 +146,7 @@ __all__ = [
     "detect_format",
     "encode",
     "formats",
+    "load_format_modules",
     "read",
     "read_bytes",
     "read_container",

@@ -118,14 +118,15 @@ class ByteReader:
         return out
 
 
-def check_grid(nx: int, ny: int, name: str, fmt: str, available: int | None = None,
+def check_grid(nx: Any, ny: Any, name: str, fmt: str, available: int | None = None,
                itemsize: int = 1) -> tuple[int, int]:
     """Validate a grid size from a header.
 
     Parameters
     ----------
-    nx, ny : int
-        Points along x and y.
+    nx, ny : int or str or None
+        Points along x and y, as the header gives them (None or text that is no integer is
+        refused).
     available : int, optional
         Bytes (or, with ``itemsize=1``, items) that the file really holds for the data; the
         grid must fit in it.

@@ -150,6 +150,8 @@ def _matrix_header(lines: list[str], first: int, name: str
     step = zfactor = None
     zunit_text = None
     m = _SIZE_RE.match(lines[first])
+    if m is None:  # the caller matched it already
+        raise _fail(name, f"line {first + 1} is not 'h = .. w = ..'")
     header: dict[str, Any] = {"h": int(m.group(1)), "w": int(m.group(2))}
     start = first + 1
     while start < len(lines) and _numeric_row(lines[start]) is None:

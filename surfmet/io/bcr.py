@@ -45,6 +45,8 @@ def _is_bcr(buf: bytes) -> bool:
 
 def _header(buf: bytes, r: ByteReader) -> tuple[dict[str, str], int]:
     enc = _encoding(buf)
+    if enc is None:  # decode refused such a file already
+        r.fail("does not start with 'fileformat'")
     width = 2 if enc == "utf-16-le" else 1
     head = buf[:_MAX_HEADER * width]
     if width == 2:

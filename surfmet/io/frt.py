@@ -55,7 +55,7 @@ _TYPE_NAMES = {
     0x0200: "absolute value", 0x0400: "phase", 0x0800: "sample thickness", 0x1000: "AFM",
     0x2000: "quality",
 }
-_DTYPES = {16: np.dtype("<u2"), 32: np.dtype("<i4")}
+_DTYPES: dict[int, np.dtype[Any]] = {16: np.dtype("<u2"), 32: np.dtype("<i4")}
 _MAX_BLOCKS = 100_000
 
 
@@ -94,15 +94,19 @@ def read_blocks(buf: bytes, name: str) -> tuple[str, dict[int, tuple[int, int]]]
 
 
 def _block(r: ByteReader, blocks: dict[int, tuple[int, int]], block_id: int, fmt: str,
-           what: str, required: bool = True) -> tuple[Any, ...] | None:
+           what: str) -> tuple[Any, ...]:
     if block_id not in blocks:
-        if required:
-            r.fail(f"block 0x{block_id:04x} ({what}) is missing")
-        return None
+        r.fail(f"block 0x{block_id:04x} ({what}) is missing")
     offset, size = blocks[block_id]
     if size < struct.calcsize(fmt):
         r.fail(f"block 0x{block_id:04x} ({what}) is {size} bytes, too short")
     return r.unpack_at(offset, fmt, what)
+
+
+def _optional_block(r: ByteReader, blocks: dict[int, tuple[int, int]], block_id: int,
+                    fmt: str, what: str) -> tuple[Any, ...] | None:
+    """:func:`_block`, or None where the file has no such block."""
+    return _block(r, blocks, block_id, fmt, what) if block_id in blocks else None
 
 
 def _text_block(buf: bytes, blocks: dict[int, tuple[int, int]], block_id: int) -> str:
@@ -199,7 +203,7 @@ def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
     r.seek(image["offset"], "image offset")
     counts = r.array(dtype, nx * ny, "height data").reshape(ny, nx)
 
-    valid_range = _block(r, blocks, 0x0070, "<II", "valid range", required=False)
+    valid_range = _optional_block(r, blocks, 0x0070, "<II", "valid range")
     if valid_range is not None:
         first, last = valid_range
         if dtype.kind == "i":  # int32 data: the range is stored as uint32 bit patterns
@@ -225,7 +229,7 @@ def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
         "z_scale": zscale,
         "invalid_rule": rule,
     }
-    times = _block(r, blocks, 0x0072, "<III", "time", required=False)
+    times = _optional_block(r, blocks, 0x0072, "<III", "time")
     if times is not None and times[0] > 0:
         try:
             metadata["date"] = _dt.datetime.fromtimestamp(times[0], _dt.timezone.utc).isoformat()

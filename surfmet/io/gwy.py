@@ -53,8 +53,9 @@ from surfmet.units import quantity
 FORMAT = "gwy"
 MAGIC = b"GWYP"
 _MAX_DEPTH = 64
-_ARRAY_DTYPES = {"C": np.dtype("u1"), "B": np.dtype("u1"), "I": np.dtype("<i4"),
-                 "Q": np.dtype("<i8"), "D": np.dtype("<f8")}
+_ARRAY_DTYPES: dict[str, np.dtype[Any]] = {
+    "C": np.dtype("u1"), "B": np.dtype("u1"), "I": np.dtype("<i4"),
+    "Q": np.dtype("<i8"), "D": np.dtype("<f8")}
 _SCALARS = {"i": "<i", "q": "<q", "d": "<d"}
 _CHANNEL_RE = re.compile(r"^/(\d+)/data$")
 
@@ -206,12 +207,12 @@ def decode(buf: bytes, name: str, channel: int | str | None = None) -> Topograph
             r.fail(f"no channel {channel!r}; channels: {listing}")
         num, field, title = chosen[0]
     else:
-        heights = [c for c in channels
+        lengths = [c for c in channels
                    if not _unit(c[1], "si_unit_z") or _length_unit(_unit(c[1], "si_unit_z"))]
-        if not heights:
+        if not lengths:
             listing = ", ".join(f"{n} ({_unit(f, 'si_unit_z')})" for n, f, _ in channels)
             r.fail(f"no channel holds heights (value units: {listing}); pass channel=")
-        num, field, title = heights[0]
+        num, field, title = lengths[0]
 
     try:
         xres, yres = int(field["xres"]), int(field["yres"])

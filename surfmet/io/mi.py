@@ -28,8 +28,9 @@ from surfmet.units import length_factor
 
 FORMAT = "mi"
 _MAGIC = b"fileType      Image"
-_DATA = {b"data          BINARY": (np.dtype("<i2"), 2.0**15),
-         b"data          BINARY_32": (np.dtype("<i4"), 2.0**31)}
+_DATA: dict[bytes, tuple[np.dtype[Any], float]] = {
+    b"data          BINARY": (np.dtype("<i2"), 2.0**15),
+    b"data          BINARY_32": (np.dtype("<i4"), 2.0**31)}
 _MAX_HEADER = 1 << 20
 
 

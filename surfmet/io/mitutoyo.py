@@ -119,11 +119,11 @@ def _conditions(certificate: Cells, data: Cells) -> dict[str, str]:
     for (col, row), label in certificate.items():
         if not isinstance(label, str) or col not in ("B", "D"):
             continue
-        value = certificate.get((chr(ord(col) + 1), row))
-        if isinstance(value, str) and value.strip() and label.strip():
-            found[label.strip().lower()] = value.strip()
-        elif isinstance(value, float) and label.strip():
-            found[label.strip().lower()] = repr(value)
+        cell = certificate.get((chr(ord(col) + 1), row))
+        if isinstance(cell, str) and cell.strip() and label.strip():
+            found[label.strip().lower()] = cell.strip()
+        elif isinstance(cell, float) and label.strip():
+            found[label.strip().lower()] = repr(cell)
     return found
 
 

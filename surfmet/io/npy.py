@@ -127,7 +127,7 @@ def encode_npz(scan: Topography | Profile) -> bytes:
         np.savez_compressed(out, kind=np.array("areal"), heights=scan.heights,
                             dx=np.float64(scan.dx), dy=np.float64(scan.dy), metadata=np.array(md))
     else:
-        extra = {"x": scan.x} if scan.x is not None else {}
+        extra: dict[str, Any] = {"x": scan.x} if scan.x is not None else {}
         np.savez_compressed(out, kind=np.array("profile"), z=scan.z, dx=np.float64(scan.dx),
                             metadata=np.array(md), **extra)
     return out.getvalue()

@@ -47,7 +47,8 @@ _MAX_ENTRIES = 1 << 16
 BLOCK_TYPES = {1: "directory", 3: "array", 5: "text", 6: "int16", 7: "float32",
                8: "float64", 12: "int32"}
 _NUMERIC = {6: "<h", 7: "<f", 8: "<d", 12: "<i"}
-_ARRAY_DTYPES = {1: np.dtype("u1"), 2: np.dtype("<i2"), 4: np.dtype("<f4")}
+_ARRAY_DTYPES: dict[int, np.dtype[Any]] = {
+    1: np.dtype("u1"), 2: np.dtype("<i2"), 4: np.dtype("<f4")}
 
 
 def _is_opd(buf: bytes) -> bool:

@@ -101,7 +101,8 @@ def decode(buf: bytes, name: str) -> Topography:
     if len(head) < (580 if _VERSIONS[version] == 2 else 356):
         r.fail(f"Park header of {len(head)} bytes is too short")
     h = ByteReader(head, name, FORMAT)
-    nx, ny = check_grid(*h.unpack_at(100, "<II"), name, FORMAT)
+    px, py = h.unpack_at(100, "<II")
+    nx, ny = check_grid(px, py, name, FORMAT)
     sx, sy = h.unpack_at(140, "<dd")
     gain, scale = h.unpack_at(220, "<dd")
     unit = _utf16(head[244:260])

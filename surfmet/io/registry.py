@@ -215,8 +215,8 @@ def formats() -> dict[str, FormatSpec]:
 
 
 def _load_all() -> None:
-    # Importing surfmet.io registers every built-in format.
-    import surfmet.io  # noqa: F401
+    from surfmet.io import load_format_modules  # each listed module registers on import
+    load_format_modules()
 
 
 def detect_format(buf: bytes, filename: str | os.PathLike[str] = "") -> str:

@@ -37,7 +37,7 @@ MAGIC_BINARY = b"bISO-1.0"
 BINARY_HEADER = "<8s10s12s12sHHddddBBB"
 BINARY_HEADER_SIZE = 81
 
-_DTYPES = {
+_DTYPES: dict[int, np.dtype[Any]] = {
     0: np.dtype("u1"), 1: np.dtype("<u2"), 2: np.dtype("<u4"), 3: np.dtype("<f4"),
     4: np.dtype("i1"), 5: np.dtype("<i2"), 6: np.dtype("<i4"), 7: np.dtype("<f8"),
 }

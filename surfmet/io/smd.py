@@ -67,7 +67,7 @@ def _axis(fields: list[str], name: str) -> dict[str, Any]:
     if unit.lower() not in _UNITS:
         raise _fail(name, f"axis {axis}: unit {unit!r} is not one of M, MM, UM, NM")
     try:
-        out = {"type": kind.upper(), "n": int(points),
+        out: dict[str, Any] = {"type": kind.upper(), "n": int(points),
                "factor": float(scale) * _UNITS[unit.lower()], "unit": unit}
         out["increment"] = float(fields[6]) if len(fields) > 6 else None
     except ValueError:

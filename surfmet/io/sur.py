@@ -205,7 +205,7 @@ def _unit_factor(unit: str, what: str, r: ByteReader) -> float | None:
         r.fail(f"unknown {what} unit {unit!r}")
 
 
-def _date(t: tuple[int, ...]) -> str | None:
+def _date(t: tuple[int, int, int, int, int, int]) -> str | None:
     try:
         return _dt.datetime(*t).isoformat()
     except (ValueError, OverflowError):

@@ -78,7 +78,7 @@ def _xml(zf: zipfile.ZipFile, member: str, compressed: bool, name: str) -> Eleme
 
 def _number(root: ElementTree.Element, path: str, name: str) -> float:
     node = root.find(path)
-    if node is None or not (node.text or "").strip():
+    if node is None or node.text is None or not node.text.strip():
         raise format_error(name, FORMAT, f"calibration lacks {path}")
     return float(node.text)
 
