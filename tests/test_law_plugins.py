@@ -211,7 +211,7 @@ def test_the_commands_choices_are_the_table():
 
 def test_nothing_outside_the_laws_switches_on_a_law_type():
     """No isinstance / hasattr / getattr on a law, and no comparison of a law's name,
-    outside contact/adhesion/laws/ (main had ten: four isinstance / hasattr, five getattr
+    outside contact/adhesion/laws/ (main had twelve: four isinstance / hasattr, five getattr
     of the smoothing, three name comparisons)."""
     switch = re.compile(r"(isinstance|hasattr|getattr)\(law\b|isinstance\([^)]*"
                         r"(DugdaleLaw|ExponentialLaw)|interaction [!=]= \"")

@@ -30,7 +30,11 @@ _LAZY = {
     "adhesive_problem": "contact.adhesion.solver", "solve_adhesive": "contact.adhesion.solver",
 }
 
-__getattr__, __dir__ = attach(__name__, ("laws",), _LAZY)
+#: The modules, reachable as ``contact.adhesion.<module>`` without an explicit import.
+SUBMODULES = ("ball", "cycle", "default_grid", "flat", "kernels", "laws", "line", "memory",
+              "rolling", "solver", "stickiness")
+
+__getattr__, __dir__ = attach(__name__, SUBMODULES, _LAZY)
 
 __all__ = ["AdhesiveBall", "AdhesiveState", "Cycle", "DugdaleLaw", "ExponentialLaw",
            "InteractionLaw", "adhesive_ball", "adhesive_problem", "approach_retraction",

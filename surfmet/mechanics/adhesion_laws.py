@@ -21,7 +21,20 @@ INTERACTION = "dugdale"
 
 
 def interactions() -> tuple[str, ...]:
-    """The names of the registered laws (:func:`contact.adhesion.laws.law_names`)."""
+    """The names of the registered laws (:func:`contact.adhesion.laws.law_names`), the
+    ``--interaction`` choices of every command.
+
+    Returns
+    -------
+    tuple of str
+        The names, in the order of registration.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_laws import interactions
+    >>> interactions()[:2]
+    ('dugdale', 'exponential')
+    """
     from contact.adhesion.laws import law_names
 
     return law_names()

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
@@ -92,13 +92,26 @@ class InteractionLaw:
     #: The width of a smoothed step (m); 0 for a law without one.
     smoothing: float = 0.0
 
-    work: float
-    peak: float
-    range: float
-    reach: float
+    if TYPE_CHECKING:  # a law's own fields or properties (none here: a dataclass field
+        # could not shadow a property of its base)
+        @property
+        def work(self) -> float:
+            """Work of adhesion w (J/m^2)."""
+
+        @property
+        def peak(self) -> float:
+            """The largest tension (Pa)."""
+
+        @property
+        def range(self) -> float:
+            """The length the law's range is stated by (m)."""
+
+        @property
+        def reach(self) -> float:
+            """The gap beyond which the surfaces no longer attract (m)."""
 
     @classmethod
-    def from_parameters(cls, **values: float) -> Any:
+    def from_parameters(cls, **values: Any) -> Any:
         """The law of the :attr:`parameters` ``values`` (SI); by default ``cls(**values)``."""
         return cls(**values)
 

@@ -70,9 +70,9 @@ class DugdaleLaw(InteractionLaw):
                 f"{self.range:.3g} m, got {self.smoothing!r}")
 
     @classmethod
-    def from_parameters(cls, *, work_of_adhesion: float, range_: float) -> DugdaleLaw:
+    def from_parameters(cls, **values: float) -> DugdaleLaw:
         """The law of work ``work_of_adhesion`` (J/m^2) and range h0 = ``range_`` (m)."""
-        return cls.from_range(work_of_adhesion, range_)
+        return cls.from_range(values["work_of_adhesion"], values["range_"])
 
     @classmethod
     def from_range(cls, work: float, range_: float) -> DugdaleLaw:

@@ -44,9 +44,9 @@ class ExponentialLaw(InteractionLaw):
         positive(self.rho, "the interaction range", "m")
 
     @classmethod
-    def from_parameters(cls, *, work_of_adhesion: float, range_: float) -> ExponentialLaw:
+    def from_parameters(cls, **values: float) -> ExponentialLaw:
         """The law of work ``work_of_adhesion`` (J/m^2) and range rho = ``range_`` (m)."""
-        return cls(work_of_adhesion, range_)
+        return cls(values["work_of_adhesion"], values["range_"])
 
     @property
     def range(self) -> float:

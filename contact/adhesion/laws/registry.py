@@ -68,7 +68,7 @@ def checked_law(law: Any) -> InteractionLaw:
     """``law`` itself where it is an instance of a registered law; anything else is
     refused, so that no object is solved as a law it is not."""
     cls = type(law)
-    if LAWS.get(getattr(cls, "name", None)) is not cls:
+    if LAWS.get(getattr(cls, "name", "")) is not cls:
         raise ContactInputError(
             f"{cls.__qualname__} is not a registered interaction law (the laws are "
             f"{', '.join(LAWS)}; a new one derives from InteractionLaw and is registered "
