@@ -19,7 +19,7 @@ from contact.adhesion.laws.base import InteractionLaw, LawParameter
 from contact.errors import ContactInputError
 
 __all__ = ["LAWS", "build_law", "checked_law", "kernel_arguments", "law_class", "law_names",
-           "law_parameters", "named", "register_law"]
+           "law_parameters", "register_law"]
 
 #: name -> law class, in the order of registration.
 LAWS: dict[str, type[InteractionLaw]] = {}
@@ -118,9 +118,3 @@ def _options(keywords: Any, word: str) -> str:
     and the keywords alike name them)."""
     names = [LawParameter(k, "", "").option for k in keywords]
     return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} {word} {names[-1]}"
-
-
-def named(law: Any) -> str:
-    """The registered name of ``law`` (refusing an unregistered object)."""
-    return checked_law(law).name
-
