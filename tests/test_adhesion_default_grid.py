@@ -40,7 +40,7 @@ def test_default_grid_gives_the_zone_two_pixels(lam):
     from surfmet.mechanics.adhesion import default_grid, interaction_law
 
     law = interaction_law("dugdale", W, _h0(lam))
-    choice = default_grid(default_size(R, E_STAR, law), E_STAR, law, "dugdale", 40)
+    choice = default_grid(default_size(R, E_STAR, law), E_STAR, law, 40)
     assert not choice.capped
     assert 2.0 <= _zone_pixels(lam, choice.grid) < 2.0 * 1.1
     assert choice.grid % 16 == 0 and "2 pixels" in choice.why

@@ -1,7 +1,7 @@
 """Adhesive normal contact: interaction laws, the adhesive solve, approach-retraction cycles.
 
-- :mod:`contact.adhesion.laws`: the Dugdale (Maugis) and exponential laws, the Maugis and
-  Tabor parameters;
+- :mod:`contact.adhesion.laws`: the interaction laws as plug-ins (one table, one module a
+  law: Dugdale (Maugis), exponential, ...), the Maugis and Tabor parameters;
 - :mod:`contact.adhesion.solver`: one equilibrium at a prescribed approach on a periodic
   grid, tensile tractions solved (:func:`solve_adhesive`);
 - :mod:`contact.adhesion.cycle`: displacement-controlled approach and retraction, pull-off,
@@ -17,11 +17,25 @@ The pressure bounds that carry a law into a normal solve are
 :class:`contact.bem.bounds.PressureBounds`.
 """
 
-from contact.adhesion.ball import AdhesiveBall, adhesive_ball
-from contact.adhesion.cycle import Cycle, approach_retraction
-from contact.adhesion.laws import DugdaleLaw, ExponentialLaw, maugis_parameter
-from contact.adhesion.solver import AdhesiveState, adhesive_problem, solve_adhesive
+from contact._lazy import attach
+
+# Loaded on first use, so that the laws' table (the commands' choices) is read without the
+# solvers' numba kernels.
+_LAZY = {
+    "AdhesiveBall": "contact.adhesion.ball", "adhesive_ball": "contact.adhesion.ball",
+    "Cycle": "contact.adhesion.cycle", "approach_retraction": "contact.adhesion.cycle",
+    "DugdaleLaw": "contact.adhesion.laws", "ExponentialLaw": "contact.adhesion.laws",
+    "InteractionLaw": "contact.adhesion.laws", "maugis_parameter": "contact.adhesion.laws",
+    "register_law": "contact.adhesion.laws", "AdhesiveState": "contact.adhesion.solver",
+    "adhesive_problem": "contact.adhesion.solver", "solve_adhesive": "contact.adhesion.solver",
+}
+
+#: The modules, reachable as ``contact.adhesion.<module>`` without an explicit import.
+SUBMODULES = ("ball", "cycle", "default_grid", "flat", "kernels", "laws", "line", "memory",
+              "rolling", "solver", "stickiness")
+
+__getattr__, __dir__ = attach(__name__, SUBMODULES, _LAZY)
 
 __all__ = ["AdhesiveBall", "AdhesiveState", "Cycle", "DugdaleLaw", "ExponentialLaw",
-           "adhesive_ball", "adhesive_problem", "approach_retraction", "maugis_parameter",
-           "solve_adhesive"]
+           "InteractionLaw", "adhesive_ball", "adhesive_problem", "approach_retraction",
+           "maugis_parameter", "register_law", "solve_adhesive"]

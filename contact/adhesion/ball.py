@@ -38,7 +38,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.adhesion.cycle import Cycle, approach_retraction
-from contact.adhesion.laws import InteractionLaw, tabor_parameter
+from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
@@ -132,8 +132,8 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
         Sphere radius (m) and composite modulus (Pa),
         or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
-        :class:`~contact.adhesion.laws.DugdaleLaw` or
-        :class:`~contact.adhesion.laws.ExponentialLaw`.
+        A registered law (:mod:`contact.adhesion.laws`: e.g.
+        :class:`~contact.adhesion.laws.DugdaleLaw`).
     grid : int
         Cells per side.
     size : float, optional
@@ -152,6 +152,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     positive(radius, "the radius", "m")
     e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
+    checked_law(law)  # an unknown law is refused, never solved as another
     if int(grid) != grid or grid < 16:
         raise ContactInputError(f"the grid must be an integer of at least 16, got {grid!r}")
     if int(steps) != steps or steps < 4:
@@ -179,7 +180,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
         tabor_parameter=tabor_parameter(law.work, radius, e_star, law.range),
         process_zone=zone,
         warnings=_warnings(zone, a0, reach, dx, size, cycle,
-                           getattr(law, "smoothing", 0.0) > 0.0),
+                           law.smoothing > 0.0),
         roughness_rms=z_rms,
     )
 

@@ -63,7 +63,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact.adhesion.cycle import MAX_AREA_CHANGE, MAX_SPLITS, advance
-from contact.adhesion.laws import InteractionLaw
+from contact.adhesion.laws import InteractionLaw, checked_law
 from contact.adhesion.solver import (
     AdhesiveProblem,
     AdhesiveState,
@@ -443,6 +443,7 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
         raise ContactInputError("give e_star, the law, the pressures and one starting mean "
                                 "gap and stiffness per pressure")
     e_star = modulus(e_star)  # a resolved pair or its E*
+    checked_law(law)  # an unknown law is refused, never solved as another
     problem = adhesive_problem(gap0, dx, e_star, law)
     dx = problem.dx
     p = np.atleast_1d(np.asarray(pressures, dtype=float))
@@ -471,7 +472,7 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
         if progress is not None:
             progress(k + 1, p.size)
     zone = math.pi * e_star * law.work / (4.0 * law.peak ** 2)
-    least = min_zone_pixels(getattr(law, "smoothing", 0.0) > 0.0)
+    least = min_zone_pixels(law.smoothing > 0.0)
     warnings = () if zone >= least * dx else (
         f"grid too coarse for the interaction: the cohesive zone (pi E* w / (4 sigma0^2) = "
         f"{zone:.3g} m) spans {zone / dx:.2g} pixels, fewer than {least:g}, so the "

@@ -56,7 +56,7 @@ import numpy as np
 from contact._validate import positive
 from contact.adhesion.ball import coarse_zone_effect, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
-from contact.adhesion.laws import DugdaleLaw, InteractionLaw, tabor_parameter
+from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import AdhesiveProblem
 from contact.errors import ContactInputError
@@ -145,10 +145,9 @@ def jkr_line_load(half_width: np.ndarray, work: float, radius: float,
 
 def rigid_line_pull_off(law: InteractionLaw, radius: float) -> float:
     """The pull-off (N/m) of a rigid cylinder: the law's traction integrated over the
-    undeformed gap x^2 / (2 R)."""
-    if isinstance(law, DugdaleLaw):
-        return 2.0 * math.sqrt(2.0 * radius * law.work * law.sigma0)
-    return law.work * math.sqrt(2.0 * math.pi * radius / law.rho)
+    undeformed gap x^2 / (2 R), as the law states it
+    (:meth:`contact.adhesion.laws.InteractionLaw.rigid_line_pull_off`)."""
+    return checked_law(law).rigid_line_pull_off(radius)
 
 
 def line_scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[float, float]:
@@ -229,8 +228,8 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
         Cylinder radius (m) and composite plane-strain modulus (Pa),
         or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
-        :class:`~contact.adhesion.laws.DugdaleLaw` or
-        :class:`~contact.adhesion.laws.ExponentialLaw`.
+        A registered law (:mod:`contact.adhesion.laws`: e.g.
+        :class:`~contact.adhesion.laws.DugdaleLaw`).
     cells : int
         Cells across the period.
     size : float, optional
@@ -248,6 +247,7 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
     positive(radius, "the radius", "m")
     e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
+    checked_law(law)  # an unknown law is refused, never solved as another
     if int(cells) != cells or cells < 64:
         raise ContactInputError(f"the cells must be an integer of at least 64, got {cells!r}")
     if int(steps) != steps or steps < 4:

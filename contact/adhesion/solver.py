@@ -42,7 +42,7 @@ import scipy.fft as sfft
 
 from contact._validate import positive
 from contact.adhesion import kernels
-from contact.adhesion.laws import DugdaleLaw, InteractionLaw
+from contact.adhesion.laws import InteractionLaw, kernel_arguments
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
 from contact.halfspace.influence import periodic_kernel_spectrum
@@ -350,12 +350,9 @@ def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarra
 
 def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, float]:
     """The law as the kernels take it (:mod:`contact.adhesion.kernels`): (code, reach,
-    ramp width). A smoothed Dugdale law's ramp ends at its reach h0 + s/2."""
-    if isinstance(law, DugdaleLaw):
-        if law.smoothing > 0.0:
-            return kernels.DUGDALE_RAMP, law.reach, law.smoothing
-        return kernels.DUGDALE, law.range, 0.0
-    return (kernels.EXPONENTIAL_SINGLE if single else kernels.EXPONENTIAL), law.range, 0.0
+    ramp width), as the law states it; an unregistered law is refused
+    (:func:`contact.adhesion.laws.kernel_arguments`)."""
+    return kernel_arguments(law, single)
 
 
 def _load_stiffness(problem: AdhesiveProblem) -> np.ndarray:

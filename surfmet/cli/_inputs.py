@@ -23,6 +23,7 @@ _RUNNING: list[dict[str, Any]] = []
 TYPE_UNITS: dict[str, str] = {
     "length": "m", "positive_length": "m", "force": "N", "load range": "N",
     "pressure": "Pa", "speed": "m/s", "work": "J/m^2", "energy": "J/m^2",
+    "surface tension": "N/m", "angle": "rad",
 }
 
 #: Unit of an option's value by its name, for options whose text the command parses

@@ -83,15 +83,14 @@ def periodic_flag(text: str) -> bool | None:
 
 
 def add_interaction_argument(p: Any) -> None:
-    """``--interaction {dugdale,exponential}``, one default everywhere
-    (:data:`surfmet.mechanics.adhesion.INTERACTION`)."""
-    from surfmet.mechanics.adhesion import INTERACTION, INTERACTIONS
+    """``--interaction`` with the laws' table for choices, one default everywhere
+    (:data:`surfmet.mechanics.adhesion.INTERACTION`), and the laws' parameter options
+    (:func:`surfmet.cli._laws.add_law_arguments`)."""
+    from surfmet.cli._laws import add_law_arguments
+    from surfmet.mechanics.adhesion_laws import INTERACTION
 
-    p.add_argument("--interaction", choices=INTERACTIONS, default=INTERACTION,
-                   help=f"adhesion law (default {INTERACTION}, in every command: the law "
-                   "with a closed form to check it by, Maugis 1992, and the one the "
-                   "coarse-grid warning is measured on; exponential: the smooth "
-                   "t(g) = (w/rho) exp(-g/rho))")
+    add_law_arguments(p, INTERACTION, f"adhesion law (default {INTERACTION}, in every "
+                      "command)")
 
 
 #: The parsed arguments' notes on the options' forms, printed on stderr once the command

@@ -81,9 +81,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     mod.add_argument("--materials", metavar="A,B", help="sphere and flat materials")
     mod.add_argument("--e-star", type=pressure, metavar="E", help="composite modulus E*")
     p.add_argument("--work-of-adhesion", type=_argtype(parse_surface_energy, "work"),
-                   required=True, metavar="W", help="work of adhesion, e.g. 50mJ/m2")
-    p.add_argument("--range", type=positive_length, required=True, metavar="RHO",
-                   dest="range_", help="interaction range, e.g. 2nm")
+                   metavar="W", help="work of adhesion, e.g. 50mJ/m2 (the laws stated by "
+                   "a work and a range)")
+    p.add_argument("--range", type=positive_length, metavar="RHO",
+                   dest="range_", help="interaction range, e.g. 2nm (the laws stated by a "
+                   "work and a range)")
     add_interaction_argument(p)
     p.add_argument("--grid", type=int, default=None, metavar="N",
                    help="cells per side (default: with the Dugdale law the grid, at least "
@@ -108,11 +110,13 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
+    from surfmet.cli._laws import interaction_from_arguments
     from surfmet.mechanics.adhesion import adhesion, plot
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record, refuse_ball
     from surfmet.mechanics.adhesion_records import adhesion_record
     from surfmet.units import readable_quantities
 
+    law = interaction_from_arguments(args)  # its options checked before any scan is read
     if args.line:
         refuse_ball(args.ball)  # before the scans are read
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
@@ -120,8 +124,7 @@ def run(args: argparse.Namespace) -> int:
     check_output(args.plot, "--plot")
     with progress_bar(2 * args.steps, "adhesion, steps", show_progress(args)) as bar:
         run_ = (line_adhesion if args.line else adhesion)(
-            args.radius, work=args.work_of_adhesion, range_=args.range_,
-            materials=args.materials, e_star=args.e_star, interaction=args.interaction,
+            args.radius, materials=args.materials, e_star=args.e_star, interaction=law,
             grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
             ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
     if args.plot:
@@ -180,10 +183,11 @@ def _print(run_: Any) -> None:
     print(f"interaction     w = {format_quantity(law.work, 'J/m^2')}, range "
           f"{format_length(law.range)}, peak tension {format_quantity(law.peak, 'Pa')}")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
-    if getattr(law, "smoothing", 0.0) > 0.0:
+    if law.smoothing > 0.0:
         scale = ("the grid's scale, capped at the range" if law.smoothing >= law.range
                  else "the grid's scale")
-        print(f"Dugdale step    smoothed over {format_length(law.smoothing)} of gap "
+        step = f"{law.name.capitalize()} step"
+        print(f"{step:15s} smoothed over {format_length(law.smoothing)} of gap "
               f"({scale}: removes the pixels' pinning of the zone's end)")
     print(f"grid            {ball.grid} x {ball.grid} cells, "
           f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")

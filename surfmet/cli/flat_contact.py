@@ -114,18 +114,15 @@ def add_adhesion_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def adhesion_law(args: argparse.Namespace) -> Any:
-    """The adhesion law the arguments ask for, or None."""
+    """The adhesion law the arguments ask for (:mod:`surfmet.cli._laws`: the law
+    ``--interaction`` names, of its parameters), or None where no law parameter is given."""
+    from surfmet.cli._laws import interaction_from_arguments
     from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.adhesion import interaction_law
 
-    if (args.work_of_adhesion is None) != (args.range_ is None):
-        raise SurfmetInputError("--work-of-adhesion and --range go together: give both")
-    if args.work_of_adhesion is None:
-        return None
-    if not args.work_of_adhesion > 0:
-        raise SurfmetInputError(f"--work-of-adhesion must be positive, got "
-                                f"{args.work_of_adhesion!r} J/m²")
-    return interaction_law(args.interaction, args.work_of_adhesion, args.range_)
+    work = getattr(args, "work_of_adhesion", None)
+    if work is not None and not work > 0:
+        raise SurfmetInputError(f"--work-of-adhesion must be positive, got {work!r} J/m²")
+    return interaction_from_arguments(args, optional=True)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -267,7 +264,8 @@ def _print_adhesion(rec: dict[str, Any]) -> None:
     if ad["step_smoothing"]["value"] > 0.0:
         scale = ("the pixel's scale, capped at the range"
                  if ad["step_smoothing"]["value"] >= ad["range"]["value"] else "the pixel's scale")
-        print(f"  Dugdale step smoothed over {format_length(ad['step_smoothing']['value'], 3)} of "
+        print(f"  {ad['interaction'].capitalize()} step smoothed over "
+              f"{format_length(ad['step_smoothing']['value'], 3)} of "
               f"gap ({scale}: removes the pixels' pinning of the zone's end)")
     # the gaps in µm, as the non-adhesive table's 'gap (µm)'
     print(f"  {'p (MPa)':>9} {'A/A0 bare':>10} {'A/A0 adh':>10} {'gap bare (µm)':>14} "

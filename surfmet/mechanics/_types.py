@@ -22,7 +22,7 @@ from typing import Any, TypeAlias
 
 import numpy as np
 
-from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
+from contact.adhesion.laws import InteractionLaw
 from contact.material_pair import MaterialPair
 from contact.materials import Material
 from surfmet.model import Topography
@@ -33,7 +33,7 @@ Spikes: TypeAlias = bool | str
 Loads: TypeAlias = Sequence[float] | np.ndarray
 Progress: TypeAlias = Callable[[Iterable[Any]], Iterable[Any]]
 PathLike: TypeAlias = str | Path
-AdhesionLaw: TypeAlias = DugdaleLaw | ExponentialLaw
+AdhesionLaw: TypeAlias = InteractionLaw  # any law of the table (contact.adhesion.laws)
 RoughnessMap: TypeAlias = tuple[np.ndarray, float, float]
 
 __all__ = ["AdhesionLaw", "Loads", "Materials", "PathLike", "Progress", "RoughnessMap",

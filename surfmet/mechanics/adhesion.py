@@ -21,7 +21,6 @@ from typing import TYPE_CHECKING, Any
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion_laws import (  # noqa: F401  (the facade's face)
     INTERACTION,
-    INTERACTIONS,
     interaction_law,
     interaction_name,
 )
@@ -29,7 +28,7 @@ from surfmet.mechanics.scan_preparation import SPIKES
 
 if TYPE_CHECKING:
 
-    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
+    from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
 
 @dataclass(frozen=True, eq=False)
@@ -71,8 +70,9 @@ class Adhesion:
         return hasattr(self.result, "cells")
 
 
-def adhesion(radius: float, *, work: float, range_: float, materials: Materials | None = None,
-             e_star: float | None = None, interaction: str = INTERACTION,
+def adhesion(radius: float, *, work: float | None = None, range_: float | None = None,
+             materials: Materials | None = None, e_star: float | None = None,
+             interaction: str | AdhesionLaw = INTERACTION,
              grid: int | None = None, size: float | None = None, steps: int = 40,
              plate: ScanSource | None = None, ball: ScanSource | None = None,
              spikes: Spikes = SPIKES,
@@ -95,14 +95,17 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     ----------
     radius : float
         Ball radius R (m).
-    work, range_ : float
-        Work of adhesion w (J/m²) and the interaction's range (m).
+    work, range_ : float, optional
+        Work of adhesion w (J/m²) and the interaction's range (m), for a law named by
+        ``interaction`` that is stated by the two.
     materials : str or (Material, Material), optional
         ``"BALL,PLATE"``; or give ``e_star``.
     e_star : float, optional
         Composite modulus E* (Pa).
-    interaction : {"dugdale", "exponential"}
-        The adhesion law (:func:`interaction_law`).
+    interaction : str or InteractionLaw
+        The adhesion law's name (:func:`surfmet.mechanics.adhesion_laws.interactions`,
+        built by :func:`interaction_law`), or a law itself (without ``work`` and
+        ``range_``).
     grid, size : optional
         Cells per side (default :func:`default_grid`) and domain side (m).
     steps : int
@@ -167,12 +170,12 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
         size = default_size(radius, mats.e_star, law)
     choice = None
     if grid is None:
-        choice = default_grid(size, mats.e_star, law, interaction, steps)
+        choice = default_grid(size, mats.e_star, law, steps)
         grid = choice.grid
     if isinstance(grid, int) and grid >= 16:
         check_adhesion_memory(grid, steps=steps)  # before the scans are sampled onto it
     z, scans = rough_grid(plate, ball, grid, size, spikes)
-    if interaction == "dugdale":
+    if law.smoothing == 0.0:  # a step smoothed on the grid, where the law has one
         law = law.on_grid(size / grid, mats.e_star)
     res = adhesive_ball(radius, mats, law, grid=grid, size=size, steps=steps,
                         roughness=z, progress=progress)
@@ -182,13 +185,13 @@ def adhesion(radius: float, *, work: float, range_: float, materials: Materials 
     return Adhesion(res, scans, why)
 
 
-def default_grid(size: float, e_star: float, law: Any, interaction: str, steps: int) -> Any:
+def default_grid(size: float, e_star: float, law: Any, steps: int) -> Any:
     """The default grid (:class:`contact.adhesion.default_grid.GridChoice`) of a cell of
-    side ``size`` (m): for the Dugdale law, whose step is smoothed on the grid, the grid
-    that resolves the cohesive zone within memory
-    (:func:`contact.adhesion.default_grid.resolving_grid`); for the exponential law, whose
-    plain step would ask ten zone pixels, the fixed :data:`LEAST_GRID` (its coarse-grid
-    warning says when that is too coarse).
+    side ``size`` (m): for a law whose step is smoothed on the grid (the Dugdale law), the
+    grid that resolves the cohesive zone within memory
+    (:func:`contact.adhesion.default_grid.resolving_grid`); for another (the exponential
+    law, whose plain step would ask ten zone pixels), the fixed :data:`LEAST_GRID` (its
+    coarse-grid warning says when that is too coarse).
 
     Parameters
     ----------
@@ -196,10 +199,9 @@ def default_grid(size: float, e_star: float, law: Any, interaction: str, steps: 
         Side of the periodic cell (m).
     e_star : float
         Composite modulus E* (Pa).
-    law : DugdaleLaw or ExponentialLaw
-        The interaction (:func:`interaction_law`).
-    interaction : {"dugdale", "exponential"}
-        Its name.
+    law : InteractionLaw
+        The interaction (:func:`interaction_law`); whether its step is smoothed on the grid
+        is its ``grid_smoothed``.
     steps : int
         Approach and retraction steps (the memory estimate keeps every state).
 
@@ -217,15 +219,15 @@ def default_grid(size: float, e_star: float, law: Any, interaction: str, steps: 
     >>> from surfmet.mechanics.adhesion import default_grid, interaction_law
     >>> for range_ in (2e-9, 1e-9):
     ...     law = interaction_law("dugdale", 0.05, range_)
-    ...     print(default_grid(4e-6, 1e9, law, "dugdale", 40).grid)
+    ...     print(default_grid(4e-6, 1e9, law, 40).grid)
     128
     512
     """
     from contact.adhesion.default_grid import LEAST_GRID, GridChoice, resolving_grid
     from contact.zone_resolution import process_zone
 
-    if interaction != "dugdale":
-        return GridChoice(LEAST_GRID, LEAST_GRID, f"default for the exponential law: "
+    if not law.grid_smoothed:
+        return GridChoice(LEAST_GRID, LEAST_GRID, f"default for the {law.name} law: "
                           f"{LEAST_GRID} cells")
     return resolving_grid(size, process_zone(e_star, law.work, law.peak), steps=steps)
 

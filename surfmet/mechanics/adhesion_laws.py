@@ -1,6 +1,6 @@
-"""The adhesion laws the commands name: ``dugdale`` (Maugis 1992) and ``exponential``,
-built from the work of adhesion and the range (:mod:`contact.adhesion.laws`), and the name
-of a law back."""
+"""The adhesion laws the commands name: every law of the engine's one table
+(:mod:`contact.adhesion.laws`: ``dugdale`` (Maugis 1992), ``exponential``, ...), built by
+name from its parameters, and the name of a law back."""
 
 from __future__ import annotations
 
@@ -11,9 +11,8 @@ from surfmet.errors import SurfmetInputError
 if TYPE_CHECKING:
     from surfmet.mechanics._types import AdhesionLaw
 
-__all__ = ["INTERACTION", "INTERACTIONS", "interaction_law", "interaction_name"]
+__all__ = ["INTERACTION", "interaction_law", "interaction_name", "interactions"]
 
-INTERACTIONS = ("dugdale", "exponential")
 #: The adhesion law of every command and facade unless told otherwise: the one with a
 #: closed form to check it by (Maugis 1992: the sphere's pull-off, tests/maugis_reference.py)
 #: and the one the coarse-grid threshold is measured on
@@ -21,23 +20,53 @@ INTERACTIONS = ("dugdale", "exponential")
 INTERACTION = "dugdale"
 
 
-def interaction_law(interaction: str, work: float, range_: float) -> Any:
-    """The adhesion law named ``interaction`` of work ``work`` (J/m^2) and range ``range_``
-    (m): h0 = w / sigma0 for ``"dugdale"``, rho for ``"exponential"``.
-
-    Parameters
-    ----------
-    interaction : {"dugdale", "exponential"}
-        The law's name.
-    work : float
-        Work of adhesion (J/m²).
-    range_ : float
-        Its range (m).
+def interactions() -> tuple[str, ...]:
+    """The names of the registered laws (:func:`contact.adhesion.laws.law_names`), the
+    ``--interaction`` choices of every command.
 
     Returns
     -------
-    DugdaleLaw or ExponentialLaw
+    tuple of str
+        The names, in the order of registration.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_laws import interactions
+    >>> interactions()[:2]
+    ('dugdale', 'exponential')
+    """
+    from contact.adhesion.laws import law_names
+
+    return law_names()
+
+
+def interaction_law(interaction: Any, work: float | None = None, range_: float | None = None,
+                    **parameters: float) -> AdhesionLaw:
+    """The adhesion law named ``interaction`` of its parameters: work ``work`` (J/m^2) and
+    range ``range_`` (m) for the laws stated by the two (h0 = w / sigma0 for
+    ``"dugdale"``, rho for ``"exponential"``), the keywords of its table entry for another;
+    or ``interaction`` itself where it is a law.
+
+    Parameters
+    ----------
+    interaction : str or InteractionLaw
+        The law's name (:func:`interactions`), or a law.
+    work : float, optional
+        Work of adhesion (J/m²).
+    range_ : float, optional
+        Its range (m).
+    **parameters : float
+        The parameters of a law of other numbers (SI; its ``parameters``).
+
+    Returns
+    -------
+    InteractionLaw
         The law (:mod:`contact.adhesion.laws`).
+
+    Raises
+    ------
+    SurfmetInputError
+        For an unknown name or object, a parameter the law does not take or one it needs.
 
     See Also
     --------
@@ -55,27 +84,37 @@ def interaction_law(interaction: str, work: float, range_: float) -> Any:
     >>> law, interaction_name(law)
     (ExponentialLaw(work=0.05, rho=1e-09), 'exponential')
     """
-    from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
+    from contact.adhesion.laws import build_law, checked_law
+    from contact.errors import ContactInputError
 
-    if interaction not in INTERACTIONS:
-        raise SurfmetInputError(f"unknown interaction {interaction!r}: use "
-                                f"{' or '.join(INTERACTIONS)}")
-    return (DugdaleLaw.from_range(work, range_) if interaction == "dugdale"
-            else ExponentialLaw(work, range_))
+    try:
+        if not isinstance(interaction, str):
+            if work is not None or range_ is not None or parameters:
+                raise SurfmetInputError("give a law, or a law's name and its parameters, "
+                                        "not both")
+            return checked_law(interaction)
+        return build_law(interaction, work_of_adhesion=work, range_=range_, **parameters)
+    except ContactInputError as exc:
+        raise SurfmetInputError(str(exc)) from None
 
 
 def interaction_name(law: AdhesionLaw) -> str:
-    """``"dugdale"`` or ``"exponential"``: the name of an adhesion law.
+    """The name of an adhesion law, as the table registers it (``"dugdale"``, ...).
 
     Parameters
     ----------
-    law : DugdaleLaw or ExponentialLaw
-        An adhesion law.
+    law : InteractionLaw
+        A registered adhesion law.
 
     Returns
     -------
     str
         Its name.
+
+    Raises
+    ------
+    SurfmetInputError
+        Where ``law`` is not a registered law.
 
     Examples
     --------
@@ -83,4 +122,4 @@ def interaction_name(law: AdhesionLaw) -> str:
     >>> interaction_name(interaction_law("dugdale", 0.05, 1e-9))
     'dugdale'
     """
-    return "dugdale" if hasattr(law, "sigma0") else "exponential"
+    return interaction_law(law).name

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion import (
+    INTERACTION,
     Adhesion,
     adhesion_pair,
     interaction_law,
@@ -27,7 +28,7 @@ from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.adhesion.cycle import Branch
-    from surfmet.mechanics._types import Materials, PathLike, ScanSource, Spikes
+    from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
 
 
 def refuse_ball(ball: ScanSource | None) -> None:
@@ -61,8 +62,9 @@ def refuse_ball(ball: ScanSource | None) -> None:
 LINE_CELLS = 2048
 
 
-def line_adhesion(radius: float, *, work: float, range_: float, materials: Materials | None = None,
-                  e_star: float | None = None, interaction: str = "dugdale",
+def line_adhesion(radius: float, *, work: float | None = None, range_: float | None = None,
+                  materials: Materials | None = None, e_star: float | None = None,
+                  interaction: str | AdhesionLaw = INTERACTION,
                   grid: int | None = None, size: float | None = None, steps: int = 40,
                   plate: ScanSource | None = None, ball: ScanSource | None = None,
                   spikes: Spikes = SPIKES,

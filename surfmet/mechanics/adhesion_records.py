@@ -159,7 +159,7 @@ def adhesion_record(run: Any) -> dict[str, Any]:
         "work_of_adhesion": quantity(law.work, "J/m^2"),
         "range": quantity(law.range, "m"),
         "peak_tension": quantity(law.peak, "Pa"),
-        "step_smoothing": quantity(getattr(law, "smoothing", 0.0), "m"),
+        "step_smoothing": quantity(law.smoothing, "m"),
         "maugis_parameter": quantity(ball.maugis_parameter, ""),
         "tabor_parameter": quantity(ball.tabor_parameter, ""),
         "pull_off_force": quantity(cyc.pull_off_force, "N"),

@@ -383,11 +383,10 @@ def adhesive_sweep(scan: Topography, bem: FlatContact, law: AdhesionLaw) -> Any:
     True
     """
     from contact.adhesion.flat import adhesive_flat
-    from contact.adhesion.laws import DugdaleLaw
 
     z = np.asarray(scan.heights, dtype=float)
     dx = math.sqrt(scan.dx * scan.dy)
-    if isinstance(law, DugdaleLaw) and law.smoothing == 0.0:
+    if law.smoothing == 0.0:  # a step smoothed on the pixel, where the law has one
         law = law.on_grid(dx, bem.e_star)
     return adhesive_flat(z.max() - z, dx, bem.e_star, law, bem.pressure, bem.mean_gap,
                          bem.stiffness)

@@ -95,7 +95,7 @@ def _adhesion_header(ad: Any) -> dict[str, Any]:
         "work_of_adhesion": quantity(law.work, "J/m^2"),
         "range": quantity(law.range, "m"),
         "peak_tension": quantity(law.peak, "Pa"),
-        "step_smoothing": quantity(getattr(law, "smoothing", 0.0), "m"),
+        "step_smoothing": quantity(law.smoothing, "m"),
         "process_zone": quantity(ad.process_zone, "m"),
         "process_zone_pixels": quantity(ad.process_zone / ad.dx, ""),
         "warnings": list(ad.warnings),

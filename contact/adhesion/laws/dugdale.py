@@ -1,29 +1,19 @@
-"""Adhesion laws: the attractive traction between two surfaces at a local gap g.
-
-Both laws are written as an interaction energy per unit area phi(g), with phi(0) = -w
-(w the work of adhesion) and phi -> 0 far away; the attractive traction is
-t(g) = phi'(g) >= 0 (a tension of magnitude t pulls the surfaces together).
-
-- :class:`DugdaleLaw`: a constant tension sigma0 up to the range h0 = w / sigma0, none
-  beyond (Maugis 1992, J. Colloid Interface Sci. 150:243); optionally with the step at h0
-  smoothed over a gap width on the grid's scale (:meth:`DugdaleLaw.on_grid`).
-- :class:`ExponentialLaw`: t(g) = (w / rho) exp(-g / rho), phi(g) = -w exp(-g / rho)
-  (the exponential potential used for rough adhesive contact, e.g. Rey, Anciaux &
-  Molinari 2017, Comput. Mech. 60:69).
-
-Each law states its Maugis parameter for a sphere of radius R; the exponential law
-uses the Dugdale law of the same work and peak tension (sigma0 = w / rho), the usual
-matching of the two (Johnson & Greenwood 1997, J. Colloid Interface Sci. 192:326).
+"""The Dugdale (Maugis) law: a constant tension sigma0 up to the range h0 = w / sigma0, none
+beyond (Maugis 1992, J. Colloid Interface Sci. 150:243); optionally with the step at h0
+smoothed over a gap width on the grid's scale (:meth:`DugdaleLaw.on_grid`).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
 from contact._validate import positive
+from contact.adhesion.laws.base import InteractionLaw, maugis_parameter
+from contact.adhesion.laws.registry import register_law
 from contact.errors import ContactInputError
 
 #: Smoothing width of the Dugdale step over sigma0 dx / E*, for :meth:`DugdaleLaw.on_grid`.
@@ -33,19 +23,9 @@ from contact.errors import ContactInputError
 EDGE_SMOOTHING = 5.0
 
 
-def maugis_parameter(sigma0: float, work: float, radius: float, e_star: float) -> float:
-    """Maugis' lambda = 2 sigma0 (R / (pi w K^2))^(1/3), K = 4 E* / 3 (Maugis 1992, eq. 6)."""
-    k = 4.0 * e_star / 3.0
-    return 2.0 * sigma0 * (radius / (math.pi * work * k * k)) ** (1.0 / 3.0)
-
-
-def tabor_parameter(work: float, radius: float, e_star: float, length: float) -> float:
-    """Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) with the interaction length z (Tabor 1977)."""
-    return (radius * work * work / (e_star * e_star * length ** 3)) ** (1.0 / 3.0)
-
-
+@register_law
 @dataclass(frozen=True)
-class DugdaleLaw:
+class DugdaleLaw(InteractionLaw):
     """Dugdale (Maugis) cohesive zone: tension ``sigma0`` (Pa) for gaps below ``w / sigma0``.
 
     With ``smoothing`` s > 0 the step at h0 becomes a linear ramp from sigma0 at
@@ -70,6 +50,12 @@ class DugdaleLaw:
         Width of the ramp replacing the step at h0 (m); 0 (default) keeps the step.
     """
 
+    name: ClassVar[str] = "dugdale"
+    summary: ClassVar[str] = ("tension w/h0 up to the gap h0 = --range, none beyond (Maugis "
+                              "1992): the law with a closed form to check it by, and the "
+                              "one the coarse-grid warning is measured on")
+    grid_smoothed: ClassVar[bool] = True
+
     work: float
     sigma0: float
     smoothing: float = 0.0
@@ -82,6 +68,11 @@ class DugdaleLaw:
             raise ContactInputError(
                 f"the Dugdale smoothing must be between 0 and the range h0 = "
                 f"{self.range:.3g} m, got {self.smoothing!r}")
+
+    @classmethod
+    def from_parameters(cls, **values: float) -> DugdaleLaw:
+        """The law of work ``work_of_adhesion`` (J/m^2) and range h0 = ``range_`` (m)."""
+        return cls.from_range(values["work_of_adhesion"], values["range_"])
 
     @classmethod
     def from_range(cls, work: float, range_: float) -> DugdaleLaw:
@@ -138,52 +129,15 @@ class DugdaleLaw:
         """Maugis' lambda of a sphere of radius ``radius`` (m) with modulus ``e_star``."""
         return maugis_parameter(self.sigma0, self.work, radius, e_star)
 
+    def kernel_args(self, single: bool = False) -> tuple[int, float, float]:
+        """The step (code DUGDALE, reach h0) or, smoothed, the ramp ending at its reach
+        h0 + s/2 (DUGDALE_RAMP, width s); the same in either precision."""
+        from contact.adhesion import kernels
 
-@dataclass(frozen=True)
-class ExponentialLaw:
-    """Exponential interaction: t(g) = (w / rho) exp(-g / rho).
+        if self.smoothing > 0.0:
+            return kernels.DUGDALE_RAMP, self.reach, self.smoothing
+        return kernels.DUGDALE, self.range, 0.0
 
-    Attributes
-    ----------
-    work : float
-        Work of adhesion w (J/m^2).
-    rho : float
-        Range rho (m).
-    """
-
-    work: float
-    rho: float
-
-    def __post_init__(self) -> None:
-        positive(self.work, "the work of adhesion", "J/m^2")
-        positive(self.rho, "the interaction range", "m")
-
-    @property
-    def range(self) -> float:
-        """rho (m)."""
-        return self.rho
-
-    @property
-    def peak(self) -> float:
-        """The largest tension w / rho (Pa), at contact."""
-        return self.work / self.rho
-
-    @property
-    def reach(self) -> float:
-        """The gap at which the tension has fallen to 5 % of its peak (m): rho ln 20."""
-        return self.rho * math.log(20.0)
-
-    def potential(self, g: np.ndarray | float) -> np.ndarray:
-        """phi(g) = -w exp(-g / rho) (J/m^2)."""
-        return -self.work * np.exp(-np.asarray(g, dtype=float) / self.rho)
-
-    def traction(self, g: np.ndarray | float) -> np.ndarray:
-        """t(g) = (w / rho) exp(-g / rho) (Pa, attractive)."""
-        return self.peak * np.exp(-np.asarray(g, dtype=float) / self.rho)
-
-    def maugis(self, radius: float, e_star: float) -> float:
-        """Maugis' lambda of the Dugdale law of the same work and peak tension."""
-        return maugis_parameter(self.peak, self.work, radius, e_star)
-
-
-InteractionLaw = DugdaleLaw | ExponentialLaw
+    def rigid_line_pull_off(self, radius: float) -> float:
+        """2 sqrt(2 R w sigma0) (N/m): the width 2 sqrt(2 R h0) under sigma0."""
+        return 2.0 * math.sqrt(2.0 * radius * self.work * self.sigma0)
