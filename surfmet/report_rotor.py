@@ -9,7 +9,7 @@ from surfmet.report_html import esc, figure_png, figures_html, kv_table
 
 
 def rotor_html(v: Any) -> str:
-    """HTML of a :class:`contact.rotor.verdict.RotorVerdict`."""
+    """HTML of a :class:`rotor.verdict.RotorVerdict`."""
     from surfmet.mechanics.rotor_verdict import verdict_record
     from surfmet.plots.rotor_verdict import draw_verdict
 

@@ -129,7 +129,7 @@ def _rotor_verdict(args: argparse.Namespace) -> Any:
         if args.rig:
             raise SurfmetInputError("--rig goes with --rotor TABLE")
         return None
-    from contact.rotor.paper import FPS, MARK_STEP
+    from rotor import FPS, MARK_STEP
     from surfmet.cli.rotor import PAPER_ALIAS, _paper_path
     from surfmet.frames import read_frames_table
     from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict

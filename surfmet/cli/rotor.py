@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from contact.rotor.paper import FPS, MARK_STEP, TABLE3_FILENAME
+from rotor import FPS, MARK_STEP, TABLE3_FILENAME
 from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
 from surfmet.cli._rotor_scans import add_scan_arguments, read_rotor_scans, rough_bound
 from surfmet.errors import SurfmetInputError
@@ -86,7 +86,7 @@ def _paper_path() -> Path:
 
 
 def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
-    from contact.rotor.family import MODELS, PARAM_UNITS
+    from rotor import MODELS, PARAM_UNITS
 
     spec = MODELS[fit.model]
     keys = list(spec.free)
@@ -119,8 +119,8 @@ def _fit_record(fit: Any, fps: float) -> dict[str, Any]:
 
 
 def analysis_record(an: Any, source: str) -> dict[str, Any]:
-    """The JSON record of a :class:`contact.rotor.groups.LawOfMotionAnalysis`."""
-    from contact.rotor.mechanics import G_STANDARD, mass_properties
+    """The JSON record of a :class:`rotor.groups.LawOfMotionAnalysis`."""
+    from rotor import G_STANDARD, mass_properties
 
     sym = mass_properties(collar_offset="symmetric")
     fps = an.fps
@@ -205,15 +205,14 @@ def analysis_record(an: Any, source: str) -> dict[str, Any]:
 
 
 def _unit(key: str) -> str:
-    from contact.rotor.family import PARAM_UNITS
+    from rotor import PARAM_UNITS
 
     return PARAM_UNITS.get(key, "")
 
 
 def adequacy_sentences(t: Any) -> list[str]:
     """What the adequacy check says about one test, in words."""
-    from contact.rotor.adequacy import MIN_ROWS
-    from contact.rotor.family import EXTENSION
+    from rotor import EXTENSION, MIN_ROWS
 
     a = t.adequacy
     if not a.judged:
@@ -260,7 +259,7 @@ def adequacy_sentences(t: Any) -> list[str]:
 
 
 def _named(t: Any) -> Any:
-    from contact.rotor.adequacy import named_wave
+    from rotor import named_wave
 
     span = float(max(t.angles) - min(t.angles))
     return named_wave(t.fit, span)
@@ -284,7 +283,7 @@ def a_p(a: Any) -> str:
 
 
 def _adequacy_record(t: Any) -> dict[str, Any]:
-    from contact.rotor.adequacy import ALPHA
+    from rotor import ALPHA
 
     a = t.adequacy
     rec: dict[str, Any] = {
@@ -338,7 +337,7 @@ def _fmt_p(p: float) -> str:
 
 
 def _print_tests(an: Any) -> None:
-    from contact.rotor.selection import false_alarm_floor
+    from rotor import false_alarm_floor
 
     fps = an.fps
     print("per test (rms in frames; BIC; leave-one-out rms in frames)")
@@ -375,7 +374,7 @@ def _print_tests(an: Any) -> None:
 
 
 def _print_adequacy(an: Any) -> None:
-    from contact.rotor.adequacy import ALPHA
+    from rotor import ALPHA
 
     print()
     print(f"adequacy of the chosen model (runs test, lag-1 correlation and residual "
@@ -438,7 +437,7 @@ def _print_summary(an: Any, source: str) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from contact.rotor.groups import analyse_table
+    from rotor import analyse_table
 
     check_output(args.plot, "--plot")
     if not (math.isfinite(args.fps) and args.fps > 0):

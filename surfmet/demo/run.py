@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from contact.rotor.paper import HERTZ_CHECK_LOAD
+from rotor import HERTZ_CHECK_LOAD
 from surfmet.demo import figures as fig
 from surfmet.demo.lawofmotion import rotor_step
 from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads

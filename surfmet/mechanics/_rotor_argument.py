@@ -1,7 +1,7 @@
 """The rotor verdict's evidence in words and JSON: the design's permutation p beside the
-model's, the friction arm against its physical bound (:mod:`contact.rotor.arm`), the rig
+model's, the friction arm against its physical bound (:mod:`rotor.arm`), the rig
 used, and the table of the four differences with the two misread rules
-(:mod:`contact.rotor.reconcile`). Called by :mod:`surfmet.mechanics.rotor_verdict`, whose
+(:mod:`rotor.reconcile`). Called by :mod:`surfmet.mechanics.rotor_verdict`, whose
 :func:`~surfmet.mechanics.rotor_verdict.verdict_record` is the one record builder.
 """
 
@@ -61,7 +61,7 @@ def rig_record(rig: Any) -> dict[str, Any] | None:
     """``verdict.rig``: the rig the verdict used."""
     if rig is None:
         return None
-    from contact.rotor.rig import paper_rig
+    from rotor import paper_rig
 
     return {
         "source": ("the paper's rotor (analytic mass properties of its printed parts) and "
@@ -173,7 +173,7 @@ def argument_lines(v: Any, rough: Any = None) -> list[str]:
 def differences_record(v: Any, analysis: Any) -> dict[str, Any]:
     """``verdict.differences`` and ``verdict.misread_rules`` for a table's verdict and its
     per-test analysis."""
-    from contact.rotor.reconcile import differences_table, misread_rules
+    from rotor import differences_table, misread_rules
 
     o = v.offset
     rows = []
@@ -255,7 +255,7 @@ def _num(x: float) -> float | None:
 
 def windows_record(w: Any) -> dict[str, Any] | None:
     """``verdict.track_difference.windowed``: the model-free windowed accelerations
-    (:mod:`contact.rotor.windows`) and where they resolve the difference."""
+    (:mod:`rotor.windows`) and where they resolve the difference."""
     if w is None:
         return None
 
@@ -300,11 +300,11 @@ def windows_lines(v: Any) -> list[str]:
 
 def lane_record(v: Any) -> dict[str, Any] | None:
     """``verdict.lane_test``: do the groups' tracks differ more than the launches' within a
-    group do (:mod:`contact.rotor.lanes`), with its calibration's held-out rates."""
+    group do (:mod:`rotor.lanes`), with its calibration's held-out rates."""
     lt = v.lanes
     if lt is None:
         return None
-    from contact.rotor.lanes import lane_calibration
+    from rotor import lane_calibration
 
     cal = lane_calibration()
 

@@ -1,5 +1,5 @@
 """Every assumption's weight on the rotor verdict, the experiment that would settle it, and
-the paper's swapped labels, in words and JSON (:mod:`contact.rotor.sensitivity`). Called by
+the paper's swapped labels, in words and JSON (:mod:`rotor.sensitivity`). Called by
 :mod:`surfmet.mechanics.rotor_verdict`, so every entry point says them.
 """
 
@@ -24,7 +24,7 @@ def label_swap_text(v: Any) -> str | None:
     """The label swap, for the paper's rig and Table 3's groups; None for other rigs."""
     if v.rig is None:
         return None
-    from contact.rotor.rig import paper_rig
+    from rotor import paper_rig
 
     return LABEL_SWAP if v.rig == paper_rig() else None
 
@@ -35,7 +35,7 @@ def _num(x: float) -> float | None:
 
 def sensitivity_record(v: Any) -> list[dict[str, Any]]:
     """``verdict.sensitivity``: one row per assumption changed."""
-    from contact.rotor.sensitivity import sensitivity_table
+    from rotor import sensitivity_table
 
     return [{"assumption": r.assumption, "setting": r.setting, "code": r.code,
              "offset": {"value": _num(r.offset), "unit": "rad/s^2", "ci_low": _num(r.ci_low),
@@ -53,7 +53,7 @@ def _lam(x: float) -> str:
 
 def sensitivity_lines(v: Any) -> list[str]:
     """The sensitivity table in words."""
-    from contact.rotor.sensitivity import sensitivity_table
+    from rotor import sensitivity_table
 
     rows = sensitivity_table(v)
     if not rows:
@@ -70,7 +70,7 @@ def sensitivity_lines(v: Any) -> list[str]:
 
 def experiment_record(v: Any) -> dict[str, Any] | None:
     """``verdict.experiment``: what would settle the question with this rig."""
-    from contact.rotor.sensitivity import settling_experiment
+    from rotor import settling_experiment
 
     e = settling_experiment(v)
     if e is None:

@@ -1,6 +1,6 @@
 """The rough contact's extent as a bound on the rotor's friction arm.
 
-The arm argument (:mod:`contact.rotor.arm`) bounds the friction arm ``s_r = M_r / N`` by the
+The arm argument (:mod:`rotor.arm`) bounds the friction arm ``s_r = M_r / N`` by the
 contact radius, since the normal force's resultant lies inside the contact. Its bound is
 Hertz's radius at the symmetric group's ball load. Where the plate (and ball) are scanned, the
 rough contact at the same load spreads over a region of its own: :func:`rough_arm_bound` asks
@@ -23,7 +23,7 @@ __all__ = ["MATERIALS", "RoughArmBound", "deciding_bound", "rough_arm_bound",
            "rough_bound_line", "rough_bound_record"]
 
 MATERIALS = "steel,aluminium"
-"""The paper's ball and plate materials (:data:`contact.rotor.arm.PAPER_PAIR`)."""
+"""The paper's ball and plate materials (:data:`rotor.arm.PAPER_PAIR`)."""
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, 
 
     Parameters
     ----------
-    arm : contact.rotor.arm.ArmBound
+    arm : rotor.arm.ArmBound
         The Hertz arm bound (its ``bound_load`` and ``arm_bound``).
     ball_radius : float
         The rig's ball radius (m).
@@ -126,9 +126,9 @@ def _basis(rb: RoughArmBound) -> str:
 
 
 def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
-    """The arm argument (:class:`contact.rotor.arm.ArmBound`) at the radius that bounds
+    """The arm argument (:class:`rotor.arm.ArmBound`) at the radius that bounds
     the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
-    recomputed there (:func:`contact.rotor.arm.arm_bound` with ``radius=``): the least
+    recomputed there (:func:`rotor.arm.arm_bound` with ``radius=``): the least
     lambda the offset needs, its slope, and the friction arm's ratio to the bound.
 
     Examples
@@ -146,7 +146,7 @@ def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
     """
     if rb is None or rb.decides != "rough":
         return v.arm
-    from contact.rotor.arm import arm_bound
+    from rotor import arm_bound
 
     o = v.offset
     return arm_bound(v.rig, o.minuend, o.subtrahend, v.arm.slope, v.mean_acceleration,

@@ -1,4 +1,4 @@
-"""The rotor verdict (:mod:`contact.rotor.verdict`) as every entry point shows it: computed
+"""The rotor verdict (:mod:`rotor.verdict`) as every entry point shows it: computed
 once per table, printed first by ``surfmet rotor``, carried by ``surfmet rolling --model
 all``, the demo and the report, in the same words and numbers.
 """
@@ -22,7 +22,7 @@ __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
 
 
 def load_rig(path: str | Path) -> Any:
-    """A :class:`contact.rotor.rig.Rig` from a rig JSON file (one line on any error).
+    """A :class:`rotor.rig.Rig` from a rig JSON file (one line on any error).
 
     Parameters
     ----------
@@ -31,7 +31,7 @@ def load_rig(path: str | Path) -> Any:
 
     Returns
     -------
-    contact.rotor.rig.Rig
+    rotor.rig.Rig
         The rig.
 
     Raises
@@ -52,7 +52,7 @@ def load_rig(path: str | Path) -> Any:
     surfmet.errors.SurfmetInputError: --rig no-such-rig.json: no such file
     """
     from contact.errors import ContactInputError
-    from contact.rotor.rig import rig_from_mapping
+    from rotor import rig_from_mapping
 
     try:
         data = json.loads(Path(path).read_text(encoding="utf-8"))
@@ -104,14 +104,14 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
         Row numbers (default 1, 2, ...).
     fps, step : float
         Frame rate (1/s) and mark step (rad).
-    rig : contact.rotor.rig.Rig, optional
+    rig : rotor.rig.Rig, optional
         The rig: its groups, and the lambda outputs and confounds.
     mechanisms : mapping of str to float, optional
         Contact mechanisms' accelerations to weigh as confounds.
 
     Returns
     -------
-    contact.rotor.verdict.RotorVerdict
+    rotor.verdict.RotorVerdict
         The verdict.
 
     Raises
@@ -135,7 +135,7 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
     surfmet.errors.SurfmetInputError: ...
     """
     from contact.errors import ContactInputError
-    from contact.rotor.verdict import judge_table
+    from rotor import judge_table
 
     groups = ({g.name: list(g.columns) for g in rig.groups} if rig is not None
               else column_groups(list(cols)))
@@ -154,7 +154,7 @@ def paper_verdict() -> Any:
 
     Returns
     -------
-    contact.rotor.verdict.RotorVerdict
+    rotor.verdict.RotorVerdict
         The verdict on Table 3 of Alaci et al. (2022): the group offset, the shared-track
         test, the lambda needed, the confounds.
 
@@ -175,7 +175,7 @@ def paper_verdict() -> Any:
     >>> verdict.code
     'undetermined'
     """
-    from contact.rotor.rig import paper_rig
+    from rotor import paper_rig
     from surfmet.data import path as data_path
     from surfmet.frames import read_frames_table
 
@@ -192,9 +192,9 @@ def offset_record(v: Any) -> dict[str, Any]:
 
 
 def _calibration_record() -> dict[str, Any]:
-    from contact.rotor.verdict import calibration
+    from rotor import verdict_calibration
 
-    cal = calibration()
+    cal = verdict_calibration()
     st, ot = cal["shared_track_test"], cal["offset_test"]
     return {
         "tables": cal["tables"], "generated_by": cal["generated_by"],
@@ -218,8 +218,8 @@ def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str,
     ----------
     v : RotorVerdict
         The verdict.
-    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds
+    analysis : rotor.groups.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`rotor.groups.analyse_table`): adds
         the table of the four differences and the two misread rules.
     rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent: added to ``arm_bound`` beside the Hertz radius.
@@ -261,7 +261,7 @@ def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str,
 
 
 def _sensitivity_fields(v: Any) -> dict[str, Any]:
-    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`contact.rotor.sensitivity`)."""
+    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`rotor.sensitivity`)."""
     from surfmet.mechanics._rotor_sensitivity import (
         experiment_record,
         label_swap_text,
@@ -325,9 +325,9 @@ def _verdict_record(v: Any) -> dict[str, Any]:
 
 
 def _p_floor() -> float:
-    from contact.rotor.verdict import calibration
+    from rotor import verdict_calibration
 
-    return 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
+    return 1.0 / (len(verdict_calibration()["shared_track_test"]["null_f_sorted"]) + 1)
 
 
 def _p_shown(p: float) -> str:
@@ -339,9 +339,9 @@ def _p_shown(p: float) -> str:
 def _rejected(v: Any) -> str:
     """REJECTED, said as the model's alone when the design's permutation p is weaker than
     the test's level (the wording follows the weaker p)."""
-    from contact.rotor.verdict import calibration
+    from rotor import verdict_calibration
 
-    level = float(calibration()["shared_track_test"]["level"])
+    level = float(verdict_calibration()["shared_track_test"]["level"])
     return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
 
 
@@ -352,8 +352,8 @@ def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
     ----------
     v : RotorVerdict
         The verdict.
-    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds,
+    analysis : rotor.groups.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`rotor.groups.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
         (as :func:`verdict_record` adds their JSON).
     rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
@@ -493,7 +493,7 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
     The paper's Table 3 with the paper's rig and frame rate:
 
     >>> import csv
-    >>> from contact.rotor.paper import FPS, MARK_STEP
+    >>> from rotor import FPS, MARK_STEP
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.rotor_verdict import table_verdict
     >>> with open(path("table3_frames.tsv")) as f:
@@ -504,8 +504,7 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
     >>> verdict.code, notes
     ('undetermined', [])
     """
-    from contact.rotor.paper import FPS, MARK_STEP
-    from contact.rotor.rig import paper_rig
+    from rotor import FPS, MARK_STEP, paper_rig
 
     if rig_path:
         return judge(cols, ks, fps=fps, step=step, rig=load_rig(rig_path)), []
@@ -557,7 +556,7 @@ def label_swap_text(v: Any) -> str | None:
 
     Parameters
     ----------
-    v : contact.rotor.verdict.RotorVerdict
+    v : rotor.verdict.RotorVerdict
         The verdict.
 
     Returns
