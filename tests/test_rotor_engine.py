@@ -119,3 +119,48 @@ def test_star_import_is_clean_and_every_face_name_resolves():
     # never pulls in the user layer
     assert all(home.startswith("rotor.") for home in r["homes"].values()), r["homes"]
     assert r["surfmet"] == []
+
+
+# issue 37, item 5 (the rotor's share): the rotor command and its facades print records, they
+# do not build JSON quantities; the records live in surfmet/records/rotor*.py
+ROTOR_USERS = ("surfmet/cli/rotor.py", "surfmet/mechanics/_rotor_adequacy.py",
+               "surfmet/mechanics/_rotor_argument.py", "surfmet/mechanics/_rotor_sensitivity.py",
+               "surfmet/mechanics/rotor_rough_bound.py", "surfmet/mechanics/rotor_verdict.py")
+
+
+def _quantities(tree: ast.AST) -> list[int]:
+    """Lines that build a JSON quantity: a call of ``quantity`` imported from surfmet.units,
+    or a ``{"value": .., "unit": ..}`` display."""
+    names = {a.asname or a.name for node in ast.walk(tree)
+             if isinstance(node, ast.ImportFrom) and node.module == "surfmet.units"
+             for a in node.names if a.name == "quantity"}
+    lines = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Dict):
+            keys = {k.value for k in node.keys if isinstance(k, ast.Constant)}
+            if {"value", "unit"} <= keys:
+                lines.append(node.lineno)
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+              and node.func.id in names):
+            lines.append(node.lineno)
+    return lines
+
+
+def test_the_rotor_command_and_facades_build_no_json_quantities():
+    found = {}
+    for rel in ROTOR_USERS:
+        path = ROOT / rel
+        assert path.is_file(), rel
+        lines = _quantities(ast.parse(path.read_text(encoding="utf-8")))
+        if lines:
+            found[rel] = lines
+    assert not found, found
+    records = sorted(p.name for p in (ROOT / "surfmet" / "records").glob("rotor*.py"))
+    assert records and all(_quantities(ast.parse((ROOT / "surfmet" / "records" / n)
+                                                 .read_text(encoding="utf-8")))
+                           for n in records), records
+    # and one way: the records read the facades, the facades never import the records
+    bad = [f"{rel}:{line}: {module}" for rel, line, module, _ in _imports("surfmet/mechanics")
+           if "rotor" in rel and (module == "surfmet.records"
+                                  or module.startswith("surfmet.records."))]
+    assert not bad, bad

@@ -92,7 +92,8 @@ def test_lane_calibration_published_with_held_out_rates() -> None:
     """The calibration: critical p near its nominal 2 % (the F(q_g, q_l) reference), its
     rates measured on held-out tables only, and what the verdict's JSON carries."""
     from rotor.lanes import lane_calibration
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.records.rotor_verdict import verdict_record
 
     cal = lane_calibration()
     lt = cal["lane_test"]

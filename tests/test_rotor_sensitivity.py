@@ -125,7 +125,8 @@ def test_label_swap_said_by_every_entry_point(v, capsys) -> None:
     from surfmet.cli import main
     from surfmet.demo.story import _Text, _verdict
     from surfmet.mechanics._rotor_sensitivity import LABEL_SWAP, label_swap_text
-    from surfmet.mechanics.rotor_verdict import verdict_lines, verdict_record
+    from surfmet.mechanics.rotor_verdict import verdict_lines
+    from surfmet.records.rotor_verdict import verdict_record
     from surfmet.report_rotor import rotor_html
 
     assert label_swap_text(v) == LABEL_SWAP

@@ -112,7 +112,7 @@ def run(args: argparse.Namespace) -> int:
         rec: dict[str, Any] = {"output": args.output,
                                "scans": [s.summary() for s in sections]}
         if rotor is not None:  # the verdict record surfmet rotor --json emits
-            from surfmet.mechanics.rotor_verdict import verdict_record
+            from surfmet.records.rotor_verdict import verdict_record
 
             rec["rotor"] = {"verdict": verdict_record(rotor)}
         emit_json(rec)

@@ -278,7 +278,7 @@ class MechanismsReport:
     def to_json(self) -> dict[str, Any]:
         from contact.viscoelastic.mechanisms import BOUNDS_ONLY
         from surfmet.mechanics._rotor_sensitivity import label_swap_text
-        from surfmet.mechanics.rotor_verdict import offset_record
+        from surfmet.records.rotor_verdict import offset_record
 
         c = self.comparison
         name, factor = c.dominant()
