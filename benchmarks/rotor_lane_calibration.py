@@ -1,9 +1,9 @@
-"""Calibrate the rotor verdict's lane test (:func:`rotor.joint.lane_f`) by simulation
+"""Calibrate the rotor verdict's lane test (:func:`rotor.lane_f`) by simulation
 with launch-level lanes in the null.
 
 Tables of two groups of three launches are simulated by the ODE integrator
-(:mod:`rotor.tables`); in the ``lane*`` kinds every launch rolls on a lane of its own
-(the stated prior :data:`rotor.tables.LANE_PRIOR`: the plate's wave shifted per
+(:mod:`rotor._tables`); in the ``lane*`` kinds every launch rolls on a lane of its own
+(the stated prior :data:`rotor.LANE_PRIOR`: the plate's wave shifted per
 launch by a phase uniform in +-(0.3 to pi) rad, its amplitude scaled by 1 +- (0 to 0.5),
 its trend changed by a normal (0 to 0.01) rad/s² per rad, on a wave of 0.1-0.4 rad/s²):
 
@@ -176,12 +176,12 @@ def main() -> None:
     out = {
         "what": "calibration of the rotor verdict's lane test by simulation, launch-level "
                 "lanes in the null",
-        "prior": "rotor.tables.draw_scenario (the paper's rotor; acceleration "
+        "prior": "rotor.draw_scenario (the paper's rotor; acceleration "
                  "U(1.5, 2.8) rad/s²; slope U(0.6, 1.0) deg; trend eta U(-0.02, 0.06) rad/s² "
                  "per rad; one wave of period U(1.5, 6) rev, any phase, amplitude U(0, 0.4) "
                  "rad/s² without lanes; launch spread U(0.01, 0.06) rad/s²; reading scatter "
                  "U(0.02, 0.08) rad; a misread row in half the launches) with lanes from "
-                 "rotor.tables.LANE_PRIOR: per table a phase half-width U(0.3, pi) "
+                 "rotor.LANE_PRIOR: per table a phase half-width U(0.3, pi) "
                  "rad, an amplitude half-width U(0, 0.5), a trend sd U(0, 0.01) rad/s² per "
                  "rad, on a wave of amplitude U(0.1, 0.4) rad/s²; per launch its lane's wave "
                  "shifted, scaled and its trend changed by draws within them",

@@ -1,8 +1,8 @@
-"""Calibrate the rotor verdict (:mod:`rotor.verdict`) by simulation.
+"""Calibrate the rotor verdict (:mod:`rotor._verdict`) by simulation.
 
 Tables of two groups of three launches are simulated by the ODE integrator
-(:mod:`rotor.tables`, the stated prior there) and analysed by the joint model
-(:mod:`rotor.joint`):
+(:mod:`rotor._tables`, the stated prior there) and analysed by the joint model
+(:mod:`rotor._joint`):
 
 - shared track, no offset: the null of both tests (false alarms of ``difference``);
 - shared track, offset uniform in +-0.3 rad/s²: the null of the shared-track test and the
@@ -94,8 +94,8 @@ def main() -> None:
             power_offset.append({"abs_offset_rad_s2": [lo, hi], "n": len(sel),
                                  "rate": sum(map(says_difference, sel)) / len(sel)})
     out = {
-        "what": "calibration of the rotor verdict (rotor.verdict) by simulation",
-        "prior": draw_scenario.__doc__.strip().splitlines()[0] + " Prior: rotor.tables "
+        "what": "calibration of the rotor verdict (rotor._verdict) by simulation",
+        "prior": draw_scenario.__doc__.strip().splitlines()[0] + " Prior: rotor._tables "
                  "(paper's rotor; acceleration U(1.5, 2.8) rad/s²; slope U(0.6, 1.0) deg; trend "
                  "eta U(-0.02, 0.06) rad/s² per rad; one wave of amplitude U(0, 0.4) rad/s², "
                  "period U(1.5, 6) rev, any phase; launch spread U(0.01, 0.06) rad/s²; reading "

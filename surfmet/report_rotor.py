@@ -9,7 +9,7 @@ from surfmet.report_html import esc, figure_png, figures_html, kv_table
 
 
 def rotor_html(v: Any) -> str:
-    """HTML of a :class:`rotor.verdict.RotorVerdict`."""
+    """HTML of a :class:`rotor.RotorVerdict`."""
     from surfmet.plots.rotor_verdict import draw_verdict
     from surfmet.records.rotor_verdict import verdict_record
 

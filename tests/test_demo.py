@@ -291,7 +291,7 @@ def test_quick_says_what_it_leaves_out_and_prints_only_the_full_runs_numbers(dem
     per-test law-of-motion models are most of the run and --quick left them in. It leaves
     them out now and says so; what it prints is computed as in the full run (the rolling
     sweep has the full run's 5 loads; the parabolas are analyse_table's)."""
-    from rotor.paper import PARABOLAS
+    from rotor._paper import PARABOLAS
 
     s = demo["summary"]
     assert "tests" not in s["rotor"] and "comparisons" not in s["rotor"]

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from rotor.windows import launch_windows, windowed_difference
+from rotor._windows import launch_windows, windowed_difference
 
 STEP = math.pi / 2
 

@@ -111,7 +111,7 @@ def main(argv: list[str]) -> int:
     heading("The synthetic scans against Table 2 (median of the rows, lc = 0.8 mm)")
     findings["table2"] = table2_check(plate, ball)
 
-    heading("Loads of the experiment (rotor/mechanics.py, Eqs. 41-42, level plate)")
+    heading("Loads of the experiment (rotor/_mechanics.py, Eqs. 41-42, level plate)")
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
     asym = normal_reactions(mass_properties(paper_rotor(), "end"))
     print(f"symmetric rotor : N1 = N2 = {sym[0]:.3f} N")

@@ -25,8 +25,8 @@ QUICK_LEAVES_OUT = ("the per-test law-of-motion models (misread rows, the BIC ch
 
 
 def _parabola_groups(cols: dict[str, Any], fps: float, step: float) -> list[dict[str, Any]]:
-    """The paper's parabola of each group (:func:`rotor.parabola.paper_parabola`,
-    the one :func:`rotor.groups.analyse_table` fits), without the model selection."""
+    """The paper's parabola of each group (:func:`rotor.paper_parabola`,
+    the one :func:`rotor.analyse_table` fits), without the model selection."""
     from rotor import group_of, paper_parabola
 
     groups = []

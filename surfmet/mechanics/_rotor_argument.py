@@ -1,7 +1,7 @@
 """The rotor verdict's evidence in words: the design's permutation p beside the model's,
-the friction arm against its physical bound (:mod:`rotor.arm`), the rig used, the
+the friction arm against its physical bound (:mod:`rotor._arm`), the rig used, the
 model-free windows, the lane test, and the table of the four differences with the two
-misread rules (:mod:`rotor.reconcile`). Called by :mod:`surfmet.mechanics.rotor_verdict`;
+misread rules (:mod:`rotor._reconcile`). Called by :mod:`surfmet.mechanics.rotor_verdict`;
 the same evidence as JSON is :mod:`surfmet.records.rotor_verdict` (and the records it
 gathers), which reads the sentences shared by both from here.
 """

@@ -1,5 +1,5 @@
 """Every assumption's weight on the rotor verdict, the experiment that would settle it, and
-the paper's swapped labels, in words (:mod:`rotor.sensitivity`; their JSON is
+the paper's swapped labels, in words (:mod:`rotor._sensitivity`; their JSON is
 :mod:`surfmet.records.rotor_sensitivity`). Called by :mod:`surfmet.mechanics.rotor_verdict`,
 so every entry point says them.
 """

@@ -1,6 +1,6 @@
 """The rough contact's extent as a bound on the rotor's friction arm.
 
-The arm argument (:mod:`rotor.arm`) bounds the friction arm ``s_r = M_r / N`` by the
+The arm argument (:mod:`rotor._arm`) bounds the friction arm ``s_r = M_r / N`` by the
 contact radius, since the normal force's resultant lies inside the contact. Its bound is
 Hertz's radius at the symmetric group's ball load. Where the plate (and ball) are scanned, the
 rough contact at the same load spreads over a region of its own: :func:`rough_arm_bound` asks
@@ -21,7 +21,7 @@ __all__ = ["MATERIALS", "RoughArmBound", "deciding_bound", "rough_arm_bound",
            "rough_basis", "rough_bound_line"]
 
 MATERIALS = "steel,aluminium"
-"""The paper's ball and plate materials (:data:`rotor.arm.PAPER_PAIR`)."""
+"""The paper's ball and plate materials (:data:`rotor._arm.PAPER_PAIR`)."""
 
 
 @dataclass(frozen=True)
@@ -77,7 +77,7 @@ def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, 
 
     Parameters
     ----------
-    arm : rotor.arm.ArmBound
+    arm : rotor.ArmBound
         The Hertz arm bound (its ``bound_load`` and ``arm_bound``).
     ball_radius : float
         The rig's ball radius (m).
@@ -135,9 +135,9 @@ def rough_basis(rb: RoughArmBound) -> str:
 
 
 def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
-    """The arm argument (:class:`rotor.arm.ArmBound`) at the radius that bounds
+    """The arm argument (:class:`rotor.ArmBound`) at the radius that bounds
     the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
-    recomputed there (:func:`rotor.arm.arm_bound` with ``radius=``): the least
+    recomputed there (:func:`rotor.arm_bound` with ``radius=``): the least
     lambda the offset needs, its slope, and the friction arm's ratio to the bound.
 
     Examples

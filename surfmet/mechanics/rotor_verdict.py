@@ -1,4 +1,4 @@
-"""The rotor verdict (:mod:`rotor.verdict`) as every entry point shows it: computed
+"""The rotor verdict (:mod:`rotor._verdict`) as every entry point shows it: computed
 once per table, printed first by ``surfmet rotor``, carried by ``surfmet rolling --model
 all``, the demo and the report, in the same words and numbers.
 """
@@ -21,7 +21,7 @@ __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
 
 
 def load_rig(path: str | Path) -> Any:
-    """A :class:`rotor.rig.Rig` from a rig JSON file (one line on any error).
+    """A :class:`rotor.Rig` from a rig JSON file (one line on any error).
 
     Parameters
     ----------
@@ -30,7 +30,7 @@ def load_rig(path: str | Path) -> Any:
 
     Returns
     -------
-    rotor.rig.Rig
+    rotor.Rig
         The rig.
 
     Raises
@@ -103,14 +103,14 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
         Row numbers (default 1, 2, ...).
     fps, step : float
         Frame rate (1/s) and mark step (rad).
-    rig : rotor.rig.Rig, optional
+    rig : rotor.Rig, optional
         The rig: its groups, and the lambda outputs and confounds.
     mechanisms : mapping of str to float, optional
         Contact mechanisms' accelerations to weigh as confounds.
 
     Returns
     -------
-    rotor.verdict.RotorVerdict
+    rotor.RotorVerdict
         The verdict.
 
     Raises
@@ -153,7 +153,7 @@ def paper_verdict() -> Any:
 
     Returns
     -------
-    rotor.verdict.RotorVerdict
+    rotor.RotorVerdict
         The verdict on Table 3 of Alaci et al. (2022): the group offset, the shared-track
         test, the lambda needed, the confounds.
 
@@ -234,8 +234,8 @@ def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
     ----------
     v : RotorVerdict
         The verdict.
-    analysis : rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`rotor.groups.analyse_table`): adds,
+    analysis : rotor.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`rotor.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
         (as :func:`surfmet.records.rotor_verdict.verdict_record` adds their JSON).
     rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
@@ -438,7 +438,7 @@ def label_swap_text(v: Any) -> str | None:
 
     Parameters
     ----------
-    v : rotor.verdict.RotorVerdict
+    v : rotor.RotorVerdict
         The verdict.
 
     Returns

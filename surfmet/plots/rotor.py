@@ -11,7 +11,7 @@ import numpy as np
 from surfmet.plots._style import finish, new_figure
 
 #: The paper's model of the law of motion (constant acceleration from rest at the first
-#: mark, :data:`rotor.family.MODELS`): the baseline the residual figure and the
+#: mark, :data:`rotor.MODELS`): the baseline the residual figure and the
 #: demo's table compare the chosen models with.
 PAPER_MODEL = "rest"
 
@@ -167,7 +167,7 @@ def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -
 def rolling_law_figure(inference: Any, path: str | Path | None = None,
                        label: str = "") -> Any:
     """``lambda`` implied by the two groups' accelerations against the assumed equivalent
-    slope (:func:`rotor.inference.infer_rolling_law`), with its 16-84 % band."""
+    slope (:func:`rotor.infer_rolling_law`), with its 16-84 % band."""
     infs = inference if isinstance(inference, (list, tuple)) else [(label, inference)]
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     for lab, inf in infs:

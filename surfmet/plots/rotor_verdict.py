@@ -1,4 +1,4 @@
-"""Figure of the rotor verdict (:mod:`rotor.verdict`): the acceleration read off the
+"""Figure of the rotor verdict (:mod:`rotor._verdict`): the acceleration read off the
 frames along the track per group, with the joint model over it, and the exponent the offset
 needs against the assumed slope."""
 

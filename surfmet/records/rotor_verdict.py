@@ -57,8 +57,8 @@ def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str,
     ----------
     v : RotorVerdict
         The verdict.
-    analysis : rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`rotor.groups.analyse_table`): adds
+    analysis : rotor.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`rotor.analyse_table`): adds
         the table of the four differences and the two misread rules.
     rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent: added to ``arm_bound`` beside the Hertz radius.
@@ -93,7 +93,7 @@ def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str,
 
 
 def _sensitivity_fields(v: Any) -> dict[str, Any]:
-    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`rotor.sensitivity`)."""
+    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`rotor._sensitivity`)."""
     return {"label_swap": label_swap_text(v), "sensitivity": sensitivity_record(v),
             "experiment": experiment_record(v)}
 
@@ -192,7 +192,7 @@ def _num(x: float) -> float | None:
 
 def windows_record(w: Any) -> dict[str, Any] | None:
     """``verdict.track_difference.windowed``: the model-free windowed accelerations
-    (:mod:`rotor.windows`) and where they resolve the difference."""
+    (:mod:`rotor._windows`) and where they resolve the difference."""
     if w is None:
         return None
 
@@ -220,7 +220,7 @@ def windows_record(w: Any) -> dict[str, Any] | None:
 
 def lane_record(v: Any) -> dict[str, Any] | None:
     """``verdict.lane_test``: do the groups' tracks differ more than the launches' within a
-    group do (:mod:`rotor.lanes`), with its calibration's held-out rates."""
+    group do (:mod:`rotor._lanes`), with its calibration's held-out rates."""
     lt = v.lanes
     if lt is None:
         return None

@@ -48,8 +48,8 @@ from dataclasses import dataclass
 from contact.errors import ContactInputError
 from contact.hertz import hertz_sphere
 from contact.materials import composite_modulus, material
-from rotor.mechanics import G_STANDARD
-from rotor.rig import Rig, slope_lower_bound, solve_lambda
+from rotor._mechanics import G_STANDARD
+from rotor._rig import Rig, slope_lower_bound, solve_lambda
 
 __all__ = ["ArmBound", "arm_bound", "load_contrast", "rolling_torque", "torque_slope"]
 

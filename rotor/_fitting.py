@@ -1,12 +1,12 @@
 """Weighted least-squares fits of the law-of-motion models on the times.
 
 Every model but ``parabola`` is fitted on the *times*, the quantity that was measured,
-weighted by the reading-noise model (:mod:`rotor.noise`). Each model's noise is its
+weighted by the reading-noise model (:mod:`rotor._noise`). Each model's noise is its
 maximum-likelihood estimate from leverage-corrected residuals ``r/sqrt(1 - h)``, so that a
 model spending its parameters on the few slow rows does not also shrink ``sigma_a`` there.
 The family is fitted in nesting order, every richer model from its parents' optima (the
 unbalance models also from four phases), the constant-acceleration model also from the
-start profile (:func:`rotor.starts.start_profile`).
+start profile (:func:`rotor._starts.start_profile`).
 """
 
 from __future__ import annotations
@@ -18,13 +18,13 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from contact.errors import ContactInputError
-from rotor.arrays import on_rows, readonly
-from rotor.diagnostics import (
+from rotor._arrays import on_rows, readonly
+from rotor._diagnostics import (
     lag1_autocorrelation,
     minus_two_log_likelihood,
     runs_test_z,
 )
-from rotor.family import (
+from rotor._family import (
     CORE,
     MODELS,
     ORDER,
@@ -33,11 +33,11 @@ from rotor.family import (
     ancestors,
     with_derived_params,
 )
-from rotor.forward import PARAM_NAMES, batch_crossing_times, crossing_times, model_speeds
-from rotor.noise import Noise, estimate_noise, quantisation_sigma
-from rotor.paper import FPS, MARK_STEP
-from rotor.parabola import fit_parabola
-from rotor.starts import (
+from rotor._forward import PARAM_NAMES, batch_crossing_times, crossing_times, model_speeds
+from rotor._noise import Noise, estimate_noise, quantisation_sigma
+from rotor._paper import FPS, MARK_STEP
+from rotor._parabola import fit_parabola
+from rotor._starts import (
     from_rest_estimate,
     full_parameters,
     inside_bounds,
@@ -291,7 +291,7 @@ def fit_all_models(
 ) -> dict[str, ModelFit]:
     """Fit models in nesting order, each started from its parents' optima (so a richer model
     does not end worse than a parent it contains). ``models`` defaults to the core family
-    (:data:`rotor.family.CORE`); their ancestors are fitted too but only the
+    (:data:`rotor._family.CORE`); their ancestors are fitted too but only the
     requested ones are returned. ``starts`` adds starting points per model; ``fitted``
     holds fits already made on the same rows (reused, not refitted); ``max_starts``
     overrides, per model, how many starting points are run."""

@@ -2,7 +2,7 @@
 
 :func:`sensitivity_table` changes one assumption at a time and says what becomes of the
 verdict's code, the offset, the ``lambda`` it needs at the slope used and the least
-``lambda`` it needs with the friction arm at its bound (:mod:`rotor.arm`):
+``lambda`` it needs with the friction arm at its bound (:mod:`rotor._arm`):
 
 - the slope (0.5-1.5 deg: the paper says only "smaller than one degree");
 - the centre of mass's offset ``xi_G`` (the paper does not print it): the asymmetric group's
@@ -36,10 +36,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from rotor.arm import arm_bound, load_contrast
-from rotor.mechanics import G_STANDARD
-from rotor.rig import Rig, RigGroup, launches_needed, solve_lambda
-from rotor.track import track_acceleration
+from rotor._arm import arm_bound, load_contrast
+from rotor._mechanics import G_STANDARD
+from rotor._rig import Rig, RigGroup, launches_needed, solve_lambda
+from rotor._track import track_acceleration
 
 __all__ = ["Experiment", "ExperimentRow", "Sensitivity", "asymmetric_group",
            "sensitivity_table", "settling_experiment", "with_contrast"]
@@ -119,7 +119,7 @@ def _scaled(rig: Rig, mass: float, inertia: float) -> Rig:
 
 
 def sensitivity_table(v) -> tuple[Sensitivity, ...]:
-    """The verdict ``v`` (:class:`rotor.verdict.RotorVerdict`, with a rig) under
+    """The verdict ``v`` (:class:`rotor._verdict.RotorVerdict`, with a rig) under
     each assumption changed in turn; the first row is the verdict as given."""
     rig, o, e = v.rig, v.offset, v.exponent
     if rig is None or e is None:

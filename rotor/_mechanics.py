@@ -15,7 +15,7 @@ What is here (equation numbers of the paper):
   Eq. (46).
 
 The inverse problem (``lambda`` and ``s_r`` from two rotors' accelerations) is in
-:mod:`rotor.inference`; the paper's dimensions in :mod:`rotor.paper`.
+:mod:`rotor._inference`; the paper's dimensions in :mod:`rotor._paper`.
 
 Two misprints in the paper, found while reproducing it: the ball's axial inertia is printed
 ``3.746e-6 kg m^2`` but ``(2/5) m R^2 = 4.18e-5 kg m^2``, and only the latter gives the
@@ -41,7 +41,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
-from rotor import paper
+from rotor import _paper as paper
 
 G_STANDARD = 9.80665
 """Standard gravity, m/s^2 (the paper does not print the value it used)."""

@@ -23,8 +23,8 @@ and ``t = t0 + int_0^s ds' / sqrt(2 u)``, integrated by Gauss-Legendre quadratur
 Jacobian is analytic: ``dt/dt0 = 1``, ``dt/dphi0 = -1/omega``, and for a coefficient ``c`` of
 ``u``, ``dt/dc = -int (du/dc) / (2u)^(3/2) ds``.
 
-This forward model shares no code with :mod:`rotor.forward` (a cumulative trapezoid
-on a grid) or with the ODE simulator (:mod:`rotor.simulator`) that tests it.
+This forward model shares no code with :mod:`rotor._forward` (a cumulative trapezoid
+on a grid) or with the ODE simulator (:mod:`rotor._simulator`) that tests it.
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
 """The paper's question answered once: is the difference between the two groups of a rotor
 table evidence that ``M_r`` is not linear in ``N``, and if not, what made it?
 
-:func:`judge_table` fits all launches jointly (:mod:`rotor.joint`), tests one shared
+:func:`judge_table` fits all launches jointly (:mod:`rotor._joint`), tests one shared
 track against group-specific ones (the F statistic's null distribution calibrated by
-simulation, :mod:`rotor.tables`, ``verdict_calibration.json``), and gives one code:
+simulation, :mod:`rotor._tables`, ``verdict_calibration.json``), and gives one code:
 
 - ``undetermined``: no shared track explains both groups (they did not run under the same
   conditions: another lane, slope, launch direction or run-in state), so the offset cannot be
@@ -13,9 +13,9 @@ simulation, :mod:`rotor.tables`, ``verdict_calibration.json``), and gives one co
 - ``no_difference``: the groups agree on a shared track: nothing here contradicts
   ``lambda = 1``.
 
-With a rig (:mod:`rotor.rig`) the offset becomes a torque, a change of slope and the
+With a rig (:mod:`rotor._rig`) the offset becomes a torque, a change of slope and the
 ``lambda`` it needs, with the largest offset ``lambda = 4/3`` could give and the launches per
-group that would tell 4/3 from 1; and a budget of confounds (:mod:`rotor.confounds`).
+group that would tell 4/3 from 1; and a budget of confounds (:mod:`rotor._confounds`).
 """
 
 from __future__ import annotations
@@ -31,9 +31,9 @@ import numpy as np
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
-from rotor.arm import ArmBound, arm_bound
-from rotor.confounds import Confound, confound_budget
-from rotor.joint import (
+from rotor._arm import ArmBound, arm_bound
+from rotor._confounds import Confound, confound_budget
+from rotor._joint import (
     GroupOffset,
     JointFit,
     TableData,
@@ -42,10 +42,10 @@ from rotor.joint import (
     prepare_table,
     shared_track_f,
 )
-from rotor.lanes import LaneTest, lane_test, lane_words
-from rotor.mechanics import G_STANDARD
-from rotor.permutation import PermutationTest, permutation_test
-from rotor.rig import (
+from rotor._lanes import LaneTest, lane_test, lane_words
+from rotor._mechanics import G_STANDARD
+from rotor._permutation import PermutationTest, permutation_test
+from rotor._rig import (
     UPPER_SLOPE,
     Rig,
     launches_needed,
@@ -53,8 +53,8 @@ from rotor.rig import (
     slope_lower_bound,
     solve_lambda,
 )
-from rotor.track import track_acceleration, track_basis
-from rotor.windows import WindowedDifference, windowed_difference
+from rotor._track import track_acceleration, track_basis
+from rotor._windows import WindowedDifference, windowed_difference
 
 __all__ = ["CODES", "ExponentNeeded", "RotorVerdict", "TrackDifference",
            "judge_table", "verdict_calibration"]
@@ -75,7 +75,7 @@ class TrackDifference:
     of track, the straight line through the joint model's difference) with its
     ``trend_stderr``, ``waviness_rms`` (rad/s², what the trend leaves), ``length`` the track
     covered (m), and ``windows``: the model-free windowed difference
-    (:mod:`rotor.windows`) beside it.
+    (:mod:`rotor._windows`) beside it.
 
     ``start``/``end`` (the polynomial's value at the release and the last mark, rad/s²) and
     ``regions`` ((start, end) m where it exceeds two standard errors) are end values of a

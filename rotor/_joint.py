@@ -1,11 +1,11 @@
-"""Fits of the joint law of motion (:mod:`rotor.track`) to all launches of a table.
+"""Fits of the joint law of motion (:mod:`rotor._track`) to all launches of a table.
 
 The pipeline (:func:`fit_table`):
 
 1. a robust fit (soft-L1 loss) of a flexible shared track, from which each launch's reading
-   noise (:func:`rotor.noise.estimate_noise`, Student-t) and its misread rows (off by
-   more than :data:`~rotor.misreads.MISREAD_THRESHOLD` sigmas and
-   :data:`~rotor.misreads.MISREAD_MIN_FRAMES` frames) are read;
+   noise (:func:`rotor._noise.estimate_noise`, Student-t) and its misread rows (off by
+   more than :data:`~rotor._misreads.MISREAD_THRESHOLD` sigmas and
+   :data:`~rotor._misreads.MISREAD_MIN_FRAMES` frames) are read;
 2. the track's degree by BIC among shared tracks, weighted by that noise;
 3. the group-specific tracks of the same degree, for the shared-track test;
 4. the group offset from the shared fit's per-launch offsets: its uncertainty is the larger of
@@ -24,10 +24,10 @@ from scipy.optimize import least_squares
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
-from rotor.analysis import prepare_column
-from rotor.misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
-from rotor.noise import Noise, estimate_noise, quantisation_sigma
-from rotor.track import TrackLayout, track_acceleration, track_times
+from rotor._analysis import prepare_column
+from rotor._misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
+from rotor._noise import Noise, estimate_noise, quantisation_sigma
+from rotor._track import TrackLayout, track_acceleration, track_times
 
 __all__ = ["DEGREES", "GroupOffset", "JointFit", "TableData", "fit_table", "group_offset",
            "groupwise_fit", "lane_f", "launchwise_fit", "local_accelerations", "prepare_table",

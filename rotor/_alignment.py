@@ -6,7 +6,7 @@ launch from the same release point; an unbalance or a ball's form error does it 
 *rotor angles*. For a group where some test's model is inadequate (or a plate wave was
 named), every test's in-family residual is fitted with a wave of the group's median period
 (the named wave's, else the residual periodogram's best;
-:func:`rotor.adequacy.wave_scan` at that one period), and the phases are compared in
+:func:`rotor._adequacy.wave_scan` at that one period), and the phases are compared in
 both coordinates: the rotor angle from the first mark, and the angle rolled since the fitted
 release ``phi0`` (``track = R x angle``). Their concentration is measured by the mean
 resultant length and Rayleigh's test (Zar's approximation of its p-value), which with three
@@ -29,10 +29,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.adequacy import named_wave, wave_scan
-from rotor.analysis import TestReport
-from rotor.family import EXTENSION
-from rotor.paper import BALL_RADIUS
+from rotor._adequacy import named_wave, wave_scan
+from rotor._analysis import TestReport
+from rotor._family import EXTENSION
+from rotor._paper import BALL_RADIUS
 
 __all__ = ["ResidualAlignment", "rayleigh_p", "residual_alignment"]
 

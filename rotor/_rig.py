@@ -25,9 +25,9 @@ from scipy.stats import nct
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
-from rotor.mechanics import G_STANDARD, mass_properties, normal_reactions
-from rotor.paper import FPS, MARK_STEP
-from rotor.tables import GROUPS as PAPER_COLLARS
+from rotor._mechanics import G_STANDARD, mass_properties, normal_reactions
+from rotor._paper import FPS, MARK_STEP
+from rotor._tables import GROUPS as PAPER_COLLARS
 
 __all__ = ["RIG_KEYS", "Rig", "RigGroup", "launches_needed", "offset_for_lambda", "paper_rig",
            "rig_from_mapping", "slope_lower_bound", "solve_lambda"]
@@ -54,7 +54,7 @@ class Rig:
     """The rotor and camera (SI): ``ball_radius`` (m), ``mass`` (kg), ``axial_inertia``
     (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None);
     ``e_star``: the ball-plate contact's composite modulus (Pa) that sets the friction arm's
-    Hertz bound (:mod:`rotor.arm`), None for the paper's steel on aluminium;
+    Hertz bound (:mod:`rotor._arm`), None for the paper's steel on aluminium;
     ``plate``: what it is, in words."""
 
     ball_radius: float
@@ -125,7 +125,7 @@ def rig_from_mapping(d: Mapping) -> Rig:
 
 
 def paper_rig() -> Rig:
-    """The paper's rotor (:mod:`rotor.mechanics`), camera and Table 3's groups."""
+    """The paper's rotor (:mod:`rotor._mechanics`), camera and Table 3's groups."""
     groups = []
     for name, collar in PAPER_COLLARS.items():
         loads = normal_reactions(mass_properties(collar_offset=collar))

@@ -19,8 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.forward import STALL
-from rotor.paper import FPS
+from rotor._forward import STALL
+from rotor._paper import FPS
 
 __all__ = ["Noise", "estimate_noise", "quantisation_sigma"]
 

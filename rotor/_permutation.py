@@ -6,12 +6,12 @@ sizes is as likely to show the statistic as the real one. The exact permutation 
 the share of splits whose statistic is at least the real one's, the real split included,
 so it can be no smaller than ``1 / n_splits``: with 3 + 3 launches there are
 ``C(6, 3) / 2 = 10`` distinct splits (a split and its mirror give the same statistics), and
-``p >= 0.1`` whatever the data. The model-calibrated p-values (:mod:`rotor.verdict`)
+``p >= 0.1`` whatever the data. The model-calibrated p-values (:mod:`rotor._verdict`)
 assume the simulation's prior; this one assumes only exchangeability, and so bounds what the
 design itself can show.
 
-Two statistics: the shared-track F (:func:`rotor.joint.shared_track_f`; each split
-refits the group-specific tracks, :func:`rotor.joint.groupwise_fit`) and the
+Two statistics: the shared-track F (:func:`rotor._joint.shared_track_f`; each split
+refits the group-specific tracks, :func:`rotor._joint.groupwise_fit`) and the
 absolute group offset (the difference of the groups' mean launch offsets under the shared
 track, which does not depend on the labels: no refit).
 """
@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.joint import JointFit, TableData, groupwise_fit, shared_track_f
+from rotor._joint import JointFit, TableData, groupwise_fit, shared_track_f
 
 __all__ = ["MAX_SPLITS", "PermutationTest", "label_splits", "permutation_test"]
 

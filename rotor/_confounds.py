@@ -15,8 +15,8 @@ from dataclasses import dataclass
 from contact.hertz import hertz_sphere
 from contact.material_pair import resolve_pair
 from contact.materials import material
-from rotor.mechanics import G_STANDARD
-from rotor.rig import Rig, offset_for_lambda
+from rotor._mechanics import G_STANDARD
+from rotor._rig import Rig, offset_for_lambda
 
 __all__ = ["Confound", "confound_budget"]
 
@@ -83,7 +83,7 @@ def confound_budget(rig: Rig, offset: float, smallest: float, slope: float,
         ("plate_flatness", track_range,
          "range of the shared track's acceleration profile along the span rolled",
          "the groups ran on lanes as different as the track's own profile",
-         "this table's joint model (rotor.track)"),
+         "this table's joint model (rotor._track)"),
         ("collar_unbalance", unbalance,
          "2 A / span, A = m_c g e / (J + M R^2): the largest mean of A sin(phi + psi)",
          f"collar mass 0.4 M off the axis by e = {UNBALANCE * 1e6:g} um (half the largest "

@@ -1,8 +1,8 @@
 """The facts of Alaci, Ciornei & Romanu (2022) that the rotor study uses, in one place.
 
 Everything here is a number printed in the paper (or the paper's Table 3 as printed); the
-code that computes with them lives beside (:mod:`rotor.mechanics` builds the rotor
-from the dimensions, :mod:`rotor.frames` splits the printed rows). SI units.
+code that computes with them lives beside (:mod:`rotor._mechanics` builds the rotor
+from the dimensions, :mod:`rotor._frames` splits the printed rows). SI units.
 
 References
 ----------

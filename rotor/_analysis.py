@@ -4,8 +4,8 @@ The data are like Table 3 of Alaci et al. (2022): for each launch ("test"), the 
 which the rotor has turned each further mark step (a quarter turn), filmed at ``fps``. Row
 ``k`` is at angle ``(k - k_first) step``; times are ``(f_k - f_first)/fps``. The paper assumes
 constant angular acceleration from rest at the first mark and fits parabolas ``phi(t)``;
-:func:`analyse_test` finds the misread rows (:mod:`rotor.misreads`), fits the whole
-family (:mod:`rotor.fitting`), selects one model (:mod:`rotor.selection`)
+:func:`analyse_test` finds the misread rows (:mod:`rotor._misreads`), fits the whole
+family (:mod:`rotor._fitting`), selects one model (:mod:`rotor._selection`)
 and states the evidence for it. Leave-one-point-out prediction errors (approximate, from the
 leverages, or exact refits) are reported beside, with a runs test and the lag-1
 autocorrelation of the residuals to tell systematic misfit from noise.
@@ -25,16 +25,16 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact.errors import ContactInputError
-from rotor.adequacy import AdequacyCheck, check_adequacy
-from rotor.arrays import readonly
-from rotor.extension import extend_family
-from rotor.family import MODELS, ModelFit
-from rotor.fitting import fit_all_models, loo_exact
-from rotor.forward import model_speeds
-from rotor.misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD, find_misread_rows
-from rotor.noise import Noise
-from rotor.paper import FPS, MARK_STEP
-from rotor.selection import (
+from rotor._adequacy import AdequacyCheck, check_adequacy
+from rotor._arrays import readonly
+from rotor._extension import extend_family
+from rotor._family import MODELS, ModelFit
+from rotor._fitting import fit_all_models, loo_exact
+from rotor._forward import model_speeds
+from rotor._misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD, find_misread_rows
+from rotor._noise import Noise
+from rotor._paper import FPS, MARK_STEP
+from rotor._selection import (
     BIC_MARGIN,
     WEAK_DELTA_BIC,
     WEAK_FALSE_ALARM,
@@ -42,7 +42,7 @@ from rotor.selection import (
     select_model,
     verdict_evidence,
 )
-from rotor.smooth import SmoothDeviation, fit_smooth_deviation
+from rotor._smooth import SmoothDeviation, fit_smooth_deviation
 
 __all__ = ["TestReport", "analyse_test", "group_of", "prepare_column"]
 
@@ -88,15 +88,15 @@ class TestReport:
         An effect is named but on weak evidence: ``false_alarm`` above 1 % or ``delta_bic``
         below 10 ("very strong" starts there on Kass & Raftery's scale).
     adequacy : AdequacyCheck
-        Whether the selected model explains the data (:mod:`rotor.adequacy`).
+        Whether the selected model explains the data (:mod:`rotor._adequacy`).
     family_choice, family_adequacy :
         The choice within the core family and its adequacy check (before any plate-wave
         model was tried).
     extension_tried : tuple of str
-        The plate-wave models fitted (:mod:`rotor.extension`); empty when the
+        The plate-wave models fitted (:mod:`rotor._extension`); empty when the
         family's choice was adequate and no flagged row could be a smooth deviation.
     smooth : SmoothDeviation or None
-        The last resort (:mod:`rotor.smooth`): an unexplained smooth deviation of the
+        The last resort (:mod:`rotor._smooth`): an unexplained smooth deviation of the
         acceleration, selected when the chosen model is inadequate and the smooth term wins
         by the selection margin.
     """
@@ -217,7 +217,7 @@ def analyse_test(
     noise : Noise, optional
         Reading noise to weight every fit with (default: each model estimates its own).
     extend : bool
-        Try the plate-wave models (:func:`rotor.extension.extend_family`); False
+        Try the plate-wave models (:func:`rotor._extension.extend_family`); False
         keeps to the core family (as the calibrations measure it).
 
     Returns

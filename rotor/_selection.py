@@ -22,7 +22,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from contact.errors import ContactInputError
-from rotor.family import MODELS, SELECTABLE, ModelFit, ancestors, is_nested
+from rotor._family import MODELS, SELECTABLE, ModelFit, ancestors, is_nested
 
 __all__ = [
     "BIC_MARGIN",

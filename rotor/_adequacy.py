@@ -1,7 +1,7 @@
 """Adequacy of a fitted law of motion: is what the model leaves white reading noise?
 
 A model explains a column when its residuals are reading noise: of a variance the data
-estimate (the noise model of :mod:`rotor.noise`, with the frame quantisation as its
+estimate (the noise model of :mod:`rotor._noise`, with the frame quantisation as its
 floor) and without order. Three statistics look at the order of the standardised residuals
 ``z = r / sigma`` taken in angle order:
 
@@ -40,11 +40,11 @@ from pathlib import Path
 
 import numpy as np
 
-from rotor.diagnostics import lag1_autocorrelation, runs_test_z
-from rotor.family import MODELS, ModelFit
-from rotor.forward import PARAM_NAMES, batch_crossing_times, model_speeds
-from rotor.paper import BALL_RADIUS
-from rotor.starts import wave_period_range
+from rotor._diagnostics import lag1_autocorrelation, runs_test_z
+from rotor._family import MODELS, ModelFit
+from rotor._forward import PARAM_NAMES, batch_crossing_times, model_speeds
+from rotor._paper import BALL_RADIUS
+from rotor._starts import wave_period_range
 
 __all__ = [
     "ALPHA",
@@ -243,7 +243,7 @@ def wave_scan(
 
     ``rows`` (mask) defaults to the fit's rows; other rows enter with their prediction errors.
     ``periods`` (rad) defaults to a grid even in frequency over the resolvable range
-    (:func:`rotor.starts.wave_period_range`), three points per resolution element.
+    (:func:`rotor._starts.wave_period_range`), three points per resolution element.
     """
     phi = np.asarray(angles, float)
     use = np.asarray(fit.used if rows is None else rows, bool)

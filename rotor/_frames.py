@@ -2,7 +2,7 @@
 
 The paper's text prints each row of Table 3 with its numbers run together: row 1 reads
 ``120712314596511226``, i.e. ``1 | 2071 231 45 965 1 1226``.
-:data:`rotor.paper.TABLE3_PRINTED_ROWS` holds the rows exactly as printed;
+:data:`rotor._paper.TABLE3_PRINTED_ROWS` holds the rows exactly as printed;
 :func:`split_rows` recovers the numbers as the unique split in which every column increases
 from row to row (each frame index must be later than the one above it). The split is
 searched exhaustively, so the function also proves the split is unique.
@@ -20,7 +20,7 @@ from functools import lru_cache
 import numpy as np
 
 from contact.errors import ContactInputError
-from rotor.paper import TABLE3_COLUMNS, TABLE3_PRINTED_ROWS
+from rotor._paper import TABLE3_COLUMNS, TABLE3_PRINTED_ROWS
 
 __all__ = ["split_rows", "table3", "table3_tsv"]
 

@@ -1,6 +1,6 @@
 """Simulator of the paper's rotor experiment, with hidden effects, producing a Table-3 column.
 
-The rotor (mass properties from :mod:`rotor.mechanics`) rolls without sliding on a
+The rotor (mass properties from :mod:`rotor._mechanics`) rolls without sliding on a
 plate whose equivalent slope may change along the path, braked by a constant rolling-friction
 torque and optionally by a torque growing with speed, with its centre of mass optionally off
 the axis.
@@ -15,7 +15,7 @@ where ``x = R (phi - phi0)`` is the distance rolled, ``S(x) = S0 - kappa x`` the
 slope ``sin(alpha) sin(beta)`` (``kappa``: slope change per metre, e.g. a sagging plate),
 ``C = sqrt(1 - S^2)``, ``M_r = s_r (N1**lam + N2**lam)`` (Eq. 47) and ``c`` a viscous
 rolling-resistance coefficient. It is integrated with ``scipy.integrate.solve_ivp`` (DOP853,
-mark crossings as events), independently of the quadrature :mod:`rotor.forward` uses.
+mark crossings as events), independently of the quadrature :mod:`rotor._forward` uses.
 
 Frame indices are made as Table 3 was: the camera runs at ``fps``; frame ``n`` shows the
 rotor at time ``n/fps`` after the recording started; the reader notes, for each mark, the
@@ -33,14 +33,14 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from contact.errors import ContactInputError
-from rotor.arrays import readonly
-from rotor.mechanics import (
+from rotor._arrays import readonly
+from rotor._mechanics import (
     G_STANDARD,
     MassProperties,
     mass_properties,
     rolling_torque,
 )
-from rotor.paper import FPS, MARK_STEP
+from rotor._paper import FPS, MARK_STEP
 
 __all__ = [
     "EFFECTS",
@@ -448,8 +448,8 @@ def effect_signature(run: SimulatedRun) -> dict[str, float]:
     quantisation (0.29 frame rms) cannot be recovered by any analysis of the frame indices:
     a free start absorbs much of an unbalance, for instance, at some phases.
     """
-    from rotor.fitting import fit_model
-    from rotor.noise import Noise, quantisation_sigma
+    from rotor._fitting import fit_model
+    from rotor._noise import Noise, quantisation_sigma
 
     h = run.hidden
     t = np.asarray(run.true_times) - float(run.true_times[0])

@@ -4,11 +4,11 @@ misread rules (the joint model's and the per-test analysis') side by side.
 
 The numbers (minuend - subtrahend, rad/s²) come from two analyses of the same table:
 
-* the per-test analysis (:func:`rotor.groups.analyse_table`): the paper's parabola
+* the per-test analysis (:func:`rotor._groups.analyse_table`): the paper's parabola
   through each group's mean times (``2 c2``, Fig. 21), a constant acceleration from a release
   per test (``const``), and the study model at the release (the acceleration of a model
   whose acceleration changes along the track, read at its start);
-* the joint model (:mod:`rotor.joint`): a constant offset between the groups on one
+* the joint model (:mod:`rotor._joint`): a constant offset between the groups on one
   shared track, what the paper's constant-offset reading of Eqs. 47-48 predicts.
 
 A model "fits" when the data do not reject it: for a per-test model, when in every test the
@@ -27,9 +27,9 @@ from typing import Any
 
 import numpy as np
 
-from rotor.family import is_nested
-from rotor.joint import fit_table, group_offset, shared_track_f
-from rotor.selection import BIC_MARGIN
+from rotor._family import is_nested
+from rotor._joint import fit_table, group_offset, shared_track_f
+from rotor._selection import BIC_MARGIN
 
 __all__ = ["Difference", "MisreadRules", "differences_table", "misread_rules"]
 
@@ -96,8 +96,8 @@ def _per_test_fit(analysis: Any, model: str) -> tuple[bool, str]:
 
 
 def differences_table(verdict: Any, analysis: Any) -> tuple[Difference, ...]:
-    """The four differences of a table: ``verdict`` (:class:`rotor.verdict.
-    RotorVerdict`) and ``analysis`` (:class:`rotor.groups.LawOfMotionAnalysis`) of
+    """The four differences of a table: ``verdict`` (:class:`rotor._verdict.
+    RotorVerdict`) and ``analysis`` (:class:`rotor._groups.LawOfMotionAnalysis`) of
     the same table."""
     o = verdict.offset
     a, b = o.minuend, o.subtrahend

@@ -12,17 +12,17 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from contact.errors import ContactInputError
-from rotor.alignment import ResidualAlignment, residual_alignment
-from rotor.analysis import TestReport, analyse_test
-from rotor.arrays import readonly
-from rotor.family import EXTENSION, MODELS, SELECTABLE
-from rotor.forward import PARAM_NAMES, batch_crossing_times, crossing_times
-from rotor.misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
-from rotor.noise import quantisation_sigma
-from rotor.paper import FPS, MARK_STEP
-from rotor.parabola import paper_parabola
-from rotor.selection import BIC_MARGIN, select_by_bic
-from rotor.starts import from_rest_estimate, inside_bounds, parameter_bounds
+from rotor._alignment import ResidualAlignment, residual_alignment
+from rotor._analysis import TestReport, analyse_test
+from rotor._arrays import readonly
+from rotor._family import EXTENSION, MODELS, SELECTABLE
+from rotor._forward import PARAM_NAMES, batch_crossing_times, crossing_times
+from rotor._misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
+from rotor._noise import quantisation_sigma
+from rotor._paper import FPS, MARK_STEP
+from rotor._parabola import paper_parabola
+from rotor._selection import BIC_MARGIN, select_by_bic
+from rotor._starts import from_rest_estimate, inside_bounds, parameter_bounds
 
 __all__ = [
     "GroupComparison",
@@ -58,7 +58,7 @@ class GroupReport:
         Leave-one-test-out prediction rms (s) per model (:func:`leave_one_test_out`).
     residual_alignment : ResidualAlignment or None
         Whether a leftover wave lines up across the tests at the same track position or
-        rotor angle (:func:`rotor.alignment.residual_alignment`).
+        rotor angle (:func:`rotor._alignment.residual_alignment`).
     """
 
     name: str
@@ -214,7 +214,7 @@ def analyse_table(
     k : sequence of int, optional
         Row numbers (default 1, 2, ...).
     fps, step, margin, cv, threshold, min_frames
-        As for :func:`rotor.analysis.analyse_test`.
+        As for :func:`rotor._analysis.analyse_test`.
     progress : callable, optional
         ``progress(name, i, n)``, called before each test.
 

@@ -13,12 +13,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.arrays import readonly
-from rotor.family import MODELS, ModelFit, ancestors
-from rotor.fitting import fit_all_models, fit_model, leverages_at
-from rotor.forward import model_speeds
-from rotor.noise import Noise, estimate_noise, quantisation_sigma
-from rotor.paper import FPS, MARK_STEP
+from rotor._arrays import readonly
+from rotor._family import MODELS, ModelFit, ancestors
+from rotor._fitting import fit_all_models, fit_model, leverages_at
+from rotor._forward import model_speeds
+from rotor._noise import Noise, estimate_noise, quantisation_sigma
+from rotor._paper import FPS, MARK_STEP
 
 __all__ = ["MISREAD_MIN_FRAMES", "MISREAD_THRESHOLD", "MisreadSearch", "find_misread_rows",
            "robust_noise"]

@@ -15,15 +15,15 @@ from collections.abc import Sequence
 import numpy as np
 
 from contact.errors import ContactInputError
-from rotor.arrays import readonly
-from rotor.diagnostics import (
+from rotor._arrays import readonly
+from rotor._diagnostics import (
     lag1_autocorrelation,
     minus_two_log_likelihood,
     runs_test_z,
 )
-from rotor.family import ModelFit
-from rotor.noise import Noise, estimate_noise, quantisation_sigma
-from rotor.paper import FPS, MARK_STEP
+from rotor._family import ModelFit
+from rotor._noise import Noise, estimate_noise, quantisation_sigma
+from rotor._paper import FPS, MARK_STEP
 
 __all__ = ["fit_parabola", "paper_parabola"]
 

@@ -1,6 +1,6 @@
 """The last resort beyond the family: an unexplained smooth deviation of the acceleration.
 
-When neither the core family nor the plate wave (:mod:`rotor.extension`) leaves an
+When neither the core family nor the plate wave (:mod:`rotor._extension`) leaves an
 adequate residual, the selected model's acceleration is given a free-form smooth addition
 
     da(phi) = sum_{j=2}^{K+1} c_j P_j(x),   x = 2 (phi - phi_first) / span - 1,
@@ -8,11 +8,11 @@ adequate residual, the selected model's acceleration is given a free-form smooth
 Legendre polynomials of the rotation angle over the marks (degrees 0 and 1 are left out:
 they are a change of ``eps0`` and a position decay, members of the family). The addition is
 linearised about the fit (first-order response of the crossing times, as the residual
-periodogram of :mod:`rotor.adequacy`, with the model's own parameters free to move
+periodogram of :mod:`rotor._adequacy`, with the model's own parameters free to move
 with it), so a candidate costs one least-squares solve. Its BIC is the model's BIC less the
 drop of the chi-square plus ``K ln n``; the number of modes ``K`` is the BIC choice, and the
 smooth term is selected only when it beats the model by more than the selection margin (the
-nested rule of :func:`rotor.selection.select_model`). It is tried only on columns the
+nested rule of :func:`rotor._selection.select_model`). It is tried only on columns the
 calibrated adequacy check rejects, so a clean column is given one at most at the check's
 false-alarm rate. What it reports is no effect with a cause: an "unexplained smooth
 deviation" of a stated amplitude (largest ``|da|`` over the marks, rad/s²).
@@ -31,10 +31,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.adequacy import _base_jacobian, _cumulative
-from rotor.diagnostics import lag1_autocorrelation, runs_test_z
-from rotor.family import ModelFit
-from rotor.forward import PARAM_NAMES, crossing_times
+from rotor._adequacy import _base_jacobian, _cumulative
+from rotor._diagnostics import lag1_autocorrelation, runs_test_z
+from rotor._family import ModelFit
+from rotor._forward import PARAM_NAMES, crossing_times
 
 __all__ = ["MAX_MODES", "SmoothDeviation", "fit_smooth_deviation", "smooth_response"]
 

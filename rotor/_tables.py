@@ -1,4 +1,4 @@
-"""Whole tables of launches simulated by the ODE integrator (:mod:`rotor.simulator`):
+"""Whole tables of launches simulated by the ODE integrator (:mod:`rotor._simulator`):
 the calibration and the tests of the joint model's verdict.
 
 A table is two groups of launches (the paper's asymmetric collar, ``as``, against the end of
@@ -21,15 +21,15 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contact.errors import ContactInputError
-from rotor.mechanics import G_STANDARD, MassProperties, mass_properties
-from rotor.paper import FPS, MARK_STEP
-from rotor.simulator import HiddenEffects, simulate_rotor
+from rotor._mechanics import G_STANDARD, MassProperties, mass_properties
+from rotor._paper import FPS, MARK_STEP
+from rotor._simulator import HiddenEffects, simulate_rotor
 
 __all__ = ["LANE_PRIOR", "LanePrior", "PlateTrack", "Scenario", "draw_lanes", "draw_scenario",
            "group_loads", "lane_track", "loaded_rotor", "simulate_table"]
 
 GROUPS = {"as": "end", "s": "symmetric"}
-"""The paper's two collar positions, as :func:`~rotor.mechanics.mass_properties`
+"""The paper's two collar positions, as :func:`~rotor._mechanics.mass_properties`
 names them."""
 
 

@@ -1,16 +1,16 @@
 """Beyond the closed family: the plate-wave models, tried when the family's choice does not
 explain a column, and the second look at misread rows that a smooth wave may explain.
 
-The family of :mod:`rotor.family` is closed. When the adequacy check
-(:mod:`rotor.adequacy`) rejects the in-family choice, the plate-wave models
-(:data:`rotor.family.EXTENSION`: the chosen model's decay with a wave of free period)
+The family of :mod:`rotor._family` is closed. When the adequacy check
+(:mod:`rotor._adequacy`) rejects the in-family choice, the plate-wave models
+(:data:`rotor._family.EXTENSION`: the chosen model's decay with a wave of free period)
 are fitted from the residual periodogram's two highest peaks and the selection is made again
 under the same rule (BIC with the nested margin; each wave model has its unbalance
 counterpart as a parent). Because the wave models are only tried on columns the check
 rejects, a clean column is given a wave at most at the check's calibrated false-alarm rate.
 
 Misread rows are kept only where no smooth model explains them: when rows are flagged, a
-linearised wave on every row (:func:`rotor.adequacy.smooth_deletion_z`) looks for a
+linearised wave on every row (:func:`rotor._adequacy.smooth_deletion_z`) looks for a
 period under which a flagged row is within the misread threshold; if one is found, the wave
 model is fitted and the misread search's backward step, under that model, puts back the rows
 it predicts. The second look never flags a row the in-family search let stand (a smooth
@@ -23,17 +23,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.adequacy import (
+from rotor._adequacy import (
     AdequacyCheck,
     scan_peaks,
     smooth_deletion_z,
     wave_scan,
 )
-from rotor.family import EXTENSION, MODELS, ModelFit
-from rotor.fitting import fit_all_models
-from rotor.forward import PARAM_NAMES, crossing_times
-from rotor.misreads import MisreadSearch, find_misread_rows
-from rotor.selection import select_model
+from rotor._family import EXTENSION, MODELS, ModelFit
+from rotor._fitting import fit_all_models
+from rotor._forward import PARAM_NAMES, crossing_times
+from rotor._misreads import MisreadSearch, find_misread_rows
+from rotor._selection import select_model
 
 __all__ = ["GRID_STARTS", "RUN_STARTS", "Extended", "extend_family", "start_indices",
            "wave_models_for"]

@@ -1,6 +1,6 @@
 """The forward model of the rotor's law of motion: the times at which the marks cross.
 
-The equation of motion of the whole model family (:mod:`rotor.family`),
+The equation of motion of the whole model family (:mod:`rotor._family`),
 
     phi'' = eps0 - eta (phi - phi0) - gamma phi' + a_c sin(phi) + a_s cos(phi)
             + wave_c sin(k phi) + wave_s cos(k phi),      k = 2 pi / wave_period

@@ -4,13 +4,13 @@ group are?
 On a real plate each launch rolls on a lane of its own (a rotor released a few mm aside sees
 the plate's wave shifted), so launches differ among themselves and one shared track misfits
 them all even when the groups do not differ. The shared-track test
-(:func:`rotor.joint.shared_track_f`) reads that as the groups differing. The lane
+(:func:`rotor._joint.shared_track_f`) reads that as the groups differing. The lane
 test compares the groups' tracks with the launches' own: the F statistic
-:func:`rotor.joint.lane_f` on ``q_g`` (the track's degree, two groups) and ``q_l``
+:func:`rotor._joint.lane_f` on ``q_g`` (the track's degree, two groups) and ``q_l``
 (``(launches - groups)`` degrees) degrees of freedom, its nominal p under F(q_g, q_l), and
 that p's critical value calibrated by simulation with lanes in the null
 (``benchmarks/rotor_lane_calibration.py``, the prior
-:data:`rotor.tables.LANE_PRIOR`, ``lane_calibration.json``).
+:data:`rotor._tables.LANE_PRIOR`, ``lane_calibration.json``).
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from pathlib import Path
 
 from scipy.stats import f as f_dist
 
-from rotor.joint import JointFit, TableData, lane_f, launchwise_fit
+from rotor._joint import JointFit, TableData, lane_f, launchwise_fit
 
 __all__ = ["LANE_CALIBRATION_FILE", "LaneTest", "lane_calibration", "lane_p", "lane_test",
            "lane_words"]
@@ -48,7 +48,7 @@ def lane_p(p_nominal: float) -> float:
 class LaneTest:
     """Do the groups' tracks differ more than the launches' within a group do?
 
-    ``f`` (:func:`rotor.joint.lane_f`) on ``q_g``/``q_l`` degrees of freedom, its
+    ``f`` (:func:`rotor._joint.lane_f`) on ``q_g``/``q_l`` degrees of freedom, its
     ``p_nominal`` under F(q_g, q_l) against ``p_critical`` (the 2 % quantile of the nominal p
     over null tables simulated with launch-level lanes, ``lane_calibration.json``), its
     calibrated ``p``; ``launch_f``: the launch-specific tracks' drop of chi² per parameter

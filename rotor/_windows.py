@@ -1,6 +1,6 @@
 """Model-free windowed accelerations: what the frames alone say about the groups' difference.
 
-The joint model's group tracks (:mod:`rotor.joint`) are polynomials of the track
+The joint model's group tracks (:mod:`rotor._joint`) are polynomials of the track
 position; their difference at the release or at the last mark is an end value of a
 polynomial, where it is least constrained. Beside it this module reads the acceleration off
 the frames with no track model: the track is cut into windows of equal length, and in each

@@ -6,7 +6,7 @@
     the paper's general parabola ``phi = c2 t^2 + c1 t + c0`` fitted on the angles;
 ``const``
     constant acceleration from rest at an unknown start time ``t0`` and angle ``phi0``
-    (the start prior: :func:`rotor.starts.parameter_bounds`);
+    (the start prior: :func:`rotor._starts.parameter_bounds`);
 ``position``, ``speed``, ``position+speed``
     decaying acceleration: ``eps0 - eta (phi - phi0)`` (the driving slope changes along the
     plate) and/or ``eps0 - gamma omega`` (resistance growing with speed);
@@ -15,12 +15,12 @@
 ``wave``, ``position+wave``, ``speed+wave`` (the extension, :data:`EXTENSION`)
     a driving slope undulating along the track, ``B sin(2 pi phi / P + chi)`` of free period
     ``P`` (a plate that is not plane). They are fitted only when the in-family choice does
-    not explain the data (:mod:`rotor.extension`). A period of one turn has the
+    not explain the data (:mod:`rotor._extension`). A period of one turn has the
     unbalance's form: the two cannot be told apart from one launch, and each wave model has
     its unbalance counterpart as a parent, so it must beat it by the selection margin. After
     a decaying choice only the decay with a wave is fitted (``wave`` alone is then not tried).
 
-Every model but ``parabola`` is the equation of :mod:`rotor.forward` with some
+Every model but ``parabola`` is the equation of :mod:`rotor._forward` with some
 parameters fixed at zero; the models are nested through their ``parents``.
 """
 
@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotor.noise import Noise
+from rotor._noise import Noise
 
 __all__ = [
     "CORE",
