@@ -36,8 +36,7 @@ may. One private module per concept:
 ``_rig``         the rig (rotor, camera, groups) that turns an offset into a torque
 ``_permutation`` the design's exact permutation tests over the launches' group labels
 ``_reconcile``   the four differences between the groups, and the two misread rules
-``_lanes``       the lane test: the groups' tracks against the launches' own
-                 (``lane_calibration.json``)
+``_lanes``       the lane test: the groups' tracks against the launches' (``lane_calibration.json``)
 ``_windows``     model-free windowed accelerations from the frames alone
 ``_tables``      whole tables simulated from a stated prior
 ``_sensitivity`` every assumption's weight on the verdict

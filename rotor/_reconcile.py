@@ -96,9 +96,8 @@ def _per_test_fit(analysis: Any, model: str) -> tuple[bool, str]:
 
 
 def differences_table(verdict: Any, analysis: Any) -> tuple[Difference, ...]:
-    """The four differences of a table: ``verdict`` (:class:`rotor._verdict.
-    RotorVerdict`) and ``analysis`` (:class:`rotor._groups.LawOfMotionAnalysis`) of
-    the same table."""
+    """The four differences of a table: ``verdict`` (:class:`rotor.RotorVerdict`) and
+    ``analysis`` (:class:`rotor.LawOfMotionAnalysis`) of the same table."""
     o = verdict.offset
     a, b = o.minuend, o.subtrahend
     nan = math.nan
