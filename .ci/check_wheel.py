@@ -1,8 +1,8 @@
-"""Check a built wheel holds every module and data file of the three packages.
+"""Check a built wheel holds every module and data file of the four packages.
 
 Usage: python3 .ci/check_wheel.py DIST/surfmet-*.whl
 
-Every file git tracks under surfmet/, contact/ and profiles/ (modules, the bundled scans,
+Every file git tracks under surfmet/, contact/, profiles/ and rotor/ (modules, the bundled scans,
 the rotor's calibration JSON, py.typed) must be in the wheel: a subpackage without
 ``__init__.py`` or a data file left out of ``[tool.setuptools.package-data]`` is named here,
 before the smoke run from the installed wheel would trip on it.
@@ -16,7 +16,7 @@ import zipfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-PACKAGES = ("surfmet", "contact", "profiles")
+PACKAGES = ("surfmet", "contact", "profiles", "rotor")
 
 
 def missing_from_wheel(wheel: str | Path) -> list[str]:

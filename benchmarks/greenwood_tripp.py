@@ -14,9 +14,8 @@ from importlib import resources
 from _timing import min_time_and_result
 
 from contact import composite_modulus, hertz_sphere, material
-from contact.rotor.mechanics import paper_ball_loads
-from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD
 from contact.roughcontact.greenwood_tripp import greenwood_tripp
+from rotor import BALL_RADIUS, HERTZ_CHECK_LOAD, paper_ball_loads
 
 
 def main() -> None:

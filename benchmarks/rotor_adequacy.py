@@ -8,8 +8,8 @@ declared prior of the effect calibration: the cells fps (30, 240, 1000) x mark s
 360 deg), 10-60 rows, eps0 0.5-5 rad/s².
 
 ``clean`` phase: the adequacy statistic of each clean column's in-family choice (the first
-stage of :func:`contact.rotor.analysis.analyse_test`), written sorted as package data
-(``contact/rotor/adequacy_calibration.json``); the calibrated p-value of a statistic is the
+stage of :func:`rotor.analyse_test`), written sorted as package data
+(``rotor/adequacy_calibration.json``); the calibrated p-value of a statistic is the
 share of these at or above it.
 
 ``power`` phase (after ``clean``): columns with a plate wave ``B sin(2 pi x / L + chi)`` in
@@ -44,8 +44,10 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 from rotor_calibration import clean_columns, mark_frames  # noqa: E402
 
 from contact.errors import ContactInputError  # noqa: E402
-from contact.rotor.adequacy import check_adequacy  # noqa: E402
-from contact.rotor.analysis import analyse_test  # noqa: E402
+from rotor import (  # noqa: E402
+    analyse_test,
+    check_adequacy,
+)
 
 PER_CELL = 20
 PER_SIZE = 6
@@ -55,7 +57,7 @@ CONDITIONS = ((120.0, 90.0, 25), (240.0, 45.0, 40))
 NOTES = """
 ## Notes
 
-- Method (`contact/rotor/adequacy.py`): three order statistics of the chosen model's
+- Method (`rotor/_adequacy.py`): three order statistics of the chosen model's
   standardised residuals in angle order (Wald-Wolfowitz runs z, lag-1 autocorrelation, and
   a periodogram of the residual acceleration against the rotation angle: the share of the
   residuals a wave B sin(2 pi phi / P + chi) added to the model explains, to first order,
@@ -81,10 +83,10 @@ NOTES = """
   from 0.05 eps0 at 45 deg marks (5 of 6 at 0.1). A one-turn wave has the form of an
   unbalance; the output says so when the period is within one resolution (P^2/span) of a
   turn.
-- The smooth term (`contact/rotor/smooth.py`) is the last resort where the chosen model,
+- The smooth term (`rotor/_smooth.py`) is the last resort where the chosen model,
   core or plate wave, is still inadequate (docs/rotor_adequacy.md, hand-written part).
 """
-CAL_FILE = ROOT / "contact" / "rotor" / "adequacy_calibration.json"
+CAL_FILE = ROOT / "rotor" / "adequacy_calibration.json"
 DOC = ROOT / "docs" / "rotor_adequacy.md"
 
 

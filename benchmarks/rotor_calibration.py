@@ -17,7 +17,7 @@ Measured:
   missed, the eps0 bias and the coverage of its standard error;
 * the false-alarm probability of the evidence ``dBIC = BIC(best no-effect model) - BIC(best
   effect model)`` on those clean columns, written as package data
-  (``contact/rotor/effect_calibration.json``) that the analysis uses to qualify its verdicts;
+  (``rotor/effect_calibration.json``) that the analysis uses to qualify its verdicts;
 * detection power against effect size (fraction of eps0 lost over the run by position or
   speed decay; unbalance amplitude over eps0, random phase) in a few conditions, and the
   smallest size found 90 % of the time;
@@ -43,7 +43,7 @@ from scipy.integrate import solve_ivp
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from contact.rotor.analysis import analyse_test  # noqa: E402
+from rotor import analyse_test  # noqa: E402
 
 FPS_CELLS = (30.0, 240.0, 1000.0)
 STEP_CELLS = (15.0, 90.0, 360.0)
@@ -191,7 +191,7 @@ NOTES = ["## Notes", "",
          "1 % or the dBIC to the next simpler model is below 10.",
          "- Adequacy (issue 17): whether the chosen model explains a column is calibrated "
          "separately by `benchmarks/rotor_adequacy.py` (`docs/rotor_adequacy.md`, "
-         "`contact/rotor/adequacy_calibration.json`). Reduced sizes there too: 20 clean "
+         "`rotor/adequacy_calibration.json`). Reduced sizes there too: 20 clean "
          "columns per cell (173 usable of 180 draws; 7 skipped because their frames repeat at "
          "30 fps with 15 deg marks), so the p-value floor is 1/174 = 0.0057 and the 2 % "
          "threshold rests on the 3-4 largest clean statistics; power from 6 plate-wave columns "
@@ -234,7 +234,7 @@ def main() -> None:
     t_all = time.perf_counter() - t_start
     t_cli = cli_time()
     cal = false_alarm_table(clean)
-    (ROOT / "contact" / "rotor" / "effect_calibration.json").write_text(
+    (ROOT / "rotor" / "effect_calibration.json").write_text(
         json.dumps(cal, indent=1) + "\n")
     report(clean, power, cal, a, t_clean, t_all, t_cli)
 
@@ -277,7 +277,7 @@ def report(clean, power, cal, a, t_clean, t_all, t_cli):
     out += ["", "## False-alarm probability against the evidence", "",
             "dBIC = BIC(best no-effect model) - BIC(best effect model) on the clean columns; "
             "probability (k + 1)/(n + 1) of a clean column reaching it. Written to "
-            "`contact/rotor/effect_calibration.json`.", "", "| dBIC >= | false-alarm probability |",
+            "`rotor/effect_calibration.json`.", "", "| dBIC >= | false-alarm probability |",
             "|---|---|"]
     out += [f"| {d:g} | {p:.4f} |" for d, p in zip(cal["delta_bic"], cal["false_alarm"])]
     out += ["", "## Detection power", "",

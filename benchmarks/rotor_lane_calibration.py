@@ -1,9 +1,9 @@
-"""Calibrate the rotor verdict's lane test (:func:`contact.rotor.joint.lane_f`) by simulation
+"""Calibrate the rotor verdict's lane test (:func:`rotor.lane_f`) by simulation
 with launch-level lanes in the null.
 
 Tables of two groups of three launches are simulated by the ODE integrator
-(:mod:`contact.rotor.tables`); in the ``lane*`` kinds every launch rolls on a lane of its own
-(the stated prior :data:`contact.rotor.tables.LANE_PRIOR`: the plate's wave shifted per
+(:mod:`rotor._tables`); in the ``lane*`` kinds every launch rolls on a lane of its own
+(the stated prior :data:`rotor.LANE_PRIOR`: the plate's wave shifted per
 launch by a phase uniform in +-(0.3 to pi) rad, its amplitude scaled by 1 +- (0 to 0.5),
 its trend changed by a normal (0 to 0.01) rad/s² per rad, on a wave of 0.1-0.4 rad/s²):
 
@@ -21,7 +21,7 @@ track explains the launches) and the lane statistic's nominal p (under F(q_g, q_
 depends on the track's degree) is below its calibrated critical p; else
 ``difference`` when ``|offset| / stderr > t(0.99, 4)``; else ``no_difference``.
 
-Writes ``contact/rotor/lane_calibration.json`` (``--out``):
+Writes ``rotor/lane_calibration.json`` (``--out``):
 
     python benchmarks/rotor_lane_calibration.py --workers 2
 """
@@ -39,16 +39,19 @@ import numpy as np
 from scipy.stats import f as f_dist
 from scipy.stats import t as student_t
 
-from contact.rotor.joint import (
+from rotor import (
+    FPS,
+    LANE_PRIOR,
+    MARK_STEP,
+    draw_scenario,
     fit_table,
     group_offset,
     lane_f,
     launchwise_fit,
     prepare_table,
     shared_track_f,
+    simulate_table,
 )
-from contact.rotor.paper import FPS, MARK_STEP
-from contact.rotor.tables import LANE_PRIOR, draw_scenario, simulate_table
 
 GROUPS = {"as": ["as1", "as2", "as3"], "s": ["s1", "s2", "s3"]}
 KINDS = {"null0": 100, "lane0": 120, "offset": 60, "laneoff": 120, "track": 40,
@@ -76,7 +79,7 @@ def one(args: tuple[str, int]) -> dict:
 
 
 F_CRIT = 3.745485512870677
-"""The shared-track test's critical F (``contact/rotor/verdict_calibration.json``)."""
+"""The shared-track test's critical F (``rotor/verdict_calibration.json``)."""
 
 
 def nominal_p(r: dict) -> float:
@@ -144,8 +147,8 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--scale", type=float, default=1.0, help="fraction of the tables")
-    ap.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "contact" /
-                                         "rotor" / "lane_calibration.json"))
+    ap.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "rotor"
+                                         / "lane_calibration.json"))
     ap.add_argument("--extend", metavar="JSON",
                     help="keep a previous run's rows and simulate only the tables it lacks")
     ap.add_argument("--resummarise", metavar="JSON",
@@ -173,12 +176,12 @@ def main() -> None:
     out = {
         "what": "calibration of the rotor verdict's lane test by simulation, launch-level "
                 "lanes in the null",
-        "prior": "contact.rotor.tables.draw_scenario (the paper's rotor; acceleration "
+        "prior": "rotor.draw_scenario (the paper's rotor; acceleration "
                  "U(1.5, 2.8) rad/s²; slope U(0.6, 1.0) deg; trend eta U(-0.02, 0.06) rad/s² "
                  "per rad; one wave of period U(1.5, 6) rev, any phase, amplitude U(0, 0.4) "
                  "rad/s² without lanes; launch spread U(0.01, 0.06) rad/s²; reading scatter "
                  "U(0.02, 0.08) rad; a misread row in half the launches) with lanes from "
-                 "contact.rotor.tables.LANE_PRIOR: per table a phase half-width U(0.3, pi) "
+                 "rotor.LANE_PRIOR: per table a phase half-width U(0.3, pi) "
                  "rad, an amplitude half-width U(0, 0.5), a trend sd U(0, 0.01) rad/s² per "
                  "rad, on a wave of amplitude U(0.1, 0.4) rad/s²; per launch its lane's wave "
                  "shifted, scaled and its trend changed by draws within them",

@@ -2,7 +2,7 @@
 240 fps, 45 deg marks, 40 rows, at amplitudes above those of ``benchmarks/rotor_adequacy.py``
 (issue 17): the 90 % threshold of that band was not established there.
 
-Columns from :func:`contact.rotor.simulator.simulate_random_run` (the generator the hidden-
+Columns from :func:`rotor.simulate_random_run` (the generator the hidden-
 effect test of ``tests/test_rotor_adequacy.py`` draws from), alternately without effect and
 with a decay, no misread rows, the wave amplitude a fixed fraction of eps0 and its period
 uniform in the band. Prints, per amplitude, the columns flagged inadequate or named a wave,
@@ -18,8 +18,7 @@ import math
 import sys
 import time
 
-from contact.rotor.analysis import analyse_test
-from contact.rotor.simulator import simulate_random_run
+from rotor import analyse_test, simulate_random_run
 
 
 def main(argv: list[str]) -> None:

@@ -1,8 +1,8 @@
-"""Calibrate the rotor verdict (:mod:`contact.rotor.verdict`) by simulation.
+"""Calibrate the rotor verdict (:mod:`rotor._verdict`) by simulation.
 
 Tables of two groups of three launches are simulated by the ODE integrator
-(:mod:`contact.rotor.tables`, the stated prior there) and analysed by the joint model
-(:mod:`contact.rotor.joint`):
+(:mod:`rotor._tables`, the stated prior there) and analysed by the joint model
+(:mod:`rotor._joint`):
 
 - shared track, no offset: the null of both tests (false alarms of ``difference``);
 - shared track, offset uniform in +-0.3 rad/s²: the null of the shared-track test and the
@@ -12,7 +12,7 @@ Tables of two groups of three launches are simulated by the ODE integrator
 
 The shared-track test's critical value is the 98 % quantile of its F statistic over the
 null tables of even index; its false-alarm rate is then measured on the odd ones.
-Writes ``contact/rotor/verdict_calibration.json`` (``--out``). About 10 minutes on 2 cores:
+Writes ``rotor/verdict_calibration.json`` (``--out``). About 10 minutes on 2 cores:
 
     python benchmarks/rotor_verdict_calibration.py --workers 2
 """
@@ -29,9 +29,16 @@ from pathlib import Path
 import numpy as np
 from scipy.stats import t as student_t
 
-from contact.rotor.joint import fit_table, group_offset, prepare_table, shared_track_f
-from contact.rotor.paper import FPS, MARK_STEP
-from contact.rotor.tables import draw_scenario, simulate_table
+from rotor import (
+    FPS,
+    MARK_STEP,
+    draw_scenario,
+    fit_table,
+    group_offset,
+    prepare_table,
+    shared_track_f,
+    simulate_table,
+)
 
 GROUPS = {"as": ["as1", "as2", "as3"], "s": ["s1", "s2", "s3"]}
 KINDS = {"null0": 120, "offset": 120, "track": 60, "lam43": 30}
@@ -57,8 +64,8 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--scale", type=float, default=1.0, help="fraction of the tables")
-    ap.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "contact" /
-                                         "rotor" / "verdict_calibration.json"))
+    ap.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "rotor"
+                                         / "verdict_calibration.json"))
     a = ap.parse_args()
     jobs = [(k, i) for k, n in KINDS.items() for i in range(max(int(n * a.scale), 4))]
     t0 = time.time()
@@ -87,8 +94,8 @@ def main() -> None:
             power_offset.append({"abs_offset_rad_s2": [lo, hi], "n": len(sel),
                                  "rate": sum(map(says_difference, sel)) / len(sel)})
     out = {
-        "what": "calibration of the rotor verdict (contact.rotor.verdict) by simulation",
-        "prior": draw_scenario.__doc__.strip().splitlines()[0] + " Prior: contact.rotor.tables "
+        "what": "calibration of the rotor verdict (rotor._verdict) by simulation",
+        "prior": draw_scenario.__doc__.strip().splitlines()[0] + " Prior: rotor._tables "
                  "(paper's rotor; acceleration U(1.5, 2.8) rad/s²; slope U(0.6, 1.0) deg; trend "
                  "eta U(-0.02, 0.06) rad/s² per rad; one wave of amplitude U(0, 0.4) rad/s², "
                  "period U(1.5, 6) rev, any phase; launch spread U(0.01, 0.06) rad/s²; reading "

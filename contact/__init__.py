@@ -1,5 +1,5 @@
 """contact: the contact-mechanics engine (materials, Hertz, FFT boundary elements, rolling
-resistance, the rotor of Alaci et al. 2022).
+resistance). The rotor study of Alaci et al. 2022 is an engine of its own, ``rotor``.
 
 Arrays and SI floats in, arrays and small frozen dataclasses out. Never imports surfmet.
 
@@ -22,7 +22,6 @@ theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hert
 (``contact.exponent``)::
 
     sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
-    analyse_table(columns)                 # rotor law of motion (rotor.groups)
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
@@ -73,15 +72,11 @@ _LAZY = {
     "cylinder_sweep": "contact.rolling",
     "fit_exponent": "contact.exponent",
     "solve_cylinder": "contact.setups.line",
-    "mass_properties": "contact.rotor.mechanics",
-    "angular_acceleration": "contact.rotor.mechanics",
-    "analyse_test": "contact.rotor.analysis",
-    "analyse_table": "contact.rotor.groups",
 }
 
 
 #: The engine's rooms, reachable as ``contact.<room>`` without an explicit import.
-SUBPACKAGES = ("adhesion", "bem", "halfspace", "rotor", "roughcontact", "setups", "tangential",
+SUBPACKAGES = ("adhesion", "bem", "halfspace", "roughcontact", "setups", "tangential",
                "viscoelastic")
 
 __getattr__, __dir__ = attach(__name__, SUBPACKAGES, _LAZY)
@@ -102,9 +97,6 @@ __all__ = [
     "Material",
     "MaterialPair",
     "SphereContact",
-    "analyse_table",
-    "analyse_test",
-    "angular_acceleration",
     "auto_domain",
     "check_sphere",
     "compliance",
@@ -119,7 +111,6 @@ __all__ = [
     "hertz_cylinder",
     "hertz_sphere",
     "hertz_sphere_from_approach",
-    "mass_properties",
     "material",
     "resolve_pair",
     "solve_cylinder",

@@ -100,6 +100,7 @@ FACES = {
     "surfmet.io": "Readers and writers, format detection, the format registry.",
     "contact": "The contact-mechanics engine's public face.",
     "profiles": "The 1D engine's public face.",
+    "rotor": "The rotor study's engine: its public face.",
 }
 #: packages whose modules are each a public face (one page per module)
 FACADES = {
@@ -169,8 +170,8 @@ def write_api_pages(app: object = None) -> None:
         _write_if_changed(api / f"{name}.rst", text)
     index = [
         _title("API reference"),
-        "The public faces of the three packages. ``profiles`` and ``contact`` take arrays and "
-        "SI numbers; ``surfmet`` takes scans and files.",
+        "The public faces of the four packages. ``profiles``, ``contact`` and ``rotor`` take "
+        "arrays, tables and SI numbers; ``surfmet`` takes scans and files.",
         "",
         ".. toctree::",
         "   :maxdepth: 1",

@@ -364,7 +364,7 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
                 options: dict[str, Any] | None = None, hertz: HertzOptions | None = None,
                 rotor: Any = None) -> str:
     """The report page for computed sections (see :func:`scan_section`); ``rotor``: a rotor
-    verdict (:mod:`contact.rotor.verdict`) to put first."""
+    verdict (:mod:`rotor._verdict`) to put first."""
     from surfmet import __version__
 
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")

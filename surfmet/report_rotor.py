@@ -9,9 +9,9 @@ from surfmet.report_html import esc, figure_png, figures_html, kv_table
 
 
 def rotor_html(v: Any) -> str:
-    """HTML of a :class:`contact.rotor.verdict.RotorVerdict`."""
-    from surfmet.mechanics.rotor_verdict import verdict_record
+    """HTML of a :class:`rotor.RotorVerdict`."""
     from surfmet.plots.rotor_verdict import draw_verdict
+    from surfmet.records.rotor_verdict import verdict_record
 
     rec = verdict_record(v)
     o = rec["group_offset"]

@@ -1,4 +1,4 @@
-"""An independent generator of clean rotor columns (not :mod:`contact.rotor.simulator`).
+"""An independent generator of clean rotor columns (not :mod:`rotor._simulator`).
 
 A rotor released from rest with constant angular acceleration ``eps0``, a fraction ``x`` of
 a mark step before the first mark (``x`` uniform in [0, 1)), at a release time uniform

@@ -96,7 +96,7 @@ def test_paper_findings(paper_run):
 
 def test_human_summary(capsys, tmp_path):
     table = tmp_path / "t.tsv"
-    from contact.rotor.simulator import simulate_random_run
+    from rotor._simulator import simulate_random_run
 
     a = simulate_random_run(40, "none", n_misread=0).frames
     b = simulate_random_run(41, "none", n_misread=0).frames
@@ -256,7 +256,7 @@ def test_differences_on_a_clean_table_read_the_constant_acceleration_as_fitting(
                                                                                 capsys):
     """Simulated launches at constant acceleration (no effect): the constant-acceleration
     rows fit, and the study model (const) is not listed twice."""
-    from contact.rotor.simulator import simulate_random_run
+    from rotor._simulator import simulate_random_run
 
     fr = [simulate_random_run(40 + i, "none", n_misread=0).frames for i in range(5)]
     rows = ["k\tx1\tx2\ty1\ty2\ty3"] + ["\t".join([str(k)] + [str(int(f[k - 1])) for f in fr])

@@ -210,7 +210,8 @@ def test_the_verdict_comes_first_and_equals_the_rotor_commands(demo):
     """The paper's question is answered first, after the story's own header (issue 34
     item 16: the verdict came before it), with the numbers of `surfmet rotor`."""
     from surfmet.demo.story import TITLE
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.records.rotor_verdict import verdict_record
 
     got = demo["summary"]["verdict"]
     want = json.loads(json.dumps(verdict_record(paper_verdict())))
@@ -290,7 +291,7 @@ def test_quick_says_what_it_leaves_out_and_prints_only_the_full_runs_numbers(dem
     per-test law-of-motion models are most of the run and --quick left them in. It leaves
     them out now and says so; what it prints is computed as in the full run (the rolling
     sweep has the full run's 5 loads; the parabolas are analyse_table's)."""
-    from contact.rotor.paper import PARABOLAS
+    from rotor._paper import PARABOLAS
 
     s = demo["summary"]
     assert "tests" not in s["rotor"] and "comparisons" not in s["rotor"]

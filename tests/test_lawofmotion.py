@@ -10,14 +10,14 @@ import pytest
 from scipy.optimize import brentq
 
 from contact.errors import ContactInputError
-from contact.rotor.analysis import analyse_test
-from contact.rotor.family import MODELS
-from contact.rotor.fitting import fit_all_models, fit_model, loo_exact
-from contact.rotor.forward import crossing_times
-from contact.rotor.frames import table3
-from contact.rotor.noise import Noise, quantisation_sigma
-from contact.rotor.parabola import paper_parabola
-from contact.rotor.selection import select_model
+from rotor._analysis import analyse_test
+from rotor._family import MODELS
+from rotor._fitting import fit_all_models, fit_model, loo_exact
+from rotor._forward import crossing_times
+from rotor._frames import table3
+from rotor._noise import Noise, quantisation_sigma
+from rotor._parabola import paper_parabola
+from rotor._selection import select_model
 
 PHI = np.arange(25) * math.pi / 2
 

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import pytest
 
-from contact.rotor.analysis import analyse_test
-from contact.rotor.simulator import simulate_random_run
+from rotor._analysis import analyse_test
+from rotor._simulator import simulate_random_run
 
 CLEAN_SEEDS = [40, 41, 42]
 HIDDEN = [(0, None), (1, None), (2, None), (3, "decaying+unbalance"), (4, "unbalance"),

@@ -47,6 +47,6 @@ def test_classifiers_as_the_anchors_have_them():
 
 def test_type_markers_ship_in_every_package():
     data = _project()["tool"]["setuptools"]["package-data"]
-    for package in ("surfmet", "contact", "profiles"):
+    for package in ("surfmet", "contact", "profiles", "rotor"):
         assert (ROOT / package / "py.typed").is_file()
         assert "py.typed" in data[package]

@@ -92,9 +92,9 @@ def test_wheel_check_names_a_missing_data_file(tmp_path):
     tracked = subprocess.run(["git", "ls-files", *check.PACKAGES], cwd=ROOT, check=True,
                              capture_output=True, text=True).stdout.split()
     assert "surfmet/data/paper_plate.x3p" in tracked
-    assert "contact/rotor/verdict_calibration.json" in tracked
+    assert "rotor/verdict_calibration.json" in tracked
     wheel = tmp_path / "surfmet-0-py3-none-any.whl"
-    left_out = {"surfmet/data/paper_plate.x3p", "contact/rotor/verdict_calibration.json"}
+    left_out = {"surfmet/data/paper_plate.x3p", "rotor/verdict_calibration.json"}
     with zipfile.ZipFile(wheel, "w") as z:
         for name in tracked:
             if name not in left_out:

@@ -1,4 +1,4 @@
-"""The paper's facts have one home, :mod:`contact.rotor.paper` (DEVELOPERS.md: one home per
+"""The paper's facts have one home, :mod:`rotor._paper` (DEVELOPERS.md: one home per
 fact). Checked against the independent transcription in
 ../shared/data/paper_2022/paper_values.json, and by looking for the printed numbers anywhere
 else in the package's source.
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from contact.rotor import paper
+from rotor import _paper as paper
 
 ROOT = Path(__file__).resolve().parents[1]
 SURFACES = {"plate": "aluminium_plate", "ball": "steel_ball"}
@@ -46,9 +46,9 @@ def test_demo_compares_with_the_means_of_table2(table2):
 def test_table2_numbers_live_only_in_paper_py():
     # numbers printed in Table 2 that no other fact shares
     printed = ("1.776", "16.256", "9.277", "2.165", "0.209", "3.889")
-    home = ROOT / "contact" / "rotor" / "paper.py"
+    home = ROOT / "rotor" / "_paper.py"
     found = []
-    for folder in ("contact", "surfmet", "profiles"):
+    for folder in ("contact", "surfmet", "profiles", "rotor"):
         for src in (ROOT / folder).rglob("*.py"):
             if src == home:
                 continue

@@ -10,12 +10,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# Walk every package of the three roots, star-import each in its own namespace and report
+# Walk every package of the four roots, star-import each in its own namespace and report
 # what fails; one interpreter for all of them keeps the test fast.
 _STAR = r"""
 import importlib, json, pkgutil
 failures, seen = {}, []
-for root in ("surfmet", "contact", "profiles"):
+for root in ("surfmet", "contact", "profiles", "rotor"):
     names = [root] + [m.name for m in pkgutil.walk_packages(
         importlib.import_module(root).__path__, root + ".") if m.ispkg]
     for name in names:
@@ -49,7 +49,7 @@ def test_star_import_of_every_package_is_clean():
     result = _run(_STAR)
     # contact raised AttributeError on 'SolverStats' (exported, no longer there)
     assert result["failures"] == {}
-    assert {"surfmet", "surfmet.io", "surfmet.mechanics", "contact", "contact.rotor",
+    assert {"surfmet", "surfmet.io", "surfmet.mechanics", "contact", "rotor",
             "contact.halfspace", "profiles"} <= set(result["seen"])
 
 
@@ -61,14 +61,14 @@ before = sorted(m for m in heavy if m in sys.modules)
 # the rooms are reachable without an explicit import, and load only when named
 areal = surfmet.areal.areal_parameters.__module__
 hertz = surfmet.mechanics.hertz_check.hertz_check.__name__
-rotor = type(__import__("contact").rotor).__name__
+room = type(__import__("contact").roughcontact).__name__
 try:
     surfmet.no_such_name
     unknown = "resolved"
 except AttributeError as exc:
     unknown = str(exc)
 print(json.dumps({"unknown": unknown, "before": before, "areal": areal, "hertz": hertz,
-                  "rotor": rotor, "dir": "mechanics" in dir(surfmet)}))
+                  "room": room, "dir": "mechanics" in dir(surfmet)}))
 """
 
 
@@ -77,7 +77,7 @@ def test_import_surfmet_stays_light_and_rooms_load_on_first_use():
     assert result["before"] == []
     assert result["areal"] == "surfmet.areal.parameters"
     assert result["hertz"] == "hertz_check"
-    assert result["rotor"] == "module"
+    assert result["room"] == "module"
     assert result["dir"] is True
     assert "no_such_name" in result["unknown"]
 

@@ -32,7 +32,7 @@ def span(values) -> tuple[float, float]:
 @pytest.fixture(scope="module")
 def checks():
     """hertz_check of the bundled pair at the paper's 10 N and at the rotor's ball loads."""
-    from contact.rotor.mechanics import paper_ball_loads
+    from rotor._mechanics import paper_ball_loads
     from surfmet.data import path
     from surfmet.mechanics.hertz_check import hertz_check
 
@@ -194,7 +194,7 @@ def test_rotor_paragraph_quotes_the_verdict_with_its_design_p_and_arm_bound():
                                                     round(b.lambda_high, 1)]
     assert float(m.group(7)) == round(b.arm_4_3 * 1e3, 2)
     assert float(m.group(8)) == round(math.degrees(b.slope_4_3), 2)
-    from contact.rotor.sensitivity import LARGER_CONTRAST, settling_experiment
+    from rotor._sensitivity import LARGER_CONTRAST, settling_experiment
 
     m = quoted(r"With s_r at the bound, telling 4/3 from 1 would take (\d+) launches per group "
                r"on these loads, and (\d+) with a larger load contrast \((\d\.\d) and "

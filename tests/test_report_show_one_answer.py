@@ -97,7 +97,8 @@ def test_a_failing_scan_gets_its_error_in_the_page(tmp_path, capsys, monkeypatch
 def test_report_json_carries_the_rotor_verdict_it_prints(tmp_path, capsys, realdata):
     """The rotor section's numbers are in --json too, as the verdict record ``surfmet
     rotor paper2022 --json`` emits (main: the page printed them, the JSON had no rotor)."""
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.records.rotor_verdict import verdict_record
     from surfmet.units import jsonable
 
     page = tmp_path / "rotor.html"

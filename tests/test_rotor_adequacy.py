@@ -17,12 +17,12 @@ from hypothesis import strategies as st
 from rotor_clean_columns import clean_column
 from scipy.integrate import solve_ivp
 
-from contact.rotor.adequacy import ALPHA, _wave_response, check_adequacy
-from contact.rotor.alignment import rayleigh_p
-from contact.rotor.analysis import analyse_test
-from contact.rotor.forward import PARAM_NAMES, crossing_times
-from contact.rotor.groups import welch_p_value
-from contact.rotor.simulator import simulate_random_run
+from rotor._adequacy import ALPHA, _wave_response, check_adequacy
+from rotor._alignment import rayleigh_p
+from rotor._analysis import analyse_test
+from rotor._forward import PARAM_NAMES, crossing_times
+from rotor._groups import welch_p_value
+from rotor._simulator import simulate_random_run
 from surfmet.cli import main
 
 PHI = np.arange(25) * math.pi / 2

@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from contact.rotor.arm import arm_bound
-from contact.rotor.permutation import label_splits
-from contact.rotor.rig import paper_rig
+from rotor._arm import arm_bound
+from rotor._permutation import label_splits
+from rotor._rig import paper_rig
 
 G = 9.80665
 # the paper's materials (Section 3.2.1): steel ball on aluminium plate

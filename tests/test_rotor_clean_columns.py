@@ -1,4 +1,4 @@
-"""Clean columns made independently of :mod:`contact.rotor.simulator` (issue 10): released anywhere
+"""Clean columns made independently of :mod:`rotor._simulator` (issue 10): released anywhere
 in the step before the first mark, any frame rate 30-1000 fps, any mark step 15-360 deg,
 10-60 rows. The analysis must name no effect, flag no row and recover eps0.
 
@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from rotor_clean_columns import clean_column, effect_column
 
-from contact.rotor.analysis import analyse_test
+from rotor._analysis import analyse_test
 
 
 @pytest.mark.parametrize("x", [0.5, 0.75, 0.95])

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from scipy.stats import f as f_dist
 
-from contact.rotor.paper import FPS, MARK_STEP
-from contact.rotor.tables import (
+from rotor._paper import FPS, MARK_STEP
+from rotor._tables import (
     LANE_PRIOR,
     Lanes,
     PlateTrack,
@@ -18,7 +18,7 @@ from contact.rotor.tables import (
     lane_track,
     simulate_table,
 )
-from contact.rotor.verdict import judge_table
+from rotor._verdict import judge_table
 
 GROUPS = {"as": ["as1", "as2", "as3"], "s": ["s1", "s2", "s3"]}
 
@@ -40,7 +40,7 @@ def test_a_lane_shifts_and_scales_the_wave_within_its_prior() -> None:
 
 def test_lane_f_is_the_f_ratio_of_the_chi2_drops() -> None:
     """lane_f against its definition, from the three fits' chi² and parameter counts."""
-    from contact.rotor.joint import fit_table, lane_f, launchwise_fit, prepare_table
+    from rotor._joint import fit_table, lane_f, launchwise_fit, prepare_table
 
     rng = np.random.default_rng([7, 1])
     data = prepare_table(simulate_table(draw_scenario(rng, lanes=LANE_PRIOR), rng), GROUPS,
@@ -91,8 +91,9 @@ def test_lanes_with_an_offset_of_random_size_read_as_a_difference() -> None:
 def test_lane_calibration_published_with_held_out_rates() -> None:
     """The calibration: critical p near its nominal 2 % (the F(q_g, q_l) reference), its
     rates measured on held-out tables only, and what the verdict's JSON carries."""
-    from contact.rotor.lanes import lane_calibration
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from rotor._lanes import lane_calibration
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.records.rotor_verdict import verdict_record
 
     cal = lane_calibration()
     lt = cal["lane_test"]

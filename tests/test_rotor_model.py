@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.rotor.inference import infer_rolling_law
-from contact.rotor.mechanics import (
+from rotor._inference import infer_rolling_law
+from rotor._mechanics import (
     G_STANDARD,
     MassProperties,
     RotorGeometry,

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from contact.rotor.groups import analyse_table
-from contact.rotor.simulator import simulate_random_run
+from rotor._groups import analyse_table
+from rotor._simulator import simulate_random_run
 
 
 @pytest.fixture(scope="module")
@@ -59,8 +59,8 @@ def test_law_of_motion_legend_names_every_drawn_series():
     # issue 34 item 16: the legend listed only the paper's parabolas; every series drawn
     # (marks read, misread marks, chosen models, parabolas) has its entry, and every line
     # drawn looks like one of the entries
-    from contact.rotor.groups import analyse_table
-    from contact.rotor.simulator import simulate_random_run
+    from rotor._groups import analyse_table
+    from rotor._simulator import simulate_random_run
     from surfmet.plots._style import close
     from surfmet.plots.rotor import law_of_motion_figure
 

@@ -10,7 +10,7 @@ import math
 import pytest
 from scipy.stats import norm
 
-from contact.rotor.sensitivity import sensitivity_table, settling_experiment, with_contrast
+from rotor._sensitivity import sensitivity_table, settling_experiment, with_contrast
 from surfmet.mechanics.rotor_verdict import paper_verdict
 
 
@@ -31,8 +31,8 @@ def _find(rows, assumption, part):
 def test_frame_rate_scales_every_acceleration_as_its_square(v, rows) -> None:
     """A refit of Table 3 at 118.8 /s gives the offset the table says (times f / fps, so
     eps scales as fps²) and the same code."""
-    from contact.rotor.rig import paper_rig
-    from contact.rotor.verdict import judge_table
+    from rotor._rig import paper_rig
+    from rotor._verdict import judge_table
     from surfmet.data import path
     from surfmet.frames import read_frames_table
 
@@ -49,8 +49,8 @@ def test_frame_rate_scales_every_acceleration_as_its_square(v, rows) -> None:
 def test_swapped_labels_flip_the_offset_and_no_lambda_makes_it(v, rows) -> None:
     """Read with the text's labels (Table 3's as columns as the symmetric group) a refit
     gives -0.200 and the same F; 0 < lambda < 1 makes at most ~0.01 rad/s² of that sign."""
-    from contact.rotor.rig import offset_for_lambda, paper_rig
-    from contact.rotor.verdict import judge_table
+    from rotor._rig import offset_for_lambda, paper_rig
+    from rotor._verdict import judge_table
     from surfmet.data import path
     from surfmet.frames import read_frames_table
 
@@ -125,7 +125,8 @@ def test_label_swap_said_by_every_entry_point(v, capsys) -> None:
     from surfmet.cli import main
     from surfmet.demo.story import _Text, _verdict
     from surfmet.mechanics._rotor_sensitivity import LABEL_SWAP, label_swap_text
-    from surfmet.mechanics.rotor_verdict import verdict_lines, verdict_record
+    from surfmet.mechanics.rotor_verdict import verdict_lines
+    from surfmet.records.rotor_verdict import verdict_record
     from surfmet.report_rotor import rotor_html
 
     assert label_swap_text(v) == LABEL_SWAP

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.rotor.forward import crossing_times
-from contact.rotor.simulator import (
+from rotor._forward import crossing_times
+from rotor._simulator import (
     EFFECTS,
     effect_signature,
     random_hidden_effects,

@@ -15,8 +15,8 @@ from numpy.polynomial import legendre
 from rotor_clean_columns import clean_column
 from scipy.integrate import solve_ivp
 
-from contact.rotor.analysis import analyse_test
-from contact.rotor.smooth import fit_smooth_deviation, smooth_response
+from rotor._analysis import analyse_test
+from rotor._smooth import fit_smooth_deviation, smooth_response
 
 IN_FAMILY = ("none", "decaying", "unbalance", "decaying+unbalance")
 
@@ -97,7 +97,7 @@ def test_the_smooth_term_captures_a_bump_the_family_cannot():
 
 @pytest.mark.parametrize("degree", [2, 3, 6])
 def test_legendre_recursion_against_numpy(degree):
-    from contact.rotor.smooth import _legendre
+    from rotor._smooth import _legendre
 
     x = np.linspace(-1.2, 1.2, 17)
     coef = np.zeros(degree + 1)

@@ -5,7 +5,7 @@ The rig: the paper's rotor (20 mm steel balls, its mass and inertia) on a PMMA p
 (E = 3 GPa, nu = 0.37, written out below), so that the Hertz contact radius at the
 symmetric ball load is about 273 µm, 2.6 times the paper's 106 µm on aluminium; the
 asymmetric group's ball loads the settling experiment's larger contrast, 6.7/2.6 N of the
-9.3 N weight (:func:`contact.rotor.tables.loaded_rotor`), against 4.67/4.67 N.
+9.3 N weight (:func:`rotor._tables.loaded_rotor`), against 4.67/4.67 N.
 
 The design (the settling experiment of ``docs/rotor_verdict.md``): both groups on one lane
 (a shared track, no lane-to-lane variation), 10 launches per group, launch spread 0.037
@@ -17,7 +17,7 @@ The hidden effect, drawn per table from a stated prior: ``M_r = s N**lambda`` wi
 uniform in [4/3, 3/2] and a friction arm ``M_r / N`` at the symmetric load uniform in
 [0.4, 0.6] a (well inside the contact), the same ``s`` for both groups: an offset of
 0.08-0.21 rad/s² that only lambda != 1 makes. Everything else is the calibration's prior
-(:func:`contact.rotor.tables.draw_scenario`): acceleration 1.5-2.8 rad/s², a slope trend,
+(:func:`rotor._tables.draw_scenario`): acceleration 1.5-2.8 rad/s², a slope trend,
 a plate wave of random amplitude, period and phase, reading scatter, release points and
 misread rows. The start slope follows from the arm (0.8-1.2 deg).
 
@@ -36,13 +36,13 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 from contact.errors import ContactInputError
-from contact.rotor.arm import arm_bound
-from contact.rotor.mechanics import G_STANDARD, mass_properties
-from contact.rotor.paper import FPS, MARK_STEP
-from contact.rotor.rig import Rig, RigGroup
-from contact.rotor.simulator import HiddenEffects, simulate_rotor
-from contact.rotor.tables import draw_scenario, group_loads, loaded_rotor, simulate_table
-from contact.rotor.verdict import judge_table
+from rotor._arm import arm_bound
+from rotor._mechanics import G_STANDARD, mass_properties
+from rotor._paper import FPS, MARK_STEP
+from rotor._rig import Rig, RigGroup
+from rotor._simulator import HiddenEffects, simulate_rotor
+from rotor._tables import draw_scenario, group_loads, loaded_rotor, simulate_table
+from rotor._verdict import judge_table
 
 # PMMA on steel, written out (data sheets: E = 3 GPa, nu = 0.37; steel 210 GPa, 0.30)
 E_PMMA, NU_PMMA, E_STEEL, NU_STEEL = 3.0e9, 0.37, 210e9, 0.30

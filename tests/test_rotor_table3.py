@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.rotor.frames import split_rows, table3, table3_tsv
-from contact.rotor.paper import TABLE3_COLUMNS as COLUMNS
-from contact.rotor.paper import TABLE3_PRINTED_ROWS as PRINTED_ROWS
+from rotor._frames import split_rows, table3, table3_tsv
+from rotor._paper import TABLE3_COLUMNS as COLUMNS
+from rotor._paper import TABLE3_PRINTED_ROWS as PRINTED_ROWS
 
 SHIPPED = Path(__file__).resolve().parents[1] / "surfmet" / "data" / "table3_frames.tsv"
 

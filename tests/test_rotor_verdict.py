@@ -1,5 +1,5 @@
-"""The rotor verdict (contact.rotor.verdict) on tables simulated by the ODE integrator
-(contact.rotor.simulator, solve_ivp: independent of the joint model's quadrature), with hidden
+"""The rotor verdict (rotor._verdict) on tables simulated by the ODE integrator
+(rotor._simulator, solve_ivp: independent of the joint model's quadrature), with hidden
 effects of random size and sign; the exponent analysis against closed forms; bad rigs.
 
 Truths: the simulator's physics (a shared track, an offset put into one group's rolling
@@ -17,17 +17,17 @@ import numpy as np
 import pytest
 
 from contact.errors import ContactInputError
-from contact.rotor.mechanics import mass_properties
-from contact.rotor.rig import (
+from rotor._mechanics import mass_properties
+from rotor._rig import (
     offset_for_lambda,
     paper_rig,
     rig_from_mapping,
     solve_lambda,
 )
-from contact.rotor.simulator import HiddenEffects, simulate_rotor
-from contact.rotor.tables import PlateTrack, Scenario, draw_scenario, simulate_table
-from contact.rotor.track import TrackLayout, track_times
-from contact.rotor.verdict import calibration, judge_table
+from rotor._simulator import HiddenEffects, simulate_rotor
+from rotor._tables import PlateTrack, Scenario, draw_scenario, simulate_table
+from rotor._track import TrackLayout, track_times
+from rotor._verdict import judge_table, verdict_calibration
 from surfmet.cli import main
 
 GROUPS = {"as": ["as1", "as2", "as3"], "s": ["s1", "s2", "s3"]}
@@ -129,7 +129,7 @@ def test_exponent_closed_forms_on_the_paper_rig() -> None:
 
 
 def test_calibration_false_alarms_and_power_published() -> None:
-    cal = calibration()
+    cal = verdict_calibration()
     st, ot = cal["shared_track_test"], cal["offset_test"]
     n = st["n_held_out"]
     # 2 % nominal; the binomial 99 % upper margin on the held-out tables

@@ -9,11 +9,11 @@ import math
 import numpy as np
 import pytest
 
-from contact.rotor.adequacy import WaveScan
-from contact.rotor.analysis import analyse_test
-from contact.rotor.extension import GRID_STARTS, start_indices
-from contact.rotor.frames import table3
-from contact.rotor.paper import TABLE3_COLUMNS
+from rotor._adequacy import WaveScan
+from rotor._analysis import analyse_test
+from rotor._extension import GRID_STARTS, start_indices
+from rotor._frames import table3
+from rotor._paper import TABLE3_COLUMNS
 
 
 def _scan(periods, share):

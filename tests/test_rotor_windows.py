@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.rotor.windows import launch_windows, windowed_difference
+from rotor._windows import launch_windows, windowed_difference
 
 STEP = math.pi / 2
 
@@ -68,7 +68,8 @@ def test_paper_verdict_headline_is_robust() -> None:
     """The sentence gives the trend with its standard error and the model-free windows, and
     no longer the polynomial's end values (+0.400 at the release, +2.98 at the last mark,
     0-47 mm)."""
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
+    from surfmet.mechanics.rotor_verdict import paper_verdict
+    from surfmet.records.rotor_verdict import verdict_record
 
     v = paper_verdict()
     d = v.difference

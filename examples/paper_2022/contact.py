@@ -38,9 +38,14 @@ from contact.rolling import (  # noqa: E402
     log_loads,
     sphere_sweep,
 )
-from contact.rotor.mechanics import mass_properties, normal_reactions, paper_rotor  # noqa: E402
-from contact.rotor.paper import BALL_RADIUS, HERTZ_CHECK_LOAD  # noqa: E402
 from contact.setups import CompositeRoughness  # noqa: E402
+from rotor import (  # noqa: E402
+    BALL_RADIUS,
+    HERTZ_CHECK_LOAD,
+    mass_properties,
+    normal_reactions,
+    paper_rotor,
+)
 from surfmet.cli._common import progress  # noqa: E402
 from surfmet.mechanics.hertz_check import hertz_check  # noqa: E402
 from surfmet.mechanics.scan_preparation import prepare_scans  # noqa: E402
@@ -106,7 +111,7 @@ def main(argv: list[str]) -> int:
     heading("The synthetic scans against Table 2 (median of the rows, lc = 0.8 mm)")
     findings["table2"] = table2_check(plate, ball)
 
-    heading("Loads of the experiment (contact/rotor/mechanics.py, Eqs. 41-42, level plate)")
+    heading("Loads of the experiment (rotor/_mechanics.py, Eqs. 41-42, level plate)")
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"))
     asym = normal_reactions(mass_properties(paper_rotor(), "end"))
     print(f"symmetric rotor : N1 = N2 = {sym[0]:.3f} N")

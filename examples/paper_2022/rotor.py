@@ -26,19 +26,24 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
-from contact.rotor.family import SELECTABLE  # noqa: E402
-from contact.rotor.frames import table3, table3_tsv  # noqa: E402
-from contact.rotor.groups import analyse_table  # noqa: E402
-from contact.rotor.inference import IDENTIFIABILITY, infer_rolling_law  # noqa: E402
-from contact.rotor.mechanics import (  # noqa: E402
+from rotor import (  # noqa: E402
+    FPS,
     G_STANDARD,
+    IDENTIFIABILITY,
+    MARK_STEP,
+    PARABOLAS,
+    SELECTABLE,
+    TABLE3_FILENAME,
+    analyse_table,
+    infer_rolling_law,
     mass_properties,
     optimal_collar_length,
+    paper_parabola,
     rolling_torque,
+    table3,
+    table3_tsv,
 )
-from contact.rotor.paper import FPS, MARK_STEP, PARABOLAS, TABLE3_FILENAME  # noqa: E402
-from contact.rotor.paper import TABLE3_COLUMNS as COLUMNS  # noqa: E402
-from contact.rotor.parabola import paper_parabola  # noqa: E402
+from rotor import TABLE3_COLUMNS as COLUMNS  # noqa: E402
 
 PAPER_PHI_S = PARABOLAS["phi_s"]  # the paper's "phi_s(t)"
 PAPER_PHI_A = PARABOLAS["phi_a"]  # the paper's "phi_a(t)"

@@ -112,7 +112,7 @@ def run(args: argparse.Namespace) -> int:
         rec: dict[str, Any] = {"output": args.output,
                                "scans": [s.summary() for s in sections]}
         if rotor is not None:  # the verdict record surfmet rotor --json emits
-            from surfmet.mechanics.rotor_verdict import verdict_record
+            from surfmet.records.rotor_verdict import verdict_record
 
             rec["rotor"] = {"verdict": verdict_record(rotor)}
         emit_json(rec)
@@ -129,7 +129,7 @@ def _rotor_verdict(args: argparse.Namespace) -> Any:
         if args.rig:
             raise SurfmetInputError("--rig goes with --rotor TABLE")
         return None
-    from contact.rotor.paper import FPS, MARK_STEP
+    from rotor import FPS, MARK_STEP
     from surfmet.cli.rotor import PAPER_ALIAS, _paper_path
     from surfmet.frames import read_frames_table
     from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict

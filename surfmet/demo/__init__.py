@@ -18,9 +18,9 @@ statistics of the paper's Table 2, written by surfmet's own X3P writer; see
    paired roughness);
 5. a short rolling-resistance sweep
    (:func:`surfmet.mechanics.rolling_resistance.rolling_resistance`);
-6. the law-of-motion analysis of Table 3 (:func:`contact.rotor.groups.analyse_table`) on
+6. the law-of-motion analysis of Table 3 (:func:`rotor.analyse_table`) on
    ``surfmet/data/table3_frames.tsv``, the paper's table re-typed and split
-   (:mod:`contact.rotor.frames`), with the paper's parabolas reproduced.
+   (:mod:`rotor._frames`), with the paper's parabolas reproduced.
 
 Figures and ``summary.json`` (every dimensional value ``{"value": v, "unit": "..."}``)
 go to the output folder; :func:`story` turns the summary into the text ``surfmet demo``
@@ -28,7 +28,7 @@ prints.
 
 Modules: :mod:`~surfmet.demo.outputs` (the output folder and ``summary.json``),
 :mod:`~surfmet.demo.settings` (the settings and Table 2; the paper's rotor facts are
-:mod:`contact.rotor.paper`),
+:mod:`rotor._paper`),
 :mod:`~surfmet.demo.surfaces`, :mod:`~surfmet.demo.mechanics` and
 :mod:`~surfmet.demo.lawofmotion` (the steps), :mod:`~surfmet.demo.figures`,
 :mod:`~surfmet.demo.run` (the steps in order) and :mod:`~surfmet.demo.story` (the text).

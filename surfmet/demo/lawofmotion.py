@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from contact.rotor.paper import FPS, MARK_STEP, PARABOLAS, TABLE3_FILENAME
+from rotor import FPS, MARK_STEP, PARABOLAS, TABLE3_FILENAME
 from surfmet.demo.outputs import data_file
 from surfmet.units import quantity
 
@@ -25,10 +25,9 @@ QUICK_LEAVES_OUT = ("the per-test law-of-motion models (misread rows, the BIC ch
 
 
 def _parabola_groups(cols: dict[str, Any], fps: float, step: float) -> list[dict[str, Any]]:
-    """The paper's parabola of each group (:func:`contact.rotor.parabola.paper_parabola`,
-    the one :func:`contact.rotor.groups.analyse_table` fits), without the model selection."""
-    from contact.rotor.analysis import group_of
-    from contact.rotor.parabola import paper_parabola
+    """The paper's parabola of each group (:func:`rotor.paper_parabola`,
+    the one :func:`rotor.analyse_table` fits), without the model selection."""
+    from rotor import group_of, paper_parabola
 
     groups = []
     for gname in dict.fromkeys(group_of(n) for n in cols):
@@ -54,8 +53,7 @@ def _label_match(groups: list[dict[str, Any]]) -> dict[str, str]:
 def rotor_step(quick: bool = False) -> tuple[dict[str, Any], Any]:
     """The law-of-motion analysis of the shipped Table 3, and the paper's parabolas;
     ``quick``: the parabolas only (:data:`QUICK_LEAVES_OUT`), the analysis None."""
-    from contact.rotor.frames import table3_tsv
-    from contact.rotor.groups import analyse_table
+    from rotor import analyse_table, table3_tsv
     from surfmet.frames import read_frames_table
     from surfmet.plots.rotor import PAPER_MODEL, rms_frames
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from contact.rotor.paper import BALL_RADIUS as RADIUS
-from contact.rotor.paper import HERTZ_CHECK, HERTZ_CHECK_LOAD
+from rotor import BALL_RADIUS as RADIUS
+from rotor import HERTZ_CHECK, HERTZ_CHECK_LOAD
 from surfmet.demo.settings import MATERIALS
 from surfmet.units import quantity
 
@@ -32,7 +32,7 @@ def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[d
 
 def rotor_loads() -> dict[str, float]:
     """Normal load per ball of the paper's rotor on a level plate (Eqs. 41-42, 50-51), N."""
-    from contact.rotor.mechanics import paper_ball_loads
+    from rotor import paper_ball_loads
 
     return paper_ball_loads()
 

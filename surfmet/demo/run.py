@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from contact.rotor.paper import HERTZ_CHECK_LOAD
+from rotor import HERTZ_CHECK_LOAD
 from surfmet.demo import figures as fig
 from surfmet.demo.lawofmotion import rotor_step
 from surfmet.demo.mechanics import contact_step, hertz_step, rolling_step, rotor_loads
@@ -119,7 +119,8 @@ def _rotor(st: _Steps, summary: dict[str, Any], quick: bool) -> None:
     st.start("rotor", "law of motion of the rotor (the paper's Table 3)"
              + (": its verdict and the paper's parabolas (--quick)" if quick else ""))
     summary["rotor"], an = rotor_step(quick=quick)
-    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_figure, verdict_record
+    from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_figure
+    from surfmet.records.rotor_verdict import verdict_record
 
     summary["verdict"] = verdict_record(paper_verdict())
     st.figure("rotor_verdict", lambda p: verdict_figure(paper_verdict(), p))

@@ -2,12 +2,12 @@
 
 The paper's rotor facts (the balls' radius, the Hertz check's load and its 0.936 µm and
 136 µm, the film's frame rate and marks, the parabolas φ_s and φ_a, Table 2) have one home,
-:mod:`contact.rotor.paper`; the demo uses them from there.
+:mod:`rotor._paper`; the demo uses them from there.
 """
 
 from __future__ import annotations
 
-from contact.rotor.paper import TABLE2
+from rotor import TABLE2
 
 MATERIALS = "steel,aluminium"
 LC = "0.8mm"  # ISO 4288 cut-off for Ra in 0.1-2 µm
@@ -15,7 +15,7 @@ PLATE_LEVEL = "plane"  # a least-squares line on each row
 BALL_LEVEL = "poly:2"  # a parabola takes the ball's curvature off each row
 ROW_PARAMETERS = ("Ra", "Rq", "Rz", "Rt")
 
-#: Table 2 of the paper (:data:`contact.rotor.paper.TABLE2`), means of its three profiles, m:
+#: Table 2 of the paper (:data:`rotor.TABLE2`), means of its three profiles, m:
 #: the plate's four row parameters, and the ball's Ra and Rq (the two the demo compares).
 PAPER_TABLE2_MEAN = {
     surface: {p: sum(row[p] for row in TABLE2[surface]) / len(TABLE2[surface]) for p in params}

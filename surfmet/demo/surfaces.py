@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from contact.rotor.paper import BALL_RADIUS as RADIUS
+from rotor import BALL_RADIUS as RADIUS
 from surfmet.demo.outputs import data_file
 from surfmet.demo.settings import LC, PLATE_LEVEL, ROW_PARAMETERS
 from surfmet.units import quantity

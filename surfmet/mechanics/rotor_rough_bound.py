@@ -1,6 +1,6 @@
 """The rough contact's extent as a bound on the rotor's friction arm.
 
-The arm argument (:mod:`contact.rotor.arm`) bounds the friction arm ``s_r = M_r / N`` by the
+The arm argument (:mod:`rotor._arm`) bounds the friction arm ``s_r = M_r / N`` by the
 contact radius, since the normal force's resultant lies inside the contact. Its bound is
 Hertz's radius at the symmetric group's ball load. Where the plate (and ball) are scanned, the
 rough contact at the same load spreads over a region of its own: :func:`rough_arm_bound` asks
@@ -17,13 +17,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from surfmet.units import quantity
-
 __all__ = ["MATERIALS", "RoughArmBound", "deciding_bound", "rough_arm_bound",
-           "rough_bound_line", "rough_bound_record"]
+           "rough_basis", "rough_bound_line"]
 
 MATERIALS = "steel,aluminium"
-"""The paper's ball and plate materials (:data:`contact.rotor.arm.PAPER_PAIR`)."""
+"""The paper's ball and plate materials (:data:`rotor._arm.PAPER_PAIR`)."""
 
 
 @dataclass(frozen=True)
@@ -79,7 +77,7 @@ def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, 
 
     Parameters
     ----------
-    arm : contact.rotor.arm.ArmBound
+    arm : rotor.ArmBound
         The Hertz arm bound (its ``bound_load`` and ``arm_bound``).
     ball_radius : float
         The rig's ball radius (m).
@@ -116,7 +114,18 @@ def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, 
                          cell=float(res.dx), warnings=tuple(check.warnings))
 
 
-def _basis(rb: RoughArmBound) -> str:
+def rough_basis(rb: RoughArmBound) -> str:
+    """How the rough bound was reached, in words (the text and the JSON's ``basis``).
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_basis
+    >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
+    ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
+    ...                    cell=2e-5, warnings=())
+    >>> rough_basis(rb)[:56]
+    'boundary-element contact of the scans (plate plate.x3p, '
+    """
     ball = rb.ball_file if rb.ball_file else "a smooth ball"
     return (f"boundary-element contact of the scans (plate {rb.plate_file}, ball {ball}) at "
             f"the same ball load {rb.load:.3g} N, R = {rb.ball_radius * 1e3:.3g} mm, "
@@ -126,9 +135,9 @@ def _basis(rb: RoughArmBound) -> str:
 
 
 def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
-    """The arm argument (:class:`contact.rotor.arm.ArmBound`) at the radius that bounds
+    """The arm argument (:class:`rotor.ArmBound`) at the radius that bounds
     the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
-    recomputed there (:func:`contact.rotor.arm.arm_bound` with ``radius=``): the least
+    recomputed there (:func:`rotor.arm_bound` with ``radius=``): the least
     lambda the offset needs, its slope, and the friction arm's ratio to the bound.
 
     Examples
@@ -146,41 +155,12 @@ def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
     """
     if rb is None or rb.decides != "rough":
         return v.arm
-    from contact.rotor.arm import arm_bound
+    from rotor import arm_bound
 
     o = v.offset
     return arm_bound(v.rig, o.minuend, o.subtrahend, v.arm.slope, v.mean_acceleration,
                      o.value, o.ci_low, o.ci_high, e_star=v.arm.e_star, radius=rb.radius,
-                     radius_basis=f"the rough contact's extent a* ({_basis(rb)})")
-
-
-def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]:
-    """The fields :func:`~surfmet.mechanics.rotor_verdict.verdict_record` adds to
-    ``arm_bound``: ``rough`` {radius, basis, files, grid, cell, warnings}, ``decides``
-    and ``deciding_radius``, ``friction_arm_ratio_to_deciding``.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_bound_record
-    >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
-    ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
-    ...                    cell=2e-5, warnings=())
-    >>> rec = rough_bound_record(rb, 0.258e-3)
-    >>> rec["decides"], round(rec["friction_arm_ratio_to_deciding"]["value"], 2)
-    ('rough', 0.81)
-    """
-    return {
-        "rough": {"radius": quantity(rb.radius, "m"), "quantity": "effective_radius a*",
-                  "basis": _basis(rb), "load": quantity(rb.load, "N"),
-                  "files": {"plate": rb.plate_file, "ball": rb.ball_file},
-                  "grid": list(rb.grid), "cell": quantity(rb.cell, "m"),
-                  "materials": MATERIALS, "warnings": list(rb.warnings)},
-        "decides": rb.decides,
-        "deciding_radius": quantity(rb.deciding_radius, "m"),
-        "friction_arm_ratio_to_deciding": quantity(friction_arm / rb.deciding_radius, ""),
-        "why": "the larger radius is the physical bound: the normal force's resultant lies "
-               "inside the region that carries the load",
-    }
+                     radius_basis=f"the rough contact's extent a* ({rough_basis(rb)})")
 
 
 def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
@@ -199,7 +179,8 @@ def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
     which = ("the rough contact's a* decides (larger than Hertz)" if rb.decides == "rough"
              else "Hertz decides (larger than the rough a*)")
     inside = "impossible at lambda = 1" if ratio > 1 else "inside the bound at lambda = 1"
-    out = [f"  rough contact's extent a* = {rb.radius * 1e6:.0f} µm ({_basis(rb)}): {which}; "
+    out = [f"  rough contact's extent a* = {rb.radius * 1e6:.0f} µm ({rough_basis(rb)}): "
+           f"{which}; "
            f"s_r = {ratio:.2g} x {rb.deciding_radius * 1e6:.0f} µm: {inside}"
            + ("; the lambda lines below are at this a*" if rb.decides == "rough" else "")]
     out += [f"    warning: {w}" for w in rb.warnings]

@@ -1,4 +1,4 @@
-"""The rotor verdict (:mod:`contact.rotor.verdict`) as every entry point shows it: computed
+"""The rotor verdict (:mod:`rotor._verdict`) as every entry point shows it: computed
 once per table, printed first by ``surfmet rotor``, carried by ``surfmet rolling --model
 all``, the demo and the report, in the same words and numbers.
 """
@@ -14,15 +14,14 @@ from pathlib import Path
 from typing import Any
 
 from surfmet.errors import SurfmetInputError
-from surfmet.units import quantity
 
 __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
-           "paper_verdict", "table_verdict", "verdict_figure", "verdict_lines",
-           "verdict_plot_path", "verdict_record"]
+           "paper_verdict", "shared_track_p_text", "table_verdict", "verdict_figure",
+           "verdict_lines", "verdict_plot_path"]
 
 
 def load_rig(path: str | Path) -> Any:
-    """A :class:`contact.rotor.rig.Rig` from a rig JSON file (one line on any error).
+    """A :class:`rotor.Rig` from a rig JSON file (one line on any error).
 
     Parameters
     ----------
@@ -31,7 +30,7 @@ def load_rig(path: str | Path) -> Any:
 
     Returns
     -------
-    contact.rotor.rig.Rig
+    rotor.Rig
         The rig.
 
     Raises
@@ -52,7 +51,7 @@ def load_rig(path: str | Path) -> Any:
     surfmet.errors.SurfmetInputError: --rig no-such-rig.json: no such file
     """
     from contact.errors import ContactInputError
-    from contact.rotor.rig import rig_from_mapping
+    from rotor import rig_from_mapping
 
     try:
         data = json.loads(Path(path).read_text(encoding="utf-8"))
@@ -104,14 +103,14 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
         Row numbers (default 1, 2, ...).
     fps, step : float
         Frame rate (1/s) and mark step (rad).
-    rig : contact.rotor.rig.Rig, optional
+    rig : rotor.Rig, optional
         The rig: its groups, and the lambda outputs and confounds.
     mechanisms : mapping of str to float, optional
         Contact mechanisms' accelerations to weigh as confounds.
 
     Returns
     -------
-    contact.rotor.verdict.RotorVerdict
+    rotor.RotorVerdict
         The verdict.
 
     Raises
@@ -135,7 +134,7 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
     surfmet.errors.SurfmetInputError: ...
     """
     from contact.errors import ContactInputError
-    from contact.rotor.verdict import judge_table
+    from rotor import judge_table
 
     groups = ({g.name: list(g.columns) for g in rig.groups} if rig is not None
               else column_groups(list(cols)))
@@ -154,13 +153,13 @@ def paper_verdict() -> Any:
 
     Returns
     -------
-    contact.rotor.verdict.RotorVerdict
+    rotor.RotorVerdict
         The verdict on Table 3 of Alaci et al. (2022): the group offset, the shared-track
         test, the lambda needed, the confounds.
 
     See Also
     --------
-    table_verdict, verdict_lines, verdict_record
+    table_verdict, verdict_lines
 
     References
     ----------
@@ -175,7 +174,7 @@ def paper_verdict() -> Any:
     >>> verdict.code
     'undetermined'
     """
-    from contact.rotor.rig import paper_rig
+    from rotor import paper_rig
     from surfmet.data import path as data_path
     from surfmet.frames import read_frames_table
 
@@ -184,150 +183,10 @@ def paper_verdict() -> Any:
     return judge(cols, ks, fps=rig.fps, step=rig.step, rig=rig)
 
 
-def offset_record(v: Any) -> dict[str, Any]:
-    """The group offset as an interval quantity (the one JSON form every entry point uses)."""
-    o = v.offset
-    return {"value": o.value, "unit": "rad/s^2", "ci_low": o.ci_low, "ci_high": o.ci_high,
-            "level": o.level, "minuend": o.minuend, "subtrahend": o.subtrahend}
-
-
-def _calibration_record() -> dict[str, Any]:
-    from contact.rotor.verdict import calibration
-
-    cal = calibration()
-    st, ot = cal["shared_track_test"], cal["offset_test"]
-    return {
-        "tables": cal["tables"], "generated_by": cal["generated_by"],
-        "shared_track_false_alarm": quantity(st["false_alarm_held_out"], ""),
-        "shared_track_power_group_specific_tracks": quantity(st["power_group_specific_tracks"],
-                                                             ""),
-        "difference_false_alarm_zero_offset": quantity(ot["false_alarm_zero_offset"], ""),
-        "difference_rate_lambda_4_3": quantity(ot["difference_rate_lambda_4_3"], ""),
-        "difference_power_by_offset": [
-            {"abs_offset": quantity(r["abs_offset_rad_s2"], "rad/s^2"), "tables": r["n"],
-             "rate": quantity(r["rate"], "")} for r in ot["power_by_offset"]],
-    }
-
-
-def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str, Any]:
-    """The JSON ``verdict`` object, the one record builder every entry point calls: every
-    value a quantity with its unit (the group offset and the exponent as interval
-    quantities).
-
-    Parameters
-    ----------
-    v : RotorVerdict
-        The verdict.
-    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds
-        the table of the four differences and the two misread rules.
-    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
-        The scanned contact's extent: added to ``arm_bound`` beside the Hertz radius.
-
-    Returns
-    -------
-    dict
-        The JSON object, every value ``{"value": v, "unit": u}``.
-
-    See Also
-    --------
-    verdict_lines : the same in words.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_record
-    >>> record = verdict_record(paper_verdict())
-    >>> record["code"], record["group_offset"]["unit"]
-    ('undetermined', 'rad/s^2')
-    """
-    from surfmet.mechanics._rotor_argument import (
-        argument_record,
-        differences_record,
-        lane_record,
-        permutation_record,
-        rig_record,
-    )
-
-    rec = _verdict_record(v)
-    rec["shared_track"]["p_text"] = f"calibrated p {_p_shown(v.shared_track_p)}"
-    rec["permutation_p"] = permutation_record(v)
-    rec["lane_test"] = lane_record(v)
-    rec["rig"] = rig_record(v.rig)
-    rec.update(argument_record(v, rough))
-    rec.update(_sensitivity_fields(v))
-    if analysis is not None:
-        rec.update(differences_record(v, analysis))
-    return rec
-
-
-def _sensitivity_fields(v: Any) -> dict[str, Any]:
-    """``label_swap``, ``sensitivity`` and ``experiment`` (:mod:`contact.rotor.sensitivity`)."""
-    from surfmet.mechanics._rotor_sensitivity import (
-        experiment_record,
-        label_swap_text,
-        sensitivity_record,
-    )
-
-    return {"label_swap": label_swap_text(v), "sensitivity": sensitivity_record(v),
-            "experiment": experiment_record(v)}
-
-
-def _verdict_record(v: Any) -> dict[str, Any]:
-    o = v.offset
-    rec: dict[str, Any] = {
-        "code": v.code, "sentence": v.sentence, "group_offset": offset_record(v),
-        "group_offset_stderr": quantity(o.stderr, "rad/s^2"), "dof": o.dof,
-        "launch_sd": quantity(o.launch_sd, "rad/s^2"),
-        "shared_track": {"adequate": v.shared_track_adequate,
-                         "p_value": quantity(v.shared_track_p, ""),
-                         "f_statistic": quantity(v.f_statistic, ""),
-                         "f_critical": quantity(v.f_critical, ""),
-                         "track_degree": v.shared.layout.degree},
-        "calibration": _calibration_record(),
-        "mean_acceleration": quantity(v.mean_acceleration, "rad/s^2"),
-        "misread_rows": [{"column": c, "k": k} for c, k in v.misread_rows],
-        "lambda_needed": None, "launches_needed": None, "confounds": [],
-    }
-    d = v.difference
-    if d is not None:
-        from surfmet.mechanics._rotor_argument import windows_record
-
-        rec["track_difference"] = {
-            "trend": quantity(d.trend, "rad/s^2/m"),
-            "trend_stderr": quantity(d.trend_stderr, "rad/s^2/m"),
-            "waviness_rms": quantity(d.waviness_rms, "rad/s^2"),
-            "windowed": windows_record(d.windows),
-            "polynomial_end_values": {
-                "note": "end values of the joint model's track polynomial, where it is least "
-                        "constrained: not robust, never the headline",
-                "at_release": quantity(d.start, "rad/s^2"),
-                "at_last_mark": quantity(d.end, "rad/s^2"),
-                "regions": [{"from": quantity(a, "m"), "to": quantity(b, "m")}
-                            for a, b in d.regions]}}
-    e = v.exponent
-    if e is None:
-        rec["note"] = "no rig: the lambda outputs and the confounds need --rig RIG.json"
-        return rec
-    rec["lambda_needed"] = {"value": e.value, "unit": "", "ci_low": e.ci_low,
-                            "ci_high": e.ci_high, "level": o.level}
-    rec["lambda_assumptions"] = {
-        "slope": quantity(e.slope, "rad"), "slope_basis": e.slope_basis,
-        "slope_lower_bound": quantity(e.slope_lower_bound, "rad"),
-        "largest_offset_lambda_4_3": quantity(e.offset_lambda_4_3, "rad/s^2")}
-    rec["launches_needed"] = e.launches  # a count, plain as every count in the records
-    rec["launches_needed_for"] = "lambda 4/3 told from 1 with 90 % power at 2 % (two-sided)"
-    rec["confounds"] = [{"name": c.name,
-                         "equivalent_acceleration": quantity(c.equivalent_acceleration, "rad/s^2"),
-                         "can_explain": c.can_explain, "formula": c.formula,
-                         "assumption": c.assumption, "source": c.source}
-                        for c in v.confounds]
-    return rec
-
-
 def _p_floor() -> float:
-    from contact.rotor.verdict import calibration
+    from rotor import verdict_calibration
 
-    return 1.0 / (len(calibration()["shared_track_test"]["null_f_sorted"]) + 1)
+    return 1.0 / (len(verdict_calibration()["shared_track_test"]["null_f_sorted"]) + 1)
 
 
 def _p_shown(p: float) -> str:
@@ -336,12 +195,35 @@ def _p_shown(p: float) -> str:
             else f"= {p:.3g}")
 
 
+def shared_track_p_text(v: Any) -> str:
+    """The shared-track test's calibrated p in words, as the verdict's text and its JSON
+    (``shared_track.p_text``) say it: at most the calibration's floor where it reaches it.
+
+    Parameters
+    ----------
+    v : rotor.RotorVerdict
+        The verdict.
+
+    Returns
+    -------
+    str
+        ``"calibrated p = 0.0123"`` or ``"calibrated p <= 0.0083 (the calibration's floor)"``.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.rotor_verdict import paper_verdict, shared_track_p_text
+    >>> shared_track_p_text(paper_verdict())
+    "calibrated p <= 0.0083 (the calibration's floor)"
+    """
+    return f"calibrated p {_p_shown(v.shared_track_p)}"
+
+
 def _rejected(v: Any) -> str:
     """REJECTED, said as the model's alone when the design's permutation p is weaker than
     the test's level (the wording follows the weaker p)."""
-    from contact.rotor.verdict import calibration
+    from rotor import verdict_calibration
 
-    level = float(calibration()["shared_track_test"]["level"])
+    level = float(verdict_calibration()["shared_track_test"]["level"])
     return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
 
 
@@ -352,10 +234,10 @@ def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
     ----------
     v : RotorVerdict
         The verdict.
-    analysis : contact.rotor.groups.LawOfMotionAnalysis, optional
-        The table's per-test analysis (:func:`contact.rotor.groups.analyse_table`): adds,
+    analysis : rotor.LawOfMotionAnalysis, optional
+        The table's per-test analysis (:func:`rotor.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
-        (as :func:`verdict_record` adds their JSON).
+        (as :func:`surfmet.records.rotor_verdict.verdict_record` adds their JSON).
     rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent, after the friction arm's line.
 
@@ -366,7 +248,7 @@ def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
 
     See Also
     --------
-    verdict_record : the same as JSON.
+    surfmet.records.rotor_verdict.verdict_record : the same as JSON.
 
     Examples
     --------
@@ -390,7 +272,7 @@ def _verdict_text(v: Any, rough: Any = None) -> list[str]:
              f"{o.launch_sd:.4f} rad/s², t on {o.dof} dof)",
              f"  shared track ({v.shared.layout.degree}-term profile): "
              f"{'adequate' if v.shared_track_adequate else _rejected(v)}, F = {v.f_statistic:.2f} "
-             f"(critical {v.f_critical:.2f} at 2 %), calibrated p {_p_shown(v.shared_track_p)}"]
+             f"(critical {v.f_critical:.2f} at 2 %), {shared_track_p_text(v)}"]
     from surfmet.mechanics._rotor_argument import (
         argument_lines,
         lane_line,
@@ -493,7 +375,7 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
     The paper's Table 3 with the paper's rig and frame rate:
 
     >>> import csv
-    >>> from contact.rotor.paper import FPS, MARK_STEP
+    >>> from rotor import FPS, MARK_STEP
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.rotor_verdict import table_verdict
     >>> with open(path("table3_frames.tsv")) as f:
@@ -504,8 +386,7 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
     >>> verdict.code, notes
     ('undetermined', [])
     """
-    from contact.rotor.paper import FPS, MARK_STEP
-    from contact.rotor.rig import paper_rig
+    from rotor import FPS, MARK_STEP, paper_rig
 
     if rig_path:
         return judge(cols, ks, fps=fps, step=step, rig=load_rig(rig_path)), []
@@ -557,7 +438,7 @@ def label_swap_text(v: Any) -> str | None:
 
     Parameters
     ----------
-    v : contact.rotor.verdict.RotorVerdict
+    v : rotor.RotorVerdict
         The verdict.
 
     Returns

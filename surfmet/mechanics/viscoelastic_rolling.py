@@ -10,7 +10,7 @@ stress-relaxation time is tau_c Er/Eg, :mod:`contact.viscoelastic.rheology`). ``
 defaults to the body's material.
 
 The mechanism comparison (:func:`rolling_mechanisms`) uses the rotor of Alaci et al.
-(2022) (:mod:`contact.rotor`) for the ball loads and J + M R^2, and Table 3's films for
+(2022) (:mod:`rotor`) for the ball loads and J + M R^2, and Table 3's films for
 the measured accelerations: each column fitted with the paper's constant-acceleration
 parabola phi = phi0 + omega0 t + eps t^2/2 (frames at 120 /s, a quarter turn a row).
 """
@@ -30,7 +30,7 @@ from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.materials import Material
-    from contact.rotor.joint import GroupOffset
+    from rotor import GroupOffset
     from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -278,7 +278,7 @@ class MechanismsReport:
     def to_json(self) -> dict[str, Any]:
         from contact.viscoelastic.mechanisms import BOUNDS_ONLY
         from surfmet.mechanics._rotor_sensitivity import label_swap_text
-        from surfmet.mechanics.rotor_verdict import offset_record
+        from surfmet.records.rotor_verdict import offset_record
 
         c = self.comparison
         name, factor = c.dominant()
@@ -426,9 +426,9 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Materials = "steel,al
     'undetermined'
     """
     from contact.rolling import log_loads
-    from contact.rotor.mechanics import mass_properties, normal_reactions
     from contact.viscoelastic.loss import loss_data
     from contact.viscoelastic.mechanisms import compare_mechanisms
+    from rotor import mass_properties, normal_reactions
     from surfmet.mechanics.material_spec import material_pair, parse_materials
 
     mats = material_pair(materials, hardness=hardness)

@@ -1,4 +1,4 @@
-"""Figures of the rotor's law-of-motion analysis (:mod:`contact.rotor`)."""
+"""Figures of the rotor's law-of-motion analysis (:mod:`rotor`)."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import numpy as np
 from surfmet.plots._style import finish, new_figure
 
 #: The paper's model of the law of motion (constant acceleration from rest at the first
-#: mark, :data:`contact.rotor.family.MODELS`): the baseline the residual figure and the
+#: mark, :data:`rotor.MODELS`): the baseline the residual figure and the
 #: demo's table compare the chosen models with.
 PAPER_MODEL = "rest"
 
@@ -99,7 +99,7 @@ def residual_figure(
 def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
     """Angle against time for every test, with the paper's parabola of each group (through
     the mean times) and each test's chosen model."""
-    from contact.rotor.forward import PARAM_NAMES, crossing_times
+    from rotor import PARAM_NAMES, crossing_times
 
     fig, ax = new_figure(1, 1, size=(6.4, 4.8))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
@@ -143,7 +143,7 @@ def law_of_motion_figure(analysis: Any, path: str | Path | None = None) -> Any:
 def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -> Any:
     """The chosen models' smooth acceleration along the run, ``eps0 - eta (phi - phi0) -
     gamma omega``, per test: where the groups differ, at the start or along the way."""
-    from contact.rotor.forward import PARAM_NAMES, crossing_times
+    from rotor import PARAM_NAMES, crossing_times
 
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
@@ -167,7 +167,7 @@ def acceleration_profile_figure(analysis: Any, path: str | Path | None = None) -
 def rolling_law_figure(inference: Any, path: str | Path | None = None,
                        label: str = "") -> Any:
     """``lambda`` implied by the two groups' accelerations against the assumed equivalent
-    slope (:func:`contact.rotor.inference.infer_rolling_law`), with its 16-84 % band."""
+    slope (:func:`rotor.infer_rolling_law`), with its 16-84 % band."""
     infs = inference if isinstance(inference, (list, tuple)) else [(label, inference)]
     fig, ax = new_figure(1, 1, size=(6.4, 4.2))
     for lab, inf in infs:

@@ -1,4 +1,4 @@
-"""Figure of the rotor verdict (:mod:`contact.rotor.verdict`): the acceleration read off the
+"""Figure of the rotor verdict (:mod:`rotor._verdict`): the acceleration read off the
 frames along the track per group, with the joint model over it, and the exponent the offset
 needs against the assumed slope."""
 
@@ -16,8 +16,7 @@ _COLOURS = ("tab:blue", "tab:orange")
 
 
 def _track_panel(ax: Any, v: Any) -> None:
-    from contact.rotor.joint import local_accelerations
-    from contact.rotor.track import track_acceleration
+    from rotor import local_accelerations, track_acceleration
 
     data, sh, gw = v.data, v.shared, v.groupwise
     radius = v.rig.ball_radius if v.rig is not None else 0.02
@@ -50,7 +49,7 @@ def _track_panel(ax: Any, v: Any) -> None:
 
 
 def _lambda_panel(ax: Any, v: Any) -> None:
-    from contact.rotor.rig import solve_lambda
+    from rotor import solve_lambda
 
     e, o, rig = v.exponent, v.offset, v.rig
     lo = max(e.slope_lower_bound * 1.02, 1e-6)
@@ -74,7 +73,7 @@ def _difference_panel(ax: Any, v: Any) -> None:
     """The groups' difference along the track: the joint model's with its two-standard-error
     band (group-specific tracks; the shared offset's interval when one track explains both),
     the model-free windowed points, and what lambda = 4/3 gives with the arm at its bound."""
-    from contact.rotor.verdict import frame_windows
+    from rotor import frame_windows
 
     o = v.offset
     radius = v.rig.ball_radius if v.rig is not None else 0.02
@@ -96,7 +95,7 @@ def _difference_panel(ax: Any, v: Any) -> None:
     ax.axhline(o.value, color="tab:blue", ls=":", lw=1.0,
                label=f"constant offset on one shared track ({o.value:+.3f})")
     if v.arm is not None:
-        from contact.rotor.sensitivity import settling_experiment
+        from rotor import settling_experiment
 
         e = settling_experiment(v)
         ax.axhline(e.rows[0].offset_4_3, color="tab:red", ls="--", lw=1.2,

@@ -1,0 +1,186 @@
+"""The rig of a rotor table (what the verdict needs to turn an offset into an exponent), and
+the exponent ``lambda`` of ``M_r = s_r N**lambda`` an offset between two groups needs.
+
+On a shared track two groups of one rotor (same mass ``M``, inertia ``J``, rolling radius
+``R``; only the ball loads differ) accelerate by
+
+    eps_g = [M g R sin(theta) - s_r sum_balls N**lambda] / (J + M R^2)
+
+(Alaci et al. 2022, Eqs. 47-49), so the offset of group A over group B is
+``s_r (sum_B N**lambda - sum_A N**lambda) / (J + M R^2)``, zero at ``lambda = 1`` when the
+load sums are equal. ``s_r`` follows from the mean torque
+``M g R sin(theta) - eps_mean (J + M R^2)``, which needs the slope ``theta``; without it the
+slope is bounded below by the mean acceleration (the torque cannot be negative) and the
+paper's "slopes smaller than one degree" bound it above.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from scipy.optimize import brentq
+from scipy.stats import nct
+from scipy.stats import t as student_t
+
+from contact.errors import ContactInputError
+from rotor._mechanics import G_STANDARD, mass_properties, normal_reactions
+from rotor._paper import FPS, MARK_STEP
+from rotor._tables import GROUPS as PAPER_COLLARS
+
+__all__ = ["RIG_KEYS", "Rig", "RigGroup", "launches_needed", "offset_for_lambda", "paper_rig",
+           "rig_from_mapping", "slope_lower_bound", "solve_lambda"]
+
+RIG_KEYS = ("ball_radius_m", "mass_kg", "axial_inertia_kg_m2", "fps", "step_deg", "slope_rad",
+            "groups")
+"""The keys of a rig file (``slope_rad`` optional)."""
+UPPER_SLOPE = math.radians(1.0)
+"""Slope assumed when none is given: the paper's "tilting angle smaller than one degree"."""
+LAMBDA_RANGE = (0.05, 20.0)
+
+
+@dataclass(frozen=True)
+class RigGroup:
+    """A group of launches: its ball loads (N) and the table columns it ran."""
+
+    name: str
+    ball_loads: tuple[float, float]
+    columns: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Rig:
+    """The rotor and camera (SI): ``ball_radius`` (m), ``mass`` (kg), ``axial_inertia``
+    (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None);
+    ``e_star``: the ball-plate contact's composite modulus (Pa) that sets the friction arm's
+    Hertz bound (:mod:`rotor._arm`), None for the paper's steel on aluminium;
+    ``plate``: what it is, in words."""
+
+    ball_radius: float
+    mass: float
+    axial_inertia: float
+    fps: float
+    step: float
+    slope: float | None
+    groups: tuple[RigGroup, ...]
+    e_star: float | None = None
+    plate: str = ""
+
+    @property
+    def rolling_inertia(self) -> float:
+        """``J + M R²`` (kg m²): divides every torque in the equation of motion."""
+        return self.axial_inertia + self.mass * self.ball_radius**2
+
+    def group(self, name: str) -> RigGroup:
+        for g in self.groups:
+            if g.name == name:
+                return g
+        raise ContactInputError(f"the rig has no group {name!r}")
+
+
+def _positive(d: Mapping, key: str) -> float:
+    v = d.get(key)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+        raise ContactInputError(f"rig: {key} must be a positive number (SI), got {v!r}")
+    return float(v)
+
+
+def rig_from_mapping(d: Mapping) -> Rig:
+    """A :class:`Rig` from the keys of a rig file (:data:`RIG_KEYS`), checked."""
+    if not isinstance(d, Mapping):
+        raise ContactInputError("rig: the file must hold one JSON object")
+    unknown = sorted(set(d) - set(RIG_KEYS))
+    missing = sorted(set(RIG_KEYS) - {"slope_rad"} - set(d))
+    if unknown or missing:
+        raise ContactInputError(f"rig: unknown keys {unknown} / missing keys {missing}; a rig "
+                                f"file holds exactly {', '.join(RIG_KEYS)} (slope_rad optional)")
+    slope = None
+    if d.get("slope_rad") is not None:
+        slope = _positive(d, "slope_rad")
+        if slope >= math.pi / 2:
+            raise ContactInputError(f"rig: slope_rad {slope!r} is not below pi/2")
+    groups = d["groups"]
+    if not isinstance(groups, Mapping) or len(groups) != 2:
+        raise ContactInputError("rig: groups must name exactly two groups, {NAME: {ball_loads_N:"
+                                " [N1, N2], columns: [...]}}")
+    out = []
+    for name, g in groups.items():
+        loads = g.get("ball_loads_N") if isinstance(g, Mapping) else None
+        cols = g.get("columns") if isinstance(g, Mapping) else None
+        if (not isinstance(loads, list) or len(loads) != 2 or not all(
+                isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+                and x > 0 for x in loads)):
+            raise ContactInputError(f"rig: group {name!r}: ball_loads_N must be two loads > 0 "
+                                    f"(N), got {loads!r}")
+        if not isinstance(cols, list) or not all(isinstance(c, str) for c in cols):
+            raise ContactInputError(f"rig: group {name!r}: columns must be a list of names")
+        if len(cols) < 2:
+            raise ContactInputError(f"rig: group {name!r} has {len(cols)} launch; the verdict "
+                                    f"needs at least 2 per group")
+        out.append(RigGroup(str(name), (float(loads[0]), float(loads[1])), tuple(cols)))
+    return Rig(_positive(d, "ball_radius_m"), _positive(d, "mass_kg"),
+               _positive(d, "axial_inertia_kg_m2"), _positive(d, "fps"),
+               math.radians(_positive(d, "step_deg")), slope, tuple(out))
+
+
+def paper_rig() -> Rig:
+    """The paper's rotor (:mod:`rotor._mechanics`), camera and Table 3's groups."""
+    groups = []
+    for name, collar in PAPER_COLLARS.items():
+        loads = normal_reactions(mass_properties(collar_offset=collar))
+        groups.append(RigGroup(name, loads, tuple(f"{name}{i}" for i in (1, 2, 3))))
+    p = mass_properties(collar_offset="symmetric")
+    return Rig(p.ball_radius, p.mass, p.axial_inertia, FPS, MARK_STEP, None, tuple(groups))
+
+
+def slope_lower_bound(rig: Rig, mean_acceleration: float, g: float = G_STANDARD) -> float:
+    """Smallest slope (rad) that gives the mean acceleration with no rolling friction."""
+    s = mean_acceleration * rig.rolling_inertia / (rig.mass * g * rig.ball_radius)
+    return math.asin(min(max(s, 0.0), 1.0))
+
+
+def offset_for_lambda(lam: float, rig: Rig, minuend: str, subtrahend: str, slope: float,
+                      mean_acceleration: float, g: float = G_STANDARD) -> float:
+    """Offset ``eps_minuend - eps_subtrahend`` (rad/s²) that ``M_r = s_r N**lam`` gives on a
+    shared track of ``slope`` (rad) at the observed mean acceleration."""
+    torque = rig.mass * g * rig.ball_radius * math.sin(slope) - mean_acceleration * \
+        rig.rolling_inertia
+    sa = sum(n**lam for n in rig.group(minuend).ball_loads)
+    sb = sum(n**lam for n in rig.group(subtrahend).ball_loads)
+    s_r = 2.0 * torque / (sa + sb)
+    return s_r * (sb - sa) / rig.rolling_inertia
+
+
+def solve_lambda(offset: float, rig: Rig, minuend: str, subtrahend: str, slope: float,
+                 mean_acceleration: float) -> float:
+    """The ``lambda`` whose offset is ``offset`` (NaN where none in 0.05-20 gives it)."""
+    def f(lam: float) -> float:
+        return offset_for_lambda(lam, rig, minuend, subtrahend, slope, mean_acceleration) - offset
+
+    lo, hi = LAMBDA_RANGE
+    grid = [lo + (hi - lo) * i / 400 for i in range(401)]
+    vals = [f(x) for x in grid]
+    for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:]):
+        if fa == 0:
+            return a
+        if fa * fb < 0:
+            return float(brentq(f, a, b, xtol=1e-10))
+    return math.nan
+
+
+def launches_needed(effect: float, launch_sd: float, alpha: float = 0.02,
+                    power: float = 0.9, most: int = 100000) -> int | None:
+    """Launches per group for a two-sided two-sample t test at ``alpha`` to detect
+    ``effect`` with ``power`` when launches scatter by ``launch_sd`` (noncentral t)."""
+    if not (effect and launch_sd > 0 and math.isfinite(launch_sd)):
+        return None
+    n = 2
+    while n <= most:
+        dof = 2 * n - 2
+        crit = float(student_t.ppf(1 - alpha / 2, dof))
+        nc = abs(effect) / (launch_sd * math.sqrt(2.0 / n))
+        if float(nct.sf(crit, dof, nc)) >= power:
+            return n
+        n = n + 1 if n < 50 else int(n * 1.05) + 1
+    return None
