@@ -50,13 +50,15 @@ class ConvergenceError(ContactError, RuntimeError):
 
     See Also
     --------
-    contact.solve_normal : raises it (``max_iter``, ``tol``).
+    contact.solve_normal : raises it (``SolveOptions.max_iter``, ``SolveOptions.tol``).
 
     Examples
     --------
-    >>> from contact import ConvergenceError, solve_normal, sphere_gap
+    >>> from contact import ConvergenceError, SolveOptions, solve_normal, sphere_gap
+    >>> from contact.grid import gap_grid
+    >>> grid = gap_grid(sphere_gap(32, 1e-5, 0.02), 1e-5)
     >>> try:
-    ...     solve_normal(sphere_gap(32, 1e-5, 0.02), 1e-5, e_star=5.9e10, load=10.0, max_iter=2)
+    ...     solve_normal(grid, e_star=5.9e10, load=10.0, options=SolveOptions(max_iter=2))
     ... except ConvergenceError as exc:
     ...     print(exc.iterations, exc.residual > 1e-6)
     2 True

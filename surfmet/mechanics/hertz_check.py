@@ -287,6 +287,7 @@ def hertz_check(
     >>> hertz_check(radius=0.02, load=10.0, grid=64).hertz_holds
     True
     """
+    from contact import DomainSpec
     from contact.hertzcheck import check_sphere
     from surfmet.mechanics.material_spec import material_pair
     from surfmet.units import parse_force, parse_length
@@ -314,7 +315,8 @@ def hertz_check(
     check = check_sphere(
         radius, load, mats,
         roughness=None if pair is None else pair.composite(offset),
-        sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
+        sigma=prep.sigma, hardness=hardness,
+        domain=DomainSpec(grid=grid, max_grid=max_grid, on_edge=on_edge),
     )
     notes = [*prep.notes, *check.notes]
     if hardness is None:
