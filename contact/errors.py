@@ -79,8 +79,8 @@ class EdgeContactError(ContactError, RuntimeError):
 
     Examples
     --------
-    >>> from contact import solve_sphere
-    >>> solve_sphere(0.02, 10.0, 5.9e10, grid=32, size=1e-4, on_edge="raise")
+    >>> from contact import DomainSpec, solve_sphere
+    >>> solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=32, size=1e-4), on_edge="raise")
     Traceback (most recent call last):
     ...
     contact.errors.EdgeContactError: contact reaches the edge of the 0.1 mm domain: ...
@@ -97,10 +97,10 @@ class EdgeContactWarning(UserWarning):
     says so:
 
     >>> import warnings
-    >>> from contact import EdgeContactWarning, solve_sphere
+    >>> from contact import DomainSpec, EdgeContactWarning, solve_sphere
     >>> with warnings.catch_warnings(record=True) as caught:
     ...     warnings.simplefilter("always")
-    ...     res = solve_sphere(0.02, 10.0, 5.9e10, grid=32, size=1e-4)
+    ...     res = solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=32, size=1e-4))
     >>> caught[0].category is EdgeContactWarning, res.solve.edge_contact
     (True, False)
     """
@@ -111,8 +111,8 @@ class ContactMemoryError(ContactInputError):
 
     Examples
     --------
-    >>> from contact import solve_sphere
-    >>> solve_sphere(0.02, 10.0, 5.9e10, grid=100000, max_grid=None)
+    >>> from contact import DomainSpec, solve_sphere
+    >>> solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=100000, max_grid=None))
     Traceback (most recent call last):
     ...
     contact.errors.ContactMemoryError: a 100000 x 100000 contact grid needs about ...

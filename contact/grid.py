@@ -49,6 +49,16 @@ class Grid:
     pitch : (float, float), optional
         The pitch (dx, dy) exactly as the caller chose it; default the spacing of the
         first two centres.
+
+    Examples
+    --------
+    A gap array of pitch 1 µm as the grid a solver takes (:func:`gap_grid`):
+
+    >>> import numpy as np
+    >>> from contact.grid import gap_grid
+    >>> grid = gap_grid(np.zeros((4, 8)), 1e-6, periodic=True)
+    >>> grid.shape, grid.dx, grid.periodic
+    ((4, 8), 1e-06, True)
     """
 
     x: np.ndarray

@@ -67,17 +67,15 @@ def _count(f: object) -> int:
     return sum(p.name not in ("self", "cls") for p in inspect.signature(f).parameters.values())
 
 
-def test_the_walk_sees_the_solvers_and_the_set_ups():
+def test_no_public_function_of_contact_takes_more_than_eight_parameters():
     names = _callables()
+    # the walk sees the solvers and the set-ups (on main: 21, 11, 13, 17 and 11 parameters)
     for expected in ("contact.bem.solver.solve_normal", "contact.setups.ball_on_plate.solve_sphere",
                      "contact.setups.ball_on_plate.SphereContact.solve",
                      "contact.rolling.sphere_sweep", "contact.geometry.auto_domain"):
         assert expected in names
     assert len(names) > 60
-
-
-def test_no_public_function_of_contact_takes_more_than_eight_parameters():
-    over = {name: _count(f) for name, f in _callables().items() if _count(f) > MOST}
+    over = {name: _count(f) for name, f in names.items() if _count(f) > MOST}
     assert over == {}, f"public functions over {MOST} parameters: {over}"
 
 

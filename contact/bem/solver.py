@@ -132,7 +132,8 @@ def solve_normal(
         p_init = None
 
     problem = Problem(
-        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
+        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta;
+        # the influence kernel is opts.kernel (SolveOptions admits "love", this operator's)
         gap=(h * e_star).ravel(), grid=grid,
         operator=convolution(ny, nx, float(dx), float(dy), grid.periodic),
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
@@ -312,9 +313,8 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
     gap = np.maximum(g, 0.0)
     gap[p > 0] = 0.0
     return build_result(
-        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=grid.x,
-        y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
-        periodic=grid.periodic, approach=delta,
+        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, grid=grid,
+        e_star=e_star, hardness=hardness, approach=delta,
         iterations=state.iteration, residual=state.residual, converged=ok, tolerance=tol,
         method="normal BEM" + (", elastic-plastic" if hardness is not None else ""),
         extra=extra,

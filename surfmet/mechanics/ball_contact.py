@@ -248,7 +248,7 @@ def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
 DOMAIN_KEYWORDS = ("grid", "size", "periodic", "max_grid", "on_edge")
 
 
-def engine_settings(**options: Any) -> tuple[Any, Any]:
+def _engine_settings(**options: Any) -> tuple[Any, Any]:
     """The engine's :class:`contact.DomainSpec` and :class:`contact.SolveOptions` from a
     facade's flat keywords (``grid``, ``size``, ``periodic``, ``max_grid``, ``on_edge``;
     ``tol``, ``max_iter``, ``callback``...): the one translation of every ball facade."""
@@ -293,7 +293,7 @@ def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
     from contact.errors import EdgeContactWarning
     from contact.setups.ball_on_plate import solve_sphere
 
-    domain, solve = engine_settings(max_grid=max_grid, **options)
+    domain, solve = _engine_settings(max_grid=max_grid, **options)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", EdgeContactWarning)
         res = solve_sphere(
