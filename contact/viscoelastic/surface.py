@@ -270,7 +270,8 @@ def _result(op: RollingOperator, grid: Grid, p: np.ndarray, res: Any, W: float,
     trailing, leading = edges_1d(x, p[row])
     mu = float((p.sum(axis=0) * x).sum() * op.dx * op.dy / (W * radius)) if radius else \
         float("nan")
-    return RollingResult(x=frozen(x), y=frozen(y), pressure=frozen(p), displacement=frozen(u),
+    cells = Grid(x=frozen(x), y=frozen(y), pitch=(op.dx, op.dy))
+    return RollingResult(grid=cells, pressure=frozen(p), displacement=frozen(u),
                          gap=frozen(np.where(on, 0.0, np.maximum(gap, 0.0))), approach=delta,
                          load=W, radius=radius, speed=v, leading=leading, trailing=trailing,
                          rolling_resistance=mu, solve=record, gap_residual=resid,
