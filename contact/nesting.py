@@ -11,7 +11,10 @@ viscoelastic rolling solve (:mod:`contact.viscoelastic.surface`) and steady roll
 - :func:`coarsen`: the mean of each 2 x 2 block (a gap, a coarse cell's mean height);
 - :func:`prolong`: bilinear interpolation from the coarse centres to the fine ones (two
   passes of :func:`prolong_axis`);
-- :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid.
+- :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid
+  (its pitch exactly doubled, its centres the means of the fine ones, its gap coarsened):
+  the one coarsening of all three solvers, down to :data:`MIN_COARSE` cells a side
+  (steady rolling: :data:`MIN_COARSE_ROLLING`).
 """
 
 from __future__ import annotations
