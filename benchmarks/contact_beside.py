@@ -188,14 +188,13 @@ def run_contact(exe: str, n: int, case: Case, workdir: Path, timeout: float = 30
 def run_ours(n: int, creepages: list[float]) -> dict:
     """Our normal solve, free rolling and prescribed creepages on the same grid."""
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
     from contact.tangential import Creepage, sphere_grid, steady_rolling
 
     _, _, c, a = pair()
     grid = sphere_grid(RADIUS, HALF * a, n)
     res: dict = {}
     t = time.perf_counter()
-    nr = solve_normal(gap_grid(grid.h, grid.dx), e_star=c.e_star, load=LOAD)
+    nr = solve_normal(grid, e_star=c.e_star, load=LOAD)
     res["normal"] = {"wall": time.perf_counter() - t, "pmax": nr.pmax,
                      "approach": nr.approach, "n_contact": int(np.count_nonzero(nr.contact))}
     runs = [("free", {"fx": 0.0})] + [(Case("creep", x).name, {"creepage": Creepage(x)})
@@ -276,12 +275,11 @@ def reference(exe: str, sizes: list[int], creepages: list[float], folder: Path) 
 def _warm() -> None:
     # compiled kernels load from the numba cache on first use: not the solvers' time
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
     from contact.tangential import sphere_grid, steady_rolling
 
     _, _, c, a = pair()
     g = sphere_grid(RADIUS, HALF * a, 16)
-    solve_normal(gap_grid(g.h, g.dx), e_star=c.e_star, load=LOAD)
+    solve_normal(g, e_star=c.e_star, load=LOAD)
     steady_rolling(g, c, LOAD, MU, fx=0.0)
 
 

@@ -35,7 +35,6 @@ def _best(fun, repeats: int) -> tuple[float, object]:
 
 def free_rolling(sizes: list[int], repeats: int) -> None:
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
     from contact.hertz import hertz_sphere
     from contact.materials import material
     from contact.tangential import pair_constants, sphere_grid, steady_rolling
@@ -48,11 +47,11 @@ def free_rolling(sizes: list[int], repeats: int) -> None:
     # one small solve of each first: the compiled kernels load from the numba cache on
     # first use, which is not the solvers' time
     warm = sphere_grid(radius, 1.25 * a, 32)
-    solve_normal(gap_grid(warm.h, warm.dx), e_star=c.e_star, load=load)
+    solve_normal(warm, e_star=c.e_star, load=load)
     steady_rolling(warm, c, load, mu, fx=0.0)
     for n in sizes:
         grid = sphere_grid(radius, 1.25 * a, n)
-        tn, _ = _best(lambda g=grid: solve_normal(gap_grid(g.h, g.dx), e_star=c.e_star, load=load),
+        tn, _ = _best(lambda g=grid: solve_normal(g, e_star=c.e_star, load=load),
                       repeats)
         tr, r = _best(lambda g=grid: steady_rolling(g, c, load, mu, fx=0.0), repeats)
         print(f"{n:5d}{tn:12.3f}{tr:13.3f}{tr / tn:8.1f}{r.creepage.xi:12.4e}"

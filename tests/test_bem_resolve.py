@@ -35,7 +35,7 @@ def ball():
     x, y = np.meshgrid(grid.x, grid.y)
     # a thousandth of Hertz's approach a^2/R, off centre
     bump = 1e-3 * a**2 / 0.02 * np.exp(-((x - 0.3 * a)**2 + y**2) / (0.4 * a)**2)
-    p0 = solve_normal(gap_grid(grid.h, grid.dx), e_star=STEEL_AL.e_star, load=5.0,
+    p0 = solve_normal(grid, e_star=STEEL_AL.e_star, load=5.0,
                       options=SolveOptions(tol=1e-10)).pressure
     return grid, grid.h + bump, np.asarray(p0)
 

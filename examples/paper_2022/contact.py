@@ -218,19 +218,14 @@ def main(argv: list[str]) -> int:
     t0 = time.time()
     for centre in progress(centres, total=len(centres), desc="track positions"):
         rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy, centre=centre)
-        common = dict(roughness=rough, roughness_rms=prep.sigma)
-        hy = sphere_sweep(
-            RADIUS, e_star, loads, dissipation=Dissipation(model="hysteresis"), **common
-        )
+        rms = prep.sigma  # the plastic band's roughness, as the scans give it
+        hy = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+                          dissipation=Dissipation(model="hysteresis", roughness_rms=rms))
         frozen_f = np.array([hysteresis_work(r, RADIUS, kinematics="frozen")
                              for r in hy.results])
-        pl = sphere_sweep(
-            RADIUS,
-            e_star,
-            loads,
-            dissipation=Dissipation(model="plastic", hardness=hardness),
-            **common,
-        )
+        pl = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+                          dissipation=Dissipation(model="plastic", hardness=hardness,
+                                                  roughness_rms=rms))
         per_model["hysteresis"].append(hy.moments)
         per_model["frozen"].append(frozen_f * RADIUS)
         per_model["plastic"].append(pl.moments)
