@@ -150,21 +150,24 @@ def write_surfaces(folder: Path, sizes: list[int]) -> None:
 
 def run_ours(n: int) -> dict:
     """CPU times and answers of our non-adhesive and adhesive solves at size n."""
+    from contact import SolveOptions
     from contact.adhesion import ExponentialLaw
     from contact.adhesion.flat import adhesive_flat
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     z = surface(n)
     dx, p0, tol = CASE["box_side"] / n, CASE["mean_pressure"], CASE["tolerance"]
     h, e_star = z.max() - z, CASE["e_star"]
     load = p0 * z.size * dx * dx
-    kw = dict(e_star=e_star, periodic=True, tol=tol, workers=1, edge="ignore")
+    kw = dict(e_star=e_star, options=SolveOptions(tol=tol, workers=1, edge="ignore"))
     t0 = time.process_time()
-    bare = solve_normal(h, dx, load=load, **kw)
+    bare = solve_normal(gap_grid(h, dx, periodic=True), load=load, **kw)
     t_bare = time.process_time() - t0
     gap = float(np.mean(np.asarray(bare.gap)))
     t0 = time.process_time()
-    more = solve_normal(h, dx, load=1.01 * load, initial=bare.pressure, **kw)
+    more = solve_normal(gap_grid(h, dx, periodic=True), load=1.01 * load,
+                        initial=bare.pressure, **kw)
     t_stiff = time.process_time() - t0
     stiffness = 0.01 * p0 / (gap - float(np.mean(np.asarray(more.gap))))
     law = ExponentialLaw(CASE["work_of_adhesion"], CASE["range"])
@@ -186,13 +189,15 @@ def warm(n: int) -> None:
     influence spectrum, which both solves share, so that every timed run finds it (else
     the first run's non-adhesive time includes it, 0.4 s at 512^2, and that run's ratio
     comes out low)."""
+    from contact import SolveOptions
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     z = surface(n)
     dx = CASE["box_side"] / n
-    solve_normal(z.max() - z, dx, load=CASE["mean_pressure"] * z.size * dx * dx,
-                 e_star=CASE["e_star"], periodic=True, tol=CASE["tolerance"], workers=1,
-                 edge="ignore")
+    solve_normal(gap_grid(z.max() - z, dx, periodic=True),
+                 load=CASE["mean_pressure"] * z.size * dx * dx, e_star=CASE["e_star"],
+                 options=SolveOptions(tol=CASE["tolerance"], workers=1, edge="ignore"))
 
 
 def _row(name: str, ours: float, theirs: float | None) -> str:

@@ -21,8 +21,10 @@ sys.path[:0] = [str(ROOT), str(ROOT / "tests")]  # this checkout's packages, tes
 def main() -> None:
     from contact_synth import rough_surface
 
+    from contact import SolveOptions
     from contact.adhesion import ExponentialLaw, adhesive_problem, solve_adhesive
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=256)
@@ -39,8 +41,8 @@ def main() -> None:
     ad = solve_adhesive(adhesive_problem(h, dx, args.e_star, law), approach, tol=1e-6)
     t_ad = time.process_time() - t0
     t0 = time.process_time()
-    bare = solve_normal(h, dx, e_star=args.e_star, approach=ad.approach, periodic=True,
-                        tol=1e-6, workers=1)
+    bare = solve_normal(gap_grid(h, dx, periodic=True), e_star=args.e_star, approach=ad.approach,
+                        options=SolveOptions(tol=1e-6, workers=1))
     t_bare = time.process_time() - t0
     area = h.size * dx * dx
     print(f"n {args.n}  adhesive {t_ad:.2f} s CPU ({ad.iterations} iterations), load "

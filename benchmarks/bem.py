@@ -38,8 +38,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact import SolveOptions
 from contact.bem import solve_normal
 from contact.geometry import contact_extent, sphere_gap
+from contact.grid import gap_grid
 from contact.halfspace.convolution import convolution
 from contact.hertz import hertz_sphere
 from contact.materials import composite_modulus, material
@@ -93,7 +95,8 @@ def make_problem(kind: str, n: int) -> Problem:
 # -- solvers: each returns (pressure (n, n) in Pa, iterations or None) -------------------
 
 def run_surfmet(prob: Problem, tol: float) -> tuple[np.ndarray, int]:
-    res = solve_normal(prob.gap, prob.dx, e_star=E_STAR, load=W, tol=tol, strict=False)
+    res = solve_normal(gap_grid(prob.gap, prob.dx), e_star=E_STAR, load=W,
+                       options=SolveOptions(tol=tol, strict=False))
     return np.asarray(res.pressure), sum(it for *_, it in res.solve.counters["levels"])
 
 
@@ -212,7 +215,8 @@ def edge_demo(names: list[str], n: int = 256) -> None:
         said = [str(w.message)[:60] for w in caught if "edge" in str(w.message).lower()]
         flag = ""
         if name == "surfmet":
-            res = solve_normal(prob.gap, dx, e_star=E_STAR, load=W, tol=1e-6)
+            res = solve_normal(gap_grid(prob.gap, dx), e_star=E_STAR, load=W,
+                               options=SolveOptions(tol=1e-6))
             flag = f"; result.touches_edge = {res.touches_edge}"
         print(f"#   {name:17s} pressure on the edge cells: {'yes' if edge(p) else 'no'}; "
               f"maximum pressure on the edge: {'yes' if on_edge else 'no'}; "

@@ -194,7 +194,7 @@ def run_ours(n: int, creepages: list[float]) -> dict:
     grid = sphere_grid(RADIUS, HALF * a, n)
     res: dict = {}
     t = time.perf_counter()
-    nr = solve_normal(grid.h, grid.dx, e_star=c.e_star, load=LOAD)
+    nr = solve_normal(grid, e_star=c.e_star, load=LOAD)
     res["normal"] = {"wall": time.perf_counter() - t, "pmax": nr.pmax,
                      "approach": nr.approach, "n_contact": int(np.count_nonzero(nr.contact))}
     runs = [("free", {"fx": 0.0})] + [(Case("creep", x).name, {"creepage": Creepage(x)})
@@ -279,7 +279,7 @@ def _warm() -> None:
 
     _, _, c, a = pair()
     g = sphere_grid(RADIUS, HALF * a, 16)
-    solve_normal(g.h, g.dx, e_star=c.e_star, load=LOAD)
+    solve_normal(g, e_star=c.e_star, load=LOAD)
     steady_rolling(g, c, LOAD, MU, fx=0.0)
 
 

@@ -14,7 +14,7 @@ from importlib import resources
 from _timing import min_time_and_result
 
 from contact import composite_modulus, hertz_sphere, material
-from contact.roughcontact.greenwood_tripp import greenwood_tripp
+from contact.roughcontact.greenwood_tripp import Asperities, greenwood_tripp
 from rotor import BALL_RADIUS, HERTZ_CHECK_LOAD, paper_ball_loads
 
 
@@ -31,7 +31,7 @@ def main() -> None:
     print(f"summit parameters of the paper's pair (two PSDs): {1e3 * t:.1f} ms")
     steel, alu = material("steel"), material("aluminium")
     e_star = composite_modulus(steel, alu)
-    kw = dict(sigma_s=sp.sigma_s, density=sp.density, summit_radius=sp.radius)
+    kw = dict(asperities=Asperities.of(sp))
     for load in (HERTZ_CHECK_LOAD, *paper_ball_loads().values()):
         for hardness in (None, alu.hardness):
             t, sol = min_time_and_result(lambda load=load, hardness=hardness: greenwood_tripp(
@@ -45,7 +45,7 @@ def main() -> None:
         sig = alpha * hz.a**2 / radius
         beta = sig / 1e-3
         t, sol = min_time_and_result(lambda sig=sig, beta=beta: greenwood_tripp(
-            load, radius, e, sigma_s=sig, density=0.05 / (beta * sig), summit_radius=beta))
+            load, radius, e, asperities=Asperities(sig, 0.05 / (beta * sig), beta)))
         print(f"generic population, α = {alpha:5.2f}: {1e3 * t:6.1f} ms "
               f"(a*/a0 = {sol.a_star / hz.a:.3f})")
 

@@ -70,6 +70,7 @@ def iteration_child(n: int, repeats: int) -> dict:
     import numpy as np
 
     import surfmet
+    from contact import DomainSpec, SolveOptions
     from contact.bem.state import SolverStats  # live counters, read in the callback
     from contact.halfspace.convolution import convolution
     from contact.materials import composite_modulus, material
@@ -81,7 +82,7 @@ def iteration_child(n: int, repeats: int) -> dict:
                         surfmet.read(DATA / "paper_ball.x3p"))
     e_star = composite_modulus(material("steel"), material("aluminium"))
     rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy)
-    prob = SphereContact(0.02, e_star, 10.0, roughness=rough, grid=n)
+    prob = SphereContact(0.02, e_star, 10.0, roughness=rough, domain=DomainSpec(grid=n))
     stamps: list[float] = []
     stats = SolverStats()
     t0 = time.perf_counter()
@@ -91,7 +92,7 @@ def iteration_child(n: int, repeats: int) -> dict:
         stamps.append(time.perf_counter())
         counts.append((stats.fft_single, stats.fft_double))
 
-    res = prob.solve(10.0, callback=tick, stats=stats, on_edge="warn")
+    res = prob.solve(10.0, on_edge="warn", options=SolveOptions(callback=tick, stats=stats))
     total = time.perf_counter() - t0
     k = len(stamps) - 1
     per_it = (stamps[-1] - stamps[0]) / k if k > 0 else float("nan")

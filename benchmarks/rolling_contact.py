@@ -47,11 +47,11 @@ def free_rolling(sizes: list[int], repeats: int) -> None:
     # one small solve of each first: the compiled kernels load from the numba cache on
     # first use, which is not the solvers' time
     warm = sphere_grid(radius, 1.25 * a, 32)
-    solve_normal(warm.h, warm.dx, e_star=c.e_star, load=load)
+    solve_normal(warm, e_star=c.e_star, load=load)
     steady_rolling(warm, c, load, mu, fx=0.0)
     for n in sizes:
         grid = sphere_grid(radius, 1.25 * a, n)
-        tn, _ = _best(lambda g=grid: solve_normal(g.h, g.dx, e_star=c.e_star, load=load),
+        tn, _ = _best(lambda g=grid: solve_normal(g, e_star=c.e_star, load=load),
                       repeats)
         tr, r = _best(lambda g=grid: steady_rolling(g, c, load, mu, fx=0.0), repeats)
         print(f"{n:5d}{tn:12.3f}{tr:13.3f}{tr / tn:8.1f}{r.creepage.xi:12.4e}"
@@ -70,13 +70,14 @@ def sweep() -> None:
 
 
 def compare() -> None:
+    from contact import DomainSpec
     from contact.materials import composite_modulus, material
     from contact.rolling import sphere_sweep
     from contact.tangential.microslip import microslip_sweep
 
     steel, al = material("steel"), material("aluminium")
     loads = np.geomspace(3.97, 5.36, 4)
-    hyst = sphere_sweep(0.02, composite_modulus(steel, al), loads, grid=128)
+    hyst = sphere_sweep(0.02, composite_modulus(steel, al), loads, domain=DomainSpec(grid=128))
     print(f"{'load N':>8}{'hysteresis a_h=1':>18}{'microslip free':>16}"
           f"{'microslip T/N=0.003':>21}{'ratio free/hyst':>17}")
     free = microslip_sweep(0.02, steel, al, loads, 0.3, grid=32)

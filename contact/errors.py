@@ -50,13 +50,15 @@ class ConvergenceError(ContactError, RuntimeError):
 
     See Also
     --------
-    contact.solve_normal : raises it (``max_iter``, ``tol``).
+    contact.solve_normal : raises it (``SolveOptions.max_iter``, ``SolveOptions.tol``).
 
     Examples
     --------
-    >>> from contact import ConvergenceError, solve_normal, sphere_gap
+    >>> from contact import ConvergenceError, SolveOptions, solve_normal, sphere_gap
+    >>> from contact.grid import gap_grid
+    >>> grid = gap_grid(sphere_gap(32, 1e-5, 0.02), 1e-5)
     >>> try:
-    ...     solve_normal(sphere_gap(32, 1e-5, 0.02), 1e-5, e_star=5.9e10, load=10.0, max_iter=2)
+    ...     solve_normal(grid, e_star=5.9e10, load=10.0, options=SolveOptions(max_iter=2))
     ... except ConvergenceError as exc:
     ...     print(exc.iterations, exc.residual > 1e-6)
     2 True
@@ -77,8 +79,8 @@ class EdgeContactError(ContactError, RuntimeError):
 
     Examples
     --------
-    >>> from contact import solve_sphere
-    >>> solve_sphere(0.02, 10.0, 5.9e10, grid=32, size=1e-4, on_edge="raise")
+    >>> from contact import DomainSpec, solve_sphere
+    >>> solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=32, size=1e-4), on_edge="raise")
     Traceback (most recent call last):
     ...
     contact.errors.EdgeContactError: contact reaches the edge of the 0.1 mm domain: ...
@@ -95,10 +97,10 @@ class EdgeContactWarning(UserWarning):
     says so:
 
     >>> import warnings
-    >>> from contact import EdgeContactWarning, solve_sphere
+    >>> from contact import DomainSpec, EdgeContactWarning, solve_sphere
     >>> with warnings.catch_warnings(record=True) as caught:
     ...     warnings.simplefilter("always")
-    ...     res = solve_sphere(0.02, 10.0, 5.9e10, grid=32, size=1e-4)
+    ...     res = solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=32, size=1e-4))
     >>> caught[0].category is EdgeContactWarning, res.solve.edge_contact
     (True, False)
     """
@@ -109,8 +111,8 @@ class ContactMemoryError(ContactInputError):
 
     Examples
     --------
-    >>> from contact import solve_sphere
-    >>> solve_sphere(0.02, 10.0, 5.9e10, grid=100000, max_grid=None)
+    >>> from contact import DomainSpec, solve_sphere
+    >>> solve_sphere(0.02, 10.0, 5.9e10, domain=DomainSpec(grid=100000, max_grid=None))
     Traceback (most recent call last):
     ...
     contact.errors.ContactMemoryError: a 100000 x 100000 contact grid needs about ...

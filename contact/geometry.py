@@ -160,6 +160,73 @@ class Domain:
         return centred_grid(self.n, self.dx)
 
 
+#: What a ball-on-plate solve may do when the contact reaches the domain's edge.
+ON_EDGE = ("enlarge", "warn", "raise")
+
+
+@dataclass(frozen=True)
+class DomainSpec:
+    """What a caller asks of a ball's computational domain (each field overrides a rule of
+    :func:`auto_domain`; the defaults leave every choice to it).
+
+    Attributes
+    ----------
+    grid : int, optional
+        Cells per side (at least 8; rounded up to even).
+    size : float, optional
+        Side length (m).
+    max_grid : int or None
+        Largest automatic grid (cells per side); None: the roughness data's own pixel at
+        any size that fits in memory (native resolution).
+    smooth_grid : int
+        Cells per side of a smooth ball (256 gives the Hertz peak pressure to ~4e-6).
+    margin : float
+        Half-side over the estimated contact radius.
+    periodic : bool
+        Periodic domain (the ball then has periodic images; meant for comparisons); not a
+        rule of the size: the solvers read it.
+    on_edge : {"enlarge", "warn", "raise"}
+        What a ball-on-plate solve does when the contact pressure reaches the domain's edge
+        (:class:`contact.setups.ball_on_plate.SphereContact`): enlarge the domain and solve
+        again, return the truncated result with a warning, or raise.
+    max_enlarge : int
+        Most enlargements before giving up with :class:`contact.errors.EdgeContactError`.
+
+    Examples
+    --------
+    >>> DomainSpec(grid=64).max_grid
+    1024
+    """
+
+    grid: int | None = None
+    size: float | None = None
+    max_grid: int | None = 1024
+    smooth_grid: int = 256
+    margin: float = 1.25
+    periodic: bool = False
+    on_edge: str = "enlarge"
+    max_enlarge: int = 4
+
+    def __post_init__(self) -> None:
+        if self.on_edge not in ON_EDGE:
+            raise ContactInputError(f"on_edge must be one of {ON_EDGE}, got {self.on_edge!r}")
+        if self.size is not None:
+            positive(self.size, "the domain size", "m")
+        if self.grid is not None and (int(self.grid) != self.grid or self.grid < 8):
+            raise ContactInputError(
+                f"the grid must be an integer of at least 8 cells per side, got {self.grid!r}")
+
+
+def domain_spec(spec: DomainSpec | None) -> DomainSpec:
+    """``spec``, or the automatic choice where None; anything else refused in one line."""
+    if spec is None:
+        return DomainSpec()
+    if not isinstance(spec, DomainSpec):
+        raise ContactInputError(
+            f"domain must be a contact.DomainSpec, got {type(spec).__name__}")
+    return spec
+
+
 def contact_extent(radius: float, load: float, e_star: float, roughness_rms: float = 0.0,
                    hardness: float | None = None) -> float:
     """Estimated radius (m) inside which a rough ball may touch the plate.
@@ -183,16 +250,12 @@ def auto_domain(
     *,
     roughness_rms: float = 0.0,
     roughness_dx: float | None = None,
-    grid: int | None = None,
-    size: float | None = None,
-    max_grid: int | None = 1024,
-    smooth_grid: int = 256,
-    margin: float = 1.25,
     hardness: float | None = None,
+    spec: DomainSpec | None = None,
 ) -> Domain:
     """Choose the domain side and grid for a ball of radius R under load W.
 
-    Rules (each overridable):
+    Rules (each overridable by a field of ``spec``, :class:`DomainSpec`):
 
     - side = 2 * margin * r_c with r_c from :func:`contact_extent` (Hertz radius, or the
       fully plastic radius when a ``hardness`` makes it larger, widened by the roughness);
@@ -224,11 +287,12 @@ def auto_domain(
     >>> print(dom.n, f"{dom.dx * 1e6:.2f} µm", dom.reason)
     256 1.34 µm 2.5 x the Hertz radius; 256 cells for a smooth ball
     """
+    spec = domain_spec(spec)
+    grid, size, max_grid = spec.grid, spec.size, spec.max_grid
+    smooth_grid, margin = spec.smooth_grid, spec.margin
     a = hertz_sphere(radius, load, e_star).a
     if size is not None:
-        size = positive(size, "the domain size", "m")
-    if grid is not None and int(grid) < 8:
-        raise ContactInputError(f"the grid needs at least 8 cells per side, got {grid!r}")
+        size = float(size)
     rough = roughness_rms > 0 and roughness_dx is not None
     side = size if size is not None else 2.0 * margin * contact_extent(
         radius, load, e_star, roughness_rms if rough else 0.0, hardness=hardness)

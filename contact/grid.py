@@ -15,7 +15,8 @@ Three ways of placing the centres are in use, each with its constructor:
   (the sphere's apex on a cell centre; the ball-on-plate setup);
 - :func:`sphere_grid` / :func:`cylinder_grid`: ``n`` elements spanning
   ``[-half_width, half_width]`` symmetrically (CONTACT's potential contact area);
-- :func:`scan_grid`: cell ``(0, 0)`` at a given ``origin``, as a scan's pixels.
+- :func:`scan_grid`: cell ``(0, 0)`` at a given ``origin``, as a scan's pixels
+  (:func:`gap_grid`: the same around a gap array).
 
 The composite roughness ``z`` is the sum of the two surfaces' heights, each measured
 outward from its own body, so that it *closes* the gap: ``h = x^2/(2R) - z``.
@@ -48,6 +49,16 @@ class Grid:
     pitch : (float, float), optional
         The pitch (dx, dy) exactly as the caller chose it; default the spacing of the
         first two centres.
+
+    Examples
+    --------
+    A gap array of pitch 1 µm as the grid a solver takes (:func:`gap_grid`):
+
+    >>> import numpy as np
+    >>> from contact.grid import gap_grid
+    >>> grid = gap_grid(np.zeros((4, 8)), 1e-6, periodic=True)
+    >>> grid.shape, grid.dx, grid.periodic
+    ((4, 8), 1e-06, True)
     """
 
     x: np.ndarray
@@ -132,6 +143,16 @@ def scan_grid(shape: tuple[int, int], dx: float, dy: float | None = None, *,
     dy = dx if dy is None else dy
     return Grid(x=origin[0] + np.arange(nx) * dx, y=origin[1] + np.arange(ny) * dy, h=h,
                 periodic=periodic, pitch=(dx, dy))
+
+
+def gap_grid(h: np.ndarray, dx: float, dy: float | None = None, *,
+             origin: tuple[float, float] = (0.0, 0.0), periodic: bool = False) -> Grid:
+    """The grid of a gap array ``h`` (m) laid like a scan's pixels (:func:`scan_grid`):
+    the one way from loose arrays to the :class:`Grid` a solver takes."""
+    h = np.asarray(h, dtype=float)
+    if h.ndim != 2:
+        raise ContactInputError(f"the gap must be a 2D array, got shape {h.shape}")
+    return scan_grid(h.shape, dx, dy, origin=origin, periodic=periodic, h=h)
 
 
 def _check_radius(radius: float, n: int, least: int) -> None:

@@ -38,19 +38,18 @@ Hertz at the same load:
 Verdict: Hertz holds when the scan resolves the contact, alpha < 0.05 *and* the measured
 macroscopic comparison agrees (profile within 10 % of p0, effective radius and approach
 within 10 %, yield on at most 1 % of the nominal area and no first yield at the Hertz
-scale). The peak pressure and the real
-contact area are reported with their numbers but do not decide: they are asperity-scale
-quantities that grow (pmax) or shrink (area) as the lateral resolution of the scan is
-refined (self-affine roughness has no smallest asperity), so no resolution-independent
-limit exists for them. The profile, radius, approach and yield criteria average over the
-asperities and are stable under refinement.
+scale). The peak pressure and the real contact area are reported with their numbers but do
+not decide: they are asperity-scale quantities that grow (pmax) or shrink (area) as the
+lateral resolution of the scan is refined (self-affine roughness has no smallest asperity),
+so no resolution-independent limit exists for them. The profile, radius, approach and yield
+criteria average over the asperities and are stable under refinement.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -66,6 +65,10 @@ from contact.hertz import HertzSphere, hertz_sphere
 from contact.material_pair import MaterialPair, modulus
 from contact.roughstats import combined_rms, gjm_alpha
 from contact.setups.composite import CompositeRoughness
+
+if TYPE_CHECKING:  # the check builds its solves lazily; only the annotations name these
+    from contact.bem.options import SolveOptions
+    from contact.geometry import DomainSpec
 
 #: GJM (1984): Hertz is accurate to a few percent below this alpha.
 ALPHA_LIMIT = 0.05
@@ -400,11 +403,8 @@ def check_sphere(
     roughness: CompositeRoughness | None = None,
     sigma: float | None = None,
     hardness: float | None = None,
-    grid: int | None = None,
-    size: float | None = None,
-    max_grid: int | None = 1024,
-    on_edge: str = "enlarge",
-    tol: float = 1e-6,
+    domain: DomainSpec | None = None,
+    options: SolveOptions | None = None,
 ) -> SphereCheck:
     """Solve a (rough) ball on a plate elastically and, with a hardness, elastic-plastically,
     and compare with Hertz.
@@ -414,9 +414,8 @@ def check_sphere(
     radius, load : float
         R (m), W (N).
     e_star : float or MaterialPair
-        E* (Pa), or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for
-        bit). A pair's default hardness is not applied: ``hardness`` alone adds the
-        elastic-plastic solve (give ``pair.hardness``).
+        E* (Pa), or a resolved :class:`contact.material_pair.MaterialPair` (its E*); its
+        default hardness is not applied: ``hardness`` alone adds the plastic solve.
     roughness : CompositeRoughness, optional
         Composite roughness under the ball, with its pitch and the apex position
         (:class:`contact.setups.CompositeRoughness`); None for smooth surfaces.
@@ -424,11 +423,11 @@ def check_sphere(
         Combined rms roughness for alpha (m); default the rms of the finite points of the
         roughness after removing its least-squares plane (0 without roughness).
     hardness : float, optional
-        Hardness of the softer body (Pa); adds the elastic-plastic solve, on the domain the
-        elastic solve ended with, warm-started from it
-        (:meth:`contact.setups.ball_on_plate.SphereContact.solve` with ``hardness``).
-    grid, size, max_grid, on_edge, tol
-        Passed to :class:`contact.setups.ball_on_plate.SphereContact` and its ``solve``.
+        Hardness of the softer body (Pa); adds the elastic-plastic solve, on the elastic
+        solve's final domain, warm-started from it (``SphereContact.solve(hardness=)``).
+    domain, options : DomainSpec, SolveOptions, optional
+        The domain (with the elastic solve's ``on_edge``) and how each solve runs, as for
+        :class:`contact.setups.ball_on_plate.SphereContact` and its ``solve``.
 
     Returns
     -------
@@ -457,11 +456,12 @@ def check_sphere(
     The bundled plate's roughness (α ≈ 2.6) is far from Hertz's smooth surfaces:
 
     >>> import surfmet
-    >>> from contact import CompositeRoughness, check_sphere
+    >>> from contact import CompositeRoughness, DomainSpec, check_sphere
     >>> from surfmet.data import path
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> rough = CompositeRoughness(plate.heights[128:384, 384:640], plate.dx)
-    >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=rough, grid=64).comparison
+    >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=rough,
+    ...                      domain=DomainSpec(grid=64)).comparison
     >>> print(check.hertz_holds, f"alpha = {check.alpha:.1f}")
     False alpha = 2.6
     """
@@ -478,16 +478,16 @@ def check_sphere(
             sigma = combined_rms(z)
     # memory check: the elastic and the plastic result are kept together, and the
     # plastic solve needs about one result's worth more (contact.bem.memory)
-    problem = SphereContact(radius, e_star, load, roughness=roughness, grid=grid, size=size,
-                            max_grid=max_grid, results=1 if hardness is None else 3)
-    elastic = problem.solve(load, on_edge=on_edge, tol=tol)
+    problem = SphereContact(radius, e_star, load, roughness=roughness, domain=domain,
+                            results=1 if hardness is None else 3)
+    elastic = problem.solve(load, options=options)
     notes = list(elastic.notes)
     plastic = None
     if hardness is not None:
         # the domain is the elastic one (never enlarged again): a plastic contact that
         # reaches its edge is reported as truncated
         plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
-                                tol=tol)
+                                options=options)
         notes += [n for n in plastic.notes if n not in notes]
     comp = compare_with_hertz(elastic, radius=radius, sigma=float(sigma), plastic=plastic,
                               hardness=hardness, scan_pixel=scan_pixel)

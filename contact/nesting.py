@@ -11,7 +11,10 @@ viscoelastic rolling solve (:mod:`contact.viscoelastic.surface`) and steady roll
 - :func:`coarsen`: the mean of each 2 x 2 block (a gap, a coarse cell's mean height);
 - :func:`prolong`: bilinear interpolation from the coarse centres to the fine ones (two
   passes of :func:`prolong_axis`);
-- :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid.
+- :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid
+  (its pitch exactly doubled, its centres the means of the fine ones, its gap coarsened):
+  the one coarsening of all three solvers, down to :data:`MIN_COARSE` cells a side
+  (steady rolling: :data:`MIN_COARSE_ROLLING`).
 """
 
 from __future__ import annotations
@@ -22,8 +25,15 @@ import numpy as np
 
 from contact.grid import Grid
 
-#: Grids smaller than this (in either direction) are solved directly by the normal BEM.
+#: The coarsest grid (cells a side) a nested solve descends to: below it the normal BEM
+#: and the viscoelastic rolling solve start from cold (a conjugate-gradient iteration on
+#: a 64^2 grid costs less than interpolating a start for it).
 MIN_COARSE = 64
+#: Steady rolling's coarsest grid: each of its Newton-GMRES products costs several
+#: convolutions, so a start from a 32^2 grid still pays (measured in
+#: :mod:`contact.tangential.nested`: 128^2 from 32^2 takes 43 products against 48 from
+#: 64^2 and 32^2); passed as ``smallest`` by that family alone.
+MIN_COARSE_ROLLING = 32
 
 
 def coarsen(field: np.ndarray) -> np.ndarray:
@@ -62,7 +72,8 @@ def coarse_grid(grid: Grid, smallest: int = MIN_COARSE) -> Grid | None:
     grid does not halve (:func:`can_nest`) or is a line contact."""
     if grid.line or not can_nest(grid.ny, grid.nx, smallest):
         return None
-    pitch = None if grid.pitch is None else (2 * grid.pitch[0], 2 * grid.pitch[1])
+    # the pitch exactly doubled (not re-read from the averaged centres, which may round)
     return replace(grid, x=0.5 * (grid.x[0::2] + grid.x[1::2]),
                    y=0.5 * (grid.y[0::2] + grid.y[1::2]),
-                   h=None if grid.h is None else coarsen(grid.h), pitch=pitch)
+                   h=None if grid.h is None else coarsen(grid.h),
+                   pitch=(2 * grid.dx, 2 * grid.dy))

@@ -293,7 +293,8 @@ def sphere_study(
     progress : callable, optional
         Called with a short label before each level.
     """
-    from contact.geometry import auto_domain
+    from contact.bem.options import SolveOptions
+    from contact.geometry import DomainSpec, auto_domain
     from contact.hertzcheck import compare_with_hertz
     from contact.setups.ball_on_plate import SphereContact
 
@@ -304,20 +305,21 @@ def sphere_study(
     sig = float(np.std(z)) if sigma is None else float(sigma)
     if size is None:
         size = auto_domain(radius, load, e_star, roughness_rms=sig, roughness_dx=dx,
-                           grid=16, hardness=hardness).size
+                           hardness=hardness, spec=DomainSpec(grid=16)).size
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     notes: list[str] = []
     levels = []
     for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
                                         level=False):
         px = rough.dx
-        problem = SphereContact(radius, e_star, load, roughness=rough, grid=n, size=n * px)
-        elastic = problem.solve(load, on_edge=on_edge, tol=tol)
+        problem = SphereContact(radius, e_star, load, roughness=rough,
+                                domain=DomainSpec(grid=n, size=n * px, on_edge=on_edge))
+        elastic = problem.solve(load, options=SolveOptions(tol=tol))
         plastic = None
         if hardness is not None:
             # on the elastic domain, warm-started from the elastic solution
             plastic = problem.solve(load, hardness=hardness, initial=elastic, on_edge="warn",
-                                    tol=tol)
+                                    options=SolveOptions(tol=tol))
         comp = compare_with_hertz(elastic, radius=radius, sigma=sig, plastic=plastic,
                                   hardness=hardness, scan_pixel=max(px, rough.dy))
         main = plastic if plastic is not None else elastic
@@ -365,10 +367,12 @@ def rolling_study(
     """lambda_eff of :func:`contact.rolling.sphere_sweep` at each coarsening factor.
 
     The domain is sized for the largest load at the native pitch and kept for every
-    level; ``sweep_kwargs`` go to :func:`~contact.rolling.sphere_sweep` (model, hardness,
-    alpha_h, share, kinematics...).
+    level; ``sweep_kwargs`` go to :func:`~contact.rolling.sphere_sweep` (``dissipation``:
+    model, hardness, alpha_h, share, kinematics...; ``options``); the roughness rms of
+    the plastic band is the native map's unless the dissipation gives one.
     """
-    from contact.geometry import auto_domain
+    from contact.dissipation import dissipation_of
+    from contact.geometry import DomainSpec, auto_domain
     from contact.rolling import sphere_sweep
 
     e_star = positive(modulus(e_star), "E*", "Pa")
@@ -378,15 +382,18 @@ def rolling_study(
     z, dy, shape = _levels(roughness, dx, dy, factors)
     notes: list[str] = []
     sig = float(np.std(z))
+    diss = dissipation_of(sweep_kwargs.pop("dissipation", None))
+    if diss.roughness_rms is None:
+        diss = dataclasses.replace(diss, roughness_rms=sig)
     size = auto_domain(radius, float(loads[-1]), e_star, roughness_rms=sig, roughness_dx=dx,
-                       grid=16, hardness=sweep_kwargs.get("hardness")).size
+                       hardness=diss.hardness, spec=DomainSpec(grid=16)).size
     centre, n1 = _plan(shape, dx, dy, size, tuple(factors), max_grid)
     levels = []
     for k, rough, n, t0 in _coarse_maps(z, dx, dy, centre, n1, factors, progress,
                                         level=True):
         px = rough.dx
-        sw = sphere_sweep(radius, e_star, loads, roughness=rough, roughness_rms=sig, grid=n,
-                          size=n * px, **sweep_kwargs)
+        sw = sphere_sweep(radius, e_star, loads, dissipation=diss, roughness=rough,
+                          domain=DomainSpec(grid=n, size=n * px), **sweep_kwargs)
         lo, hi = sw.lambda_ci
         if sw.fit is None:
             notes.append(f"x{k}: no lambda_eff (" + "; ".join(sw.notes) + ")")

@@ -63,18 +63,27 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from contact._validate import positive
+from contact.dissipation import (  # noqa: F401 (MODELS, KINEMATICS: re-exported)
+    KINEMATICS,
+    MODELS,
+    Dissipation,
+    check_fraction,
+    dissipation_of,
+)
 from contact.errors import ContactInputError
 from contact.exponent import ExponentFit, dissipating_exponents
 from contact.material_pair import MaterialPair, modulus
 from contact.setups.composite import CompositeRoughness
 
-KINEMATICS = ("rolling", "frozen")
-MODELS = ("hysteresis", "plastic")
+if TYPE_CHECKING:  # the solves load lazily; only the annotations name these
+    from contact.bem.options import SolveOptions
+    from contact.geometry import DomainSpec
+
 _DIRECTIONS = {"+x": (1, 1.0), "-x": (1, -1.0), "+y": (0, 1.0), "-y": (0, -1.0)}
 
 
@@ -85,13 +94,6 @@ def _direction(direction: str) -> tuple[int, float]:
         raise ContactInputError(
             f"direction must be one of {sorted(_DIRECTIONS)}, got {direction!r}"
         ) from None
-
-
-def _check_fraction(value: float, what: str) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and 0 < v <= 1):
-        raise ContactInputError(f"{what} must lie in (0, 1], got {value!r}")
-    return v
 
 
 def _fields(result: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, bool]:
@@ -143,7 +145,7 @@ def hysteresis_work(
     """
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
-    share = _check_fraction(share, "the displacement share")
+    share = check_fraction(share, "the displacement share")
     axis, sign = _direction(direction)
     p, u, x, y, da, line = _fields(result)
     if line and axis != 1:
@@ -311,19 +313,10 @@ def sphere_sweep(
     e_star: float | MaterialPair,
     loads: Iterable[float],
     *,
-    model: str = "hysteresis",
+    dissipation: Dissipation | None = None,
     roughness: CompositeRoughness | None = None,
-    roughness_rms: float | None = None,
-    hardness: float | None = None,
-    alpha_h: float = 1.0,
-    share: float = 1.0,
-    kinematics: str = "rolling",
-    band: float = 0.05,
-    grid: int | None = None,
-    size: float | None = None,
-    max_grid: int | None = 1024,
-    tol: float = 1e-6,
-    confidence: float = 0.95,
+    domain: DomainSpec | None = None,
+    options: SolveOptions | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
 ) -> RollingSweep:
     """Rolling resistance of a (rough) ball on a plate over a load sweep.
@@ -338,27 +331,16 @@ def sphere_sweep(
         :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
     loads : iterable of float
         Normal loads (N); see :func:`log_loads`.
-    model : {"hysteresis", "plastic"}
-        Dissipation model (module notes). "plastic" needs ``hardness``.
+    dissipation : Dissipation, optional
+        The dissipation model and its settings (:class:`contact.dissipation.Dissipation`:
+        model, hardness, alpha_h, share, kinematics, band, roughness_rms, the level of
+        the exponent's confidence interval); default elastic hysteresis, alpha_h = 1.
     roughness : CompositeRoughness, optional
         Composite roughness with its pitch and the apex position (a track position), as
         for :class:`contact.setups.ball_on_plate.SphereContact`.
-    roughness_rms : float, optional
-        Rms roughness for the plastic band width (default: from ``roughness``).
-    hardness : float, optional
-        Flow pressure of the softer body (Pa).
-    alpha_h : float
-        Hysteresis loss fraction (hysteresis model); M_r is proportional to it.
-    share : float
-        Displacement share of the lossy body (hysteresis model; 1 = both bodies).
-    kinematics : {"rolling", "frozen"}
-        See :func:`hysteresis_work`.
-    band : float
-        See :func:`plastic_work`.
-    grid, size, max_grid, tol
-        Domain and solver settings (:class:`contact.setups.ball_on_plate.SphereContact`).
-    confidence : float
-        Level of the exponent's confidence interval.
+    domain, options : DomainSpec, SolveOptions, optional
+        Domain and solver settings, as for :class:`contact.setups.ball_on_plate.SphereContact`
+        and its ``solve``.
     progress : callable, optional
         Wraps the iterable of loads (e.g. a progress bar).
 
@@ -384,32 +366,28 @@ def sphere_sweep(
     --------
     Elastic hysteresis under a smooth ball grows as W^(4/3):
 
-    >>> from contact import sphere_sweep
-    >>> print(f"{sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], grid=64).fit.exponent:.2f}")
+    >>> from contact import DomainSpec, sphere_sweep
+    >>> sweep = sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], domain=DomainSpec(grid=64))
+    >>> print(f"{sweep.fit.exponent:.2f}")
     1.33
     """
     from contact.setups.ball_on_plate import SphereContact
 
     e_star = modulus(e_star)  # a resolved pair or its E*
-    if model not in MODELS:
-        raise ContactInputError(f"model must be one of {MODELS}, got {model!r}")
-    if model == "plastic" and hardness is None:
-        raise ContactInputError("the plastic model needs the hardness of the softer body")
-    positive(alpha_h, "alpha_h")
-    if kinematics not in KINEMATICS:
-        raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
-    _check_fraction(share, "the displacement share")
+    d = dissipation_of(dissipation)
+    model, hardness, alpha_h, share = d.model, d.hardness, d.alpha_h, d.share
+    kinematics, band = d.kinematics, d.band
     w = sweep_loads(loads)
-    problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness, grid=grid,
-                            size=size, max_grid=max_grid, results=w.size + 1)
-    rms = problem.roughness_rms if roughness_rms is None else float(roughness_rms)
+    problem = SphereContact(radius, e_star, float(w[-1]), roughness=roughness, domain=domain,
+                            results=w.size + 1)
+    rms = problem.roughness_rms if d.roughness_rms is None else float(d.roughness_rms)
     forces = np.zeros(w.size)
     results: list[Any] = []
     notes = list(problem.notes)
     prev = None
     sequence = progress(range(w.size)) if progress is not None else range(w.size)
     for k in sequence:
-        el = problem.solve(float(w[k]), initial=prev, tol=tol)
+        el = problem.solve(float(w[k]), initial=prev, options=options)
         prev = el
         if model == "hysteresis":
             res = el
@@ -418,7 +396,7 @@ def sphere_sweep(
         else:
             # capped on the elastic domain, warm-started from the elastic solution
             res = problem.solve(float(w[k]), hardness=float(hardness), initial=el,
-                                on_edge="warn", tol=tol)
+                                on_edge="warn", options=options)
             forces[k] = plastic_work(res, radius, band=band, roughness_rms=rms)
         results.append(res)
     for r in results:
@@ -429,7 +407,7 @@ def sphere_sweep(
                 "band": band if model == "plastic" else None, "hardness": hardness,
                 "e_star": float(e_star), "grid": problem.domain.n, "dx": problem.domain.dx,
                 "roughness_rms": rms, "contact": "sphere"}
-    return _finish(model, w, forces, float(radius), settings, notes, results, confidence)
+    return _finish(model, w, forces, float(radius), settings, notes, results, d.confidence)
 
 
 def cylinder_sweep(
@@ -437,15 +415,9 @@ def cylinder_sweep(
     e_star: float,
     loads_per_length: Iterable[float],
     *,
-    alpha_h: float = 1.0,
-    share: float = 1.0,
-    kinematics: str = "rolling",
-    n: int = 1024,
-    size: float | None = None,
-    roughness: np.ndarray | None = None,
-    roughness_dx: float | None = None,
-    confidence: float = 0.95,
+    dissipation: Dissipation | None = None,
     progress: Callable[[Iterable[Any]], Iterable[Any]] | None = None,
+    **line: Any,
 ) -> RollingSweep:
     """Hysteresis rolling resistance of a cylinder (plane strain) over a load sweep.
 
@@ -458,10 +430,12 @@ def cylinder_sweep(
         Cylinder radius R (m), composite modulus E* (Pa).
     loads_per_length : iterable of float
         Loads per unit length (N/m).
-    alpha_h, share, kinematics, confidence, progress : as for :func:`sphere_sweep`
-    n, size, roughness, roughness_dx : optional
-        Cells and width of the domain (m), a roughness profile and its pitch, as for
-        :func:`contact.solve_cylinder`.
+    dissipation, progress : as for :func:`sphere_sweep`
+        (the hysteresis model only: alpha_h, share, kinematics, confidence)
+    **line
+        ``n``, ``size``, ``roughness``, ``roughness_dx``: cells and width of the domain
+        (m; default 2.5 contact widths of the largest load), a roughness profile and its
+        pitch, as for :func:`contact.solve_cylinder`.
 
     Returns
     -------
@@ -483,18 +457,23 @@ def cylinder_sweep(
     from contact.hertz import hertz_cylinder
     from contact.setups.line import solve_cylinder
 
-    positive(alpha_h, "alpha_h")
+    d = dissipation_of(dissipation)
+    if d.model != "hysteresis":
+        raise ContactInputError("a line-contact sweep has the hysteresis model only")
     w = sweep_loads(loads_per_length)
-    side = size if size is not None else 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
+    n = int(line.setdefault("n", 1024))
+    if line.get("size") is None:
+        line["size"] = 5.0 * hertz_cylinder(radius, float(w[-1]), e_star).a
     forces = np.zeros(w.size)
     results = []
     sequence = progress(range(w.size)) if progress is not None else range(w.size)
     for k in sequence:
-        res = solve_cylinder(radius, float(w[k]), e_star, n=n, size=side, roughness=roughness,
-                             roughness_dx=roughness_dx)
-        forces[k] = alpha_h * hysteresis_work(res, radius, kinematics=kinematics, share=share)
+        res = solve_cylinder(radius, float(w[k]), e_star, **line)
+        forces[k] = d.alpha_h * hysteresis_work(res, radius, kinematics=d.kinematics,
+                                                share=d.share)
         results.append(res)
-    settings = {"model": "hysteresis", "alpha_h": alpha_h, "share": share,
-                "kinematics": kinematics, "e_star": float(e_star), "grid": int(n),
-                "dx": side / n, "contact": "cylinder"}
-    return _finish("hysteresis", w, forces, float(radius), settings, [], results, confidence)
+    settings = {"model": "hysteresis", "alpha_h": d.alpha_h, "share": d.share,
+                "kinematics": d.kinematics, "e_star": float(e_star), "grid": n,
+                "dx": line["size"] / n, "contact": "cylinder"}
+    return _finish("hysteresis", w, forces, float(radius), settings, [], results,
+                   d.confidence)

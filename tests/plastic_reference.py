@@ -25,7 +25,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.signal import fftconvolve
 
+from contact import SolveOptions
 from contact.bem import solve_normal
+from contact.grid import gap_grid
 
 
 @dataclass(frozen=True, eq=False)
@@ -89,8 +91,8 @@ def fixed_point_plastic(
     best = worst = math.inf
     res = None
     for outer in range(1, max_outer + 1):
-        res = solve_normal(h + upl, dx, e_star=e_star, load=load, initial=p, tol=tol,
-                           origin=origin, edge="ignore")
+        res = solve_normal(gap_grid(h + upl, dx, origin=origin), e_star=e_star, load=load,
+                           initial=p, options=SolveOptions(tol=tol, edge="ignore"))
         p = np.asarray(res.pressure)
         active = (p > hardness) | (upl > 0)
         step = np.where(active, p - hardness, 0.0)

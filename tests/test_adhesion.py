@@ -15,12 +15,14 @@ import pytest
 from contact_synth import rough_surface
 from maugis_reference import md_pull_off
 
+from contact import DomainSpec, SolveOptions
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.cycle import refine_pull_off, run_branch
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw, maugis_parameter
 from contact.adhesion.solver import adhesive_problem, solve_adhesive
 from contact.bem import solve_normal
 from contact.errors import ContactInputError, ConvergenceError
+from contact.grid import gap_grid
 
 # Units in which K = 4 E* / 3 = 1, R = 1 and the Maugis length (pi w R^2 / K)^(1/3) = 0.1.
 R, E_STAR, W = 1.0, 0.75, 1e-3 / math.pi
@@ -152,7 +154,7 @@ def test_energy_balance_along_the_branches():
     """dPi = P d(delta) between equilibria (exponential law, smooth: trapezoidal rule to
     1 % of the largest step's work); and the cycle loses no more than the jumps allow."""
     law = ExponentialLaw(W, W / dugdale(1.0).sigma0)
-    ball = adhesive_ball(R, E_STAR, law, grid=48, steps=40)
+    ball = adhesive_ball(R, E_STAR, law, steps=40, domain=DomainSpec(grid=48))
     for leg in (ball.cycle.approach_leg, ball.cycle.retraction_leg):
         work = 0.5 * (leg.load[1:] + leg.load[:-1]) * np.diff(leg.surface_approach)
         assert np.abs(np.diff(leg.energy) - work).max() < 0.01 * np.abs(work).max()
@@ -170,8 +172,8 @@ def test_without_adhesion_it_is_the_periodic_bem():
     h, dx, e_star = _rough(), 1e-6, 1e11
     law = ExponentialLaw(1e-12, 1e-12)
     st = solve_adhesive(adhesive_problem(h, dx, e_star, law), 0.25e-6, tol=1e-7)
-    ref = solve_normal(h, dx, e_star=e_star, approach=st.approach, periodic=True, tol=1e-10,
-                       precision="double")
+    ref = solve_normal(gap_grid(h, dx, periodic=True), e_star=e_star, approach=st.approach,
+                       options=SolveOptions(tol=1e-10, precision="double"))
     assert st.load == pytest.approx(ref.load, rel=1e-5)
     p = np.asarray(ref.pressure)
     assert np.abs(st.pressure - p).max() < 1e-5 * p.max()
@@ -186,7 +188,7 @@ def test_adhesion_on_a_rough_flat_touches_more():
     prob = adhesive_problem(h, dx, e_star, law)
     steps = np.linspace(-0.02e-6, 0.5e-6, 8)
     leg_in, _ = run_branch(prob, steps, tol=1e-6)
-    bare = [solve_normal(h, dx, e_star=e_star, approach=d, periodic=True)
+    bare = [solve_normal(gap_grid(h, dx, periodic=True), e_star=e_star, approach=d)
             for d in leg_in.surface_approach[-3:]]
     bare_area = np.array([b.contact_area for b in bare])
     assert np.all(leg_in.contact_area[-3:] >= bare_area + 5 * dx * dx)  # 5 more pixels

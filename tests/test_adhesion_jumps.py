@@ -14,6 +14,7 @@ import warnings
 
 import numpy as np
 
+from contact import DomainSpec
 from contact.adhesion.cycle import Branch, find_jump
 from contact.record import SolveRecord
 
@@ -68,7 +69,8 @@ def test_the_smooth_ball_snaps_in_and_out():
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        cyc = adhesive_ball(1e-5, E_STAR, DugdaleLaw.from_range(0.05, 2e-9), grid=16,
-                            steps=6).cycle
+        cyc = adhesive_ball(
+            1e-5, E_STAR, DugdaleLaw.from_range(0.05, 2e-9), steps=6, domain=DomainSpec(grid=16)
+        ).cycle
     for jump in (cyc.jump_in, cyc.jump_out):
         assert jump.abrupt and jump.resolved

@@ -78,6 +78,7 @@ from johnson_wavy import pull_off as johnson_pull_off
 from maugis_reference import md_curve, md_load_at_radius, md_pull_off
 from maugis_sphere import maugis_run
 
+from contact import DomainSpec
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.cycle import refine_pull_off, run_branch
 from contact.adhesion.laws import ExponentialLaw
@@ -265,7 +266,7 @@ def test_cycle_energy_balance(case):
     1e-7 of the work done on a leg)."""
     law = (dugdale(2.0) if case == "dugdale_2"
            else ExponentialLaw(W, W / dugdale(1.0).sigma0))
-    cycle = adhesive_ball(R, E_STAR, law, grid=32, steps=24).cycle
+    cycle = adhesive_ball(R, E_STAR, law, steps=24, domain=DomainSpec(grid=32)).cycle
     released, work = _released(cycle)
     scale = float(np.abs(work).sum())
     assert released.sum() == pytest.approx(cycle.hysteresis_energy, abs=1e-6 * scale)

@@ -25,9 +25,11 @@ import numpy as np
 import pytest
 from threadpoolctl import threadpool_limits
 
+from contact import SolveOptions
 from contact.adhesion import ExponentialLaw
 from contact.adhesion.flat import adhesive_flat, gap_means
 from contact.bem import solve_normal
+from contact.grid import gap_grid
 
 sys.path.insert(0, str(Path(__file__).parent))
 import adhesive_gap_case as case
@@ -57,11 +59,12 @@ def test_adhesive_gap_means_agree_with_tamaas_on_the_same_surface(pressure):
     assert np.isclose(float(z[0, 0]), fp["z00"], rtol=1e-12)
     dx, h = case.BOX / case.N, z.max() - z
     load = pressure * z.size * dx * dx
-    kw = dict(e_star=case.E_STAR, periodic=True, tol=1e-6, edge="ignore")
+    kw = dict(e_star=case.E_STAR, options=SolveOptions(tol=1e-6, edge="ignore"))
     with threadpool_limits(limits=1, user_api="blas"):
-        bare = solve_normal(h, dx, load=load, **kw)
+        bare = solve_normal(gap_grid(h, dx, periodic=True), load=load, **kw)
         gap = float(np.mean(np.asarray(bare.gap)))
-        more = solve_normal(h, dx, load=1.01 * load, initial=bare.pressure, **kw)
+        more = solve_normal(gap_grid(h, dx, periodic=True), load=1.01 * load,
+                            initial=bare.pressure, **kw)
         stiff = 0.01 * pressure / (gap - float(np.mean(np.asarray(more.gap))))
         res = adhesive_flat(h, dx, case.E_STAR, ExponentialLaw(case.WORK, case.RANGE),
                             [pressure], [gap], [stiff], tol=1e-8)

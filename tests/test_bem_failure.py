@@ -10,6 +10,9 @@ import pytest
 from contact import (
     ContactInputError,
     ConvergenceError,
+    DomainSpec,
+    PressureBounds,
+    SolveOptions,
     composite_modulus,
     hertz_sphere,
     material,
@@ -17,6 +20,7 @@ from contact import (
 )
 from contact.bem import solve_normal
 from contact.geometry import sphere_gap
+from contact.grid import gap_grid
 from contact.setups import CompositeRoughness
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
@@ -31,7 +35,8 @@ def _gap():
 def test_non_convergence_raises_with_the_residual():
     h, dx = _gap()
     with pytest.raises(ConvergenceError) as err:
-        solve_normal(h, dx, e_star=E_STAR, load=10.0, max_iter=2, tol=1e-12, nested=False)
+        solve_normal(gap_grid(h, dx), e_star=E_STAR, load=10.0,
+                     options=SolveOptions(max_iter=2, tol=1e-12, nested=False))
     assert err.value.iterations == 2
     assert err.value.residual > 1e-12
     assert "residual" in str(err.value)
@@ -39,8 +44,8 @@ def test_non_convergence_raises_with_the_residual():
 
 def test_non_convergence_is_flagged_when_not_strict():
     h, dx = _gap()
-    res = solve_normal(h, dx, e_star=E_STAR, load=10.0, max_iter=2, tol=1e-12, nested=False,
-                       strict=False)
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=10.0,
+                       options=SolveOptions(max_iter=2, tol=1e-12, nested=False, strict=False))
     assert not res.converged
     assert res.residual > 1e-12 and res.iterations == 2
     assert res.load == pytest.approx(10.0, rel=1e-10)  # balanced even when stopped early
@@ -57,22 +62,25 @@ def test_non_convergence_is_flagged_when_not_strict():
 ])
 def test_bad_solver_input(kwargs, match):
     h, dx = _gap()
+    kwargs = dict(kwargs)
     with pytest.raises(ContactInputError, match=match):
-        solve_normal(h, dx, e_star=E_STAR, **kwargs)
+        if "hardness" in kwargs:  # the cap travels in the bounds
+            kwargs["bounds"] = PressureBounds.elastic(kwargs.pop("hardness"))
+        solve_normal(gap_grid(h, dx), e_star=E_STAR, **kwargs)
 
 
 def test_bad_gap_arrays():
     h, dx = _gap()
     with pytest.raises(ContactInputError, match="NaN everywhere"):
-        solve_normal(np.full_like(h, np.nan), dx, e_star=E_STAR, load=1.0)
+        solve_normal(gap_grid(np.full_like(h, np.nan), dx), e_star=E_STAR, load=1.0)
     holes = h.copy()
     holes[3, 4] = np.nan
     with pytest.raises(ContactInputError, match="fill"):
-        solve_normal(holes, dx, e_star=E_STAR, load=1.0)
+        solve_normal(gap_grid(holes, dx), e_star=E_STAR, load=1.0)
     with pytest.raises(ContactInputError, match="2D"):
-        solve_normal(h[0], dx, e_star=E_STAR, load=1.0)
+        solve_normal(gap_grid(h[0], dx), e_star=E_STAR, load=1.0)
     with pytest.raises(ContactInputError, match="dx"):
-        solve_normal(h, -dx, e_star=E_STAR, load=1.0)
+        solve_normal(gap_grid(h, -dx), e_star=E_STAR, load=1.0)
 
 
 @pytest.mark.parametrize(("args", "kwargs", "match"), [
@@ -100,7 +108,9 @@ def test_partially_measured_roughness_is_filled_and_reported():
     rng = np.random.default_rng(2)
     z = rng.normal(scale=1e-8, size=(200, 200))
     z[rng.random(z.shape) < 0.1] = np.nan
-    res = solve_sphere(0.02, 10.0, E_STAR, roughness=CompositeRoughness(z, 4e-6), grid=64)
+    res = solve_sphere(
+        0.02, 10.0, E_STAR, roughness=CompositeRoughness(z, 4e-6), domain=DomainSpec(grid=64)
+    )
     assert res.converged
     assert any("not measured" in note for note in res.notes)
 
@@ -109,7 +119,7 @@ def test_result_fields_are_read_only():
     # the derived scalars (load, pmax, contact area) were computed from the fields: a
     # field changed afterwards would silently contradict them
     h, dx = _gap()
-    res = solve_normal(h, dx, e_star=E_STAR, load=10.0)
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=10.0)
     for name, field in res.arrays().items():
         assert field.flags.c_contiguous, name
         with pytest.raises(ValueError, match="read-only"):

@@ -7,9 +7,18 @@ import math
 import numpy as np
 import pytest
 
-from contact import SphereContact, composite_modulus, hertz_sphere, material, solve_sphere
+from contact import (
+    DomainSpec,
+    SolveOptions,
+    SphereContact,
+    composite_modulus,
+    hertz_sphere,
+    material,
+    solve_sphere,
+)
 from contact.bem import solve_normal
 from contact.geometry import sphere_gap
+from contact.grid import gap_grid
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R, W = 0.02, 10.0
@@ -20,8 +29,8 @@ def smooth():
     hz = hertz_sphere(R, W, E_STAR)
     n = 256
     dx = 2.5 * hz.a / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W,
-                       origin=(-(n // 2) * dx, -(n // 2) * dx))
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx, origin=(-(n // 2) * dx, -(n // 2) * dx)),
+                       e_star=E_STAR, load=W)
     return hz, res
 
 
@@ -67,11 +76,11 @@ def test_approach_control_gives_the_hertz_load():
     hz = hertz_sphere(R, W, E_STAR)
     n = 128
     dx = 2.5 * hz.a / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, approach=hz.delta)
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, approach=hz.delta)
     assert res.load == pytest.approx(W, rel=1e-3)
     assert res.approach == hz.delta
     # short of contact: no load at all, and no complaint
-    none = solve_normal(sphere_gap(n, dx, R) + 1e-6, dx, e_star=E_STAR, approach=0.5e-6)
+    none = solve_normal(gap_grid(sphere_gap(n, dx, R) + 1e-6, dx), e_star=E_STAR, approach=0.5e-6)
     assert none.load == 0 and none.contact_area == 0 and none.converged
 
 
@@ -80,10 +89,13 @@ def test_mixed_and_double_precision_agree():
     n = 128
     dx = 2.5 * hz.a / n
     h = sphere_gap(n, dx, R)
-    a = solve_normal(h, dx, e_star=E_STAR, load=W, precision="mixed", tol=1e-8)
-    b = solve_normal(h, dx, e_star=E_STAR, load=W, precision="double", tol=1e-8)
+    a = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W,
+                     options=SolveOptions(precision="mixed", tol=1e-8))
+    b = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W,
+                     options=SolveOptions(precision="double", tol=1e-8))
     assert np.abs(a.pressure - b.pressure).max() < 1e-6 * hz.p0
-    c = solve_normal(h, dx, e_star=E_STAR, load=W, precondition=False, nested=False, tol=1e-8)
+    c = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W,
+                     options=SolveOptions(precondition=False, nested=False, tol=1e-8))
     assert np.abs(a.pressure - c.pressure).max() < 1e-6 * hz.p0
 
 
@@ -91,7 +103,7 @@ def test_solve_sphere_automatic_domain_and_warm_started_sweep():
     res = solve_sphere(R, W, E_STAR)
     assert res.shape == (256, 256)
     assert abs(res.pmax / res.hertz.p0 - 1) < 1e-4
-    prob = SphereContact(R, E_STAR, 12.0, grid=128)
+    prob = SphereContact(R, E_STAR, 12.0, domain=DomainSpec(grid=128))
     cold = prob.solve(11.0)
     base = prob.solve(10.0)
     warm = prob.solve(11.0, initial=base)

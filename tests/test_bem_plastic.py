@@ -27,9 +27,19 @@ from scipy.linalg import cholesky, solve_triangular
 from scipy.optimize import lsq_linear
 from scipy.signal import fftconvolve
 
-from contact import ConvergenceError, composite_modulus, hertz_sphere, material, solve_sphere
+from contact import (
+    ConvergenceError,
+    DomainSpec,
+    PressureBounds,
+    SolveOptions,
+    composite_modulus,
+    hertz_sphere,
+    material,
+    solve_sphere,
+)
 from contact.bem import solve_normal
 from contact.geometry import sphere_gap
+from contact.grid import gap_grid
 from contact.halfspace.influence import love_coefficients, self_influence
 from contact.setups import CompositeRoughness
 from contact.setups.ball_on_plate import SphereContact
@@ -100,8 +110,8 @@ def _bvls_pressure(h, dx, e_star, approach, H):
 @pytest.mark.parametrize("ratio", [1.5, 4.0, 10.0])
 def test_smooth_plastic_ball_matches_a_brute_force_solve(ratio):
     h, dx, H = _smooth_problem(ratio, 24)
-    res = solve_normal(h, dx, e_star=E_STAR, load=W, hardness=H, tol=1e-10,
-                       precision="double")
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W, bounds=PressureBounds.elastic(H),
+                       options=SolveOptions(tol=1e-10, precision="double"))
     assert res.converged and not res.touches_edge
     ref = _bvls_pressure(h, dx, E_STAR, res.approach, H)
     # the same pressure field, and the brute force at the solver's approach carries W
@@ -113,8 +123,9 @@ def test_smooth_plastic_ball_matches_a_brute_force_solve(ratio):
 def test_approach_control_matches_a_brute_force_solve():
     h, dx, H = _smooth_problem(4.0, 24)
     delta = 1.5 * HZ.delta
-    res = solve_normal(h, dx, e_star=E_STAR, approach=delta, hardness=H, tol=1e-10,
-                       precision="double")
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, approach=delta,
+                       bounds=PressureBounds.elastic(H),
+                       options=SolveOptions(tol=1e-10, precision="double"))
     assert res.converged and res.approach == delta
     ref = _bvls_pressure(h, dx, E_STAR, delta, H)
     assert np.abs(ref - res.pressure).max() < 1e-8 * H
@@ -124,7 +135,8 @@ def test_approach_control_matches_a_brute_force_solve():
 @pytest.mark.parametrize("ratio", [1.5, 4.0, 10.0])
 def test_smooth_plastic_ball_converges_and_meets_the_contact_conditions(ratio):
     h, dx, H = _smooth_problem(ratio, 128)
-    res = solve_normal(h, dx, e_star=E_STAR, load=W, hardness=H, tol=1e-8)
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W, bounds=PressureBounds.elastic(H),
+                       options=SolveOptions(tol=1e-8))
     assert res.converged and not res.touches_edge
     assert res.iterations < 100
     _check_contact_conditions(res, h, H, W)
@@ -134,9 +146,11 @@ def test_smooth_plastic_ball_converges_and_meets_the_contact_conditions(ratio):
 @pytest.mark.parametrize("ratio", [1.5, 4.0])
 def test_capped_solver_agrees_with_the_plastic_displacement_fixed_point(ratio):
     H = HZ.p0 / ratio
-    prob = SphereContact(R, E_STAR, W, grid=64, size=2.6 * max(_plastic_radius(H), HZ.a))
+    prob = SphereContact(
+        R, E_STAR, W, domain=DomainSpec(grid=64, size=2.6 * max(_plastic_radius(H), HZ.a))
+    )
     el = prob.solve(W)
-    capped = prob.solve(W, hardness=H, initial=el, on_edge="warn", tol=1e-10)
+    capped = prob.solve(W, hardness=H, initial=el, on_edge="warn", options=SolveOptions(tol=1e-10))
     fixed = fixed_point_plastic(prob, W, H, el, tol=1e-10, yield_tol=1e-6)
     # stated tolerance: the fixed point stops at p <= H (1 + 1e-6) on the yielded cells
     assert np.abs(np.asarray(fixed.pressure) - capped.pressure).max() < 1e-5 * H
@@ -153,7 +167,7 @@ def test_contact_radius_tends_to_the_fully_plastic_limit():
     fringe = []
     for ratio in (1.5, 2.5, 4.0, 10.0):
         h, dx, H = _smooth_problem(ratio, 160, side=2.4)
-        res = solve_normal(h, dx, e_star=E_STAR, load=W, hardness=H)
+        res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W, bounds=PressureBounds.elastic(H))
         assert res.converged and res.pmax <= H
         assert res.load == pytest.approx(W, rel=1e-10)
         dev.append(res.contact_radius / _plastic_radius(H) - 1)
@@ -171,7 +185,8 @@ def test_plastic_displacement_closes_the_gap():
     n = 96
     dx = 4 * HZ.a / n
     h = sphere_gap(n, dx, R)
-    res = solve_normal(h, dx, e_star=E_STAR, load=W, hardness=0.7 * HZ.p0, tol=1e-8)
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W,
+                       bounds=PressureBounds.elastic(0.7 * HZ.p0), options=SolveOptions(tol=1e-8))
     capped = res.pressure >= res.hardness
     closure = h + res.displacement - res.approach + res.plastic_displacement
     assert np.abs(closure[capped]).max() < 1e-6 * HZ.delta
@@ -182,7 +197,8 @@ def test_pressure_is_capped_and_load_balanced(ratio):
     H = ratio * HZ.p0
     n = 128
     dx = 4 * HZ.a / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, hardness=H)
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, load=W,
+                       bounds=PressureBounds.elastic(H))
     assert res.converged
     assert res.pmax <= H
     assert res.pressure.sum() * dx * dx == pytest.approx(W, rel=1e-10)
@@ -210,7 +226,7 @@ def test_paper_pair_converges_plastic_at_the_asperity_scale():
     prep = prepare_scans(str(data / "paper_plate.x3p"), str(data / "paper_ball.x3p"))
     rough = CompositeRoughness(prep.pair.roughness, prep.pair.dx)
     prob = SphereContact(R, E_STAR, W, roughness=rough, hardness=H_AL)
-    res = prob.solve(W, tol=1e-8)
+    res = prob.solve(W, options=SolveOptions(tol=1e-8))
     assert res.converged and not res.touches_edge
     _check_contact_conditions(res, prob.gap0, H_AL, W)
     # p0 < H: elastic at the Hertz scale, yet most of the real contact yields
@@ -226,14 +242,17 @@ def test_rough_ball_on_cold_and_warm_starts(seed):
     # left to step on); from no start the nested coarse grids lead the way
     zdx = 4e-6
     z = rough_surface(256, zdx, 1.5e-6, seed=seed, corr=12e-6)
-    prob = SphereContact(R, E_STAR, 1.0, roughness=CompositeRoughness(z, zdx), grid=160)
+    prob = SphereContact(
+        R, E_STAR, 1.0, roughness=CompositeRoughness(z, zdx), domain=DomainSpec(grid=160)
+    )
     el = prob.solve(1.0)
     dx = prob.domain.dx
     start = np.minimum(el.pressure, H_AL)
     assert (start == H_AL).sum() > 0.5 * (start > 0).sum()
-    warm = solve_normal(prob.gap0, dx, e_star=E_STAR, load=1.0, hardness=H_AL,
-                        initial=start, tol=1e-8)
-    cold = solve_normal(prob.gap0, dx, e_star=E_STAR, load=1.0, hardness=H_AL, tol=1e-8)
+    warm = solve_normal(gap_grid(prob.gap0, dx), e_star=E_STAR, load=1.0, initial=start,
+                        bounds=PressureBounds.elastic(H_AL), options=SolveOptions(tol=1e-8))
+    cold = solve_normal(gap_grid(prob.gap0, dx), e_star=E_STAR, load=1.0,
+                        bounds=PressureBounds.elastic(H_AL), options=SolveOptions(tol=1e-8))
     for res in (warm, cold):
         assert res.converged
         _check_contact_conditions(res, prob.gap0, H_AL, 1.0)
@@ -244,8 +263,14 @@ def test_plastic_at_asperity_scale_but_elastic_at_hertz_scale():
     assert HZ.p0 < H_AL  # the smooth ball would stay elastic
     zdx = 5e-6
     z = rough_surface(256, zdx, 0.5e-6, seed=3)
-    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, zdx), hardness=H_AL,
-                       grid=128)
+    res = solve_sphere(
+        R,
+        W,
+        E_STAR,
+        roughness=CompositeRoughness(z, zdx),
+        hardness=H_AL,
+        domain=DomainSpec(grid=128),
+    )
     assert res.converged and not res.touches_edge
     assert res.pmax <= H_AL
     assert res.load == pytest.approx(W, rel=1e-10)
@@ -254,7 +279,7 @@ def test_plastic_at_asperity_scale_but_elastic_at_hertz_scale():
     assert any("asperity scale" in note and "elastic at the Hertz scale" in note
                for note in res.notes)
     # the clean (smooth) ball with the same hardness: elastic, nothing reported
-    smooth = solve_sphere(R, W, E_STAR, hardness=H_AL, grid=128)
+    smooth = solve_sphere(R, W, E_STAR, hardness=H_AL, domain=DomainSpec(grid=128))
     assert smooth.plastic_area == 0
     assert smooth.regime == "elastic"
     assert not any("plastic" in note for note in smooth.notes)
@@ -264,14 +289,14 @@ def test_plastic_at_asperity_scale_but_elastic_at_hertz_scale():
 def test_plastic_non_convergence_raises_with_the_residual():
     h, dx, H = _smooth_problem(4.0, 128)
     with pytest.raises(ConvergenceError) as err:
-        solve_normal(h, dx, e_star=E_STAR, load=W, hardness=H, max_iter=2, tol=1e-12,
-                     nested=False)
+        solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W, bounds=PressureBounds.elastic(H),
+                     options=SolveOptions(max_iter=2, tol=1e-12, nested=False))
     assert err.value.iterations == 2
     assert err.value.residual > 1e-12
     assert "residual" in str(err.value)
     # not strict: flagged, and still a feasible, load-balanced pressure field
-    res = solve_normal(h, dx, e_star=E_STAR, load=W, hardness=H, max_iter=2, tol=1e-12,
-                       nested=False, strict=False)
+    res = solve_normal(gap_grid(h, dx), e_star=E_STAR, load=W, bounds=PressureBounds.elastic(H),
+                       options=SolveOptions(max_iter=2, tol=1e-12, nested=False, strict=False))
     assert not res.converged and res.iterations == 2
     assert res.pmax <= H
     assert res.load == pytest.approx(W, rel=1e-10)

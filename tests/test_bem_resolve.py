@@ -13,9 +13,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from contact import SolveOptions
 from contact.bem import solve_normal
 from contact.bem.solver import resolve_pressure
 from contact.errors import ConvergenceError
+from contact.grid import gap_grid
 from contact.halfspace.pair import HalfSpacePair
 from contact.hertz import hertz_sphere
 from contact.materials import material
@@ -33,7 +35,8 @@ def ball():
     x, y = np.meshgrid(grid.x, grid.y)
     # a thousandth of Hertz's approach a^2/R, off centre
     bump = 1e-3 * a**2 / 0.02 * np.exp(-((x - 0.3 * a)**2 + y**2) / (0.4 * a)**2)
-    p0 = solve_normal(grid.h, grid.dx, e_star=STEEL_AL.e_star, load=5.0, tol=1e-10).pressure
+    p0 = solve_normal(grid, e_star=STEEL_AL.e_star, load=5.0,
+                      options=SolveOptions(tol=1e-10)).pressure
     return grid, grid.h + bump, np.asarray(p0)
 
 
@@ -57,8 +60,8 @@ def test_a_given_displacement_gives_the_public_solvers_answer(ball, tol):
     displacement."""
     grid, gap, p0 = ball
     p0 = 1.1 * p0
-    ref = solve_normal(gap, grid.dx, e_star=STEEL_AL.e_star, load=5.0, initial=p0, tol=tol,
-                       edge="ignore")
+    ref = solve_normal(gap_grid(gap, grid.dx), e_star=STEEL_AL.e_star, load=5.0, initial=p0,
+                       options=SolveOptions(tol=tol, edge="ignore"))
     u0 = HalfSpacePair(64, 64, grid.dx, grid.dy, STEEL_AL).normal(p0)
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
                          initial=p0, displacement=u0, tol=tol)
@@ -89,8 +92,8 @@ def test_a_start_that_carries_nothing_starts_uniform(ball):
     from a uniform pressure, as solve_normal's warm start does, and reaches its answer
     (1e-8 of the largest pressure, both to 1e-10)."""
     grid, gap, _ = ball
-    ref = solve_normal(gap, grid.dx, e_star=STEEL_AL.e_star, load=5.0, tol=1e-10,
-                       nested=False)
+    ref = solve_normal(gap_grid(gap, grid.dx), e_star=STEEL_AL.e_star, load=5.0,
+                       options=SolveOptions(tol=1e-10, nested=False))
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
                          initial=np.zeros_like(gap), displacement=np.ones_like(gap),
                          tol=1e-10)

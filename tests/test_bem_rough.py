@@ -9,8 +9,10 @@ import pytest
 from contact_synth import rough_surface
 
 from contact import (
+    DomainSpec,
     EdgeContactError,
     EdgeContactWarning,
+    SolveOptions,
     composite_modulus,
     hertz_sphere,
     material,
@@ -26,7 +28,9 @@ ZDX = 5e-6
 @pytest.fixture(scope="module")
 def base():
     z = rough_surface(256, ZDX, 0.5e-6, seed=11)
-    return z, solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), grid=128)
+    return z, solve_sphere(
+        R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), domain=DomainSpec(grid=128)
+    )
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -37,7 +41,9 @@ def test_hidden_tilt_and_offset_do_not_change_the_result(base, seed):
     offset = rng.uniform(-50e-6, 50e-6)
     yy, xx = np.indices(z.shape)
     tilted = z + offset + sx * xx * ZDX + sy * yy * ZDX
-    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(tilted, ZDX), grid=128)
+    res = solve_sphere(
+        R, W, E_STAR, roughness=CompositeRoughness(tilted, ZDX), domain=DomainSpec(grid=128)
+    )
     for name in ("pmax", "contact_area", "load", "approach", "radius_95"):
         assert getattr(res, name) == pytest.approx(getattr(clean, name), rel=1e-8), name
     assert res.n_clusters == clean.n_clusters
@@ -66,13 +72,23 @@ def test_tilt_without_levelling_moves_the_contact_by_r_times_slope():
     slope = 4e-3  # apex shifts by R * slope = 80 um
     _yy, xx = np.indices((n, n))
     plane = -slope * xx * zdx  # plate falls away towards +x: contact moves to +x
-    res = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(plane, zdx, level=False),
-                       size=5 * hz.a, grid=128)
+    res = solve_sphere(
+        R,
+        W,
+        E_STAR,
+        roughness=CompositeRoughness(plane, zdx, level=False),
+        domain=DomainSpec(size=5 * hz.a, grid=128),
+    )
     assert res.centroid[0] == pytest.approx(-R * slope, abs=res.dx)
     assert abs(res.centroid[1]) < res.dx
     assert res.pmax == pytest.approx(hz.p0, rel=2e-3)
-    lev = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(plane, zdx, level=True),
-                       size=5 * hz.a, grid=128)
+    lev = solve_sphere(
+        R,
+        W,
+        E_STAR,
+        roughness=CompositeRoughness(plane, zdx, level=True),
+        domain=DomainSpec(size=5 * hz.a, grid=128),
+    )
     assert abs(lev.centroid[0]) < 1e-3 * res.dx
 
 
@@ -94,7 +110,7 @@ def test_scan_too_small_raises_or_warns_never_silently_truncates():
 def test_too_small_domain_is_enlarged_and_says_so():
     hz = hertz_sphere(R, W, E_STAR)
     with pytest.warns(EdgeContactWarning, match="enlarged"):
-        res = solve_sphere(R, W, E_STAR, size=1.2 * hz.a, grid=64)
+        res = solve_sphere(R, W, E_STAR, domain=DomainSpec(size=1.2 * hz.a, grid=64))
     assert not res.touches_edge
     assert res.shape[0] > 64
     assert any("enlarged" in note for note in res.notes)
@@ -104,13 +120,25 @@ def test_too_small_domain_is_enlarged_and_says_so():
 def test_enlarged_rough_domain_matches_a_large_one():
     z = rough_surface(400, ZDX, 0.3e-6, seed=21)
     with pytest.warns(EdgeContactWarning):
-        small = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), size=40 * ZDX,
-                             tol=1e-8)
+        small = solve_sphere(
+            R,
+            W,
+            E_STAR,
+            roughness=CompositeRoughness(z, ZDX),
+            domain=DomainSpec(size=40 * ZDX),
+            options=SolveOptions(tol=1e-8),
+        )
     with warnings.catch_warnings():
         warnings.simplefilter("error", EdgeContactWarning)
         m = small.shape[0] + 40
-        big = solve_sphere(R, W, E_STAR, roughness=CompositeRoughness(z, ZDX), size=m * small.dx,
-                           grid=m, tol=1e-8)
+        big = solve_sphere(
+            R,
+            W,
+            E_STAR,
+            roughness=CompositeRoughness(z, ZDX),
+            domain=DomainSpec(size=m * small.dx, grid=m),
+            options=SolveOptions(tol=1e-8),
+        )
     assert small.dx == big.dx
     assert small.pmax == pytest.approx(big.pmax, rel=1e-5)
     assert small.contact_area == pytest.approx(big.contact_area, rel=1e-9)
@@ -118,19 +146,23 @@ def test_enlarged_rough_domain_matches_a_large_one():
 
 
 def test_raw_solver_warns_when_the_contact_is_cut_by_the_domain():
+    from contact import SolveOptions
     from contact.bem import solve_normal
     from contact.geometry import sphere_gap
+    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 64
     dx = 1.6 * hz.a / n  # the Hertz disc does not fit
     with pytest.warns(EdgeContactWarning, match="truncated"):
-        res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W)
+        res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, load=W)
     assert res.touches_edge and any("truncated" in note for note in res.notes)
     with warnings.catch_warnings():
         warnings.simplefilter("error", EdgeContactWarning)
-        quiet = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, edge="ignore")
-        fits = solve_normal(sphere_gap(n, 3 * hz.a / n, R), 3 * hz.a / n, e_star=E_STAR, load=W)
+        quiet = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, load=W,
+                             options=SolveOptions(edge="ignore"))
+        fits = solve_normal(gap_grid(sphere_gap(n, 3 * hz.a / n, R), 3 * hz.a / n), e_star=E_STAR,
+                            load=W)
     assert quiet.touches_edge and not fits.touches_edge
 
 
@@ -138,7 +170,9 @@ def test_unresolved_answers_carry_a_note():
     # issue 16 items 1 and 4: a grid coarser than the contact, or a spike that carries the
     # load on a handful of cells at a pressure above E*, is said in the result's notes
     hz = hertz_sphere(R, W, E_STAR)
-    coarse = solve_sphere(R, W, E_STAR, grid=8, size=8 * 0.5 * hz.a)  # 2 cells per a0
+    coarse = solve_sphere(
+        R, W, E_STAR, domain=DomainSpec(grid=8, size=8 * 0.5 * hz.a)
+    )  # 2 cells per a0
     assert any("too coarse" in n and "2 cells per Hertz radius" in n for n in coarse.notes)
     fine = solve_sphere(R, W, E_STAR)
     assert fine.notes == ()

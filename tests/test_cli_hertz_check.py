@@ -10,7 +10,7 @@ import pytest
 from contact_synth import rough_surface
 
 import surfmet
-from contact import composite_modulus, hertz_sphere, material
+from contact import DomainSpec, composite_modulus, hertz_sphere, material
 from surfmet.cli import main
 from surfmet.model import Profile, Topography
 
@@ -158,7 +158,7 @@ def test_hierarchy_head_never_denies_a_model_within_tolerance():
     from contact.setups.ball_on_plate import SphereContact
 
     e_star = composite_modulus(material("steel"), material("aluminium"))
-    res = SphereContact(0.02, e_star, 10.0, grid=64).solve(10.0)
+    res = SphereContact(0.02, e_star, 10.0, domain=DomainSpec(grid=64)).solve(10.0)
     # a smooth solve with a large σ: every measured criterion passes, α alone fails
     comp = compare_with_hertz(res, radius=0.02, sigma=5e-6, scan_pixel=1e-6)
     assert comp.judged and not comp.hertz_holds

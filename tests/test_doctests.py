@@ -25,11 +25,15 @@ FACADE_PACKAGE = "surfmet.mechanics"
 # The modules whose docstrings hold the examples: the modules that define the face's
 # objects. test_doctest_modules_match_the_faces keeps this list equal to that set.
 DOCTEST_MODULES = (
+    "contact.bem.bounds",
+    "contact.bem.options",
     "contact.bem.result",
     "contact.bem.solver",
+    "contact.dissipation",
     "contact.errors",
     "contact.exponent",
     "contact.geometry",
+    "contact.grid",
     "contact.hertz",
     "contact.hertzcheck",
     "contact.material_pair",

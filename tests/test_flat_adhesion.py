@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import surfmet
+from contact import SolveOptions
 from contact.adhesion.flat import (
     adhesive_flat,
     attractive_pressure,
@@ -26,6 +27,7 @@ from contact.adhesion.flat import (
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.solver import adhesive_problem, solve_adhesive, solve_adhesive_at_pressure
 from contact.errors import ContactInputError
+from contact.grid import gap_grid
 from contact.setups.flat import flat_contact
 from surfmet.cli import main
 from surfmet.synth import self_affine
@@ -38,7 +40,8 @@ def rough():
     topo = self_affine(64, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
     z = np.asarray(topo.heights) - np.mean(topo.heights)
     p = np.array([1e5, 3e5, 1e6])
-    return z, p, flat_contact(z, 1e-6, pressures=p, e_star=E_STAR, periodic=True, tol=1e-8)
+    grid = gap_grid(z.max() - z, 1e-6, periodic=True)
+    return z, p, flat_contact(grid, pressures=p, e_star=E_STAR, options=SolveOptions(tol=1e-8))
 
 
 def test_attractive_pressure_counts_touching_points():

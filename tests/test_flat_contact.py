@@ -10,6 +10,7 @@ import pytest
 
 import surfmet
 from contact.errors import ContactInputError
+from contact.grid import gap_grid
 from contact.setups.flat import flat_contact
 from surfmet.cli import main
 from surfmet.synth import self_affine
@@ -18,12 +19,18 @@ N = 256
 SLOPE = 0.1
 
 
+def _surface(z, dx):
+    """The periodic grid of heights z pressed by a flat: the separation z.max() - z."""
+    z = np.asarray(z, dtype=float)
+    return gap_grid(z.max() - z, dx, periodic=True)
+
+
 def _kappa(hurst: float, seed: int) -> float:
     # Hyun et al. (2004)'s set-up: no roll-off (λ_r = L), a short cut-off of 4 pixels so
     # that each shortest wavelength is resolved, periodic; A/A0 ≈ 5 %
     topo = self_affine(N, 1.0, hurst=hurst, slope_rms=SLOPE, short_cutoff=4.0, seed=seed)
     p = 0.02 * SLOPE
-    r = flat_contact(topo.heights, 1.0, pressures=[p], e_star=1.0, periodic=True)
+    r = flat_contact(_surface(topo.heights, 1.0), pressures=[p], e_star=1.0)
     pt = r.points[0]
     assert pt.converged and 0.02 < pt.area_fraction < 0.08
     # the perimeter-corrected area (Yastrebov et al. 2015) removes the pixel bias that
@@ -48,7 +55,7 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
     topo = self_affine(128, 1e-6, hurst=0.6, slope_rms=0.05, short_cutoff=4e-6, seed=5)
     e = 10e9
     p = np.array([2e6, 5e6, 1e7, 1e7 * 1.05])
-    r = flat_contact(topo.heights, 1e-6, pressures=p[::-1], e_star=e, periodic=True,
+    r = flat_contact(_surface(topo.heights, 1e-6), pressures=p[::-1], e_star=e,
                      stiffness="solve")
     assert np.all(np.diff(r.pressure) > 0)  # returned in increasing order
     assert np.all(np.diff(r.area_fraction) > 0) and np.all(np.diff(r.mean_gap) < 0)
@@ -56,7 +63,7 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
     fd = -(p[3] - p[2]) / (r.mean_gap[3] - r.mean_gap[2])
     assert r.stiffness[2] == pytest.approx(fd, rel=0.05)
     # the default reads K off the computed curve (no extra solve): same slope within 5 %
-    rc = flat_contact(topo.heights, 1e-6, pressures=p, e_star=e, periodic=True)
+    rc = flat_contact(_surface(topo.heights, 1e-6), pressures=p, e_star=e)
     np.testing.assert_allclose(rc.mean_gap, r.mean_gap, rtol=1e-9)
     np.testing.assert_allclose(rc.stiffness[1:], r.stiffness[1:], rtol=0.05)
     # the mean gap stays below the flat's start height above the mean plane
@@ -81,11 +88,11 @@ def test_curve_stiffness_is_exact_on_the_exponential_law():
 def test_sweep_rejects_bad_input():
     z = np.random.default_rng(0).standard_normal((32, 32)) * 1e-7
     with pytest.raises(ContactInputError):
-        flat_contact(z, 1e-6, pressures=[-1.0], e_star=1e9, periodic=True)
+        flat_contact(_surface(z, 1e-6), pressures=[-1.0], e_star=1e9)
     with pytest.raises(ContactInputError):
-        flat_contact(np.zeros((32, 32)), 1e-6, pressures=[1e6], e_star=1e9, periodic=True)
+        flat_contact(_surface(np.zeros((32, 32)), 1e-6), pressures=[1e6], e_star=1e9)
     with pytest.raises(ContactInputError):
-        flat_contact(z, 1e-6, pressures=[2e9], e_star=1e9, periodic=True, hardness=1e9)
+        flat_contact(_surface(z, 1e-6), pressures=[2e9], e_star=1e9, hardness=1e9)
 
 
 @pytest.fixture(scope="module")
@@ -155,7 +162,7 @@ def test_the_engine_names_a_flat_surface():
     from contact.roughcontact import persson, summit_parameters
 
     with pytest.raises(ContactInputError, match="flat"):
-        flat_contact(np.full((32, 32), 2e-6), 1e-6, pressures=[1e6], e_star=1e9, periodic=True)
+        flat_contact(_surface(np.full((32, 32), 2e-6), 1e-6), pressures=[1e6], e_star=1e9)
     with pytest.raises(ContactInputError, match="flat"):
         summit_parameters(0.0, 0.0, 0.0)
     q = np.linspace(1e4, 1e6, 20)

@@ -19,6 +19,7 @@ from contact import composite_modulus, hertz_sphere, material
 from contact.errors import ContactInputError
 from contact.halfspace.axisymmetric import ring_influence
 from contact.roughcontact.greenwood_tripp import (
+    Asperities,
     asperity_mean_pressure,
     greenwood_tripp,
 )
@@ -28,13 +29,14 @@ from surfmet.model import Topography
 E, R, N = 70e9, 0.01, 2.0
 
 
-def _gt(alpha, *, gw=0.05, sr=1e-3, load=N, radius=R, e_star=E, **kw):
+def _gt(alpha, *, gw=0.05, sr=1e-3, load=N, radius=R, e_star=E, plastic="cap", **kw):
     """A GW population at roughness α, GW product ηβσ = gw and σ/β = sr."""
     hz = hertz_sphere(radius, load, e_star)
     sig = alpha * hz.a**2 / radius
     beta = sig / sr
-    return greenwood_tripp(load, radius, e_star, sigma_s=sig, density=gw / (beta * sig),
-                           summit_radius=beta, **kw), hz
+    population = Asperities(sigma_s=sig, density=gw / (beta * sig), summit_radius=beta,
+                            plastic=plastic)
+    return greenwood_tripp(load, radius, e_star, asperities=population, **kw), hz
 
 
 def test_ring_kernel_reproduces_hertz_displacement():
@@ -113,13 +115,13 @@ def test_solution_depends_only_on_alpha_and_mu():
     mu = a.density * a.sigma_s * math.sqrt(R * a.summit_radius)
     beta = 3.7 * sig / 1e-3
     eta = mu / (sig * math.sqrt(radius * beta))
-    b = greenwood_tripp(load, radius, e_star, sigma_s=sig, density=eta, summit_radius=beta)
+    b = greenwood_tripp(load, radius, e_star, asperities=Asperities(sig, eta, beta))
     assert b.a_star / hz.a == pytest.approx(a.a_star / hz_a.a, rel=2e-3)
     x = np.linspace(0, 2.0, 50)
     assert np.allclose(b.pressure(x * hz.a) / hz.p0, a.pressure(x * hz_a.a) / hz_a.p0,
                        atol=3e-3)
     # and a different μ changes it
-    c = greenwood_tripp(load, radius, e_star, sigma_s=sig, density=3 * eta, summit_radius=beta)
+    c = greenwood_tripp(load, radius, e_star, asperities=Asperities(sig, 3 * eta, beta))
     assert abs(c.a_star / hz.a - a.a_star / hz_a.a) > 0.02
 
 
@@ -144,10 +146,10 @@ def test_plastic_cap_never_exceeds_hardness():
 
 def test_bad_input():
     with pytest.raises(ContactInputError, match="sigma_s"):
-        greenwood_tripp(1.0, R, E, sigma_s=0.0, density=1e9, summit_radius=1e-5)
+        greenwood_tripp(1.0, R, E, asperities=Asperities(0.0, 1e9, 1e-5))
     with pytest.raises(ContactInputError, match="plastic"):
-        greenwood_tripp(1.0, R, E, sigma_s=1e-7, density=1e9, summit_radius=1e-5,
-                        hardness=1e9, plastic="tabor")
+        greenwood_tripp(1.0, R, E, asperities=Asperities(1e-7, 1e9, 1e-5, plastic="tabor"),
+                        hardness=1e9)
 
 
 def _self_affine(rng, n, dx, rms, hurst, rolloff, cutoff):

@@ -121,16 +121,17 @@ def test_sample_roughness_averages_on_a_coarser_grid_fills_holes_and_checks_cove
         sample_roughness(np.full((4, 4), np.nan), zdx, zdx, centred_grid(2, zdx))
 
 
-def test_solve_normal_takes_a_grid_as_it_takes_loose_arrays() -> None:
+def test_solve_normal_takes_a_grid_and_loose_arrays_through_gap_grid() -> None:
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     g = centred_grid(32, 4e-6, periodic=False)
     g = g.with_gap((g.x[None, :] ** 2 + g.y[:, None] ** 2) / 0.02)
     a = solve_normal(g, e_star=1e11, load=0.5)
-    b = solve_normal(g.h, 4e-6, e_star=1e11, load=0.5, origin=g.origin)
+    b = solve_normal(gap_grid(g.h, 4e-6, origin=g.origin), e_star=1e11, load=0.5)
     np.testing.assert_array_equal(np.asarray(a.pressure), np.asarray(b.pressure))
     np.testing.assert_array_equal(np.asarray(a.x), g.x)
-    with pytest.raises(ContactInputError, match="carries its pitch"):
-        solve_normal(g, 4e-6, e_star=1e11, load=0.5)
+    with pytest.raises(ContactInputError, match="gap_grid"):
+        solve_normal(g.h, e_star=1e11, load=0.5)
     with pytest.raises(ContactInputError, match="must carry a gap"):
         solve_normal(centred_grid(32, 4e-6), e_star=1e11, load=0.5)

@@ -11,7 +11,7 @@ import pytest
 from contact_synth import rough_surface
 from plastic_reference import fixed_point_plastic
 
-from contact import composite_modulus, hertz_sphere, material
+from contact import DomainSpec, composite_modulus, hertz_sphere, material
 from contact.errors import ContactError, ContactInputError
 from contact.fields import effective_radius, radial_average
 from contact.hertzcheck import ALPHA_LIMIT, check_sphere
@@ -74,7 +74,7 @@ def test_effective_radius_of_a_hertz_field_is_a():
 
 
 def test_smooth_ball_hertz_holds():
-    chk = check_sphere(0.02, 10.0, E_STAR, hardness=H_AL, grid=128)
+    chk = check_sphere(0.02, 10.0, E_STAR, hardness=H_AL, domain=DomainSpec(grid=128))
     c = chk.comparison
     assert c.hertz_holds
     assert c.alpha == 0.0 and c.plastic_fraction == 0.0
@@ -91,29 +91,33 @@ def test_smooth_ball_hertz_holds():
 def test_soft_plate_yields_and_the_verdict_says_so():
     hz = hertz_sphere(0.02, 10.0, E_STAR)
     # p0 beyond first yield (0.57 H) but below H: elastic everywhere, still no Hertz
-    chk = check_sphere(0.02, 10.0, E_STAR, hardness=1.3 * hz.p0, grid=96)
+    chk = check_sphere(0.02, 10.0, E_STAR, hardness=1.3 * hz.p0, domain=DomainSpec(grid=96))
     c = chk.comparison
     assert not c.hertz_holds and c.plastic_fraction == 0.0
     assert not c.criterion("first_yield").passed
     assert "first yield" in c.criterion("first_yield").reason
     # p0 beyond H: the centre yields
-    chk = check_sphere(0.02, 10.0, E_STAR, hardness=0.8 * hz.p0, grid=96, size=4 * hz.a)
+    chk = check_sphere(
+        0.02, 10.0, E_STAR, hardness=0.8 * hz.p0, domain=DomainSpec(grid=96, size=4 * hz.a)
+    )
     c = chk.comparison
     assert not c.hertz_holds and c.plastic_fraction > 0.05
     assert not c.criterion("yield").passed and "%" in c.criterion("yield").reason
 
 
 def test_elastic_plastic_solution_matches_the_capped_solver_and_its_conditions():
+    from contact import PressureBounds
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
     from contact.setups.ball_on_plate import SphereContact
 
     hz = hertz_sphere(0.02, 10.0, E_STAR)
     H = hz.p0 / 1.2
-    prob = SphereContact(0.02, E_STAR, 10.0, grid=128, size=6 * hz.a)
+    prob = SphereContact(0.02, E_STAR, 10.0, domain=DomainSpec(grid=128, size=6 * hz.a))
     el = prob.solve(10.0)
     n, dx = prob.domain.n, prob.domain.dx
-    ref = solve_normal(prob.gap0, dx, e_star=E_STAR, load=10.0, hardness=H,
-                       initial=np.asarray(el.pressure), origin=(-(n // 2) * dx,) * 2)
+    ref = solve_normal(gap_grid(prob.gap0, dx, origin=(-(n // 2) * dx,) * 2), e_star=E_STAR,
+                       load=10.0, initial=np.asarray(el.pressure), bounds=PressureBounds.elastic(H))
     # the plastic-displacement iteration, an algorithm independent of the capped solver
     mine = fixed_point_plastic(prob, 10.0, H, el)
     assert np.abs(np.asarray(mine.pressure) - np.asarray(ref.pressure)).max() < 2e-3 * H
@@ -122,7 +126,9 @@ def test_elastic_plastic_solution_matches_the_capped_solver_and_its_conditions()
 
     # a rough contact: check the contact conditions of the default (capped) solution
     z = rough_surface(256, 4e-6, 1e-6, seed=5, corr=12e-6)
-    prob = SphereContact(0.02, E_STAR, 10.0, roughness=CompositeRoughness(z, 4e-6), grid=128)
+    prob = SphereContact(
+        0.02, E_STAR, 10.0, roughness=CompositeRoughness(z, 4e-6), domain=DomainSpec(grid=128)
+    )
     el = prob.solve(10.0, on_edge="warn")
     res = prob.solve(10.0, hardness=H_AL, initial=el, on_edge="warn")
     p = np.asarray(res.pressure)

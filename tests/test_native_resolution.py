@@ -139,7 +139,8 @@ def test_estimate_is_within_a_factor_of_the_measured_peak_rss():
         import json, sys
         sys.path.insert(0, "tests")
         from contact_synth import rough_surface
-        from contact import CompositeRoughness, composite_modulus, material, solve_sphere
+        from contact import CompositeRoughness, DomainSpec, composite_modulus, material
+        from contact import solve_sphere
 
         def status(key):  # kB lines of /proc/self/status: VmRSS now, VmHWM the peak
             with open("/proc/self/status") as fh:
@@ -147,11 +148,12 @@ def test_estimate_is_within_a_factor_of_the_measured_peak_rss():
 
         E = composite_modulus(material("steel"), material("aluminium"))
         z = rough_surface(200, 2e-6, 0.1e-6, seed=2, corr=10e-6)
-        solve_sphere(5e-3, 1.0, E, roughness=CompositeRoughness(z, 2e-6), grid=64)  # warm up
+        rough = CompositeRoughness(z, 2e-6)
+        solve_sphere(5e-3, 1.0, E, roughness=rough, domain=DomainSpec(grid=64))  # warm up
         with open("/proc/self/clear_refs", "w") as fh:
             fh.write("5")  # reset the peak (VmHWM) to the current RSS
         base = status("VmRSS")
-        res = solve_sphere(5e-3, 1.0, E, roughness=CompositeRoughness(z, 2e-6), grid=1024)
+        res = solve_sphere(5e-3, 1.0, E, roughness=rough, domain=DomainSpec(grid=1024))
         print(json.dumps({"added": status("VmHWM") - base, "n": res.shape[0]}))
     """)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

@@ -11,10 +11,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from contact import Dissipation, DomainSpec
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.flat import adhesive_flat
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.line import adhesive_line
+from contact.grid import gap_grid
 from contact.hertzcheck import check_sphere
 from contact.material_pair import MaterialPair, modulus, resolve_pair
 from contact.materials import material
@@ -54,27 +56,39 @@ def test_sphere_and_hertz_check(pair):
     from contact.setups.composite import CompositeRoughness
 
     rough = CompositeRoughness(rng.normal(0, 2e-7, (64, 64)), 5e-6)
-    a = solve_sphere(0.02, 5.0, pair, grid=32, roughness=rough)
-    b = solve_sphere(0.02, 5.0, pair.e_star, grid=32, roughness=rough)
+    a = solve_sphere(0.02, 5.0, pair, roughness=rough, domain=DomainSpec(grid=32))
+    b = solve_sphere(0.02, 5.0, pair.e_star, roughness=rough, domain=DomainSpec(grid=32))
     assert a.e_star == b.e_star == pair.e_star
     _same(a.pressure, b.pressure)
     assert (a.approach, a.load, a.iterations) == (b.approach, b.load, b.iterations)
-    a = check_sphere(0.02, 5.0, pair, grid=32, hardness=pair.hardness)
-    b = check_sphere(0.02, 5.0, pair.e_star, grid=32, hardness=pair.hardness)
+    a = check_sphere(0.02, 5.0, pair, hardness=pair.hardness, domain=DomainSpec(grid=32))
+    b = check_sphere(0.02, 5.0, pair.e_star, hardness=pair.hardness, domain=DomainSpec(grid=32))
     _same(a.elastic.pressure, b.elastic.pressure)
     _same(a.plastic.pressure, b.plastic.pressure)
     for name in ("pmax", "elastic_pmax", "effective_radius", "approach", "area_fraction",
                  "plastic_fraction", "profile_deviation", "hertz_holds"):
         assert getattr(a.comparison, name) == getattr(b.comparison, name), name
     # the pair's default hardness is not applied silently: without one, elastic only
-    assert check_sphere(0.02, 5.0, pair, grid=32).plastic is None
+    assert check_sphere(0.02, 5.0, pair, domain=DomainSpec(grid=32)).plastic is None
 
 
 def test_rolling_sweep(pair):
     from contact.rolling import sphere_sweep
 
-    a = sphere_sweep(0.02, pair, [2.0, 4.0, 8.0], grid=32, alpha_h=0.01)
-    b = sphere_sweep(0.02, pair.e_star, [2.0, 4.0, 8.0], grid=32, alpha_h=0.01)
+    a = sphere_sweep(
+        0.02,
+        pair,
+        [2.0, 4.0, 8.0],
+        dissipation=Dissipation(alpha_h=0.01),
+        domain=DomainSpec(grid=32),
+    )
+    b = sphere_sweep(
+        0.02,
+        pair.e_star,
+        [2.0, 4.0, 8.0],
+        dissipation=Dissipation(alpha_h=0.01),
+        domain=DomainSpec(grid=32),
+    )
     _same(a.moments, b.moments)
     assert a.settings == b.settings and a.settings["e_star"] == pair.e_star
 
@@ -92,9 +106,10 @@ def test_line_and_cylinder(pair):
 
 def test_flat(pair):
     z = np.random.default_rng(5).normal(0, 1e-6, (16, 16))
-    kw = dict(pressures=[1e6, 5e6], periodic=True, hardness=2e9)
-    a = flat_contact(z, 1e-6, e_star=pair, **kw)
-    b = flat_contact(z, 1e-6, e_star=pair.e_star, **kw)
+    kw = dict(pressures=[1e6, 5e6], hardness=2e9)
+    grid = gap_grid(z.max() - z, 1e-6, periodic=True)
+    a = flat_contact(grid, e_star=pair, **kw)
+    b = flat_contact(grid, e_star=pair.e_star, **kw)
     assert a.e_star == b.e_star == pair.e_star
     for pa, pb in zip(a.points, b.points):
         for name in ("area_fraction", "corrected_area_fraction", "mean_gap", "stiffness"):
@@ -103,8 +118,8 @@ def test_flat(pair):
 
 def test_adhesive_ball_line_and_flat(soft):
     law = DugdaleLaw(0.05, 1e8)  # small grids and loose tolerances: only equality matters
-    a = adhesive_ball(10e-6, soft, law, grid=16, steps=4, tol=1e-4)
-    b = adhesive_ball(10e-6, soft.e_star, law, grid=16, steps=4, tol=1e-4)
+    a = adhesive_ball(10e-6, soft, law, steps=4, tol=1e-4, domain=DomainSpec(grid=16))
+    b = adhesive_ball(10e-6, soft.e_star, law, steps=4, tol=1e-4, domain=DomainSpec(grid=16))
     assert a.e_star == b.e_star == soft.e_star
     assert a.cycle.pull_off_force == b.cycle.pull_off_force
     _same(a.cycle.approach_leg.load, b.cycle.approach_leg.load)

@@ -205,10 +205,13 @@ def _result(p, periodic=False, dx=2e-6):
 
     ny, nx = p.shape
     z = np.zeros_like(p)
-    return build_result(pressure=p, gap=z, displacement=z, plastic_displacement=z,
-                        x=(np.arange(nx) - nx / 2) * dx, y=(np.arange(ny) - ny / 2) * dx,
-                        dx=dx, dy=dx, e_star=70e9, hardness=None, periodic=periodic,
-                        approach=0.0, iterations=1, residual=0.0, converged=True)
+    from contact.grid import Grid
+
+    grid = Grid(x=(np.arange(nx) - nx / 2) * dx, y=(np.arange(ny) - ny / 2) * dx,
+                periodic=periodic, pitch=(dx, dx))
+    return build_result(pressure=p, gap=z, displacement=z, plastic_displacement=z, grid=grid,
+                        e_star=70e9, hardness=None, approach=0.0, iterations=1, residual=0.0,
+                        converged=True)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])

@@ -12,7 +12,15 @@ import pytest
 from contact_synth import rough_surface
 from scipy import stats
 
-from contact import composite_modulus, hertz_cylinder, hertz_sphere, material, solve_sphere
+from contact import (
+    Dissipation,
+    DomainSpec,
+    composite_modulus,
+    hertz_cylinder,
+    hertz_sphere,
+    material,
+    solve_sphere,
+)
 from contact.errors import ContactInputError
 from contact.exponent import fit_exponent, local_exponent
 from contact.rolling import (
@@ -53,7 +61,13 @@ def test_smooth_sphere_hysteresis_is_three_sixteenths_n_a_over_r(smooth10):
 
 
 def test_smooth_sphere_exponent_is_four_thirds():
-    s = sphere_sweep(R, E_STAR, log_loads(1.0, 100.0, 5), grid=128, alpha_h=0.02)
+    s = sphere_sweep(
+        R,
+        E_STAR,
+        log_loads(1.0, 100.0, 5),
+        dissipation=Dissipation(alpha_h=0.02),
+        domain=DomainSpec(grid=128),
+    )
     assert s.lambda_eff == pytest.approx(4.0 / 3.0, abs=0.01)
     assert np.all(np.abs(s.local_lambda - 4.0 / 3.0) < 0.01)
     # the interval is Student's t on the least-squares slope of ln M against ln N
@@ -88,7 +102,9 @@ def test_cylinder_exponent_is_three_halves():
     # F' = 2 W' a / (3 pi R) per unit length (Johnson 9.2)
     a = np.array([hertz_cylinder(R, w, E_STAR).a for w in s.loads])
     assert np.allclose(s.forces, 2 * s.loads * a / (3 * math.pi * R), rtol=2e-3)
-    f = cylinder_sweep(R, E_STAR, log_loads(1e4, 1e6, 3), n=512, kinematics="frozen")
+    f = cylinder_sweep(
+        R, E_STAR, log_loads(1e4, 1e6, 3), dissipation=Dissipation(kinematics="frozen"), n=512
+    )
     assert f.lambda_eff == pytest.approx(1.5, abs=0.01)
 
 
@@ -101,6 +117,7 @@ def test_asperities_travel_with_the_material_in_rolling(seed):
     # -du/dx ("frozen") differs from it by the roughness slope.
     from contact.bem import solve_normal
     from contact.geometry import sphere_gap
+    from contact.grid import gap_grid
 
     rng = np.random.default_rng(seed)
     Rb, W = 5e-3, 1.0
@@ -110,9 +127,9 @@ def test_asperities_travel_with_the_material_in_rolling(seed):
     z = rough_surface(n, dx, rng.uniform(0.3, 2.0) * hz.delta, seed=seed, corr=5 * dx)
     base = sphere_gap(n, dx, Rb)
     origin = (-(n // 2) * dx,) * 2
-    a = solve_normal(base - z, dx, e_star=E_STAR, load=W, origin=origin)
-    b = solve_normal(base - np.roll(z, -1, axis=1), dx, e_star=E_STAR, load=W,
-                     initial=np.asarray(a.pressure), origin=origin)
+    a = solve_normal(gap_grid(base - z, dx, origin=origin), e_star=E_STAR, load=W)
+    b = solve_normal(gap_grid(base - np.roll(z, -1, axis=1), dx, origin=origin), e_star=E_STAR,
+                     load=W, initial=np.asarray(a.pressure))
     x = np.asarray(a.x)[None, :]
     du = np.roll(np.asarray(b.displacement), 1, axis=1) - np.asarray(a.displacement)
     both = (np.asarray(a.pressure) > 0) & (np.roll(np.asarray(b.pressure), 1, axis=1) > 0)
@@ -135,8 +152,10 @@ def test_rough_contact_exponent_lies_between_one_and_hertz():
     hz1 = hertz_sphere(5e-3, 0.2, E_STAR)
     z = rough_surface(512, 1e-6, 2 * hz1.delta, seed=8, corr=6e-6)
     loads = log_loads(0.2, 20.0, 5)
-    s = sphere_sweep(5e-3, E_STAR, loads, roughness=CompositeRoughness(z, 1e-6), grid=128)
-    smooth = sphere_sweep(5e-3, E_STAR, loads, grid=96)
+    s = sphere_sweep(
+        5e-3, E_STAR, loads, roughness=CompositeRoughness(z, 1e-6), domain=DomainSpec(grid=128)
+    )
+    smooth = sphere_sweep(5e-3, E_STAR, loads, domain=DomainSpec(grid=96))
     assert 0.9 < s.lambda_eff < 4.0 / 3.0 - 0.05
     assert s.local_lambda[-1] > s.local_lambda[1]  # drifting back towards 4/3
     assert np.all(s.moments > smooth.moments)  # the spread load rolls harder
@@ -168,13 +187,18 @@ def test_plastic_work_is_hardness_times_the_track_volume():
 def test_plastic_sweep_on_a_soft_plate():
     hz = hertz_sphere(R, 10.0, E_STAR)
     H = hz.p0 / 1.5  # the centre yields from about 3 N upwards
-    s = sphere_sweep(R, E_STAR, [4.0, 7.0, 10.0, 14.0], model="plastic", hardness=H,
-                     grid=96, size=5 * hz.a)
+    s = sphere_sweep(
+        R,
+        E_STAR,
+        [4.0, 7.0, 10.0, 14.0],
+        dissipation=Dissipation(model="plastic", hardness=H),
+        domain=DomainSpec(grid=96, size=5 * hz.a),
+    )
     assert np.all(np.diff(s.moments) > 0)
     assert s.fit is not None and s.lambda_eff > 4.0 / 3.0  # plastic work grows fast
     assert all(r.plastic_area > 0 for r in s.results)
     with pytest.raises(ContactInputError, match="hardness"):
-        sphere_sweep(R, E_STAR, [1.0, 2.0, 3.0], model="plastic")
+        sphere_sweep(R, E_STAR, [1.0, 2.0, 3.0], dissipation=Dissipation(model="plastic"))
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])

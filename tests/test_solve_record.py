@@ -11,6 +11,7 @@ import math
 import numpy as np
 import pytest
 
+from contact import DomainSpec
 from contact.errors import EdgeContactError, EdgeContactWarning
 from contact.geometry import sphere_gap
 from contact.hertz import hertz_sphere
@@ -56,13 +57,15 @@ def test_record_text_and_json_say_the_same():
 
 
 def test_bem_record_says_not_converged_after_two_iterations():
+    from contact import SolveOptions
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 64
     dx = 3 * hz.a / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, max_iter=2,
-                       nested=False, strict=False)
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, load=W,
+                       options=SolveOptions(max_iter=2, nested=False, strict=False))
     rec = res.solve
     assert rec.iterations == 2 and rec.converged is False
     assert rec.residual > rec.tolerance == 1e-6
@@ -72,15 +75,17 @@ def test_bem_record_says_not_converged_after_two_iterations():
 
 def test_bem_hertz_on_a_too_small_domain_says_edge_contact():
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 32
     dx = 1.6 * hz.a / n  # the Hertz disc (diameter 2a) does not fit in 1.6 a
     with pytest.warns(EdgeContactWarning, match="too small"):
-        res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W)
+        res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx), e_star=E_STAR, load=W)
     assert res.solve.edge_contact and res.touches_edge and res.solve.converged
     assert res.solve.warning in res.notes
-    fits = solve_normal(sphere_gap(n, 3 * hz.a / n, R), 3 * hz.a / n, e_star=E_STAR, load=W)
+    fits = solve_normal(gap_grid(sphere_gap(n, 3 * hz.a / n, R), 3 * hz.a / n), e_star=E_STAR,
+                        load=W)
     assert not fits.solve.edge_contact and fits.solve.warning is None
 
 
@@ -149,11 +154,12 @@ def test_adhesive_record():
 
 def test_periodic_and_free_bem_records_say_whether_edge_contact_applies():
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     x = (np.arange(32) - 16) * 1e-5
     h = (x[:, None] ** 2 + x[None, :] ** 2) / (2 * R)
-    free = solve_normal(h, 1e-5, e_star=E_STAR, load=1.0).solve
-    per = solve_normal(h, 1e-5, e_star=E_STAR, load=1.0, periodic=True).solve
+    free = solve_normal(gap_grid(h, 1e-5), e_star=E_STAR, load=1.0).solve
+    per = solve_normal(gap_grid(h, 1e-5, periodic=True), e_star=E_STAR, load=1.0).solve
     assert not free.periodic and free.text().endswith("edge contact: no")
     assert "periodic" not in free.to_json()
     assert per.periodic and per.text().endswith("edge contact: not applicable (periodic domain)")
@@ -167,10 +173,11 @@ def test_bem_counters_are_part_of_the_one_record():
     type), cover every level of a nested solve and stay out of the JSON."""
     import contact.bem as bem
     from contact.bem import solve_normal
+    from contact.grid import gap_grid
 
     x = (np.arange(256) - 128) * 2.5e-6
-    res = solve_normal((x[:, None] ** 2 + x[None, :] ** 2) / (2 * R), 2.5e-6, e_star=E_STAR,
-                       load=1.0)
+    res = solve_normal(gap_grid((x[:, None] ** 2 + x[None, :] ** 2) / (2 * R), 2.5e-6),
+                       e_star=E_STAR, load=1.0)
     c = res.solve.counters
     assert c["levels"] == tuple(res.extra["levels"]) and len(c["levels"]) > 1
     assert c["levels"][-1] == (256, 256, res.iterations) and c["iterations"] == res.iterations
@@ -200,7 +207,9 @@ def test_adhesive_cycle_counts_the_pull_off_refinement():
         warnings.simplefilter("ignore")
         cycle.solve_adhesive = counting
         try:
-            ball = adhesive_ball(1e-5, 1e9, DugdaleLaw.from_range(0.05, 2e-9), grid=16, steps=6)
+            ball = adhesive_ball(
+                1e-5, 1e9, DugdaleLaw.from_range(0.05, 2e-9), steps=6, domain=DomainSpec(grid=16)
+            )
         finally:
             cycle.solve_adhesive = real
     cyc = ball.cycle

@@ -39,10 +39,12 @@ import numpy as np
 import pytest
 from threadpoolctl import threadpool_limits
 
+from contact import SolveOptions
 from contact.adhesion import ExponentialLaw
 from contact.adhesion.flat import adhesive_flat, attractive_pressure, solve_at_pressure
 from contact.adhesion.solver import AdhesiveProblem
 from contact.bem import solve_normal
+from contact.grid import gap_grid
 from surfmet.synth import self_affine
 
 DATA = json.loads((Path(__file__).parent / "data" / "tamaas_adhesion.json").read_text())
@@ -93,10 +95,11 @@ def _prepare(n: int):
     dx, p0, e_star = _v("box_side") / n, _v("mean_pressure"), _v("e_star")
     h = z.max() - z
     load = p0 * z.size * dx * dx
-    kw = dict(e_star=e_star, periodic=True, tol=_v("tolerance"), edge="ignore")
-    bare = solve_normal(h, dx, load=load, **kw)
+    kw = dict(e_star=e_star, options=SolveOptions(tol=_v("tolerance"), edge="ignore"))
+    bare = solve_normal(gap_grid(h, dx, periodic=True), load=load, **kw)
     gap = float(np.mean(np.asarray(bare.gap)))
-    more = solve_normal(h, dx, load=1.01 * load, initial=bare.pressure, **kw)
+    more = solve_normal(gap_grid(h, dx, periodic=True), load=1.01 * load,
+                        initial=bare.pressure, **kw)
     stiffness = 0.01 * p0 / (gap - float(np.mean(np.asarray(more.gap))))
     return n, h, dx, bare, gap, stiffness, ExponentialLaw(_v("work_of_adhesion"), _v("range"))
 

@@ -16,7 +16,7 @@ from contact.halfspace.cerruti import influence_blocks
 from contact.halfspace.pair import HalfSpacePair
 from contact.hertz import hertz_sphere
 from contact.materials import material
-from contact.tangential import coupling, pair_constants, sphere_grid, steady_rolling
+from contact.tangential import RollingOptions, coupling, pair_constants, sphere_grid, steady_rolling
 from contact.tangential.cropped import BoxProducts
 
 STEEL_AL = pair_constants(material("steel"), material("aluminium"))
@@ -96,8 +96,10 @@ def test_uncoupled_nested_solve_keeps_the_gaps_pressure():
     stick/slip states."""
     a = hertz_sphere(0.02, 5.0, STEEL_AL.e_star).a
     grid = sphere_grid(0.02, 1.25 * a, 64)
-    nested = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0, coupled=False)
-    cold = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0, coupled=False, nested=False)
+    nested = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0,
+                            options=RollingOptions(coupled=False))
+    cold = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0,
+                          options=RollingOptions(coupled=False, nested=False))
     assert np.abs(nested.p - cold.p).max() <= 1e-7 * cold.p.max()
     assert np.array_equal(nested.state, cold.state)
     assert np.abs(nested.q - cold.q).max() <= 1e-6 * np.abs(cold.q).max()

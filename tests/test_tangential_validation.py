@@ -25,6 +25,7 @@ from contact.errors import ContactInputError, ConvergenceError
 from contact.tangential import (
     Creepage,
     Grid,
+    RollingOptions,
     compress_in_steps,
     pair_constants_from,
     shift,
@@ -81,7 +82,8 @@ def test_bentall_johnson_against_contact(case):
     x = -0.108 + (np.arange(216) + 0.5) * 0.001
     grid = Grid(x=x, y=np.zeros(1), h=(x**2 / (2 * 25.0))[None, :], line=True)
     load = 16201.9 / 1000.0  # FN over DY = 1000 mm
-    r = steady_rolling(grid, c, load, mu, fx=-fx_rel * mu * load, coupled=coupled)
+    r = steady_rolling(grid, c, load, mu, fx=-fx_rel * mu * load,
+                       options=RollingOptions(coupled=coupled))
     assert -r.creepage.xi == pytest.approx(creep, rel=2e-3)
     assert r.pmax == pytest.approx(pmax, rel=1e-3)
     assert abs(r.n_stick - nadh) <= 1
@@ -101,7 +103,7 @@ def test_bentall_full_slip_dissipation_closed_form():
     x = -0.108 + (np.arange(216) + 0.5) * 0.001
     grid = Grid(x=x, y=np.zeros(1), h=(x**2 / (2 * 25.0))[None, :], line=True)
     load, mu = 16.2019, 1e-4
-    r = steady_rolling(grid, c, load, mu, fx=0.0, coupled=False)
+    r = steady_rolling(grid, c, load, mu, fx=0.0, options=RollingOptions(coupled=False))
     th = brentq(lambda t: t + math.sin(t) * math.cos(t) - math.pi / 4, 0.0, 1.5)
     a = math.sqrt(4 * load * 25.0 / (math.pi * c.e_star))
     p0 = 2 * load / (math.pi * a)

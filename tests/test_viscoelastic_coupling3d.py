@@ -15,7 +15,7 @@ from contact.materials import Material
 from contact.tangential import Creepage, steady_rolling
 from contact.viscoelastic import StandardLinearSolid, pair_creep
 from contact.viscoelastic.surface import rolling_sphere
-from contact.viscoelastic.traction3d import pair_poisson, visco_steady_tractions
+from contact.viscoelastic.traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
 
 STEEL = Material("steel", 210e9, 0.3)
 R, N, V, MU = 0.02, 5.0, 0.1, 0.3
@@ -30,8 +30,14 @@ def test_limits_equal_the_elastic_solver(tau, modulus, creepage):
     x, y = np.asarray(res.x), np.asarray(res.y)
     grid = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2 * R))
     p = np.asarray(res.pressure)
-    tr = visco_steady_tractions(grid, p, creep, pair_poisson(STEEL, sls), V, MU,
-                                creepage=creepage, coupling=(STEEL, sls))
+    tr = visco_steady_tractions(
+        grid,
+        p,
+        ViscoRolling(creep, pair_poisson(STEEL, sls), V),
+        MU,
+        creepage=creepage,
+        coupling=(STEEL, sls),
+    )
     elastic = pair_constants(STEEL, Material("pmma", modulus, 0.37))
     assert elastic.K < -0.1  # a strongly dissimilar pair
     ref = steady_rolling(grid, elastic, N, MU, Creepage(creepage or 0.0),
@@ -54,8 +60,13 @@ def test_between_the_limits_the_creepage_lies_between_them():
         res = rolling_sphere(R, N, creep, V, n=40)
         x, y = np.asarray(res.x), np.asarray(res.y)
         grid = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2 * R))
-        tr = visco_steady_tractions(grid, np.asarray(res.pressure), creep,
-                                    pair_poisson(STEEL, sls), V, MU, coupling=(STEEL, sls))
+        tr = visco_steady_tractions(
+            grid,
+            np.asarray(res.pressure),
+            ViscoRolling(creep, pair_poisson(STEEL, sls), V),
+            MU,
+            coupling=(STEEL, sls),
+        )
         values.append(tr.creepage.xi)
     relaxed, middle, glassy = values
     assert min(relaxed, glassy) < middle < max(relaxed, glassy)

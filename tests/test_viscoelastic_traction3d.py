@@ -18,6 +18,7 @@ from contact.tangential import Creepage, steady_rolling
 from contact.tangential.grid import Grid
 from contact.viscoelastic.rheology import StandardLinearSolid
 from contact.viscoelastic.traction3d import (
+    ViscoRolling,
     constants_at,
     rolling_sphere_tractions,
     visco_steady_tractions,
@@ -80,7 +81,7 @@ def test_prescribed_force_gives_its_creepage():
     """Prescribing the force F_x that a creepage produced returns that creepage."""
     cr = _sls(2e-4).creep()
     _, tr = rolling_sphere_tractions(R, N, cr, 0.3, V, 0.3, n=48, creepage=-1.5e-3)
-    back = visco_steady_tractions(tr.grid, tr.p, cr, 0.3, V, 0.3, fx=tr.fx)
+    back = visco_steady_tractions(tr.grid, tr.p, ViscoRolling(cr, 0.3, V), 0.3, fx=tr.fx)
     assert back.creepage.xi == pytest.approx(-1.5e-3, rel=2e-3)
     assert back.fx == pytest.approx(tr.fx, rel=1e-4)
 
@@ -92,13 +93,13 @@ def test_bad_input():
     p = np.zeros((16, 16))
     p[6:10, 6:10] = 1e8
     with pytest.raises(ContactInputError, match="mu must be positive"):
-        visco_steady_tractions(grid, p, cr, 0.3, V, 0.0)
+        visco_steady_tractions(grid, p, ViscoRolling(cr, 0.3, V), 0.0)
     with pytest.raises(ContactInputError, match="friction limit"):
-        visco_steady_tractions(grid, p, cr, 0.3, V, 0.3, fx=1e9)
+        visco_steady_tractions(grid, p, ViscoRolling(cr, 0.3, V), 0.3, fx=1e9)
     with pytest.raises(ContactInputError, match="speed"):
-        visco_steady_tractions(grid, p, cr, 0.3, -1.0, 0.3, creepage=1e-3)
+        visco_steady_tractions(grid, p, ViscoRolling(cr, 0.3, -1.0), 0.3, creepage=1e-3)
     with pytest.raises(ContactInputError, match="not both"):
-        visco_steady_tractions(grid, p, cr, 0.3, V, 0.3, creepage=1e-3, fx=0.0)
+        visco_steady_tractions(grid, p, ViscoRolling(cr, 0.3, V), 0.3, creepage=1e-3, fx=0.0)
 
 
 @functools.lru_cache(maxsize=4)
@@ -122,8 +123,9 @@ def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
     res = solve_surface(scan_grid(h.shape, x[1] - x[0], y[1] - y[0], origin=(x[0], y[0]), h=h),
                         N, cr, V)
     grid = Grid(x=x, y=y, h=h)
-    tr = visco_steady_tractions(grid, np.asarray(res.pressure), cr, nu, V, mu,
-                                fx=-ratio * mu * N)
+    tr = visco_steady_tractions(
+        grid, np.asarray(res.pressure), ViscoRolling(cr, nu, V), mu, fx=-ratio * mu * N
+    )
     W = math.pi * a_r**2 / (4 * R * cr.relaxed)
     r2 = rolling_cylinder(R, W, cr, V, n=256)
     d2 = float(r2.x[1] - r2.x[0])

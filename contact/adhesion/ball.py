@@ -42,6 +42,7 @@ from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import adhesive_problem
 from contact.errors import ContactInputError
+from contact.geometry import DomainSpec, domain_spec
 from contact.grid import Grid
 from contact.material_pair import MaterialPair, modulus
 from contact.zone_resolution import (  # noqa: F401 (the thresholds, re-exported)
@@ -121,7 +122,7 @@ def scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[float, fl
 
 
 def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionLaw, *,
-                  grid: int = 128, size: float | None = None, steps: int = 40, tol: float = 1e-6,
+                  domain: DomainSpec | None = None, steps: int = 40, tol: float = 1e-6,
                   roughness: np.ndarray | None = None,
                   progress: Callable[[int, int], None] | None = None) -> AdhesiveBall:
     """Approach a sphere to a flat until its contact is about the JKR size, then retract.
@@ -134,11 +135,10 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     law : InteractionLaw
         A registered law (:mod:`contact.adhesion.laws`: e.g.
         :class:`~contact.adhesion.laws.DugdaleLaw`).
-    grid : int
-        Cells per side.
-    size : float, optional
-        Side of the periodic cell (m); default 4 times the larger of the JKR radius at
-        zero load and the reach of the interaction zone.
+    domain : DomainSpec, optional
+        Its ``grid``, cells per side (default 128), and ``size``, the side of the periodic
+        cell (m; default 4 times the larger of the JKR radius at zero load and the reach
+        of the interaction zone); the cell is periodic whatever the spec's other fields.
     steps : int
         Approach steps on each leg.
     tol : float
@@ -150,6 +150,9 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
         Called as ``progress(step, total)``.
     """
     positive(radius, "the radius", "m")
+    spec = domain_spec(domain)
+    grid = 128 if spec.grid is None else spec.grid
+    size = spec.size
     e_star = modulus(e_star)
     positive(e_star, "E*", "Pa")
     checked_law(law)  # an unknown law is refused, never solved as another

@@ -2,7 +2,11 @@
 
 The package's public entry is :func:`solve_normal`; its rooms:
 
-- :mod:`contact.bem.solver`: input checks, nesting, result assembly (``solve_normal``);
+- :mod:`contact.bem.solver`: input checks, nesting, result assembly (``solve_normal``:
+  a :class:`~contact.grid.Grid`, the load or approach, the
+  :class:`~contact.bem.bounds.PressureBounds` and the
+  :class:`~contact.bem.options.SolveOptions`);
+- :mod:`contact.bem.options`: :class:`~contact.bem.options.SolveOptions`, how a solve runs;
 - :mod:`contact.bem.iteration`: the feasible start and the iteration loop;
 - :mod:`contact.bem.steps`: the conjugate-gradient (Polonsky-Keer) step, the projected
   gradient step and the mixed-precision re-sync, each a function of the iteration state;
@@ -95,6 +99,7 @@ What makes it fast
 """
 
 from contact.bem.bounds import PressureBounds
+from contact.bem.options import SolveOptions
 from contact.bem.solver import solve_normal
 
-__all__ = ["PressureBounds", "solve_normal"]
+__all__ = ["PressureBounds", "SolveOptions", "solve_normal"]

@@ -42,6 +42,12 @@ class PressureBounds:
         Cap of the compressive pressure (Pa, > 0); ``inf`` for an elastic contact.
     interaction : InteractionLaw or None
         Gap-dependent adhesive traction; None for a contact without adhesion.
+
+    Examples
+    --------
+    >>> from contact import PressureBounds
+    >>> PressureBounds.elastic(1e9).plastic, PressureBounds().is_adhesive
+    (True, False)
     """
 
     tensile: float = 0.0

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from contact._validate import frozen
+from contact.grid import Grid
 from contact.record import SolveRecord, edge_contact
 
 #: What the normal solver's residual measures (see :class:`ContactResult`).
@@ -65,7 +66,8 @@ class ContactResult:
     Examples
     --------
     >>> from contact import solve_sphere
-    >>> res = solve_sphere(0.02, 10.0, 58.6e9, grid=64)
+    >>> from contact import DomainSpec
+    >>> res = solve_sphere(0.02, 10.0, 58.6e9, domain=DomainSpec(grid=64))
     >>> res.pressure.shape, res.n_clusters, res.solve.converged
     ((64, 64), 1, True)
     >>> print(f"W = {res.load:.3f} N, pmax = {res.pmax / 1e6:.0f} MPa")
@@ -76,13 +78,9 @@ class ContactResult:
     gap: np.ndarray
     displacement: np.ndarray
     plastic_displacement: np.ndarray
-    x: np.ndarray
-    y: np.ndarray
-    dx: float
-    dy: float
+    grid: Grid
     e_star: float
     hardness: float | None
-    periodic: bool
     load: float
     approach: float
     pmax: float
@@ -109,6 +107,31 @@ class ContactResult:
     def shape(self) -> tuple[int, int]:
         """Grid shape (ny, nx)."""
         return self.pressure.shape  # type: ignore[return-value]
+
+    @property
+    def x(self) -> np.ndarray:
+        """Cell-centre x coordinates (m), read-only (the grid's)."""
+        return self.grid.x
+
+    @property
+    def y(self) -> np.ndarray:
+        """Cell-centre y coordinates (m), read-only (the grid's)."""
+        return self.grid.y
+
+    @property
+    def dx(self) -> float:
+        """Cell pitch along x (m)."""
+        return self.grid.dx
+
+    @property
+    def dy(self) -> float:
+        """Cell pitch along y (m)."""
+        return self.grid.dy
+
+    @property
+    def periodic(self) -> bool:
+        """Periodic domain (else a free boundary)."""
+        return self.grid.periodic
 
     @property
     def iterations(self) -> int:
@@ -278,13 +301,9 @@ def build_result(
     gap: np.ndarray,
     displacement: np.ndarray,
     plastic_displacement: np.ndarray,
-    x: np.ndarray,
-    y: np.ndarray,
-    dx: float,
-    dy: float,
+    grid: Grid,
     e_star: float,
     hardness: float | None,
-    periodic: bool,
     approach: float,
     iterations: int,
     residual: float,
@@ -296,7 +315,10 @@ def build_result(
     extra: dict[str, Any] | None = None,
 ) -> ContactResult:
     """Assemble a :class:`ContactResult`, computing every derived quantity from the fields
-    (the solve record's ``edge_contact`` from the pressure)."""
+    (the solve record's ``edge_contact`` from the pressure). The result keeps ``grid``'s
+    cells (read-only coordinates, pitch, boundary), not its gap."""
+    dx, dy, periodic = float(grid.dx), float(grid.dy), bool(grid.periodic)
+    x, y = frozen(np.asarray(grid.x, float)), frozen(np.asarray(grid.y, float))
     da = dx * dy
     contact = pressure > 0
     load = float(pressure.sum() * da)
@@ -314,13 +336,9 @@ def build_result(
         gap=frozen(gap),
         displacement=frozen(displacement),
         plastic_displacement=frozen(plastic_displacement),
-        x=frozen(np.asarray(x, float)),
-        y=frozen(np.asarray(y, float)),
-        dx=float(dx),
-        dy=float(dy),
+        grid=Grid(x=x, y=y, periodic=periodic, pitch=(dx, dy)),
         e_star=float(e_star),
         hardness=None if hardness is None else float(hardness),
-        periodic=bool(periodic),
         load=load,
         approach=float(approach),
         pmax=float(pressure.max()) if pressure.size else 0.0,

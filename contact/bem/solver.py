@@ -18,102 +18,52 @@ import numpy as np
 from contact._validate import positive
 from contact.bem.bounds import PressureBounds
 from contact.bem.iteration import iterate, start
+from contact.bem.options import SolveOptions, options_of
 from contact.bem.result import ContactResult, build_result
 from contact.bem.state import IterationState, Problem, SolverStats, workspace
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import convolution
-from contact.nesting import can_nest, coarsen, prolong
+from contact.nesting import coarse_grid, prolong
 from contact.record import edge_warning
 
 
 def solve_normal(
-    gap0: np.ndarray | Grid,
-    dx: float | None = None,
-    dy: float | None = None,
+    grid: Grid,
     *,
     e_star: float,
     load: float | None = None,
     approach: float | None = None,
-    periodic: bool = False,
-    hardness: float | None = None,
     bounds: PressureBounds | None = None,
+    options: SolveOptions | None = None,
     initial: np.ndarray | None = None,
-    tol: float = 1e-6,
-    max_iter: int = 2000,
-    precision: str = "mixed",
-    nested: bool = True,
-    precondition: bool = True,
-    workers: int | None = None,
-    origin: tuple[float, float] = (0.0, 0.0),
-    callback: Callable[[int, float], Any] | None = None,
-    strict: bool = True,
-    edge: str = "warn",
-    stats: SolverStats | None = None,
-    kernel: str = "love",
 ) -> ContactResult:
     """Solve the normal contact of two rough elastic half-spaces on a regular grid.
 
     Parameters
     ----------
-    gap0 : ndarray, shape (ny, nx), or Grid
-        Initial gap h (m) between the undeformed surfaces (see the module conventions),
-        or a :class:`contact.grid.Grid` carrying it with its pitch, origin and boundary
-        (then ``dx``, ``dy``, ``origin`` and ``periodic`` are not given).
-    dx, dy : float
-        Cell pitch (m); ``dy`` defaults to ``dx``.
+    grid : Grid
+        The cells and the initial gap h (m) between the undeformed surfaces (``grid.h``,
+        see the module conventions), with their pitch, origin and boundary (periodic, or
+        free: no pressure outside the grid). Loose arrays become one with
+        :func:`contact.grid.gap_grid`: ``gap_grid(h, dx, dy, periodic=...)``.
     e_star : float
         Composite modulus E* (Pa).
     load, approach : float
         Exactly one: the total normal load W (N) or the rigid-body approach delta (m).
-    periodic : bool
-        Periodic domain (else a free boundary: no pressure outside the grid).
-    hardness : float, optional
-        Pressure cap (Pa) for an elastic-perfectly-plastic contact; shorthand for
-        ``bounds=PressureBounds.elastic(hardness)``.
     bounds : PressureBounds, optional
-        The pressure bounds (give ``hardness`` or ``bounds``, not both). Adhesive bounds
-        (a tension or an interaction law) are refused here with a pointer to
-        :func:`contact.adhesion.solve_adhesive`: this iteration keeps p >= 0.
+        The pressure bounds; default ``PressureBounds.elastic()`` (p >= 0, no cap).
+        ``PressureBounds.elastic(H)`` caps the pressure at a hardness H (Pa): the
+        elastic-perfectly-plastic contact. Adhesive bounds (a tension or an interaction
+        law) are refused here with a pointer to :func:`contact.adhesion.solve_adhesive`:
+        this iteration keeps p >= 0.
+    options : SolveOptions, optional
+        How to solve (tolerance, iteration budget, precision, threads, callback,
+        strictness, nesting, preconditioning, edge report, kernel, live counters);
+        default ``SolveOptions()``.
     initial : ndarray, optional
         Warm start: a pressure field on the same grid (e.g. the solution at a nearby load);
         it is rescaled to the load.
-    tol : float
-        Target residual (see :class:`~contact.bem.result.ContactResult`); 1e-6 gives the
-        Hertz maximum pressure to about 1e-6 of discretisation-free accuracy.
-    max_iter : int
-        Iteration limit of the finest grid.
-    precision : {"mixed", "double"}
-        "mixed" runs the search-direction FFT in float32 (see the notes of :mod:`contact.bem`).
-    nested : bool
-        Start from the solution of a twice coarser grid when no warm start is given.
-    precondition : bool
-        Precondition the conjugate gradient with the periodic stiffness ``|q|/2`` (the
-        approximate inverse of the influence operator; Vollebregt 2014, J. Comput. Phys.
-        257:333). Cuts the iterations several-fold for one unpadded FFT pair each.
-    workers : int, optional
-        Threads for scipy.fft (default: all cores).
-    origin : (float, float)
-        Coordinates (x, y) of the centre of cell (0, 0), for the result's coordinates.
-    callback : callable, optional
-        Called as ``callback(iteration, residual)`` after each iteration.
-    strict : bool
-        Raise :class:`~contact.errors.ConvergenceError` if the tolerance is not reached;
-        with ``strict=False`` the result is returned with ``converged=False``.
-    edge : {"warn", "ignore"}
-        A free-boundary solution with pressure on the outermost cells may be cut short by
-        the domain: "warn" issues the one edge warning of
-        :func:`contact.record.edge_warning` and adds it as a note (the record's
-        ``edge_contact`` is set either way). Higher-level callers that enlarge the domain
-        themselves pass "ignore".
-    stats : SolverStats, optional
-        Live counters (iterations, FFTs, grid levels), for a benchmark that reads them
-        while the solve runs; the same counts end in ``result.solve.counters`` either way.
-    kernel : {"love", "spectral"}
-        The half-space operator (:func:`contact.halfspace.convolution.convolution`): Love's
-        uniform pressure on each cell (every domain), or the spectral 2/|q| of Tamaas and
-        ContactMechanics (periodic only). ``result.extra["kernel"]`` says which was used,
-        and a spectral solve's method says so.
 
     Returns
     -------
@@ -127,7 +77,7 @@ def solve_normal(
         A gap that is not finite, a non-positive modulus, load or pitch, both or neither of
         ``load`` and ``approach``.
     ConvergenceError
-        The iteration stopped before ``tol``.
+        The iteration stopped before ``options.tol`` (with ``options.strict``).
     ContactMemoryError
         A grid that would not fit in memory.
 
@@ -149,67 +99,62 @@ def solve_normal(
     ``p0 = (6 W E*² / (π³ R²))^(1/3)`` = 255 MPa:
 
     >>> from contact import solve_normal, sphere_gap
-    >>> res = solve_normal(sphere_gap(64, 8e-6, 0.02), 8e-6, e_star=58.6e9, load=10.0)
+    >>> from contact.grid import gap_grid
+    >>> grid = gap_grid(sphere_gap(64, 8e-6, 0.02), 8e-6)
+    >>> res = solve_normal(grid, e_star=58.6e9, load=10.0)
     >>> print(f"pmax = {res.pmax / 1e6:.0f} MPa, W = {res.load:.2f} N")
     pmax = 255 MPa, W = 10.00 N
     """
-    given = gap0 if isinstance(gap0, Grid) else None
-    if given is not None:
-        gap0, dx, dy, origin, periodic = _unpack_grid(given, dx, dy, origin, periodic)
-    if dx is None:
-        raise ContactInputError("give the cell pitch dx (m), or the gap as a contact.grid.Grid")
-    dy = dx if dy is None else dy
-    bounds = _resolve_bounds(hardness, bounds)
+    h, grid = _gap_of(grid)
+    dx, dy = grid.dx, grid.dy
+    opts = options_of(options)
+    bounds = _resolve_bounds(bounds)
     hardness = bounds.hardness if bounds.plastic else None
-    h = _check_inputs(gap0, dx, dy, e_star, load, approach, hardness)
-    if precision not in ("mixed", "double"):
-        raise ContactInputError("precision must be 'mixed' or 'double'")
-    if edge not in ("warn", "ignore"):
-        raise ContactInputError("edge must be 'warn' or 'ignore'")
-    workers = (os.cpu_count() or 1) if workers is None else int(workers)
-    stats = stats if stats is not None else SolverStats()
+    h = _check_inputs(h, dx, dy, e_star, load, approach, hardness)
+    workers = (os.cpu_count() or 1) if opts.workers is None else int(opts.workers)
+    stats = opts.stats if opts.stats is not None else SolverStats()
     ny, nx = h.shape
     cap = bounds.hardness
+    tol = opts.tol
 
+    coarse = None if initial is not None or not opts.nested else coarse_grid(grid)
     if initial is not None:
         p_init = _warm_start(initial, h.shape, cap)
-    elif nested and can_nest(ny, nx):
-        coarse = solve_normal(
-            coarsen(h), 2 * dx, 2 * dy, e_star=e_star, load=load, approach=approach,
-            periodic=periodic, bounds=bounds, tol=max(tol, 1e-4), max_iter=max_iter,
-            precision=precision, nested=True, precondition=precondition, workers=workers,
-            strict=False, edge="ignore", stats=stats, kernel=kernel,
-        )
-        p_init = (np.clip(prolong(np.asarray(coarse.pressure)), 0.0, cap)
-                  if coarse.load > 0 else None)
+    elif coarse is not None:
+        # the coarse solve is only a start: looser, never raising, its edge not reported
+        start_opts = opts.but(tol=max(tol, 1e-4), workers=workers, callback=None,
+                              strict=False, edge="ignore", stats=stats)
+        first = solve_normal(coarse, e_star=e_star, load=load, approach=approach,
+                             bounds=bounds, options=start_opts)
+        p_init = (np.clip(prolong(np.asarray(first.pressure)), 0.0, cap)
+                  if first.load > 0 else None)
     else:
         p_init = None
 
-    grid = given if given is not None else scan_grid((ny, nx), dx, dy, origin=origin,
-                                                     periodic=bool(periodic))
     problem = Problem(
-        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta
+        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta;
         gap=(h * e_star).ravel(), grid=grid,
-        operator=convolution(ny, nx, float(dx), float(dy), grid.periodic, kernel=kernel),
+        operator=convolution(ny, nx, float(dx), float(dy), grid.periodic,
+                             kernel=opts.kernel),
         load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
-        bounds=bounds, single=precision == "mixed", precondition=precondition, workers=workers,
-        tol=tol, max_iter=max_iter,
+        bounds=bounds, single=opts.precision == "mixed", precondition=opts.precondition,
+        workers=workers, tol=tol, max_iter=opts.max_iter,
     )
     state, ok = _run(problem, stats, p_init, e_star * approach if load is None else 0.0,
-                     None, callback)
+                     None, opts.callback)
     it, res = state.iteration, state.residual
     stats.levels.append((ny, nx, it))
     stats.iterations = it
 
     result = _assemble(h, state, e_star, hardness, grid, ok, tol,
-                       {"levels": list(stats.levels), "tol": tol, "precision": precision,
-                        "kernel": kernel})
+                       {"levels": list(stats.levels), "tol": tol, "precision": opts.precision,
+                        "kernel": opts.kernel})
     result = dataclasses.replace(
         result, solve=dataclasses.replace(result.solve, counters=stats.snapshot()))
-    msg = edge_warning(edge == "warn" and result.touches_edge)
+    msg = edge_warning(opts.edge == "warn" and result.touches_edge)
     if msg is not None:
         result = dataclasses.replace(result, notes=(*result.notes, msg))
-    if not ok and strict:
+    if not ok and opts.strict:
         raise ConvergenceError(
             f"the contact solver stopped after {it} iterations at residual {res:.3g} "
             f"(tolerance {tol:.3g}); raise max_iter, loosen tol, or refine the grid",
@@ -284,28 +229,26 @@ def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, l
         residual=state.residual, converged=ok)
 
 
-def _unpack_grid(grid: Grid, dx: float | None, dy: float | None,
-                 origin: tuple[float, float], periodic: bool
-                 ) -> tuple[np.ndarray, float, float, tuple[float, float], bool]:
-    """The gap, pitch, origin and boundary of a Grid given in place of loose arrays."""
+def _gap_of(grid: Grid) -> tuple[np.ndarray, Grid]:
+    """The gap of a 3D grid, and the grid carrying it as floats; anything else is refused
+    in one line."""
+    if not isinstance(grid, Grid):
+        raise ContactInputError(
+            "solve_normal takes a contact.grid.Grid carrying the gap; for a bare array h of "
+            "pitch dx give contact.grid.gap_grid(h, dx)")
     if grid.h is None or grid.line:
         raise ContactInputError("the grid must carry a gap (Grid.h) and be 3D, not a line")
-    if dx is not None or dy is not None or tuple(origin) != (0.0, 0.0) or periodic:
-        raise ContactInputError(
-            "a Grid carries its pitch, origin and boundary: do not give dx, dy, origin or "
-            "periodic with it")
-    return grid.h, grid.dx, grid.dy, grid.origin, grid.periodic
+    h = np.asarray(grid.h, dtype=float)
+    return h, (grid if h is grid.h else grid.with_gap(h))
 
 
-def _resolve_bounds(hardness: float | None,
-                    bounds: PressureBounds | None) -> PressureBounds:
-    """The one set of bounds from the ``hardness`` shorthand or ``bounds``."""
+def _resolve_bounds(bounds: PressureBounds | None) -> PressureBounds:
+    """The bounds of a non-adhesive solve (default: p >= 0, no cap)."""
     if bounds is None:
-        if hardness is not None:
-            positive(hardness, "the hardness", "Pa")
-        return PressureBounds.elastic(hardness)
-    if hardness is not None:
-        raise ContactInputError("give the hardness either as hardness= or in bounds=, not both")
+        return PressureBounds.elastic()
+    if not isinstance(bounds, PressureBounds):
+        raise ContactInputError(
+            f"bounds must be a contact.PressureBounds, got {type(bounds).__name__}")
     if bounds.is_adhesive:
         raise ContactInputError(
             "adhesive pressure bounds (a tension or an interaction law) are solved by "
@@ -371,9 +314,8 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
     gap = np.maximum(g, 0.0)
     gap[p > 0] = 0.0
     return build_result(
-        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, x=grid.x,
-        y=grid.y, dx=grid.dx, dy=grid.dy, e_star=e_star, hardness=hardness,
-        periodic=grid.periodic, approach=delta,
+        pressure=p, gap=gap, displacement=u_m, plastic_displacement=plastic, grid=grid,
+        e_star=e_star, hardness=hardness, approach=delta,
         iterations=state.iteration, residual=state.residual, converged=ok, tolerance=tol,
         method="normal BEM" + (", elastic-plastic" if hardness is not None else "")
         + (f", {extra['kernel']} kernel" if extra["kernel"] != "love" else ""),

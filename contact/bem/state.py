@@ -37,7 +37,7 @@ class SolverStats:
     Not a result: the step functions count into it as they run, and the solve copies it
     into its one record, :attr:`contact.record.SolveRecord.counters` (see
     :meth:`snapshot`). A benchmark that reads the counts during the solve (from a
-    callback) passes its own to :func:`contact.bem.solve_normal` as ``stats``.
+    callback) passes its own to :func:`contact.bem.solve_normal` as ``SolveOptions.stats``.
 
     ``projected_steps`` and ``damped_steps`` count the projected gradient steps and the
     Polonsky-Keer steps cut to the minimiser of the energy (elastic-plastic solves only).

@@ -7,7 +7,7 @@ Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
 from contact.roughcontact.bgt import KAPPA_BGT, bush_gibson_thomas
-from contact.roughcontact.greenwood_tripp import GreenwoodTripp, greenwood_tripp
+from contact.roughcontact.greenwood_tripp import Asperities, GreenwoodTripp, greenwood_tripp
 from contact.roughcontact.gw import greenwood_williamson, gw_integral, gw_state
 from contact.roughcontact.hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
 from contact.roughcontact.isotropic import (
@@ -26,6 +26,7 @@ from contact.roughcontact.summits import (
 __all__ = [
     "KAPPA_BGT",
     "KAPPA_PERSSON",
+    "Asperities",
     "GreenwoodTripp",
     "ModelCurve",
     "ModelHierarchy",

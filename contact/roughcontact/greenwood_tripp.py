@@ -63,6 +63,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.special import erfc
@@ -72,11 +73,49 @@ from contact.errors import ContactInputError, ConvergenceError
 from contact.halfspace.axisymmetric import RingOperator
 from contact.hertz import hertz_sphere
 
+if TYPE_CHECKING:  # only the annotation of Asperities.of names it
+    from contact.roughcontact.summits import SummitParameters
+
 #: Gauss-Legendre nodes for the summit-height integrals (in t = sqrt(z - g)).
 _GL_T, _GL_W = np.polynomial.legendre.leggauss(48)
 #: The summit heights are integrated up to this many σ_s.
 _ZMAX = 9.0
 PLASTIC_MODELS = ("cap", "ceb")
+
+
+@dataclass(frozen=True)
+class Asperities:
+    """The summit population of a Greenwood-Tripp solve and its asperity law.
+
+    Attributes
+    ----------
+    sigma_s, density, summit_radius : float
+        Summit-height standard deviation σ_s (m), summit density η (1/m²) and mean summit
+        radius R_s (m), e.g. from :func:`contact.roughcontact.summit_parameters`.
+    plastic : {"cap", "ceb"}
+        Elastic-plastic asperity law when the solve has a hardness.
+    poisson : float
+        Poisson's ratio of the softer body (only for CEB's K = 0.454 + 0.41 ν).
+
+    Examples
+    --------
+    >>> from contact.roughcontact.greenwood_tripp import Asperities
+    >>> Asperities(sigma_s=1e-7, density=1e10, summit_radius=1e-5).plastic
+    'cap'
+    """
+
+    sigma_s: float
+    density: float
+    summit_radius: float
+    plastic: str = "cap"
+    poisson: float = 0.3
+
+    @classmethod
+    def of(cls, summits: SummitParameters, **law: Any) -> Asperities:
+        """The population of :func:`contact.roughcontact.summit_parameters`' answer
+        (``law``: ``plastic``, ``poisson``)."""
+        return cls(sigma_s=summits.sigma_s, density=summits.density,
+                   summit_radius=summits.radius, **law)
 
 
 @dataclass(frozen=True, eq=False)
@@ -240,12 +279,8 @@ def greenwood_tripp(
     radius: float,
     e_star: float,
     *,
-    sigma_s: float,
-    density: float,
-    summit_radius: float,
+    asperities: Asperities,
     hardness: float | None = None,
-    plastic: str = "cap",
-    poisson: float = 0.3,
     rings: int = 240,
     tol: float = 1e-10,
     max_iter: int = 200,
@@ -256,15 +291,11 @@ def greenwood_tripp(
     ----------
     load, radius, e_star : float
         Normal load N (N), sphere radius R (m), composite modulus E* (Pa).
-    sigma_s, density, summit_radius : float
-        Summit-height standard deviation σ_s (m), summit density η (1/m²) and mean summit
-        radius R_s (m), e.g. from :func:`contact.roughcontact.summit_parameters`.
+    asperities : Asperities
+        The summit population (σ_s, η, R_s) and the elastic-plastic asperity law
+        (:class:`Asperities`; :meth:`Asperities.of` a summit analysis).
     hardness : float, optional
         Caps the asperity mean pressure (Pa); None: elastic asperities.
-    plastic : {"cap", "ceb"}
-        Elastic-plastic asperity law when a hardness is given.
-    poisson : float
-        Poisson's ratio of the softer body (only for CEB's K = 0.454 + 0.41 ν).
     rings : int
         Number of pressure rings.
     tol : float
@@ -281,6 +312,8 @@ def greenwood_tripp(
     ConvergenceError
         Newton's method did not converge.
     """
+    sigma_s, density = asperities.sigma_s, asperities.density
+    summit_radius, plastic = asperities.summit_radius, asperities.plastic
     for name, v, unit in (("load", load, "N"), ("radius", radius, "m"),
                           ("e_star", e_star, "Pa"), ("sigma_s", sigma_s, "m"),
                           ("density", density, "1/m^2"), ("summit_radius", summit_radius, "m")):
@@ -292,7 +325,8 @@ def greenwood_tripp(
     if rings < 16:
         raise ContactInputError("use at least 16 rings")
     hz = hertz_sphere(radius, load, e_star)
-    law = _AsperityLaw(density, summit_radius, sigma_s, e_star, hardness, plastic, poisson)
+    law = _AsperityLaw(density, summit_radius, sigma_s, e_star, hardness, plastic,
+                       asperities.poisson)
     # the domain: where the undeformed sphere stays within reach of the summits at the
     # Hertz approach plus the summit spread, enlarged until the edge carries no pressure
     r_max = max(2.0 * hz.a, math.sqrt(2.0 * radius * (hz.delta + 6.0 * sigma_s)))

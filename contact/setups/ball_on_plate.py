@@ -26,34 +26,37 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
 
 from contact._validate import positive
 from contact.bem import solve_normal
+from contact.bem.bounds import PressureBounds
 from contact.bem.memory import check_grid_memory
+from contact.bem.options import SolveOptions, options_of
 from contact.bem.result import ContactResult
-from contact.bem.state import SolverStats
 from contact.errors import ContactInputError, EdgeContactError, EdgeContactWarning
 from contact.geometry import (
+    ON_EDGE,
     Domain,
+    DomainSpec,
     auto_domain,
     centred_coordinates,
     contact_extent,
+    domain_spec,
     fast_even,
     max_centred_cells,
     remove_plane,
     sphere_gap,
 )
+from contact.grid import scan_grid
 from contact.hertz import hertz_sphere
 from contact.material_pair import MaterialPair, modulus
 from contact.record import TRUNCATED_ADVICE, edge_warning, raise_edge
 from contact.sampling import fill_nan, sample_roughness
 from contact.setups.composite import CompositeRoughness
-
-_ON_EDGE = ("enlarge", "warn", "raise")
 
 
 class SphereContact:
@@ -77,14 +80,10 @@ class SphereContact:
     hardness : float, optional
         Pressure cap (Pa) for an elastic-perfectly-plastic contact (the domain is sized for
         it). :meth:`solve` also takes a hardness for one solve on the domain at hand.
-    periodic : bool
-        Periodic domain (the ball then has periodic images; meant for comparisons).
-    grid, size : optional
-        Cells per side and side length (m) overriding the automatic choice
-        (:func:`contact.geometry.auto_domain`).
-    max_grid : int or None
-        Largest automatic grid (cells per side); None: the roughness data's own pixel at
-        any size that fits in memory (native resolution).
+    domain : DomainSpec, optional
+        Cells per side, side length (m), the largest automatic grid and whether the domain
+        is periodic (:class:`contact.geometry.DomainSpec`), overriding the automatic choice
+        of :func:`contact.geometry.auto_domain`; default all automatic, free boundary.
     results : int
         Results of this problem kept alive together (for the memory check,
         :func:`contact.bem.memory.check_grid_memory`).
@@ -112,7 +111,8 @@ class SphereContact:
     A warm-started load sweep on one domain; the contact radius follows Hertz:
 
     >>> from contact import SphereContact
-    >>> problem = SphereContact(0.02, 58.6e9, 10.0, grid=64)
+    >>> from contact import DomainSpec
+    >>> problem = SphereContact(0.02, 58.6e9, 10.0, domain=DomainSpec(grid=64))
     >>> results = problem.sweep([1.0, 3.0, 10.0])
     >>> print([f"{r.contact_radius / r.hertz.a:.2f}" for r in results])
     ['1.00', '1.01', '1.01']
@@ -126,10 +126,7 @@ class SphereContact:
         *,
         roughness: CompositeRoughness | None = None,
         hardness: float | None = None,
-        periodic: bool = False,
-        grid: int | None = None,
-        size: float | None = None,
-        max_grid: int | None = 1024,
+        domain: DomainSpec | None = None,
         exact_sphere: bool = False,
         results: int = 1,
     ):
@@ -137,7 +134,9 @@ class SphereContact:
         self.e_star = positive(modulus(e_star), "E*", "Pa")
         self.design_load = positive(load, "the load", "N")
         self.hardness = None if hardness is None else positive(hardness, "the hardness", "Pa")
-        self.periodic = bool(periodic)
+        spec = domain_spec(domain)
+        self.spec = spec
+        self.periodic = bool(spec.periodic)
         self.exact_sphere = bool(exact_sphere)
         self.results = max(int(results), 1)
         self.notes: list[str] = []
@@ -166,7 +165,7 @@ class SphereContact:
         self.roughness_rms = rms
         dom = auto_domain(self.radius, self.design_load, self.e_star, roughness_rms=rms,
                           roughness_dx=self.zdx if self._z is not None else None,
-                          grid=grid, size=size, max_grid=max_grid, hardness=self.hardness)
+                          hardness=self.hardness, spec=spec)
         if self._z is not None:
             fit = max_centred_cells(self._z.shape, self.zdx, self.zdy, self.centre, dom.dx)
             if fit < 8:
@@ -233,15 +232,8 @@ class SphereContact:
         approach: float | None = None,
         initial: ContactResult | np.ndarray | None = None,
         hardness: float | None = None,
-        on_edge: str = "enlarge",
-        max_enlarge: int = 4,
-        tol: float = 1e-6,
-        max_iter: int = 2000,
-        precision: str = "mixed",
-        workers: int | None = None,
-        callback: Callable[[int, float], Any] | None = None,
-        strict: bool = True,
-        stats: SolverStats | None = None,
+        on_edge: str | None = None,
+        options: SolveOptions | None = None,
     ) -> ContactResult:
         """Solve at one load (or approach), enlarging the domain if the contact reaches it.
 
@@ -262,15 +254,21 @@ class SphereContact:
             indentation). Default the problem's own hardness. The notes on where the
             contact yields (asperity or Hertz scale) are given only for the problem's own
             hardness; with a per-solve hardness the caller compares the two solutions.
-        on_edge : {"enlarge", "warn", "raise"}
-            What to do when pressure reaches the domain edge (see the module notes).
-        max_enlarge : int
-            Most enlargements before giving up with :class:`EdgeContactError`.
-        tol, max_iter, precision, workers, callback, strict, stats
-            Passed to :func:`contact.bem.solve_normal`.
+        on_edge : {"enlarge", "warn", "raise"}, optional
+            What to do when pressure reaches the domain edge (see the module notes);
+            default the problem's ``DomainSpec.on_edge``. At most
+            ``DomainSpec.max_enlarge`` enlargements are made.
+        options : SolveOptions, optional
+            How each solve runs (:class:`contact.bem.options.SolveOptions`, passed to
+            :func:`contact.bem.solve_normal`); its edge report is this method's
+            ``on_edge``.
         """
-        if on_edge not in _ON_EDGE:
-            raise ContactInputError(f"on_edge must be one of {_ON_EDGE}, got {on_edge!r}")
+        # the domain's edge is this method's business (on_edge), not the inner solve's
+        opts = options_of(options).but(edge="ignore")
+        on_edge = self.spec.on_edge if on_edge is None else on_edge
+        max_enlarge = self.spec.max_enlarge
+        if on_edge not in ON_EDGE:
+            raise ContactInputError(f"on_edge must be one of {ON_EDGE}, got {on_edge!r}")
         if self._uncovered is not None and on_edge != "warn":
             raise EdgeContactError(self._uncovered)
         cap = self.hardness if hardness is None else positive(hardness, "the hardness", "Pa")
@@ -287,12 +285,9 @@ class SphereContact:
             if p0 is not None and p0.shape != (n, n):
                 p0 = self._embed(p0, n) if p0.shape[0] < n else None
             origin = (-(n // 2) * dx, -(n // 2) * dx)
-            res = solve_normal(
-                self.gap0, dx, e_star=self.e_star, load=load, approach=approach,
-                periodic=self.periodic, hardness=cap, initial=p0, tol=tol,
-                max_iter=max_iter, precision=precision, workers=workers, origin=origin,
-                callback=callback, strict=strict, edge="ignore", stats=stats,
-            )
+            grid = scan_grid((n, n), dx, origin=origin, periodic=self.periodic, h=self.gap0)
+            res = solve_normal(grid, e_star=self.e_star, load=load, approach=approach,
+                               bounds=PressureBounds.elastic(cap), options=opts, initial=p0)
             if not res.touches_edge:
                 break
             side = n * dx
@@ -389,17 +384,15 @@ def solve_sphere(
     *,
     roughness: CompositeRoughness | None = None,
     hardness: float | None = None,
-    periodic: bool = False,
-    grid: int | None = None,
-    size: float | None = None,
-    max_grid: int | None = 1024,
+    domain: DomainSpec | None = None,
     exact_sphere: bool = False,
     **solve_kwargs: Any,
 ) -> ContactResult:
     """Normal contact of a (rough) ball on a (rough) plate in one call.
 
     See :class:`SphereContact` for the geometry parameters and
-    :meth:`SphereContact.solve` for the solver ones (``on_edge``, ``tol``, ``callback``...).
+    :meth:`SphereContact.solve` for the solver ones (``on_edge``, ``options``: a
+    :class:`contact.bem.options.SolveOptions` with the tolerance, callback...).
 
     Examples
     --------
@@ -415,8 +408,6 @@ def solve_sphere(
         rough = CompositeRoughness(z, 5e-6).shifted((1e-4, 0.0))
         res = solve_sphere(0.02, 10.0, E, roughness=rough, hardness=0.9e9)
     """
-    problem = SphereContact(
-        radius, e_star, load, roughness=roughness, hardness=hardness, periodic=periodic,
-        grid=grid, size=size, max_grid=max_grid, exact_sphere=exact_sphere,
-    )
+    problem = SphereContact(radius, e_star, load, roughness=roughness, hardness=hardness,
+                            domain=domain, exact_sphere=exact_sphere)
     return problem.solve(load, **solve_kwargs)

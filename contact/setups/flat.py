@@ -28,15 +28,19 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from contact._validate import positive
 from contact.errors import ContactInputError
 from contact.fields import corrected_area
+from contact.grid import Grid
 from contact.material_pair import MaterialPair, modulus
 from contact.record import SolveRecord, combine, edge_message
+
+if TYPE_CHECKING:  # the solver loads lazily; only the annotation names it
+    from contact.bem.options import SolveOptions
 
 #: Relative pressure step of the stiffness solve.
 STIFFNESS_STEP = 0.01
@@ -113,10 +117,12 @@ class FlatContact:
     >>> import surfmet
     >>> from contact import flat_contact
     >>> from contact.geometry import remove_plane
+    >>> from contact.grid import gap_grid
     >>> from surfmet.data import path
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> z, _ = remove_plane(plate.heights[:64, :64], plate.dx, plate.dx)
-    >>> sweep = flat_contact(z, plate.dx, pressures=[1e7, 3e7], e_star=58.6e9, periodic=True)
+    >>> grid = gap_grid(z.max() - z, plate.dx, periodic=True)
+    >>> sweep = flat_contact(grid, pressures=[1e7, 3e7], e_star=58.6e9)
     >>> sweep.pressure.tolist(), bool((sweep.area_fraction > 0).all())
     ([10000000.0, 30000000.0], True)
     """
@@ -153,15 +159,12 @@ class FlatContact:
 
 
 def flat_contact(
-    heights: np.ndarray,
-    dx: float,
-    dy: float | None = None,
+    grid: Grid,
     *,
     pressures: np.ndarray | list[float],
     e_star: float | MaterialPair,
-    periodic: bool,
     hardness: float | None = None,
-    tol: float = 1e-6,
+    options: SolveOptions | None = None,
     stiffness: str = "curve",
     progress: Callable[[int, int], Any] | None = None,
 ) -> FlatContact:
@@ -169,22 +172,22 @@ def flat_contact(
 
     Parameters
     ----------
-    heights : ndarray (ny, nx)
-        Surface heights, m (levelled; the mean plane is the reference of ū).
-    dx, dy : float
-        Pixel sizes, m.
+    grid : Grid
+        The pixels, their pitch and boundary (periodic, or free) and, as ``grid.h``, the
+        separation of the rough surface from the flat (m, positive apart; any offset:
+        ``z.max() - z`` for levelled heights z), e.g.
+        ``contact.grid.gap_grid(z.max() - z, dx, dy, periodic=True)``.
     pressures : array_like
         Nominal pressures, Pa (any order; solved in increasing order, returned so).
     e_star : float or MaterialPair
         Composite modulus, Pa (a rigid flat: ``E/(1-ν²)`` of the rough body),
         or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
         A pair's default hardness is not applied: the cap is ``hardness`` alone.
-    periodic : bool
-        Periodic domain, else a free boundary.
     hardness : float, optional
         Pressure cap (elastic-perfectly-plastic), Pa.
-    tol : float
-        Solver tolerance (see :func:`contact.bem.solve_normal`).
+    options : SolveOptions, optional
+        How each solve runs (:class:`contact.bem.options.SolveOptions`; its edge report is
+        this function's note).
     stiffness : {"curve", "solve"}
         ``"curve"`` (default): ``K`` from the slope of the computed ``ln p(ū)`` curve, no
         extra solve (needs two pressures; one pressure falls back to ``"solve"``).
@@ -222,18 +225,24 @@ def flat_contact(
     >>> import surfmet
     >>> from contact import flat_contact
     >>> from contact.geometry import remove_plane
+    >>> from contact.grid import gap_grid
     >>> from surfmet.data import path
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> z, _ = remove_plane(plate.heights[:64, :64], plate.dx, plate.dx)
-    >>> sweep = flat_contact(z, plate.dx, pressures=[1e7, 3e7], e_star=58.6e9, periodic=True)
+    >>> grid = gap_grid(z.max() - z, plate.dx, periodic=True)
+    >>> sweep = flat_contact(grid, pressures=[1e7, 3e7], e_star=58.6e9)
     >>> a1, a2 = sweep.area_fraction
     >>> bool(a2 > a1), sweep.solve.converged
     (True, True)
     """
-    from contact.bem import solve_normal
+    from contact.bem import PressureBounds, solve_normal
+    from contact.bem.options import options_of
 
-    z = np.asarray(heights, dtype=float)
-    dy = dx if dy is None else dy
+    if not isinstance(grid, Grid) or grid.h is None or grid.line:
+        raise ContactInputError("flat_contact takes a 3D contact.grid.Grid carrying the "
+                                "separation from the flat (contact.grid.gap_grid)")
+    z = np.asarray(grid.h, dtype=float)
+    dx, dy, periodic = grid.dx, grid.dy, grid.periodic
     if z.ndim != 2 or min(z.shape) < 8:
         raise ContactInputError("the surface must be a 2D height map of at least 8 x 8")
     if not np.all(np.isfinite(z)):
@@ -254,19 +263,22 @@ def flat_contact(
     if stiffness not in ("curve", "solve"):
         raise ContactInputError(f"stiffness must be 'curve' or 'solve', got {stiffness!r}")
     by_solve = stiffness == "solve" or p.size == 1 or np.unique(p).size != p.size
-    h = float(z.max()) - z
+    # first touch at zero approach (no-op for a separation of zero minimum)
+    h = z - float(z.min())
+    grid = grid.with_gap(h)
+    opts = options_of(options).but(edge="ignore")  # the edge is said once, below
     area0 = z.size * dx * dy
     points = []
     notes: list[str] = []
     warm = None
     for k, pk in enumerate(p):
-        kw = dict(e_star=e_star, periodic=periodic, hardness=hardness, tol=tol, edge="ignore")
-        res = solve_normal(h, dx, dy, load=pk * area0, initial=warm, **kw)
+        kw = dict(e_star=e_star, bounds=PressureBounds.elastic(hardness), options=opts)
+        res = solve_normal(grid, load=pk * area0, initial=warm, **kw)
         warm = np.asarray(res.pressure)
         gap1 = _mean_gap(res)
         stiff = math.nan
         if by_solve:
-            res2 = solve_normal(h, dx, dy, load=pk * (1 + STIFFNESS_STEP) * area0,
+            res2 = solve_normal(grid, load=pk * (1 + STIFFNESS_STEP) * area0,
                                 initial=res.pressure, **kw)
             gap2 = _mean_gap(res2)
             stiff = -pk * STIFFNESS_STEP / (gap2 - gap1) if gap2 < gap1 else math.inf

@@ -22,6 +22,7 @@ import numpy as np
 from contact._validate import frozen, positive
 from contact.bem.line import active_set_record, solve_line_pressure
 from contact.errors import ContactInputError
+from contact.grid import Grid
 from contact.hertz import hertz_cylinder
 from contact.material_pair import MaterialPair, modulus
 from contact.record import SolveRecord, edge_contact, edge_warning
@@ -33,8 +34,9 @@ class LineContactResult:
 
     Attributes
     ----------
-    x : ndarray
-        Cell centres (m).
+    grid : Grid
+        The cells (a line :class:`contact.grid.Grid`, without its gap): ``x`` the cell
+        centres (m), ``dx`` the pitch (m).
     pressure : ndarray
         Contact pressure p (Pa).
     displacement : ndarray
@@ -42,8 +44,8 @@ class LineContactResult:
         the module notes (only differences are physical).
     gap : ndarray
         Deformed gap (m), 0 in contact.
-    dx, e_star : float
-        Pitch (m), composite modulus (Pa).
+    e_star : float
+        Composite modulus (Pa).
     load : float
         Load per unit length W' (N/m).
     approach : float
@@ -63,11 +65,10 @@ class LineContactResult:
         The Hertz solution of the same load, when the problem is a cylinder.
     """
 
-    x: np.ndarray
+    grid: Grid
     pressure: np.ndarray
     displacement: np.ndarray
     gap: np.ndarray
-    dx: float
     e_star: float
     load: float
     approach: float
@@ -78,6 +79,16 @@ class LineContactResult:
     solve: SolveRecord
     hertz: Any = None
     extra: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def x(self) -> np.ndarray:
+        """Cell centres (m), read-only."""
+        return self.grid.x
+
+    @property
+    def dx(self) -> float:
+        """Cell pitch (m)."""
+        return self.grid.dx
 
     @property
     def touches_edge(self) -> bool:
@@ -145,8 +156,9 @@ def solve_line(
     on = np.flatnonzero(p > 0)
     lo, hi = (x[on[0]], x[on[-1]]) if on.size else (math.nan, math.nan)
     return LineContactResult(
-        x=frozen(x), pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
-        dx=float(dx), e_star=float(e_star), load=float(p.sum() * dx),
+        grid=Grid(x=frozen(x), y=np.zeros(1), line=True, pitch=(float(dx), 1.0)),
+        pressure=frozen(p), displacement=frozen(u), gap=frozen(gap),
+        e_star=float(e_star), load=float(p.sum() * dx),
         approach=delta, pmax=float(p.max()),
         half_width=0.5 * (hi - lo + dx) if on.size else 0.0,
         centre=0.5 * (hi + lo) if on.size else math.nan, iterations=it, solve=record,

@@ -21,10 +21,11 @@ from contact.halfspace.constants import PairConstants, pair_constants, pair_cons
 from contact.tangential.kinematics import Creepage
 from contact.tangential.results import TangentialResult
 from contact.tangential.shift import compress_in_steps, shift
-from contact.tangential.steady import steady_rolling
+from contact.tangential.steady import RollingOptions, steady_rolling
 
 __all__ = [
-    "Creepage", "Grid", "PairConstants", "TangentialResult", "compress_in_steps",
+    "Creepage", "Grid", "PairConstants", "RollingOptions", "TangentialResult",
+    "compress_in_steps",
     "cylinder_grid", "pair_constants", "pair_constants_from", "shift", "sphere_grid",
     "steady_rolling",
 ]

@@ -30,8 +30,9 @@ from contact.grid import Grid
 from contact.tangential.kernels import SLIP, STICK
 from contact.tangential.solver import TangentialState
 
-# below this many elements a side a grid is solved from cold
-SMALLEST = 32
+# below this many elements a side a grid is solved from cold (the reason for steady
+# rolling's smaller coarsest grid is given with the constant)
+SMALLEST = nesting.MIN_COARSE_ROLLING
 
 
 @dataclass(frozen=True)
@@ -62,13 +63,6 @@ def _fine(a: np.ndarray) -> np.ndarray:
     return np.repeat(np.repeat(a, 2, axis=-1), 2, axis=-2)
 
 
-def _smooth(a: np.ndarray) -> np.ndarray:
-    """Bilinear interpolation of a coarse field to the fine grid; the passes run along x
-    first (the reverse of :func:`contact.nesting.prolong`), which keeps the rounding, and
-    so the answers, of steady rolling as they were."""
-    return nesting.prolong_axis(nesting.prolong_axis(a, -1), -2)
-
-
 def prolong(p: np.ndarray, q: np.ndarray, state: np.ndarray, xi: float,
             levels: int = 1) -> CoarseStart:
     """A coarse answer on the grid ``levels`` halvings of the pitch finer: states to the
@@ -76,7 +70,8 @@ def prolong(p: np.ndarray, q: np.ndarray, state: np.ndarray, xi: float,
     (:mod:`contact.nesting`), once per level."""
     qf, st, pf = q, state, p
     for _ in range(levels):
-        qf, st, pf = _smooth(qf), _fine(st), np.clip(_smooth(pf), 0.0, None)
+        qf, st = nesting.prolong(qf), _fine(st)
+        pf = np.clip(nesting.prolong(pf), 0.0, None)
     st = st.astype(np.int8)
     norm = np.hypot(qf[0], qf[1])
     slip = (st == SLIP) & (norm > 0)

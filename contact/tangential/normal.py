@@ -74,7 +74,9 @@ def _solve_3d(op: HalfSpacePair, h: np.ndarray, load: float,
     """The 3D pressure by the package's normal solver (:func:`contact.bem.solve_normal`,
     the same Love influence coefficients), warm-started from ``start``."""
     from contact.bem import solve_normal
+    from contact.bem.options import SolveOptions
+    from contact.grid import scan_grid
 
-    r = solve_normal(h, op.dx, op.dy, e_star=op.c.e_star, load=load, initial=start,
-                     tol=1e-8, edge="ignore")
+    r = solve_normal(scan_grid(h.shape, op.dx, op.dy, h=h), e_star=op.c.e_star, load=load,
+                     options=SolveOptions(tol=1e-8, edge="ignore"), initial=start)
     return np.asarray(r.pressure, dtype=float), float(r.approach)

@@ -16,6 +16,7 @@ pressure (:mod:`contact.tangential.coupling`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -48,6 +49,36 @@ POLISH_RTOL = 1e-2
 COARSE_PRESSURE_TOL = LOOSEST
 
 
+@dataclasses.dataclass(frozen=True)
+class RollingOptions:
+    """How a steady-rolling problem is solved (:func:`steady_rolling`).
+
+    Attributes
+    ----------
+    coupled : bool
+        Iterate the normal problem with the tractions (only matters when K != 0).
+    tol : float
+        Tolerance of the slip directions and of the pressure between couplings.
+    max_coupling : int
+        Limit on normal-tangential iterations.
+    nested : bool
+        Start from the solution of a grid of twice the pitch (:mod:`contact.tangential.
+        nested`), recursively; the answer is still the fine grid's.
+    polish_rtol : float
+        GMRES tolerance of the last Newton steps.
+    start_only : bool
+        The answer is only the start of a finer solve (nested grids): the tangential
+        iteration stops once the stick and slip areas stand.
+    """
+
+    coupled: bool = True
+    tol: float = 1e-6
+    max_coupling: int = 30
+    nested: bool = True
+    polish_rtol: float = POLISH_RTOL
+    start_only: bool = False
+
+
 def check_friction(mu: float) -> float:
     """mu as a float, or one error line when it is not a positive finite number."""
     if not (isinstance(mu, (int, float)) and math.isfinite(mu) and mu > 0):
@@ -69,13 +100,8 @@ def steady_rolling(
     creepage: Creepage | None = None,
     *,
     fx: float | None = None,
-    coupled: bool = True,
     pressure: np.ndarray | None = None,
-    tol: float = 1e-6,
-    max_coupling: int = 30,
-    nested: bool = True,
-    polish_rtol: float = POLISH_RTOL,
-    start_only: bool = False,
+    options: RollingOptions | None = None,
 ) -> TangentialResult:
     """Solve steady rolling on ``grid``.
 
@@ -94,28 +120,18 @@ def steady_rolling(
     fx : float, optional
         Prescribed tangential force on body 1 along x (N; N/m); 0 is free rolling.
         The creepage xi is then solved for.
-    coupled : bool
-        Iterate the normal problem with the tractions (only matters when K != 0).
     pressure : ndarray, optional
         A pressure to use instead of solving the normal problem (uncoupled only).
-    tol : float
-        Tolerance of the slip directions and of the pressure between couplings.
-    max_coupling : int
-        Limit on normal-tangential iterations.
-    nested : bool
-        Start from the solution of a grid of twice the pitch (:mod:`contact.tangential.
-        nested`), recursively; the answer is still the fine grid's.
-    polish_rtol : float
-        GMRES tolerance of the last Newton steps.
-    start_only : bool
-        The answer is only the start of a finer solve (nested grids): the tangential
-        iteration stops once the stick and slip areas stand.
+    options : RollingOptions, optional
+        Coupling, tolerances, nesting (:class:`RollingOptions`); default all defaults.
     """
+    opts = RollingOptions() if options is None else options
+    coupled, tol, max_coupling = opts.coupled, opts.tol, opts.max_coupling
     mu = check_friction(mu)
     creep = creepage or Creepage()
     op = operator_for(grid, constants)
-    start = _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol, max_coupling) \
-        if nested and pressure is None else None
+    start = _coarse_start(grid, constants, load, mu, creep, fx, opts) \
+        if opts.nested and pressure is None else None
     # 3D: the pressure is solved again after every Newton step of the tangential problem
     # (one loop); plane strain keeps the outer loop around the force's root search
     fold = coupled and op.coupled and not grid.line and pressure is None
@@ -143,7 +159,7 @@ def steady_rolling(
     xi = creep.xi if start is None else start.xi
     iterations = 0
     pressure_now = Recoupling(op, grid.h, load, mu, p, delta, tol,
-                              COARSE_PRESSURE_TOL if start_only else PRESSURE_TOL,
+                              COARSE_PRESSURE_TOL if opts.start_only else PRESSURE_TOL,
                               0 if start is None else LAG, u_p) if fold else None
     # inexact outer iteration: while the pressure still moves by more than 1e-3, the
     # tangential problems are solved loosely (their exact answer is for a pressure that is
@@ -156,9 +172,9 @@ def steady_rolling(
         def run(v: float, g=g, u0=u0, force=None) -> TangentialState:
             w = rigid_slip(grid.x, grid.y, Creepage(v, creep.eta, creep.phi))
             st[0] = solve_tangential(op, g, w, u0, rolling=True, start=st[0],
-                                     tol=1e-3 if loose[0] else tol, force=force,
-                                     area=grid.area, polish_rtol=1e-4 if loose[0] else polish_rtol,
-                                     recouple=pressure_now, start_only=start_only)
+                                     tol=1e-3 if loose[0] else tol, force=force, area=grid.area,
+                                     polish_rtol=1e-4 if loose[0] else opts.polish_rtol,
+                                     recouple=pressure_now, start_only=opts.start_only)
             return st[0]
 
         if fx is None:
@@ -201,14 +217,15 @@ def steady_rolling(
                             outer=s.outer, matvecs=s.matvecs, tol=tol)
 
 
-def _coarse_start(grid, constants, load, mu, creep, fx, coupled, tol,
-                  max_coupling) -> CoarseStart | None:
+def _coarse_start(grid, constants, load, mu, creep, fx,
+                  opts: RollingOptions) -> CoarseStart | None:
     """The coarse grid's answer copied to ``grid``, or None where nesting does not pay."""
     nest = coarse_grid(grid)
     if nest is None:
         return None
     coarse, levels = nest
     # only a start: its own tolerances can be loose (the fine solve converges in full)
-    r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, coupled=coupled,
-                       tol=max(tol, 1e-3), max_coupling=max_coupling, start_only=True)
+    start_opts = RollingOptions(coupled=opts.coupled, tol=max(opts.tol, 1e-3),
+                                max_coupling=opts.max_coupling, start_only=True)
+    r = steady_rolling(coarse, constants, load, mu, creep, fx=fx, options=start_opts)
     return prolong(r.p, r.q, r.state, r.creepage.xi, levels)

@@ -21,7 +21,11 @@ from contact.viscoelastic.rheology import (
     pair_creep,
 )
 from contact.viscoelastic.traction import TractionResult, steady_traction
-from contact.viscoelastic.traction3d import ViscoHalfSpacePair, visco_steady_tractions
+from contact.viscoelastic.traction3d import (
+    ViscoHalfSpacePair,
+    ViscoRolling,
+    visco_steady_tractions,
+)
 
 __all__ = [
     "CreepSeries",
@@ -31,6 +35,7 @@ __all__ = [
     "StandardLinearSolid",
     "TractionResult",
     "ViscoHalfSpacePair",
+    "ViscoRolling",
     "hunter_cylinder",
     "pair_creep",
     "rolling_cylinder",

@@ -147,7 +147,8 @@ def solve_line(grid: Grid, load: float, creep: CreepSeries, speed: float, *,
                                start, h, it, edge_contact(p))
     edge_warning(record.edge_contact)
     mu = float((p * x).sum() * dx / (W * radius)) if radius else float("nan")
-    return RollingResult(x=frozen(x), y=None, pressure=frozen(p), displacement=frozen(u),
+    cells = Grid(x=frozen(x), y=np.zeros(1), line=True, pitch=(dx, 1.0))
+    return RollingResult(grid=cells, pressure=frozen(p), displacement=frozen(u),
                          gap=frozen(gap), approach=delta, load=W, radius=radius, speed=v,
                          leading=leading, trailing=trailing, rolling_resistance=mu,
                          solve=record, gap_residual=record.residual)

@@ -152,6 +152,8 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *,
     adhesion : (w, Delta_w), optional
         Work of adhesion and its hysteresis (J/m^2): the adhesion-hysteresis mechanism.
     """
+    from contact.dissipation import Dissipation
+    from contact.geometry import DomainSpec
     from contact.hertz import hertz_sphere
     from contact.material_pair import MaterialPair, resolve_pair
     from contact.rolling import sphere_sweep
@@ -180,10 +182,13 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *,
     out.append(_with_rotor("viscoelastic", ve, _lookup(ve), rotor_loads, rolling_inertia,
                            f"SLS loss peaks eta = {loss[0]:g} (ball), {loss[1]:g} (plate) at "
                            f"omega = V/a = {1 / t_peak:.3g} 1/s (upper bound)"))
-    hy = sphere_sweep(radius, e_star, every, model="hysteresis", alpha_h=alpha, grid=grid)
+    hy = sphere_sweep(radius, e_star, every, dissipation=Dissipation(alpha_h=alpha),
+                      domain=DomainSpec(grid=grid))
     out.append(_with_rotor("hysteresis", hy, _lookup(hy), rotor_loads, rolling_inertia,
                            f"alpha_h = 2 pi eta (displacement-weighted) = {alpha:.3g}"))
-    pl = sphere_sweep(radius, e_star, every, model="plastic", hardness=hardness, grid=grid)
+    pl = sphere_sweep(radius, e_star, every,
+                      dissipation=Dissipation(model="plastic", hardness=hardness),
+                      domain=DomainSpec(grid=grid))
     out.append(_with_rotor("plastic", pl, _lookup(pl), rotor_loads, rolling_inertia,
                            f"first pass, H = {hardness:.3g} Pa"))
     if microslip is not None:

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact._validate import frozen as _frozen
+from contact.grid import Grid
 from contact.record import SolveRecord
 
 
@@ -24,10 +25,9 @@ class RollingResult:
 
     Attributes
     ----------
-    x : ndarray
-        Cell centres along the rolling direction (m).
-    y : ndarray or None
-        Cell centres across it (m); None for a line contact.
+    grid : Grid
+        The cells (:class:`contact.grid.Grid`, without its gap): ``x`` the centres along
+        the rolling direction (m), ``y`` across it (m; None for a line contact).
     pressure : ndarray
         p (Pa), shape (n,) or (ny, nx).
     displacement : ndarray
@@ -58,8 +58,7 @@ class RollingResult:
         Iterations of the last elastic (BEM) solve inside the outer loop (3D; 0 in 2D).
     """
 
-    x: np.ndarray
-    y: np.ndarray | None
+    grid: Grid
     pressure: np.ndarray
     displacement: np.ndarray
     gap: np.ndarray
@@ -85,9 +84,19 @@ class RollingResult:
         return float(np.max(self.pressure))
 
     @property
+    def x(self) -> np.ndarray:
+        """Cell centres along the rolling direction (m), read-only."""
+        return self.grid.x
+
+    @property
+    def y(self) -> np.ndarray | None:
+        """Cell centres across the rolling direction (m); None for a line contact."""
+        return None if self.grid.line else self.grid.y
+
+    @property
     def line(self) -> bool:
         """True for a plane-strain line contact."""
-        return self.y is None
+        return self.grid.line
 
     @property
     def pressure_offset(self) -> float:

@@ -168,22 +168,22 @@ def solve_surface(grid: Grid, load: float, creep: CreepSeries, speed: float, *,
         saves about a third of the outer steps of a strongly relaxing solid.
     """
     from contact.bem import solve_normal
+    from contact.bem.options import SolveOptions
 
     h = _gap_of(grid)
     v = positive(speed, "the rolling speed", "m/s")
     W = positive(load, "the load", "N")
     dx = positive(grid.dx, "the cell pitch", "m")
     dy = positive(grid.dy, "the cell pitch dy", "m")
-    origin = grid.origin
     ny, nx = h.shape
     op = RollingOperator(ny, nx, dx, dy, creep, v, ahead)
     ce = 0.5 * (creep.glassy + creep.relaxed)
 
     def step(p_in: np.ndarray, warm: np.ndarray | None, inner: float) -> tuple[np.ndarray, Any]:
         u, w = op.apply(p_in)
-        res = solve_normal(h + (u - ce * w), dx, dy, e_star=1.0 / ce, load=W, tol=inner,
-                           initial=warm, nested=warm is None, origin=origin, edge="ignore",
-                           strict=False)
+        opts = SolveOptions(tol=inner, nested=warm is None, edge="ignore", strict=False)
+        res = solve_normal(grid.with_gap(h + (u - ce * w)), e_star=1.0 / ce, load=W,
+                           options=opts, initial=warm)
         return np.asarray(res.pressure, dtype=float), res
 
     p0 = _coarse_start(grid, W, creep, v, tol, ahead) if nested else None
@@ -234,20 +234,15 @@ def _coarse_start(grid: Grid, W: float, creep: CreepSeries, v: float, tol: float
     The discretisation difference between the grids (a few per cent of pmax at the
     contact edges) dominates the start's error, so a loose coarse tolerance suffices.
     """
-    from contact.nesting import can_nest, coarsen, prolong
+    from contact.nesting import coarse_grid, prolong
 
-    if not creep.amplitudes or not can_nest(*grid.shape):
+    half = coarse_grid(grid) if creep.amplitudes else None
+    if half is None:
         return None
-    dx, dy = grid.dx, grid.dy
-    h = coarsen(grid.h)
-    origin = grid.origin
-    # the coarse cell (0, 0) covers fine cells (0..1, 0..1): its centre half a fine pitch on
-    coarse_grid = scan_grid(h.shape, 2 * dx, 2 * dy, h=h,
-                            origin=(origin[0] + dx / 2, origin[1] + dy / 2))
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", EdgeContactWarning)
-            coarse = solve_surface(coarse_grid, W, creep, v, tol=max(tol, 1e-2), ahead=ahead)
+            coarse = solve_surface(half, W, creep, v, tol=max(tol, 1e-2), ahead=ahead)
     except (ContactInputError, ConvergenceError):
         return None  # the fine solve starts from scratch and reports its own trouble
     if coarse.solve.edge_contact:
@@ -275,7 +270,8 @@ def _result(op: RollingOperator, grid: Grid, p: np.ndarray, res: Any, W: float,
     trailing, leading = edges_1d(x, p[row])
     mu = float((p.sum(axis=0) * x).sum() * op.dx * op.dy / (W * radius)) if radius else \
         float("nan")
-    return RollingResult(x=frozen(x), y=frozen(y), pressure=frozen(p), displacement=frozen(u),
+    cells = Grid(x=frozen(x), y=frozen(y), pitch=(op.dx, op.dy))
+    return RollingResult(grid=cells, pressure=frozen(p), displacement=frozen(u),
                          gap=frozen(np.where(on, 0.0, np.maximum(gap, 0.0))), approach=delta,
                          load=W, radius=radius, speed=v, leading=leading, trailing=trailing,
                          rolling_resistance=mu, solve=record, gap_residual=resid,

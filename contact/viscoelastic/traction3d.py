@@ -34,6 +34,7 @@ gives F -> 0 and the glassy one.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -172,10 +173,32 @@ def pressure_tangential(op: ViscoHalfSpacePair, p: np.ndarray, body1: object,
     return u[..., : op.nx]
 
 
-def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries, nu: float,
-                           speed: float, mu: float, *, creepage: float | None = None,
-                           fx: float | None = None, tol: float = 1e-6,
-                           ahead: float = 0.5, coupling: tuple | None = None
+@dataclass(frozen=True)
+class ViscoRolling:
+    """A viscoelastic pair rolling at a speed: what its operator
+    (:class:`ViscoHalfSpacePair`) needs besides the grid.
+
+    Attributes
+    ----------
+    creep : CreepSeries
+        The pair's creep series.
+    nu : float
+        The combined Poisson ratio.
+    speed : float
+        Rolling speed V (m/s).
+    ahead : float
+        Extension of the operator's evaluation grid ahead, in grid lengths.
+    """
+
+    creep: CreepSeries
+    nu: float
+    speed: float
+    ahead: float = 0.5
+
+
+def visco_steady_tractions(grid: Grid, pressure: np.ndarray, rolling: ViscoRolling, mu: float,
+                           *, creepage: float | None = None, fx: float | None = None,
+                           tol: float = 1e-6, coupling: tuple | None = None
                            ) -> TangentialResult:
     """Steady rolling tractions on a viscoelastic pair for a given pressure (3D).
 
@@ -185,12 +208,9 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
         The grid (:func:`contact.tangential.grid.sphere_grid` or the pressure's own).
     pressure : ndarray, shape (ny, nx)
         Pressure (Pa), e.g. from :func:`contact.viscoelastic.surface.solve_surface`.
-    creep : CreepSeries
-        The pair's creep series.
-    nu : float
-        The combined Poisson ratio.
-    speed : float
-        Rolling speed V (m/s).
+    rolling : ViscoRolling
+        The pair's creep series, combined Poisson ratio and rolling speed
+        (:class:`ViscoRolling`).
     mu : float
         Coefficient of friction (> 0).
     creepage : float, optional
@@ -217,8 +237,8 @@ def visco_steady_tractions(grid: Grid, pressure: np.ndarray, creep: CreepSeries,
         raise ContactInputError(f"the pressure must have the grid's shape {grid.h.shape}")
     if edge_contact(p, leading_only=True):
         raise_edge(LEADING_EDGE, "the grid")
-    op = ViscoHalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, creep, nu, speed,
-                            ahead)
+    op = ViscoHalfSpacePair(len(grid.y), len(grid.x), grid.dx, grid.dy, rolling.creep,
+                            rolling.nu, rolling.speed, rolling.ahead)
     g = mu * p
     u0 = (np.zeros((2, *p.shape)) if coupling is None
           else pressure_tangential(op, p, *coupling))
@@ -261,6 +281,6 @@ def rolling_sphere_tractions(radius: float, load: float, creep: CreepSeries, nu:
     x, y = np.asarray(res.x), np.asarray(res.y)
     h = (x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius)
     grid = Grid(x=x, y=y, h=h)
-    tr = visco_steady_tractions(grid, np.asarray(res.pressure), creep, nu, speed, mu,
-                                creepage=creepage, fx=fx, tol=tol)
+    tr = visco_steady_tractions(grid, np.asarray(res.pressure), ViscoRolling(creep, nu, speed),
+                                mu, creepage=creepage, fx=fx, tol=tol)
     return res, tr

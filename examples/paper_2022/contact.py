@@ -30,6 +30,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 import numpy as np  # noqa: E402
 
 import surfmet  # noqa: E402
+from contact import Dissipation, DomainSpec  # noqa: E402
 from contact.exponent import fit_exponent, local_exponent  # noqa: E402
 from contact.materials import composite_modulus, displacement_shares, material  # noqa: E402
 from contact.rolling import (  # noqa: E402
@@ -222,11 +223,14 @@ def main(argv: list[str]) -> int:
     t0 = time.time()
     for centre in progress(centres, total=len(centres), desc="track positions"):
         rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy, centre=centre)
-        common = dict(roughness=rough, roughness_rms=prep.sigma)
-        hy = sphere_sweep(RADIUS, e_star, loads, model="hysteresis", **common)
+        rms = prep.sigma  # the plastic band's roughness, as the scans give it
+        hy = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+                          dissipation=Dissipation(model="hysteresis", roughness_rms=rms))
         frozen_f = np.array([hysteresis_work(r, RADIUS, kinematics="frozen")
                              for r in hy.results])
-        pl = sphere_sweep(RADIUS, e_star, loads, model="plastic", hardness=hardness, **common)
+        pl = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+                          dissipation=Dissipation(model="plastic", hardness=hardness,
+                                                  roughness_rms=rms))
         per_model["hysteresis"].append(hy.moments)
         per_model["frozen"].append(frozen_f * RADIUS)
         per_model["plastic"].append(pl.moments)
@@ -259,7 +263,7 @@ def main(argv: list[str]) -> int:
             "loads": loads, "moments": m, "local_lambda": local_exponent(loads, m),
             "positions": len(rows),
         }
-    smooth = sphere_sweep(RADIUS, e_star, loads, grid=128)
+    smooth = sphere_sweep(RADIUS, e_star, loads, domain=DomainSpec(grid=128))
     results["smooth (Hertz)"] = {"lambda_eff": smooth.lambda_eff,
                                  "lambda_ci": list(smooth.lambda_ci),
                                  "lambda_ci_positions": list(smooth.lambda_ci),

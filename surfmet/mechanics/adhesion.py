@@ -161,6 +161,7 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     pull_off_force 2.68 µN
     dmt_pull_off_force 3.14 µN
     """
+    from contact import DomainSpec
     from contact.adhesion.ball import adhesive_ball, default_size
     from contact.adhesion.memory import check_adhesion_memory
 
@@ -177,8 +178,8 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     z, scans = rough_grid(plate, ball, grid, size, spikes)
     if law.smoothing == 0.0:  # a step smoothed on the grid, where the law has one
         law = law.on_grid(size / grid, mats.e_star)
-    res = adhesive_ball(radius, mats, law, grid=grid, size=size, steps=steps,
-                        roughness=z, progress=progress)
+    res = adhesive_ball(radius, mats, law, domain=DomainSpec(grid=grid, size=size),
+                        steps=steps, roughness=z, progress=progress)
     if choice is not None and choice.capped:
         res = dataclasses.replace(res, warnings=(*res.warnings, choice.why))
     why = choice.why if choice is not None else "given by the user"

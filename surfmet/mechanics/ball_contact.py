@@ -244,6 +244,20 @@ def solution_warnings(res: ContactResult, mats: MaterialPair) -> list[str]:
     return out
 
 
+#: The facade keywords that choose the engine's domain (:class:`contact.DomainSpec`).
+DOMAIN_KEYWORDS = ("grid", "size", "periodic", "max_grid", "on_edge")
+
+
+def _engine_settings(**options: Any) -> tuple[Any, Any]:
+    """The engine's :class:`contact.DomainSpec` and :class:`contact.SolveOptions` from a
+    facade's flat keywords (``grid``, ``size``, ``periodic``, ``max_grid``, ``on_edge``;
+    ``tol``, ``max_iter``, ``callback``...): the one translation of every ball facade."""
+    from contact import DomainSpec, SolveOptions
+
+    domain = {k: options.pop(k) for k in DOMAIN_KEYWORDS if k in options}
+    return DomainSpec(**domain), SolveOptions(**options)
+
+
 def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
                   e_star: MaterialPair | float,
                   hardness: float | None = None, offset: tuple[float, float] | None = None,
@@ -279,12 +293,13 @@ def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
     from contact.errors import EdgeContactWarning
     from contact.setups.ball_on_plate import solve_sphere
 
+    domain, solve = _engine_settings(max_grid=max_grid, **options)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", EdgeContactWarning)
         res = solve_sphere(
             radius, load, e_star,
             roughness=None if pair is None else pair.composite(offset),
-            hardness=hardness, max_grid=max_grid, **options,
+            hardness=hardness, domain=domain, options=solve,
         )
     found = tuple(str(w.message) for w in caught if issubclass(w.category, EdgeContactWarning))
     return res, found

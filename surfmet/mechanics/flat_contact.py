@@ -216,6 +216,7 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     persson ['4.5e-04', '1.3e-03']
     """
     from contact.errors import ContactInputError
+    from contact.grid import gap_grid
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
     from contact.setups.flat import flat_contact as bem_sweep
     from surfmet.mechanics.spectrum import prepared_scan, spectrum
@@ -242,10 +243,10 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     spec = spectrum(scan, periodic=per, e_star=e_star if hardness else None,
                     hardness=hardness)
     try:
-        bem = bem_sweep(np.asarray(scan.heights), scan.dx, scan.dy, pressures=p,
-                        e_star=e_star if pair is None else pair, periodic=per,
-                        hardness=hardness, stiffness=stiffness,
-                        progress=progress)
+        z = np.asarray(scan.heights, dtype=float)
+        bem = bem_sweep(gap_grid(float(z.max()) - z, scan.dx, scan.dy, periodic=per),
+                        pressures=p, e_star=e_star if pair is None else pair,
+                        hardness=hardness, stiffness=stiffness, progress=progress)
         ps = spec.psd
         models = {
             "persson": persson(p, e_star, ps.q, ps.C, ps.weights, ps.dq),

@@ -287,6 +287,7 @@ def hertz_check(
     >>> hertz_check(radius=0.02, load=10.0, grid=64).hertz_holds
     True
     """
+    from contact import DomainSpec
     from contact.hertzcheck import check_sphere
     from surfmet.mechanics.material_spec import material_pair
     from surfmet.units import parse_force, parse_length
@@ -314,7 +315,8 @@ def hertz_check(
     check = check_sphere(
         radius, load, mats,
         roughness=None if pair is None else pair.composite(offset),
-        sigma=prep.sigma, hardness=hardness, grid=grid, max_grid=max_grid, on_edge=on_edge,
+        sigma=prep.sigma, hardness=hardness,
+        domain=DomainSpec(grid=grid, max_grid=max_grid, on_edge=on_edge),
     )
     notes = [*prep.notes, *check.notes]
     if hardness is None:
@@ -433,28 +435,27 @@ def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, r
     Examples
     --------
     >>> import surfmet
-    >>> from contact import check_sphere
+    >>> from contact import DomainSpec, check_sphere
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.hertz_check import rough_ball_models, scan_summits
     >>> from surfmet.mechanics.scan_preparation import prepare_scans
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> prep = prepare_scans(surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy))
     >>> check = check_sphere(0.02, 10.0, 58.6e9, roughness=prep.pair.composite(None),
-    ...                      sigma=prep.sigma, hardness=1.05e9, grid=64)
+    ...                      sigma=prep.sigma, hardness=1.05e9, domain=DomainSpec(grid=64))
     >>> models = rough_ball_models(check, scan_summits(prep), radius=0.02, load=10.0,
     ...                            e_star=58.6e9, hardness=1.05e9)
     >>> list(models.models)
     ['hertz', 'greenwood_tripp', 'greenwood_tripp_plastic', 'bem']
     """
     from contact.errors import ContactInputError, ConvergenceError
-    from contact.roughcontact.greenwood_tripp import greenwood_tripp
+    from contact.roughcontact.greenwood_tripp import Asperities, greenwood_tripp
     from contact.roughcontact.hierarchy import model_hierarchy
 
     extended: dict[str, Any] = {}
     left_out: dict[str, str] = {}
     if summits is not None:
-        kw: dict[str, Any] = dict(sigma_s=summits.sigma_s, density=summits.density,
-                                  summit_radius=summits.radius)
+        kw: dict[str, Any] = dict(asperities=Asperities.of(summits))
         # a model that cannot be solved is left out of the hierarchy with its reason, not
         # fatal to the check
         for name, h in (("greenwood_tripp", None), ("greenwood_tripp_plastic", hardness)):

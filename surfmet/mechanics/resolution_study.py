@@ -166,6 +166,9 @@ def rolling_study(
     >>> print(study_lines(study)[2])
     λ_eff                     3.287       1.2213   keeps moving (169 %)
     """
+    from dataclasses import fields
+
+    from contact import Dissipation
     from contact.resolution import rolling_study as engine
 
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
@@ -178,8 +181,12 @@ def rolling_study(
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
         sweep_kwargs["hardness"] = mats.hardness
     pair = prep.pair
+    # the flat keywords of the dissipation model travel as one contact.Dissipation
+    named = {f.name for f in fields(Dissipation)}
+    dissipation = Dissipation(**{k: sweep_kwargs.pop(k) for k in list(sweep_kwargs)
+                                 if k in named})
     study = engine(radius, mats, loads, pair.roughness, pair.dx, pair.dy, factors=factors,
-                   progress=progress, **sweep_kwargs)
+                   progress=progress, dissipation=dissipation, **sweep_kwargs)
     return study, prep
 
 

@@ -227,13 +227,16 @@ def rolling_resistance(
             roughness=None if pair is None else (pair.roughness, pair.dx, pair.dy),
             grid=grid or 32, progress=progress)
     else:
+        from contact import Dissipation, DomainSpec
+
         sweep = sphere_sweep(
-            radius, mats, w, model=model,
+            radius, mats, w,
+            dissipation=Dissipation(model=model, hardness=hardness, alpha_h=alpha_h,
+                                    share=share, kinematics=kinematics,
+                                    roughness_rms=prep.sigma),
             roughness=None if pair is None else CompositeRoughness(
                 pair.roughness, pair.dx, pair.dy, centre=centre),
-            roughness_rms=prep.sigma, hardness=hardness, alpha_h=alpha_h,
-            share=share, kinematics=kinematics, grid=grid, max_grid=max_grid,
-            progress=progress,
+            domain=DomainSpec(grid=grid, max_grid=max_grid), progress=progress,
         )
     notes = [*(n for n in prep.notes if pair is not None), *sweep.notes]
     return RollingReport(sweep=sweep, radius=radius, ball_material=ball_m,

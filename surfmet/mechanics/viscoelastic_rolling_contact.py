@@ -303,13 +303,14 @@ def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
     if mu is None:
         return res, None
     from contact.grid import Grid
-    from contact.viscoelastic.traction3d import pair_poisson, visco_steady_tractions
+    from contact.viscoelastic.traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
 
     x, y = np.asarray(res.x), np.asarray(res.y)
     grid3 = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius))
     nu = pair_poisson(bodies["ball"], bodies["plate"])
     pair = (bodies["ball"], bodies["plate"]) if coupled else None
-    return res, visco_steady_tractions(grid3, np.asarray(res.pressure), creep, nu, speed, mu,
+    return res, visco_steady_tractions(grid3, np.asarray(res.pressure),
+                                       ViscoRolling(creep, nu, speed), mu,
                                        creepage=creepage, coupling=pair)
 
 
