@@ -28,8 +28,9 @@ import numpy as np
 import pytest
 
 from contact import hertz_sphere, sphere_gap
-from contact.bem import solve_normal
+from contact.bem import SolveOptions, solve_normal
 from contact.errors import ContactInputError
+from contact.grid import gap_grid
 from contact.halfspace.axisymmetric import RingOperator
 from contact.halfspace.convolution import Convolution, SpectralConvolution, convolution
 from contact.halfspace.operator import GEOMETRIES, KERNELS, Operator
@@ -77,7 +78,8 @@ def test_the_factory_makes_both_kernels_and_refuses_what_it_cannot():
         with pytest.raises(ContactInputError):
             convolution(8, 10, 1e-6, 1e-6, **kw)
     with pytest.raises(ContactInputError, match="periodic only"):
-        solve_normal(np.ones((8, 8)), 1e-6, e_star=1e11, load=1e-3, kernel="spectral")
+        solve_normal(gap_grid(np.ones((8, 8)), 1e-6), e_star=1e11, load=1e-3,
+                     options=SolveOptions(kernel="spectral"))
 
 
 def test_spectral_operator_on_a_cosine_is_westergaard():
@@ -102,8 +104,9 @@ PSTAR = math.pi * E_STAR * DELTA / LAM
 
 def _wavy(frac: float, kernel: str):
     h = np.tile(DELTA * (1 - np.cos(2 * np.pi * X / LAM)), (NY, 1))
-    return solve_normal(h, DX, e_star=E_STAR, load=frac * PSTAR * LAM * NY * DX,
-                        periodic=True, tol=1e-8, kernel=kernel)
+    return solve_normal(gap_grid(h, DX, periodic=True), e_star=E_STAR,
+                        load=frac * PSTAR * LAM * NY * DX,
+                        options=SolveOptions(tol=1e-8, kernel=kernel))
 
 
 @pytest.mark.parametrize("kernel", ["love", "spectral"])
@@ -149,8 +152,9 @@ def test_hertz_alone_and_in_a_periodic_array(kernel, periodic):
     e_star, radius, load, n = 1e11, 0.01, 1.0, 256
     hz = hertz_sphere(radius, load, e_star)
     side = 8 * hz.a
-    res = solve_normal(sphere_gap(n, side / n, radius), side / n, e_star=e_star, load=load,
-                       periodic=periodic, kernel=kernel, tol=1e-8, edge="ignore")
+    res = solve_normal(gap_grid(sphere_gap(n, side / n, radius), side / n, periodic=periodic),
+                       e_star=e_star, load=load,
+                       options=SolveOptions(kernel=kernel, tol=1e-8, edge="ignore"))
     eps = radius * S3 * load / (2 * math.pi * e_star * side**3) if periodic else 0.0
     assert res.pmax == pytest.approx(hz.p0 * (1 + eps) ** (2 / 3), rel=1.5e-4)
 
@@ -172,9 +176,9 @@ def test_spectral_kernel_is_tamaas_on_periodic_rough_contact():
                         rel_tol=1e-12)  # the very array Tamaas was given
     dx = case["box_side"] / n
     ref = {k: v["value"] for k, v in data["results"]["128"]["omp1"]["non_adhesive"].items()}
-    res = solve_normal(z.max() - z, dx, e_star=case["e_star"], periodic=True, tol=1e-6,
-                       load=case["mean_pressure"] * z.size * dx * dx, edge="ignore",
-                       kernel="spectral")
+    res = solve_normal(gap_grid(z.max() - z, dx, periodic=True), e_star=case["e_star"],
+                       load=case["mean_pressure"] * z.size * dx * dx,
+                       options=SolveOptions(tol=1e-6, edge="ignore", kernel="spectral"))
     assert abs(res.area_fraction * z.size - ref["area_fraction"] * z.size) <= 1.0
     assert float(np.mean(np.asarray(res.gap))) == pytest.approx(ref["mean_gap"], rel=1e-5)
 
