@@ -78,37 +78,17 @@ def gradient_step(y, g, p, kind, peak, reach, width, step, g_new):  # pragma: no
 
 
 @nb.njit(cache=True)
-def momentum(g_new, g, c, y):  # pragma: no cover - compiled
-    """y = max(g_new + c (g_new - g), 0), then g = g_new (flattened arrays, in place)."""
-    for i in range(y.size):
-        gn = g_new[i]
-        v = gn + c * (gn - g[i])
-        y[i] = v if v > 0.0 else 0.0
-        g[i] = gn
-
-
-@nb.njit(cache=True)
-def momentum_into(g_new, g, c, y, y_fft):  # pragma: no cover - compiled
-    """y = max(g_new + c (g_new - g), 0), also written to ``y_fft`` (the next FFT's input:
-    y's float32 copy, or y itself), on flattened arrays; g is left as it is, for the caller
-    to swap g and g_new instead of copying one into the other (a pass over memory less)."""
+def momentum_into(g_new, g, c, b, y, u):  # pragma: no cover - compiled
+    """y = max(g_new + c (g_new - g), 0) and u = y - b (the elastic term's displacement,
+    the next FFT's input, in its precision: float32 or float64), on flattened arrays; g
+    is left as it is, for the caller to swap g and g_new instead of copying one into the
+    other (a pass over memory less)."""
     for i in range(y.size):
         gn = g_new[i]
         v = gn + c * (gn - g[i])
         v = v if v > 0.0 else 0.0
         y[i] = v
-        y_fft[i] = v
-
-
-@nb.njit(cache=True)
-def scale_subtract(f, s, b):  # pragma: no cover - compiled
-    """f = f s - b in place (2D: f and b complex, s real): the elastic pressure's spectrum
-    from the gap's, in one pass instead of two and a complex copy of s."""
-    for i in range(f.shape[0]):
-        for j in range(f.shape[1]):
-            v = f[i, j]
-            w = b[i, j]
-            f[i, j] = complex(v.real * s[i, j] - w.real, v.imag * s[i, j] - w.imag)
+        u[i] = v - b[i]
 
 
 @nb.njit(cache=True)
@@ -127,10 +107,10 @@ def free_mean_step(y, g_new):  # pragma: no cover - compiled
 
 
 @nb.njit(cache=True)
-def momentum_shift_into(g_new, g, c, shift, y, y_fft):  # pragma: no cover - compiled
+def momentum_shift_into(g_new, g, c, shift, b, y, u):  # pragma: no cover - compiled
     """:func:`momentum_into` after moving the cells apart by ``shift``: g_new =
-    max(g_new + shift, 0) where g_new > 0 (in place), then y = y_fft = max(g_new +
-    c (g_new - g), 0)."""
+    max(g_new + shift, 0) where g_new > 0 (in place), then y = max(g_new + c (g_new - g),
+    0) and u = y - b."""
     for i in range(y.size):
         gn = g_new[i]
         if gn > 0.0:
@@ -140,4 +120,4 @@ def momentum_shift_into(g_new, g, c, shift, y, y_fft):  # pragma: no cover - com
         v = gn + c * (gn - g[i])
         v = v if v > 0.0 else 0.0
         y[i] = v
-        y_fft[i] = v
+        u[i] = v - b[i]

@@ -114,6 +114,21 @@ class Convolution:
             self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
         return self._stiff[single]
 
+    def spectral(self, x: np.ndarray, multiplier: np.ndarray, single: bool = False,
+                 workers: int = -1) -> np.ndarray:
+        """irfft2(rfft2(x) * ``multiplier``) on this periodic grid, shape (ny, nx), with the
+        operator's transforms and work buffer.
+
+        The adhesive solve of :mod:`contact.adhesion` applies its elastic stiffness with
+        it: by default the exact inverse of this operator's spectrum (E* / ``spec64``, the
+        q = 0 entry its mean-plane spring; not :meth:`stiffness`, the preconditioner's,
+        whose kernel is summed over fewer images). ``multiplier`` has the rfft grid's
+        shape, in the transform's precision (float32 where ``single``).
+        """
+        if not self.periodic:
+            raise ContactInputError("a spectral multiplier is applied on a periodic grid")
+        return self._cyclic(x, (0, self.ny), multiplier, single, workers)
+
     def _cyclic(self, x: np.ndarray, rows: tuple[int, int], multiplier: np.ndarray,
                 single: bool, workers: int) -> np.ndarray:
         """The unpadded cyclic convolution: irfft2(rfft2(x) * multiplier), pruned to ``rows``."""
