@@ -28,6 +28,7 @@ its free-cell shift and its divergence guard (:data:`contact.adhesion.solver.FRE
 from __future__ import annotations
 
 import math
+from typing import Protocol
 
 import numpy as np
 
@@ -35,6 +36,22 @@ from contact.adhesion import kernels
 from contact.bem import loop
 from contact.bem.loop import Check
 from contact.bem.steps import Outcome
+from contact.halfspace.convolution import Convolution
+
+
+class GapProblem(Protocol):
+    """What the method reads of :class:`contact.adhesion.solver.AdhesiveProblem`."""
+
+    gap0: np.ndarray
+    law: object  # an interaction law (contact.adhesion.laws), its kernel code given apart
+
+    @property
+    def operator(self) -> Convolution: ...
+
+    @property
+    def spring(self) -> float: ...
+
+    def elastic_stiffness(self, spring: bool, single: bool = False) -> np.ndarray: ...
 
 
 class AcceleratedGradient:
@@ -49,35 +66,33 @@ class AcceleratedGradient:
     first iterate's pressure scale (None: no guard).
     """
 
-    def __init__(self, problem, gap: np.ndarray, code: tuple[int, float, float], *,
+    def __init__(self, problem: GapProblem, gap: np.ndarray, code: tuple[int, float, float], *,
                  approach: float | None = None, pressure: float = 0.0, step: float,
                  tol: float, single: bool = False, shift: float | None = None,
                  diverged: float | None = None):
-        h = problem.gap0
         self.operator, self.law = problem.operator, problem.law
         self.real = np.float32 if single else np.float64
         # the mean plane's term: the spring at the approach, or the load's mean pressure
         self.stiffness = problem.elastic_stiffness(approach is not None, single)
-        self.offset = np.ravel(h - approach if approach is not None else h)
         self.pressure = self.real(pressure)
         self.single, self.step_length, self.code = single, step, code
         self.shift, self.diverged = shift, diverged
         self.stop = 0.5 * tol if single else tol  # float32: room for the float64 check
+        self.minus = elastic_offset(problem, self.stiffness, approach, single)
         self.y = np.array(gap, dtype=float, order="C")
         self.flat_y = self.y.ravel()
         self.flat_g = self.flat_y.copy()
         self.flat_new = np.empty(self.y.size)
-        # the elastic term's displacement y - offset, in the precision of the transforms
-        self.u = np.empty(h.shape, dtype=self.real)
-        self.flat_u = self.u.ravel()
-        np.subtract(self.flat_y, self.offset, out=self.flat_u, casting="same_kind")
+        # the transforms' input: y itself, or its float32 copy written by the momentum
+        self.y_fft = self.y.astype(np.float32) if single else self.y
+        self.flat_fft = self.y_fft.ravel()
         self.theta, self.uphill, self.limit = 1.0, False, math.inf
         self.iteration, self.evaluations, self.residual = 0, 0, math.inf
 
     def check(self) -> Check:
         """The gradient at y, its projected step (kept for :meth:`step`) and the test."""
         self.evaluations += 1
-        p = self.operator.spectral(self.u, self.stiffness, self.single, 1)
+        p = self.operator.spectral(self.y_fft, self.stiffness, self.single, 1, self.minus)
         if self.pressure:
             p += self.pressure
         kind, reach, width = self.code
@@ -106,16 +121,25 @@ class AcceleratedGradient:
         y, g, new = self.flat_y, self.flat_g, self.flat_new
         if self.shift is not None:  # the free cells' mean moved 1 + shift times as far
             shift = self.shift * kernels.free_mean_step(y, new)
-            kernels.momentum_shift_into(new, g, c, shift, self.offset, y, self.flat_u)
+            kernels.momentum_shift_into(new, g, c, shift, y, self.flat_fft)
         else:
-            kernels.momentum_into(new, g, c, self.offset, y, self.flat_u)
+            kernels.momentum_into(new, g, c, y, self.flat_fft)
         self.flat_g, self.flat_new = new, g  # the new iterate is the next one's old
         self.theta = theta_new
         return Outcome.STEPPED
 
 
-def descend(problem, gap: np.ndarray, code: tuple[int, float, float], max_iter: int,
-            **terms) -> tuple[np.ndarray | None, int]:
+def elastic_offset(problem: GapProblem, stiffness: np.ndarray, approach: float | None,
+                   single: bool = False) -> np.ndarray:
+    """S h^, or S (h - delta)^ at an approach: the elastic pressure's spectrum is
+    S g^ minus it (g the gap)."""
+    h = problem.gap0 if approach is None else problem.gap0 - approach
+    real = np.float32 if single else np.float64
+    return stiffness * problem.operator.spectrum(h.astype(real), single, 1)
+
+
+def descend(problem: GapProblem, gap: np.ndarray, code: tuple[int, float, float],
+            max_iter: int, **terms) -> tuple[np.ndarray | None, int]:
     """Run :class:`AcceleratedGradient` (``terms``: its keywords) through the one driver,
     at most ``max_iter`` gradient evaluations: (the last iterate, or None where guarded
     (``diverged``) and it diverged or ran out; the evaluations done)."""

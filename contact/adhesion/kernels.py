@@ -78,17 +78,16 @@ def gradient_step(y, g, p, kind, peak, reach, width, step, g_new):  # pragma: no
 
 
 @nb.njit(cache=True)
-def momentum_into(g_new, g, c, b, y, u):  # pragma: no cover - compiled
-    """y = max(g_new + c (g_new - g), 0) and u = y - b (the elastic term's displacement,
-    the next FFT's input, in its precision: float32 or float64), on flattened arrays; g
-    is left as it is, for the caller to swap g and g_new instead of copying one into the
-    other (a pass over memory less)."""
+def momentum_into(g_new, g, c, y, y_fft):  # pragma: no cover - compiled
+    """y = max(g_new + c (g_new - g), 0), also written to ``y_fft`` (the next FFT's input:
+    y's float32 copy, or y itself), on flattened arrays; g is left as it is, for the caller
+    to swap g and g_new instead of copying one into the other (a pass over memory less)."""
     for i in range(y.size):
         gn = g_new[i]
         v = gn + c * (gn - g[i])
         v = v if v > 0.0 else 0.0
         y[i] = v
-        u[i] = v - b[i]
+        y_fft[i] = v
 
 
 @nb.njit(cache=True)
@@ -107,10 +106,10 @@ def free_mean_step(y, g_new):  # pragma: no cover - compiled
 
 
 @nb.njit(cache=True)
-def momentum_shift_into(g_new, g, c, shift, b, y, u):  # pragma: no cover - compiled
+def momentum_shift_into(g_new, g, c, shift, y, y_fft):  # pragma: no cover - compiled
     """:func:`momentum_into` after moving the cells apart by ``shift``: g_new =
-    max(g_new + shift, 0) where g_new > 0 (in place), then y = max(g_new + c (g_new - g),
-    0) and u = y - b."""
+    max(g_new + shift, 0) where g_new > 0 (in place), then y = y_fft = max(g_new +
+    c (g_new - g), 0)."""
     for i in range(y.size):
         gn = g_new[i]
         if gn > 0.0:
@@ -120,4 +119,4 @@ def momentum_shift_into(g_new, g, c, shift, b, y, u):  # pragma: no cover - comp
         v = gn + c * (gn - g[i])
         v = v if v > 0.0 else 0.0
         y[i] = v
-        u[i] = v - b[i]
+        y_fft[i] = v

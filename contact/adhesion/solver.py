@@ -1,4 +1,4 @@
-"""One adhesive normal solve at a prescribed approach, on a periodic grid.
+"""One adhesive normal solve on a periodic grid, at a prescribed approach or under a load.
 
 The unknown is the gap g >= 0 between the deformed surfaces, as in the primal
 formulation of Rey, Anciaux & Molinari (2017), Comput. Mech. 60:69. With the surface
@@ -7,11 +7,12 @@ total energy per cell area is
 
     Pi(g) = 1/2 <u, S u> + sum_i phi(g_i),
 
-S the periodic half-space stiffness (the inverse of the core's periodic Love operator,
-:func:`contact.halfspace.influence.periodic_kernel_spectrum`, about E* |q| / 2) and phi the adhesion
-law's energy (:mod:`contact.adhesion.laws`). Its stationary points under g >= 0 are the
-equilibria: the pressure p = S u equals the attractive traction -t(g) where the surfaces
-are apart and p >= -t(0) where they touch, so the tensile tractions come out of the solve
+S the periodic half-space stiffness (the exact inverse of the spectrum of the core's
+periodic Love operator, :class:`contact.halfspace.convolution.Convolution`, about
+E* |q| / 2, applied with that operator's transforms) and phi the adhesion law's energy
+(:mod:`contact.adhesion.laws`). Its stationary points under g >= 0 are the equilibria:
+the pressure p = S u equals the attractive traction -t(g) where the surfaces are apart
+and p >= -t(0) where they touch, so the tensile tractions come out of the solve
 instead of being assumed. Pi is not convex (phi is concave), so a warm-started local
 minimiser follows one equilibrium branch under displacement control, and a branch that
 ends makes the next solve jump to another one: that is the jump-in and jump-out.
@@ -23,7 +24,11 @@ measured from the mean plane of the deformed surface. Pi is minimised by a proje
 gradient with Nesterov momentum (FISTA, Beck & Teboulle 2009, SIAM J. Imaging Sci. 2:183),
 the momentum restarted whenever it points uphill (O'Donoghue & Candes 2015, Found. Comput.
 Math. 15:715), with the step 1 / (the largest stiffness), and 1.3 times that under
-load control (:data:`LOAD_STEP`).
+load control (:data:`LOAD_STEP`). Both controls are one method
+(:class:`contact.adhesion.descent.AcceleratedGradient`: load control is approach control
+with the mean-plane spring off and the load's pressure on) run by the one driver of the
+normal solves (:func:`contact.bem.loop.drive`), as the non-adhesive and plastic solves
+of :mod:`contact.bem` are.
 
 Discretisation: a cell either touches (zero gap) or not and carries a uniform pressure,
 so the contact edge is pinned by the pixels; on retraction the contact stays too large
@@ -40,7 +45,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.adhesion import kernels
-from contact.adhesion.descent import descend
+from contact.adhesion.descent import descend, elastic_offset
 from contact.adhesion.laws import DugdaleLaw, InteractionLaw
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
@@ -326,8 +331,10 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
     that."""
     h, law = problem.gap0, problem.law
     # the pressure as the iteration formed it (the same rounding as its own test)
-    p = problem.operator.spectral(g - (h if mean_pressure is not None else h - approach),
-                                  problem.elastic_stiffness(mean_pressure is None), False, 1)
+    stiffness = problem.elastic_stiffness(mean_pressure is None)
+    p = problem.operator.spectral(
+        g, stiffness, False, 1,
+        elastic_offset(problem, stiffness, None if mean_pressure is not None else approach))
     if mean_pressure is not None:
         p += mean_pressure
     u = g - h + approach
