@@ -156,3 +156,25 @@ def test_adhesive_wavy_surface_follows_johnson_through_the_driver(drives):
     assert p == pytest.approx(float(mean_pressure(a, alpha)), abs=0.03)
     assert abs(p - math.sin(math.pi * a) ** 2) > 0.1
     assert drives == [descent.AcceleratedGradient] * 2
+
+
+def test_adhesive_stiffness_is_the_inverse_of_the_normal_solves_operator():
+    """The adhesive elastic term undoes the periodic operator of solve_normal: the pressure
+    of u = K * p / E* is p (its mean held by no spring under load control), and the
+    stiffness is E* |q| / 2 at long wavelengths (Westergaard)."""
+    from contact.adhesion.laws import DugdaleLaw
+    from contact.adhesion.solver import adhesive_problem
+    from contact.halfspace.convolution import convolution
+
+    n, dx, e_star = 64, 1e-6, 2e9
+    prob = adhesive_problem(np.zeros((n, n)), dx, e_star, DugdaleLaw(0.05, 1e7))
+    assert prob.operator is convolution(n, n, dx, dx, True)
+    rng = np.random.default_rng(3)
+    p = rng.normal(size=(n, n)) * 1e6
+    p -= p.mean()
+    u = prob.operator(p) / e_star
+    back = prob.operator.spectral(u, prob.elastic_stiffness(False))
+    assert np.abs(back - p).max() < 1e-9 * np.abs(p).max()
+    q = 2.0 * math.pi / (n * dx)
+    assert prob.stiffness[0, 1] == pytest.approx(e_star * q / 2.0, rel=1e-3)
+    assert prob.stiffness[1, 0] == pytest.approx(e_star * q / 2.0, rel=1e-3)
