@@ -2,8 +2,10 @@
 
 - :mod:`contact.adhesion.laws`: the interaction laws as plug-ins (one table, one module a
   law: Dugdale (Maugis), exponential, ...), the Maugis and Tabor parameters;
-- :mod:`contact.adhesion.solver`: one equilibrium at a prescribed approach on a periodic
-  grid, tensile tractions solved (:func:`solve_adhesive`);
+- :mod:`contact.adhesion.solver`: one equilibrium at a prescribed approach (or load) on a
+  periodic grid, tensile tractions solved (:func:`solve_adhesive`);
+- :mod:`contact.adhesion.descent`: its method, the accelerated projected gradient on the
+  gap, run by the one driver of the normal solves (:mod:`contact.bem.loop`);
 - :mod:`contact.adhesion.cycle`: displacement-controlled approach and retraction, pull-off,
   jumps and hysteresis;
 - :mod:`contact.adhesion.ball`: the sphere on a flat (:func:`adhesive_ball`);

@@ -78,16 +78,6 @@ def gradient_step(y, g, p, kind, peak, reach, width, step, g_new):  # pragma: no
 
 
 @nb.njit(cache=True)
-def momentum(g_new, g, c, y):  # pragma: no cover - compiled
-    """y = max(g_new + c (g_new - g), 0), then g = g_new (flattened arrays, in place)."""
-    for i in range(y.size):
-        gn = g_new[i]
-        v = gn + c * (gn - g[i])
-        y[i] = v if v > 0.0 else 0.0
-        g[i] = gn
-
-
-@nb.njit(cache=True)
 def momentum_into(g_new, g, c, y, y_fft):  # pragma: no cover - compiled
     """y = max(g_new + c (g_new - g), 0), also written to ``y_fft`` (the next FFT's input:
     y's float32 copy, or y itself), on flattened arrays; g is left as it is, for the caller
@@ -98,17 +88,6 @@ def momentum_into(g_new, g, c, y, y_fft):  # pragma: no cover - compiled
         v = v if v > 0.0 else 0.0
         y[i] = v
         y_fft[i] = v
-
-
-@nb.njit(cache=True)
-def scale_subtract(f, s, b):  # pragma: no cover - compiled
-    """f = f s - b in place (2D: f and b complex, s real): the elastic pressure's spectrum
-    from the gap's, in one pass instead of two and a complex copy of s."""
-    for i in range(f.shape[0]):
-        for j in range(f.shape[1]):
-            v = f[i, j]
-            w = b[i, j]
-            f[i, j] = complex(v.real * s[i, j] - w.real, v.imag * s[i, j] - w.imag)
 
 
 @nb.njit(cache=True)

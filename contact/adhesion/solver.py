@@ -1,4 +1,4 @@
-"""One adhesive normal solve at a prescribed approach, on a periodic grid.
+"""One adhesive normal solve on a periodic grid, at a prescribed approach or under a load.
 
 The unknown is the gap g >= 0 between the deformed surfaces, as in the primal
 formulation of Rey, Anciaux & Molinari (2017), Comput. Mech. 60:69. With the surface
@@ -7,11 +7,12 @@ total energy per cell area is
 
     Pi(g) = 1/2 <u, S u> + sum_i phi(g_i),
 
-S the periodic half-space stiffness (the inverse of the core's periodic Love operator,
-:func:`contact.halfspace.influence.periodic_kernel_spectrum`, about E* |q| / 2) and phi the adhesion
-law's energy (:mod:`contact.adhesion.laws`). Its stationary points under g >= 0 are the
-equilibria: the pressure p = S u equals the attractive traction -t(g) where the surfaces
-are apart and p >= -t(0) where they touch, so the tensile tractions come out of the solve
+S the periodic half-space stiffness (the exact inverse of the spectrum of the core's
+periodic Love operator, :class:`contact.halfspace.convolution.Convolution`, about
+E* |q| / 2, applied with that operator's transforms) and phi the adhesion law's energy
+(:mod:`contact.adhesion.laws`). Its stationary points under g >= 0 are the equilibria:
+the pressure p = S u equals the attractive traction -t(g) where the surfaces are apart
+and p >= -t(0) where they touch, so the tensile tractions come out of the solve
 instead of being assumed. Pi is not convex (phi is concave), so a warm-started local
 minimiser follows one equilibrium branch under displacement control, and a branch that
 ends makes the next solve jump to another one: that is the jump-in and jump-out.
@@ -23,7 +24,11 @@ measured from the mean plane of the deformed surface. Pi is minimised by a proje
 gradient with Nesterov momentum (FISTA, Beck & Teboulle 2009, SIAM J. Imaging Sci. 2:183),
 the momentum restarted whenever it points uphill (O'Donoghue & Candes 2015, Found. Comput.
 Math. 15:715), with the step 1 / (the largest stiffness), and 1.3 times that under
-load control (:data:`LOAD_STEP`).
+load control (:data:`LOAD_STEP`). Both controls are one method
+(:class:`contact.adhesion.descent.AcceleratedGradient`: load control is approach control
+with the mean-plane spring off and the load's pressure on) run by the one driver of the
+normal solves (:func:`contact.bem.loop.drive`), as the non-adhesive and plastic solves
+of :mod:`contact.bem` are.
 
 Discretisation: a cell either touches (zero gap) or not and carries a uniform pressure,
 so the contact edge is pinned by the pixels; on retraction the contact stays too large
@@ -34,18 +39,16 @@ surface alike (benchmarks/adhesion_convergence.py; tests/test_adhesion_validatio
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.fft as sfft
 
 from contact._validate import positive
-from contact.adhesion import kernels
+from contact.adhesion.descent import descend, elastic_offset
 from contact.adhesion.laws import InteractionLaw, kernel_arguments
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
-from contact.halfspace.influence import periodic_kernel_spectrum
+from contact.halfspace.convolution import Convolution, convolution
 from contact.record import SolveRecord, edge_contact
 
 #: Step of the load-controlled solve (:func:`solve_adhesive_at_pressure`) in units of
@@ -132,6 +135,22 @@ class AdhesiveProblem:
         return self.dx * self.dx
 
     @property
+    def operator(self) -> Convolution:
+        """The periodic half-space operator of the grid (E* = 1; cached by the factory)."""
+        ny, nx = self.gap0.shape
+        return convolution(ny, nx, self.dx, self.dx, True)
+
+    def elastic_stiffness(self, spring: bool, single: bool = False) -> np.ndarray:
+        """The stiffness the elastic term applies: with the mean-plane spring (approach
+        control) or without it (q = 0 free: load control), in float32 where ``single``."""
+        if spring and not single:
+            return self.stiffness
+        stiff = self.stiffness.astype(np.float32 if single else np.float64)  # a copy
+        if not spring:
+            stiff[0, 0] = 0.0
+        return stiff
+
+    @property
     def spring(self) -> float:
         """Stiffness per area of the mean-displacement spring (Pa/m)."""
         return float(self.stiffness[0, 0])
@@ -163,9 +182,9 @@ def adhesive_problem(gap0: np.ndarray | Grid, dx: float | None = None,
         raise ContactInputError("the pitch and E* must be positive")
     ny, nx = h.shape
     # the inverse of the core's periodic Love operator (uniform pressure on each cell),
-    # the same influence as the periodic normal BEM's
+    # the same operator as the periodic normal BEM's
     with np.errstate(divide="ignore"):
-        s = e_star / np.asarray(periodic_kernel_spectrum(ny, nx, grid.dx, grid.dx))
+        s = e_star / convolution(ny, nx, grid.dx, grid.dx, True).spec64
     s[0, 0] = 0.0
     s[0, 0] = s.max()
     return AdhesiveProblem(h, grid.dx, float(e_star), law, s, grid)
@@ -229,23 +248,10 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
         raise ContactInputError(
             f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
     g = np.maximum(h - approach if initial is None else np.asarray(initial, dtype=float), 0.0)
-    g = np.ascontiguousarray(g)
-    step = 1.0 / problem.spring  # 1 / the largest stiffness: the quadratic's Lipschitz constant
-    kind, reach, width = law_code(law)
-    y, g_new, theta = g.copy(), np.empty_like(g), 1.0
-    flat_y, flat_g, flat_new = y.ravel(), g.ravel(), g_new.ravel()
-    for it in range(1, max_iter + 1):
-        p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(y - h + approach), s=h.shape)
-        viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
-                                                reach, width, step, flat_new)
-        if viol <= tol * max(law.peak, pmax):
-            return _state(problem, y, approach, it, tol)
-        if dot > 0.0:  # momentum points uphill: restart it
-            theta = 1.0
-        theta_new = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * theta * theta))
-        kernels.momentum(flat_new, flat_g, (theta - 1.0) / theta_new, flat_y)
-        theta = theta_new
-    return _state(problem, y, approach, max_iter, tol)
+    # 1 / the largest stiffness: the quadratic's Lipschitz constant
+    y, nit = descend(problem, g, law_code(law), max_iter, approach=approach,
+                     step=1.0 / problem.spring, tol=tol)
+    return _state(problem, y, approach, nit, tol)
 
 
 def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
@@ -290,62 +296,16 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
             f"the warm-start gap has shape {np.shape(initial)}, the grid {h.shape}")
     g = np.ascontiguousarray(np.maximum(np.asarray(initial, dtype=float), 0.0))
     budget = max(1, int(ACCELERATED_SHARE * max_iter))
-    y, nit = _descend_at_pressure(problem, pressure, g, LOAD_STEP / problem.spring, tol,
-                                  budget, single)
+    code = law_code(problem.law, single)
+    y, nit = descend(problem, g, code, budget, pressure=pressure,
+                     step=LOAD_STEP / problem.spring, tol=tol, single=single,
+                     shift=FREE_SHIFT, diverged=DIVERGED)
     if y is None:  # diverged or stalled: again with the classical step and no shift
-        y, more = _descend_at_pressure(problem, pressure, g, 1.0 / problem.spring, tol,
-                                       max_iter - nit, single, guard=False)
+        y, more = descend(problem, g, code, max_iter - nit, pressure=pressure,
+                          step=1.0 / problem.spring, tol=tol, single=single)
         nit += more
     return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
                   mean_pressure=pressure)
-
-
-def _descend_at_pressure(problem: AdhesiveProblem, pressure: float, g: np.ndarray,
-                         step: float, tol: float, max_iter: int, single: bool, *,
-                         guard: bool = True) -> tuple[np.ndarray | None, int]:
-    """The projected gradient with momentum of :func:`solve_adhesive_at_pressure` from the
-    gap ``g`` (left as it is), at the step ``step``: (the last iterate, or None where
-    ``guard`` and the violation grew past :data:`DIVERGED` times the first iterate's
-    pressure scale or ``max_iter`` ran out, and the iterations done)."""
-    h, law = problem.gap0, problem.law
-    real = np.float32 if single else np.float64
-    stiff = _load_stiffness(problem).astype(real)
-    sh = stiff * sfft.rfft2(h.astype(real), workers=1)
-    kind, reach, width = law_code(law, single)
-    y, theta = g.copy(), 1.0
-    flat_y, flat_g, flat_new = y.ravel(), g.copy().ravel(), np.empty(g.size)
-    # the FFT's input: y itself, or its float32 copy written by the momentum kernel
-    y_fft = y.astype(real) if single else y
-    flat_fft = y_fft.ravel()
-    # float32 stops at half the tolerance, so that the float64 check passes
-    stop = 0.5 * tol if single else tol
-    limit = math.inf
-    for it in range(1, max_iter + 1):
-        f = sfft.rfft2(y_fft, workers=1)
-        kernels.scale_subtract(f, stiff, sh)
-        p = sfft.irfft2(f, s=h.shape, workers=1, overwrite_x=True)
-        p += real(pressure)
-        viol, pmax, dot = kernels.gradient_step(flat_y, flat_g, p.ravel(), kind, law.peak,
-                                                reach, width, step, flat_new)
-        scale = max(law.peak, pmax)
-        if viol <= stop * scale:
-            return y, it
-        if it == 1 and guard:
-            limit = DIVERGED * scale
-        elif not viol < limit:  # also NaN
-            return None, it
-        if dot > 0.0:  # momentum points uphill: restart it
-            theta = 1.0
-        theta_new = 0.5 * (1.0 + math.sqrt(1.0 + 4.0 * theta * theta))
-        c = (theta - 1.0) / theta_new
-        if guard:  # the free cells' mean moved 1 + FREE_SHIFT times as far
-            shift = FREE_SHIFT * kernels.free_mean_step(flat_y, flat_new)
-            kernels.momentum_shift_into(flat_new, flat_g, c, shift, flat_y, flat_fft)
-        else:
-            kernels.momentum_into(flat_new, flat_g, c, flat_y, flat_fft)
-        flat_g, flat_new = flat_new, flat_g  # the new iterate is the next one's old
-        theta = theta_new
-    return (None if guard else y), max_iter
 
 
 def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, float]:
@@ -353,13 +313,6 @@ def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, flo
     ramp width), as the law states it; an unregistered law is refused
     (:func:`contact.adhesion.laws.kernel_arguments`)."""
     return kernel_arguments(law, single)
-
-
-def _load_stiffness(problem: AdhesiveProblem) -> np.ndarray:
-    """The stiffness without the mean-plane spring (q = 0 free): load control."""
-    stiff = problem.stiffness.copy()
-    stiff[0, 0] = 0.0
-    return stiff
 
 
 def _violation(g: np.ndarray, grad: np.ndarray) -> np.ndarray:
@@ -373,12 +326,14 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
     ``mean_pressure`` (load control) the mean displacement is zero and the mean pressure
     that."""
     h, law = problem.gap0, problem.law
-    u = g - h + approach
-    if mean_pressure is None:
-        p = np.fft.irfft2(problem.stiffness * np.fft.rfft2(u), s=h.shape)
-    else:
-        p = np.fft.irfft2(_load_stiffness(problem) * np.fft.rfft2(u), s=h.shape)
+    # the pressure as the iteration formed it (the same rounding as its own test)
+    stiffness = problem.elastic_stiffness(mean_pressure is None)
+    p = problem.operator.spectral(
+        g, stiffness, False, 1,
+        elastic_offset(problem, stiffness, None if mean_pressure is not None else approach))
+    if mean_pressure is not None:
         p += mean_pressure
+    u = g - h + approach
     t = law.traction(g)
     touching = g <= 0.0
     residual = float(_violation(g, p + t).max()) / max(law.peak, float(p.max()))

@@ -7,7 +7,10 @@ The package's public entry is :func:`solve_normal`; its rooms:
   :class:`~contact.bem.bounds.PressureBounds` and the
   :class:`~contact.bem.options.SolveOptions`);
 - :mod:`contact.bem.options`: :class:`~contact.bem.options.SolveOptions`, how a solve runs;
-- :mod:`contact.bem.iteration`: the feasible start and the iteration loop;
+- :mod:`contact.bem.loop`: the one iteration driver of the 3D normal solves (this one's
+  and the adhesive solve's): residual test, step, budget, callback;
+- :mod:`contact.bem.iteration`: the feasible start and the Polonsky-Keer method the
+  driver runs;
 - :mod:`contact.bem.steps`: the conjugate-gradient (Polonsky-Keer) step, the projected
   gradient step and the mixed-precision re-sync, each a function of the iteration state;
 - :mod:`contact.bem.state`: the problem, the work arrays, the iteration state, the counters;

@@ -1,8 +1,10 @@
 """The iteration of the normal solver: a feasible start, then steps until converged.
 
-:func:`start` builds the first iterate; :func:`iterate` measures the residual, re-syncs
-the mixed-precision displacement where due, and takes a conjugate-gradient or projected
-gradient step (:mod:`contact.bem.steps`) until the tolerance, ``max_iter`` or a stall.
+:func:`start` builds the first iterate; :class:`PolonskyKeer` is the pressure solve as the
+one driver of the normal solves (:func:`contact.bem.loop.drive`) runs it: it measures the
+residual, re-syncs the mixed-precision displacement where due, and takes a
+conjugate-gradient or projected gradient step (:mod:`contact.bem.steps`);
+:func:`iterate` drives it until the tolerance, ``max_iter`` or a stall.
 """
 
 from __future__ import annotations
@@ -13,7 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from contact.bem import kernels
+from contact.bem import kernels, loop
+from contact.bem.loop import Check
 from contact.bem.state import IterationState, Problem, SolverStats, Workspace
 from contact.bem.steps import (
     Outcome,
@@ -87,36 +90,61 @@ def start(problem: Problem, work: Workspace, stats: SolverStats,
     )
 
 
-def iterate(problem: Problem, state: IterationState, work: Workspace, stats: SolverStats,
-            callback: Callable[[int, float], Any] | None = None) -> bool:
-    """Step ``state`` until converged (True) or stopped (False: ``max_iter`` or a stall).
+class PolonskyKeer:
+    """The pressure solve as :func:`contact.bem.loop.drive` runs it: the residual test
+    (with the mixed-precision re-sync) and the step the bounds call for.
 
     Convergence is declared only on an exactly computed (float64) displacement; in mixed
     precision u is also recomputed whenever the residual has dropped 100-fold since the
     last exact evaluation. With a finite cap the projected gradient step is taken where
     the conjugate gradient cannot move (no free point) or asked for it.
     """
-    while True:
-        measure_residual(problem, state, work)
+
+    def __init__(self, problem: Problem, state: IterationState, work: Workspace,
+                 stats: SolverStats):
+        self.problem, self.state, self.work, self.stats = problem, state, work, stats
+
+    @property
+    def iteration(self) -> int:
+        """Steps taken (the state's count)."""
+        return self.state.iteration
+
+    @iteration.setter
+    def iteration(self, value: int) -> None:
+        self.state.iteration = value
+
+    @property
+    def residual(self) -> float:
+        """The residual last measured."""
+        return self.state.residual
+
+    def _resync(self) -> Check:
+        resync(self.problem, self.state, self.stats)
+        self.state.residual_at_sync = self.state.residual
+        return Check.AGAIN
+
+    def check(self) -> Check:
+        """Measure the residual; re-sync u where due (then test again)."""
+        problem, state = self.problem, self.state
+        measure_residual(problem, state, self.work)
         if state.residual <= problem.tol:
-            if state.synced:
-                return True
-            resync(problem, state, stats)
-            state.residual_at_sync = state.residual
-            continue
+            return Check.CONVERGED if state.synced else self._resync()
         if (problem.single and not state.synced
                 and state.residual < 1e-2 * state.residual_at_sync):
-            resync(problem, state, stats)
-            state.residual_at_sync = state.residual
-            continue
-        if state.iteration >= problem.max_iter:
-            return False
-        state.iteration += 1
+            return self._resync()
+        return Check.STEP
+
+    def step(self) -> Outcome:
+        """A conjugate-gradient step, or (capped) a projected-gradient one where due."""
+        problem, state = self.problem, self.state
         if problem.plastic and (state.projected_next or state.n_free == 0):
-            outcome = projected_gradient_step(problem, state, work, stats)
-        else:
-            outcome = conjugate_gradient_step(problem, state, work, stats)
-        if outcome is Outcome.STOP:
-            return False
-        if outcome is Outcome.STEPPED and callback is not None:
-            callback(state.iteration, state.residual)
+            return projected_gradient_step(problem, state, self.work, self.stats)
+        return conjugate_gradient_step(problem, state, self.work, self.stats)
+
+
+def iterate(problem: Problem, state: IterationState, work: Workspace, stats: SolverStats,
+            callback: Callable[[int, float], Any] | None = None) -> bool:
+    """Step ``state`` until converged (True) or stopped (False: ``max_iter`` or a stall),
+    through the one driver (:func:`contact.bem.loop.drive`)."""
+    method = PolonskyKeer(problem, state, work, stats)
+    return loop.drive(method, problem.max_iter, callback).converged

@@ -11,7 +11,7 @@
   Numer. Anal. 8:141);
 - :func:`resync`: the mixed-precision re-sync, u recomputed exactly in float64.
 
-A step returns an :class:`Outcome`; the loop (:mod:`contact.bem.iteration`) decides from
+A step returns an :class:`Outcome`; the one driver (:mod:`contact.bem.loop`) decides from
 it whether to report the iteration, try again or stop. The reasons behind each step are
 in the notes of :mod:`contact.bem`.
 """

@@ -127,6 +127,35 @@ class Convolution:
             self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
         return self._stiff[single]
 
+    def spectrum(self, x: np.ndarray, single: bool = False, workers: int = -1) -> np.ndarray:
+        """rfft2(x) on this periodic grid (a new array, complex64 where ``single``)."""
+        if not self.periodic:
+            raise ContactInputError("a spectrum is taken on a periodic grid")
+        return forward(x, (self.ny, self.nx), None, single, workers)
+
+    def spectral(self, x: np.ndarray, multiplier: np.ndarray, single: bool = False,
+                 workers: int = -1, minus: np.ndarray | None = None) -> np.ndarray:
+        """irfft2(rfft2(x) * ``multiplier`` - ``minus``) on this periodic grid, shape
+        (ny, nx), with the operator's transforms and work buffer.
+
+        The adhesive solve of :mod:`contact.adhesion` applies its elastic stiffness with
+        it: by default the exact inverse of this operator's spectrum (E* / ``spec64``, the
+        q = 0 entry its mean-plane spring; not :meth:`stiffness`, the preconditioner's,
+        whose kernel is summed over fewer images), ``minus`` the stiffness times the
+        :meth:`spectrum` of the undeformed gap. ``multiplier`` (real) and ``minus``
+        (complex) have the rfft grid's shape, in the transform's precision.
+        """
+        if not self.periodic:
+            raise ContactInputError("a spectral multiplier is applied on a periodic grid")
+        ny, nx = self.ny, self.nx
+        _, complex_type = real_types(single)
+        buf = forward(x, (ny, nx), None, single, workers,
+                      out=self._buffer(ny, nx // 2 + 1, complex_type))
+        buf *= multiplier
+        if minus is not None:
+            buf -= minus
+        return inverse(buf, ny, nx, nx, workers)
+
     def _cyclic(self, x: np.ndarray, rows: tuple[int, int], multiplier: np.ndarray,
                 single: bool, workers: int) -> np.ndarray:
         """The unpadded cyclic convolution: irfft2(rfft2(x) * multiplier), pruned to ``rows``."""
