@@ -48,8 +48,10 @@ def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
 
     # a path, or the scan the command read with the user's units (--ball-pixel...)
     ball = surfmet.read(hz.ball) if isinstance(hz.ball, (str, Path)) else hz.ball
+    from surfmet.records.hertz import hertz_check_record
+
     res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
-    return res.to_json()
+    return hertz_check_record(res)
 
 
 def _number(v: Any) -> Any:

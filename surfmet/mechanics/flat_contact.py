@@ -77,7 +77,7 @@ class FlatContactReport:
     spectrum: Spectrum
     levelling: str
     settings: dict[str, Any] = field(default_factory=dict)
-    preparation: dict[str, Any] = field(default_factory=dict)
+    preparation: Any = None  # a FlatPreparation
     caveats: tuple[str, ...] = ()
     adhesion: Any = None  # contact.adhesion.flat.AdhesiveFlat, when a law was given
     materials: Any = None  # contact.material_pair.MaterialPair, when materials were given
@@ -173,7 +173,8 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     Returns
     -------
     FlatContactReport
-        The BEM sweep and the theories at each pressure; ``to_json()`` and ``figure()``.
+        The BEM sweep and the theories at each pressure, and ``figure()`` (its record:
+        :func:`surfmet.records.flat.flat_contact_record`).
 
     Raises
     ------

@@ -57,11 +57,14 @@ def spectrum_record(s: Any) -> dict[str, Any]:
 
 
 def spectrum_command_record(file: str, s: Any, levelling: str,
-                            preparation: dict[str, Any]) -> dict[str, Any]:
+                            preparation: Any) -> dict[str, Any]:
     """The record ``surfmet spectrum FILE --json`` emits for one scan (and the report
     carries): the file, its levelling and preparation, :func:`spectrum_record`, and the
     materials when the plasticity index was asked for."""
-    rec = {"file": file, "levelling": levelling, "scan_preparation": preparation,
+    from surfmet.records.preparation import flat_preparation_record
+
+    rec = {"file": file, "levelling": levelling,
+           "scan_preparation": flat_preparation_record(preparation),
            **spectrum_record(s)}
     if s.materials is not None:
         rec["materials"] = s.materials.names
