@@ -15,9 +15,9 @@ nearest measured value, which the notes report).
 
 Its record (:func:`surfmet.records.hertz.hertz_check_record`) has the keys
 ``hertz_holds``, ``judged`` (false: the scan's pixel does not resolve the contact, no
-verdict), ``alpha``, ``sigma``, ``hertz`` {a, delta, p0}, ``bem`` {pmax, effective_radius, contact_radius, approach,
-area_fraction, plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz},
-and ``models``
+verdict), ``alpha``, ``sigma``, ``hertz`` {a, delta, p0}, ``bem`` {pmax,
+effective_radius, contact_radius, approach, area_fraction, plastic_fraction},
+``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and ``models``
 {hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within

@@ -399,9 +399,9 @@ def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = Non
                  if scan is not None}
     s_plate = s_ball = 0.0
     if "plate" in pair.fits:
-        s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
+        s_plate = float(pair.fits["plate"].residual_rms)
     if "ball" in pair.fits:
-        s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
+        s_ball = float(pair.fits["ball"].residual_rms)
     return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
                          sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
                          residuals=residuals, spikes=mode)

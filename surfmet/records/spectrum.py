@@ -71,3 +71,13 @@ def spectrum_command_record(file: str, s: Any, levelling: str,
         rec["e_star"] = {"value": s.materials.e_star, "unit": "Pa"}
         rec["hardness"] = {"value": s.materials.hardness, "unit": "Pa"}
     return rec
+
+
+def profile_psd_record(fit: Any) -> dict[str, Any]:
+    """The report's record of the PSD fit drawn for a profile
+    (:func:`surfmet.psd.fit_hurst` on the roughness profile; None when it failed)."""
+    return {"of": "the roughness profile over the evaluation length", "window": "hann",
+            "hurst": None if fit is None else {
+                "value": fit.hurst,
+                "q_range": [{"value": fit.q_range[0], "unit": "rad/m"},
+                            {"value": fit.q_range[1], "unit": "rad/m"}]}}
