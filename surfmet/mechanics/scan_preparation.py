@@ -258,6 +258,15 @@ class FlatPreparation:
     --------
     prepare_flat : makes it.
     surfmet.records.preparation.flat_preparation_record : its record.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import prepare_flat
+    >>> _, done = prepare_flat(surfmet.read(path("paper_plate.x3p")))
+    >>> done.spikes, done.spikes_removed, done.levelling
+    ('remove', {'scan': 60}, None)
     """
 
     spikes: str
@@ -286,7 +295,19 @@ class ScansUsed:
 
     See Also
     --------
+    surfmet.mechanics.adhesion.rough_grid : makes it.
     surfmet.records.adhesion.scans_record : its record.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> _, used = rough_grid(patch, None, 32, 3e-4)
+    >>> used.plate_name, used.ball_name, used.z.shape
+    ('(in memory)', None, (32, 32))
     """
 
     prep: PreparedScans
@@ -326,7 +347,26 @@ class ScansUsed:
 
 
 def scan_name(scan: ScanSource | None) -> str | None:
-    """A scan's file name, "(in memory)" for a Topography, None when not given."""
+    """A scan's file name, "(in memory)" for a Topography, None when not given.
+
+    Parameters
+    ----------
+    scan : Topography, path or None
+        A scan as given.
+
+    Returns
+    -------
+    str or None
+        Its file (the one it was read from, for a Topography), or "(in memory)".
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import surfmet
+    >>> from surfmet.mechanics.scan_preparation import scan_name
+    >>> scan_name("plate.x3p"), scan_name(surfmet.Topography(np.zeros((4, 4)), 1e-6, 1e-6))
+    ('plate.x3p', '(in memory)')
+    """
     if scan is None:
         return None
     if isinstance(scan, Topography):  # read by the caller: its file, when it has one
