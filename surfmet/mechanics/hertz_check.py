@@ -290,12 +290,14 @@ def hertz_check(
     if adhesion_range is not None and work_of_adhesion is None:
         raise SurfmetInputError("an interaction range needs a work of adhesion "
                                 "(--work-of-adhesion)")
-    if hardness is None and plastic:
-        hardness = mats.hardness
     if not plastic:
         hardness = None
     if hardness is not None and not (math.isfinite(hardness) and hardness > 0):
         raise SurfmetInputError(f"the hardness must be a positive pressure, got {hardness!r}")
+    # the one home of the default hardness (contact.material_pair.resolve_pair): the
+    # user's, else the softer body's table value
+    mats = mats.with_hardness(hardness)
+    hardness = mats.hardness if plastic else None
     prep = prepare_scans(scan, ball, spikes=spikes)
     pair = prep.pair
     check = check_sphere(

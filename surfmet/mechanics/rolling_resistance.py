@@ -198,8 +198,10 @@ def rolling_resistance(
         raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
     mats = material_pair(materials)
     ball_m, plate_m = parse_materials(mats)
-    if model == "plastic" and hardness is None:
-        hardness = mats.hardness
+    if model == "plastic":
+        # the one home of the default hardness (contact.material_pair.resolve_pair): the
+        # user's, else the softer body's table value
+        hardness = mats.with_hardness(hardness).hardness
         if hardness is None:
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness or "
                                     "a material with H=...")

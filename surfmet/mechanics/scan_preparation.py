@@ -361,11 +361,9 @@ def scan_name(scan: ScanSource | None) -> str | None:
 
     Examples
     --------
-    >>> import numpy as np
-    >>> import surfmet
     >>> from surfmet.mechanics.scan_preparation import scan_name
-    >>> scan_name("plate.x3p"), scan_name(surfmet.Topography(np.zeros((4, 4)), 1e-6, 1e-6))
-    ('plate.x3p', '(in memory)')
+    >>> scan_name("plate.x3p"), scan_name(None)
+    ('plate.x3p', None)
     """
     if scan is None:
         return None

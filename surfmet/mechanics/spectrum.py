@@ -27,7 +27,7 @@ lists them.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -458,13 +458,11 @@ def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
     >>> scan.shape, periodic, levelling
     ((512, 1024), True, 'mean')
     """
-    import dataclasses
-
     from surfmet.mechanics.scan_preparation import SPIKES, prepare_flat
 
     scan, record = prepare_flat(topo, spikes=SPIKES if spikes is None else spikes)
     out, per, level = prepare(scan, periodic)
-    return out, per, level, dataclasses.replace(record, levelling=level)
+    return out, per, level, replace(record, levelling=level)
 
 
 def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None,
