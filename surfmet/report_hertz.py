@@ -34,7 +34,8 @@ def hertz_check_available() -> bool:
 
 
 def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
-    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
+    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan;
+    its record (:func:`surfmet.records.hertz.hertz_check_record`).
 
     This is the one place the report touches the Hertz-check module.
     """

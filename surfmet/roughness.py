@@ -314,7 +314,9 @@ def roughness_file(path: str | os.PathLike[str] | Measurement,
     except Exception as exc:  # a bug must not stop a batch; it is reported as such
         return {"file": name, "status": "error",
                 "error": f"internal error: {type(exc).__name__}: {exc}"}
-    return {"file": name, "status": "ok", **res.to_json()}
+    from surfmet.records.roughness import roughness_record
+
+    return {"file": name, "status": "ok", **roughness_record(res)}
 
 
 def roughness_many(
