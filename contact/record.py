@@ -5,7 +5,8 @@ the tangential steady-rolling and shift solvers, viscoelastic rolling, the adhes
 solve) returns its answer with a :class:`SolveRecord` in the field ``solve``: how many
 iterations it took, the residual it reached against the tolerance it was asked for,
 whether it converged, and whether the contact reaches the edge of the computational
-domain. Commands print it with :meth:`SolveRecord.text` and :meth:`SolveRecord.to_json`.
+domain. Commands print it with :meth:`SolveRecord.text`; its JSON record is built by the user
+layer (``surfmet.records.solve``), never here.
 
 Contact at the domain edge
 --------------------------
@@ -23,7 +24,6 @@ leading edge, or a rough scan that ends inside the contact), :func:`raise_edge` 
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -111,39 +111,6 @@ class SolveRecord:
                 f"{self.residual:.3g} (tolerance {self.tolerance:.3g}), {state}, "
                 f"edge contact: {edge}")
 
-    def to_json(self) -> dict:
-        """The record as JSON: dimensionless values with unit "", the warning or null."""
-        out: dict = {
-            "method": self.method,
-            "iterations": int(self.iterations),
-            "residual": {"value": _finite_or_none(self.residual), "unit": ""},
-            "residual_definition": self.residual_definition,
-            "tolerance": {"value": _finite_or_none(self.tolerance), "unit": ""},
-            "converged": bool(self.converged),
-            "edge_contact": bool(self.edge_contact),
-            "warning": self.warning,
-        }
-        if self.outer_iterations is not None:
-            out["outer_iterations"] = int(self.outer_iterations)
-        if self.solves != 1:
-            out["solves"] = int(self.solves)
-        if self.periodic:
-            out["periodic"] = True  # edge contact does not apply: the domain has no edge
-        return out
-
-    @classmethod
-    def from_json(cls, rec: dict) -> SolveRecord:
-        """The record back from :meth:`to_json` (null residuals become inf, NaN
-        tolerances stay NaN), so that a command printing its JSON prints the same line."""
-        res, tol = rec["residual"]["value"], rec["tolerance"]["value"]
-        return cls(method=rec["method"], iterations=rec["iterations"],
-                   residual=math.inf if res is None else res,
-                   tolerance=math.nan if tol is None else tol,
-                   converged=rec["converged"], edge_contact=rec["edge_contact"],
-                   residual_definition=rec.get("residual_definition", ""),
-                   outer_iterations=rec.get("outer_iterations"), solves=rec.get("solves", 1),
-                   periodic=rec.get("periodic", False))
-
 
 def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecord:
     """One record for several solves (a sweep, a cycle, the levels of a verdict): the
@@ -167,11 +134,6 @@ def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecor
         solves=sum(r.solves for r in records),
         periodic=all(r.periodic for r in records),
     )
-
-
-def _finite_or_none(v: float) -> float | None:
-    """JSON has no inf or NaN: those become null."""
-    return float(v) if math.isfinite(v) else None
 
 
 def edge_contact(pressure: np.ndarray, periodic: bool = False, *,

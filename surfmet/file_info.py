@@ -12,7 +12,7 @@ from typing import Any
 
 from surfmet.errors import SurfmetError
 
-__all__ = ["channel_choices", "channel_listing", "channel_summary", "info_record"]
+__all__ = ["channel_choices", "channel_listing", "info_record"]
 
 
 def channel_choices(scan: Any) -> list[tuple[Any, str]]:
@@ -28,15 +28,6 @@ def channel_choices(scan: Any) -> list[tuple[Any, str]]:
         else:
             out.append((i, str(entry)))
     return out
-
-
-def channel_summary(scan: Any) -> dict[str, Any]:
-    """One channel's or measurement's record: kind, grid, pixel and units."""
-    from surfmet.units import quantity
-
-    return {"kind": scan.kind, "nx": scan.nx, "ny": scan.ny,
-            "dx": quantity(scan.dx, "m"), "dy": quantity(getattr(scan, "dy", None), "m"),
-            "units": scan.calibration.record()}
 
 
 def channel_listing(path: str | os.PathLike, scan: Any, format: str | None = None,
@@ -74,13 +65,13 @@ def info_record(path: str | os.PathLike, scan: Any, format: str | None = None,
     >>> rec["format"], rec["kind"]
     ('x3p', 'areal')
     """
-    from surfmet.records import scan_record
+    from surfmet.records.scans import channel_record, scan_record
 
     rec = scan_record(scan)
     if listing is None:
         listing = channel_listing(path, scan, format, read_options)
     if listing:
         rec["channels_read"] = [
-            {"channel": c, "name": label, **({"error": err} if err else channel_summary(s))}
+            {"channel": c, "name": label, **({"error": err} if err else channel_record(s))}
             for c, label, s, err in listing]
     return rec

@@ -184,16 +184,6 @@ class Calibration:
         """What the output must say: each unit that was assumed or stated by the user."""
         return [t for t in (self.height_text(), self.lateral_text()) if t]
 
-    def record(self) -> dict[str, Any]:
-        """JSON: each unit with who stated it (``"file"``, ``"assumed"``, ``"user"``)."""
-        from surfmet.units import quantity
-
-        return {"height_unit": {"unit": self.height_unit, "source": self.height,
-                                "stated_by": SOURCE_WORDS[self.height]},
-                "pixel": {"dx": quantity(self.dx, "m"), "dy": quantity(self.dy, "m"),
-                          "lateral_unit": self.lateral_unit or None,
-                          "source": self.lateral, "stated_by": SOURCE_WORDS[self.lateral]},
-                "caveats": self.caveats()}
 
 
 @dataclass(frozen=True, eq=False)

@@ -55,6 +55,7 @@ def _extract(data: Any, profile: str | None, spikes: bool, settings: dict[str, A
              ) -> tuple[Any, Any]:
     """The profile to evaluate, spikes removed when asked: (profile, spike report)."""
     from surfmet.extract import extract_profile
+    from surfmet.records.roughness import spike_report_record
     from surfmet.spikes import remove_spikes
 
     report = None
@@ -63,7 +64,7 @@ def _extract(data: Any, profile: str | None, spikes: bool, settings: dict[str, A
             raise SurfmetInputError("an areal scan needs profile='row:K' or 'col:K'")
         if spikes:
             data, report = remove_spikes(data)
-            settings["spikes"] = report.as_dict()
+            settings["spikes"] = spike_report_record(report)
         prof = extract_profile(data, profile)
         settings["profile"] = prof.metadata.get("profile")
         return prof, report
@@ -74,7 +75,7 @@ def _extract(data: Any, profile: str | None, spikes: bool, settings: dict[str, A
         as_topo = Topography(prof.z[None, :], prof.dx, prof.dx, metadata=prof.metadata)
         cleaned, report = remove_spikes(as_topo)
         prof = prof.replace(z=cleaned.heights[0])
-        settings["spikes"] = report.as_dict()
+        settings["spikes"] = spike_report_record(report)
     return prof, report
 
 
@@ -85,12 +86,8 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
     import profiles
     from profiles.form import is_flat
     from surfmet.flat_scan import flat_diagnosis, flat_parameters
-    from surfmet.profile_roughness import (
-        conditions_record,
-        engine_cutoffs,
-        feature_values,
-        stratified_parameters,
-    )
+    from surfmet.profile_roughness import engine_cutoffs, feature_values, stratified_parameters
+    from surfmet.records.roughness import conditions_record
     from surfmet.roughness_result import RoughnessResult, consistent_diagnosis, unit_caveats
     from surfmet.spikes import spike_diagnosis
 

@@ -193,9 +193,11 @@ def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: 
     sec.info = _jsonable(info_record(sec.file, scan, read_options=read_options,
                                      listing=[] if measurement else None))
     res = roughness(scan, **options)
-    sec.roughness = {"file": sec.file, "status": "ok", **res.to_json()}
+    from surfmet.records.roughness import parameters_record, roughness_record
+
+    sec.roughness = {"file": sec.file, "status": "ok", **roughness_record(res)}
     sec.kind = res.kind  # "profile" also for a row of an areal scan
-    sec.parameters = {k: {"value": v, "unit": u} for k, (v, u) in res.parameters.items()}
+    sec.parameters = parameters_record(res, plain=True)
     sec.settings = res.settings
     name = valid_text(Path(sec.file).name)
     if res.kind == "areal":
@@ -251,6 +253,15 @@ def _meta_text(v: Any) -> str:
     return "" if v is None else str(v)
 
 
+def _length_text(v: Any) -> str:
+    """A length of the settings (SI m) as text, as :func:`quantity_text` writes one."""
+    from surfmet.units import format_quantity
+
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return format_quantity(float(v), "m")
+    return f"{v} m"
+
+
 def _jsonable(v: Any) -> Any:
     from surfmet.units import jsonable
 
@@ -290,10 +301,10 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
         rows.append(("levelling", str(s.get("level"))))
         lc = s.get("lc")
         rows.append(("λc (L-filter cut-off)", "none" if lc is None else
-                     f"{quantity_text({'value': lc, 'unit': 'm'})} ({s.get('lc_mode')})"))
+                     f"{_length_text(lc)} ({s.get('lc_mode')})"))
         ls = s.get("ls")
         rows.append(("λs (S-filter cut-off)", "none" if ls is None else
-                     quantity_text({"value": ls, "unit": "m"})))
+                     _length_text(ls)))
         if s.get("filter"):
             rows.append(("filter", str(s["filter"])))
         for key in ("lc_note", "ls_note"):
@@ -301,7 +312,7 @@ def _settings_rows(s: dict[str, Any]) -> list[tuple[str, str]]:
                 rows.append(("note", str(s[key])))
         if s.get("evaluation_length") is not None:
             rows.append(("evaluation length",
-                         f"{quantity_text({'value': s['evaluation_length'], 'unit': 'm'})} "
+                         f"{_length_text(s['evaluation_length'])} "
                          f"({s.get('n_sampling')} sampling lengths)"))
     win = s.get("window")
     rows.append(("window", "whole scan" if not win else json.dumps(_jsonable(win))))

@@ -85,11 +85,9 @@ def figures_profile(analysis: Any, name: str
             fit = fit_hurst(spec)
         except SurfmetInputError:
             fit = None
-        record = {"of": "the roughness profile over the evaluation length", "window": "hann",
-                  "hurst": None if fit is None else {
-                      "value": fit.hurst,
-                      "q_range": [{"value": fit.q_range[0], "unit": "rad/m"},
-                                  {"value": fit.q_range[1], "unit": "rad/m"}]}}
+        from surfmet.records.spectrum import profile_psd_record
+
+        record = profile_psd_record(fit)
         figs.append(("PSD of the roughness profile (Hann window)",
                      figure_png(psd_figure(spec, fits=[fit] if fit else None))))
     return figs, record

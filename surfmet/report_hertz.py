@@ -11,6 +11,7 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.report_html import esc, figure_png, figures_html, kv_table, quantity_text
+from surfmet.units import format_quantity
 
 
 @dataclass(frozen=True)
@@ -33,7 +34,8 @@ def hertz_check_available() -> bool:
 
 
 def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
-    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan; its ``to_json()``.
+    """Call :func:`surfmet.mechanics.hertz_check.hertz_check` on a plate scan;
+    its record (:func:`surfmet.records.hertz.hertz_check_record`).
 
     This is the one place the report touches the Hertz-check module.
     """
@@ -48,8 +50,10 @@ def run_hertz_check(scan: Any, hz: HertzOptions) -> dict[str, Any]:
 
     # a path, or the scan the command read with the user's units (--ball-pixel...)
     ball = surfmet.read(hz.ball) if isinstance(hz.ball, (str, Path)) else hz.ball
+    from surfmet.records.hertz import hertz_check_record
+
     res = hertz_check(scan, radius=hz.radius, load=hz.load, materials=hz.materials, ball=ball)
-    return res.to_json()
+    return hertz_check_record(res)
 
 
 def _number(v: Any) -> Any:
@@ -83,8 +87,8 @@ PAIRS = (
     ("peak pressure (p0 / pmax)", "p0", "pmax"),
     ("contact radius (a / a*, second moment of the pressure)", "a", "effective_radius"),
     ("approach (δ / approach)", "delta", "approach"),
-    ("area / πa0²", {"value": 1.0, "unit": ""}, "area_fraction"),
-    ("yielded area / πa0²", {"value": 0.0, "unit": ""}, "plastic_fraction"),
+    ("area / πa0²", 1.0, "area_fraction"),
+    ("yielded area / πa0²", 0.0, "plastic_fraction"),
 )
 #: BEM quantities without a Hertz counterpart: (row name, BEM key)
 BEM_ONLY = (("radius of the real contact area √(A/π)", "contact_radius"),)
@@ -100,16 +104,20 @@ def _comparison_rows(hertz: dict[str, Any], bem: dict[str, Any]) -> list[str]:
     rows = []
 
     def row(name: str, h: Any, b: Any) -> str:
+        # h: a record's quantity, or Hertz's own ratio (a float: 1 for the area, 0 yielded)
+        hv = h if isinstance(h, float) else h["value"] if _is_quantity(h) else None
+        htext = format_quantity(h, "") if isinstance(h, float) else quantity_text(h)
         diff = ""
-        if _is_quantity(h) and _is_quantity(b) and h["value"] and b["value"] is not None:
-            diff = f"{100 * (b['value'] / h['value'] - 1):+.1f} %"
-        return (f"<tr><td>{esc(name)}</td><td>{esc(quantity_text(h))}</td>"
+        if hv and _is_quantity(b) and b["value"] is not None:
+            diff = f"{100 * (b['value'] / hv - 1):+.1f} %"
+        return (f"<tr><td>{esc(name)}</td><td>{esc(htext)}</td>"
                 f"<td>{esc(quantity_text(b))}</td><td>{esc(diff)}</td></tr>")
 
     for name, hkey, bkey in PAIRS:
-        h = hkey if isinstance(hkey, dict) else hertz.get(hkey, "")
+        fixed = not isinstance(hkey, str)  # Hertz's value itself, a ratio
+        h = hkey if fixed else hertz.get(hkey, "")
         b = bem.get(bkey, "")
-        if _is_quantity(b) or (not isinstance(hkey, dict) and _is_quantity(h)):
+        if _is_quantity(b) or (not fixed and _is_quantity(h)):
             rows.append(row(name, h, b))
     for name, bkey in BEM_ONLY:
         if _is_quantity(bem.get(bkey)):
@@ -128,7 +136,7 @@ def hertz_html(check: dict[str, Any], fig: bytes | None, hz: HertzOptions | None
     parts = ["<h3>Hertz check</h3>", f'<p class="verdict">{verdict}'
              f" (α = {esc(quantity_text(check.get('alpha')))})</p>"]
     if hz is not None:
-        parts.append(kv_table([("ball radius", quantity_text({"value": hz.radius, "unit": "m"})),
+        parts.append(kv_table([("ball radius", format_quantity(float(hz.radius), "m")),
                                 ("load", f"{hz.load:.5g} N"), ("materials", hz.materials),
                                 ("ball scan", hz.ball or "none (smooth ball)")]))
     grid = check.get("grid")

@@ -206,17 +206,18 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
     from surfmet.areal.filters import l_filter, s_filter
     from surfmet.areal.form import dominant_form, remove_form
     from surfmet.flat_scan import flat_diagnosis, flat_parameters
+    from surfmet.records.form import form_record
+    from surfmet.records.roughness import (
+        areal_settings_record,
+        cutoff_record,
+        filter_record,
+        spike_report_record,
+    )
     from surfmet.spikes import remove_spikes, spike_diagnosis
 
-    settings: dict[str, Any] = {"kind": "areal", "standard": AREAL_STANDARD,
-                                "grid": {"nx": topo.nx, "ny": topo.ny},
-                                "dx": {"value": topo.dx, "unit": "m"},
-                                "dy": {"value": topo.dy, "unit": "m"}}
+    settings = areal_settings_record("areal", AREAL_STANDARD, topo, window)
     if window is not None:
         topo = _crop_areal(topo, window)
-        settings["window"] = {"value": list(window), "unit": "m"}
-    else:
-        settings["window"] = None
     if not np.isfinite(topo.heights).any():
         raise SurfmetInputError("the scan has no measured point")
     settings["non_measured_fraction"] = topo.nan_fraction
@@ -226,21 +227,21 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         levelled_raw, _ = remove_form(topo, level)
         before = spike_diagnosis(levelled_raw)
         topo, report = remove_spikes(topo)
-        settings["spikes"] = report.as_dict()
+        settings["spikes"] = spike_report_record(report)
     else:
         settings["spikes"] = {"removed": False}
     surface, form = remove_form(topo, level)
-    settings["form"] = form.as_dict()
+    settings["form"] = form_record(form)
     settings["level"] = form.method
     filters = []
-    settings["ls"] = None if ls is None else {"value": ls, "unit": "m"}
-    settings["lc"] = None if lc is None else {"value": lc, "unit": "m"}
+    settings["ls"] = cutoff_record(ls)
+    settings["lc"] = cutoff_record(lc)
     if ls is not None:
         surface, info = s_filter(surface, ls, edge=edge)
-        filters.append(info.as_dict())
+        filters.append(filter_record(info))
     if lc is not None:
         surface, info = l_filter(surface, lc, edge=edge)
-        filters.append(info.as_dict())
+        filters.append(filter_record(info))
     settings["filters"] = filters
     if filters:
         from surfmet.areal.filters import EDGE_MEANING
@@ -313,7 +314,9 @@ def roughness_file(path: str | os.PathLike[str] | Measurement,
     except Exception as exc:  # a bug must not stop a batch; it is reported as such
         return {"file": name, "status": "error",
                 "error": f"internal error: {type(exc).__name__}: {exc}"}
-    return {"file": name, "status": "ok", **res.to_json()}
+    from surfmet.records.roughness import roughness_record
+
+    return {"file": name, "status": "ok", **roughness_record(res)}
 
 
 def roughness_many(

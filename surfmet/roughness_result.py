@@ -15,7 +15,6 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.units import jsonable
 
 
 @dataclass(frozen=True, eq=False)
@@ -78,23 +77,6 @@ class RoughnessResult:
         title = f"Roughness ({self.kind})" + (f": {self.file}" if self.file else "")
         return quantity_table(title, [(name, value, unit)
                                       for name, (value, unit) in self.parameters.items()])
-
-    def to_json(self) -> dict[str, Any]:
-        """``{"parameters": {sym: {"value", "unit"}}, "settings": {...}}`` (JSON types).
-
-        Lengths in a profile's settings (SI floats in :attr:`settings`) become
-        ``{"value", "unit"}`` here, at the edge.
-        """
-        settings = self.settings
-        if self.kind == "profile":
-            from surfmet.profile_roughness import with_units
-
-            settings = with_units(settings)
-        return {
-            "parameters": {k: {"value": jsonable(v), "unit": u}
-                           for k, (v, u) in self.parameters.items()},
-            "settings": jsonable(settings),
-        }
 
 
 def unit_caveats(scan: Any) -> list[str]:

@@ -94,21 +94,6 @@ class SpikeReport:
     heights: np.ndarray = field(repr=False)
     pixels: np.ndarray = field(repr=False)
 
-    def as_dict(self, max_positions: int = 1000) -> dict:
-        """JSON-friendly summary (lengths as value/unit pairs)."""
-        return {
-            "removed": True,
-            "count": self.count,
-            "n_points": self.n_points,
-            "fraction": self.fraction,
-            "threshold": {"value": self.threshold, "unit": "m"},
-            "robust_sigma": {"value": self.sigma, "unit": "m"},
-            "k": self.k,
-            "window": self.size,
-            "positions": {"value": self.positions[:max_positions].tolist(), "unit": "m"},
-            "heights": {"value": self.heights[:max_positions].tolist(), "unit": "m"},
-        }
-
 
 @dataclass(frozen=True)
 class SpikeDiagnosis:

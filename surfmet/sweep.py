@@ -37,6 +37,7 @@ from typing import Any
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_pair
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
+from surfmet.records.sweep import sweep_row_record
 
 TASKS = ("contact", "hertz-check")
 
@@ -232,11 +233,6 @@ def columns(task: str) -> tuple[tuple[str, str], ...]:
     return BASE_COLUMNS + RESULT_COLUMNS[task]
 
 
-def json_row(row: dict[str, tuple[Any, str]]) -> dict[str, Any]:
-    """A row as JSON: every value with a unit as ``{"value", "unit"}``, others plain."""
-    return {name: ({"value": v, "unit": u} if u else v) for name, (v, u) in row.items()}
-
-
 class RowWriter:
     """Appends rows to a CSV and/or a JSON Lines file, each row whole or not at all.
 
@@ -297,7 +293,7 @@ class RowWriter:
                 vals.append("" if v is None else (repr(v) if isinstance(v, float) else v))
             texts["csv"] = _csv_line(vals)
         if "json" in self._files:
-            texts["json"] = json.dumps(jsonable(json_row(row)), allow_nan=False) + "\n"
+            texts["json"] = json.dumps(jsonable(sweep_row_record(row)), allow_nan=False) + "\n"
         marks = {kind: self._files[kind].seek(0, os.SEEK_END) for kind in texts}
         try:
             for kind, text in texts.items():

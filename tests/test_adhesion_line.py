@@ -207,7 +207,7 @@ def test_plate_scan_profile_on_a_line(coarse):
     """The plate's middle row is the profile: a plate tilted in x and y is levelled away
     (the smooth cylinder's cycle); a scan narrower than the period is one error."""
     tilted = _plate_run(R, lambda u, v: 1e-3 * u + 2e-3 * v)
-    assert tilted.scans["plate"] == "(in memory)" and tilted.result.roughness_rms < 1e-15
+    assert tilted.scans.plate_name == "(in memory)" and tilted.result.roughness_rms < 1e-15
     assert tilted.result.cycle.pull_off_force == pytest.approx(
         coarse.cycle.pull_off_force, rel=1e-9)
     with pytest.raises(SurfmetInputError, match="smaller than the adhesion domain"):

@@ -84,7 +84,6 @@ DOCTEST_MODULES = (
     "surfmet.mechanics.adhesion",
     "surfmet.mechanics.adhesion_laws",
     "surfmet.mechanics.adhesion_line",
-    "surfmet.mechanics.adhesion_records",
     "surfmet.mechanics.all_scales",
     "surfmet.mechanics.ball_contact",
     "surfmet.mechanics.flat_contact",

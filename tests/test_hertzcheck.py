@@ -189,8 +189,10 @@ def test_paper_rough_plate_fails_with_reasons():
 
 def test_to_json_has_exactly_the_issue_keys():
     z = rough_surface(128, 2e-6, 20e-9, seed=3, corr=10e-6)
-    rec = hertz_check(Topography(z, 2e-6, 2e-6), radius=5e-3, load=1.0,
-                      materials="steel,aluminium", grid=64).to_json()
+    from surfmet.records.hertz import hertz_check_record
+
+    rec = hertz_check_record(hertz_check(Topography(z, 2e-6, 2e-6), radius=5e-3, load=1.0,
+                                         materials="steel,aluminium", grid=64))
     # issue 5's keys, plus issue 11's model hierarchy (models, verdict, summits), plus
     # issue 16's grid, scan preparation and warnings, plus issue 26's solve record
     assert set(rec) == {"hertz_holds", "judged", "alpha", "sigma", "hertz", "bem", "reasons",

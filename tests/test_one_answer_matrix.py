@@ -246,6 +246,7 @@ def api() -> dict[str, tuple[str, object]]:
     """roughness(file) per file: ("ok", record) or ("error", message)."""
     import surfmet.roughness as pipeline
     from surfmet.errors import user_error_types
+    from surfmet.records.roughness import roughness_record
 
     out: dict[str, tuple[str, object]] = {}
     for name in FILES:
@@ -257,7 +258,7 @@ def api() -> dict[str, tuple[str, object]]:
             out[name] = ("internal", f"{type(exc).__name__}: {exc}")
         else:
             out[name] = ("ok", _as_printed({"file": _path(name), "status": "ok",
-                                            **res.to_json()}))
+                                            **roughness_record(res)}))
     return out
 
 

@@ -294,11 +294,13 @@ def test_open_closed_rules_on_a_sine_with_two_depths():
 def test_profile_output_states_rcm_and_rz_of_the_reference():
     # the reference profiles are R-profiles already: evaluate them as they are
     from surfmet.model import Profile
+    from surfmet.records.roughness import roughness_record
     from surfmet.roughness import roughness
 
     for name in RCM:
         z = _profile(name)
-        res = roughness(Profile(z, DX), lc="none", level="none").to_json()["parameters"]
+        res = roughness_record(roughness(Profile(z, DX), lc="none",
+                                         level="none"))["parameters"]
         for p in (10, 50):
             assert res[f"Rcm({p}%)"]["unit"] == "m"
             assert res[f"Rcm({p}%)"]["value"] * 1e6 == pytest.approx(RCM[name][float(p)],

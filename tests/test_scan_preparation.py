@@ -121,7 +121,7 @@ def test_prepare_flat_fills_non_measured_points():
     z[20:22, 30] = np.nan
     scan, rec = prepare_flat(Topography(z, 1e-6, 1e-6), spikes="keep")
     assert np.isfinite(scan.heights).all()
-    assert rec["filled_fraction"]["value"] == pytest.approx(3 / 64**2)
+    assert rec.filled_fraction == pytest.approx(3 / 64**2)
     assert scan.heights[10, 10] in {z[9, 10], z[11, 10], z[10, 9], z[10, 11]}
 
 

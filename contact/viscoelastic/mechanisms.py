@@ -166,7 +166,7 @@ def compare_mechanisms(radius: float, ball: Any, plate: Any = None, *,
     ball, plate = pair.body1, pair.body2
     if ball is None or plate is None:
         raise ContactInputError("the mechanisms need both bodies' materials")
-    hardness = pair.hardness if hardness is None else hardness
+    hardness = pair.with_hardness(hardness).hardness  # the user's, else the softer body's
     if hardness is None:
         raise ContactInputError("the plastic mechanism needs a hardness")
     e_star = pair.e_star

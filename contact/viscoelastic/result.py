@@ -105,21 +105,6 @@ class RollingResult:
         px = p if p.ndim == 1 else p.sum(axis=0)
         return float((px * self.x).sum() / px.sum())
 
-    def to_json(self) -> dict:
-        """Summary values with units."""
-        per = "/m" if self.line else ""
-        return {
-            "rolling_resistance_coefficient": {"value": self.rolling_resistance, "unit": "1"},
-            "pmax": {"value": self.pmax, "unit": "Pa"},
-            "approach": {"value": self.approach, "unit": "m"},
-            "leading_edge": {"value": self.leading, "unit": "m"},
-            "trailing_edge": {"value": self.trailing, "unit": "m"},
-            "pressure_offset": {"value": self.pressure_offset, "unit": "m"},
-            "load": {"value": self.load, "unit": "N" + per},
-            "speed": {"value": self.speed, "unit": "m/s"},
-            "solve": self.solve.to_json(),
-        }
-
 
 def edges_1d(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:
     """(trailing, leading) edges of the pressed band of a 1D pressure row.

@@ -52,6 +52,7 @@ from surfmet.mechanics.hertz_check import hertz_check  # noqa: E402
 from surfmet.mechanics.scan_preparation import prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
+from surfmet.records.hertz import hertz_check_details, hertz_check_record  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 from surfmet.units import jsonable  # noqa: E402
 
@@ -138,7 +139,7 @@ def main(argv: list[str]) -> int:
         for r in c.reasons:
             print(f"   - {r}")
         findings.setdefault("hertz_check", {})[label] = {
-            "load": load, **chk.to_json(), "details": chk.details()}
+            "load": load, **hertz_check_record(chk), "details": hertz_check_details(chk)}
         findings["hertz_check"][label].pop("radial_profile")
     close(checks["paper's 10 N check"].figure(outdir / "hertz_check_10N.png"))
     close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))

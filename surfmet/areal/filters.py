@@ -81,17 +81,6 @@ class FilterInfo:
     truncation: float = 1.0  # kernel half-width in nesting indices
     discarded: tuple[int, int] = (0, 0)  # rows, columns set to NaN along each edge
 
-    def as_dict(self) -> dict:
-        return {
-            "kind": self.kind,
-            "nesting_index": {"value": self.nesting_index, "unit": "m"},
-            "standard": self.standard,
-            "edge": self.edge,
-            "edge_meaning": EDGE_MEANING.get(self.edge, ""),
-            "truncation": self.truncation,
-            "discarded_points_each_edge": {"rows": self.discarded[0],
-                                           "columns": self.discarded[1]},
-        }
 
 
 def parse_edge(edge: str) -> str:

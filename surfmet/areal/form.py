@@ -34,6 +34,13 @@ from surfmet.model import Topography
 METHODS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder", "cylinder:x", "cylinder:y")
 
 
+#: The unit of each shape parameter of a sphere or cylinder fit (:attr:`FormFit.shape`);
+#: the other keys (``convex``, ``curvature_resolved``) are flags.
+SHAPE_UNITS = {"radius": "m", "radius_uncertainty": "m", "center": "m",
+               "pv_form_deviation": "m", "form_pv": "m", "axis_point": "m",
+               "axis_direction": "", "azimuth": "°"}
+
+
 @dataclass(frozen=True, eq=False)
 class FormFit:
     """What an F-operator removed.
@@ -48,7 +55,8 @@ class FormFit:
     terms : tuple of str
         Monomials matching :attr:`coefficients`, e.g. ``("1", "x", "y")``.
     shape : mapping
-        Shape parameters for sphere/cylinder (radius, centre or axis, uncertainties).
+        Shape parameters for sphere/cylinder (radius, centre or axis, uncertainties), SI
+        values; their units are :data:`SHAPE_UNITS` (keys not there are flags).
     residual_rms : float
         Root mean square of the residual heights (valid points), metres.
     n_points : int
@@ -62,16 +70,6 @@ class FormFit:
     residual_rms: float = float("nan")
     n_points: int = 0
 
-    def as_dict(self) -> dict[str, Any]:
-        """A JSON-friendly summary (values SI; lengths in metres)."""
-        out: dict[str, Any] = {"method": self.method, "residual_rms": {"value": self.residual_rms,
-                                                                      "unit": "m"},
-                               "n_points": self.n_points}
-        if self.terms:
-            out["coefficients"] = dict(zip(self.terms, self.coefficients))
-        if self.shape:
-            out["shape"] = dict(self.shape)
-        return out
 
 
 def parse_method(method: str) -> tuple[str, int]:
@@ -249,12 +247,9 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
         jj, ii = np.indices(z.shape)
         res = z - sf.height(ii * topo.dx, jj * topo.dy)
         fit = FormFit(method="sphere", shape={
-            "radius": {"value": sf.radius, "unit": "m"},
-            "radius_uncertainty": {"value": sf.radius_uncertainty, "unit": "m"},
-            "center": {"value": list(sf.center), "unit": "m"},
-            "convex": sf.convex,
-            "pv_form_deviation": {"value": sf.pv_form_deviation, "unit": "m"},
-            "form_pv": {"value": sf.form_pv, "unit": "m"},
+            "radius": sf.radius, "radius_uncertainty": sf.radius_uncertainty,
+            "center": list(sf.center), "convex": sf.convex,
+            "pv_form_deviation": sf.pv_form_deviation, "form_pv": sf.form_pv,
             "curvature_resolved": sf.curvature_resolved,
         }, n_points=sf.n_points)
     else:
@@ -264,12 +259,9 @@ def remove_form(topo: Topography, method: str = "plane") -> tuple[Topography, Fo
         jj, ii = np.indices(z.shape)
         res = z - cf.height(ii * topo.dx, jj * topo.dy, near=z)
         fit = FormFit(method=name, shape={
-            "radius": {"value": cf.radius, "unit": "m"},
-            "radius_uncertainty": {"value": cf.radius_uncertainty, "unit": "m"},
-            "axis_point": {"value": list(cf.point), "unit": "m"},
-            "axis_direction": {"value": list(cf.direction), "unit": ""},
-            "azimuth": {"value": float(np.degrees(cf.azimuth)), "unit": "°"},
-            "convex": cf.convex,
+            "radius": cf.radius, "radius_uncertainty": cf.radius_uncertainty,
+            "axis_point": list(cf.point), "axis_direction": list(cf.direction),
+            "azimuth": float(np.degrees(cf.azimuth)), "convex": cf.convex,
         }, n_points=cf.n_points)
     res = np.where(valid, res, np.nan)
     rv = res[valid]

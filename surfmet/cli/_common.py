@@ -148,9 +148,9 @@ def print_solve(record: Any, label: str = "solve", warned: Iterable[str] = ()) -
     edge-contact warning on a line of its own unless a warning about the domain edge is
     among ``warned`` (printed by the command already); the label padded as in the tables."""
     if isinstance(record, dict):  # a command's JSON "solve" object
-        from contact.record import SolveRecord
+        from surfmet.records.solve import solve_from_record
 
-        record = SolveRecord.from_json(record)
+        record = solve_from_record(record)
     indent = " " * (len(label) - len(label.lstrip()))
     print(f"{label:14s} {record.text()}")
     if record.warning and not any("edge of" in w for w in warned):

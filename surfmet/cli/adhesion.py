@@ -112,8 +112,8 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.batch import progress_bar
     from surfmet.cli._laws import interaction_from_arguments
     from surfmet.mechanics.adhesion import adhesion, plot
-    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, line_record, refuse_ball
-    from surfmet.mechanics.adhesion_records import adhesion_record
+    from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, refuse_ball
+    from surfmet.records.adhesion import adhesion_record, line_record
     from surfmet.units import readable_quantities
 
     law = interaction_from_arguments(args)  # its options checked before any scan is read
@@ -166,8 +166,8 @@ def _print_line(run_: Any) -> None:
           f"rigid cylinder {res.rigid_pull_off:.5g} N/m)")
     _print_cycle(cyc, "N/m", 1.0, "J/m")
     if run_.scans is not None:
-        print(f"scans           plate {run_.scans['plate']}; roughness rms on the profile "
-              f"{format_length(run_.scans['roughness_rms']['value'])}")
+        print(f"scans           plate {run_.scans.plate_name}; roughness rms on the profile "
+              f"{format_length(run_.scans.roughness_rms)}")
     for w in res.warnings:
         print(f"warning         {readable_quantities(w)}")
 
@@ -198,9 +198,9 @@ def _print(run_: Any) -> None:
              " (JKR 1.5 pi w R, DMT 2 pi w R)"))
     _print_cycle(cyc, "µN", 1e6, "J")
     if run_.scans is not None:
-        print(f"scans           plate {run_.scans['plate'] or '-'}, ball "
-              f"{run_.scans['ball'] or '-'}; roughness rms on the grid "
-              f"{format_length(run_.scans['roughness_rms']['value'])}")
+        print(f"scans           plate {run_.scans.plate_name or '-'}, ball "
+              f"{run_.scans.ball_name or '-'}; roughness rms on the grid "
+              f"{format_length(run_.scans.roughness_rms)}")
     for w in ball.warnings:
         print(f"warning         {readable_quantities(w)}")
 

@@ -119,7 +119,9 @@ def run(args: argparse.Namespace) -> int:
         for w in sol.warnings:
             log(f"warning: {w}")
 
-    rec = sol.to_json()
+    from surfmet.records.contact import ball_contact_record
+
+    rec = ball_contact_record(sol)
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
         from surfmet.atomic import atomic_open

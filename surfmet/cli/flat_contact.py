@@ -164,20 +164,19 @@ def run(args: argparse.Namespace) -> int:
 def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, law: Any) -> int:
     """Persson from the averaged PSD of all measurements; the BEM on the first map."""
     from surfmet.batch import progress_bar
-    from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
+    from surfmet.mechanics.all_scales import all_scales
     from surfmet.mechanics.flat_contact import flat_contact, plot
-    from surfmet.mechanics.material_spec import scan_pair
     from surfmet.model import Topography
     from surfmet.records import flat_contact_record
     from surfmet.records.all_scales import all_scales_record
-    from surfmet.scale_dependent import analyze_scales
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
-    pair = scan_pair(args.materials, e_star=args.e_star, hardness=args.hardness)
+    # the facade resolves --materials or --e-star once, before the analysis
+    run = all_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade,
+                     materials=args.materials, e_star=args.e_star, hardness=args.hardness,
+                     pressures=pressures)
+    pair, a, s, curve = run.pair, run.analysis, run.spectrum, run.curve
     e_star, names = pair.e_star, pair.names
-    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
-    s = all_scales_spectrum(a)
-    curve = persson_all_scales(s, pressures, e_star)
     first = next((k for k, m in enumerate(scans) if isinstance(m, Topography)), None)
     rep = None
     rec: dict[str, Any] = {"files": args.files, **({"materials": names} if names else {}),

@@ -118,7 +118,9 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        emit_json(check.to_json())
+        from surfmet.records.hertz import hertz_check_record
+
+        emit_json(hertz_check_record(check))
         return 0
     c = check.comparison
     hz = c.hertz

@@ -8,8 +8,8 @@ from typing import Any
 
 from surfmet.cli._common import add_json_flag, emit_json
 from surfmet.cli._scan_options import add_scan_options, read_options
-from surfmet.file_info import channel_summary
 from surfmet.model import SOURCE_WORDS, STATED, unit_text
+from surfmet.records.scans import channel_record
 from surfmet.units import format_length
 
 
@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"{word:13s} {len(listing)} (this one: {scan.metadata.get('channel')}; "
               "--channel picks another)")
         for c, label, s, err in listing:
-            print(_line(c, label, None if s is None else channel_summary(s), err, s))
+            print(_line(c, label, None if s is None else channel_record(s), err, s))
     for key, value in rec["metadata"].items():
         if key in _SHOWN_ABOVE:  # the lines above state them, in the text's units
             continue

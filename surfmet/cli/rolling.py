@@ -159,7 +159,9 @@ def run(args: argparse.Namespace) -> int:
     pair = rep.scans.pair if rep.scans is not None else None
     source = pixel_source(s.settings["dx"], pair, args.grid)
     if args.json:
-        emit_json(rep.to_json())
+        from surfmet.records.rolling import rolling_record
+
+        emit_json(rolling_record(rep))
         return 0
     lo_ci, hi_ci = s.lambda_ci
     print(f"model          {s.model}"
@@ -205,7 +207,9 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
         spikes=args.spikes, grid=args.grid)
     failed = [t for t in rep.tracks if t.get("error")]
     if args.json:
-        emit_json({**rep.to_json(), "model": args.model})
+        from surfmet.records.rolling import tracks_record
+
+        emit_json({**tracks_record(rep), "model": args.model})
         return 1 if failed else 0
     if rep.fit is not None:
         lo_ci, hi_ci = rep.fit.ci

@@ -78,11 +78,8 @@ def run(args: argparse.Namespace) -> int:
 
     from surfmet import units
     from surfmet.errors import SurfmetInputError
-    from surfmet.mechanics.rolling_contact import (
-        parse_line_load,
-        rolling_contact_record,
-        solve_rolling_contact,
-    )
+    from surfmet.mechanics.rolling_contact import parse_line_load, solve_rolling_contact
+    from surfmet.records.rolling_contact import rolling_contact_record
 
     if args.creepage is not None and not math.isfinite(args.creepage):
         raise SurfmetInputError("--creepage must be a finite number")

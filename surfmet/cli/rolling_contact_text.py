@@ -15,8 +15,8 @@ SUMMARY_KEYS = ("creepage", "fx", "fy", "pmax", "approach", "contact_area", "sti
 
 def print_summary(rec: dict) -> None:
     """The text of a rolling-contact record, elastic
-    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`) or viscoelastic
-    (:func:`surfmet.mechanics.viscoelastic_rolling_contact.visco_rolling_contact_record`):
+    (:func:`surfmet.records.rolling_contact.rolling_contact_record`) or viscoelastic
+    (:func:`surfmet.records.rolling_contact.visco_rolling_contact_record`):
     one layout, one name per quantity."""
     from surfmet.units import format_quantity
 

@@ -58,10 +58,8 @@ def run_viscoelastic(args: argparse.Namespace) -> int:
     """Solve and report (text or --json), in the elastic command's layout
     (:func:`surfmet.cli.rolling_contact_text.print_summary`)."""
     from surfmet.cli._common import emit_json
-    from surfmet.mechanics.viscoelastic_rolling_contact import (
-        visco_rolling_contact_record,
-        viscoelastic_rolling_contact,
-    )
+    from surfmet.mechanics.viscoelastic_rolling_contact import viscoelastic_rolling_contact
+    from surfmet.records.rolling_contact import visco_rolling_contact_record
 
     if getattr(args, "speed", None) is None:
         raise SurfmetInputError("--viscoelastic needs --speed V (m/s)")

@@ -75,7 +75,9 @@ def run_visco(args: argparse.Namespace) -> int:
                                  mu=None if args.no_microslip else args.mu,
                                  adhesion=(args.work_of_adhesion, args.adhesion_hysteresis))
         if args.json:
-            emit_json(rep.to_json())
+            from surfmet.records.rolling_mechanisms import mechanisms_record
+
+            emit_json(mechanisms_record(rep))
             return 0
         _print_all(rep)
         return 0
@@ -94,7 +96,9 @@ def run_visco(args: argparse.Namespace) -> int:
     for note in rep.notes:
         log(f"note: {note}")
     if args.json:
-        emit_json(rep.to_json())
+        from surfmet.records.rolling import visco_rolling_record
+
+        emit_json(visco_rolling_record(rep))
         return 0
     _print_sweep(rep.sweep, speed)
     return 0

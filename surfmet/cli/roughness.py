@@ -194,7 +194,9 @@ def run(args: argparse.Namespace) -> int:
         scan = (read_measurement(item, **read_options(args))
                 if isinstance(item, Measurement) else read_scan(item, args))
         res = roughness(scan, **opts)
-        rec = {"file": str(item), "status": "ok", **res.to_json()}
+        from surfmet.records.roughness import roughness_record
+
+        rec = {"file": str(item), "status": "ok", **roughness_record(res)}
         if args.json:
             emit_json([rec])  # one shape whatever the number of files: a list of records
         else:

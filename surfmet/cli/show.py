@@ -112,8 +112,10 @@ def run(args: argparse.Namespace) -> int:
                         window_size=args.size, max_points=args.max_points)
         rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])], shown=[])
     # named as the roughness command names the record of the same surface
+    from surfmet.records.roughness import roughness_record
+
     rec["roughness"] = {"file": drawn["name"] if drawn else args.file, "status": "ok",
-                        **res.to_json()}
+                        **roughness_record(res)}
     if args.json:
         emit_json(rec)
     else:

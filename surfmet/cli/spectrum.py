@@ -94,17 +94,16 @@ def run(args: argparse.Namespace) -> int:
 def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
     """The averaged PSD of several measurements and the rms values of its band."""
     from surfmet.cli.scales import print_all_scales
-    from surfmet.mechanics.all_scales import all_scales_spectrum
-    from surfmet.mechanics.material_spec import scan_pair
+    from surfmet.mechanics.all_scales import all_scales
     from surfmet.records.all_scales import all_scales_record
-    from surfmet.scale_dependent import analyze_scales
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
-    pair = scan_pair(args.materials, hardness=args.hardness) if args.materials else None
+    # the facade resolves the materials (with --hardness), before the analysis
+    run = all_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade,
+                     materials=args.materials or None, hardness=args.hardness)
+    pair, s = run.pair, run.spectrum
     e_star, hard = (None, None) if pair is None else (pair.e_star, pair.hardness)
     names = [] if pair is None else pair.names
-    a = analyze_scales(scans, tip_radius=args.tip_radius, per_decade=args.per_decade)
-    s = all_scales_spectrum(a)
     rec = {"files": args.files, **({"materials": names} if names else {}),
            **all_scales_record(s, e_star=e_star, hardness=hard)}
     if args.periodic != "auto":

@@ -117,9 +117,9 @@ def run(args: argparse.Namespace) -> int:
     failed = [r for r in rows if r["status"][0] == "error"]
     if to_stdout:
         from surfmet.cli._common import emit_json
-        from surfmet.sweep import json_row
+        from surfmet.records.sweep import sweep_row_record
 
-        emit_json({"task": args.task, "rows": [json_row(r) for r in rows],
+        emit_json({"task": args.task, "rows": [sweep_row_record(r) for r in rows],
                    "caveats": caveats})
     log(f"{len(rows)} items run, {len(failed)} failed"
         + (f" (first: {failed[0]['error'][0]})" if failed else ""))

@@ -8,7 +8,9 @@ from typing import Any
 from rotor import BALL_RADIUS as RADIUS
 from rotor import HERTZ_CHECK, HERTZ_CHECK_LOAD
 from surfmet.demo.settings import MATERIALS
-from surfmet.units import quantity
+from surfmet.records.contact import ball_contact_record
+from surfmet.records.demo import demo_hertz_record
+from surfmet.records.rolling import rolling_record
 
 
 def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[dict[str, Any], Any]:
@@ -16,18 +18,7 @@ def hertz_step(plate: Any, ball: Any, load: float = HERTZ_CHECK_LOAD) -> tuple[d
     from surfmet.mechanics.hertz_check import hertz_check
 
     check = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS)
-    rec = check.to_json()
-    details = check.details()
-    # each criterion's number as a dimensionless quantity (a ratio or a fraction)
-    details["criteria"] = [
-        {"name": c["name"], "measured": quantity(c["value"], ""),
-         "limit": quantity(c["limit"], ""), "passed": c["passed"], "decisive": c["decisive"]}
-        for c in details["criteria"]
-    ]
-    rec["details"] = details
-    rec["paper"] = {"delta": quantity(HERTZ_CHECK["delta"], "m"),
-                    "a": quantity(HERTZ_CHECK["a"], "m")}
-    return rec, check
+    return demo_hertz_record(check, HERTZ_CHECK), check
 
 
 def rotor_loads() -> dict[str, float]:
@@ -48,7 +39,7 @@ def contact_step(check: Any, load: float) -> tuple[dict[str, Any], Any]:
     sol = BallContact(result=res, ball_material=check.ball_material,
                       plate_material=check.plate_material, pair=pair, radius=RADIUS,
                       plate_file="paper_plate.x3p", ball_file="paper_ball.x3p", warnings=found)
-    rec = sol.to_json()
+    rec = ball_contact_record(sol)
     rec["notes"] = [*rec["notes"], *found]
     return rec, res
 
@@ -59,5 +50,5 @@ def rolling_step(plate: Any, ball: Any, loads: str) -> tuple[dict[str, Any], Any
 
     rep = rolling_resistance(plate, ball, radius=RADIUS, materials=MATERIALS, loads=loads,
                              model="hysteresis")
-    return rep.to_json(), rep
+    return rolling_record(rep), rep
 

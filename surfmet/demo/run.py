@@ -23,7 +23,7 @@ from surfmet.demo.outputs import (
 )
 from surfmet.demo.settings import BALL_LEVEL, PAPER_TABLE2_MEAN, PLATE_LEVEL
 from surfmet.demo.surfaces import ball_form, load_scans, plate_areal, row_statistics
-from surfmet.units import quantity
+from surfmet.records.demo import loads_record, seconds, table2_record
 
 STEPS = 7
 
@@ -45,7 +45,7 @@ class _Steps:
 
     def done(self) -> None:
         dt = time.perf_counter() - self.t
-        self.timings[self.name] = quantity(dt, "s")
+        self.timings[self.name] = seconds(dt)
         self.say(f"  done in {dt:.1f} s")
 
     def figure(self, key: str, draw: Callable[[Path], Any]) -> None:
@@ -70,8 +70,7 @@ def _surfaces(st: _Steps, summary: dict[str, Any], quick: bool) -> tuple[Any, An
     rough: dict[str, Any] = {}
     rough["plate_rows"], typical = row_statistics(plate, PLATE_LEVEL)
     rough["ball_rows"], _ = row_statistics(ball, BALL_LEVEL)
-    rough["paper_table2_mean"] = {k: {p: quantity(v, "m") for p, v in d.items()}
-                                  for k, d in PAPER_TABLE2_MEAN.items()}
+    rough["paper_table2_mean"] = table2_record(PAPER_TABLE2_MEAN)
     rough["plate_areal"], clean = plate_areal(plate)
     summary["roughness"] = rough
     st.figure("plate_height_map", lambda p: fig.height_map(
@@ -104,7 +103,7 @@ def _mechanics(st: _Steps, summary: dict[str, Any], plate: Any, ball: Any) -> No
     st.start("contact", f"contact at the rotor's load per ball, {loads['symmetric']:.2f} N "
              "(elastic-perfectly-plastic)")
     rec, res = contact_step(check, loads["symmetric"])
-    rec["rotor_loads"] = {k: quantity(v, "N") for k, v in loads.items()}
+    rec["rotor_loads"] = loads_record(loads)
     summary["contact"] = rec
     st.figure("contact_pressure", lambda p: fig.pressure(res, p))
     st.done()
@@ -176,7 +175,7 @@ def run_demo(
     total = time.perf_counter() - st.t_start
     summary["figures"] = st.figures
     summary["timings"] = st.timings
-    summary["total_time"] = quantity(total, "s")
+    summary["total_time"] = seconds(total)
     summary["out_dir"] = str(out)
     summary["status"] = "complete"
     write_json(out / SUMMARY, summary)

@@ -8,8 +8,8 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
-from contact.record import SolveRecord
 from surfmet.demo.outputs import SUMMARY
+from surfmet.records.solve import solve_from_record
 from surfmet.units import format_length, format_quantity
 
 
@@ -126,7 +126,7 @@ def _contact(t: _Text, summary: dict[str, Any]) -> None:
           f"{_v(rl['asymmetric_ball1']):.2f} N and {_v(rl['asymmetric_ball2']):.2f} N")
     t.add(f"  grid {c['grid']['nx']} x {c['grid']['ny']}, pitch "
           f"{format_length(_v(c['grid']['dx']))}")
-    t.add(f"  solve: {SolveRecord.from_json(c['solve']).text()}")
+    t.add(f"  solve: {solve_from_record(c['solve']).text()}")
     t.add(f"  95 % of the load within {_um(c['radius_95'], 0)} of the centre (Hertz a0 "
           f"{_um(c['hertz']['a'], 0)})")
     t.add(f"  approach {_um(c['approach'])} (Hertz {_um(c['hertz']['delta'])})")

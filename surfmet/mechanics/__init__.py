@@ -2,8 +2,9 @@
 the array-level engine :mod:`contact`.
 
 Each facade takes scans (or file names) and values in SI, prepares the scans, calls the
-engine and returns a small result object with ``to_json()`` (its record is built in
-:mod:`surfmet.records`) and, where it has one, ``figure()``:
+engine and returns a small result object (its JSON record is built in
+:mod:`surfmet.records`, which imports this package; this package never imports it) and,
+where it has one, ``figure()``:
 
 - ``contact``: :mod:`~surfmet.mechanics.ball_contact` (BEM, ball on plate);
 - ``hertz-check``: :mod:`~surfmet.mechanics.hertz_check` (BEM against Hertz, the verdict);

@@ -6,7 +6,7 @@ law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver
 (:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
 (the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
 :mod:`surfmet.mechanics.adhesion_line`);
-:func:`surfmet.mechanics.adhesion_records.adhesion_record` is its JSON record, :func:`plot`
+:func:`surfmet.records.adhesion.adhesion_record` is its JSON record, :func:`plot`
 its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
@@ -30,6 +30,7 @@ if TYPE_CHECKING:
 
     from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
+    from surfmet.mechanics.scan_preparation import ScansUsed
 
 @dataclass(frozen=True, eq=False)
 class Adhesion:
@@ -40,7 +41,7 @@ class Adhesion:
     result : AdhesiveBall or AdhesiveLine
         :class:`contact.adhesion.ball.AdhesiveBall` (a sphere) or
         :class:`contact.adhesion.line.AdhesiveLine` (a cylinder, per unit length).
-    scans : dict or None
+    scans : ScansUsed or None
         What scans were used and what was done to them (None: smooth surfaces).
     grid_why : str
         How the grid was chosen (the default resolves the cohesive zone, within memory).
@@ -48,7 +49,7 @@ class Adhesion:
     See Also
     --------
     adhesion : makes it.
-    surfmet.mechanics.adhesion_records.adhesion_record : its JSON record.
+    surfmet.records.adhesion.adhesion_record : its JSON record.
 
     Examples
     --------
@@ -61,7 +62,7 @@ class Adhesion:
     """
 
     result: Any
-    scans: dict[str, Any] | None = None
+    scans: ScansUsed | None = None
     grid_why: str = "given by the user"
 
     @property
@@ -150,7 +151,7 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     3.14 µN); this coarse grid overestimates it slightly, as its warning says:
 
     >>> from surfmet.mechanics.adhesion import adhesion
-    >>> from surfmet.mechanics.adhesion_records import adhesion_record
+    >>> from surfmet.records.adhesion import adhesion_record
     >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=6)
     >>> rec = adhesion_record(run)
     >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
@@ -269,9 +270,9 @@ def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
 
 
 def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, size: float,
-               spikes: Spikes = SPIKES) -> tuple[Any, dict[str, Any] | None]:
+               spikes: Spikes = SPIKES) -> tuple[Any, ScansUsed | None]:
     """The scans' composite roughness on the solver's ``grid`` x ``grid`` cells of side
-    ``size`` (m), centred on the middle of the scans, and the record of the scans.
+    ``size`` (m), centred on the middle of the scans, and the scans used.
 
     The scans are prepared as for every contact command
     (:func:`surfmet.mechanics.scan_preparation.prepare_scans`: spikes, the plate levelled,
@@ -292,8 +293,9 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
 
     Returns
     -------
-    (ndarray or None, dict or None)
-        The roughness on the grid (m) and the scans' record.
+    (ndarray or None, ScansUsed or None)
+        The roughness on the grid (m) and the scans used (their record is
+        :func:`surfmet.records.adhesion.scans_record`).
 
     Raises
     ------
@@ -306,17 +308,17 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.adhesion import rough_grid
     >>> plate = surfmet.read(path("paper_plate.x3p"))
-    >>> z, record = rough_grid(surfmet.Topography(plate.heights[:128, :128], plate.dx,
-    ...                                           plate.dy), None, 32, 3e-4)
-    >>> z.shape, sorted(record)
-    ((32, 32), ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms'])
+    >>> z, used = rough_grid(surfmet.Topography(plate.heights[:128, :128], plate.dx,
+    ...                                         plate.dy), None, 32, 3e-4)
+    >>> z.shape, used.plate_name
+    ((32, 32), '(in memory)')
     """
     if plate is None and ball is None:
         return None, None
     from contact.geometry import max_centred_cells
     from contact.grid import centred_grid
     from contact.sampling import sample_roughness
-    from surfmet.mechanics.scan_preparation import prepare_scans
+    from surfmet.mechanics.scan_preparation import ScansUsed, prepare_scans
 
     if int(grid) != grid or grid < 16:
         raise SurfmetInputError(f"the grid must be an integer of at least 16, got {grid!r}")
@@ -329,9 +331,7 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
         raise SurfmetInputError(scan_too_small(pair, size))
     z = sample_roughness(pair.roughness, pair.dx, pair.dy, centred_grid(int(grid), dx),
                          centre=centre)
-    from surfmet.mechanics.adhesion_records import scans_record
-
-    return z, scans_record(prep, plate, ball, dx, z)
+    return z, ScansUsed(prep, plate, ball, dx, z)
 
 
 def scan_too_small(pair: PairedRoughness, size: float) -> str:

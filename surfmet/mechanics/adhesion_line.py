@@ -1,7 +1,8 @@
 """``surfmet adhesion --line``: an adhesive cylinder on a flat, per unit length.
 
 :func:`line_adhesion` samples the plate scan's roughness along the cylinder's cross-section
-and runs :func:`contact.adhesion.line.adhesive_line`; :func:`line_record` is the JSON record
+and runs :func:`contact.adhesion.line.adhesive_line`;
+:func:`surfmet.records.adhesion.line_record` is the JSON record
 (forces per unit length in N/m, energies in J/m), :func:`line_plot` the figure. The
 cylinder's axis lies along the scan's y; the profile is the row through the middle of the
 levelled plate, sampled by the engine's
@@ -19,15 +20,11 @@ from surfmet.mechanics.adhesion import (
     Adhesion,
     adhesion_pair,
     interaction_law,
-    interaction_name,
     scan_too_small,
 )
-from surfmet.mechanics.adhesion_records import jump_record, scans_record
 from surfmet.mechanics.scan_preparation import SPIKES
-from surfmet.units import quantity
 
 if TYPE_CHECKING:
-    from contact.adhesion.cycle import Branch
     from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
 
 
@@ -88,7 +85,7 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
     See Also
     --------
     surfmet.mechanics.adhesion.adhesion : the sphere.
-    line_record : the JSON record.
+    surfmet.records.adhesion.line_record : the JSON record.
 
     References
     ----------
@@ -97,7 +94,8 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
 
     Examples
     --------
-    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion
+    >>> from surfmet.records.adhesion import line_record
     >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=8)
     >>> rec = line_record(run)
     >>> rec["geometry"], rec["pull_off_force"]["unit"], run.line
@@ -121,7 +119,7 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
     if plate is not None:
         from contact.grid import Grid
         from contact.sampling import sample_roughness
-        from surfmet.mechanics.scan_preparation import prepare_scans
+        from surfmet.mechanics.scan_preparation import ScansUsed, prepare_scans
 
         prep = prepare_scans(plate, None, spikes=spikes)
         pair = prep.pair
@@ -131,69 +129,11 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
             raise SurfmetInputError(scan_too_small(pair, size))
         z = sample_roughness(pair.roughness, pair.dx, pair.dy,
                              Grid(x=x, y=np.zeros(1), pitch=(dx, dx)), average=False)[0]
-        scans = scans_record(prep, plate, None, dx, z)
-        scans["profile"] = "the row through the middle of the plate scan, along its x"
+        scans = ScansUsed(prep, plate, None, dx, z,
+                          profile="the row through the middle of the plate scan, along its x")
     res = adhesive_line(radius, mats, law, cells=cells, size=size, steps=steps,
                         roughness=z, progress=progress)
     return Adhesion(res, scans)
-
-
-def _leg(branch: Branch) -> dict[str, Any]:
-    return {"approach": quantity(branch.surface_approach, "m"),
-            "load": quantity(branch.load, "N/m"),
-            "contact_half_width": quantity(0.5 * branch.contact_area, "m")}
-
-
-def line_record(run: Adhesion) -> dict[str, Any]:
-    """The JSON record of a line-contact run (forces per unit length).
-
-    Parameters
-    ----------
-    run : Adhesion
-        A line run.
-
-    Returns
-    -------
-    dict
-        Every value as ``{"value": v, "unit": u}``, forces per unit length.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion_line import line_adhesion, line_record
-    >>> rec = line_record(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
-    ...                                 steps=8))
-    >>> rec["pull_off_force"]["unit"], rec["work_of_adhesion"]
-    ('N/m', {'value': 0.05, 'unit': 'J/m^2'})
-    """
-    res = run.result
-    cyc, law = res.cycle, res.law
-    return {
-        "geometry": "line",
-        "radius": quantity(res.radius, "m"),
-        "e_star": quantity(res.e_star, "Pa"),
-        "interaction": interaction_name(law),
-        "work_of_adhesion": quantity(law.work, "J/m^2"),
-        "range": quantity(law.range, "m"),
-        "peak_tension": quantity(law.peak, "Pa"),
-        "maugis_parameter": quantity(res.maugis_parameter, ""),
-        "tabor_parameter": quantity(res.tabor_parameter, ""),
-        "pull_off_force": quantity(cyc.pull_off_force, "N/m"),
-        "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
-        "jkr_pull_off_force": quantity(res.jkr_pull_off, "N/m"),
-        "rigid_pull_off_force": quantity(res.rigid_pull_off, "N/m"),
-        "jump_in": jump_record(cyc.jump_in, "N/m"),
-        "jump_out": jump_record(cyc.jump_out, "N/m"),
-        "hysteresis_energy": quantity(cyc.hysteresis_energy, "J/m"),
-        "grid": {"cells": res.cells, "size": quantity(res.size, "m"),
-                 "pixel": quantity(res.dx, "m"), "periodic": True, "plane_strain": True,
-                 "process_zone": quantity(res.process_zone, "m"),
-                 "process_zone_pixels": quantity(res.process_zone / res.dx, "")},
-        "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
-        "solve": cyc.solve.to_json(),
-        "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
-        "scans": run.scans,
-        "warnings": list(res.warnings),
-    }
 
 
 def line_plot(run: Adhesion, path: PathLike | None = None) -> Any:

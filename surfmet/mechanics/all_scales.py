@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -259,3 +260,101 @@ def persson_all_scales(s: AllScalesSpectrum, pressures: np.ndarray, e_star: floa
         return persson(pressures, e_star, s.q, s.c_iso, s.weights, s.dq)
     except ContactInputError as exc:
         raise SurfmetInputError(str(exc)) from None
+
+
+@dataclass(frozen=True, eq=False)
+class AllScales:
+    """Several measurements of one surface, with the pair they are pressed as.
+
+    Attributes
+    ----------
+    analysis : ScaleAnalysis
+        Their scale-dependent analysis (:func:`surfmet.scale_dependent.analyze_scales`).
+    spectrum : AllScalesSpectrum
+        The isotropic PSD of the averaged profile PSD (:func:`all_scales_spectrum`).
+    pair : contact.material_pair.MaterialPair or None
+        The pair (None: no materials nor E* given), resolved once here with its hardness.
+    curve : ModelCurve or None
+        Persson's theory at the pressures asked (None: none asked).
+
+    See Also
+    --------
+    all_scales : makes it.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.all_scales import all_scales
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> run = all_scales([plate, patch], tip_radius=None,
+    ...                  per_decade=5, materials="aluminium")
+    >>> run.pair.names, run.curve is None
+    (['aluminium'], True)
+    """
+
+    analysis: ScaleAnalysis
+    spectrum: AllScalesSpectrum
+    pair: Any = None
+    curve: ModelCurve | None = None
+
+
+def all_scales(scans: list[Any], *, tip_radius: float | None, per_decade: int,
+               materials: Any = None, e_star: float | None = None,
+               hardness: float | None = None, pressures: Any = None) -> AllScales:
+    """``spectrum`` and ``flat-contact`` on several measurements: the pair (materials or
+    E*, resolved as for one scan on a flat, :func:`surfmet.mechanics.material_spec.scan_pair`,
+    before any analysis), the scale analysis, its averaged isotropic PSD and, with
+    ``pressures``, Persson's theory on it.
+
+    Parameters
+    ----------
+    scans : list of Topography or Profile
+        The measurements.
+    tip_radius : float or None
+        Probe tip radius (m) for measurements whose file states none.
+    per_decade : int
+        Points per decade of the analysis' distance grid.
+    materials : str or MaterialPair, optional
+        ``"A"`` or ``"A,B"`` (the scan's material, the flat's).
+    e_star : float, optional
+        Composite modulus (Pa) instead of materials.
+    hardness : float, optional
+        Replaces the softer body's table hardness (Pa).
+    pressures : array_like, optional
+        Nominal pressures (Pa) for Persson's theory (needs materials or E*).
+
+    Returns
+    -------
+    AllScales
+        The analysis, the spectrum, the pair and the theory's curve.
+
+    Raises
+    ------
+    SurfmetInputError
+        Bad materials, or measurements that give no PSD band.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.all_scales import all_scales
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> run = all_scales([plate, patch], tip_radius=None,
+    ...                  per_decade=5, e_star=50e9, pressures=np.array([1e7]))
+    >>> run.pair.e_star, run.curve.area_fraction.shape
+    (50000000000.0, (1,))
+    """
+    from surfmet.mechanics.material_spec import scan_pair
+    from surfmet.scale_dependent import analyze_scales
+
+    # with pressures the pair is needed: scan_pair then says what is missing
+    pair = (None if materials is None and e_star is None and pressures is None
+            else scan_pair(materials, e_star=e_star, hardness=hardness))
+    analysis = analyze_scales(scans, tip_radius=tip_radius, per_decade=per_decade)
+    s = all_scales_spectrum(analysis)
+    curve = None if pressures is None else persson_all_scales(s, pressures, pair.e_star)
+    return AllScales(analysis, s, pair, curve)

@@ -67,7 +67,7 @@ class BallContact:
     >>> run = ball_contact(radius=0.02, load=10.0, grid=64)
     >>> run.result.pressure.shape, run.warnings
     ((64, 64), ())
-    >>> print(f"{run.to_json()['pmax']['value'] / 1e6:.0f} MPa")
+    >>> print(f"{run.result.pmax / 1e6:.0f} MPa")
     255 MPa
     """
 
@@ -102,19 +102,6 @@ class BallContact:
             rows += [("Hertz contact radius a0", res.hertz.a, "m"),
                      ("Hertz peak pressure p0", res.hertz.p0, "Pa")]
         return quantity_table("Ball contact", rows)
-
-    def to_json(self) -> dict[str, Any]:
-        """The ``surfmet contact`` record (every value with its unit), with what was done
-        to the scans and the warnings."""
-        from surfmet.records import contact_record
-
-        rec = contact_record(self.result, self.ball_material, self.plate_material,
-                             self.pair, radius=self.radius, plate_file=self.plate_file,
-                             ball_file=self.ball_file)
-        if self.preparation is not None:
-            rec["scan_preparation"] = self.preparation.record()
-        rec["warnings"] = list(self.warnings)
-        return rec
 
     def figure(self, path: str | Path | None = None) -> Any:
         """The pressure map (:func:`surfmet.plots.contact.pressure_map`)."""

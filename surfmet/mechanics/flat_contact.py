@@ -77,7 +77,7 @@ class FlatContactReport:
     spectrum: Spectrum
     levelling: str
     settings: dict[str, Any] = field(default_factory=dict)
-    preparation: dict[str, Any] = field(default_factory=dict)
+    preparation: Any = None  # a FlatPreparation
     caveats: tuple[str, ...] = ()
     adhesion: Any = None  # contact.adhesion.flat.AdhesiveFlat, when a law was given
     materials: Any = None  # contact.material_pair.MaterialPair, when materials were given
@@ -131,7 +131,7 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
                  pressures: Loads | float | str,
                  hardness: float | None = None, periodic: bool | None = None,
                  stiffness: str = "curve", progress: Callable[[int, int], Any] | None = None,
-                 spikes: Spikes = SPIKES, material_hardness: float | None = None,
+                 spikes: Spikes = SPIKES,
                  adhesion: AdhesionLaw | None = None, materials: Materials | None = None
                  ) -> FlatContactReport:
     """BEM and the Persson, GW and BGT theories for a scan pressed on a flat.
@@ -153,10 +153,6 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     spikes : {"remove", "keep"} or bool
         The scan's spikes, removed by default; non-measured points are filled with the
         nearest measured value (:func:`surfmet.mechanics.scan_preparation.prepare_flat`).
-    material_hardness : float, optional
-        The softer body's hardness (Pa) when the BEM stays elastic: a nominal pressure
-        above it (or above ``hardness``) gets a caveat, since the whole nominal area
-        would flow there and no elastic theory holds.
     adhesion : InteractionLaw, optional
         An adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`): the scan is
         also pressed with adhesion at each pressure (:func:`adhesive_sweep`), beside the
@@ -164,8 +160,10 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     materials : str or MaterialPair, optional
         ``"A"`` (the scan on a rigid flat), ``"A,B"`` (on an elastic flat of B) or a resolved
         pair, instead of ``e_star`` (:func:`surfmet.mechanics.material_spec.scan_pair`):
-        E* from the pair, ``material_hardness`` by default the pair's hardness (``hardness``
-        when given); kept in :attr:`FlatContactReport.materials`.
+        E* and the hardness from the pair (``hardness`` when given, else the softer body's):
+        a nominal pressure above that hardness gets a caveat, since the whole nominal area
+        would flow there and no elastic theory holds; kept in
+        :attr:`FlatContactReport.materials`.
 
     A scan dominated by a curved form (a ball's cap) has its second-order surface removed,
     and a caveat says so (:func:`surfmet.mechanics.spectrum.prepare`).
@@ -173,7 +171,8 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     Returns
     -------
     FlatContactReport
-        The BEM sweep and the theories at each pressure; ``to_json()`` and ``figure()``.
+        The BEM sweep and the theories at each pressure, and ``figure()`` (its record:
+        :func:`surfmet.records.flat.flat_contact_record`).
 
     Raises
     ------
@@ -223,13 +222,13 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
         np.atleast_1d(np.asarray(pressures, dtype=float)))
-    pair = None
+    pair, yield_hardness = None, hardness
     if materials is not None:
         from surfmet.mechanics.material_spec import scan_pair
 
         pair = scan_pair(materials, e_star=e_star, hardness=hardness)
         e_star = pair.e_star
-        material_hardness = pair.hardness if material_hardness is None else material_hardness
+        yield_hardness = pair.hardness  # resolve_pair's: the user's, else the softer body's
     if not (isinstance(e_star, (int, float)) and math.isfinite(e_star) and e_star > 0):
         raise SurfmetInputError(f"E* must be a positive pressure, got {e_star!r}")
     if p.max() >= e_star:  # before any solve: strains of order 1, no elastic half-space
@@ -263,7 +262,7 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     bem = dataclasses.replace(bem, notes=_edge_notes(bem.notes))
     return FlatContactReport(bem=bem, models=models, spectrum=spec, levelling=level,
                              settings={"pressures": p.tolist()}, preparation=preparation,
-                             caveats=form + _yield_caveats(p, hardness or material_hardness)
+                             caveats=form + _yield_caveats(p, yield_hardness)
                              + gap_caveats(models),
                              adhesion=adhesive, materials=pair)
 

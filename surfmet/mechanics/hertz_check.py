@@ -13,11 +13,11 @@ plate, best-fit sphere for the ball), over the whole scan: non-measured points n
 count nor are replaced by anything in sigma (the contact solver sees them filled with the
 nearest measured value, which the notes report).
 
-``HertzCheck.to_json()`` has the keys ``hertz_holds``, ``judged`` (false: the scan's pixel
-does not resolve the contact, no verdict), ``alpha``, ``sigma``,
-``hertz`` {a, delta, p0}, ``bem`` {pmax, effective_radius, contact_radius, approach,
-area_fraction, plastic_fraction}, ``reasons`` and ``radial_profile`` {r, p_bem, p_hertz},
-and ``models``
+Its record (:func:`surfmet.records.hertz.hertz_check_record`) has the keys
+``hertz_holds``, ``judged`` (false: the scan's pixel does not resolve the contact, no
+verdict), ``alpha``, ``sigma``, ``hertz`` {a, delta, p0}, ``bem`` {pmax,
+effective_radius, contact_radius, approach, area_fraction, plastic_fraction},
+``reasons`` and ``radial_profile`` {r, p_bem, p_hertz}, and ``models``
 {hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
@@ -81,8 +81,8 @@ class HertzCheck:
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
     >>> check = hertz_check(patch, radius=0.02, load=10.0, grid=64)
-    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}", sorted(check.to_json())[:3])
-    False alpha = 2.42 [...]
+    >>> print(check.hertz_holds, f"alpha = {check.alpha:.2f}")
+    False alpha = 2.42
     """
 
     comparison: HertzComparison
@@ -168,19 +168,6 @@ class HertzCheck:
             ("BEM peak pressure", c.pmax, "Pa"),
         ])
 
-    def to_json(self) -> dict[str, Any]:
-        """The record with exactly the issue's keys (see
-        :func:`surfmet.records.hertz.hertz_check_record`)."""
-        from surfmet.records.hertz import hertz_check_record
-
-        return hertz_check_record(self)
-
-    def details(self) -> dict[str, Any]:
-        """Inputs, every criterion, the elastic peak pressure, the grid and the notes."""
-        from surfmet.records.hertz import hertz_check_details
-
-        return hertz_check_details(self)
-
     def figure(self, path: str | Path | None = None) -> Any:
         """Pressure map and radial profile against Hertz (:mod:`surfmet.plots.hertz`)."""
         from surfmet.plots.hertz import hertz_check_figure
@@ -244,8 +231,8 @@ def hertz_check(
     -------
     HertzCheck
         The verdict (``hertz_holds``, ``reasons``), the roughness parameter ``alpha``, the
-        elastic and elastic-plastic solutions and the scans' preparation; ``to_json()``
-        and ``figure()``.
+        elastic and elastic-plastic solutions and the scans' preparation, and
+        ``figure()`` (its record: :func:`surfmet.records.hertz.hertz_check_record`).
 
     Raises
     ------
@@ -304,12 +291,14 @@ def hertz_check(
     if adhesion_range is not None and work_of_adhesion is None:
         raise SurfmetInputError("an interaction range needs a work of adhesion "
                                 "(--work-of-adhesion)")
-    if hardness is None and plastic:
-        hardness = mats.hardness
     if not plastic:
         hardness = None
     if hardness is not None and not (math.isfinite(hardness) and hardness > 0):
         raise SurfmetInputError(f"the hardness must be a positive pressure, got {hardness!r}")
+    # the one home of the default hardness (contact.material_pair.resolve_pair): the
+    # user's, else the softer body's table value
+    mats = mats.with_hardness(hardness)
+    hardness = mats.hardness if plastic else None
     prep = prepare_scans(scan, ball, spikes=spikes)
     pair = prep.pair
     check = check_sphere(

@@ -215,14 +215,14 @@ def prepare_pair(
     if plate is not None:
         plate = _areal(plate, "plate")
         lev, fit = remove_form(plate, "plane")
-        fits["plate"] = fit.as_dict()
+        fits["plate"] = fit
         notes.append("plate levelled (least-squares plane removed)")
         parts.append(("plate", np.asarray(lev.heights), plate.dx, plate.dy))
     if ball is not None:
         ball = _areal(ball, "ball")
         res, fit = remove_form(ball, "sphere")
-        fits["ball"] = fit.as_dict()
-        ball_radius = float(fit.shape["radius"]["value"])
+        fits["ball"] = fit
+        ball_radius = float(fit.shape["radius"])
         z = np.asarray(res.heights)
         if mirror_ball:
             z = z[:, ::-1]

@@ -187,7 +187,7 @@ def solve_rolling_contact(
 
     See Also
     --------
-    rolling_contact_record : its JSON record.
+    surfmet.records.rolling_contact.rolling_contact_record : its JSON record.
 
     References
     ----------
@@ -202,8 +202,8 @@ def solve_rolling_contact(
     A steel ball on steel at 10 N with a creepage of 1e-4: the tangential force stays
     within Coulomb's μN = 3 N:
 
-    >>> from surfmet.mechanics.rolling_contact import (rolling_contact_record,
-    ...                                                 solve_rolling_contact)
+    >>> from surfmet.mechanics.rolling_contact import solve_rolling_contact
+    >>> from surfmet.records.rolling_contact import rolling_contact_record
     >>> rc = solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3, creepage=1e-4, grid=32)
     >>> fx = rolling_contact_record(rc)["fx"]
     >>> print(fx["unit"], 0 < abs(fx["value"]) < 0.3 * 10.0)
@@ -300,80 +300,3 @@ def _grid(radius: float, half: float, n: int, line: bool, roughness: RoughnessMa
         z = sample_roughness(zmap, zdx, zdy, make(radius, half, n), average=False)
         z = z - z.max()  # the highest summit touches first; only differences matter
     return make(radius, half, n, roughness=z)
-
-
-def rolling_contact_record(rc: RollingContact) -> dict[str, Any]:
-    """The JSON record of a solve: every value with its unit.
-
-    Parameters
-    ----------
-    rc : RollingContact
-        A solve.
-
-    Returns
-    -------
-    dict
-        Every value as ``{"value": v, "unit": u}``.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.rolling_contact import (rolling_contact_record,
-    ...                                                 solve_rolling_contact)
-    >>> rec = rolling_contact_record(solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3,
-    ...                                                    creepage=1e-4, grid=32))
-    >>> rec["creepage"], rec["pmax"]["unit"]
-    ({'value': 0.0001, 'unit': ''}, 'Pa')
-    """
-    from contact.tangential.results import edge_note
-    from surfmet.units import quantity
-
-    r = rc.result
-    per = "/m" if rc.line else ""
-    area = "m" if rc.line else "m^2"  # units as surfmet.units.DISPLAY_UNITS spells them
-    rec: dict[str, Any] = {
-        "sign_convention": SIGN_CONVENTION,
-        "geometry": "cylinder on flat, plane strain" if rc.line else "sphere on flat",
-        "free_rolling": rc.free_rolling,
-        "radius": quantity(rc.radius, "m"),
-        "load": quantity(rc.load, "N" + per),
-        "mu": r.mu,
-        "grid": {"elements": rc.grid, "element_size": quantity(r.grid.dx, "m"),
-                 "domain_side": quantity(rc.side, "m")},
-        "creepage": quantity(r.creepage.xi, ""),
-        "fx": quantity(r.fx, "N" + per),
-        "fy": quantity(r.fy, "N" + per),
-        "pmax": quantity(r.pmax, "Pa"),
-        "approach": quantity(r.approach, "m"),
-        "contact_area": quantity(r.contact_area, area),
-        "stick_area": quantity(r.stick_area, area),
-        "slip_area": quantity(r.slip_area, area),
-        "frictional_power": quantity(r.frictional_power, "W/(m/s)" + per),
-        "edge_dissipation_share": quantity(r.edge_dissipation_share, ""),
-        "rolling_resistance_coefficient": quantity(r.rolling_resistance_coefficient, ""),
-        "pressure_moment_coefficient": quantity(r.pressure_moment_coefficient(rc.radius),
-                                                ""),
-        "rolling_resistance_definition": RESISTANCE_DEFINITION,
-        # convergence, stated as ``contact`` states it (a solve that does not converge
-        # raises instead of returning): the solve record's
-        "iterations": r.solve.iterations,
-        "residual": quantity(r.solve.residual, ""),
-        "converged": r.solve.converged,
-        "solve": r.solve.to_json(),
-        "solver": {"tolerance": r.tol, "coupling_iterations": r.iterations,
-                   "operator_products": r.matvecs},
-        "kalker_K": r.constants.K,
-        "dundurs_beta": r.constants.beta,
-    }
-    notes = list(rc.notes)
-    note = edge_note(r.edge_dissipation_share)
-    if note is not None:
-        notes.append(note)
-    if notes:
-        rec["notes"] = notes
-    if rc.line:
-        rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
-                                "2D displacement and is given for the grid's own datum")
-    if rc.speed is not None:
-        rec["speed"] = quantity(rc.speed, "m/s")
-        rec["frictional_power_at_speed"] = quantity(r.frictional_power * rc.speed, "W" + per)
-    return rec

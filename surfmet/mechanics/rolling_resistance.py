@@ -7,9 +7,9 @@ spikes removed, plate levelled, ball sphere removed, both paired on one grid) an
 sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
 choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
 
-``RollingReport.to_json()`` holds ``lambda_eff``, ``lambda_ci`` [lo, hi], ``loads``,
-``moments``, ``local_lambda``, ``model`` and the ``settings`` used; every value is
-``{"value": v, "unit": "..."}``.
+Its record (:func:`surfmet.records.rolling.rolling_record`) holds ``lambda_eff``,
+``lambda_ci`` [lo, hi], ``loads``, ``moments``, ``local_lambda``, ``model`` and the
+``settings`` used; every value is ``{"value": v, "unit": "..."}``.
 """
 
 from __future__ import annotations
@@ -69,12 +69,6 @@ class RollingReport:
     @property
     def lambda_ci(self) -> tuple[float, float]:
         return self.sweep.lambda_ci
-
-    def to_json(self) -> dict[str, Any]:
-        """The record (:func:`surfmet.records.rolling.rolling_record`)."""
-        from surfmet.records.rolling import rolling_record
-
-        return rolling_record(self)
 
     def figure(self, path: PathLike | None = None) -> Any:
         """M_r(N) and the local exponent (:func:`surfmet.plots.hertz.rolling_figure`)."""
@@ -159,7 +153,8 @@ def rolling_resistance(
     -------
     RollingReport
         The sweep (loads, forces, moments), the fitted exponent ``lambda_eff`` with its
-        interval ``lambda_ci``, the notes; ``to_json()`` and ``figure()``.
+        interval ``lambda_ci``, the notes, and ``figure()`` (its record:
+        :func:`surfmet.records.rolling.rolling_record`).
 
     Raises
     ------
@@ -203,8 +198,10 @@ def rolling_resistance(
         raise SurfmetInputError(f"lossy must be one of {LOSSY}, got {lossy!r}")
     mats = material_pair(materials)
     ball_m, plate_m = parse_materials(mats)
-    if model == "plastic" and hardness is None:
-        hardness = mats.hardness
+    if model == "plastic":
+        # the one home of the default hardness (contact.material_pair.resolve_pair): the
+        # user's, else the softer body's table value
+        hardness = mats.with_hardness(hardness).hardness
         if hardness is None:
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness or "
                                     "a material with H=...")
@@ -350,11 +347,6 @@ class TrackReport:
     def lambda_eff(self) -> float:
         return float(self.fit.exponent) if self.fit is not None else math.nan
 
-    def to_json(self) -> dict[str, Any]:
-        """The record (:func:`surfmet.records.rolling.tracks_record`)."""
-        from surfmet.records.rolling import tracks_record
-
-        return tracks_record(self)
 
 
 def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = None, *,

@@ -11,7 +11,8 @@ command and API entry point that builds a contact from a scan (``contact``, ``he
    the non-measured points filled with the nearest measured value
    (:func:`surfmet.mechanics.pairing.prepare_pair`).
 
-Every result built this way states what was done (:meth:`PreparedScans.record`).
+Every result built this way states what was done (its record is
+:func:`surfmet.records.preparation.preparation_record`).
 """
 
 from __future__ import annotations
@@ -230,15 +231,145 @@ class PreparedScans:
     residuals: dict[str, Topography] = field(default_factory=dict)
     spikes: str = SPIKES
 
-    def record(self) -> dict[str, Any]:
-        """What was done to the scans, for the output."""
-        from surfmet.units import quantity
+    @property
+    def filled_fraction(self) -> float | None:
+        """The fraction of the paired grid that was not measured (None: no scans)."""
+        return None if self.pair is None else self.pair.filled_fraction
 
-        pair = self.pair
-        return {"spikes": self.spikes, "spikes_removed": dict(self.spikes_removed),
-                "filled_fraction": quantity(None if pair is None else pair.filled_fraction,
-                                            ""),
-                "notes": list(self.notes)}
+
+@dataclass(frozen=True, eq=False)
+class FlatPreparation:
+    """What was done to a single scan for a flat contact or a spectrum.
+
+    Attributes
+    ----------
+    spikes : str
+        ``"remove"`` or ``"keep"``.
+    spikes_removed : dict
+        Spikes removed (``{"scan": count}``).
+    filled_fraction : float
+        Fraction of the scan not measured and filled with the nearest measured value.
+    notes : tuple of str
+    levelling : str or None
+        The levelling applied afterwards (:func:`surfmet.mechanics.spectrum.prepare`),
+        None before it.
+
+    See Also
+    --------
+    prepare_flat : makes it.
+    surfmet.records.preparation.flat_preparation_record : its record.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.scan_preparation import prepare_flat
+    >>> _, done = prepare_flat(surfmet.read(path("paper_plate.x3p")))
+    >>> done.spikes, done.spikes_removed, done.levelling
+    ('remove', {'scan': 60}, None)
+    """
+
+    spikes: str
+    spikes_removed: dict[str, int]
+    filled_fraction: float
+    notes: tuple[str, ...]
+    levelling: str | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class ScansUsed:
+    """The scans an adhesive run was sampled from, and the roughness on its grid.
+
+    Attributes
+    ----------
+    prep : PreparedScans
+        The prepared scans.
+    plate, ball : Topography, path or None
+        The scans as given.
+    dx : float
+        The solver's pixel (m).
+    z : ndarray
+        The roughness on the solver's grid (m).
+    profile : str or None
+        For a line contact, which profile of the plate was used.
+
+    See Also
+    --------
+    surfmet.mechanics.adhesion.rough_grid : makes it.
+    surfmet.records.adhesion.scans_record : its record.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.adhesion import rough_grid
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
+    >>> _, used = rough_grid(patch, None, 32, 3e-4)
+    >>> used.plate_name, used.ball_name, used.z.shape
+    ('(in memory)', None, (32, 32))
+    """
+
+    prep: PreparedScans
+    plate: Any
+    ball: Any
+    dx: float
+    z: Any
+    profile: str | None = None
+
+    @property
+    def plate_name(self) -> str | None:
+        """The plate's file name, "(in memory)" for a Topography, None when not given."""
+        return scan_name(self.plate)
+
+    @property
+    def ball_name(self) -> str | None:
+        """The ball's file name, "(in memory)" for a Topography, None when not given."""
+        return scan_name(self.ball)
+
+    @property
+    def roughness_rms(self) -> float:
+        """The rms of the roughness on the solver's grid (m)."""
+        z = self.z
+        return float(math.sqrt(float(((z - z.mean()) ** 2).mean())))
+
+    @property
+    def notes(self) -> list[str]:
+        """The preparation's notes, and one when the solver's pixel is finer than the
+        scans' (the roughness is then interpolated)."""
+        pair = self.prep.pair
+        notes = list(self.prep.notes)
+        if self.dx < pair.dx * (1 - 1e-9):
+            notes.append(f"the solver's pixel ({self.dx * 1e9:.4g} nm) is finer than the "
+                         f"scans' ({pair.dx * 1e9:.4g} nm): the roughness is interpolated "
+                         "between measured points")
+        return notes
+
+
+def scan_name(scan: ScanSource | None) -> str | None:
+    """A scan's file name, "(in memory)" for a Topography, None when not given.
+
+    Parameters
+    ----------
+    scan : Topography, path or None
+        A scan as given.
+
+    Returns
+    -------
+    str or None
+        Its file (the one it was read from, for a Topography), or "(in memory)".
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.scan_preparation import scan_name
+    >>> scan_name("plate.x3p"), scan_name(None)
+    ('plate.x3p', None)
+    """
+    if scan is None:
+        return None
+    if isinstance(scan, Topography):  # read by the caller: its file, when it has one
+        return scan.metadata.get("source") or "(in memory)"
+    return str(scan)
 
 
 def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
@@ -306,19 +437,20 @@ def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = Non
                  if scan is not None}
     s_plate = s_ball = 0.0
     if "plate" in pair.fits:
-        s_plate = float(pair.fits["plate"]["residual_rms"]["value"])
+        s_plate = float(pair.fits["plate"].residual_rms)
     if "ball" in pair.fits:
-        s_ball = float(pair.fits["ball"]["residual_rms"]["value"])
+        s_ball = float(pair.fits["ball"].residual_rms)
     return PreparedScans(pair=pair, sigma=math.hypot(s_plate, s_ball), sigma_plate=s_plate,
                          sigma_ball=s_ball, notes=tuple(notes), spikes_removed=removed,
                          residuals=residuals, spikes=mode)
 
 
-def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topography, dict[str, Any]]:
+def prepare_flat(topo: ScanSource, *,
+                 spikes: Spikes = SPIKES) -> tuple[Topography, FlatPreparation]:
     """A single scan made ready for a flat contact: spikes as :func:`prepare_scans` does
     them, then every non-measured point filled with its nearest measured value.
 
-    Returns the scan and the record of what was done (as :meth:`PreparedScans.record`).
+    Returns the scan and what was done to it.
 
     Parameters
     ----------
@@ -342,13 +474,12 @@ def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topograp
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.scan_preparation import prepare_flat
     >>> scan, record = prepare_flat(surfmet.read(path("paper_plate.x3p")))
-    >>> bool(scan.has_nan), record["spikes_removed"]
+    >>> bool(scan.has_nan), record.spikes_removed
     (False, {'scan': 60})
     """
     import numpy as np
 
     from surfmet.mechanics.pairing import fill_nearest
-    from surfmet.units import quantity
 
     mode = spike_mode(spikes)
     scan = read_areal(topo, "scan")
@@ -364,5 +495,5 @@ def prepare_flat(topo: ScanSource, *, spikes: Spikes = SPIKES) -> tuple[Topograp
         notes.append(f"{100 * frac:.3g} % of the scan not measured; filled with the nearest "
                      "measured value")
         scan = scan.replace(heights=z)
-    return scan, {"spikes": mode, "spikes_removed": {"scan": count},
-                  "filled_fraction": quantity(frac, ""), "notes": notes}
+    return scan, FlatPreparation(spikes=mode, spikes_removed={"scan": count},
+                                 filled_fraction=frac, notes=tuple(notes))

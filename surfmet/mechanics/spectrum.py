@@ -27,7 +27,7 @@ lists them.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -442,7 +442,7 @@ def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
 
     Returns
     -------
-    (Topography, bool, str, dict)
+    (Topography, bool, str, FlatPreparation)
         The prepared scan, whether it is treated as periodic, the levelling and the
         preparation record.
 
@@ -462,8 +462,7 @@ def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
 
     scan, record = prepare_flat(topo, spikes=SPIKES if spikes is None else spikes)
     out, per, level = prepare(scan, periodic)
-    record["levelling"] = level
-    return out, per, level, record
+    return out, per, level, replace(record, levelling=level)
 
 
 def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None,
@@ -477,7 +476,7 @@ def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
 
     Returns
     -------
-    (Spectrum, str, dict)
+    (Spectrum, str, FlatPreparation)
         The spectrum, the levelling used and the scan-preparation record.
 
     See Also
@@ -489,7 +488,7 @@ def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.spectrum import scan_spectrum
     >>> spec, levelling, record = scan_spectrum(path("paper_plate.x3p"))
-    >>> print(levelling, record["spikes_removed"], f"h_rms = {spec.h_rms * 1e6:.2f} µm")
+    >>> print(levelling, record.spikes_removed, f"h_rms = {spec.h_rms * 1e6:.2f} µm")
     mean {'scan': 60} h_rms = 2.30 µm
     """
     scan, per, level, preparation = prepared_scan(topo, periodic=periodic, spikes=spikes)

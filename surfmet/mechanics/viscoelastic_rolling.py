@@ -25,8 +25,6 @@ import numpy as np
 
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
-from surfmet.records.rolling import sweep_solve
-from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.materials import Material
@@ -120,33 +118,14 @@ class ViscoRollingReport:
     >>> report = viscoelastic_rolling(radius=0.02, materials="steel,pmma", loads=[1.0, 3.0, 10.0],
     ...                               speed=0.01, viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
     ...                               grid=32)
-    >>> report.sweep.moments.shape, sorted(report.to_json())[:2]
-    ((3,), [...])
+    >>> report.sweep.moments.shape
+    (3,)
     """
 
     sweep: Any
     radius: float
     bodies: tuple[Any, Any]
     notes: tuple[str, ...] = ()
-
-    def to_json(self) -> dict[str, Any]:
-        s = self.sweep
-        st = s.settings
-        return {
-            "model": "viscoelastic",
-            "lambda_eff": quantity(s.lambda_eff, ""),
-            "lambda_ci": quantity(list(s.lambda_ci), ""),
-            "loads": quantity(s.loads, "N"),
-            "moments": quantity(s.moments, "N m"),
-            "rolling_resistance_coefficient": quantity(s.forces / s.loads, ""),
-            "local_lambda": quantity(s.local_lambda, ""),
-            "settings": {"radius": quantity(self.radius, "m"),
-                         "speed": quantity(st["speed"], "m/s"),
-                         "bodies": [repr(b) for b in self.bodies],
-                         "grid": st["grid"], "dx": quantity(st["dx"], "m"),
-                         "roughness": st["roughness"], "notes": list(self.notes)},
-            **sweep_solve(s),
-        }
 
 
 def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
@@ -274,45 +253,6 @@ class MechanismsReport:
         never a constant-acceleration fit."""
         o = self.verdict.offset
         return o.value, o.ci_low, o.ci_high
-
-    def to_json(self) -> dict[str, Any]:
-        from contact.viscoelastic.mechanisms import BOUNDS_ONLY
-        from surfmet.mechanics._rotor_sensitivity import label_swap_text
-        from surfmet.records.rotor_verdict import offset_record
-
-        c = self.comparison
-        name, factor = c.dominant()
-        rows = {}
-        for m in c.mechanisms:
-            rows[m.name] = {
-                "moments_at_rotor_loads": quantity(list(m.rotor_moments), "N m"),
-                "lambda_eff": quantity(m.sweep.lambda_eff, ""),
-                "lambda_ci": quantity(list(m.sweep.lambda_ci), ""),
-                "local_lambda_rotor": quantity(m.local_lambda, ""),
-                "sweep_loads": quantity(m.sweep.loads, "N"),
-                "sweep_moments": quantity(m.sweep.moments, "N m"),
-                "raw_second_difference": quantity(
-                    m.rotor_moments[1] + m.rotor_moments[2] - 2 * m.rotor_moments[0], "N m"),
-                "delta_eps": quantity(m.delta_eps, "rad/s^2"),
-                "can_explain_offset": bool(reaches_offset(m.delta_eps, self.verdict.offset)),
-                "assumption": m.assumption,
-                "ranked": m.name not in BOUNDS_ONLY,
-                **sweep_solve(m.sweep),
-            }
-        return {"model": "all", "mechanisms": rows,
-                "rotor_loads": quantity(list(c.rotor_loads), "N"),
-                "rolling_inertia": quantity(c.rolling_inertia, "kg m^2"),
-                "dominant": name, "dominant_factor": quantity(factor, ""),
-                "verdict": {"code": self.verdict.code, "sentence": self.verdict.sentence,
-                            "label_swap": label_swap_text(self.verdict)},
-                "group_offset": offset_record(self.verdict),
-                "assumptions": {k: quantity(v, _UNITS.get(k, "")) for k, v in
-                                c.assumptions.items()},
-                "notes": list(self.notes)}
-
-
-_UNITS = {"speed": "m/s", "hardness": "Pa", "peak_time": "s",
-          "contact_radius_symmetric": "m"}
 
 
 def microslip_sweep(radius: float, materials: Materials, mu: float,

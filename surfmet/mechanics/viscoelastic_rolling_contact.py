@@ -1,8 +1,8 @@
 """One steady viscoelastic rolling solve (``surfmet rolling-contact --viscoelastic``): the
 normal problem, the tangential one where the model can answer it, and its JSON record in
 the elastic command's vocabulary
-(:func:`~surfmet.mechanics.rolling_contact.rolling_contact_record`: the same keys, sign
-convention and grid record).
+(:func:`~surfmet.records.rolling_contact.visco_rolling_contact_record`: the elastic
+record's keys, sign convention and grid record).
 
 What the tangential solve leaves out. The plane-strain traction solver
 (:func:`contact.viscoelastic.steady_traction`) is that of quasi-identical bodies: Kalker's
@@ -22,14 +22,12 @@ creepage differs by 0.5 % and the slip area by 14 % (a few edge elements).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from surfmet.errors import SurfmetInputError
-from surfmet.units import quantity
 
 if TYPE_CHECKING:
     from contact.materials import Material
@@ -207,7 +205,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
 
     See Also
     --------
-    visco_rolling_contact_record : its JSON record.
+    surfmet.records.rolling_contact.visco_rolling_contact_record : its JSON record.
     surfmet.mechanics.rolling_contact.solve_rolling_contact : the elastic case.
 
     References
@@ -322,101 +320,3 @@ VISCO_RESISTANCE_DEFINITION = (
     "pressure_moment_coefficient and it dissipates nothing); the frictional micro-slip "
     "dissipation (frictional_power) is not in it"
 )
-
-
-def visco_rolling_contact_record(vc: ViscoRollingContact) -> dict[str, Any]:
-    """The JSON record, keyed as the elastic one
-    (:func:`surfmet.mechanics.rolling_contact.rolling_contact_record`).
-
-    Parameters
-    ----------
-    vc : ViscoRollingContact
-        A solve.
-
-    Returns
-    -------
-    dict
-        Every value as ``{"value": v, "unit": u}``.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.viscoelastic_rolling_contact import (
-    ...     visco_rolling_contact_record, viscoelastic_rolling_contact)
-    >>> vc = viscoelastic_rolling_contact(radius=0.02, load=10.0, materials="steel,pmma",
-    ...                                   viscoelastic=["plate:Eg=3GPa:Er=1GPa:tau=1ms"],
-    ...                                   speed=0.01, grid=32)
-    >>> rec = visco_rolling_contact_record(vc)
-    >>> rec["geometry"], rec["speed"]
-    ('sphere on flat', {'value': 0.01, 'unit': 'm/s'})
-    """
-    from surfmet.mechanics.rolling_contact import SIGN_CONVENTION
-
-    r = vc.normal
-    per = "/m" if vc.line else ""
-    area = "m" if vc.line else "m^2"
-    dx = float(r.x[1] - r.x[0])
-    cell = dx if vc.line else dx * float(r.y[1] - r.y[0])
-    coupled = max(abs(k) for k in vc.kalker_k) > QUASI_IDENTICAL_K
-    tangential = ("no friction given (--mu)" if vc.mu is None else vc.not_solved
-                  or "solved (plane strain, quasi-identical bodies: K = 0)" if vc.line
-                  else "solved (3D, the coupling of K one way)" if coupled
-                  else "solved (3D, quasi-identical bodies: K = 0)")
-    rec: dict[str, Any] = {
-        "sign_convention": SIGN_CONVENTION,
-        "geometry": "cylinder on flat, plane strain" if vc.line else "sphere on flat",
-        "model": "viscoelastic steady rolling, normal problem" + (
-            f" and tangential tractions ({'plane strain' if vc.line else '3D'}, "
-            + ("coupling one way)" if coupled and not vc.line else "quasi-identical bodies)")
-            if vc.traction is not None else
-            " (frictionless)" if vc.mu is None else " (tangential problem not solved)"),
-        "free_rolling": vc.free_rolling,
-        "radius": quantity(vc.radius, "m"),
-        "load": quantity(vc.load, "N" + per),
-        "speed": quantity(r.speed, "m/s"),
-        "mu": vc.mu,
-        "grid": {"elements": vc.grid, "element_size": quantity(dx, "m"),
-                 "domain_side": quantity(dx * r.x.size, "m")},
-        "tangential": {"solved": vc.traction is not None, "status": tangential},
-        **_traction_fields(vc, per, area),
-        "pmax": quantity(r.pmax, "Pa"),
-        "approach": quantity(r.approach, "m"),
-        "contact_area": quantity(float(np.count_nonzero(np.asarray(r.pressure) > 0)) * cell,
-                                 area),
-        "rolling_resistance_coefficient": quantity(r.rolling_resistance, ""),
-        "rolling_resistance_definition": VISCO_RESISTANCE_DEFINITION,
-        "pressure_offset": quantity(r.pressure_offset, "m"),
-        "leading_edge": quantity(r.leading, "m"),
-        "trailing_edge": quantity(r.trailing, "m"),
-        "solve": r.solve.to_json(),
-        "kalker_K_glassy": vc.kalker_k[0],
-        "kalker_K_relaxed": vc.kalker_k[1],
-    }
-    if vc.traction is not None:
-        rec["traction_solve"] = vc.traction.solve.to_json()
-    notes = [*vc.notes, *([vc.not_solved] if vc.not_solved else [])]
-    if vc.line:
-        rec["approach_note"] = ("plane strain: the approach depends on the datum of the "
-                                "2D displacement and is given for the grid's own datum")
-    if notes:
-        rec["notes"] = notes
-    return rec
-
-
-def _traction_fields(vc: ViscoRollingContact, per: str, area: str) -> dict[str, Any]:
-    """creepage, fx, fy, stick and slip extent, frictional power: only where solved."""
-    tr = vc.traction
-    if tr is None:
-        return {}
-    if vc.line:
-        dx = float(vc.normal.x[1] - vc.normal.x[0])
-        return {"creepage": quantity(tr.creepage, ""), "fx": quantity(tr.force, "N" + per),
-                "stick_area": quantity(float(tr.stick.sum()) * dx, area),
-                "slip_area": quantity(float(tr.slip.sum()) * dx, area)}
-    power = tr.frictional_power
-    out = {"creepage": quantity(tr.creepage.xi, ""), "fx": quantity(tr.fx, "N"),
-           "fy": quantity(tr.fy, "N"), "stick_area": quantity(tr.stick_area, area),
-           "slip_area": quantity(tr.slip_area, area),
-           "frictional_power": quantity(power, "W/(m/s)")}
-    if math.isfinite(power):
-        out["frictional_power_at_speed"] = quantity(power * vc.normal.speed, "W")
-    return out

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from surfmet.records.solve import solve_record
 from surfmet.units import quantity
 
 
@@ -47,7 +48,7 @@ def contact_record(res: Any, ball: Any, plate: Any, pair: Any, *, radius: float,
         "residual": quantity(res.residual, ""),
         "converged": res.converged,
         "touches_edge": res.touches_edge,
-        "solve": res.solve.to_json(),
+        "solve": solve_record(res.solve),
         "hertz": {
             "a": quantity(hz.a if hz else None, "m"),
             "delta": quantity(hz.delta if hz else None, "m"),
@@ -74,6 +75,29 @@ def contact_record(res: Any, ball: Any, plate: Any, pair: Any, *, radius: float,
             "filled_fraction": quantity(pair.filled_fraction, ""),
             "notes": list(pair.notes),
         }
+    return rec
+
+
+def ball_contact_record(run: Any) -> dict[str, Any]:
+    """The ``surfmet contact`` record of a :class:`surfmet.mechanics.ball_contact.BallContact`
+    (every value with its unit), with what was done to the scans and the warnings.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.ball_contact import ball_contact
+    >>> from surfmet.records.contact import ball_contact_record
+    >>> rec = ball_contact_record(ball_contact(radius=0.02, load=10.0, grid=64))
+    >>> print(f"{rec['pmax']['value'] / 1e6:.0f} MPa", rec["warnings"])
+    255 MPa []
+    """
+    from surfmet.records.preparation import preparation_record
+
+    rec = contact_record(run.result, run.ball_material, run.plate_material, run.pair,
+                         radius=run.radius, plate_file=run.plate_file,
+                         ball_file=run.ball_file)
+    if run.preparation is not None:
+        rec["scan_preparation"] = preparation_record(run.preparation)
+    rec["warnings"] = list(run.warnings)
     return rec
 
 

@@ -7,6 +7,8 @@ import math
 from typing import Any
 
 from contact.record import combine
+from surfmet.records.preparation import flat_preparation_record
+from surfmet.records.solve import solve_record
 from surfmet.records.spectrum import spectrum_record
 from surfmet.units import quantity
 
@@ -40,7 +42,7 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
                                          * s.slope_rms / pt.pressure),
                 "iterations": pt.iterations,
                 "converged": pt.converged,
-                "solve": pt.solve.to_json(),
+                "solve": solve_record(pt.solve),
             },
         }
         for name, m in rep.models.items():
@@ -69,10 +71,10 @@ def flat_contact_record(rep: Any) -> dict[str, Any]:
         "e_star": quantity(bem.e_star, "Pa"),
         "hardness": quantity(bem.hardness, "Pa"),
         "spectrum": srec,
-        "scan_preparation": rep.preparation,
+        "scan_preparation": flat_preparation_record(rep.preparation),
         "caveats": [*srec["caveats"], *rep.caveats],
         "results": results,
-        "solve": bem.solve.to_json(),
+        "solve": solve_record(bem.solve),
         "notes": [
             *bem.notes,
             "BGT gives the area only (its load-separation law has no closed form)",
@@ -99,9 +101,10 @@ def _adhesion_header(ad: Any) -> dict[str, Any]:
         "process_zone": quantity(ad.process_zone, "m"),
         "process_zone_pixels": quantity(ad.process_zone / ad.dx, ""),
         "warnings": list(ad.warnings),
-        "solve": combine([pt.solve for pt in ad.points],
-                         "adhesive, per pressure (" + "; ".join(
-                             sorted({pt.solve.method for pt in ad.points})) + ")").to_json(),
+        "solve": solve_record(combine([pt.solve for pt in ad.points],
+                                      "adhesive, per pressure (" + "; ".join(
+                                          sorted({pt.solve.method for pt in ad.points}))
+                                      + ")")),
         "notes": ["per pressure, 'adhesive' is the periodic adhesive solve and 'bem' the "
                   "non-adhesive one; attractive_pressure is the law's tension averaged over "
                   "the nominal area, touching points included: pressure = repulsive - "
@@ -125,5 +128,5 @@ def _adhesive_row(a: Any, bare: Any) -> dict[str, Any]:
                             "mean_gap": _rel(a.mean_gap, bare.mean_gap)},
         "solves": a.solves,
         "iterations": a.iterations,
-        "solve": a.solve.to_json(),
+        "solve": solve_record(a.solve),
     }

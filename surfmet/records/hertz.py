@@ -7,6 +7,9 @@ from typing import Any
 
 from surfmet.mechanics.scan_preparation import pixel_source
 from surfmet.records.contact import grid_record
+from surfmet.records.hertz_adhesion import hertz_adhesion_record
+from surfmet.records.preparation import preparation_record
+from surfmet.records.solve import solve_record
 from surfmet.units import quantity as _q
 
 
@@ -33,9 +36,9 @@ def hertz_check_record(check: Any) -> dict[str, Any]:
         "reasons": list(c.reasons),
         "grid": grid_record(check.result.shape, check.result.dx,
                             pixel_source(check.result.dx, check.scans.pair, check.grid)),
-        "scan_preparation": check.scans.record(),
+        "scan_preparation": preparation_record(check.scans),
         "warnings": check.warnings,
-        "solve": hertz_check_solve(check).to_json(),
+        "solve": solve_record(hertz_check_solve(check)),
         "radial_profile": {"r": _q(prof.r, "m"), "p_bem": _q(prof.p, "Pa"),
                            "p_hertz": _q(prof.p_hertz, "Pa")},
         **_models(check),
@@ -57,8 +60,6 @@ def _adhesion(check: Any) -> dict[str, Any]:
     """The adhesion section, when a work of adhesion was given."""
     if getattr(check, "adhesion", None) is None:
         return {}
-    from surfmet.mechanics.hertz_adhesion import hertz_adhesion_record
-
     return {"adhesion": hertz_adhesion_record(check.adhesion)}
 
 def _models(check: Any) -> dict[str, Any]:

@@ -6,6 +6,8 @@ from __future__ import annotations
 from typing import Any
 
 from surfmet.mechanics.scan_preparation import pixel_source
+from surfmet.records.preparation import preparation_record
+from surfmet.records.solve import solve_record
 from surfmet.units import quantity
 
 
@@ -33,7 +35,7 @@ def rolling_record(rep: Any) -> dict[str, Any]:
         **({"microslip": st["microslip"]} if "microslip" in st else {}),
     }
     if rep.scans is not None:
-        settings["scan_preparation"] = rep.scans.record()
+        settings["scan_preparation"] = preparation_record(rep.scans)
     return {
         "lambda_eff": quantity(s.lambda_eff, ""),
         "lambda_ci": quantity(list(s.lambda_ci), ""),
@@ -50,7 +52,7 @@ def sweep_solve(sweep: Any) -> dict[str, Any]:
     """``{"solve": record}`` of a rolling sweep's contact solves (:attr:`contact.rolling.
     RollingSweep.solve`), or nothing for a sweep in closed form."""
     rec = sweep.solve
-    return {} if rec is None else {"solve": rec.to_json()}
+    return {} if rec is None else {"solve": solve_record(rec)}
 
 
 def tracks_record(rep: Any) -> dict[str, Any]:
@@ -70,3 +72,26 @@ def tracks_record(rep: Any) -> dict[str, Any]:
             "lambda_ci": quantity(None if rep.fit is None else list(rep.fit.ci), ""),
             "loads": quantity(rep.loads, "N"),
             "mean_moments": quantity(rep.mean_moments, "N m"), "tracks": rows}
+
+
+def visco_rolling_record(rep: Any) -> dict[str, Any]:
+    """The record of ``surfmet rolling --model viscoelastic``
+    (:class:`surfmet.mechanics.viscoelastic_rolling.ViscoRollingReport`): the sweep, its
+    fit and settings, every value with its unit."""
+    s = rep.sweep
+    st = s.settings
+    return {
+        "model": "viscoelastic",
+        "lambda_eff": quantity(s.lambda_eff, ""),
+        "lambda_ci": quantity(list(s.lambda_ci), ""),
+        "loads": quantity(s.loads, "N"),
+        "moments": quantity(s.moments, "N m"),
+        "rolling_resistance_coefficient": quantity(s.forces / s.loads, ""),
+        "local_lambda": quantity(s.local_lambda, ""),
+        "settings": {"radius": quantity(rep.radius, "m"),
+                     "speed": quantity(st["speed"], "m/s"),
+                     "bodies": [repr(b) for b in rep.bodies],
+                     "grid": st["grid"], "dx": quantity(st["dx"], "m"),
+                     "roughness": st["roughness"], "notes": list(rep.notes)},
+        **sweep_solve(s),
+    }

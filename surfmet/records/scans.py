@@ -28,9 +28,30 @@ def scan_record(scan: Any) -> dict[str, Any]:
     else:
         out["length"] = quantity(scan.length, "m")
         out["uniform"] = scan.is_uniform
-    out["units"] = scan.calibration.record()  # which units the file states, or assumed
+    out["units"] = calibration_record(scan.calibration)  # which units the file states
     out["metadata"] = md
     return out
+
+
+def calibration_record(cal: Any) -> dict[str, Any]:
+    """JSON of a :class:`surfmet.model.Calibration`: each unit with who stated it
+    (``"file"``, ``"assumed"``, ``"user"``), and the caveats."""
+    from surfmet.model import SOURCE_WORDS
+
+    return {"height_unit": {"unit": cal.height_unit, "source": cal.height,
+                            "stated_by": SOURCE_WORDS[cal.height]},
+            "pixel": {"dx": quantity(cal.dx, "m"), "dy": quantity(cal.dy, "m"),
+                      "lateral_unit": cal.lateral_unit or None,
+                      "source": cal.lateral, "stated_by": SOURCE_WORDS[cal.lateral]},
+            "caveats": cal.caveats()}
+
+
+def channel_record(scan: Any) -> dict[str, Any]:
+    """One channel's or measurement's record (``surfmet info``'s ``channels_read``):
+    kind, grid, pixel and units."""
+    return {"kind": scan.kind, "nx": scan.nx, "ny": scan.ny,
+            "dx": quantity(scan.dx, "m"), "dy": quantity(getattr(scan, "dy", None), "m"),
+            "units": calibration_record(scan.calibration)}
 
 
 def _fit_fields(f: Any) -> dict[str, Any]:

@@ -57,14 +57,27 @@ def spectrum_record(s: Any) -> dict[str, Any]:
 
 
 def spectrum_command_record(file: str, s: Any, levelling: str,
-                            preparation: dict[str, Any]) -> dict[str, Any]:
+                            preparation: Any) -> dict[str, Any]:
     """The record ``surfmet spectrum FILE --json`` emits for one scan (and the report
     carries): the file, its levelling and preparation, :func:`spectrum_record`, and the
     materials when the plasticity index was asked for."""
-    rec = {"file": file, "levelling": levelling, "scan_preparation": preparation,
+    from surfmet.records.preparation import flat_preparation_record
+
+    rec = {"file": file, "levelling": levelling,
+           "scan_preparation": flat_preparation_record(preparation),
            **spectrum_record(s)}
     if s.materials is not None:
         rec["materials"] = s.materials.names
         rec["e_star"] = {"value": s.materials.e_star, "unit": "Pa"}
         rec["hardness"] = {"value": s.materials.hardness, "unit": "Pa"}
     return rec
+
+
+def profile_psd_record(fit: Any) -> dict[str, Any]:
+    """The report's record of the PSD fit drawn for a profile
+    (:func:`surfmet.psd.fit_hurst` on the roughness profile; None when it failed)."""
+    return {"of": "the roughness profile over the evaluation length", "window": "hann",
+            "hurst": None if fit is None else {
+                "value": fit.hurst,
+                "q_range": [{"value": fit.q_range[0], "unit": "rad/m"},
+                            {"value": fit.q_range[1], "unit": "rad/m"}]}}

@@ -1,86 +1,61 @@
 """The JSON records of an adhesive run (:func:`surfmet.mechanics.adhesion.adhesion` and the
-line contact's): the run, its jumps and the scans it used, every value with its unit."""
+line contact's, :func:`surfmet.mechanics.adhesion_line.line_adhesion`): the run, its jumps
+and the scans it used, every value with its unit."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from surfmet.mechanics.adhesion_laws import interaction_name
+from surfmet.records.preparation import preparation_record
+from surfmet.records.solve import solve_record
 from surfmet.units import quantity
 
 if TYPE_CHECKING:
-    import numpy as np
-
     from contact.adhesion.cycle import Branch, Jump
-    from surfmet.mechanics._types import ScanSource
-    from surfmet.mechanics.scan_preparation import PreparedScans
 
-__all__ = ["adhesion_record", "jump_record", "scans_record"]
+__all__ = ["adhesion_record", "jump_record", "line_record", "scans_record"]
 
 
-def scans_record(prep: PreparedScans, plate: ScanSource | None, ball: ScanSource | None,
-                 dx: float, z: np.ndarray) -> dict[str, Any]:
+def scans_record(used: Any) -> dict[str, Any] | None:
     """What scans were used, what was done to them, and the roughness on the grid.
 
     Parameters
     ----------
-    prep : PreparedScans
-        The prepared scans.
-    plate, ball : Topography, path or None
-        The scans as given.
-    dx : float
-        The grid's pixel (m).
-    z : ndarray
-        The roughness on the grid (m).
+    used : surfmet.mechanics.scan_preparation.ScansUsed or None
+        The scans an adhesive run was sampled from (None: smooth surfaces).
 
     Returns
     -------
-    dict
-        The scans, their preparation, the pixel and the rms of the roughness on the grid.
+    dict or None
+        The scans, their preparation, the pixel and the rms of the roughness on the grid
+        (and, for a line contact, the profile used).
 
     Examples
     --------
     >>> import surfmet
     >>> from surfmet.data import path
     >>> from surfmet.mechanics.adhesion import rough_grid
-    >>> from surfmet.mechanics.adhesion_records import scans_record
-    >>> from surfmet.mechanics.scan_preparation import prepare_scans
+    >>> from surfmet.records.adhesion import scans_record
     >>> plate = surfmet.read(path("paper_plate.x3p"))
     >>> patch = surfmet.Topography(plate.heights[:128, :128], plate.dx, plate.dy)
-    >>> z, _ = rough_grid(patch, None, 32, 3e-4)
-    >>> sorted(scans_record(prepare_scans(patch), patch, None, 1e-5, z))
+    >>> z, used = rough_grid(patch, None, 32, 3e-4)
+    >>> sorted(scans_record(used))
     ['ball', 'pixel', 'plate', 'preparation', 'roughness_rms']
     """
-    import math
-
-    from surfmet.units import quantity
-
-    pair = prep.pair
-    notes = list(prep.notes)
-    if dx < pair.dx * (1 - 1e-9):
-        notes.append(f"the solver's pixel ({dx * 1e9:.4g} nm) is finer than the scans' "
-                     f"({pair.dx * 1e9:.4g} nm): the roughness is interpolated between "
-                     "measured points")
-    record: dict[str, Any] = {
-        "plate": _scan_name(plate),
-        "ball": _scan_name(ball),
-        "pixel": quantity(pair.dx, "m"),
-        "roughness_rms": quantity(float(math.sqrt(float(((z - z.mean()) ** 2).mean()))),
-                                  "m"),
-        "preparation": prep.record(),
-    }
-    record["preparation"]["notes"] = notes
-    return record
-
-
-def _scan_name(scan: ScanSource | None) -> str | None:
-    """A scan's file name, "(in memory)" for a Topography, None when not given."""
-    if scan is None:
+    if used is None:
         return None
-    from surfmet.model import Topography
-
-    if isinstance(scan, Topography):  # read by the caller: its file, when it has one
-        return scan.metadata.get("source") or "(in memory)"
-    return str(scan)
+    record: dict[str, Any] = {
+        "plate": used.plate_name,
+        "ball": used.ball_name,
+        "pixel": quantity(used.prep.pair.dx, "m"),
+        "roughness_rms": quantity(used.roughness_rms, "m"),
+        "preparation": preparation_record(used.prep),
+    }
+    record["preparation"]["notes"] = used.notes
+    if used.profile is not None:
+        record["profile"] = used.profile
+    return record
 
 
 def _leg(branch: Branch) -> dict[str, Any]:
@@ -107,7 +82,7 @@ def jump_record(jump: Jump | None, force_unit: str = "N") -> dict[str, Any] | No
     Examples
     --------
     >>> from surfmet.mechanics.adhesion import adhesion
-    >>> from surfmet.mechanics.adhesion_records import jump_record
+    >>> from surfmet.records.adhesion import jump_record
     >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16, steps=6)
     >>> rec = jump_record(run.result.cycle.jump_in)
     >>> rec["load_after"]["unit"], rec["load_after"]["value"] < 0
@@ -141,14 +116,12 @@ def adhesion_record(run: Any) -> dict[str, Any]:
     Examples
     --------
     >>> from surfmet.mechanics.adhesion import adhesion
-    >>> from surfmet.mechanics.adhesion_records import adhesion_record
+    >>> from surfmet.records.adhesion import adhesion_record
     >>> rec = adhesion_record(adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=16,
     ...                                steps=6))
     >>> rec["geometry"], rec["pull_off_force"]["unit"]
     ('sphere', 'N')
     """
-    from surfmet.mechanics.adhesion_laws import interaction_name
-
     ball = run.result
     cyc, law = ball.cycle, ball.law
     return {
@@ -175,8 +148,67 @@ def adhesion_record(run: Any) -> dict[str, Any]:
                  "process_zone_pixels": quantity(ball.process_zone / ball.dx, ""),
                  "why": run.grid_why},
         "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
-        "solve": cyc.solve.to_json(),
+        "solve": solve_record(cyc.solve),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
-        "scans": run.scans,
+        "scans": scans_record(run.scans),
         "warnings": list(ball.warnings),
+    }
+
+
+def _line_leg(branch: Branch) -> dict[str, Any]:
+    return {"approach": quantity(branch.surface_approach, "m"),
+            "load": quantity(branch.load, "N/m"),
+            "contact_half_width": quantity(0.5 * branch.contact_area, "m")}
+
+
+def line_record(run: Any) -> dict[str, Any]:
+    """The JSON record of a line-contact run (forces per unit length).
+
+    Parameters
+    ----------
+    run : surfmet.mechanics.adhesion.Adhesion
+        A line run.
+
+    Returns
+    -------
+    dict
+        Every value as ``{"value": v, "unit": u}``, forces per unit length.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion_line import line_adhesion
+    >>> from surfmet.records.adhesion import line_record
+    >>> rec = line_record(line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64,
+    ...                                 steps=8))
+    >>> rec["pull_off_force"]["unit"], rec["work_of_adhesion"]
+    ('N/m', {'value': 0.05, 'unit': 'J/m^2'})
+    """
+    res = run.result
+    cyc, law = res.cycle, res.law
+    return {
+        "geometry": "line",
+        "radius": quantity(res.radius, "m"),
+        "e_star": quantity(res.e_star, "Pa"),
+        "interaction": interaction_name(law),
+        "work_of_adhesion": quantity(law.work, "J/m^2"),
+        "range": quantity(law.range, "m"),
+        "peak_tension": quantity(law.peak, "Pa"),
+        "maugis_parameter": quantity(res.maugis_parameter, ""),
+        "tabor_parameter": quantity(res.tabor_parameter, ""),
+        "pull_off_force": quantity(cyc.pull_off_force, "N/m"),
+        "pull_off_approach": quantity(cyc.pull_off_approach, "m"),
+        "jkr_pull_off_force": quantity(res.jkr_pull_off, "N/m"),
+        "rigid_pull_off_force": quantity(res.rigid_pull_off, "N/m"),
+        "jump_in": jump_record(cyc.jump_in, "N/m"),
+        "jump_out": jump_record(cyc.jump_out, "N/m"),
+        "hysteresis_energy": quantity(cyc.hysteresis_energy, "J/m"),
+        "grid": {"cells": res.cells, "size": quantity(res.size, "m"),
+                 "pixel": quantity(res.dx, "m"), "periodic": True, "plane_strain": True,
+                 "process_zone": quantity(res.process_zone, "m"),
+                 "process_zone_pixels": quantity(res.process_zone / res.dx, "")},
+        "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
+        "solve": solve_record(cyc.solve),
+        "curve": {"in": _line_leg(cyc.approach_leg), "out": _line_leg(cyc.retraction_leg)},
+        "scans": scans_record(run.scans),
+        "warnings": list(res.warnings),
     }
