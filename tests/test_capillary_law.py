@@ -23,6 +23,7 @@ from contact.adhesion import adhesive_ball
 from contact.adhesion.ball import default_size
 from contact.adhesion.laws import law_class
 from contact.errors import ContactInputError
+from contact.geometry import DomainSpec
 from surfmet.cli import main
 from surfmet.mechanics.adhesion import adhesion
 
@@ -60,7 +61,8 @@ def test_rigid_sphere_pull_off_is_four_pi_r_gamma_cos_theta():
     law = CapillaryLaw(GAMMA, THETA, R_K)
     e = _e_star(0.02, law)
     size = default_size(R, e, law)
-    res = adhesive_ball(R, e, law.on_grid(size / 64, e), grid=64, size=size, steps=8)
+    res = adhesive_ball(R, e, law.on_grid(size / 64, e), domain=DomainSpec(grid=64, size=size),
+                        steps=8)
     assert res.maugis_parameter == pytest.approx(0.02, rel=1e-9)
     dmt = 4.0 * math.pi * R * GAMMA * math.cos(THETA)
     assert res.cycle.pull_off_force == pytest.approx(dmt, rel=0.02)

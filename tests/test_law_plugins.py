@@ -29,10 +29,11 @@ from contact.adhesion.laws import (
 from contact.adhesion.line import adhesive_line, rigid_line_pull_off
 from contact.adhesion.solver import adhesive_problem, law_code, solve_adhesive
 from contact.errors import ContactInputError
+from contact.geometry import DomainSpec
 from surfmet.cli import build_parser, main
 from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion import adhesion, default_grid, interaction_name
-from surfmet.mechanics.adhesion_records import adhesion_record
+from surfmet.records.adhesion import adhesion_record
 
 ROOT = Path(__file__).resolve().parents[1]
 R, E_STAR = 1e-5, 1e9
@@ -88,8 +89,8 @@ def test_a_law_registered_in_the_test_solves_through_the_api(well):
     default grid by its own flag, and the rigid cylinder's pull-off by quadrature is the
     closed form 2 sqrt(2 R w sigma0)."""
     law, step = well(25e6, 2e-9), DugdaleLaw(0.05, 25e6)
-    a = adhesive_ball(R, E_STAR, law, grid=16, size=2e-6, steps=4)
-    b = adhesive_ball(R, E_STAR, step, grid=16, size=2e-6, steps=4)
+    a = adhesive_ball(R, E_STAR, law, domain=DomainSpec(grid=16, size=2e-6), steps=4)
+    b = adhesive_ball(R, E_STAR, step, domain=DomainSpec(grid=16, size=2e-6), steps=4)
     assert a.cycle.pull_off_force == b.cycle.pull_off_force > 0.0
     assert np.array_equal(a.cycle.retraction_leg.load, b.cycle.retraction_leg.load)
     run = adhesion(R, e_star=E_STAR, interaction=law, grid=16, size=2e-6, steps=4)
@@ -109,7 +110,8 @@ def test_a_law_registered_in_the_test_is_a_choice_of_the_command(well, capsys):
     rec = json.loads(capsys.readouterr().out)
     assert rec["interaction"] == "square_well"
     assert rec["work_of_adhesion"]["value"] == pytest.approx(0.05, rel=1e-12)
-    step = adhesive_ball(R, E_STAR, DugdaleLaw(0.05, 25e6), grid=16, size=2e-6, steps=4)
+    step = adhesive_ball(R, E_STAR, DugdaleLaw(0.05, 25e6),
+                         domain=DomainSpec(grid=16, size=2e-6), steps=4)
     assert rec["pull_off_force"]["value"] == pytest.approx(step.cycle.pull_off_force, rel=1e-12)
     assert main(["adhesion", "--radius", "10um", "--e-star", "1GPa", "--interaction",
                  "square_well", "--well-tension", "25MPa", "--quiet"]) == 1
@@ -152,7 +154,7 @@ def test_an_unregistered_law_is_refused_never_run_as_another(law):
     with pytest.raises(ContactInputError, match=words):
         solve_adhesive(problem, 0.0)
     with pytest.raises(ContactInputError, match=words):
-        adhesive_ball(R, E_STAR, law, grid=16, steps=4)
+        adhesive_ball(R, E_STAR, law, domain=DomainSpec(grid=16), steps=4)
     with pytest.raises(ContactInputError, match=words):
         adhesive_line(R, E_STAR, law, cells=64, steps=4)
     with pytest.raises(SurfmetInputError, match=words):

@@ -28,8 +28,9 @@ from johnson_wavy import mean_pressure
 from contact import hertz_sphere
 from contact.adhesion import descent
 from contact.adhesion.solver import solve_adhesive, solve_adhesive_at_pressure
-from contact.bem import iteration, loop, solve_normal
+from contact.bem import PressureBounds, SolveOptions, iteration, loop, solve_normal
 from contact.geometry import sphere_gap
+from contact.grid import gap_grid
 
 ROOT = Path(__file__).resolve().parents[1] / "contact"
 #: the loops that keep their own iteration (issue 37: their own discretisation)
@@ -90,8 +91,8 @@ def test_elastic_solve_normal_runs_the_driver_and_is_hertz(drives):
     hz = hertz_sphere(R, W, E_STAR)
     n = 128
     dx = 2.5 * hz.a / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, tol=1e-8,
-                       origin=(-(n // 2) * dx, -(n // 2) * dx))
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx, origin=(-(n // 2) * dx, -(n // 2) * dx)),
+                       e_star=E_STAR, load=W, options=SolveOptions(tol=1e-8))
     assert drives and set(drives) == {iteration.PolonskyKeer}
     assert abs(res.pmax / hz.p0 - 1.0) < 1e-3
     assert abs(res.contact_radius - hz.a) < res.dx
@@ -104,8 +105,9 @@ def test_plastic_solve_normal_runs_the_driver_and_is_fully_plastic(drives):
     radius = math.sqrt(W / (math.pi * hardness))
     n = 96
     dx = 2.6 * radius / n
-    res = solve_normal(sphere_gap(n, dx, R), dx, e_star=E_STAR, load=W, tol=1e-8,
-                       hardness=hardness, origin=(-(n // 2) * dx, -(n // 2) * dx))
+    res = solve_normal(gap_grid(sphere_gap(n, dx, R), dx, origin=(-(n // 2) * dx, -(n // 2) * dx)),
+                       e_star=E_STAR, load=W, bounds=PressureBounds.elastic(hardness),
+                       options=SolveOptions(tol=1e-8))
     assert drives and set(drives) == {iteration.PolonskyKeer}
     assert res.pmax == pytest.approx(hardness, rel=1e-9)
     assert res.contact_radius == pytest.approx(radius, rel=0.05)

@@ -16,14 +16,6 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 UNITS = "surfmet.units"
 
-# moved by the rotor helper (issue 37 item 6): the rotor's records go to
-# surfmet/records/rotor*.py on its branch; the lead removes this list at the merge.
-ROTOR_FILES = frozenset({
-    "surfmet/cli/rotor.py",
-    *(p.relative_to(ROOT).as_posix() for p in (ROOT / "surfmet/mechanics").glob("*rotor*.py")),
-})
-
-
 # Not records, by what they are (counted on main: 32 and 1):
 # - surfmet/io/: the readers build a scan's *metadata* (the data model: a stylus radius, an
 #   instrument's printed Ra, read back by the commands, e.g. the tip radius by ``scales``),
@@ -100,11 +92,11 @@ f = d["value"], {"value": 1}, x.quantity(3)
 
 
 def test_only_records_build_json_quantities():
-    """0 JSON quantities built outside surfmet/records/ (the rotor's files excepted until
-    the rotor helper's branch is merged)."""
+    """0 JSON quantities built outside surfmet/records/ (the engines, the facades, the CLI
+    and the demo included)."""
     found = {}
     for rel, tree in _modules("surfmet", "contact", "profiles"):
-        if (rel.startswith(("surfmet/records/", METADATA_PACKAGE)) or rel in ROTOR_FILES):
+        if rel.startswith(("surfmet/records/", METADATA_PACKAGE)):
             continue
         lines = quantity_builders(tree)
         if rel == DEFINITION[0]:
@@ -139,8 +131,6 @@ def test_mechanics_never_imports_records():
     inside a function (the records module's docstring states it)."""
     bad = {}
     for rel, tree in _modules("surfmet/mechanics"):
-        if rel in ROTOR_FILES:
-            continue
         hits = sorted(m for m in _imports(tree, rel)
                       if m == "surfmet.records" or m.startswith("surfmet.records."))
         if hits:

@@ -91,10 +91,6 @@ class ArealParameters:
         return {f.name: getattr(self, f.name) for f in fields(self)
                 if f.name in PARAMETER_UNITS and getattr(self, f.name) is not None}
 
-    def with_units(self) -> dict[str, tuple[float, str]]:
-        """``{symbol: (value, unit)}`` of the computed parameters."""
-        return {k: (v, PARAMETER_UNITS[k]) for k, v in self.as_dict().items()}
-
 
 def _resolve(which: Iterable[str] | str | None) -> list[str]:
     if which is None:

@@ -104,7 +104,7 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     e_star : float, optional
         Composite modulus E* (Pa).
     interaction : str or InteractionLaw
-        The adhesion law's name (:func:`surfmet.mechanics.adhesion_laws.interactions`,
+        The adhesion law's name (:func:`contact.adhesion.laws.law_names`,
         built by :func:`interaction_law`), or a law itself (without ``work`` and
         ``range_``).
     grid, size : optional

@@ -11,33 +11,13 @@ from surfmet.errors import SurfmetInputError
 if TYPE_CHECKING:
     from surfmet.mechanics._types import AdhesionLaw
 
-__all__ = ["INTERACTION", "interaction_law", "interaction_name", "interactions"]
+__all__ = ["INTERACTION", "interaction_law", "interaction_name"]
 
 #: The adhesion law of every command and facade unless told otherwise: the one with a
 #: closed form to check it by (Maugis 1992: the sphere's pull-off, tests/maugis_reference.py)
 #: and the one the coarse-grid threshold is measured on
 #: (:data:`contact.zone_resolution.MIN_ZONE_PIXELS`).
 INTERACTION = "dugdale"
-
-
-def interactions() -> tuple[str, ...]:
-    """The names of the registered laws (:func:`contact.adhesion.laws.law_names`), the
-    ``--interaction`` choices of every command.
-
-    Returns
-    -------
-    tuple of str
-        The names, in the order of registration.
-
-    Examples
-    --------
-    >>> from surfmet.mechanics.adhesion_laws import interactions
-    >>> interactions()[:2]
-    ('dugdale', 'exponential')
-    """
-    from contact.adhesion.laws import law_names
-
-    return law_names()
 
 
 def interaction_law(interaction: Any, work: float | None = None, range_: float | None = None,
@@ -50,7 +30,7 @@ def interaction_law(interaction: Any, work: float | None = None, range_: float |
     Parameters
     ----------
     interaction : str or InteractionLaw
-        The law's name (:func:`interactions`), or a law.
+        The law's name (:func:`contact.adhesion.laws.law_names`), or a law.
     work : float, optional
         Work of adhesion (J/m²).
     range_ : float, optional
