@@ -356,5 +356,6 @@ def all_scales(scans: list[Any], *, tip_radius: float | None, per_decade: int,
             else scan_pair(materials, e_star=e_star, hardness=hardness))
     analysis = analyze_scales(scans, tip_radius=tip_radius, per_decade=per_decade)
     s = all_scales_spectrum(analysis)
-    curve = None if pressures is None else persson_all_scales(s, pressures, pair.e_star)
+    curve = (None if pressures is None or pair is None
+             else persson_all_scales(s, pressures, pair.e_star))
     return AllScales(analysis, s, pair, curve)

@@ -44,6 +44,7 @@ from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
 
 if TYPE_CHECKING:
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
+    from surfmet.mechanics.scan_preparation import FlatPreparation
 
 #: Values that change with the scan's lateral resolution (pixel size / short cut-off).
 RESOLUTION_DEPENDENT = ("slope_rms", "curvature_rms", "nayak_alpha", "summit_density",
@@ -425,7 +426,7 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
 
 
 def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None
-                  ) -> tuple[Topography, bool, str, dict[str, Any]]:
+                  ) -> tuple[Topography, bool, str, FlatPreparation]:
     """The shared scan preparation for a spectrum or a flat contact: spikes removed (by
     default) and non-measured points filled as every contact command does
     (:func:`surfmet.mechanics.scan_preparation.prepare_flat`), then levelled
@@ -467,7 +468,7 @@ def prepared_scan(topo: ScanSource, *, periodic: bool | None = None, spikes: Spi
 
 def scan_spectrum(topo: ScanSource, *, periodic: bool | None = None, spikes: Spikes | None = None,
                   materials: Materials | None = None, hardness: float | None = None
-                  ) -> tuple[Spectrum, str, dict[str, Any]]:
+                  ) -> tuple[Spectrum, str, FlatPreparation]:
     """The spectrum of one scan exactly as ``surfmet spectrum FILE`` gives it: the shared
     preparation (:func:`prepared_scan`) on the scan as read, then :func:`spectrum`.
 
