@@ -61,7 +61,7 @@ class SolveOptions:
         callers that enlarge the domain themselves pass "ignore".
     kernel : {"love", "spectral"}
         The half-space operator (:func:`contact.halfspace.convolution.convolution`): Love's
-        uniform pressure on each cell (every domain), or the spectral 2/|q| of Tamaas and
+        uniform pressure on each cell (every domain), or the spectral ``2 / |q|`` of Tamaas and
         ContactMechanics (periodic only). ``result.extra["kernel"]`` says which was used,
         and a spectral solve's method says so.
     stats : SolverStats, optional
