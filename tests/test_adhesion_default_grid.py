@@ -46,6 +46,31 @@ def test_default_grid_gives_the_zone_two_pixels(lam):
     assert choice.grid % 16 == 0 and "2 pixels" in choice.why
 
 
+def test_a_default_grid_beyond_the_measured_ones_says_its_cost_and_the_halfs_excess():
+    """Lambda 10: the 1952^2 default (about an hour of CPU) is beyond the largest default
+    run measured (496^2, 4.5 min); Richardson extrapolation does not replace it
+    (benchmarks/adhesion_richardson.py), so the choice says what half the grid would be off
+    by: there the zone spans 1 pixel (closed forms here) and the measured excess is +2.6 %
+    (lambda 5) to +4.6 % (lambda 3) near 1 pixel, the envelope's about +5.8 %."""
+    from contact.adhesion.default_grid import resolving_grid
+
+    a0 = (4.5 * math.pi * W * R * R / E_STAR) ** (1 / 3)
+
+    def choose(lam):
+        zone = math.pi * E_STAR * _h0(lam) ** 2 / (4 * W)
+        return resolving_grid(4 * max(a0, math.sqrt(2 * R * _h0(lam))), zone, steps=40)
+
+    choice = choose(10.0)
+    assert choice.grid == 1952 and not choice.capped
+    half = choice.grid // 2 + (-(choice.grid // 2)) % 16
+    assert 0.95 < _zone_pixels(10.0, half) < 1.1
+    assert f"--grid {half} (the zone 1.0 pixels)" in choice.why
+    assert "496 cells, 4.5 min of CPU" in choice.why
+    excess = float(choice.why.split("about +")[1].split(" %")[0])
+    assert 2.6 <= excess <= 6.0
+    assert "beyond" not in choose(5.0).why
+
+
 def test_where_memory_caps_the_grid_it_says_by_how_much():
     from contact.adhesion.default_grid import resolving_grid
     from contact.adhesion.memory import estimate_adhesion_bytes

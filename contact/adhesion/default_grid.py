@@ -11,7 +11,10 @@ grid cannot serve every lambda: the default is the grid that gives the zone
 :data:`GRID_MULTIPLE` (fast FFT lengths), and at most the largest grid that fits in
 memory (:func:`contact.adhesion.memory.largest_adhesion_grid`); where memory caps it, the
 choice says so and by how much the pull-off is then off
-(:func:`contact.zone_resolution.pull_off_excess`, measured).
+(:func:`contact.zone_resolution.pull_off_excess`, measured). A grid beyond the largest
+default run measured (:data:`LARGEST_MEASURED`) is still chosen (extrapolation over
+coarser grids does not replace it: benchmarks/adhesion_richardson.py), and its reason
+says so and what half of it would be off by.
 """
 
 from __future__ import annotations
@@ -27,6 +30,12 @@ from contact.zone_resolution import min_zone_pixels, pull_off_excess
 LEAST_GRID = 128
 #: Default grids are multiples of this (FFT lengths with small factors).
 GRID_MULTIPLE = 16
+#: The largest default grid whose run was measured, and its CPU time (s): lambda 5 on 496^2
+#: in 4.5 min on 2 shared cores (tests/test_adhesion_default_grid.py, +0.94 % from
+#: Maugis). Beyond it the choice says so and what half the grid would cost in accuracy:
+#: extrapolating from coarser grids does not replace it (benchmarks/adhesion_richardson.py:
+#: Richardson pairs from grids below 1.5 zone pixels come out 2 to 22 % low).
+LARGEST_MEASURED = (496, 270.0)
 
 
 @dataclass(frozen=True)
@@ -81,7 +90,7 @@ def resolving_grid(size: float, zone: float, *, steps: int, smoothed: bool = Tru
     if largest is None or wanted <= largest or largest < LEAST_GRID:
         # below the least grid the memory guard refuses with its own message
         return GridChoice(wanted, wanted, f"default: the cohesive zone {least:g} pixels wide "
-                          f"or more (at least {LEAST_GRID} cells)")
+                          f"or more (at least {LEAST_GRID} cells){_cost(wanted, size, zone)}")
     grid = largest - largest % GRID_MULTIPLE
     pixels = zone * grid / size
     excess = pull_off_excess(pixels) if smoothed else None
@@ -92,3 +101,21 @@ def resolving_grid(size: float, zone: float, *, steps: int, smoothed: bool = Tru
                       f"default, capped by memory: {grid} cells (the cohesive zone "
                       f"{pixels:.2g} pixels wide) where {wanted} would give it {least:g}; "
                       f"{off}", excess)
+
+
+def _cost(grid: int, size: float, zone: float) -> str:
+    """What a default ``grid`` beyond :data:`LARGEST_MEASURED` costs and what half of it
+    would be off by (the measured :func:`contact.zone_resolution.pull_off_excess`), in
+    words; empty up to it."""
+    top, seconds = LARGEST_MEASURED
+    if grid <= top:
+        return ""
+    half = GRID_MULTIPLE * math.ceil(grid / 2 / GRID_MULTIPLE)
+    pixels = zone * half / size
+    excess = pull_off_excess(pixels)
+    off = (f"about +{excess:.2g} % too large" if excess is not None else
+           "too large by more than measured")
+    return (f"; {grid} cells is beyond the largest default run measured ({top} cells, "
+            f"{seconds / 60:.2g} min of CPU on 2 cores; the time grows faster than the "
+            f"cells), and --grid {half} (the zone {pixels:.1f} pixels) would give the "
+            f"pull-off {off} (measured convergence, docs/adhesion.md)")
