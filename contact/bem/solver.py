@@ -174,8 +174,9 @@ def solve_normal(
             precision=precision, nested=True, precondition=precondition, workers=workers,
             strict=False, edge="ignore", stats=stats,
         )
-        p_init = (np.clip(prolong(np.asarray(coarse.pressure)), 0.0, cap)
-                  if coarse.load > 0 else None)
+        # C-ordered, so that the iteration takes it over without a copy
+        p_init = (np.clip(np.ascontiguousarray(prolong(np.asarray(coarse.pressure))), 0.0,
+                          cap) if coarse.load > 0 else None)
     else:
         p_init = None
 

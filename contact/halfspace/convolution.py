@@ -39,8 +39,15 @@ from contact.halfspace.influence import (
     free_kernel_spectrum,
     periodic_kernel_real,
     periodic_kernel_spectrum,
+    periodic_love_spectrum,
 )
-from contact.halfspace.padding import forward, inverse, padded_shape, real_types
+from contact.halfspace.padding import (
+    convolve_padded,
+    forward,
+    inverse,
+    padded_shape,
+    real_types,
+)
 
 
 class Convolution:
@@ -78,8 +85,10 @@ class Convolution:
                                                     self.dy) if self.ahead else
                            free_kernel_spectrum(self.ny, self.nx, self.dx, self.dy))
             self.real = free_kernel_quadrant(self.ny, self.nx, self.dx, self.dy)
-        self.spec32 = self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
-                                         else np.float32)
+        # the float32 copy serves the unpadded transform only: the padded one multiplies
+        # its float32 blocks by the float64 spectrum (8 bytes a cell less to keep)
+        self.spec32 = (self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
+                                          else np.float32) if periodic else None)
         # displacement of a cell per unit pressure on itself (the kernel at offset 0)
         self.self_influence = float(self.real[0, 0])
         self._stiff: dict[bool, np.ndarray] = {}
@@ -91,11 +100,13 @@ class Convolution:
 
         Fresh arrays of this size come from the kernel as untouched pages: every
         convolution would page-fault its buffer in again (a third of the wall time of a
-        4096^2 solve went to the system). One buffer, sized for the complex128 padded
-        grid and viewed as complex64 for the float32 transforms, is kept per thread while
-        a solve runs (:meth:`release` drops it): no more memory than one transient.
+        4096^2 solve went to the system). One buffer, sized for the complex128 spectrum
+        of the grid's own rows (the padded rows are transformed by blocks, see
+        :func:`contact.halfspace.padding.convolve_padded`) and viewed as complex64 for the
+        float32 transforms, is kept per thread while a solve runs (:meth:`release` drops
+        it): no more memory than one transient.
         """
-        nbytes = self.shape[0] * (self.shape[1] // 2 + 1) * 16
+        nbytes = self.ny * (self.shape[1] // 2 + 1) * 16
         raw = getattr(self._work, "raw", None)
         if raw is None or raw.size < nbytes:
             raw = self._work.raw = np.empty(nbytes, dtype=np.uint8)
@@ -108,10 +119,13 @@ class Convolution:
     def stiffness(self, single: bool) -> np.ndarray:
         """1 / K^ of the periodic kernel on this (unpadded) grid, 0 at q = 0."""
         if single not in self._stiff:
-            spec = periodic_kernel_spectrum(self.ny, self.nx, self.dx, self.dy, 2)
-            with np.errstate(divide="ignore"):
-                stiff = np.where(spec > 0, 1.0 / spec, 0.0)
-            self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
+            # the alias sum itself is not kept (the lru cache of periodic_kernel_spectrum
+            # would hold it beside the stiffness: 4 bytes a cell)
+            stiff = periodic_love_spectrum(self.ny, self.nx, self.dx, self.dy, 2)
+            positive = stiff > 0
+            np.divide(1.0, stiff, out=stiff, where=positive)
+            stiff[~positive] = 0.0
+            self._stiff[single] = stiff.astype(np.float32) if single else stiff
         return self._stiff[single]
 
     def _cyclic(self, x: np.ndarray, rows: tuple[int, int], multiplier: np.ndarray,
@@ -135,11 +149,8 @@ class Convolution:
         real_type, complex_type = real_types(single)
         if hi <= lo:
             return np.zeros((self.ny, keep), dtype=real_type)
-        py, px = self.shape
-        buf = forward(x, self.shape, rows, single, workers,
-                      out=self._buffer(py, px // 2 + 1, complex_type))
-        buf *= self.spec32 if single else self.spec64
-        return np.ascontiguousarray(inverse(buf, self.ny, px, keep, workers))
+        work = self._buffer(self.ny, self.shape[1] // 2 + 1, complex_type)
+        return convolve_padded(x, self.spec64, self.shape, rows, keep, work, workers)
 
     def precondition(self, x: np.ndarray, rows: tuple[int, int], single: bool = False,
                      workers: int = -1) -> np.ndarray:

@@ -93,3 +93,60 @@ def inverse(spec: np.ndarray, ny: int, px: int, keep: int, workers: int = -1) ->
     """
     b = sfft.ifft(spec, axis=-2, overwrite_x=True, workers=workers)[..., :ny, :]
     return sfft.irfft(b, n=px, axis=-1, overwrite_x=True, workers=workers)[..., :keep]
+
+
+#: Columns (forward x rows) transformed together in :func:`convolve_padded`: enough for
+#: the FFT's threads and SIMD lanes, few enough that a block's padded copy stays small.
+BLOCK = 32
+
+
+def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
+                    rows: tuple[int, int], keep: int, work: np.ndarray,
+                    workers: int = -1) -> np.ndarray:
+    """The first ``keep`` columns of the cyclic convolution of x (ny, nx) zero-padded to
+    ``shape``, by blocks: the (ny, nx) grid's own rows and columns are all that is kept.
+
+    ``spectrum`` is the kernel's (py, px//2 + 1) spectrum (real or complex, float64: a
+    float32 transform multiplies in float64 and rounds once), or only its rows
+    0 .. py/2 for a kernel even along y (row py - k is row k); ``work`` a complex
+    (ny, px//2 + 1) array in the transform's precision (overwritten). x is zero outside
+    rows ``rows = (lo, hi)``. The padded grid is never held whole:
+
+    - forward along x, the rows [lo, hi) (zero-padded to px), into ``work``;
+    - along y, a block of columns at a time: the block's rows [lo, hi) transformed to the
+      py points, multiplied, transformed back, and the ny rows kept written back in place.
+      The block is transformed from row 0, not row lo: the convolution shifts with its
+      input, so output row r is the block's row (r - lo) mod py (exact, because every
+      offset a kept row needs, -(ny-1) .. ny-1, has its own cell of the cyclic grid);
+    - inverse along x, a block of rows at a time, into the (ny, keep) result.
+
+    Compared with :func:`forward` and :func:`inverse` on the whole padded grid this halves
+    the work array, and no strided copy of the padded result is made.
+    """
+    ny = x.shape[0]
+    py, px = shape
+    lo, hi = rows
+    real_type = np.float32 if work.dtype == np.complex64 else np.float64
+    for r0 in range(lo, hi, BLOCK):
+        r1 = min(r0 + BLOCK, hi)
+        work[r0:r1] = sfft.rfft(np.asarray(x[r0:r1], dtype=real_type), n=px, axis=-1,
+                                workers=workers)
+    ncol = work.shape[1]
+    for c0 in range(0, ncol, BLOCK):
+        c1 = min(c0 + BLOCK, ncol)
+        block = sfft.fft(work[lo:hi, c0:c1], n=py, axis=0, workers=workers)
+        if spectrum.shape[0] == py:
+            np.multiply(block, spectrum[:, c0:c1], out=block)
+        else:  # the even half: rows py/2+1 .. py-1 are rows py/2-1 .. 1
+            half = py // 2
+            np.multiply(block[:half + 1], spectrum[:, c0:c1], out=block[:half + 1])
+            np.multiply(block[half + 1:], spectrum[half - 1:0:-1, c0:c1],
+                        out=block[half + 1:])
+        block = sfft.ifft(block, axis=0, overwrite_x=True, workers=workers)
+        work[:lo, c0:c1] = block[py - lo:]
+        work[lo:, c0:c1] = block[:ny - lo]
+    out = np.empty((ny, keep), dtype=real_type)
+    for r0 in range(0, ny, BLOCK):
+        r1 = min(r0 + BLOCK, ny)
+        out[r0:r1] = sfft.irfft(work[r0:r1], n=px, axis=-1, workers=workers)[:, :keep]
+    return out
