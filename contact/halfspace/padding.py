@@ -106,10 +106,10 @@ def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
     """The first ``keep`` columns of the cyclic convolution of x (ny, nx) zero-padded to
     ``shape``, by blocks: the (ny, nx) grid's own rows and columns are all that is kept.
 
-    ``spectrum`` is the kernel's (py, px//2 + 1) spectrum (real or complex, float64: a
-    float32 transform multiplies in float64 and rounds once), or only its rows
-    0 .. py/2 for a kernel even along y (row py - k is row k); ``work`` a complex
-    (ny, px//2 + 1) array in the transform's precision (overwritten). x is zero outside
+    ``spectrum`` is the kernel's (py, px//2 + 1) spectrum (real or complex, float64; a
+    float32 transform rounds each block of it to float32, as a float32 copy would), or
+    only its rows 0 .. py/2 for a kernel even along y (row py - k is row k); ``work`` a
+    complex (ny, px//2 + 1) array in the transform's precision (overwritten). x is zero outside
     rows ``rows = (lo, hi)``. The padded grid is never held whole:
 
     - forward along x, the rows [lo, hi) (zero-padded to px), into ``work``;
@@ -135,13 +135,18 @@ def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
     for c0 in range(0, ncol, BLOCK):
         c1 = min(c0 + BLOCK, ncol)
         block = sfft.fft(work[lo:hi, c0:c1], n=py, axis=0, workers=workers)
+        kernel = spectrum[:, c0:c1]
+        if block.dtype == np.complex64:
+            # rounded to float32 by block: multiplying a complex64 block by float64 costs
+            # twice as much (numpy's mixed-type loop), a float32 copy kept whole 4 bytes a
+            # cell
+            kernel = kernel.astype(np.complex64 if np.iscomplexobj(kernel) else np.float32)
         if spectrum.shape[0] == py:
-            np.multiply(block, spectrum[:, c0:c1], out=block)
+            np.multiply(block, kernel, out=block)
         else:  # the even half: rows py/2+1 .. py-1 are rows py/2-1 .. 1
             half = py // 2
-            np.multiply(block[:half + 1], spectrum[:, c0:c1], out=block[:half + 1])
-            np.multiply(block[half + 1:], spectrum[half - 1:0:-1, c0:c1],
-                        out=block[half + 1:])
+            np.multiply(block[:half + 1], kernel, out=block[:half + 1])
+            np.multiply(block[half + 1:], kernel[half - 1:0:-1], out=block[half + 1:])
         block = sfft.ifft(block, axis=0, overwrite_x=True, workers=workers)
         work[:lo, c0:c1] = block[py - lo:]
         work[lo:, c0:c1] = block[:ny - lo]
