@@ -77,8 +77,8 @@ def run_command(n: int) -> dict:
     wall = time.perf_counter() - t0
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", proc.stderr)
     lines = proc.stdout.splitlines()
-    pick = {key: next((ln.split(None, 1)[1].strip() for ln in lines if ln.startswith(key)),
-                      "") for key in ("solver", "max pressure", "contact radius")}
+    pick = {key: next((ln[len(key):].strip() for ln in lines if ln.startswith(key)), "")
+            for key in ("solver", "max pressure", "contact radius")}
     peak = int(rss.group(1)) * 1024 if rss else 0
     return {"n": n, "rc": proc.returncode, "wall_s": wall, "peak_rss_bytes": peak,
             "bytes_per_cell": peak / n ** 2, **pick}
