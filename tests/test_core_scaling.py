@@ -110,3 +110,15 @@ def test_a_nested_free_solve_peaks_below_120_bytes_a_cell():
         tracemalloc.stop()
     assert res.converged
     assert peak / n ** 2 < 120
+
+
+def test_separable_bilinear_sampling_reproduces_a_bilinear_map_exactly():
+    from contact.sampling import bilinear
+
+    rng = np.random.default_rng(2)
+    yy, xx = np.mgrid[0:40, 0:55].astype(float)
+    z = 0.3 + 0.02 * xx - 0.05 * yy + 0.001 * xx * yy  # bilinear: interpolation is exact
+    rows = np.concatenate(([0.0, 39.0], rng.random(30) * 39))
+    cols = np.concatenate(([0.0, 54.0], rng.random(25) * 54))
+    want = 0.3 + 0.02 * cols[None, :] - 0.05 * rows[:, None] + 0.001 * cols * rows[:, None]
+    assert np.allclose(bilinear(z, rows, cols), want, rtol=0, atol=1e-13)
