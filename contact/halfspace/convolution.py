@@ -41,13 +41,7 @@ from contact.halfspace.influence import (
     periodic_kernel_spectrum,
     periodic_love_spectrum,
 )
-from contact.halfspace.padding import (
-    convolve_padded,
-    forward,
-    inverse,
-    padded_shape,
-    real_types,
-)
+from contact.halfspace.padding import convolve_padded, padded_shape, real_types
 
 
 class Convolution:
@@ -136,10 +130,10 @@ class Convolution:
         real_type, complex_type = real_types(single)
         if hi <= lo:
             return np.zeros((ny, nx), dtype=real_type)
-        buf = forward(x, (ny, nx), rows, single, workers,
-                      out=self._buffer(ny, nx // 2 + 1, complex_type))
-        buf *= multiplier
-        return inverse(buf, ny, nx, nx, workers)
+        # the same blocked transform as the padded one, with nothing padded: the cyclic
+        # convolution shifts with its input exactly
+        return convolve_padded(x, multiplier, (ny, nx), rows, nx,
+                               self._buffer(ny, nx // 2 + 1, complex_type), workers)
 
     def _padded(self, x: np.ndarray, rows: tuple[int, int], single: bool,
                 workers: int) -> np.ndarray:

@@ -172,7 +172,7 @@ def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
         c1 = min(c0 + BLOCK, ncol)
         block = sfft.fft(work[lo:hi, c0:c1], n=py, axis=0, workers=1)
         kernel = spectrum[:, c0:c1]
-        if block.dtype == np.complex64:
+        if block.dtype == np.complex64 and kernel.dtype in (np.float64, np.complex128):
             # rounded to float32 by block: multiplying a complex64 block by float64 costs
             # twice as much (numpy's mixed-type loop), a float32 copy kept whole 4 bytes a
             # cell
