@@ -15,8 +15,11 @@ What keeps a convolution cheap inside an iterative solver:
 
 - pruned transforms: only the rows that carry pressure are transformed forward (the caller
   says which), and the padded half of the result is never transformed back;
-- float32 or float64 on request (the kernel spectrum is kept in both precisions);
-- one complex work buffer per thread, reused between calls during a solve;
+- float32 or float64 on request (the periodic spectrum is kept in both precisions, the
+  free one in float64, rounded to float32 block by block);
+- by blocks (:func:`contact.halfspace.padding.convolve_padded`), on the FFT's threads: the
+  padded grid is never held whole, and one complex work buffer of the grid's own rows
+  per thread is reused between calls during a solve;
 - :func:`convolution` caches the operator (and so its spectra and FFT plans) by grid,
   pitch and periodicity.
 
@@ -45,7 +48,7 @@ from contact.halfspace.padding import convolve_padded, padded_shape, real_types
 
 
 class Convolution:
-    """u = K * p for one grid (E* = 1), with cached spectra in float64 and float32.
+    """u = K * p for one grid (E* = 1), with its spectrum cached.
 
     Parameters
     ----------
@@ -79,8 +82,8 @@ class Convolution:
                                                     self.dy) if self.ahead else
                            free_kernel_spectrum(self.ny, self.nx, self.dx, self.dy))
             self.real = free_kernel_quadrant(self.ny, self.nx, self.dx, self.dy)
-        # the float32 copy serves the unpadded transform only: the padded one multiplies
-        # its float32 blocks by the float64 spectrum (8 bytes a cell less to keep)
+        # the float32 copy serves the periodic transform only: the padded one rounds the
+        # float64 spectrum block by block (4 bytes a cell less to keep)
         self.spec32 = (self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
                                           else np.float32) if periodic else None)
         # displacement of a cell per unit pressure on itself (the kernel at offset 0)
