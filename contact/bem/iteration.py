@@ -30,10 +30,15 @@ from contact.bem.steps import (
 
 def _first_pressure(problem: Problem, initial: np.ndarray | None,
                     approach: float) -> np.ndarray:
-    """The first pressure before the constraints are imposed (flattened, a new array)."""
+    """The first pressure before the constraints are imposed (flattened).
+
+    A given ``initial`` is taken over, not copied, where it is already a C-contiguous
+    float64 array (the solver's callers hand over a fresh one, clipped; a copy would keep
+    a second pressure of the grid's size alive through the whole solve).
+    """
     n = problem.size
     if initial is not None:
-        return np.ascontiguousarray(initial, dtype=float).ravel().copy()
+        return np.ascontiguousarray(initial, dtype=float).ravel()
     if problem.load_control:
         return np.full(n, problem.target / n)
     penetration = np.maximum(approach - problem.gap, 0.0)

@@ -7,25 +7,25 @@ called through :class:`contact.setups.ball_on_plate.SphereContact`):
 =========================================================  ==============
 array (:class:`contact.bem.state.Workspace`)               bytes per cell
 =========================================================  ==============
-gap h, E* h, p, u, d, z, t, the dense correction buffer    8 x 8 = 64
-float32 search direction (Workspace.direction_fft)         4
-correction index and value (int64 + float64)               16
-kernel spectra on the padded 2n x (n + 1) grid (f64, f32)  16 + 8
-real kernel quadrant, preconditioner stiffness (f32)       8 + 2
-padded complex128 buffer of an exact convolution and its
-rfft / irfft temporaries                                   32 + 16 + 16
-set-up: sphere gap, resampling coordinates and samples     ~ 40 (freed)
+gap h, E* h, p, u, d, t                                    6 x 8 = 48
+float32 search direction (Workspace.direction_fft, also
+where many corrections are scattered)                      4
+correction index and value (int32 + float64; mostly never
+touched, so not resident)                                  12
+kernel: even half of the padded spectrum (f64), quadrant   8 + 8
+preconditioner stiffness (f32)                             2
+complex work array of the grid's own rows (complex128),
+the convolution's result                                   16 + 8
 result fields (pressure, gap, displacement, plastic)       32 per result
-nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the above
+nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the kernels
 =========================================================  ==============
 
-which sums to roughly 200 bytes per cell for one elastic solve, the figure
-:data:`BYTES_PER_CELL` holds. Measured (``benchmarks/native.py``; peak resident set size,
-RSS, of the whole ``surfmet contact`` command on the bundled pair, minus the 0.23 GB the
-interpreter and the scans hold at small grids): 203 B/cell between 1024^2 and 2048^2,
-188-196 B/cell at 4096^2 and 8192^2 (13.2 GB peak RSS at 8192^2); a 1024^2 solve alone
-adds 232 MB to the RSS against the 274 MB estimated. The estimate is within 1.5x of the
-measured peak (a test checks it at 1024^2).
+(issue 37: the padded grid is transformed by blocks and never held whole, the spectrum's
+even half only, no separate dense or preconditioned work array). Measured: the whole
+``surfmet contact`` command on the bundled plate at 4096^2 peaks at 2.09 GB resident
+(125 B/cell, the interpreter and the scans included; 207 B/cell before issue 37), and a
+1024^2 rough solve alone adds 126 MB to the resident set size; :data:`BYTES_PER_CELL`
+holds 110. The estimate is within 1.5x of the measured peak (a test checks it at 1024^2).
 
 An elastic-plastic solve adds p_old, u_old, the projected step and its candidates
 (4 x 8 B) and doubles the correction buffers (+16 B):
@@ -46,7 +46,7 @@ from contact.errors import ContactMemoryError
 from contact.sysmem import SAFETY, available_bytes
 
 #: Peak bytes per grid cell of one elastic solve (measured; see the module notes).
-BYTES_PER_CELL = 200
+BYTES_PER_CELL = 110
 #: Extra peak bytes per cell of an elastic-plastic solve.
 PLASTIC_EXTRA_PER_CELL = 48
 #: Bytes per cell of each further result kept (four float64 fields).

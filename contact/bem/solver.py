@@ -126,8 +126,9 @@ def solve_normal(
                               strict=False, edge="ignore", stats=stats)
         first = solve_normal(coarse, e_star=e_star, load=load, approach=approach,
                              bounds=bounds, options=start_opts)
-        p_init = (np.clip(prolong(np.asarray(first.pressure)), 0.0, cap)
-                  if first.load > 0 else None)
+        # C-ordered, so that the iteration takes it over without a copy
+        p_init = (np.clip(np.ascontiguousarray(prolong(np.asarray(first.pressure))), 0.0,
+                          cap) if first.load > 0 else None)
     else:
         p_init = None
 

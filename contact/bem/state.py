@@ -115,12 +115,11 @@ class Workspace:
     """The work arrays of one solve (see :func:`workspace`)."""
 
     gap_error: np.ndarray  # d = u + h - delta, the gap residual
-    preconditioned: np.ndarray  # z, the preconditioned residual on the free points
     direction: np.ndarray  # t, the conjugate search direction
-    direction_fft: np.ndarray  # t in the precision of the FFT (float32 when mixed)
+    direction_fft: np.ndarray  # t in the precision of the FFT (float32 when mixed); also
+    # where many corrections are scattered for one FFT (it is rewritten whole every step)
     correction_index: np.ndarray  # cells the projection changed after a linear step ...
     correction_value: np.ndarray  # ... and by how much
-    dense: np.ndarray  # (ny, nx) zeros, the corrections scattered for one FFT
     kernel_real: np.ndarray  # the real-space kernel, for direct summation
     sparse_limit: int  # up to this many corrections are summed directly
     projected_step: np.ndarray | None  # elastic-plastic only: P(p - alpha d) - p
@@ -137,12 +136,11 @@ def workspace(problem: Problem) -> Workspace:
     n_corrections = 2 * n if plastic else n
     return Workspace(
         gap_error=np.empty(n),
-        preconditioned=np.zeros(n),
         direction=np.zeros(n),
         direction_fft=np.zeros(n, dtype=np.float32 if problem.single else np.float64),
-        correction_index=np.empty(n_corrections, dtype=np.int64),
+        # int32 cell numbers where they fit (4 bytes a cell less)
+        correction_index=np.empty(n_corrections, dtype=np.int32 if n < 2**31 else np.int64),
         correction_value=np.empty(n_corrections),
-        dense=np.zeros((problem.ny, problem.nx)),
         kernel_real=np.ascontiguousarray(problem.operator.real),
         sparse_limit=max(4, int(SPARSE_FACTOR * math.log2(4 * n))),
         projected_step=np.empty(n) if plastic else None,

@@ -17,8 +17,11 @@ What keeps a convolution cheap inside an iterative solver:
 
 - pruned transforms: only the rows that carry pressure are transformed forward (the caller
   says which), and the padded half of the result is never transformed back;
-- float32 or float64 on request (the kernel spectrum is kept in both precisions);
-- one complex work buffer per thread, reused between calls during a solve;
+- float32 or float64 on request (the periodic spectrum is kept in both precisions, the
+  free one in float64, rounded to float32 block by block);
+- by blocks (:func:`contact.halfspace.padding.convolve_padded`), on the FFT's threads: the
+  padded grid is never held whole, and one complex work buffer of the grid's own rows
+  per thread is reused between calls during a solve;
 - :func:`convolution` caches the operator (and so its spectra and FFT plans) by grid,
   pitch and periodicity.
 
@@ -42,13 +45,14 @@ from contact.halfspace.influence import (
     free_kernel_spectrum,
     periodic_kernel_real,
     periodic_kernel_spectrum,
+    periodic_love_spectrum,
 )
-from contact.halfspace.padding import forward, inverse, padded_shape, real_types
+from contact.halfspace.padding import convolve_padded, forward, inverse, padded_shape, real_types
 from contact.halfspace.spectral import spectral_kernel_spectrum, spectral_wavenumbers
 
 
 class Convolution:
-    """u = K * p for one grid (E* = 1), with cached spectra in float64 and float32.
+    """u = K * p for one grid (E* = 1), with its spectrum cached.
 
     Parameters
     ----------
@@ -91,8 +95,10 @@ class Convolution:
                                                     self.dy) if self.ahead else
                            free_kernel_spectrum(self.ny, self.nx, self.dx, self.dy))
             self.real = free_kernel_quadrant(self.ny, self.nx, self.dx, self.dy)
-        self.spec32 = self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
-                                         else np.float32)
+        # the float32 copy serves the periodic transform only: the padded one rounds the
+        # float64 spectrum block by block (4 bytes a cell less to keep)
+        self.spec32 = (self.spec64.astype(np.complex64 if np.iscomplexobj(self.spec64)
+                                          else np.float32) if periodic else None)
         # displacement of a cell per unit pressure on itself (the kernel at offset 0)
         self.self_influence = float(self.real[0, 0])
         self._stiff: dict[bool, np.ndarray] = {}
@@ -104,11 +110,13 @@ class Convolution:
 
         Fresh arrays of this size come from the kernel as untouched pages: every
         convolution would page-fault its buffer in again (a third of the wall time of a
-        4096^2 solve went to the system). One buffer, sized for the complex128 padded
-        grid and viewed as complex64 for the float32 transforms, is kept per thread while
-        a solve runs (:meth:`release` drops it): no more memory than one transient.
+        4096^2 solve went to the system). One buffer, sized for the complex128 spectrum
+        of the grid's own rows (the padded rows are transformed by blocks, see
+        :func:`contact.halfspace.padding.convolve_padded`) and viewed as complex64 for the
+        float32 transforms, is kept per thread while a solve runs (:meth:`release` drops
+        it): no more memory than one transient.
         """
-        nbytes = self.shape[0] * (self.shape[1] // 2 + 1) * 16
+        nbytes = self.ny * (self.shape[1] // 2 + 1) * 16
         raw = getattr(self._work, "raw", None)
         if raw is None or raw.size < nbytes:
             raw = self._work.raw = np.empty(nbytes, dtype=np.uint8)
@@ -121,10 +129,13 @@ class Convolution:
     def stiffness(self, single: bool) -> np.ndarray:
         """1 / K^ of the periodic kernel on this (unpadded) grid, 0 at q = 0."""
         if single not in self._stiff:
-            spec = periodic_kernel_spectrum(self.ny, self.nx, self.dx, self.dy, 2)
-            with np.errstate(divide="ignore"):
-                stiff = np.where(spec > 0, 1.0 / spec, 0.0)
-            self._stiff[single] = stiff.astype(np.float32 if single else np.float64)
+            # the alias sum itself is not kept (the lru cache of periodic_kernel_spectrum
+            # would hold it beside the stiffness: 4 bytes a cell)
+            stiff = periodic_love_spectrum(self.ny, self.nx, self.dx, self.dy, 2)
+            positive = stiff > 0
+            np.divide(1.0, stiff, out=stiff, where=positive)
+            stiff[~positive] = 0.0
+            self._stiff[single] = stiff.astype(np.float32) if single else stiff
         return self._stiff[single]
 
     def spectrum(self, x: np.ndarray, single: bool = False, workers: int = -1) -> np.ndarray:
@@ -164,10 +175,10 @@ class Convolution:
         real_type, complex_type = real_types(single)
         if hi <= lo:
             return np.zeros((ny, nx), dtype=real_type)
-        buf = forward(x, (ny, nx), rows, single, workers,
-                      out=self._buffer(ny, nx // 2 + 1, complex_type))
-        buf *= multiplier
-        return inverse(buf, ny, nx, nx, workers)
+        # the same blocked transform as the padded one, with nothing padded: the cyclic
+        # convolution shifts with its input exactly
+        return convolve_padded(x, multiplier, (ny, nx), rows, nx,
+                               self._buffer(ny, nx // 2 + 1, complex_type), workers)
 
     def _padded(self, x: np.ndarray, rows: tuple[int, int], single: bool,
                 workers: int) -> np.ndarray:
@@ -177,11 +188,8 @@ class Convolution:
         real_type, complex_type = real_types(single)
         if hi <= lo:
             return np.zeros((self.ny, keep), dtype=real_type)
-        py, px = self.shape
-        buf = forward(x, self.shape, rows, single, workers,
-                      out=self._buffer(py, px // 2 + 1, complex_type))
-        buf *= self.spec32 if single else self.spec64
-        return np.ascontiguousarray(inverse(buf, self.ny, px, keep, workers))
+        work = self._buffer(self.ny, self.shape[1] // 2 + 1, complex_type)
+        return convolve_padded(x, self.spec64, self.shape, rows, keep, work, workers)
 
     def precondition(self, x: np.ndarray, rows: tuple[int, int], single: bool = False,
                      workers: int = -1) -> np.ndarray:

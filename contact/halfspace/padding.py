@@ -26,6 +26,9 @@ Both run on stacked inputs (leading axes), in float64 or float32.
 
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor
+
 import numpy as np
 import scipy.fft as sfft
 
@@ -93,3 +96,102 @@ def inverse(spec: np.ndarray, ny: int, px: int, keep: int, workers: int = -1) ->
     """
     b = sfft.ifft(spec, axis=-2, overwrite_x=True, workers=workers)[..., :ny, :]
     return sfft.irfft(b, n=px, axis=-1, overwrite_x=True, workers=workers)[..., :keep]
+
+
+#: Columns (forward x rows) transformed together in :func:`convolve_padded`: few enough
+#: that a block's padded copy stays in cache.
+BLOCK = 32
+
+_POOL: dict[tuple[int, int], ThreadPoolExecutor] = {}
+
+
+def _threads(workers: int) -> int:
+    """The threads a ``workers`` argument asks for (-1: every core)."""
+    return max(1, os.cpu_count() or 1) if workers < 0 else max(1, int(workers))
+
+
+def _run_blocks(fun, starts: range, workers: int) -> None:
+    """fun(start) for every block start, spread over ``workers`` threads.
+
+    The blocks write disjoint parts of the arrays, and the FFT and numpy's copies and
+    products release the GIL: by block in threads, the copies and the multiply (a third of
+    a padded convolution's time in one thread) run in parallel too.
+    """
+    n = _threads(workers)
+    if n == 1 or len(starts) < 2:
+        for start in starts:
+            fun(start)
+        return
+    # by process: a forked child inherits the dict but not the threads (a batch run's
+    # workers), and an executor without its threads would never run a block
+    key = (os.getpid(), n)
+    pool = _POOL.get(key)
+    if pool is None:
+        pool = _POOL[key] = ThreadPoolExecutor(n, thread_name_prefix="surfmet-fft")
+    for _ in pool.map(fun, starts):
+        pass
+
+
+def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
+                    rows: tuple[int, int], keep: int, work: np.ndarray,
+                    workers: int = -1) -> np.ndarray:
+    """The first ``keep`` columns of the cyclic convolution of x (ny, nx) zero-padded to
+    ``shape``, by blocks: the (ny, nx) grid's own rows and columns are all that is kept.
+
+    ``spectrum`` is the kernel's (py, px//2 + 1) spectrum (real or complex, float64; a
+    float32 transform rounds each block of it to float32, as a float32 copy would), or
+    only its rows 0 .. py/2 for a kernel even along y (row py - k is row k); ``work`` a
+    complex (ny, px//2 + 1) array in the transform's precision (overwritten). x is zero
+    outside rows ``rows = (lo, hi)``. The padded grid is never held whole:
+
+    - forward along x, the rows [lo, hi) (zero-padded to px), into ``work``;
+    - along y, a block of columns at a time: the block's rows [lo, hi) transformed to the
+      py points, multiplied, transformed back, and the ny rows kept written back in place.
+      The block is transformed from row 0, not row lo: the convolution shifts with its
+      input, so output row r is the block's row (r - lo) mod py (exact, because every
+      offset a kept row needs, -(ny-1) .. ny-1, has its own cell of the cyclic grid);
+    - inverse along x, a block of rows at a time, into the (ny, keep) result.
+
+    The blocks run on ``workers`` threads. Compared with :func:`forward` and
+    :func:`inverse` on the whole padded grid this halves the work array, and no strided
+    copy of the padded result is made.
+    """
+    ny = x.shape[0]
+    py, px = shape
+    lo, hi = rows
+    real_type = np.float32 if work.dtype == np.complex64 else np.float64
+    ncol = work.shape[1]
+    out = np.empty((ny, keep), dtype=real_type)
+
+    def along_x(r0: int) -> None:
+        r1 = min(r0 + BLOCK, hi)
+        work[r0:r1] = sfft.rfft(np.asarray(x[r0:r1], dtype=real_type), n=px, axis=-1,
+                                workers=1)
+
+    def along_y(c0: int) -> None:
+        c1 = min(c0 + BLOCK, ncol)
+        block = sfft.fft(work[lo:hi, c0:c1], n=py, axis=0, workers=1)
+        kernel = spectrum[:, c0:c1]
+        if block.dtype == np.complex64 and kernel.dtype in (np.float64, np.complex128):
+            # rounded to float32 by block: multiplying a complex64 block by float64 costs
+            # twice as much (numpy's mixed-type loop), a float32 copy kept whole 4 bytes a
+            # cell
+            kernel = kernel.astype(np.complex64 if np.iscomplexobj(kernel) else np.float32)
+        if spectrum.shape[0] == py:
+            np.multiply(block, kernel, out=block)
+        else:  # the even half: rows py/2+1 .. py-1 are rows py/2-1 .. 1
+            half = py // 2
+            np.multiply(block[:half + 1], kernel, out=block[:half + 1])
+            np.multiply(block[half + 1:], kernel[half - 1:0:-1], out=block[half + 1:])
+        block = sfft.ifft(block, axis=0, overwrite_x=True, workers=1)
+        work[:lo, c0:c1] = block[py - lo:]
+        work[lo:, c0:c1] = block[:ny - lo]
+
+    def back_along_x(r0: int) -> None:
+        r1 = min(r0 + BLOCK, ny)
+        out[r0:r1] = sfft.irfft(work[r0:r1], n=px, axis=-1, workers=1)[:, :keep]
+
+    _run_blocks(along_x, range(lo, hi, BLOCK), workers)
+    _run_blocks(along_y, range(0, ncol, BLOCK), workers)
+    _run_blocks(back_along_x, range(0, ny, BLOCK), workers)
+    return out
