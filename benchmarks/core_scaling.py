@@ -105,18 +105,20 @@ def periodic_case(n: int) -> tuple[np.ndarray, float, float]:
 
 def periodic(sizes: list[int]) -> list[dict]:
     """Finest-grid iterations and solve time of the periodic case at each size."""
-    from contact.bem import solve_normal
+    from contact.bem import SolveOptions, solve_normal
     from contact.bem.state import SolverStats
+    from contact.grid import gap_grid
 
     rows = []
     for n in sizes:
         gap, pixel, load = periodic_case(n)
-        solve_normal(gap[:64, :64], pixel, e_star=1.0, load=load / (n / 64) ** 2,
-                     periodic=True, tol=1e-4)  # compiled kernels loaded before timing
+        solve_normal(gap_grid(gap[:64, :64], pixel, periodic=True), e_star=1.0,
+                     load=load / (n / 64) ** 2,
+                     options=SolveOptions(tol=1e-4))  # compiled kernels loaded before timing
         stats = SolverStats()
         t0 = time.perf_counter()
-        res = solve_normal(gap, pixel, e_star=1.0, load=load, periodic=True, tol=1e-8,
-                           stats=stats)
+        res = solve_normal(gap_grid(gap, pixel, periodic=True), e_star=1.0, load=load,
+                           options=SolveOptions(tol=1e-8, stats=stats))
         rows.append({"n": n, "seconds": time.perf_counter() - t0,
                      "iterations": res.iterations, "levels": [list(v) for v in stats.levels],
                      "area_fraction": float(np.mean(np.asarray(res.pressure) > 0))})

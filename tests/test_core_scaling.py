@@ -13,8 +13,9 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from contact.bem import solve_normal
+from contact.bem import SolveOptions, solve_normal
 from contact.geometry import sphere_gap
+from contact.grid import gap_grid
 from contact.halfspace import influence
 from contact.halfspace.convolution import Convolution, convolution
 from contact.halfspace.influence import love_coefficients
@@ -79,7 +80,8 @@ def test_periodic_self_affine_iterations_stay_low_and_the_answer_meets_the_conta
     # Polonsky & Keer's restart at every entering point: 39 and 68 iterations
     gap, dx, load = _self_affine(n)
     tol = 1e-8
-    res = solve_normal(gap, dx, e_star=1.0, load=load, periodic=True, tol=tol)
+    res = solve_normal(gap_grid(gap, dx, periodic=True), e_star=1.0, load=load,
+                       options=SolveOptions(tol=tol))
     assert res.iterations <= bound
     p = np.asarray(res.pressure)
     u = np.asarray(res.displacement)
@@ -97,14 +99,15 @@ def test_a_nested_free_solve_peaks_below_120_bytes_a_cell():
     n = 512
     dx = 2.5 * 137e-6 * 2 / n
     gap = sphere_gap(n, dx, 0.02)
-    solve_normal(gap[:128, :128], 4 * dx, e_star=58.6e9, load=1.0, edge="ignore")
+    solve_normal(gap_grid(gap[:128, :128], 4 * dx), e_star=58.6e9, load=1.0,
+                 options=SolveOptions(edge="ignore"))
     convolution.cache_clear()
     for cached in (influence.free_kernel_quadrant, influence.free_kernel_spectrum,
                    influence.periodic_kernel_spectrum):
         cached.cache_clear()
     tracemalloc.start()
     try:
-        res = solve_normal(gap, dx, e_star=58.6e9, load=10.0)
+        res = solve_normal(gap_grid(gap, dx), e_star=58.6e9, load=10.0)
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
