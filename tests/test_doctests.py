@@ -113,13 +113,13 @@ PENDING: frozenset[str] = frozenset({
     "rotor.GroupOffset", "rotor.HiddenEffects", "rotor.LaneTest", "rotor.LawOfMotionAnalysis",
     "rotor.MisreadRules", "rotor.ModelFit", "rotor.RotorVerdict", "rotor.Scenario",
     "rotor.Sensitivity", "rotor.SimulatedRun", "rotor.TestReport", "rotor.WindowedDifference",
-    "rotor.arm_bound", "rotor.check_adequacy", "rotor.crossing_times", "rotor.differences_table",
-    "rotor.draw_scenario", "rotor.false_alarm_floor", "rotor.fit_table", "rotor.frame_windows",
-    "rotor.group_of", "rotor.group_offset", "rotor.judge_table", "rotor.lane_calibration",
-    "rotor.lane_f", "rotor.launchwise_fit", "rotor.local_accelerations", "rotor.misread_rules",
-    "rotor.named_wave", "rotor.paper_parabola", "rotor.prepare_table", "rotor.sensitivity_table",
+    "rotor.arm_bound", "rotor.check_adequacy", "rotor.differences_table", "rotor.draw_scenario",
+    "rotor.false_alarm_floor", "rotor.fit_table", "rotor.frame_windows", "rotor.group_of",
+    "rotor.group_offset", "rotor.judge_table", "rotor.lane_calibration", "rotor.lane_f",
+    "rotor.launchwise_fit", "rotor.local_accelerations", "rotor.misread_rules", "rotor.named_wave",
+    "rotor.paper_parabola", "rotor.prepare_table", "rotor.sensitivity_table",
     "rotor.settling_experiment", "rotor.shared_track_f", "rotor.simulate_random_run",
-    "rotor.simulate_table", "rotor.track_acceleration", "rotor.verdict_calibration",
+    "rotor.simulate_table", "rotor.verdict_calibration",
 })
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
