@@ -126,6 +126,41 @@ class AdequacyCheck:
     nominal p-values; ``residual``: the periodogram's best wave. ``judged`` is False for a
     column of fewer than :data:`MIN_ROWS` rows (outside the calibration: ``p_value`` NaN,
     ``adequate`` True).
+
+    Attributes
+    ----------
+    model : str
+        The model checked.
+    statistic, p_value, p_floor : float
+        The combined statistic, its calibrated p-value and the smallest one the calibration
+        can give.
+    adequate, judged : bool
+        The verdict, and whether the column was long enough to judge.
+    runs_z, lag1, wave_share : float
+        The three statistics on the standardised residuals.
+    nominal : dict of str to float
+        Their nominal p-values (``runs``, ``lag1``, ``wave``).
+    residual : ResidualWave or None
+        The periodogram's best residual wave.
+    scan : WaveScan or None
+        The periodogram.
+
+    See Also
+    --------
+    check_adequacy : builds it.
+
+    Examples
+    --------
+    Clean constant-acceleration frames: the chosen model explains them.
+
+    >>> import numpy as np
+    >>> from rotor import analyse_test
+    >>> phi = np.arange(25) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> report = analyse_test("s1", np.round(1000 + 120 * t))
+    >>> check = report.adequacy
+    >>> print(check.model, check.judged, check.adequate, check.p_value > 0.5)
+    const True True True
     """
 
     model: str
@@ -346,7 +381,42 @@ def adequacy_p_value(statistic: float) -> tuple[float, float]:
 def check_adequacy(times: np.ndarray, angles: np.ndarray, fit: ModelFit, *,
                    step: float) -> AdequacyCheck:
     """Is ``fit`` adequate? The three order statistics on its standardised residuals, their
-    combination, its calibrated p-value and the best residual wave (module docstring)."""
+    combination, its calibrated p-value and the best residual wave (module docstring).
+
+    Parameters
+    ----------
+    times, angles : numpy.ndarray
+        The column's crossing times (s) and mark angles (rad).
+    fit : ModelFit
+        The fitted model to check.
+    step : float
+        The angle between marks (rad).
+
+    Returns
+    -------
+    AdequacyCheck
+        The statistics, the calibrated p-value and the verdict (adequate when the p-value
+        exceeds :data:`ALPHA`).
+
+    See Also
+    --------
+    analyse_test : checks its chosen model this way.
+
+    Examples
+    --------
+    A simulated run with an unbalanced rotor: constant acceleration leaves a wave of one
+    turn in the residuals, the unbalance model does not:
+
+    >>> import numpy as np
+    >>> from rotor import analyse_test, check_adequacy, simulate_random_run
+    >>> report = analyse_test("x1", simulate_random_run(3, "unbalance").frames)
+    >>> for model in ("const", "unbalance"):
+    ...     check = check_adequacy(report.times, report.angles, report.fits[model],
+    ...                            step=np.pi / 2)
+    ...     print(model, check.adequate)
+    const False
+    unbalance True
+    """
     phi = np.asarray(angles, float)
     used = np.asarray(fit.used, bool)
     order = np.argsort(phi[used], kind="stable")
