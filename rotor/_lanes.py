@@ -71,7 +71,28 @@ class LaneTest:
     over null tables simulated with launch-level lanes, ``lane_calibration.json``), its
     calibrated ``p``; ``launch_f``: the launch-specific tracks' drop of chi² per parameter
     over their chi² per degree of freedom (well above 1: the launches differ among
-    themselves, each on a lane of its own)."""
+    themselves, each on a lane of its own).
+
+    See Also
+    --------
+    judge_table : its ``lanes``.
+    lane_f, lane_calibration
+
+    Examples
+    --------
+    In Table 3 the groups' tracks differ more than the launches' do, beyond the calibrated
+    2 % point:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> lanes = verdict.lanes
+    >>> print(f"F = {lanes.f:.2f} on {lanes.q_g} and {lanes.q_l} dof,"
+    ...       f" p = {lanes.p_nominal:.4f} < {lanes.p_critical:.3f}")
+    F = 5.28 on 4 and 16 dof, p = 0.0066 < 0.014
+    """
 
     f: float
     q_g: int

@@ -244,7 +244,41 @@ def frame_windows(data: TableData, fit: JointFit, mi: int, si: int, radius: floa
                   n_windows: int = WINDOWS) -> WindowedDifference:
     """The model-free windowed difference of groups ``mi - si`` from the frames alone, each
     launch's rows placed on the track by ``fit``'s release point (its used rows, their
-    reading noise)."""
+    reading noise).
+
+    Parameters
+    ----------
+    data : TableData
+        The launches (:func:`prepare_table`).
+    fit : JointFit
+        A fit of :func:`fit_table` (its release points, used rows and noise).
+    mi, si : int
+        The groups (indices into ``data.group_names``): minuend and subtrahend.
+    radius : float
+        The rolling radius (m) that turns angles into track length.
+    n_windows : int
+        Windows along the track.
+
+    Returns
+    -------
+    WindowedDifference
+        The difference window by window (rad/s²) at track positions in m.
+
+    See Also
+    --------
+    local_accelerations
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import fit_table, frame_windows, prepare_table, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> data = prepare_table(table3(), groups, 120.0, np.pi / 2)
+    >>> shared, groupwise = fit_table(data)
+    >>> windows = frame_windows(data, groupwise, 1, 0, 0.02)
+    >>> print(windows.centres.size, f"first window {windows.difference[0]:.1f} rad/s²")
+    4 first window 0.0 rad/s²
+    """
     _, _, phi0, _ = fit.layout.split(fit.x)
     rows = [np.flatnonzero(fit.used[i]) for i in range(data.times.shape[0])]
     return windowed_difference([data.angles[i, r] - phi0[i] for i, r in enumerate(rows)],
