@@ -340,7 +340,42 @@ def residual_wave(scan: WaveScan, fit: ModelFit, j: int | None = None,
 def named_wave(fit: ModelFit, span: float,
                rolling_radius: float = BALL_RADIUS) -> ResidualWave | None:
     """The plate wave a wave model fitted (None for the other models); ``span``: the angle
-    the column covers (rad), for the resolution."""
+    the column covers (rad), for the resolution.
+
+    Parameters
+    ----------
+    fit : ModelFit
+        A fitted model; only the plate-wave models (``wave``, ``position+wave``,
+        ``speed+wave``) have a wave to name.
+    span : float
+        The angle the column covers (rad).
+    rolling_radius : float
+        The rolling radius (m) that turns the wave's period into a length of track.
+
+    Returns
+    -------
+    ResidualWave or None
+        The wave's period (rad, turns and m of track), amplitude (rad/s²) and phases; None
+        for a model without a wave.
+
+    See Also
+    --------
+    check_adequacy : finds a residual wave that a model leaves.
+
+    Examples
+    --------
+    Column ``as1`` of Table 3 needs a plate wave: one of about 4.6 rotor turns, 0.58 m of
+    track, 0.13 rad/s² in amplitude:
+
+    >>> from rotor import analyse_test, named_wave, table3
+    >>> report = analyse_test("as1", table3()["as1"])
+    >>> wave = named_wave(report.fit, float(report.angles[-1]))
+    >>> print(report.selected, f"{wave.revolutions:.1f} turns, {wave.track_length:.2f} m,"
+    ...       f" {wave.amplitude:.2f} rad/s²")
+    position+wave 4.6 turns, 0.58 m, 0.13 rad/s²
+    >>> print(named_wave(report.fits["const"], float(report.angles[-1])))
+    None
+    """
     if "wave_c" not in MODELS[fit.model].free:
         return None
     p = fit.params

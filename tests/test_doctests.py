@@ -109,7 +109,7 @@ DOCTEST_MODULES = (
 # The rotor's face (issue 37, item 6) made public the names surfmet's command line and
 # facades had imported from the study's modules; those that came without an example wait here.
 PENDING: frozenset[str] = frozenset({
-    "rotor.Difference", "rotor.MisreadRules", "rotor.named_wave",
+    "rotor.Difference", "rotor.MisreadRules",
 })
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
