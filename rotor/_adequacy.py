@@ -126,6 +126,41 @@ class AdequacyCheck:
     nominal p-values; ``residual``: the periodogram's best wave. ``judged`` is False for a
     column of fewer than :data:`MIN_ROWS` rows (outside the calibration: ``p_value`` NaN,
     ``adequate`` True).
+
+    Attributes
+    ----------
+    model : str
+        The model checked.
+    statistic, p_value, p_floor : float
+        The combined statistic, its calibrated p-value and the smallest one the calibration
+        can give.
+    adequate, judged : bool
+        The verdict, and whether the column was long enough to judge.
+    runs_z, lag1, wave_share : float
+        The three statistics on the standardised residuals.
+    nominal : dict of str to float
+        Their nominal p-values (``runs``, ``lag1``, ``wave``).
+    residual : ResidualWave or None
+        The periodogram's best residual wave.
+    scan : WaveScan or None
+        The periodogram.
+
+    See Also
+    --------
+    check_adequacy : builds it.
+
+    Examples
+    --------
+    Clean constant-acceleration frames: the chosen model explains them.
+
+    >>> import numpy as np
+    >>> from rotor import analyse_test
+    >>> phi = np.arange(25) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> report = analyse_test("s1", np.round(1000 + 120 * t))
+    >>> check = report.adequacy
+    >>> print(check.model, check.judged, check.adequate, check.p_value > 0.5)
+    const True True True
     """
 
     model: str
@@ -305,7 +340,42 @@ def residual_wave(scan: WaveScan, fit: ModelFit, j: int | None = None,
 def named_wave(fit: ModelFit, span: float,
                rolling_radius: float = BALL_RADIUS) -> ResidualWave | None:
     """The plate wave a wave model fitted (None for the other models); ``span``: the angle
-    the column covers (rad), for the resolution."""
+    the column covers (rad), for the resolution.
+
+    Parameters
+    ----------
+    fit : ModelFit
+        A fitted model; only the plate-wave models (``wave``, ``position+wave``,
+        ``speed+wave``) have a wave to name.
+    span : float
+        The angle the column covers (rad).
+    rolling_radius : float
+        The rolling radius (m) that turns the wave's period into a length of track.
+
+    Returns
+    -------
+    ResidualWave or None
+        The wave's period (rad, turns and m of track), amplitude (rad/s²) and phases; None
+        for a model without a wave.
+
+    See Also
+    --------
+    check_adequacy : finds a residual wave that a model leaves.
+
+    Examples
+    --------
+    Column ``as1`` of Table 3 needs a plate wave: one of about 4.6 rotor turns, 0.58 m of
+    track, 0.13 rad/s² in amplitude:
+
+    >>> from rotor import analyse_test, named_wave, table3
+    >>> report = analyse_test("as1", table3()["as1"])
+    >>> wave = named_wave(report.fit, float(report.angles[-1]))
+    >>> print(report.selected, f"{wave.revolutions:.1f} turns, {wave.track_length:.2f} m,"
+    ...       f" {wave.amplitude:.2f} rad/s²")
+    position+wave 4.6 turns, 0.58 m, 0.13 rad/s²
+    >>> print(named_wave(report.fits["const"], float(report.angles[-1])))
+    None
+    """
     if "wave_c" not in MODELS[fit.model].free:
         return None
     p = fit.params
@@ -346,7 +416,42 @@ def adequacy_p_value(statistic: float) -> tuple[float, float]:
 def check_adequacy(times: np.ndarray, angles: np.ndarray, fit: ModelFit, *,
                    step: float) -> AdequacyCheck:
     """Is ``fit`` adequate? The three order statistics on its standardised residuals, their
-    combination, its calibrated p-value and the best residual wave (module docstring)."""
+    combination, its calibrated p-value and the best residual wave (module docstring).
+
+    Parameters
+    ----------
+    times, angles : numpy.ndarray
+        The column's crossing times (s) and mark angles (rad).
+    fit : ModelFit
+        The fitted model to check.
+    step : float
+        The angle between marks (rad).
+
+    Returns
+    -------
+    AdequacyCheck
+        The statistics, the calibrated p-value and the verdict (adequate when the p-value
+        exceeds :data:`ALPHA`).
+
+    See Also
+    --------
+    analyse_test : checks its chosen model this way.
+
+    Examples
+    --------
+    A simulated run with an unbalanced rotor: constant acceleration leaves a wave of one
+    turn in the residuals, the unbalance model does not:
+
+    >>> import numpy as np
+    >>> from rotor import analyse_test, check_adequacy, simulate_random_run
+    >>> report = analyse_test("x1", simulate_random_run(3, "unbalance").frames)
+    >>> for model in ("const", "unbalance"):
+    ...     check = check_adequacy(report.times, report.angles, report.fits[model],
+    ...                            step=np.pi / 2)
+    ...     print(model, check.adequate)
+    const False
+    unbalance True
+    """
     phi = np.asarray(angles, float)
     used = np.asarray(fit.used, bool)
     order = np.argsort(phi[used], kind="stable")

@@ -99,6 +99,20 @@ class TestReport:
         The last resort (:mod:`rotor._smooth`): an unexplained smooth deviation of the
         acceleration, selected when the chosen model is inadequate and the smooth term wins
         by the selection margin.
+
+    See Also
+    --------
+    analyse_test : builds it.
+
+    Examples
+    --------
+    Column ``s1`` of the paper's Table 3 (the symmetric collar): its acceleration, about
+    2.2 rad/s², decays with the angle turned:
+
+    >>> from rotor import analyse_test, table3
+    >>> report = analyse_test("s1", table3()["s1"])
+    >>> print(report.group, report.selected, report.effect, f"{report.eps0:.1f} rad/s²")
+    s position decaying 2.2 rad/s²
     """
 
     __test__ = False  # not a pytest class
@@ -140,7 +154,28 @@ class TestReport:
 
 
 def group_of(name: str) -> str:
-    """Group of a column: its name without trailing digits (``as2`` -> ``as``)."""
+    """Group of a column: its name without trailing digits (``as2`` -> ``as``).
+
+    Parameters
+    ----------
+    name : str
+        A column (launch) name.
+
+    Returns
+    -------
+    str
+        The name without its trailing digits, or the name itself when it is all digits.
+
+    See Also
+    --------
+    analyse_table : groups its columns this way.
+
+    Examples
+    --------
+    >>> from rotor import group_of
+    >>> group_of("as2"), group_of("s12"), group_of("7")
+    ('as', 's', '7')
+    """
     g = re.sub(r"\d+$", "", name)
     return g or name
 

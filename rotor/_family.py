@@ -173,6 +173,27 @@ class ModelFit:
         Lag-1 autocorrelation of the residuals.
     angle_residuals, angle_rms :
         ``parabola`` only: its residuals on the angles (rad), as the paper fitted.
+
+    See Also
+    --------
+    analyse_test : fits every model of the family to a column.
+
+    Examples
+    --------
+    A rotor released from rest at -0.25 rad and accelerating at 2 rad/s² passes the first
+    mark at 1 rad/s; the constant-acceleration fit recovers its start (``t0`` is
+    ``-1/2`` s, ``phi0`` is ``-1/4`` rad):
+
+    >>> import numpy as np
+    >>> from rotor import analyse_test
+    >>> phi = np.arange(25) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> report = analyse_test("s1", np.round(1000 + 120 * t))
+    >>> fit = report.fits["const"]
+    >>> print(fit.model, fit.n, fit.p, f"eps0 = {fit.params['eps0']:.2f} rad/s²")
+    const 25 3 eps0 = 2.00 rad/s²
+    >>> print(f"t0 = {fit.params['t0']:.2f} s, phi0 = {fit.params['phi0']:.2f} rad")
+    t0 = -0.50 s, phi0 = -0.25 rad
     """
 
     model: str

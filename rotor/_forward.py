@@ -56,6 +56,34 @@ def crossing_times(
     driving slope that undulates along the track with a period of ``wave_period`` (rad of
     rotor turn; a period of one turn is the unbalance's form).
 
+    Parameters
+    ----------
+    phi : numpy.ndarray
+        Angles (rad), in any order.
+    eps0 : float
+        Constant angular acceleration (rad/s²).
+    eta : float
+        Stiffness of a linear change of the acceleration with the angle (1/s²).
+    gamma : float
+        Speed-proportional (viscous) drag (1/s).
+    a_c, a_s : float
+        The unbalance torque per inertia (rad/s²).
+    t0, phi0 : float
+        Start time (s) and angle (rad) of the motion from rest.
+    wave_c, wave_s, wave_period : float
+        Amplitudes (rad/s²) and period (rad) of a track undulation.
+    n_grid, max_sweeps : int
+        Integration grid size and the Picard iteration's sweep limit.
+
+    Returns
+    -------
+    numpy.ndarray
+        The crossing times (s), shaped like ``phi``.
+
+    See Also
+    --------
+    analyse_test : fits this model's family to a column of frame indices.
+
     Notes
     -----
     The data give times at known angles, so ``t(phi)`` is computed directly. With
@@ -66,6 +94,21 @@ def crossing_times(
     the time is one cumulative trapezoid, accurate to ~1e-3 frame at 120 fps. Where the model
     stalls (``u <= 0``) the times become very large but finite: a barrier for the fits.
     Angles below ``phi0`` get ``t0``.
+
+    Examples
+    --------
+    At constant acceleration from rest the times are ``sqrt(2 phi / eps0)``; a viscous drag
+    makes the rotor later at every mark:
+
+    >>> import numpy as np
+    >>> from rotor import crossing_times
+    >>> phi = np.arange(5) * np.pi / 2
+    >>> crossing_times(phi, 2.0).round(4).tolist()
+    [0.0, 1.2533, 1.7725, 2.1708, 2.5066]
+    >>> np.sqrt(2 * phi / 2.0).round(4).tolist()
+    [0.0, 1.2533, 1.7725, 2.1708, 2.5066]
+    >>> crossing_times(phi, 2.0, gamma=0.1).round(3).tolist()
+    [0.0, 1.28, 1.826, 2.252, 2.616]
     """
     phi = np.asarray(phi, dtype=float)
     p = np.array([[eps0, eta, gamma, a_c, a_s, t0, phi0, wave_c, wave_s, wave_period]],

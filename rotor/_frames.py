@@ -169,13 +169,65 @@ def _table() -> np.ndarray:
 
 
 def table3() -> dict[str, np.ndarray]:
-    """Table 3 as ``{column: frame indices for rows 1..25}``."""
+    """Table 3 as ``{column: frame indices for rows 1..25}``.
+
+    Row ``k`` of a column is the frame (120 frames/s) at which that launch had turned
+    ``k - 1`` quarter turns.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        ``as1..as3`` (the asymmetric collar) and ``s1..s3`` (the symmetric one), 25 integer
+        frame indices each; a fresh copy on every call.
+
+    See Also
+    --------
+    table3_tsv : the same table as text.
+    analyse_table : the law of motion of every column.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Table 3.
+
+    Examples
+    --------
+    >>> from rotor import table3
+    >>> table = table3()
+    >>> list(table)
+    ['as1', 'as2', 'as3', 's1', 's2', 's3']
+    >>> s1 = table["s1"]
+    >>> print(len(s1), s1[:3].tolist(), f"six turns in {(s1[-1] - s1[0]) / 120:.2f} s")
+    25 [965, 1082, 1137] six turns in 5.85 s
+    """
     t = _table()
     return {name: t[:, j].copy() for j, name in enumerate(TABLE3_COLUMNS)}
 
 
 def table3_tsv() -> str:
-    """Table 3 as tab-separated text: header ``k`` and the columns, one row per line."""
+    """Table 3 as tab-separated text: header ``k`` and the columns, one row per line.
+
+    Returns
+    -------
+    str
+        26 lines (the header and rows 1..25), each ending in a newline: the frame-table
+        format that ``surfmet rotor`` reads.
+
+    See Also
+    --------
+    table3 : the same table as arrays.
+
+    Examples
+    --------
+    >>> from rotor import table3_tsv
+    >>> text = table3_tsv()
+    >>> lines = text.splitlines()
+    >>> len(lines), lines[0].split()
+    (26, ['k', 'as1', 'as2', 'as3', 's1', 's2', 's3'])
+    >>> lines[1].split()
+    ['1', '2071', '231', '45', '965', '1', '1226']
+    """
     t = _table()
     lines = ["\t".join(("k", *TABLE3_COLUMNS))]
     for k, row in enumerate(t, start=1):

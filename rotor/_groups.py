@@ -95,6 +95,43 @@ class LawOfMotionAnalysis:
 
     ``study_model`` is the model with the smallest BIC summed over all tests
     (``total_bic``), used to compare groups like with like.
+
+    Attributes
+    ----------
+    tests : tuple of TestReport
+        Each column's analysis.
+    groups : tuple of GroupReport
+        Each group's tests and summary.
+    comparisons : tuple of GroupComparison
+        The groups' differences under each model.
+    study_model : str
+        The model of the smallest summed BIC.
+    total_bic : dict of str to float
+        The BIC summed over the tests, per model.
+    fps, step : float
+        Frame rate (1/s) and the angle between marks (rad).
+    noise_floor : float
+        The reading-noise floor: the frame quantisation's standard deviation (s).
+
+    See Also
+    --------
+    analyse_table : builds it.
+
+    Examples
+    --------
+    The same constant-acceleration run, its frames counted at 118/s in group ``as`` but read
+    at 120/s: its acceleration reads ``(120/118)**2`` times larger, 0.06 rad/s² more:
+
+    >>> import numpy as np
+    >>> from rotor import analyse_table
+    >>> phi = np.arange(12) * np.pi / 2
+    >>> t = (-1.0 + np.sqrt(1.0 + 2 * 2.0 * phi)) / 2.0
+    >>> result = analyse_table({"s1": np.round(1000 + 120 * t), "as1": np.round(500 + 118 * t)})
+    >>> print(result.study_model, [g.name for g in result.groups])
+    const ['s', 'as']
+    >>> c = result.comparisons[0]
+    >>> print(c.a, c.b, c.quantity, f"{c.difference:.2f} rad/s²")
+    s as eps0 0.06 rad/s²
     """
 
     tests: tuple[TestReport, ...]

@@ -47,6 +47,38 @@ class RollingLawInference:
     reach of any ``lambda`` on the physical branch ``lambda >= lambda_min``).
     ``lever_arm`` is ``s_r N_s**(lam - 1)``, m: the linear-law coefficient that the fitted law
     gives at the symmetric rotor's ball load ``N_s``.
+
+    Attributes
+    ----------
+    slope : numpy.ndarray
+        The assumed equivalent slopes ``S = sin(alpha) sin(beta)``.
+    lam, lam_low, lam_high : numpy.ndarray
+        ``lambda`` and its 16th/84th percentiles.
+    s_r, s_r_low, s_r_high : numpy.ndarray
+        ``s_r`` (``N**(1 - lambda) m``) and its percentiles.
+    lever_arm : numpy.ndarray
+        ``s_r N_s**(lam - 1)`` (m).
+    torque_sym, torque_asym, torque_ratio : numpy.ndarray
+        The two rotors' total rolling torques (N m) and their ratio.
+    feasible : numpy.ndarray of bool
+        Where a solution exists.
+    min_slope : float
+        The smallest slope at which neither torque is negative.
+    lambda_branch_min : float
+        The lower end of the physical branch of ``lambda``.
+    note : str
+        What two accelerations can and cannot identify (:data:`IDENTIFIABILITY`).
+
+    See Also
+    --------
+    infer_rolling_law : builds it.
+
+    Examples
+    --------
+    >>> from rotor import infer_rolling_law
+    >>> result = infer_rolling_law(5.4443, 5.4419, [0.01, 0.01745])
+    >>> result.feasible.tolist(), round(float(result.lam[1]), 2)
+    ([False, True], 1.3)
     """
 
     slope: np.ndarray
@@ -104,8 +136,27 @@ def infer_rolling_law(
         Standard uncertainties of the accelerations, propagated by Monte Carlo.
     props_sym, props_asym : MassProperties
         Default: the paper's rotor with the collar centred and against a ball.
+    g : float
+        Gravity (m/s²).
+    n_samples, seed : int
+        Size and seed of the Monte Carlo sample.
     lam_max : float
         Upper end of the search for ``lambda``.
+
+    Returns
+    -------
+    RollingLawInference
+        ``lambda``, ``s_r`` and their uncertainty bands for each slope.
+
+    Raises
+    ------
+    ContactInputError
+        A non-finite acceleration, a negative uncertainty, or a slope outside [-1, 1].
+
+    See Also
+    --------
+    angular_acceleration : the forward model this inverts.
+    solve_lambda : the exponent from an offset between two groups on a shared track.
 
     Notes
     -----
@@ -113,6 +164,31 @@ def infer_rolling_law(
     ``Q = M_a/M_s = (N_a1**lam + N_a2**lam)/(N_s1**lam + N_s2**lam)`` is 1 at ``lam = 0`` and
     ``lam = 1`` and has a single minimum between; the physical branch is the one through 1
     (and the Hertzian 4/3), ``lam >= lam_min``. See :data:`IDENTIFIABILITY`.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Eqs. (47)-(48).
+
+    Examples
+    --------
+    Accelerations made by the forward model with ``lambda = 1.3`` and ``s_r = 2e-5`` on a
+    1° slope give back that law; on a slope too small to drive the rotors there is none:
+
+    >>> import math
+    >>> from rotor import angular_acceleration, infer_rolling_law, mass_properties
+    >>> a = math.radians(1.0)
+    >>> eps_sym = angular_acceleration(2e-5, 1.3, a, math.pi / 2, mass_properties())
+    >>> eps_asym = angular_acceleration(2e-5, 1.3, a, math.pi / 2,
+    ...                                 mass_properties(collar_offset="end"))
+    >>> print(f"{eps_sym:.4f} {eps_asym:.4f} rad/s²")
+    5.4443 5.4419 rad/s²
+    >>> result = infer_rolling_law(eps_sym, eps_asym, [0.01, math.sin(a)])
+    >>> result.feasible.tolist()
+    [False, True]
+    >>> print(f"lambda = {result.lam[1]:.3f}, s_r = {result.s_r[1]:.2e}")
+    lambda = 1.300, s_r = 2.00e-05
     """
     ps = mass_properties(collar_offset="symmetric") if props_sym is None else props_sym
     pa = mass_properties(collar_offset="end") if props_asym is None else props_asym

@@ -34,7 +34,25 @@ LANE_CALIBRATION_FILE = Path(__file__).with_name("lane_calibration.json")
 @lru_cache(maxsize=1)
 def lane_calibration() -> dict:
     """The lane test's calibration with launch-level lanes in the null
-    (``benchmarks/rotor_lane_calibration.py``)."""
+    (``benchmarks/rotor_lane_calibration.py``).
+
+    Returns
+    -------
+    dict
+        The calibration as stored (``lane_calibration.json``, package data): the prior, the
+        tables simulated and the lane test's null distribution of nominal p-values.
+
+    See Also
+    --------
+    LaneTest, judge_table
+
+    Examples
+    --------
+    >>> from rotor import lane_calibration
+    >>> test = lane_calibration()["lane_test"]
+    >>> print(test["level"], len(test["null_p_sorted"]), f"{test['critical_p']:.3f}")
+    0.02 200 0.014
+    """
     return json.loads(LANE_CALIBRATION_FILE.read_text())
 
 
@@ -53,7 +71,28 @@ class LaneTest:
     over null tables simulated with launch-level lanes, ``lane_calibration.json``), its
     calibrated ``p``; ``launch_f``: the launch-specific tracks' drop of chi² per parameter
     over their chi² per degree of freedom (well above 1: the launches differ among
-    themselves, each on a lane of its own)."""
+    themselves, each on a lane of its own).
+
+    See Also
+    --------
+    judge_table : its ``lanes``.
+    lane_f, lane_calibration
+
+    Examples
+    --------
+    In Table 3 the groups' tracks differ more than the launches' do, beyond the calibrated
+    2 % point:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> lanes = verdict.lanes
+    >>> print(f"F = {lanes.f:.2f} on {lanes.q_g} and {lanes.q_l} dof,"
+    ...       f" p = {lanes.p_nominal:.4f} < {lanes.p_critical:.3f}")
+    F = 5.28 on 4 and 16 dof, p = 0.0066 < 0.014
+    """
 
     f: float
     q_g: int

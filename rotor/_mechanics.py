@@ -126,7 +126,40 @@ class RotorGeometry:
 
 def paper_rotor(collar_length: float = paper.COLLAR_LENGTH) -> RotorGeometry:
     """The rotor built in the paper (Section 2.2.2): R = 20 mm steel balls 140 mm apart, a
-    6 mm aluminium rod, and a steel collar of radius 19 mm and length ``collar_length``."""
+    6 mm aluminium rod, and a steel collar of radius 19 mm and length ``collar_length``.
+
+    Parameters
+    ----------
+    collar_length : float
+        Length of the collar (m); the paper's is 50 mm.
+
+    Returns
+    -------
+    RotorGeometry
+        The dimensions and densities of the parts.
+
+    Raises
+    ------
+    ContactInputError
+        A collar longer than the free rod (100 mm) or of negative length.
+
+    See Also
+    --------
+    mass_properties : the rotor's mass, inertia and centre of mass.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    >>> from rotor import paper_rotor
+    >>> rotor = paper_rotor()
+    >>> print(f"R = {rotor.ball_radius * 1e3:.0f} mm, free rod {rotor.rod_length * 1e3:.0f} mm,"
+    ...       f" collar {rotor.collar_length * 1e3:.0f} mm")
+    R = 20 mm, free rod 100 mm, collar 50 mm
+    """
     return RotorGeometry(collar_length=collar_length)
 
 
@@ -150,6 +183,17 @@ class MassProperties:
         The parts (one ball).
     ball_radius : float
         Rolling radius ``R`` (m).
+
+    See Also
+    --------
+    mass_properties : builds it from a :class:`RotorGeometry`.
+
+    Examples
+    --------
+    >>> from rotor import mass_properties
+    >>> props = mass_properties(collar_offset="end")
+    >>> print(f"M = {props.mass:.3f} kg, N1/N2 = {props.load_ratio:.3f}")
+    M = 0.951 kg, N1/N2 = 1.351
     """
 
     mass: float
@@ -286,6 +330,34 @@ def optimal_collar_length(geometry: RotorGeometry | None = None) -> tuple[float,
 
     Setting ``d xi_G/dh = 0`` for ``xi_G = mu h (L/2 - h/2)/(M0 + mu h)`` gives
     ``h^2 + 2 a h - a L = 0`` with ``a = M0/mu`` and ``L`` the free rod length.
+
+    Parameters
+    ----------
+    geometry : RotorGeometry, optional
+        The rotor (its ``collar_length`` is ignored); defaults to :func:`paper_rotor`.
+
+    Returns
+    -------
+    h_star, xi_max : float
+        The best collar length and the centre-of-mass offset it gives against a ball (m).
+
+    See Also
+    --------
+    mass_properties
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, Materials 15 (2022) 2518, Fig. 9.
+
+    Examples
+    --------
+    The paper's 50 mm collar is close to the best one, 39 mm, which moves the centre of mass
+    11 mm off the mid-plane:
+
+    >>> from rotor import optimal_collar_length
+    >>> h, xi = optimal_collar_length()
+    >>> print(f"h* = {h * 1e3:.1f} mm, xi_G = {xi * 1e3:.1f} mm")
+    h* = 39.0 mm, xi_G = 11.0 mm
     """
     g = paper_rotor() if geometry is None else geometry
     m0 = mass_properties(RotorGeometry(**{**g.__dict__, "collar_length": 0.0})).mass
@@ -308,6 +380,45 @@ def normal_reactions(
     ``N1 = M g cos(a) d2/(d1+d2) (1 - R/d2 tan(a) cos(b))`` and
     ``N2 = M g cos(a) d1/(d1+d2) (1 + R/d1 tan(a) cos(b))``: the lateral slope component
     ``sin(a) cos(b)`` shifts load towards ball 2. On a level plane they reduce to Eqs. (50)-(51).
+
+    Parameters
+    ----------
+    props : MassProperties
+        The rotor (:func:`mass_properties`).
+    alpha, beta : float
+        Plate inclination and the direction of rolling on it (rad).
+    g : float
+        Gravity (m/s²).
+
+    Returns
+    -------
+    n1, n2 : float
+        The normal loads on ball 1 (the collar's side) and ball 2 (N).
+
+    Raises
+    ------
+    ContactInputError
+        A sideways slope so steep that a ball lifts off.
+
+    See Also
+    --------
+    paper_ball_loads, rolling_torque
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, Materials 15 (2022) 2518, Eqs. (41)-(42).
+
+    Examples
+    --------
+    On a level plate the symmetric rotor puts half its weight on each ball:
+
+    >>> from rotor import mass_properties, normal_reactions
+    >>> n1, n2 = normal_reactions(mass_properties())
+    >>> print(f"{n1:.3f} N, {n2:.3f} N")
+    4.665 N, 4.665 N
+    >>> n1, n2 = normal_reactions(mass_properties(collar_offset="end"))
+    >>> print(f"{n1:.3f} N, {n2:.3f} N, sum {n1 + n2:.3f} N")
+    5.363 N, 3.968 N, sum 9.331 N
     """
     mg = props.mass * g * math.cos(alpha)
     d = props.d1 + props.d2
@@ -324,7 +435,48 @@ def rolling_torque(
     s_r: float, lam: float, props: MassProperties, alpha: float = 0.0,
     beta: float = math.pi / 2, g: float = G_STANDARD,
 ) -> float:
-    """Total rolling-friction torque ``s_r (N1**lam + N2**lam)``, N m."""
+    """Total rolling-friction torque ``s_r (N1**lam + N2**lam)``, N m.
+
+    Parameters
+    ----------
+    s_r, lam : float
+        Rolling-friction coefficient (``N**(1 - lam) m``) and load exponent of
+        ``M_r = s_r N**lam``.
+    props : MassProperties
+        The rotor (:func:`mass_properties`).
+    alpha, beta : float
+        Plate inclination and the direction of rolling on it (rad).
+    g : float
+        Gravity (m/s²).
+
+    Returns
+    -------
+    float
+        The braking torque of both contacts (N m).
+
+    Raises
+    ------
+    ContactInputError
+        A sideways slope so steep that a ball lifts off.
+
+    See Also
+    --------
+    normal_reactions, angular_acceleration
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, Materials 15 (2022) 2518, Eqs. (43)-(48).
+
+    Examples
+    --------
+    With the linear law (``lam = 1``) the torque is ``s_r M g``, wherever the collar sits:
+
+    >>> from rotor import mass_properties, rolling_torque
+    >>> sym = rolling_torque(1e-5, 1.0, mass_properties())
+    >>> end = rolling_torque(1e-5, 1.0, mass_properties(collar_offset="end"))
+    >>> print(f"{sym:.3e} N m, {end:.3e} N m")
+    9.331e-05 N m, 9.331e-05 N m
+    """
     n1, n2 = normal_reactions(props, alpha, beta, g)
     return s_r * (n1**lam + n2**lam)
 
@@ -457,7 +609,32 @@ def driving_slope_for(
 def paper_ball_loads(g: float = G_STANDARD) -> dict[str, float]:
     """Normal load per ball of the paper's rotor on a level plate, Eqs. (41)-(42) and
     (50)-(51), N: ``symmetric`` (both balls), ``asymmetric_ball1`` (the collar's side) and
-    ``asymmetric_ball2``."""
+    ``asymmetric_ball2``.
+
+    Parameters
+    ----------
+    g : float
+        Gravity (m/s²).
+
+    Returns
+    -------
+    dict of str to float
+        The three loads (N).
+
+    See Also
+    --------
+    normal_reactions
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, Materials 15 (2022) 2518, Eqs. (50)-(51).
+
+    Examples
+    --------
+    >>> from rotor import paper_ball_loads
+    >>> {name: round(n, 2) for name, n in paper_ball_loads().items()}
+    {'symmetric': 4.67, 'asymmetric_ball1': 5.36, 'asymmetric_ball2': 3.97}
+    """
     sym = normal_reactions(mass_properties(paper_rotor(), "symmetric"), g=g)
     asym = normal_reactions(mass_properties(paper_rotor(), "end"), g=g)
     return {"symmetric": sym[0], "asymmetric_ball1": asym[0], "asymmetric_ball2": asym[1]}

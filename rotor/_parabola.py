@@ -100,8 +100,49 @@ def paper_parabola(
 ) -> tuple[np.ndarray, np.ndarray, float]:
     """The paper's fit: least-squares parabola ``phi = c2 t^2 + c1 t + c0`` through the mean
     time of the tests at each row (``t = (f_k - f_1)/fps``; rows where every test has a
-    reading). Returns ``[c2, c1, c0]`` (rad/s², rad/s, rad), their standard errors, and the
-    rms angle residual (rad)."""
+    reading).
+
+    Parameters
+    ----------
+    columns : sequence of numpy.ndarray
+        The frame indices of each test, one array per test, rows aligned (NaN: no reading).
+    fps, step : float
+        Frame rate (1/s) and the angle between marks (rad).
+
+    Returns
+    -------
+    coef : numpy.ndarray
+        ``[c2, c1, c0]`` (rad/s², rad/s, rad); the acceleration is ``2 c2``.
+    stderr : numpy.ndarray
+        Their standard errors.
+    rms : float
+        The rms angle residual (rad).
+
+    Raises
+    ------
+    ContactInputError
+        Fewer than 4 rows.
+
+    See Also
+    --------
+    analyse_table : the law of motion of each test, with its noise model.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    The asymmetric group's columns of Table 3 give the parabola the paper prints as its
+    ``phi_s`` (0.821, 1.134, -0.527): the text's labels are swapped.
+
+    >>> from rotor import paper_parabola, table3
+    >>> table = table3()
+    >>> coef, stderr, rms = paper_parabola([table["as1"], table["as2"], table["as3"]])
+    >>> coef.round(3).tolist(), f"rms {rms:.2f} rad"
+    ([0.821, 1.134, -0.527], 'rms 0.23 rad')
+    """
     arr = np.vstack([np.asarray(c, float) for c in columns])
     if arr.shape[1] < 4:
         raise ContactInputError("the paper's parabola needs at least 4 rows")

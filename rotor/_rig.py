@@ -42,7 +42,28 @@ LAMBDA_RANGE = (0.05, 20.0)
 
 @dataclass(frozen=True)
 class RigGroup:
-    """A group of launches: its ball loads (N) and the table columns it ran."""
+    """A group of launches: its ball loads (N) and the table columns it ran.
+
+    Parameters
+    ----------
+    name : str
+        The group's name (``"as"``, ``"s"`` for the paper's collars).
+    ball_loads : tuple of float
+        Normal loads on the two balls (N).
+    columns : tuple of str
+        The frame-table columns (launches) of this group.
+
+    See Also
+    --------
+    Rig, paper_rig
+
+    Examples
+    --------
+    >>> from rotor import paper_rig
+    >>> group = paper_rig().group("as")
+    >>> print(group.columns, [round(n, 3) for n in group.ball_loads])
+    ('as1', 'as2', 'as3') [5.363, 3.968]
+    """
 
     name: str
     ball_loads: tuple[float, float]
@@ -55,7 +76,37 @@ class Rig:
     (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None);
     ``e_star``: the ball-plate contact's composite modulus (Pa) that sets the friction arm's
     Hertz bound (:mod:`rotor._arm`), None for the paper's steel on aluminium;
-    ``plate``: what it is, in words."""
+    ``plate``: what it is, in words.
+
+    Parameters
+    ----------
+    ball_radius, mass, axial_inertia : float
+        Rolling radius ``R`` (m), mass ``M`` (kg) and axial moment of inertia ``J``
+        (kg m²) of the rotor.
+    fps, step : float
+        Camera frame rate (1/s) and the angle between marks (rad).
+    slope : float or None
+        The plate's slope along the track (rad), None when unknown.
+    groups : tuple of RigGroup
+        The two groups of launches.
+    e_star : float, optional
+        Composite modulus of the ball-plate contact (Pa).
+    plate : str, optional
+        The plate, in words.
+
+    See Also
+    --------
+    paper_rig : the paper's rig.
+    rig_from_mapping : a rig from a rig file's keys.
+    solve_lambda : the exponent an offset between the groups needs.
+
+    Examples
+    --------
+    >>> from rotor import paper_rig
+    >>> rig = paper_rig()
+    >>> print(f"M = {rig.mass:.3f} kg, J + M R² = {rig.rolling_inertia:.3e} kg m²")
+    M = 0.951 kg, J + M R² = 5.438e-04 kg m²
+    """
 
     ball_radius: float
     mass: float
@@ -87,7 +138,46 @@ def _positive(d: Mapping, key: str) -> float:
 
 
 def rig_from_mapping(d: Mapping) -> Rig:
-    """A :class:`Rig` from the keys of a rig file (:data:`RIG_KEYS`), checked."""
+    """A :class:`Rig` from the keys of a rig file (:data:`RIG_KEYS`), checked.
+
+    Parameters
+    ----------
+    d : Mapping
+        ``ball_radius_m``, ``mass_kg``, ``axial_inertia_kg_m2``, ``fps``, ``step_deg``,
+        optionally ``slope_rad``, and ``groups``: exactly two entries
+        ``{name: {"ball_loads_N": [N1, N2], "columns": [...]}}``, each with at least two
+        columns.
+
+    Returns
+    -------
+    Rig
+        SI throughout (``step`` in rad).
+
+    Raises
+    ------
+    ContactInputError
+        Unknown or missing keys, a value that is not a positive number, a slope not below
+        pi/2, or groups that are not two groups of at least two launches.
+
+    See Also
+    --------
+    paper_rig
+
+    Examples
+    --------
+    >>> from rotor import rig_from_mapping
+    >>> rig = rig_from_mapping({
+    ...     "ball_radius_m": 0.02, "mass_kg": 0.95, "axial_inertia_kg_m2": 1.6e-4,
+    ...     "fps": 240, "step_deg": 45, "slope_rad": 0.01,
+    ...     "groups": {"light": {"ball_loads_N": [4.0, 4.0], "columns": ["l1", "l2"]},
+    ...                "heavy": {"ball_loads_N": [5.0, 4.5], "columns": ["h1", "h2"]}}})
+    >>> print(f"{rig.step:.4f} rad", [g.name for g in rig.groups])
+    0.7854 rad ['light', 'heavy']
+    >>> rig_from_mapping({"fps": 120})
+    Traceback (most recent call last):
+    ...
+    contact.errors.ContactInputError: rig: unknown keys [] / missing keys [...]...
+    """
     if not isinstance(d, Mapping):
         raise ContactInputError("rig: the file must hold one JSON object")
     unknown = sorted(set(d) - set(RIG_KEYS))
@@ -125,7 +215,34 @@ def rig_from_mapping(d: Mapping) -> Rig:
 
 
 def paper_rig() -> Rig:
-    """The paper's rotor (:mod:`rotor._mechanics`), camera and Table 3's groups."""
+    """The paper's rotor (:mod:`rotor._mechanics`), camera and Table 3's groups.
+
+    Returns
+    -------
+    Rig
+        The symmetric rotor's mass and inertia (the collar's position changes neither),
+        120 frames/s, a mark every quarter turn, no stated slope, and the groups ``as``
+        (collar against ball 1) and ``s`` (collar centred) with their ball loads on a
+        level plate.
+
+    See Also
+    --------
+    mass_properties, normal_reactions, judge_table
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518.
+
+    Examples
+    --------
+    >>> from rotor import paper_rig
+    >>> rig = paper_rig()
+    >>> print(rig.fps, f"{rig.ball_radius * 1e3:.0f} mm", [g.name for g in rig.groups])
+    120.0 20 mm ['as', 's']
+    >>> [round(sum(g.ball_loads), 3) for g in rig.groups]
+    [9.331, 9.331]
+    """
     groups = []
     for name, collar in PAPER_COLLARS.items():
         loads = normal_reactions(mass_properties(collar_offset=collar))
@@ -154,7 +271,54 @@ def offset_for_lambda(lam: float, rig: Rig, minuend: str, subtrahend: str, slope
 
 def solve_lambda(offset: float, rig: Rig, minuend: str, subtrahend: str, slope: float,
                  mean_acceleration: float) -> float:
-    """The ``lambda`` whose offset is ``offset`` (NaN where none in 0.05-20 gives it)."""
+    """The ``lambda`` whose offset is ``offset`` (NaN where none in 0.05-20 gives it).
+
+    Parameters
+    ----------
+    offset : float
+        The observed ``eps_minuend - eps_subtrahend`` (rad/s²).
+    rig : Rig
+        The rotor and its groups.
+    minuend, subtrahend : str
+        The groups' names.
+    slope : float
+        The track's slope (rad).
+    mean_acceleration : float
+        The launches' mean angular acceleration (rad/s²), which sets ``s_r``.
+
+    Returns
+    -------
+    float
+        The exponent of ``M_r = s_r N**lambda`` that gives ``offset`` (the first root on a
+        grid over 0.05-20), or NaN.
+
+    Raises
+    ------
+    ContactInputError
+        A group name the rig does not have.
+
+    See Also
+    --------
+    arm_bound : the least exponent the contact's size allows.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, Materials 15 (2022) 2518, Eqs. (47)-(49).
+
+    Examples
+    --------
+    The paper's two collars put the same total load on the balls, so no offset means the
+    linear law; the asymmetric rotor lagging by 1 mrad/s² needs ``lambda`` just above 1:
+
+    >>> import math
+    >>> from rotor import paper_rig, solve_lambda
+    >>> rig = paper_rig()
+    >>> for offset in (0.0, -0.001):
+    ...     lam = solve_lambda(offset, rig, "as", "s", math.radians(1.0), 2.0)
+    ...     print(f"{offset:+.3f} rad/s² -> lambda = {lam:.3f}")
+    +0.000 rad/s² -> lambda = 1.000
+    -0.001 rad/s² -> lambda = 1.022
+    """
     def f(lam: float) -> float:
         return offset_for_lambda(lam, rig, minuend, subtrahend, slope, mean_acceleration) - offset
 

@@ -59,7 +59,23 @@ class Sensitivity:
     """One assumption changed: ``assumption`` and its ``setting``; the verdict's ``code``;
     the ``offset`` (rad/s², interval ``ci_low``-``ci_high``); ``lambda_needed`` at the slope
     used; ``lambda_bound`` (``low``/``high`` over the interval) with the arm at its bound;
-    ``note``."""
+    ``note``.
+
+    See Also
+    --------
+    sensitivity_table : builds them.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, sensitivity_table, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> row = sensitivity_table(verdict)[0]
+    >>> print(row.assumption, row.code, f"{row.offset:.2f} rad/s²")
+    as given undetermined -0.20 rad/s²
+    """
 
     assumption: str
     setting: str
@@ -120,7 +136,40 @@ def _scaled(rig: Rig, mass: float, inertia: float) -> Rig:
 
 def sensitivity_table(v) -> tuple[Sensitivity, ...]:
     """The verdict ``v`` (:class:`rotor._verdict.RotorVerdict`, with a rig) under
-    each assumption changed in turn; the first row is the verdict as given."""
+    each assumption changed in turn; the first row is the verdict as given.
+
+    Parameters
+    ----------
+    v : RotorVerdict
+        A verdict of :func:`judge_table` with a rig.
+
+    Returns
+    -------
+    tuple of Sensitivity
+        One row per assumption changed (slope, load contrast, mass and inertia, frame
+        rate, collar clearance, run order, labels); empty without a rig.
+
+    See Also
+    --------
+    settling_experiment
+
+    Examples
+    --------
+    A smaller slope leaves a smaller friction torque, so the same offset needs a larger
+    exponent:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, sensitivity_table, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> for row in sensitivity_table(verdict)[:4]:
+    ...     print(row.setting[:8], f"lambda {row.lambda_needed:.1f}")
+    slope 1  lambda 2.6
+    0.5 deg  lambda 4.2
+    0.75 deg lambda 3.1
+    1.5 deg  lambda 2.1
+    """
     rig, o, e = v.rig, v.offset, v.exponent
     if rig is None or e is None:
         return ()
@@ -181,7 +230,23 @@ class ExperimentRow:
 class Experiment:
     """The experiment that would settle it: ``rows``, the plate's ``sag`` (m) and the
     ``slope_change`` (rad) the asymmetric group's decay implies over ``length`` (m), at
-    ``launch_sd`` (rad/s²), ``power`` and ``alpha``."""
+    ``launch_sd`` (rad/s²), ``power`` and ``alpha``.
+
+    See Also
+    --------
+    settling_experiment : builds it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, settling_experiment, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> experiment = settling_experiment(verdict)
+    >>> print(len(experiment.rows), f"launch spread {experiment.launch_sd:.3f} rad/s²")
+    6 launch spread 0.037 rad/s²
+    """
 
     rows: tuple[ExperimentRow, ...]
     slope_change: float
@@ -212,7 +277,40 @@ def _decay(v) -> tuple[float, float]:
 
 
 def settling_experiment(v) -> Experiment | None:
-    """What would settle the question with this rig (``v`` with a rig)."""
+    """What would settle the question with this rig (``v`` with a rig).
+
+    Parameters
+    ----------
+    v : RotorVerdict
+        A verdict of :func:`judge_table` with a rig.
+
+    Returns
+    -------
+    Experiment or None
+        For friction arms at the bound, 20 µm and 5 µm, on the rig's loads and on a larger
+        load contrast: the offset ``lambda = 4/3`` makes and the launches per group that
+        tell it from 1; None without a rig.
+
+    See Also
+    --------
+    sensitivity_table
+
+    Examples
+    --------
+    At the contact-radius arm the paper's loads need hundreds of launches per group; a
+    larger load contrast needs a handful:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, settling_experiment, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> rows = settling_experiment(verdict).rows
+    >>> print(rows[0].loads, rows[0].launches)
+    5.36/3.97 N against 4.67/4.67 N 433
+    >>> print(rows[3].loads, rows[3].launches)
+    6.7/2.6 N against 4.65/4.65 N 8
+    """
     rig, o = v.rig, v.offset
     if rig is None or v.arm is None:
         return None

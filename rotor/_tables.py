@@ -82,7 +82,24 @@ class Scenario:
     (``s_r``, ``lam``), the launch spread ``launch_sd`` (rad/s²), the reading scatter
     ``reading_sd`` (rad) and the launches per group; ``lanes``: each launch on a lane of
     its own (None: every launch of a group on the group's track); ``rotors``: each group's
-    rotor (None: the paper's, with its collar as :data:`GROUPS` says)."""
+    rotor (None: the paper's, with its collar as :data:`GROUPS` says).
+
+    See Also
+    --------
+    draw_scenario : draws one from the calibration's prior.
+    simulate_table : the frame columns it gives.
+
+    Examples
+    --------
+    An offset of 0.3 rad/s² is a difference of ``s_r`` of ``0.3 (J + M R²) / (M g)``
+    between the groups, 1.75e-5 m at ``lambda = 1``:
+
+    >>> import numpy as np
+    >>> from rotor import draw_scenario
+    >>> scn = draw_scenario(np.random.default_rng(1), offset=0.3)
+    >>> print(scn.lam, scn.launches, f"{scn.s_r['as'] - scn.s_r['s']:.2e} m")
+    1.0 3 1.75e-05 m
+    """
 
     tracks: dict[str, PlateTrack]
     s_r: dict[str, float]
@@ -158,6 +175,47 @@ def draw_scenario(rng: np.random.Generator, *, offset: float = 0.0, track_differ
     ball load, ``s_r = arm / N_s**(lam - 1)`` for both groups, the start slope then following
     from the drawn acceleration (``slope_deg`` is drawn but unused, so that the other draws
     do not change).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The random stream.
+    offset : float
+        Symmetric minus asymmetric group's acceleration (rad/s²).
+    track_differs : bool
+        Give each group a track of its own.
+    lam : float
+        The exponent of ``M_r = s_r N**lam``.
+    slope_deg : tuple of float
+        Range of the start slope (degrees).
+    lanes : LanePrior, optional
+        Put each launch on a lane of its own.
+    rotors : Mapping of str to MassProperties, optional
+        Each group's rotor.
+    arm : float, optional
+        The friction arm ``M_r / N`` (m) at the symmetric group's ball load.
+
+    Returns
+    -------
+    Scenario
+        The table's truth.
+
+    Raises
+    ------
+    ContactInputError
+        A friction arm that is not a positive length.
+
+    See Also
+    --------
+    simulate_table : the frame columns of a scenario.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import draw_scenario
+    >>> scn = draw_scenario(np.random.default_rng(1), offset=0.3, lam=4 / 3)
+    >>> sorted(scn.tracks), round(scn.lam, 3), scn.launches
+    (['as', 's'], 1.333, 3)
     """
     p = _props("s", rotors)
     j = p.rolling_inertia
@@ -194,7 +252,43 @@ def draw_scenario(rng: np.random.Generator, *, offset: float = 0.0, track_differ
 
 def simulate_table(scn: Scenario, rng: np.random.Generator, fps: float = FPS,
                    step: float = MARK_STEP) -> dict[str, np.ndarray]:
-    """Frame columns ``as1..`` and ``s1..`` of one simulated table."""
+    """Frame columns ``as1..`` and ``s1..`` of one simulated table.
+
+    Parameters
+    ----------
+    scn : Scenario
+        The table's truth (:func:`draw_scenario`).
+    rng : numpy.random.Generator
+        The random stream (launch spread, misreads, starts, reading noise).
+    fps, step : float
+        Frame rate (1/s) and the angle between marks (rad).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        ``as1..`` and ``s1..``: frame indices of each launch, like Table 3's columns.
+
+    See Also
+    --------
+    judge_table : the verdict on such a table.
+
+    Examples
+    --------
+    A table whose symmetric group is faster by 0.3 rad/s²: the verdict finds the
+    difference, and its interval holds the truth:
+
+    >>> import numpy as np
+    >>> from rotor import draw_scenario, judge_table, simulate_table
+    >>> rng = np.random.default_rng(1)
+    >>> table = simulate_table(draw_scenario(rng, offset=0.3), rng)
+    >>> sorted(table), len(table["s1"])
+    (['as1', 'as2', 'as3', 's1', 's2', 's3'], 25)
+    >>> verdict = judge_table(table, {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]},
+    ...                       fps=120.0, step=np.pi / 2, permutation=False)
+    >>> off = verdict.offset
+    >>> print(verdict.code, f"{off.value:.1f} rad/s²", off.ci_low < -0.3 < off.ci_high)
+    difference -0.3 rad/s² True
+    """
     cols: dict[str, np.ndarray] = {}
     for group in ("as", "s"):
         p = _props(group, scn.rotors)

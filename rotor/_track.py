@@ -101,7 +101,42 @@ def track_basis(s: np.ndarray, span: float, degree: int) -> tuple[np.ndarray, np
 
 
 def track_acceleration(s: np.ndarray, beta: np.ndarray, span: float) -> np.ndarray:
-    """``g(s)`` (rad/s²) of one track's coefficients ``beta`` at track positions ``s`` (rad)."""
+    """``g(s)`` (rad/s²) of one track's coefficients ``beta`` at track positions ``s`` (rad).
+
+    ``g(s) = sum_j beta_j [P_j(2 s / S - 1) - P_j(-1)]``, ``j = 1..m``: the part of the
+    angular acceleration that the plate adds at track position ``s``, zero at the start.
+
+    Parameters
+    ----------
+    s : numpy.ndarray
+        Track positions (rad of rotor turn since the release).
+    beta : numpy.ndarray
+        The ``m`` Legendre coefficients of the track (rad/s²); degree 1 is a linear trend.
+    span : float
+        ``S`` (rad): the span over which the series is defined.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``g(s)``, shaped like ``s`` (rad/s²).
+
+    See Also
+    --------
+    fit_table : fits the coefficients to a table's launches.
+
+    Examples
+    --------
+    One coefficient is a linear trend, ``beta_1 (2 s / S)``; the second adds a parabola that
+    vanishes at both ends:
+
+    >>> import numpy as np
+    >>> from rotor import track_acceleration
+    >>> s = np.array([0.0, 10.0, 20.0])
+    >>> track_acceleration(s, np.array([2.0]), 20.0).tolist()
+    [0.0, 2.0, 4.0]
+    >>> track_acceleration(s, np.array([2.0, 0.1]), 20.0).round(3).tolist()
+    [0.0, 1.85, 4.0]
+    """
     vals, _ = track_basis(np.asarray(s, float), span, beta.size)
     return vals @ beta
 

@@ -65,7 +65,26 @@ CALIBRATION_FILE = Path(__file__).with_name("verdict_calibration.json")
 
 @lru_cache(maxsize=1)
 def verdict_calibration() -> dict:
-    """The simulation calibration (``benchmarks/rotor_verdict_calibration.py``)."""
+    """The simulation calibration (``benchmarks/rotor_verdict_calibration.py``).
+
+    Returns
+    -------
+    dict
+        The calibration as stored (``verdict_calibration.json``, package data): the prior,
+        the tables simulated, the shared-track test's critical F and the offset test's rule.
+
+    See Also
+    --------
+    judge_table : uses it.
+
+    Examples
+    --------
+    >>> from rotor import verdict_calibration
+    >>> cal = verdict_calibration()
+    >>> test = cal["shared_track_test"]
+    >>> print(test["level"], f"critical F = {test['critical_f']:.2f}")
+    0.02 critical F = 3.75
+    """
     return json.loads(CALIBRATION_FILE.read_text())
 
 
@@ -112,7 +131,27 @@ class ExponentNeeded:
 
 @dataclass(frozen=True)
 class RotorVerdict:
-    """The answer: ``code`` (one of :data:`CODES`) and ``sentence``, with everything behind it."""
+    """The answer: ``code`` (one of :data:`CODES`) and ``sentence``, with everything behind it.
+
+    See Also
+    --------
+    judge_table : builds it.
+
+    Examples
+    --------
+    Table 3: the asymmetric rotor is slower by about 0.2 rad/s², but no shared track explains
+    both groups, so the paper's question stays open:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> print(verdict.code, verdict.shared_track_adequate)
+    undetermined False
+    >>> print(verdict.sentence.split(":")[0])
+    undetermined
+    """
 
     code: str
     sentence: str
@@ -205,7 +244,41 @@ def frame_windows(data: TableData, fit: JointFit, mi: int, si: int, radius: floa
                   n_windows: int = WINDOWS) -> WindowedDifference:
     """The model-free windowed difference of groups ``mi - si`` from the frames alone, each
     launch's rows placed on the track by ``fit``'s release point (its used rows, their
-    reading noise)."""
+    reading noise).
+
+    Parameters
+    ----------
+    data : TableData
+        The launches (:func:`prepare_table`).
+    fit : JointFit
+        A fit of :func:`fit_table` (its release points, used rows and noise).
+    mi, si : int
+        The groups (indices into ``data.group_names``): minuend and subtrahend.
+    radius : float
+        The rolling radius (m) that turns angles into track length.
+    n_windows : int
+        Windows along the track.
+
+    Returns
+    -------
+    WindowedDifference
+        The difference window by window (rad/s²) at track positions in m.
+
+    See Also
+    --------
+    local_accelerations
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import fit_table, frame_windows, prepare_table, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> data = prepare_table(table3(), groups, 120.0, np.pi / 2)
+    >>> shared, groupwise = fit_table(data)
+    >>> windows = frame_windows(data, groupwise, 1, 0, 0.02)
+    >>> print(windows.centres.size, f"first window {windows.difference[0]:.1f} rad/s²")
+    4 first window 0.0 rad/s²
+    """
     _, _, phi0, _ = fit.layout.split(fit.x)
     rows = [np.flatnonzero(fit.used[i]) for i in range(data.times.shape[0])]
     return windowed_difference([data.angles[i, r] - phi0[i] for i, r in enumerate(rows)],
@@ -235,7 +308,63 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
     """The verdict on a table: ``groups`` ({name: columns}, two groups; the offset is the
     second minus the first), ``rig`` for the exponent, the arm bound and the confounds,
     ``mechanisms`` ({name: implied offset, rad/s²}) to put into the confound budget;
-    ``permutation``: also the design's exact permutation test (a refit per split)."""
+    ``permutation``: also the design's exact permutation test (a refit per split).
+
+    Parameters
+    ----------
+    columns : Mapping of str to sequence of float
+        The frame indices of each launch (column).
+    groups : Mapping of str to sequence of str
+        Exactly two groups, ``{name: its columns}``.
+    fps, step : float
+        Frame rate (1/s) and the angle between marks (rad).
+    k : sequence of int, optional
+        The row numbers (default 1, 2, ...).
+    rig : Rig, optional
+        The rotor and its groups (:func:`paper_rig`): needed for the exponent, the arm
+        bound and the confound budget.
+    mechanisms : Mapping of str to float, optional
+        Other mechanisms' implied offsets (rad/s²) for the confound budget.
+    permutation : bool
+        Also run the exact permutation test.
+
+    Returns
+    -------
+    RotorVerdict
+        ``code`` (``difference``, ``no_difference`` or ``undetermined``), its sentence and
+        the evidence behind it.
+
+    Raises
+    ------
+    ContactInputError
+        Not exactly two groups, or columns the table cannot use.
+
+    See Also
+    --------
+    analyse_table : the law of motion of each launch on its own.
+    arm_bound : the friction arm against the contact radius.
+
+    References
+    ----------
+    .. [1] Alaci, Ciornei & Romanu, "Validation of Nonlinear Dependence of Rolling
+       Friction Moment on the Normal Force for Elastic Materials", Materials 15 (2022) 2518,
+       Eqs. (47)-(49).
+
+    Examples
+    --------
+    The paper's Table 3, the asymmetric group minus the symmetric one:
+
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> offset = verdict.offset
+    >>> print(offset.minuend, "-", offset.subtrahend, f"= {offset.value:.1f} rad/s²")
+    as - s = -0.2 rad/s²
+    >>> print(verdict.code)
+    undetermined
+    """
     data = prepare_table(columns, groups, fps, step, k)
     if len(data.group_names) != 2:
         raise ContactInputError(f"the verdict compares two groups; the table has "

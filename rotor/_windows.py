@@ -99,7 +99,23 @@ class WindowedDifference:
     ``centres``/``edges``: the windows along the track (m from the release);
     ``difference``/``stderr`` per window; ``minuend``/``subtrahend``: the groups' own
     :class:`GroupWindows`; ``trend``/``trend_stderr`` (rad/s² per m) and ``intercept`` of
-    the weighted straight line through the differences (NaN with fewer than 3 windows)."""
+    the weighted straight line through the differences (NaN with fewer than 3 windows).
+
+    See Also
+    --------
+    frame_windows : builds it from a table's joint fit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rotor import judge_table, paper_rig, table3
+    >>> groups = {"s": ["s1", "s2", "s3"], "as": ["as1", "as2", "as3"]}
+    >>> verdict = judge_table(table3(), groups, fps=120.0, step=np.pi / 2, rig=paper_rig(),
+    ...                       permutation=False)
+    >>> windows = verdict.difference.windows
+    >>> windows.centres.round(2).tolist()
+    [0.09, 0.28, 0.47, 0.66]
+    """
 
     edges: np.ndarray
     centres: np.ndarray
