@@ -48,6 +48,8 @@ lazy-face helper.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from contact._lazy import attach
 
 #: ``{module: its public names}``: the one list of the public face and where each name lives.
@@ -86,3 +88,58 @@ _ATTRIBUTES = {name: f"{__name__}.{module}" for module, names in _FACE.items()
 __all__ = sorted(_ATTRIBUTES)
 
 __getattr__, __dir__ = attach(__name__, (), _ATTRIBUTES)
+
+if TYPE_CHECKING:  # the same names for a type checker (tests/test_rotor_engine.py checks
+    # this block against _FACE); at run time each loads on first use
+    from rotor._adequacy import ALPHA, MIN_ROWS, AdequacyCheck, check_adequacy, named_wave
+    from rotor._analysis import TestReport, analyse_test, group_of
+    from rotor._arm import ArmBound, arm_bound
+    from rotor._family import EXTENSION, MODELS, PARAM_UNITS, SELECTABLE, ModelFit
+    from rotor._forward import PARAM_NAMES, crossing_times
+    from rotor._frames import table3, table3_tsv
+    from rotor._groups import LawOfMotionAnalysis, analyse_table
+    from rotor._inference import IDENTIFIABILITY, RollingLawInference, infer_rolling_law
+    from rotor._joint import (
+        GroupOffset,
+        fit_table,
+        group_offset,
+        lane_f,
+        launchwise_fit,
+        local_accelerations,
+        prepare_table,
+        shared_track_f,
+    )
+    from rotor._lanes import LaneTest, lane_calibration
+    from rotor._mechanics import (
+        G_STANDARD,
+        MassProperties,
+        angular_acceleration,
+        mass_properties,
+        normal_reactions,
+        optimal_collar_length,
+        paper_ball_loads,
+        paper_rotor,
+        rolling_torque,
+    )
+    from rotor._paper import (
+        BALL_RADIUS,
+        FPS,
+        HERTZ_CHECK,
+        HERTZ_CHECK_LOAD,
+        MARK_STEP,
+        PARABOLAS,
+        TABLE2,
+        TABLE3_COLUMNS,
+        TABLE3_FILENAME,
+    )
+    from rotor._parabola import paper_parabola
+    from rotor._reconcile import Difference, MisreadRules, differences_table, misread_rules
+    from rotor._rig import Rig, RigGroup, paper_rig, rig_from_mapping, solve_lambda
+    from rotor._selection import false_alarm_floor
+    from rotor._sensitivity import Experiment, Sensitivity, sensitivity_table, settling_experiment
+    from rotor._simulator import HiddenEffects, SimulatedRun, simulate_random_run
+    from rotor._tables import LANE_PRIOR, Scenario, draw_scenario, simulate_table
+    from rotor._track import track_acceleration
+    from rotor._verdict import RotorVerdict, frame_windows, judge_table, verdict_calibration
+    from rotor._windows import WindowedDifference
+

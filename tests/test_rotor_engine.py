@@ -164,3 +164,21 @@ def test_the_rotor_command_and_facades_build_no_json_quantities():
            if "rotor" in rel and (module == "surfmet.records"
                                   or module.startswith("surfmet.records."))]
     assert not bad, bad
+
+
+def test_the_type_checkers_view_of_the_face_is_the_face():
+    """rotor/__init__.py imports every face name under TYPE_CHECKING (so that the facades'
+    annotations such as ``RotorVerdict`` are real types to mypy, not Any through the lazy
+    ``__getattr__``): the same names from the same private modules as the face's table."""
+    import rotor
+
+    tree = ast.parse((ROOT / "rotor" / "__init__.py").read_text(encoding="utf-8"))
+    checked = {}
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.If) and isinstance(node.test, ast.Name)
+                and node.test.id == "TYPE_CHECKING"):
+            for imp in node.body:
+                assert isinstance(imp, ast.ImportFrom) and imp.module.startswith("rotor._")
+                for alias in imp.names:
+                    checked[alias.name] = imp.module
+    assert checked == rotor._ATTRIBUTES

@@ -6,17 +6,20 @@ carries (``adequacy.summary``) and the paper's example shows.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from rotor import AdequacyCheck, TestReport
 
 __all__ = ["a_p", "adequacy_sentences", "named_wave_of"]
 
 
-def adequacy_sentences(t: Any) -> list[str]:
+def adequacy_sentences(t: TestReport) -> list[str]:
     """What the adequacy check says about one test, in words."""
     from rotor import EXTENSION, MIN_ROWS
 
     a = t.adequacy
-    if not a.judged:
+    if a is None or not a.judged:
         return [f"not judged: {int(sum(t.used))} rows, fewer than the {MIN_ROWS} the "
                 "adequacy calibration starts at"]
     p = (f"p {a.p_value:.3g}" if math.isfinite(a.p_value) else "uncalibrated")
@@ -59,7 +62,7 @@ def adequacy_sentences(t: Any) -> list[str]:
     return lines
 
 
-def named_wave_of(t: Any) -> Any:
+def named_wave_of(t: TestReport) -> Any:
     """The plate wave named in one launch's chosen model, or None."""
     from rotor import named_wave
 
@@ -67,7 +70,7 @@ def named_wave_of(t: Any) -> Any:
     return named_wave(t.fit, span)
 
 
-def a_p(a: Any) -> str:
+def a_p(a: AdequacyCheck | None) -> str:
     """An adequacy check's calibrated p in words (``-`` when there is none)."""
     return "-" if a is None or not math.isfinite(a.p_value) else f"{a.p_value:.3g}"
 

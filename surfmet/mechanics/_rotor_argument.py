@@ -9,9 +9,13 @@ gathers), which reads the sentences shared by both from here.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from surfmet.mechanics.rotor_rough_bound import deciding_bound, rough_bound_line
+
+if TYPE_CHECKING:
+    from rotor import ArmBound, LawOfMotionAnalysis, RotorVerdict
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
 __all__ = ["LOWER_BOUND", "MISREAD_WHY", "argument_lines", "differences_lines", "lane_line",
            "permutation_line", "windows_lines"]
@@ -21,7 +25,7 @@ LOWER_BOUND = ("a lower bound on lambda conditional on the slope, not a confiden
                "as the slope falls to where the rolling torque vanishes")
 
 
-def permutation_line(v: Any) -> str | None:
+def permutation_line(v: RotorVerdict) -> str | None:
     pt = v.permutation
     if pt is None:
         return None
@@ -32,7 +36,7 @@ def permutation_line(v: Any) -> str | None:
             f"weaker p = {v.weaker_p:.2g}")
 
 
-def _rough_lines(rough: Any, b: Any) -> list[str]:
+def _rough_lines(rough: RoughArmBound | None, b: ArmBound) -> list[str]:
     if rough is None:
         return []
     return rough_bound_line(rough, b.friction_arm)
@@ -42,11 +46,11 @@ def _deg(x: float) -> str:
     return f"{math.degrees(x):.3g} deg" if math.isfinite(x) else "none (beyond 90 deg)"
 
 
-def argument_lines(v: Any, rough: Any = None) -> list[str]:
+def argument_lines(v: RotorVerdict, rough: RoughArmBound | None = None) -> list[str]:
     """The arm argument in words (after the exponent's line; the rough contact's extent
     after the friction arm's line, where given)."""
     b, rig = v.arm, v.rig
-    if b is None:
+    if b is None or rig is None:  # the arm argument needs the rig (no --rig: no argument)
         return []
     verdict = ("impossible: the normal force's resultant lies inside the contact, s_r <= a"
                if b.arm_ratio > 1 else "inside the bound")
@@ -84,7 +88,7 @@ MISREAD_WHY = ("the joint model flags a row off one shared track by more than 4 
 """Why the two misread rules differ (the text and the JSON's ``why_they_differ``)."""
 
 
-def differences_lines(v: Any, analysis: Any) -> list[str]:
+def differences_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis) -> list[str]:
     """The table of the four differences and the misread rules, in words."""
     from rotor import differences_table, misread_rules
 
@@ -119,12 +123,12 @@ def differences_lines(v: Any, analysis: Any) -> list[str]:
     return lines
 
 
-def windows_lines(v: Any) -> list[str]:
+def windows_lines(v: RotorVerdict) -> list[str]:
     """The model-free windows in words, one line per window (after the verdict's lines)."""
     d = v.difference
-    w = None if d is None else d.windows
-    if w is None:
+    if d is None or d.windows is None:
         return []
+    w = d.windows
     o = v.offset
     lines = [f"  model-free windowed accelerations ({o.minuend} - {o.subtrahend}, rad/s², "
              f"windows of {w.window_length * 1e3:.0f} mm; resolved: beyond two standard "
@@ -136,7 +140,7 @@ def windows_lines(v: Any) -> list[str]:
     return lines
 
 
-def lane_line(v: Any) -> str | None:
+def lane_line(v: RotorVerdict) -> str | None:
     """The lane test in one line (after the shared-track test's)."""
     lt = v.lanes
     if lt is None:

@@ -7,7 +7,10 @@ so every entry point says them.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rotor import Experiment, RotorVerdict
 
 __all__ = ["EXPERIMENT_DESIGN", "EXPERIMENT_RECORDS", "LABEL_SWAP", "SAG_MEANING",
            "experiment_for", "experiment_lines", "label_swap_text", "sensitivity_lines"]
@@ -19,7 +22,7 @@ LABEL_SWAP = ("the paper's text labels its parabolas the other way round: its 's
               "with it the sign of lambda - 1")
 """What every entry point says about the paper's swapped phi_s/phi_a labels."""
 
-def label_swap_text(v: Any) -> str | None:
+def label_swap_text(v: RotorVerdict) -> str | None:
     """The label swap, for the paper's rig and Table 3's groups; None for other rigs."""
     if v.rig is None:
         return None
@@ -32,7 +35,7 @@ def _lam(x: float) -> str:
     return f"{x:.3g}" if math.isfinite(x) else "none"
 
 
-def sensitivity_lines(v: Any) -> list[str]:
+def sensitivity_lines(v: RotorVerdict) -> list[str]:
     """The sensitivity table in words."""
     from rotor import sensitivity_table
 
@@ -64,13 +67,13 @@ SAG_MEANING = ("the sag the asymmetric group's decay implies were the plate's sh
 """What the straightedge check's sag means."""
 
 
-def experiment_for(e: Any) -> str:
+def experiment_for(e: Experiment) -> str:
     """What the settling experiment ``e`` (:class:`rotor.Experiment`) is sized for."""
     return (f"lambda 4/3 told from 1 with {e.power * 100:g} % power at {e.alpha * 100:g} % "
             f"(two-sided), launch spread {e.launch_sd:.3g} rad/s²")
 
 
-def experiment_lines(v: Any) -> list[str]:
+def experiment_lines(v: RotorVerdict) -> list[str]:
     """The experiment that would settle it, in words."""
     from rotor import settling_experiment
 

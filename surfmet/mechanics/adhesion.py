@@ -28,6 +28,7 @@ from surfmet.mechanics.scan_preparation import SPIKES
 
 if TYPE_CHECKING:
 
+    from contact.adhesion.default_grid import GridChoice
     from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
     from surfmet.mechanics.scan_preparation import ScansUsed
@@ -187,7 +188,7 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     return Adhesion(res, scans, why)
 
 
-def default_grid(size: float, e_star: float, law: Any, steps: int) -> Any:
+def default_grid(size: float, e_star: float, law: AdhesionLaw, steps: int) -> GridChoice:
     """The default grid (:class:`contact.adhesion.default_grid.GridChoice`) of a cell of
     side ``size`` (m): for a law whose step is smoothed on the grid (the Dugdale law), the
     grid that resolves the cohesive zone within memory

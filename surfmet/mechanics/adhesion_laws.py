@@ -4,7 +4,7 @@ name from its parameters, and the name of a law back."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from surfmet.errors import SurfmetInputError
 
@@ -20,8 +20,8 @@ __all__ = ["INTERACTION", "interaction_law", "interaction_name"]
 INTERACTION = "dugdale"
 
 
-def interaction_law(interaction: Any, work: float | None = None, range_: float | None = None,
-                    **parameters: float) -> AdhesionLaw:
+def interaction_law(interaction: str | AdhesionLaw, work: float | None = None,
+                    range_: float | None = None, **parameters: float) -> AdhesionLaw:
     """The adhesion law named ``interaction`` of its parameters: work ``work`` (J/m^2) and
     range ``range_`` (m) for the laws stated by the two (h0 = w / sigma0 for
     ``"dugdale"``, rho for ``"exponential"``), the keywords of its table entry for another;

@@ -15,7 +15,11 @@ the resultant lies inside whichever region carries the load.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from rotor import ArmBound, RotorVerdict
+    from surfmet.mechanics._types import ScanSource
 
 __all__ = ["MATERIALS", "RoughArmBound", "deciding_bound", "rough_arm_bound",
            "rough_basis", "rough_bound_line"]
@@ -71,7 +75,8 @@ def _label(scan: Any) -> str | None:
     return scan.metadata.get("source") or scan.metadata.get("container") or "scan"
 
 
-def rough_arm_bound(arm: Any, ball_radius: float, plate: Any, ball: Any = None, *,
+def rough_arm_bound(arm: ArmBound, ball_radius: float, plate: ScanSource,
+                    ball: ScanSource | None = None, *,
                     grid: int | None = None) -> RoughArmBound:
     """The rough contact's radius a* at the arm bound's load.
 
@@ -134,7 +139,7 @@ def rough_basis(rb: RoughArmBound) -> str:
             f"{rb.grid[0]} grid of {rb.cell * 1e6:.3g} µm cells")
 
 
-def deciding_bound(v: Any, rb: RoughArmBound | None) -> Any:
+def deciding_bound(v: RotorVerdict, rb: RoughArmBound | None) -> ArmBound:
     """The arm argument (:class:`rotor.ArmBound`) at the radius that bounds
     the arm: the verdict's own (Hertz's) unless the rough contact's a* is the larger, then
     recomputed there (:func:`rotor.arm_bound` with ``radius=``): the least

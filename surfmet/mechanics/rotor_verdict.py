@@ -11,16 +11,20 @@ import re
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from surfmet.errors import SurfmetInputError
+
+if TYPE_CHECKING:
+    from rotor import LawOfMotionAnalysis, Rig, RotorVerdict
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
 __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
            "paper_verdict", "shared_track_p_text", "table_verdict", "verdict_figure",
            "verdict_lines", "verdict_plot_path"]
 
 
-def load_rig(path: str | Path) -> Any:
+def load_rig(path: str | Path) -> Rig:
     """A :class:`rotor.Rig` from a rig JSON file (one line on any error).
 
     Parameters
@@ -92,7 +96,8 @@ def column_groups(names: Sequence[str]) -> dict[str, list[str]]:
 
 
 def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps: float,
-          step: float, rig: Any = None, mechanisms: Mapping[str, float] | None = None) -> Any:
+          step: float, rig: Rig | None = None, mechanisms: Mapping[str, float] | None = None
+          ) -> RotorVerdict:
     """The verdict on a table; with a rig its groups, fps and step, else the column prefixes.
 
     Parameters
@@ -148,7 +153,7 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
 
 
 @lru_cache(maxsize=1)
-def paper_verdict() -> Any:
+def paper_verdict() -> RotorVerdict:
     """The verdict on the paper's Table 3 with the paper's rig (cached: one answer).
 
     Returns
@@ -195,7 +200,7 @@ def _p_shown(p: float) -> str:
             else f"= {p:.3g}")
 
 
-def shared_track_p_text(v: Any) -> str:
+def shared_track_p_text(v: RotorVerdict) -> str:
     """The shared-track test's calibrated p in words, as the verdict's text and its JSON
     (``shared_track.p_text``) say it: at most the calibration's floor where it reaches it.
 
@@ -218,7 +223,7 @@ def shared_track_p_text(v: Any) -> str:
     return f"calibrated p {_p_shown(v.shared_track_p)}"
 
 
-def _rejected(v: Any) -> str:
+def _rejected(v: RotorVerdict) -> str:
     """REJECTED, said as the model's alone when the design's permutation p is weaker than
     the test's level (the wording follows the weaker p)."""
     from rotor import verdict_calibration
@@ -227,7 +232,8 @@ def _rejected(v: Any) -> str:
     return "REJECTED" if v.weaker_p <= level else "REJECTED by the model (not by the design)"
 
 
-def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
+def verdict_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis | None = None,
+                  rough: RoughArmBound | None = None) -> list[str]:
     """The verdict in words, first thing every entry point prints.
 
     Parameters
@@ -264,7 +270,7 @@ def verdict_lines(v: Any, analysis: Any = None, rough: Any = None) -> list[str]:
     return lines
 
 
-def _verdict_text(v: Any, rough: Any = None) -> list[str]:
+def _verdict_text(v: RotorVerdict, rough: RoughArmBound | None = None) -> list[str]:
     o = v.offset
     lines = [f"VERDICT  {v.sentence}",
              f"  group offset {o.minuend} - {o.subtrahend} {o.value:+.4f} rad/s², "
@@ -338,7 +344,7 @@ def verdict_plot_path(plot: str | Path) -> str:
 
 def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, paper: bool,
                   fps: float, step: float, rig_path: str | None = None
-                  ) -> tuple[Any, list[str]]:
+                  ) -> tuple[RotorVerdict | None, list[str]]:
     """The verdict ``surfmet rotor`` prints, and notes: the paper's rig for the paper's table,
     the rig file when given, else groups from the column prefixes and no rig (None when such
     a table has no two groups of two launches: the per-launch analysis still stands).
@@ -402,7 +408,7 @@ def table_verdict(ks: Sequence[int], cols: Mapping[str, Sequence[float]], *, pap
         return None, [*notes, f"no verdict: {exc}"]
 
 
-def verdict_figure(v: Any, path: str | Path) -> None:
+def verdict_figure(v: RotorVerdict, path: str | Path) -> None:
     """Local accelerations from the frames against track position, per group, with the
     joint model; and the lambda needed against the assumed slope.
 
@@ -432,7 +438,7 @@ def verdict_figure(v: Any, path: str | Path) -> None:
     draw_verdict(v, path)
 
 
-def label_swap_text(v: Any) -> str | None:
+def label_swap_text(v: RotorVerdict) -> str | None:
     """What the paper's swapped labels do (its φ_s/φ_a columns name the other group, which
     flips the sign of λ − 1), for the paper's rig; None for another rig.
 
