@@ -225,6 +225,14 @@ def _pull_off(cyc: Any, unit: str, scale: float) -> str:
             "is not tensile)")
 
 
+def _loads_shown(before: float, after: float) -> tuple[float, float]:
+    """The loads across a jump as printed: one that is round-off beside the other (the
+    load before contact, ~1e-29 of the pull-off) shows as 0, not as 2.1e-29."""
+    big = max(abs(before), abs(after))
+    return (0.0 if abs(before) < 1e-9 * big else before,
+            0.0 if abs(after) < 1e-9 * big else after)
+
+
 def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> None:
     """The jumps, the energy lost and the solve record of a cycle, sphere or line alike
     (loads times ``scale`` in ``force_unit``)."""
@@ -234,9 +242,10 @@ def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> N
         if jump is None:
             print(f"{name:15s} none within the approach range")
         else:
+            before, after = _loads_shown(jump.load_before * scale, jump.load_after * scale)
             print(f"{name:15s} at approach {format_length(jump.approach)} (+- "
-                  f"{format_length(jump.step / 2)}), load {jump.load_before * scale:.4g} -> "
-                  f"{jump.load_after * scale:.4g} {force_unit}"
+                  f"{format_length(jump.step / 2)}), load {before:.4g} -> "
+                  f"{after:.4g} {force_unit}"
                   f"{_how(jump)}")
     print(f"hysteresis      {cyc.hysteresis_energy:.4g} {energy_unit} lost in the cycle"
           f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
