@@ -11,6 +11,9 @@ the pressure cap (hardness), ``inf`` for a purely elastic contact. Sets used bel
 - free points ``F``: 0 < p < hmax (in contact, pressure not capped);
 - zero points ``Z``: p = 0 (out of contact);
 - yielded points ``Y``: p = hmax (plastic).
+
+The conjugate-gradient passes run on numba's threads by chunks of cells
+(:mod:`contact.bem.chunks`): the same answer whatever the number of threads.
 """
 
 from __future__ import annotations
@@ -18,64 +21,104 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
+from contact.bem.chunks import apply_scale, bounds, compact, n_chunks, scaled_total, uncapped_total
+from contact.bem.plastic_kernels import (  # noqa: F401 - one module of kernels for the callers
+    add_step,
+    blend,
+    projected_gradient,
+    step_terms,
+)
+
 # --------------------------------------------------------------------------------------
 # Polonsky-Keer conjugate gradient passes
 # --------------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def pk_gap_mean(p, u, h, hmax):  # pragma: no cover - compiled
     """Sum of the gap u + h over F, |F|, sum of p over the contact F+Y, |F+Y|."""
+    nch = n_chunks(p.size)
+    sums = np.zeros((nch, 2))
+    counts = np.zeros((nch, 2), dtype=np.int64)
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        s = 0.0
+        n = 0
+        sp = 0.0
+        nc = 0
+        for i in range(lo, hi):
+            pi = p[i]
+            if pi > 0.0:
+                nc += 1
+                sp += pi
+                if pi < hmax:
+                    s += u[i] + h[i]
+                    n += 1
+        sums[c, 0] = s
+        sums[c, 1] = sp
+        counts[c, 0] = n
+        counts[c, 1] = nc
     s = 0.0
-    n = 0
     sp = 0.0
+    n = 0
     nc = 0
-    for i in range(p.size):
-        pi = p[i]
-        if pi > 0.0:
-            nc += 1
-            sp += pi
-            if pi < hmax:
-                s += u[i] + h[i]
-                n += 1
+    for c in range(nch):
+        s += sums[c, 0]
+        sp += sums[c, 1]
+        n += counts[c, 0]
+        nc += counts[c, 1]
     return s, n, sp, nc
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def pk_residual(p, u, h, gbar, hmax, d):  # pragma: no cover - compiled
     """Write d = u + h - gbar; return (sum_F d^2, sum of squared violations, #violations).
 
     A violation is an overlap out of contact (p = 0, d < 0) or a yielded point that
     separates (p = hmax, d > 0).
     """
+    nch = n_chunks(p.size)
+    sums = np.zeros((nch, 2))
+    counts = np.zeros(nch, dtype=np.int64)
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        G = 0.0
+        viol = 0.0
+        nviol = 0
+        for i in range(lo, hi):
+            di = u[i] + h[i] - gbar
+            d[i] = di
+            pi = p[i]
+            if pi <= 0.0:
+                if di < 0.0:
+                    viol += di * di
+                    nviol += 1
+            elif pi >= hmax:
+                if di > 0.0:
+                    viol += di * di
+                    nviol += 1
+            else:
+                G += di * di
+        sums[c, 0] = G
+        sums[c, 1] = viol
+        counts[c] = nviol
     G = 0.0
     viol = 0.0
     nviol = 0
-    for i in range(p.size):
-        di = u[i] + h[i] - gbar
-        d[i] = di
-        pi = p[i]
-        if pi <= 0.0:
-            if di < 0.0:
-                viol += di * di
-                nviol += 1
-        elif pi >= hmax:
-            if di > 0.0:
-                viol += di * di
-                nviol += 1
-        else:
-            G += di * di
+    for c in range(nch):
+        G += sums[c, 0]
+        viol += sums[c, 1]
+        nviol += counts[c]
     return G, viol, nviol
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def _free_rows(src, t, beta, p, hmax, out, nx):  # pragma: no cover - compiled
     """out = src + beta t on F, 0 elsewhere (with ``t`` None: out = src on F), and t = out
     when given; return the rows [lo, hi) of F. ``out`` may be float32."""
     ny = p.size // nx
-    lo = ny
-    hi = 0
-    for r in range(ny):
+    has = np.zeros(ny, dtype=np.bool_)
+    for r in nb.prange(ny):
         row_has = False
         base = r * nx
         for c in range(nx):
@@ -93,7 +136,11 @@ def _free_rows(src, t, beta, p, hmax, out, nx):  # pragma: no cover - compiled
                 if t is not None:
                     t[i] = 0.0
                 out[i] = 0.0
-        if row_has:
+        has[r] = row_has
+    lo = ny
+    hi = 0
+    for r in range(ny):
+        if has[r]:
             if r < lo:
                 lo = r
             hi = r + 1
@@ -102,16 +149,28 @@ def _free_rows(src, t, beta, p, hmax, out, nx):  # pragma: no cover - compiled
     return lo, hi
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def _free_mean(x, p, hmax):  # pragma: no cover - compiled
     """The mean of x over F (0 when F is empty)."""
+    nch = n_chunks(p.size)
+    sums = np.zeros(nch)
+    counts = np.zeros(nch, dtype=np.int64)
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        s = 0.0
+        n = 0
+        for i in range(lo, hi):
+            pi = p[i]
+            if pi > 0.0 and pi < hmax:
+                s += x[i]
+                n += 1
+        sums[c] = s
+        counts[c] = n
     s = 0.0
     n = 0
-    for i in range(p.size):
-        pi = p[i]
-        if pi > 0.0 and pi < hmax:
-            s += x[i]
-            n += 1
+    for c in range(nch):
+        s += sums[c]
+        n += counts[c]
     return s / n if n > 0 else 0.0
 
 
@@ -122,76 +181,102 @@ def pk_direction(d, p, t, beta, hmax, direction_fft, nx):  # pragma: no cover - 
     return _free_rows(d, t, beta, p, hmax, direction_fft, nx)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def pk_step_length(r, t, d, p, hmax, subtract_mean):  # pragma: no cover - compiled
     """The CG step tau = sum_F d t / sum_F (r - rbar) t, with rbar the mean of r on F.
 
     Returns (tau, rbar). In approach control the mean is not subtracted (rbar = 0).
     """
     rbar = _free_mean(r, p, hmax) if subtract_mean else 0.0
+    nch = n_chunks(p.size)
+    sums = np.zeros((nch, 2))
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        num = 0.0
+        den = 0.0
+        for i in range(lo, hi):
+            pi = p[i]
+            if pi > 0.0 and pi < hmax:
+                ti = t[i]
+                num += d[i] * ti
+                den += (r[i] - rbar) * ti
+        sums[c, 0] = num
+        sums[c, 1] = den
     num = 0.0
     den = 0.0
-    for i in range(p.size):
-        pi = p[i]
-        if pi > 0.0 and pi < hmax:
-            ti = t[i]
-            num += d[i] * ti
-            den += (r[i] - rbar) * ti
+    for c in range(nch):
+        num += sums[c, 0]
+        den += sums[c, 1]
     tau = num / den if den != 0.0 else 0.0
     return tau, rbar
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def pk_update_pressure(p, t, d, tau, hmax, index, value):  # pragma: no cover - compiled
     """Step p -= tau t on F, project onto [0, hmax], let violating points enter.
 
     The linear trial step is p - tau t; everything the projection changes relative to it
-    is recorded as a correction (cell in ``index``, amount in ``value``) so that the caller
-    can update the displacement by superposition. Returns (#corrections, sum p, #entered).
+    is recorded as a correction (cell in ``index``, amount in ``value``, in cell order) so
+    that the caller can update the displacement by superposition; ``index``/``value`` must
+    hold p.size entries. Returns (#corrections, sum p, #entered).
     """
-    nc = 0
-    total = 0.0
-    entered = 0
-    for i in range(p.size):
-        pi = p[i]
-        if pi > 0.0 and pi < hmax:
-            trial = pi - tau * t[i]
-            new = trial
-            if new < 0.0:
-                new = 0.0
-            elif new > hmax:
-                new = hmax
-            if new != trial:
-                index[nc] = i
-                value[nc] = new - trial
-                nc += 1
-        elif pi <= 0.0:
-            new = 0.0
-            di = d[i]
-            if di < 0.0:
-                new = -tau * di
-                if new > hmax:
-                    new = hmax
-                if new > 0.0:
-                    index[nc] = i
-                    value[nc] = new
-                    nc += 1
-                    entered += 1
-                else:
-                    new = 0.0
-        else:
-            new = hmax
-            di = d[i]
-            if di > 0.0:
-                new = hmax - tau * di
+    nch = n_chunks(p.size)
+    sums = np.zeros(nch)
+    counts = np.zeros((nch, 2), dtype=np.int64)
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        nc = lo  # each chunk writes its corrections from its own first cell on
+        total = 0.0
+        entered = 0
+        for i in range(lo, hi):
+            pi = p[i]
+            if pi > 0.0 and pi < hmax:
+                trial = pi - tau * t[i]
+                new = trial
                 if new < 0.0:
                     new = 0.0
-                index[nc] = i
-                value[nc] = new - hmax
-                nc += 1
-                entered += 1
-        p[i] = new
-        total += new
+                elif new > hmax:
+                    new = hmax
+                if new != trial:
+                    index[nc] = i
+                    value[nc] = new - trial
+                    nc += 1
+            elif pi <= 0.0:
+                new = 0.0
+                di = d[i]
+                if di < 0.0:
+                    new = -tau * di
+                    if new > hmax:
+                        new = hmax
+                    if new > 0.0:
+                        index[nc] = i
+                        value[nc] = new
+                        nc += 1
+                        entered += 1
+                    else:
+                        new = 0.0
+            else:
+                new = hmax
+                di = d[i]
+                if di > 0.0:
+                    new = hmax - tau * di
+                    if new < 0.0:
+                        new = 0.0
+                    index[nc] = i
+                    value[nc] = new - hmax
+                    nc += 1
+                    entered += 1
+            p[i] = new
+            total += new
+        sums[c] = total
+        counts[c, 0] = nc - lo
+        counts[c, 1] = entered
+    total = 0.0
+    entered = 0
+    for c in range(nch):
+        total += sums[c]
+        entered += counts[c, 1]
+    nc = compact(index, value, 0, counts[:, 0], nch, p.size)
     return nc, total, entered
 
 
@@ -209,13 +294,7 @@ def capped_scale(p, target, hmax, index, value, nc):  # pragma: no cover - compi
     they carry less), p is left as it is with s = 1: points must leave the cap or enter,
     which scaling cannot do; the caller checks the total. Returns (s, #corrections).
     """
-    total = 0.0
-    n_cap = 0
-    for i in range(p.size):
-        if p[i] >= hmax:
-            n_cap += 1
-        else:
-            total += p[i]
+    total, n_cap = uncapped_total(p, hmax)
     free_target = target - n_cap * hmax if n_cap > 0 else target
     if free_target <= 0.0 or total <= 0.0:
         # No scaling of the uncapped points can balance the load: the capped points
@@ -228,18 +307,8 @@ def capped_scale(p, target, hmax, index, value, nc):  # pragma: no cover - compi
         # Newton on the piecewise-linear f(s) = sum min(s p, hmax) - free_target (exact
         # once the capped set stops changing; a handful of passes at most).
         for _ in range(60):
-            f = -free_target
-            df = 0.0
-            for i in range(p.size):
-                pi = p[i]
-                if pi >= hmax:
-                    continue
-                v = s * pi
-                if v >= hmax:
-                    f += hmax
-                else:
-                    f += v
-                    df += pi
+            f, df = scaled_total(p, s, hmax)
+            f -= free_target
             if df <= 0.0 or abs(f) <= 1e-15 * target:
                 break
             s_new = s - f / df
@@ -248,54 +317,38 @@ def capped_scale(p, target, hmax, index, value, nc):  # pragma: no cover - compi
             s = s_new
     for k in range(nc):
         value[k] *= s
-    for i in range(p.size):
-        pi = p[i]
-        if pi >= hmax:
-            if s != 1.0:
-                index[nc] = i
-                value[nc] = (1.0 - s) * hmax
-                nc += 1
-            continue
-        v = s * pi
-        if v > hmax:
-            index[nc] = i
-            value[nc] = hmax - v
-            nc += 1
-            v = hmax
-        p[i] = v
-    return s, nc
+    return s, apply_scale(p, s, hmax, index, value, nc)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def axpy_scale(u, r, tau, s):  # pragma: no cover - compiled
     """u = s (u - tau r), in place (r may be float32)."""
-    for i in range(u.size):
+    for i in nb.prange(u.size):
         u[i] = s * (u[i] - tau * r[i])
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def sparse_convolve_add(u, index, value, nc, kernel, nx, periodic):  # pragma: no cover
     """u += K * c for a sparse c given as (index, value) pairs, by direct summation.
 
     ``kernel`` is the free-boundary quadrant K[|di|, |dj|] or, when ``periodic``, the
     wrapped periodic kernel K[di mod ny, dj mod nx]. Cost nc * u.size: the caller uses it
-    only when a few points changed.
+    only when a few points changed. Rows run on the threads; each cell adds the pairs in
+    their order, as a serial pass would.
     """
     ny = u.size // nx
-    for k in range(nc):
-        ci = index[k] // nx
-        cj = index[k] % nx
-        v = value[k]
-        for m in range(ny):
+    for m in nb.prange(ny):
+        base = m * nx
+        for k in range(nc):
+            ci = index[k] // nx
+            cj = index[k] % nx
+            v = value[k]
             if periodic:
                 dm = (m - ci) % ny
-            else:
-                dm = m - ci if m >= ci else ci - m
-            base = m * nx
-            if periodic:
                 for n in range(nx):
                     u[base + n] += v * kernel[dm, (n - cj) % nx]
             else:
+                dm = m - ci if m >= ci else ci - m
                 for n in range(cj):
                     u[base + n] += v * kernel[dm, cj - n]
                 for n in range(cj, nx):
@@ -333,7 +386,7 @@ def masked_copy(d, p, hmax, out, nx):  # pragma: no cover - compiled
     return _free_rows(d, None, 0.0, p, hmax, out, nx)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, parallel=True)
 def center_on_free(zin, z, d, p, hmax, subtract_mean):  # pragma: no cover - compiled
     """z = zin - mean_F(zin) on F (0 elsewhere); return rho = sum_F d z.
 
@@ -341,182 +394,21 @@ def center_on_free(zin, z, d, p, hmax, subtract_mean):  # pragma: no cover - com
     hence the mean removal in load control.
     """
     zbar = _free_mean(zin, p, hmax) if subtract_mean else 0.0
+    nch = n_chunks(p.size)
+    sums = np.zeros(nch)
+    for c in nb.prange(nch):
+        lo, hi = bounds(c, nch, p.size)
+        rho = 0.0
+        for i in range(lo, hi):
+            pi = p[i]
+            if pi > 0.0 and pi < hmax:
+                zi = zin[i] - zbar
+                z[i] = zi
+                rho += d[i] * zi
+            else:
+                z[i] = 0.0
+        sums[c] = rho
     rho = 0.0
-    for i in range(p.size):
-        pi = p[i]
-        if pi > 0.0 and pi < hmax:
-            zi = zin[i] - zbar
-            z[i] = zi
-            rho += d[i] * zi
-        else:
-            z[i] = 0.0
+    for c in range(nch):
+        rho += sums[c]
     return rho
-
-
-# --------------------------------------------------------------------------------------
-# Elastic-perfectly-plastic safeguards: projected-gradient step and exact line search
-# --------------------------------------------------------------------------------------
-
-
-@nb.njit(cache=True)
-def _capped_sum(x, candidates, m, mu, hmax):  # pragma: no cover - compiled
-    """sum over the candidates of clip(x - mu, 0, hmax) and the count strictly inside."""
-    f = 0.0
-    cnt = 0
-    for k in range(m):
-        v = x[candidates[k]] - mu
-        if v >= hmax:
-            f += hmax
-        elif v > 0.0:
-            f += v
-            cnt += 1
-    return f, cnt
-
-
-@nb.njit(cache=True)
-def _load_shift(x, candidates, xmin, xmin_c, xmax, target, hmax):  # pragma: no cover
-    """The shift mu with sum clip(x - mu, 0, hmax) = target (the set-up of the projection).
-
-    ``xmin``, ``xmax`` bound x; ``xmin_c`` is the least x over the loaded points (inf if
-    none). ``candidates`` receives the indices of the points that can carry pressure.
-    """
-    n = x.size
-    # At mu = min over the loaded points of x minus hmax every loaded point would sit
-    # at the cap, which carries at least the current total when that is feasible
-    # (sum p = target, p <= hmax): a lower bound of mu. Otherwise (a start that
-    # overloads its points) the bound comes from all points.
-    a = (xmin_c if xmin_c < np.inf else xmin) - hmax
-    b = xmax
-    m = 0
-    for i in range(n):
-        if x[i] > a:
-            candidates[m] = i
-            m += 1
-    f, _ = _capped_sum(x, candidates, m, a, hmax)
-    if f < target:
-        a = xmin - hmax
-        for i in range(n):
-            candidates[i] = i
-        m = n
-    mu = min(max(0.0, a), b)
-    for _ in range(200):
-        f, cnt = _capped_sum(x, candidates, m, mu, hmax)
-        f -= target
-        if f > 0.0:
-            a = mu
-        else:
-            b = mu
-        if abs(f) <= 1e-15 * target or b - a <= 1e-15 * max(abs(a), abs(b)):
-            break
-        new = mu + f / cnt if cnt > 0 else 0.5 * (a + b)
-        if not (a < new < b):
-            new = 0.5 * (a + b)
-        if new == mu:
-            break
-        mu = new
-    return mu
-
-
-@nb.njit(cache=True)
-def projected_gradient(p, d, alpha, target, hmax, load_control, s, candidates,
-                       nx):  # pragma: no cover - compiled
-    """s = P(p - alpha d) - p, the step to the projection of a gradient step.
-
-    P is the Euclidean projection onto the feasible pressures: the box 0 <= p <= hmax
-    and, in load control, the hyperplane sum(p) = target. That projection is
-    clip(x - mu, 0, hmax) with the one shift mu that restores the total (the Lagrange
-    multiplier of the load; it plays the role of the approach), found by safeguarded
-    Newton on the piecewise-linear, non-increasing total. Only points with x above a
-    lower bound of mu can carry pressure; they are gathered in ``candidates`` first, so that
-    the far, open part of the grid is passed over once.
-
-    Returns (sum d s, sum s^2, mu, lo, hi) with [lo, hi) the rows where s != 0.
-    """
-    n = p.size
-    xmin_c = np.inf
-    xmin = np.inf
-    xmax = -np.inf
-    for i in range(n):
-        x = p[i] - alpha * d[i]
-        s[i] = x
-        if x < xmin:
-            xmin = x
-        if x > xmax:
-            xmax = x
-        if p[i] > 0.0 and x < xmin_c:
-            xmin_c = x
-    mu = 0.0
-    if load_control:
-        mu = _load_shift(s, candidates, xmin, xmin_c, xmax, target, hmax)
-    gs = 0.0
-    ss = 0.0
-    lo = n // nx
-    hi = 0
-    for i in range(n):
-        v = s[i] - mu
-        if v >= hmax:
-            v = hmax
-        elif v < 0.0:
-            v = 0.0
-        si = v - p[i]
-        s[i] = si
-        if si != 0.0:
-            gs += d[i] * si
-            ss += si * si
-            r = i // nx
-            if r < lo:
-                lo = r
-            hi = r + 1
-    if hi == 0:
-        lo = 0
-    return gs, ss, mu, lo, hi
-
-
-@nb.njit(cache=True)
-def add_step(p, s, u, w, theta, hmax):  # pragma: no cover - compiled
-    """p += theta s (kept in [0, hmax], a point meant to reach the cap put on it exactly),
-    u += theta w (w may be float32)."""
-    snap = hmax * (1.0 - 1e-14)
-    for i in range(p.size):
-        si = s[i]
-        if si != 0.0:
-            v = p[i] + theta * si
-            if v >= snap:
-                v = hmax
-            elif v < 0.0:
-                v = 0.0
-            p[i] = v
-        u[i] += theta * w[i]
-
-
-@nb.njit(cache=True)
-def step_terms(p, p_old, u, u_old, d):  # pragma: no cover - compiled
-    """For the step s = p - p_old with K s = u - u_old: (sum d s, sum s K s, sum p).
-
-    Along p_old + theta s the objective changes by theta sum(d s) + theta^2/2 sum(s K s):
-    its exact minimiser is theta = -sum(d s) / sum(s K s), and the full step raises the
-    objective when that is below 1/2.
-    """
-    gs = 0.0
-    sks = 0.0
-    tot = 0.0
-    for i in range(p.size):
-        pi = p[i]
-        si = pi - p_old[i]
-        if si != 0.0:
-            gs += d[i] * si
-            sks += si * (u[i] - u_old[i])
-        tot += pi
-    return gs, sks, tot
-
-
-@nb.njit(cache=True)
-def blend(p, p_old, u, u_old, theta):  # pragma: no cover - compiled
-    """p = p_old + theta (p - p_old), u likewise, in place (a damped step)."""
-    for i in range(p.size):
-        po = p_old[i]
-        if p[i] != po:
-            p[i] = po + theta * (p[i] - po)
-        uo = u_old[i]
-        u[i] = uo + theta * (u[i] - uo)
-

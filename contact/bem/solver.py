@@ -17,6 +17,7 @@ import numpy as np
 
 from contact._validate import positive
 from contact.bem.bounds import PressureBounds
+from contact.bem.chunks import kernel_threads
 from contact.bem.iteration import iterate, start
 from contact.bem.options import SolveOptions, options_of
 from contact.bem.result import ContactResult, build_result
@@ -170,9 +171,12 @@ def _run(problem: Problem, stats: SolverStats, p_init: np.ndarray | None, approa
     """Start and iterate ``problem`` (units where E* = 1); the final state and whether it
     converged."""
     try:
-        work = workspace(problem)
-        state = start(problem, work, stats, p_init, approach, displacement)
-        ok = iterate(problem, state, work, stats, callback)
+        # the grid passes on as many threads as the FFT (their chunks, hence the answer,
+        # do not depend on it)
+        with kernel_threads(problem.workers):
+            work = workspace(problem)
+            state = start(problem, work, stats, p_init, approach, displacement)
+            ok = iterate(problem, state, work, stats, callback)
     finally:
         problem.operator.release()
     return state, ok
