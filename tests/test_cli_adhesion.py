@@ -178,3 +178,19 @@ def test_a_retraction_that_never_pulled_is_named(capsys, monkeypatch):
     line = next(v for v in capsys.readouterr().out.splitlines() if v.startswith("pull-off"))
     assert "0 µN: the retraction never pulled (its least load, 0.001" in line
     assert "is not tensile" in line
+
+
+def test_the_jump_lines_show_a_round_off_load_as_zero(capsys):
+    """Before contact the load is round-off (~1e-29 of the pull-off): the jump-in line reads
+    'load 0 -> -4.7 µN', the number a person compares with the pull-off, not 2.1e-29 (and
+    the jump-out ends at 0, not at 1e-21); the JSON keeps the solver's values."""
+    argv = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--interaction", "dugdale",
+            "--work-of-adhesion", "50mJ/m2", "--range", "2nm", "--grid", "32", "--steps", "8",
+            "--quiet"]
+    assert main(argv) == 0
+    lines = {ln.split()[0]: ln for ln in capsys.readouterr().out.splitlines() if ln.strip()}
+    for name in ("jump-in", "jump-out"):
+        loads = lines[name].split(", load ")[1].split(" ->")[0], lines[name].split("-> ")[1]
+        shown = [float(x.split()[0]) for x in loads]
+        assert all(x == 0.0 or abs(x) > 1e-9 * max(map(abs, shown)) for x in shown), lines[name]
+    assert lines["jump-out"].split("-> ")[1].startswith("0 µN")  # apart again: no load
