@@ -39,7 +39,33 @@ class Difference:
     """One of the differences: ``value`` (rad/s²) with ``stderr`` (and ``ci_low``/``ci_high``
     where the model gives an interval; NaN otherwise), ``model`` (its key), ``label`` (what
     it is), ``where`` (where along the track it holds), ``fits`` and ``fit_evidence`` (why),
-    ``used_by_verdict`` and ``role``."""
+    ``used_by_verdict`` and ``role``.
+
+    See Also
+    --------
+    differences_table : builds the four of a table.
+
+    Examples
+    --------
+    The joint model's row on a simulated table (two launches per group, 12 rows each, the
+    symmetric group faster by 0.3 rad/s²): the difference the verdict uses, within about
+    one standard error of the truth:
+
+    >>> import dataclasses
+    >>> import numpy as np
+    >>> from rotor import (analyse_table, draw_scenario, judge_table, paper_rig,
+    ...                    simulate_table)
+    >>> rng = np.random.default_rng(1)
+    >>> scn = dataclasses.replace(draw_scenario(rng, offset=0.3), n_marks=12, launches=2)
+    >>> table = simulate_table(scn, rng)
+    >>> verdict = judge_table(table, {"s": ["s1", "s2"], "as": ["as1", "as2"]}, fps=120.0,
+    ...                       step=np.pi / 2, rig=paper_rig(), permutation=False)
+    >>> analysis = analyse_table(table)
+    >>> from rotor import differences_table
+    >>> d = next(d for d in differences_table(verdict, analysis) if d.model == "joint")
+    >>> d.used_by_verdict, d.fits, abs(d.value + 0.3) < 2 * d.stderr
+    (True, True, True)
+    """
 
     label: str
     model: str
@@ -183,7 +209,33 @@ class MisreadRules:
     """The two misread rules on one table: ``joint`` and ``per_test`` ((column, k) pairs),
     ``only_per_test`` with each row's residual under the joint shared track in frames and
     in its launch's noise sigmas; and the joint model refitted with the per-test rule's rows
-    also left out (``offset``, ``f_statistic``)."""
+    also left out (``offset``, ``f_statistic``).
+
+    See Also
+    --------
+    misread_rules : builds it for a table.
+
+    Examples
+    --------
+    On a simulated table (two launches per group, 12 rows each): every row the joint rule
+    leaves out, the per-test rule leaves out too, and the refit without both keeps the
+    simulated offset of -0.3 rad/s² inside its interval:
+
+    >>> import dataclasses
+    >>> import numpy as np
+    >>> from rotor import (analyse_table, draw_scenario, judge_table, paper_rig,
+    ...                    simulate_table)
+    >>> rng = np.random.default_rng(1)
+    >>> scn = dataclasses.replace(draw_scenario(rng, offset=0.3), n_marks=12, launches=2)
+    >>> table = simulate_table(scn, rng)
+    >>> verdict = judge_table(table, {"s": ["s1", "s2"], "as": ["as1", "as2"]}, fps=120.0,
+    ...                       step=np.pi / 2, rig=paper_rig(), permutation=False)
+    >>> analysis = analyse_table(table)
+    >>> from rotor import misread_rules
+    >>> rules = misread_rules(verdict, analysis)
+    >>> set(rules.joint) <= set(rules.per_test), rules.offset_ci[0] < -0.3 < rules.offset_ci[1]
+    (True, True)
+    """
 
     joint: tuple[tuple[str, int], ...]
     per_test: tuple[tuple[str, int], ...]

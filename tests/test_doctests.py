@@ -108,9 +108,7 @@ DOCTEST_MODULES = (
 # example (a new public function must come with one) and on a name in it that now has one.
 # The rotor's face (issue 37, item 6) made public the names surfmet's command line and
 # facades had imported from the study's modules; those that came without an example wait here.
-PENDING: frozenset[str] = frozenset({
-    "rotor.Difference", "rotor.MisreadRules",
-})
+PENDING: frozenset[str] = frozenset()
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 
