@@ -9,7 +9,6 @@ never surface as an ``IndexError`` from deep inside numpy.
 
 from __future__ import annotations
 
-import inspect
 import os
 import struct
 import zipfile
@@ -22,6 +21,8 @@ from typing import Any
 import numpy as np
 
 from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
+from surfmet.io._reader_options import GENERIC_OPTIONS as GENERIC_OPTIONS
+from surfmet.io._reader_options import check_options, take_generic_options
 from surfmet.io.sources import Source, source_bytes
 from surfmet.model import (
     MAX_HEIGHT_SPAN,
@@ -348,8 +349,8 @@ def read_bytes(
     spec = _FORMATS.get(fmt)
     if spec is None or spec.decode is None:
         raise SurfmetFormatError(f"{name}: no reader for format {fmt!r}; known: {sorted(_FORMATS)}")
-    stated = _generic_options(spec, options, name)
-    _check_options(spec, options)
+    stated = take_generic_options(spec.name, spec.decode, options, name)
+    check_options(spec.name, spec.decode, options)
     from surfmet.io.calibration import UnitContradiction
 
     try:
@@ -373,53 +374,6 @@ def read_bytes(
 
         scan = state_units(scan, name, **stated)
     return _validated(scan, fmt, name)
-
-
-#: The options every read takes, whatever the format: the units a file may not state.
-GENERIC_OPTIONS = ("height_unit", "dx", "dy")
-
-
-def _accepts(spec: FormatSpec, option: str) -> bool:
-    assert spec.decode is not None  # the read refused a format without a decoder first
-    params = inspect.signature(spec.decode).parameters
-    return option in params or any(p.kind is inspect.Parameter.VAR_KEYWORD
-                                   for p in params.values())
-
-
-def _generic_options(spec: FormatSpec, options: dict[str, Any], name: str) -> dict[str, Any]:
-    """Take out of ``options`` the units the user states that the reader does not take
-    itself (:func:`surfmet.io.calibration.state_units` applies them after the read), and
-    refuse ``channel`` for a format that holds a single one."""
-    if options.get("channel") is not None and not _accepts(spec, "channel"):
-        raise SurfmetInputError(f"{name}: a {spec.name} file holds a single channel: no "
-                                f"channel can be chosen (got {options['channel']!r})")
-    if options.get("channel", 0) is None:
-        options.pop("channel")
-    stated = {}
-    for key in GENERIC_OPTIONS:
-        if key in options and not _accepts(spec, key):
-            value = options.pop(key)
-            if value is not None:
-                stated[key] = value
-    return stated
-
-
-def _check_options(spec: FormatSpec, options: dict[str, Any]) -> None:
-    # A misspelt option is the user's mistake, not damage in the file: say so before the
-    # decoder runs, rather than letting a TypeError pass for a corrupted file.
-    if not options:
-        return
-    assert spec.decode is not None  # the read refused a format without a decoder first
-    params = inspect.signature(spec.decode).parameters
-    if any(p.kind is inspect.Parameter.VAR_KEYWORD for p in params.values()):
-        return
-    accepted = [n for n, p in list(params.items())[2:] if p.kind is not p.VAR_POSITIONAL]
-    unknown = sorted(set(options) - set(accepted))
-    if unknown:
-        raise SurfmetInputError(
-            f"the {spec.name} reader takes no option(s) {unknown}; it accepts "
-            f"{accepted or 'no options'}"
-        )
 
 
 def _validated(scan: Any, fmt: str, name: str) -> Scan:

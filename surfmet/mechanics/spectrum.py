@@ -9,7 +9,8 @@ Cut-offs. The binned log-PSD is fitted by a continuous piecewise-linear curve wi
 knots, ``log q_r`` (roll-off) and ``log q_s`` (short-wavelength cut-off), chosen by least
 squares over all pairs of bin edges. A knot counts as a cut-off only where the slope changes
 by more than 1 (a self-affine slope is -2-2H ≤ -2, a plateau is 0); wavevectors that carry
-no power at all (below 1e-12 of the peak) end the spectrum and mark the short cut-off.
+no power at all (below 1e-12 of the peak) end the spectrum and mark the short cut-off
+(:mod:`surfmet.mechanics._spectrum_cutoffs`, with the noise floor).
 The Hurst exponent is then fitted by :func:`surfmet.psd.fit_hurst` between the cut-offs.
 
 Moments. ``m0, m2, m4`` of the profiles (Nayak 1971) come from the radial PSD with the
@@ -39,6 +40,7 @@ from contact.roughcontact import (
     summit_parameters,
 )
 from surfmet.errors import SurfmetInputError
+from surfmet.mechanics._spectrum_cutoffs import cutoffs, noise_floor
 from surfmet.model import Topography
 from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
 
@@ -50,8 +52,6 @@ if TYPE_CHECKING:
 RESOLUTION_DEPENDENT = ("slope_rms", "curvature_rms", "nayak_alpha", "summit_density",
                         "summit_radius", "summit_sigma", "plasticity_index")
 
-#: Minimum change of log-log slope for a knot to count as a cut-off.
-_KNOT_MIN = 1.0
 #: A Hurst exponent fitted over fewer decades of wavevector than this is not a measured
 #: self-affine range (a power law needs at least a decade to be told from a bend).
 MIN_HURST_DECADES = 1.0
@@ -77,7 +77,8 @@ class Spectrum:
         Cut-off wavevectors (rad/m), None where the spectrum shows none.
     noise_floor : float or None
         Wavevector (rad/m) from which the spectrum turns flat (an instrument's noise floor,
-        :func:`_noise_floor`); the power law is fitted below it. None where there is none.
+        :func:`surfmet.mechanics._spectrum_cutoffs.noise_floor`); the power law is fitted
+        below it. None where there is none.
     h_rms, slope_rms, curvature_rms : float
         From the spectrum (m, -, 1/m).
     h_rms_real, slope_rms_real, curvature_rms_real : float
@@ -190,117 +191,6 @@ def _real_space(z: np.ndarray, dx: float, dy: float, periodic: bool
     return h, slope, curv
 
 
-def _binned(spec: PSD, bins_per_decade: int = 10) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cell-weighted mean PSD in logarithmic bins: (log q, log C, bin upper edges in log q)."""
-    lq = np.log10(spec.q)
-    edges = np.arange(math.floor(lq.min() * bins_per_decade),
-                      math.ceil(lq.max() * bins_per_decade) + 1) / bins_per_decade
-    idx = np.clip(np.searchsorted(edges, lq, side="right") - 1, 0, edges.size - 2)
-    w = spec.weights
-    n = np.bincount(idx, weights=w, minlength=edges.size - 1)
-    ok = n > 0
-    bq = np.bincount(idx, weights=lq * w, minlength=edges.size - 1)[ok] / n[ok]
-    bc = np.bincount(idx, weights=spec.C * w, minlength=edges.size - 1)[ok] / n[ok]
-    return bq, bc, edges[1:][ok]
-
-
-def _cutoffs(spec: PSD, q_min: float = 0.0
-             ) -> tuple[float | None, float | None, tuple[float, float]]:
-    """Roll-off and short cut-off wavevectors and the self-affine band between them.
-
-    ``q_min``: wavevectors below it are left out (a window's main lobe flattens them).
-    """
-    has_power = spec.C > 1e-12 * float(spec.C.max())
-    short = None
-    keep = spec.q >= q_min
-    if not has_power[-1]:
-        # the spectrum carries no power beyond this wavevector: a hard short cut-off
-        short = float(spec.q[np.nonzero(has_power)[0].max()])
-        keep &= spec.q <= short * (1.0 - 1e-9) * 10**-0.1  # drop the bin cut through
-    bq, bc, _ = _binned(PSD(q=spec.q[keep], C=spec.C[keep], kind=spec.kind, dq=spec.dq,
-                            weights=spec.weights[keep]))
-    y = np.log10(bc)
-    x = bq
-    m = x.size
-    lo_q, hi_q = float(10 ** x[0]), float(10 ** x[-1])
-    roll = None
-    if m < 5:
-        return roll, short, (lo_q, hi_q)
-    # knots on a fine grid strictly inside the data (a knot at an end duplicates the
-    # linear term); a continuous knot position follows a bend that a bin average smears.
-    # Models with no knot, a roll-off, a short cut-off or both compete by the Bayesian
-    # information criterion (a knot costs two parameters, its place and its bend), so
-    # that the periodogram's scatter on a single scan does not pass for a cut-off.
-    grid = np.arange(x[2], x[-2] + 1e-9, 0.02)
-    cands: list[tuple[float | None, float | None]] = [(None, None)]
-    cands += [(g, None) for g in grid]
-    if short is None:
-        cands += [(None, g) for g in grid if g >= x[-4]]
-        cands += [(g, h) for k, g in enumerate(grid) for h in grid[k + 10:] if h >= x[-4]]
-    # (BIC, roll-off knot, short knot, coefficients); the knot-free candidate, first, always
-    # replaces the start, whose empty coefficients are never read
-    best: tuple[float, float | None, float | None, np.ndarray] = (math.inf, None, None,
-                                                                  np.empty(0))
-    for xr, xs in cands:
-        cols = [np.ones(m), x]
-        if xr is not None:
-            cols.append(np.maximum(x - xr, 0.0))
-        if xs is not None:
-            cols.append(np.maximum(x - xs, 0.0))
-        A = np.column_stack(cols)
-        coef, *_ = np.linalg.lstsq(A, y, rcond=None)
-        rss = max(float(np.sum((A @ coef - y) ** 2)), 1e-12 * m)
-        bic = m * math.log(rss / m) + (2 + 2 * (len(cols) - 2)) * math.log(m)
-        if bic < best[0]:
-            best = (bic, xr, xs, coef)
-    _, xr, xs, coef = best
-    k = 2
-    if xr is not None:
-        if coef[k] < -_KNOT_MIN:
-            roll = float(10**xr)
-            lo_q = roll
-        k += 1
-    if xs is not None and coef[k] < -_KNOT_MIN:
-        short = float(10**xs)
-        hi_q = short
-    if short is not None:
-        hi_q = min(hi_q, short)
-    return roll, short, (lo_q, hi_q)
-
-
-def _noise_floor(spec: PSD, band: tuple[float, float]) -> float | None:
-    """Wavevector where the spectrum stops falling inside ``band``, or None.
-
-    An instrument's noise (or its lateral resolution) adds a white floor: above some q the
-    log-log spectrum turns flat. A line and a line with one upward bend (a hinge) are
-    fitted to the binned spectrum of the band and compared by the Bayesian information
-    criterion, as the cut-offs are. A winning bend of more than :data:`_KNOT_MIN` in slope,
-    after which the spectrum falls slower than ``q^-2`` (no self-affine surface does:
-    ``C ∝ q^(-2(1+H))`` with ``0 < H < 1``), is the floor's onset. The power law is fitted
-    below it, never into it.
-    """
-    sel = (spec.q >= band[0]) & (spec.q <= band[1])
-    bq, bc, _ = _binned(PSD(q=spec.q[sel], C=spec.C[sel], kind=spec.kind, dq=spec.dq,
-                            weights=spec.weights[sel]))
-    x, y = bq, np.log10(bc)
-    m = x.size
-    if m < 6:
-        return None
-
-    def bic(cols: list[np.ndarray]) -> tuple[float, np.ndarray]:
-        A = np.column_stack(cols)
-        coef, *_ = np.linalg.lstsq(A, y, rcond=None)
-        rss = max(float(np.sum((A @ coef - y) ** 2)), 1e-12 * m)
-        return m * math.log(rss / m) + 2 * (len(cols) - 1) * math.log(m), coef
-
-    best, floor = bic([np.ones(m), x])[0], None
-    for g in np.arange(x[1], x[-2] + 1e-9, 0.02):
-        b, coef = bic([np.ones(m), x, np.maximum(x - g, 0.0)])
-        if b < best and coef[2] > _KNOT_MIN and coef[1] + coef[2] > -2.0:
-            best, floor = b, float(10**g)
-    return floor
-
-
 def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | None = None,
              hardness: float | None = None, materials: Materials | None = None) -> Spectrum:
     """Describe a scan's spectrum (see the module docstring).
@@ -377,8 +267,8 @@ def spectrum(topo: Topography, *, periodic: bool | None = None, e_star: float | 
     spec = areal_psd(topo, window="none" if per else "hann").radial()
     # A Hann window's main lobe spans ±2Δq and flattens the first wavevectors like a
     # roll-off would: a windowed scan resolves no roll-off below 6Δq (a tested margin).
-    roll, short, band = _cutoffs(spec, 0.0 if per else 6.0 * spec.dq)
-    floor = _noise_floor(spec, band)
+    roll, short, band = cutoffs(spec, 0.0 if per else 6.0 * spec.dq)
+    floor = noise_floor(spec, band)
     if floor is not None:
         band = (band[0], floor)
     # keep a margin of one bin off each knot: the transition bends the spectrum there
