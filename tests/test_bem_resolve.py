@@ -15,7 +15,7 @@ import pytest
 
 from contact import SolveOptions
 from contact.bem import solve_normal
-from contact.bem.solver import resolve_pressure
+from contact.bem.solver import WarmStart, resolve_pressure
 from contact.errors import ConvergenceError
 from contact.grid import gap_grid
 from contact.halfspace.pair import HalfSpacePair
@@ -45,7 +45,7 @@ def test_the_displacement_is_that_of_the_pressure(ball):
     within 1e-12 of the coupled pair's own product."""
     grid, gap, p0 = ball
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
-                         initial=p0, tol=1e-8)
+                         start=WarmStart(p0), tol=1e-8)
     u = HalfSpacePair(64, 64, grid.dx, grid.dy, STEEL_AL).normal(r.pressure)
     assert r.converged
     assert np.abs(r.displacement - u).max() <= 1e-12 * np.abs(u).max()
@@ -64,12 +64,12 @@ def test_a_given_displacement_gives_the_public_solvers_answer(ball, tol):
                        options=SolveOptions(tol=tol, edge="ignore"))
     u0 = HalfSpacePair(64, 64, grid.dx, grid.dy, STEEL_AL).normal(p0)
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
-                         initial=p0, displacement=u0, tol=tol)
+                         start=WarmStart(p0, u0), tol=tol)
     assert r.iterations == ref.iterations
     assert np.abs(r.pressure - ref.pressure).max() <= 1e-10 * ref.pressure.max()
     assert abs(r.approach - ref.approach) <= 1e-12 * abs(ref.approach)
     wrong = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
-                             initial=p0, displacement=0.9 * u0, tol=tol, max_iter=1)
+                             start=WarmStart(p0, 0.9 * u0), tol=tol, max_iter=1)
     assert np.abs(wrong.pressure - ref.pressure).max() > 1e-6 * ref.pressure.max()
 
 
@@ -95,7 +95,6 @@ def test_a_start_that_carries_nothing_starts_uniform(ball):
     ref = solve_normal(gap_grid(gap, grid.dx), e_star=STEEL_AL.e_star, load=5.0,
                        options=SolveOptions(tol=1e-10, nested=False))
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
-                         initial=np.zeros_like(gap), displacement=np.ones_like(gap),
-                         tol=1e-10)
+                         start=WarmStart(np.zeros_like(gap), np.ones_like(gap)), tol=1e-10)
     assert r.converged
     assert np.abs(r.pressure - ref.pressure).max() <= 1e-8 * ref.pressure.max()

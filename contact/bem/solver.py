@@ -199,9 +199,20 @@ class PressureField:
     converged: bool
 
 
+@dataclasses.dataclass(frozen=True, eq=False)
+class WarmStart:
+    """Where a re-solve starts (:func:`resolve_pressure`): a pressure (Pa) and, where an
+    earlier solve gave it, its normal displacement (m), which spares the re-solve the
+    convolution of its start. A pressure that carries nothing is no start: the solve then
+    begins from a uniform pressure, whatever the displacement."""
+
+    pressure: np.ndarray
+    displacement: np.ndarray | None = None
+
+
 def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, load: float,
-                     initial: np.ndarray, displacement: np.ndarray | None = None,
-                     tol: float = 1e-6, max_iter: int = 2000) -> PressureField:
+                     start: WarmStart, tol: float = 1e-6, max_iter: int = 2000
+                     ) -> PressureField:
     """The elastic pressure under ``load`` on a free grid, started from a nearby answer:
     :func:`solve_normal`'s iteration without its record, for a loop that solves the
     normal problem again after every small change of the gap (the normal-tangential
@@ -210,8 +221,8 @@ def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, l
     The same iteration and convergence test as :func:`solve_normal` with the same warm
     start (the answers agree to rounding); what is left out is the result record (its
     contact radius, clusters and fields: about a sixth of a warm solve at 256^2) and,
-    when ``displacement`` (the displacement of ``initial``, m) is given, the
-    convolution of the start. Inputs are trusted (an internal path: no checks).
+    when the start's displacement is given (:class:`WarmStart`), the convolution of the
+    start. Inputs are trusted (an internal path: no checks).
     """
     ny, nx = gap0.shape
     problem = Problem(
@@ -221,7 +232,7 @@ def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, l
         load_control=True, target=load / (dx * dy), bounds=PressureBounds.elastic(None),
         single=True, precondition=True, workers=os.cpu_count() or 1, tol=tol,
         max_iter=max_iter)
-    p_init = np.clip(initial, 0.0, None)
+    p_init, displacement = np.clip(start.pressure, 0.0, None), start.displacement
     if not p_init.any():
         # nothing to start from (solve_normal's warm start does the same): a uniform start
         p_init, displacement = None, None

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from contact.bem.solver import PressureField, resolve_pressure
+from contact.bem.solver import PressureField, WarmStart, resolve_pressure
 from contact.errors import ConvergenceError
 from contact.halfspace.pair import HalfSpacePair
 
@@ -67,7 +67,7 @@ def solve_pressure_to(op: HalfSpacePair, h: np.ndarray, load: float, tol: float,
     record (:func:`contact.bem.solver.resolve_pressure`); one error line if it does not
     converge."""
     r = resolve_pressure(h + extra, op.dx, op.dy, e_star=op.c.e_star, load=load,
-                         initial=start, displacement=displacement, tol=tol)
+                         start=WarmStart(start, displacement), tol=tol)
     if not r.converged:
         raise ConvergenceError(
             f"the coupled normal solve stopped after {r.iterations} iterations at residual "
