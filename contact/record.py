@@ -115,7 +115,8 @@ class SolveRecord:
 def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecord:
     """One record for several solves (a sweep, a cycle, the levels of a verdict): the
     iterations summed, the largest residual and tolerance, converged only if every solve
-    did, edge contact if any solve had it, periodic if every solve was.
+    did, edge contact if any solve had it, periodic if every solve was, and the work
+    counters summed where every solve kept them (:func:`summed_counters`).
     """
     if not records:
         raise ValueError("combine needs at least one record")
@@ -133,7 +134,24 @@ def combine(records: list[SolveRecord], method: str | None = None) -> SolveRecor
         outer_iterations=sum(outer) if outer else None,
         solves=sum(r.solves for r in records),
         periodic=all(r.periodic for r in records),
+        counters=summed_counters([r.counters for r in records]),
     )
+
+
+def summed_counters(counters: list[Mapping[str, Any] | None]) -> dict[str, Any] | None:
+    """The work counters of several solves as one: each count summed and the grid levels
+    one after the other; None unless every solve kept its counters (a partial sum would
+    pass for the whole work)."""
+    out: dict[str, Any] = {}
+    for c in counters:
+        if c is None:
+            return None
+        for key, value in c.items():
+            if key == "levels":
+                out[key] = (*out.get(key, ()), *value)
+            else:
+                out[key] = out.get(key, 0) + value
+    return out or None
 
 
 def edge_contact(pressure: np.ndarray, periodic: bool = False, *,

@@ -189,11 +189,19 @@ def periodic_line_grid(cells: int, dx: float, h: np.ndarray | None = None) -> Gr
 
 
 def _approach_of(problem: AdhesiveProblem, pressure: np.ndarray) -> float:
-    """The rigid approach at which ``pressure`` (Pa) holds the gap closed at the apex."""
-    u = np.fft.irfft2(np.fft.rfft2(pressure.reshape(1, -1)) / problem.stiffness,
-                      s=problem.gap0.shape)
+    """The rigid approach at which ``pressure`` (Pa) holds the gap closed at the apex.
+
+    The displacement is the solve's own: the problem's periodic operator
+    (:attr:`contact.adhesion.solver.AdhesiveProblem.operator`, the one-row Love kernel the
+    stiffness inverts; its q = 0 coefficient is zero) plus the mean-plane spring's share,
+    mean(p) / spring, the q = 0 entry of the stiffness. (The free strip operator,
+    :class:`contact.halfspace.plane_strain.StripOperator`, would drop the periodic images
+    the cycle is solved with.)
+    """
+    p = np.asarray(pressure, dtype=float).reshape(problem.gap0.shape)
+    u = problem.operator(p)[0] / problem.e_star + float(p.mean()) / problem.spring
     k = int(np.argmin(problem.gap0))
-    return float(problem.gap0[0, k] + u[0, k])
+    return float(problem.gap0[0, k] + u[k])
 
 
 def _approach_range(problem: AdhesiveProblem, x: np.ndarray, radius: float,

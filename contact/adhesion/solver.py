@@ -46,6 +46,7 @@ import numpy as np
 from contact._validate import positive
 from contact.adhesion.descent import descend, elastic_offset
 from contact.adhesion.laws import InteractionLaw, kernel_arguments
+from contact.bem.state import SolverStats
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
 from contact.halfspace.convolution import Convolution, convolution
@@ -251,7 +252,7 @@ def solve_adhesive(problem: AdhesiveProblem, approach: float,
     # 1 / the largest stiffness: the quadratic's Lipschitz constant
     y, nit = descend(problem, g, law_code(law), max_iter, approach=approach,
                      step=1.0 / problem.spring, tol=tol)
-    return _state(problem, y, approach, nit, tol)
+    return _state(problem, y, approach, nit, tol, counts=_counters(problem, nit, False))
 
 
 def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
@@ -305,7 +306,7 @@ def solve_adhesive_at_pressure(problem: AdhesiveProblem, pressure: float,
                           step=1.0 / problem.spring, tol=tol, single=single)
         nit += more
     return _state(problem, y, float(np.mean(h) - np.mean(y)), nit, tol,
-                  mean_pressure=pressure)
+                  mean_pressure=pressure, counts=_counters(problem, nit, single))
 
 
 def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, float]:
@@ -315,13 +316,29 @@ def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, flo
     return kernel_arguments(law, single)
 
 
+def _counters(problem: AdhesiveProblem, evaluations: int, single: bool) -> SolverStats:
+    """The work of one adhesive solve, counted as the normal BEM counts its own
+    (:class:`contact.bem.state.SolverStats`, copied into ``SolveRecord.counters``): each
+    gradient evaluation of the descent applies the stiffness once with the operator's
+    transforms (:meth:`contact.halfspace.convolution.Convolution.spectral`, a forward and
+    an inverse FFT), in float32 where ``single``; the record's pressure (:func:`_state`)
+    applies it once more in float64. The forward transforms of the undeformed gap
+    (:func:`contact.adhesion.descent.elastic_offset`, one per descent and one for the
+    record) are no convolution and are not counted."""
+    n = int(evaluations)
+    return SolverStats(iterations=n, fft_single=n if single else 0,
+                       fft_double=(0 if single else n) + 1,
+                       levels=[(*problem.gap0.shape, n)])
+
+
 def _violation(g: np.ndarray, grad: np.ndarray) -> np.ndarray:
     """Violation of equilibrium per cell (Pa): |p + t| apart, max(-(p + t), 0) touching."""
     return np.where(g <= 0.0, np.maximum(-grad, 0.0), np.abs(grad))
 
 
 def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
-           tol: float, mean_pressure: float | None = None) -> AdhesiveState:
+           tol: float, mean_pressure: float | None = None,
+           counts: SolverStats | None = None) -> AdhesiveState:
     """The equilibrium record of the gap ``g``, after checking its residual; with
     ``mean_pressure`` (load control) the mean displacement is zero and the mean pressure
     that."""
@@ -361,5 +378,6 @@ def _state(problem: AdhesiveProblem, g: np.ndarray, approach: float, nit: int,
                           converged=True, edge_contact=edge_contact(touching, periodic=True),
                           periodic=True,
                           residual_definition="largest violation of equilibrium over the "
-                                              "pressure scale"),
+                                              "pressure scale",
+                          counters=None if counts is None else counts.snapshot()),
     )
