@@ -9,11 +9,13 @@ gathers), which reads the sentences shared by both from here.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from surfmet.mechanics.rotor_rough_bound import deciding_bound, rough_bound_line
 
 if TYPE_CHECKING:
+    from collections.abc import Iterable
+
     from rotor import ArmBound, LawOfMotionAnalysis, RotorVerdict
     from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
@@ -105,7 +107,7 @@ def differences_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis) -> list[st
         lines.append(f"  {'':8s} {'':22s}  {d.fit_evidence}")
     m = misread_rules(v, analysis)
 
-    def rows(xs: Any) -> str:
+    def rows(xs: Iterable[tuple[str, int]]) -> str:
         return ", ".join(f"{c} k={k}" for c, k in xs) or "none"
 
     lines.append(f"  misread rows: the joint model leaves out {len(m.joint)} "

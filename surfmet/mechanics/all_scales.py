@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,6 +27,10 @@ from contact.roughcontact import ModelCurve, SummitParameters
 from surfmet.errors import SurfmetInputError
 from surfmet.psd import PSD, HurstFit, fit_hurst
 from surfmet.scale_dependent import ScaleAnalysis
+
+if TYPE_CHECKING:
+    from contact.material_pair import MaterialPair
+    from surfmet.mechanics._types import Materials
 
 #: Quadrature points per decade of the isotropic PSD over the measured band.
 QUAD_PER_DECADE = 40
@@ -296,13 +300,14 @@ class AllScales:
 
     analysis: ScaleAnalysis
     spectrum: AllScalesSpectrum
-    pair: Any = None
+    pair: MaterialPair | None = None
     curve: ModelCurve | None = None
 
 
 def all_scales(scans: list[Any], *, tip_radius: float | None, per_decade: int,
-               materials: Any = None, e_star: float | None = None,
-               hardness: float | None = None, pressures: Any = None) -> AllScales:
+               materials: Materials | None = None, e_star: float | None = None,
+               hardness: float | None = None, pressures: np.ndarray | None = None
+               ) -> AllScales:
     """``spectrum`` and ``flat-contact`` on several measurements: the pair (materials or
     E*, resolved as for one scan on a flat, :func:`surfmet.mechanics.material_spec.scan_pair`,
     before any analysis), the scale analysis, its averaged isotropic PSD and, with
@@ -322,7 +327,7 @@ def all_scales(scans: list[Any], *, tip_radius: float | None, per_decade: int,
         Composite modulus (Pa) instead of materials.
     hardness : float, optional
         Replaces the softer body's table hardness (Pa).
-    pressures : array_like, optional
+    pressures : ndarray, optional
         Nominal pressures (Pa) for Persson's theory (needs materials or E*).
 
     Returns

@@ -36,7 +36,10 @@ from surfmet.model import Topography
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from contact.adhesion.flat import AdhesiveFlat
+    from contact.material_pair import MaterialPair
     from surfmet.mechanics._types import AdhesionLaw, Loads, Materials, PathLike, Spikes
+    from surfmet.mechanics.scan_preparation import FlatPreparation
 
 
 @dataclass(frozen=True, eq=False)
@@ -77,10 +80,10 @@ class FlatContactReport:
     spectrum: Spectrum
     levelling: str
     settings: dict[str, Any] = field(default_factory=dict)
-    preparation: Any = None  # a FlatPreparation
+    preparation: FlatPreparation | None = None
     caveats: tuple[str, ...] = ()
-    adhesion: Any = None  # contact.adhesion.flat.AdhesiveFlat, when a law was given
-    materials: Any = None  # contact.material_pair.MaterialPair, when materials were given
+    adhesion: AdhesiveFlat | None = None  # when a law was given
+    materials: MaterialPair | None = None  # when materials were given
 
     @property
     def periodic(self) -> bool:

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 from surfmet.errors import SurfmetInputError
 
 if TYPE_CHECKING:
+    from contact.tangential import TangentialResult
     from surfmet.mechanics._types import Materials, RoughnessMap
 
 SIGN_CONVENTION = (
@@ -75,7 +76,7 @@ class RollingContact:
     (False, False, 32)
     """
 
-    result: Any  # contact.tangential.TangentialResult
+    result: TangentialResult
     radius: float
     load: float
     line: bool

@@ -25,7 +25,13 @@ from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 if TYPE_CHECKING:
+    from distributed import Client
+
+    from contact.exponent import ExponentFit
+    from contact.materials import Material
+    from contact.rolling import RollingSweep
     from surfmet.mechanics._types import Loads, Materials, PathLike, ScanSource, Spikes
+    from surfmet.mechanics.scan_preparation import PreparedScans
 
 LOSSY = ("both", "plate", "ball")
 
@@ -54,11 +60,11 @@ class RollingReport:
     [ 1.          3.16227766 10.        ] lambda = 1.334
     """
 
-    sweep: Any
+    sweep: RollingSweep
     radius: float
-    ball_material: Any
-    plate_material: Any
-    scans: Any
+    ball_material: Material
+    plate_material: Material
+    scans: PreparedScans
     notes: tuple[str, ...]
     grid: int | None = None
 
@@ -266,8 +272,8 @@ class TrackJob:
     lambda = 1.334
     """
 
-    plate: Any
-    ball: Any
+    plate: ScanSource | None
+    ball: ScanSource | None
     offset: tuple[float, float] | None
     options: tuple[tuple[str, Any], ...]
 
@@ -341,7 +347,7 @@ class TrackReport:
     tracks: tuple[dict[str, Any], ...]
     loads: np.ndarray
     mean_moments: np.ndarray
-    fit: Any
+    fit: ExponentFit | None
 
     @property
     def lambda_eff(self) -> float:
@@ -351,7 +357,7 @@ class TrackReport:
 
 def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = None, *,
                    positions: Sequence[tuple[float, float] | None],
-                   workers: int | None = None, scheduler: Any = None,
+                   workers: int | None = None, scheduler: str | Client | None = None,
                    progress: bool | None = None, **options: Any) -> TrackReport:
     """:func:`rolling_resistance` at several track positions, in parallel, and the exponent
     of the mean moment.

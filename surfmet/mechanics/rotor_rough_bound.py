@@ -15,7 +15,7 @@ the resultant lies inside whichever region carries the load.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from rotor import ArmBound, RotorVerdict
@@ -67,7 +67,7 @@ class RoughArmBound:
         return max(self.radius, self.hertz_radius)
 
 
-def _label(scan: Any) -> str | None:
+def _label(scan: ScanSource | None) -> str | None:
     if scan is None:
         return None
     if isinstance(scan, (str, bytes)) or hasattr(scan, "__fspath__"):

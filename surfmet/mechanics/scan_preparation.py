@@ -27,6 +27,8 @@ from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from surfmet.mechanics._types import ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
 
@@ -311,10 +313,10 @@ class ScansUsed:
     """
 
     prep: PreparedScans
-    plate: Any
-    ball: Any
+    plate: ScanSource | None
+    ball: ScanSource | None
     dx: float
-    z: Any
+    z: np.ndarray
     profile: str | None = None
 
     @property

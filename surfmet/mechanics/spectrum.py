@@ -45,6 +45,7 @@ from surfmet.model import Topography
 from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
 
 if TYPE_CHECKING:
+    from contact.material_pair import MaterialPair
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.scan_preparation import FlatPreparation
 
@@ -119,7 +120,7 @@ class Spectrum:
     plasticity: float | None = None
     settings: dict[str, Any] = field(default_factory=dict)
     noise_floor: float | None = None
-    materials: Any = None
+    materials: MaterialPair | None = None
 
 
 def is_periodic(topo: Topography, tol: float = 0.1) -> bool:

@@ -28,7 +28,9 @@ from surfmet.mechanics.material_spec import material_constant, poisson_ratio, sp
 
 if TYPE_CHECKING:
     from contact.materials import Material
-    from rotor import GroupOffset
+    from contact.rolling import RollingSweep
+    from contact.viscoelastic.mechanisms import MechanismComparison
+    from rotor import GroupOffset, RotorVerdict
     from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
 _TIME = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9}
@@ -122,7 +124,7 @@ class ViscoRollingReport:
     (3,)
     """
 
-    sweep: Any
+    sweep: RollingSweep
     radius: float
     bodies: tuple[Any, Any]
     notes: tuple[str, ...] = ()
@@ -242,8 +244,8 @@ class MechanismsReport:
     'MechanismsReport'
     """
 
-    comparison: Any
-    verdict: Any
+    comparison: MechanismComparison
+    verdict: RotorVerdict
     notes: tuple[str, ...] = field(default=())
 
     @property

@@ -31,7 +31,7 @@ from surfmet.errors import SurfmetInputError
 
 if TYPE_CHECKING:
     from contact.materials import Material
-    from contact.viscoelastic.rheology import CreepSeries
+    from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid
     from surfmet.mechanics._types import Materials, ScanSource
 
 #: ``|K|`` at or below this is quasi-identical (the viscoelastic traction solvers' model).
@@ -80,11 +80,11 @@ class ViscoRollingContact:
     notes: tuple[str, ...] = ()
 
 
-# ``body``: a Material or a StandardLinearSolid, told apart by duck typing (hasattr), which
-# mypy cannot narrow a union by
-def _shear(body: Any, glassy: bool) -> tuple[float, float]:
+def _shear(body: Material | StandardLinearSolid, glassy: bool) -> tuple[float, float]:
     """(G, nu) of an elastic Material or, glassy or relaxed, a standard linear solid."""
-    if hasattr(body, "E_g"):
+    from contact.viscoelastic.rheology import StandardLinearSolid
+
+    if isinstance(body, StandardLinearSolid):
         e = body.E_g if glassy else body.E_r
         return e / (2.0 * (1.0 + body.nu)), float(body.nu)
     return float(body.shear_modulus), float(body.nu)
