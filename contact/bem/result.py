@@ -27,30 +27,46 @@ RESIDUAL_DEFINITION = ("rms gap error on the contact over the displacement of on
 class ContactResult:
     """Normal contact solution on a regular grid.
 
-    Fields (arrays of shape (ny, nx))
-    ---------------------------------
-    pressure : contact pressure p (Pa), >= 0, <= hardness when a hardness is set.
-    gap : deformed gap between the surfaces (m), >= 0; 0 where in contact.
-    displacement : combined elastic normal displacement u of both surfaces, positive into
-        the bodies (m). Body i takes the share ((1 - nu_i^2)/E_i) * E* of it
-        (:func:`contact.materials.displacement_shares`).
-    plastic_displacement : permanent combined indentation where the pressure reached the
-        hardness (m), 0 elsewhere (Almqvist et al. 2007, Wear 262:1321).
+    The fields are arrays of shape (ny, nx) on :attr:`grid`; the rest are scalars (SI).
 
-    Scalars
-    -------
-    load : total normal force (N).
-    approach : rigid-body approach delta (m) in the gap equation g = h + u - delta.
-    pmax : maximum pressure (Pa).
-    contact_area : area of the cells with p > 0 (m^2); area_fraction = that / domain area.
-    contact_radius : sqrt(contact_area / pi) (m): the radius of a disc of the real contact
-        area. Not the macroscopic radius of a rough contact: that is
-        :attr:`effective_radius` (a*), a different name for a different quantity.
-    radius_95 : radius about the pressure centroid of the disc holding 95 % of the load (m).
-    centroid : (x, y) of the pressure centroid (m).
-    n_clusters : number of contact spots (4-connected cells with p > 0; in a periodic domain
-        spots that wrap around the boundary count once).
-    plastic_area : area of the cells at the hardness (m^2).
+    Attributes
+    ----------
+    pressure : ndarray
+        Contact pressure p (Pa), >= 0, <= hardness when a hardness is set.
+    gap : ndarray
+        Deformed gap between the surfaces (m), >= 0; 0 where in contact.
+    displacement : ndarray
+        Combined elastic normal displacement u of both surfaces, positive into the bodies
+        (m). Body i takes the share ((1 - nu_i^2)/E_i) * E* of it
+        (:func:`contact.materials.displacement_shares`).
+    plastic_displacement : ndarray
+        Permanent combined indentation where the pressure reached the hardness (m), 0
+        elsewhere (Almqvist et al. 2007, Wear 262:1321).
+    grid : Grid
+        The grid solved on (its pitch, origin and boundary).
+    e_star, hardness : float
+        Composite modulus E* (Pa) and the hardness cap (Pa; None: no cap).
+    load : float
+        Total normal force (N).
+    approach : float
+        Rigid-body approach delta (m) in the gap equation g = h + u - delta.
+    pmax : float
+        Maximum pressure (Pa).
+    contact_area, area_fraction : float
+        Area of the cells with p > 0 (m^2), and that over the domain's area.
+    contact_radius : float
+        sqrt(contact_area / pi) (m): the radius of a disc of the real contact area. Not
+        the macroscopic radius of a rough contact: that is :attr:`effective_radius` (a*),
+        a different name for a different quantity.
+    radius_95 : float
+        Radius about the pressure centroid of the disc holding 95 % of the load (m).
+    centroid : tuple of float
+        (x, y) of the pressure centroid (m).
+    n_clusters : int
+        Number of contact spots (4-connected cells with p > 0; in a periodic domain spots
+        that wrap around the boundary count once).
+    plastic_area : float
+        Area of the cells at the hardness (m^2).
     solve : SolveRecord
         The solve record (:mod:`contact.record`); the residual is the rms gap error on
         the contact divided by the displacement one cell at the mean contact pressure makes
@@ -58,6 +74,12 @@ class ContactResult:
         pressure on the outermost ring of a free-boundary domain
         (:func:`contact.record.edge_contact`). ``iterations``, ``residual``, ``converged``
         and ``touches_edge`` read it.
+    notes : tuple of str
+        Caveats of the set-up that made it.
+    hertz : object or None
+        Hertz's values for comparison, where a set-up (sphere, cylinder) gave them.
+    extra : dict
+        What a solve or set-up adds (``"levels"``, ``"kernel"``, ``"removed_plane"``...).
 
     See Also
     --------
