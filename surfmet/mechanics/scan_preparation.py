@@ -23,12 +23,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from surfmet.errors import SurfmetInputError
 from surfmet.model import Topography
 
 if TYPE_CHECKING:
-    import numpy as np
-
     from surfmet.mechanics._types import ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
 
@@ -479,8 +479,6 @@ def prepare_flat(topo: ScanSource, *,
     >>> bool(scan.has_nan), record.spikes_removed
     (False, {'scan': 60})
     """
-    import numpy as np
-
     from surfmet.mechanics.pairing import fill_nearest
 
     mode = spike_mode(spikes)
