@@ -117,6 +117,20 @@ def test_inputs_record_reads_units_from_the_parsers():
     assert rec["load_per_length"] == {"value": pytest.approx(1e5), "unit": "N/m"}
 
 
+def test_every_type_unit_names_a_type_the_commands_use():
+    """TYPE_UNITS is looked up by an argparse type's ``__name__``: a key that no option of
+    any command has as its type is dead data (it held "load range" and "energy", types
+    that no longer exist)."""
+    from surfmet.cli import build_parser
+    from surfmet.cli._inputs import TYPE_UNITS
+
+    sub = next(a for a in build_parser()._actions
+               if isinstance(a, argparse._SubParsersAction))
+    used = {getattr(a.type, "__name__", None) for parser in sub.choices.values()
+            for a in parser._actions if a.type is not None}
+    assert sorted(set(TYPE_UNITS) - used) == []
+
+
 @pytest.mark.parametrize(("value", "unit", "shown"), [
     (820352.0, "1/m^2", ("0.8204", "1/mm²")),  # plu-1's Spd, was "820352 1/m²"
     (12758.0, "1/m", ("0.01276", "1/µm")),  # plu-1's Spc, was "12.758 1/mm"

@@ -21,9 +21,8 @@ _RUNNING: list[dict[str, Any]] = []
 
 #: Unit of the value an argparse type returns, by the type's ``__name__``.
 TYPE_UNITS: dict[str, str] = {
-    "length": "m", "positive_length": "m", "force": "N", "load range": "N",
-    "pressure": "Pa", "speed": "m/s", "work": "J/m^2", "energy": "J/m^2",
-    "surface tension": "N/m", "angle": "rad",
+    "length": "m", "positive_length": "m", "force": "N", "pressure": "Pa", "speed": "m/s",
+    "work": "J/m^2", "surface tension": "N/m", "angle": "rad",
 }
 
 #: Unit of an option's value by its name, for options whose text the command parses

@@ -25,10 +25,6 @@ def _value(value: Any, unit: str | None) -> Any:
     if (unit is None or isinstance(value, (str, bool)) or value is None
             or all(isinstance(v, int) and not isinstance(v, bool) for v in flat)):
         return list(value) if isinstance(value, tuple) else value
-    if isinstance(value, tuple) and len(value) == 3 and (
-            value[2] is None or isinstance(value[2], int)):  # F1:F2[:N]
-        return {"start": quantity(value[0], unit), "stop": quantity(value[1], unit),
-                "points": value[2]}
     if isinstance(value, (list, tuple)):
         return quantity([list(v) if isinstance(v, tuple) else v for v in value], unit)
     return quantity(value, unit)
@@ -74,10 +70,6 @@ def _text(value: Any) -> str:
         if unit == "":
             return f"{v:.6g}"
         return format_quantity(v, unit, 6)
-    if isinstance(value, dict) and "start" in value:
-        n = value["points"]
-        return (f"{_text(value['start'])} to {_text(value['stop'])}"
-                + (f", {n} points" if n else ""))
     if isinstance(value, list):
         return ", ".join(_text(v) for v in value)
     if isinstance(value, float):
