@@ -47,7 +47,7 @@ from dataclasses import dataclass
 
 from contact.errors import ContactInputError
 from contact.hertz import hertz_sphere
-from contact.materials import composite_modulus, material
+from contact.materials import Material, composite_modulus, material
 from rotor._mechanics import G_STANDARD
 from rotor._rig import Rig, slope_lower_bound, solve_lambda
 
@@ -57,6 +57,11 @@ LAMBDA_HERTZ = 4.0 / 3.0
 """The exponent of every Hertzian rolling-friction mechanism (Alaci et al. 2022, Eq. 7)."""
 PAPER_PAIR = ("steel", "aluminium")
 """The paper's ball and plate materials (Section 2.2.1, Section 3.2.1)."""
+
+
+def paper_materials() -> tuple[Material, Material]:
+    """The paper's ball and plate (:data:`PAPER_PAIR`) as the material table's entries."""
+    return material(PAPER_PAIR[0]), material(PAPER_PAIR[1])
 
 
 def rolling_torque(rig: Rig, slope: float, mean_acceleration: float,
@@ -216,7 +221,7 @@ def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
     if e_star is None and rig.e_star is not None:
         e_star, basis = rig.e_star, f"the rig's {rig.plate or 'plate'}"
     if e_star is None:
-        e_star = composite_modulus(material(PAPER_PAIR[0]), material(PAPER_PAIR[1]))
+        e_star = composite_modulus(*paper_materials())
         basis = "steel ball on aluminium plate, the paper's materials"
     name, load = _bound_group(rig)
     if radius is not None:

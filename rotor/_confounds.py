@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from contact.hertz import hertz_sphere
 from contact.material_pair import resolve_pair
-from contact.materials import material
+from contact.materials import Material
 from rotor._mechanics import G_STANDARD
 from rotor._rig import Rig, offset_for_lambda
 
@@ -43,10 +43,12 @@ class Confound:
     source: str
 
 
-def _lateral_creep(rig: Rig) -> float:
+def lateral_creep(rig: Rig, materials: tuple[Material, Material]) -> float:
     """Torque (N m) of lateral creep of both balls at yaw ``LATERAL_CREEP``: the creep force
-    ``min(G a² C22 nu, mu N)`` times the lateral slip ``nu`` per unit rolled, times ``R``."""
-    pair = resolve_pair(material("steel"), material("aluminium"))
+    ``min(G a² C22 nu, mu N)`` times the lateral slip ``nu`` per unit rolled, times ``R``;
+    ``G`` the pair's combined shear modulus ``2 / (1/G1 + 1/G2)`` and ``a`` the Hertz radius
+    of the ball (``materials[0]``) on the plate (``materials[1]``)."""
+    pair = resolve_pair(*materials)
     g1, g2 = pair.shear_moduli
     g_mix = 2.0 / (1.0 / g1 + 1.0 / g2)
     e_star = pair.e_star
@@ -61,11 +63,14 @@ def _lateral_creep(rig: Rig) -> float:
 def confound_budget(rig: Rig, offset: float, smallest: float, slope: float,
                     mean_acceleration: float, track_range: float, span: float,
                     minuend: str, subtrahend: str,
-                    mechanisms: Mapping[str, float] | None = None) -> tuple[Confound, ...]:
+                    mechanisms: Mapping[str, float] | None = None, *,
+                    materials: tuple[Material, Material]) -> tuple[Confound, ...]:
     """The budget for an offset ``offset`` whose smallest size the data allow is ``smallest``
     (rad/s²), on a track of ``span`` rad whose shared profile ranges over ``track_range``
     rad/s², at ``slope`` (rad). ``mechanisms``: ``{name: implied offset}`` (rad/s²) of contact
-    mechanisms computed elsewhere (``surfmet rolling --model all``)."""
+    mechanisms computed elsewhere (``surfmet rolling --model all``); ``materials``: the
+    (ball, plate) materials of the lateral creep (the caller's default is the paper's pair,
+    :data:`rotor._arm.PAPER_PAIR`)."""
     i_roll = rig.rolling_inertia
     mgr = rig.mass * G_STANDARD * rig.ball_radius
     eps_drive = mgr * math.sin(slope) / i_roll
@@ -92,9 +97,10 @@ def confound_budget(rig: Rig, offset: float, smallest: float, slope: float,
          "f M_r / (J + M R^2), M_r = M g R sin(theta) - eps_mean (J + M R^2)",
          f"the rolling torque changed by f = {RUN_IN_FRACTION:.0%} between the groups' runs "
          "(plastic shakedown of the track)", "Johnson 1985, Contact Mechanics, sec. 9.3"),
-        ("lateral_creep", _lateral_creep(rig) / i_roll,
+        ("lateral_creep", lateral_creep(rig, materials) / i_roll,
          "sum_balls min(G a^2 C22 nu, mu N) nu R / (J + M R^2)",
-         f"axle yawed nu = {LATERAL_CREEP:g} rad (1 mm per m), steel on aluminium, "
+         f"axle yawed nu = {LATERAL_CREEP:g} rad (1 mm per m), {materials[0].name} on "
+         f"{materials[1].name}, "
          f"C22 = {KALKER_C22}, mu = {FRICTION}", "Kalker 1990, Table E.3; Hertz radius"),
         ("air_drag", drag,
          "rho C_d A v^2 R / (2 (J + M R^2)) at the end of the track",

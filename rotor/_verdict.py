@@ -31,7 +31,8 @@ import numpy as np
 from scipy.stats import t as student_t
 
 from contact.errors import ContactInputError
-from rotor._arm import ArmBound, arm_bound
+from contact.materials import Material
+from rotor._arm import ArmBound, arm_bound, paper_materials
 from rotor._confounds import Confound, confound_budget
 from rotor._joint import (
     GroupOffset,
@@ -304,7 +305,8 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
                 *, fps: float, step: float, k: Sequence[int] | None = None,
                 rig: Rig | None = None,
                 mechanisms: Mapping[str, float] | None = None,
-                permutation: bool = True) -> RotorVerdict:
+                permutation: bool = True,
+                materials: tuple[Material, Material] | None = None) -> RotorVerdict:
     """The verdict on a table: ``groups`` ({name: columns}, two groups; the offset is the
     second minus the first), ``rig`` for the exponent, the arm bound and the confounds,
     ``mechanisms`` ({name: implied offset, rad/s²}) to put into the confound budget;
@@ -327,6 +329,9 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
         Other mechanisms' implied offsets (rad/s²) for the confound budget.
     permutation : bool
         Also run the exact permutation test.
+    materials : (Material, Material), optional
+        The ball's and the plate's materials for the confound budget's lateral creep
+        (default the paper's steel ball on aluminium, :data:`rotor._arm.PAPER_PAIR`).
 
     Returns
     -------
@@ -396,7 +401,8 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
                                                                   abs(off.ci_high))
         confounds = confound_budget(rig, off.value, max(smallest, 1e-300), exponent.slope,
                                     mean_acc, float(np.ptp(prof)), float(np.max(s)),
-                                    off.minuend, off.subtrahend, mechanisms)
+                                    off.minuend, off.subtrahend, mechanisms,
+                                    materials=materials or paper_materials())
     perm = permutation_test(data, shared, groupwise) if permutation else None
     sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig, perm, arm)
     if not adequate:
