@@ -315,6 +315,7 @@ def analyze_profile(
     periodic: bool | None = None,
     standard: str = "iso21920",
     valley_suppression: bool = False,
+    element_start: str = "peak",
 ) -> ProfileAnalysis:
     """Roughness analysis of a line profile.
 
@@ -352,6 +353,8 @@ def analyze_profile(
     valley_suppression : bool
         Use the ISO 13565-1 two-stage λc filter (stratified surfaces) instead of the
         plain Gaussian (:func:`profiles.filters.split_profile`).
+    element_start : {"peak", "first-crossing"}
+        Pairing of the profile elements for RSm and Rc (:mod:`profiles.elements`).
 
     Returns
     -------
@@ -439,7 +442,8 @@ def analyze_profile(
         settings["parameters_of"] = "levelled primary profile (no λc filter)"
 
     ev = rough[sl]
-    params = profile_parameters(ev, dx, n_sampling=nsec, standard=standard)
+    params = profile_parameters(ev, dx, n_sampling=nsec, standard=standard,
+                                element_start=element_start)
     evaluated = np.zeros(z.size, dtype=bool)
     evaluated[sl] = True
     settings["n_sampling"] = nsec

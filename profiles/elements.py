@@ -10,6 +10,14 @@ runs are absorbed by their neighbours, so significant peaks separated only by in
 valleys form one peak. An element starts at the up-crossing that opens a significant peak
 whose preceding significant run (with no gap between) is a valley, and ends at the next
 such up-crossing; its height is the peak height plus the valley depth inside it.
+
+``start="first-crossing"`` pairs the elements from the first mean-line crossing of the
+stretch instead: a stretch that begins above the mean line (in a peak cut by its start)
+has valley-first elements opening at significant down-crossings, one that begins below has
+the peak-first elements above. This is what a Mitutoyo SurfTest does per sampling length:
+on its export ``mitutoyo_2_mock.xlsx`` it reproduces the printed RSm 419.9 µm and Rc
+13.306 µm to the printed digits, where the peak-first rule gives 416.6 and 13.217
+(``benchmarks/mitutoyo_rsm_rules.py``, docs/parameters.md).
 """
 
 from __future__ import annotations
@@ -17,6 +25,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+from profiles.errors import ProfileError
+
+#: How the elements of a stretch are paired (see the module docstring).
+ELEMENT_STARTS = ("peak", "first-crossing")
 
 
 @dataclass(frozen=True)
@@ -35,8 +48,8 @@ class ProfileElements:
     heights: np.ndarray
 
 
-def profile_elements(z: np.ndarray, pos: np.ndarray, height: float, width: float
-                     ) -> ProfileElements:
+def profile_elements(z: np.ndarray, pos: np.ndarray, height: float, width: float,
+                     start: str = "peak") -> ProfileElements:
     """The profile elements of ``z`` (heights from the mean line) at positions ``pos``.
 
     Parameters
@@ -47,10 +60,31 @@ def profile_elements(z: np.ndarray, pos: np.ndarray, height: float, width: float
         Positions of the points, metres.
     height, width : float
         Height and width discrimination, metres (see the module docstring).
+    start : {"peak", "first-crossing"}
+        Elements open with a peak, or as the stretch's first crossing (module docstring).
+
+    Examples
+    --------
+    A cosine (λ 100 µm) over 250 µm: up-crossings at 75 and 175 µm close one peak-first
+    element, down-crossings at 25, 125 and 225 µm (the first crossing) two valley-first:
+
+    >>> import numpy as np
+    >>> x = np.arange(250) * 1e-6
+    >>> z = np.cos(2 * np.pi * x / 100e-6)
+    >>> for start in ("peak", "first-crossing"):
+    ...     e = profile_elements(z, x, 0.1, 1e-6, start=start)
+    ...     print(start, [f"{w * 1e6:.1f} µm" for w in e.widths], [f"{h:.3f}" for h in e.heights])
+    peak ['100.0 µm'] ['2.000']
+    first-crossing ['100.0 µm', '100.0 µm'] ['2.000', '2.000']
     """
+    if start not in ELEMENT_STARTS:
+        raise ProfileError(f"start must be one of {ELEMENT_STARTS}, got {start!r}")
     n = z.size
     if n < 2:
         return ProfileElements(np.empty(0), np.empty(0))
+    finite = z[np.isfinite(z)]
+    if start == "first-crossing" and finite.size and finite[0] >= 0:
+        z = -z  # valley-first elements are the peak-first ones of the mirrored profile
     valid = np.isfinite(z)
     sign = np.where(valid, np.where(z >= 0, 1, -1), 0)
     change = np.flatnonzero(sign[1:] != sign[:-1]) + 1

@@ -189,6 +189,7 @@ def profile_parameters(
     standard: str = "iso21920",
     height_discrimination: float = 0.10,
     width_discrimination: float = 0.01,
+    element_start: str = "peak",
 ) -> ProfileParameters:
     """Compute the ISO profile parameters of a profile measured from its mean line.
 
@@ -214,6 +215,10 @@ def profile_parameters(
     height_discrimination, width_discrimination : float
         For ``Rsm`` and ``Rc``: fraction of ``Rz`` and of ``lr`` below which peaks/valleys
         are not counted (ISO 4287 defaults 10 % and 1 %).
+    element_start : {"peak", "first-crossing"}
+        How the profile elements of each stretch are paired (:mod:`profiles.elements`):
+        peak first (ISO 4287 reading), or from the first mean-line crossing, as a
+        Mitutoyo SurfTest does.
 
     Returns
     -------
@@ -306,7 +311,8 @@ def profile_parameters(
 
     if standard == "iso21920":
         values = _stretch_values(z, pos, widths, uniform, dx,
-                                 height_discrimination * Rz, width_discrimination * lr)
+                                 height_discrimination * Rz, width_discrimination * lr,
+                                 element_start)
     else:
         bounds = np.searchsorted(sec, np.arange(n_sections + 1))
         per = []
@@ -316,7 +322,8 @@ def profile_parameters(
                 continue
             rz = float(np.nanmax(zs) - np.nanmin(zs))
             per.append(_stretch_values(zs, pos[a:b], widths[a:b], uniform, dx,
-                                       height_discrimination * rz, width_discrimination * lr))
+                                       height_discrimination * rz, width_discrimination * lr,
+                                       element_start))
         values = {k: _mean_defined([p[k] for p in per]) for k in per[0]}
     return ProfileParameters(Rp=Rp, Rv=Rv, Rz=Rz, Rt=Rt, **values)
 
@@ -339,7 +346,8 @@ def _mean_defined(values: list[float]) -> float:
 
 
 def _stretch_values(z: np.ndarray, pos: np.ndarray, widths: np.ndarray, uniform: bool,
-                    dx: float, height: float, width: float) -> dict[str, float]:
+                    dx: float, height: float, width: float, element_start: str = "peak"
+                    ) -> dict[str, float]:
     """Ra, Rq, Rsk, Rku, Rsm, Rdq, Rc of one stretch (evaluation or sampling length)."""
     valid = np.isfinite(z)
     zv, wv = z[valid], widths[valid]
@@ -351,7 +359,7 @@ def _stretch_values(z: np.ndarray, pos: np.ndarray, widths: np.ndarray, uniform:
         Rku = float(np.sum(wv * zv**4) / wsum / Rq**4)
     else:
         Rsk = Rku = math.nan
-    elements = profile_elements(z, pos, height, width)
+    elements = profile_elements(z, pos, height, width, start=element_start)
     Rsm = float(np.mean(elements.widths)) if elements.widths.size else math.nan
     Rc = float(np.mean(elements.heights)) if elements.heights.size else math.nan
     slope = _local_slope(z, pos, uniform, dx)

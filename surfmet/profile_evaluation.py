@@ -100,7 +100,8 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
     ap = profiles.analyze_profile(prof.z, prof.dx, x=prof.x, window=window, level=lvl,
                                   ls=ls_arg, lc=lc_arg, n_sampling=cond.n_sampling,
                                   standard=cond.standard,
-                                  valley_suppression=valley_suppression)
+                                  valley_suppression=valley_suppression,
+                                  element_start=cond.element_start)
     stated = dict(prof.metadata.get("evaluation_conditions") or {})
     settings["conditions"] = conditions_record(cond, ap.settings, stated)
     settings.update(ap.settings)
@@ -130,6 +131,8 @@ def evaluate_profile(data: Any, source: str | None, *, level: str | None, cond: 
         parameters, note = flat_parameters(parameters, "profile")
         notes.insert(0, note)
     settings["rk_line"] = {"value": cond.rk_line, "why": cond.why["rk_line"]}
+    settings["element_start"] = {"value": cond.element_start,
+                                 "why": cond.why["element_start"]}
     caveats = unit_caveats(prof)
     if caveats:
         settings["caveats"] = caveats

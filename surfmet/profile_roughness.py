@@ -49,6 +49,7 @@ class Conditions:
     prefiltered: bool
     why: dict[str, str]
     rk_line: str = "secant"
+    element_start: str = "peak"
 
 
 def parse_cutoff(value: Any, what: str) -> Any:
@@ -122,7 +123,15 @@ def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: 
                           else FROM_FILE)
     else:
         line, why["rk_line"] = "secant", FROM_DEFAULT
-    return Conditions(std, lc_v, ls_v, n, prefiltered, why, line)
+    if stated.get("element_start"):
+        # like the Rk construction: how the instrument pairs its profile elements (RSm, Rc)
+        start = str(stated["element_start"])
+        why["element_start"] = (f"the instrument's own profile-element pairing "
+                                f"({stated['source']}), part of the evaluation the file "
+                                "states" if stated.get("source") else FROM_FILE)
+    else:
+        start, why["element_start"] = "peak", FROM_DEFAULT + " (ISO 4287: peak first)"
+    return Conditions(std, lc_v, ls_v, n, prefiltered, why, line, start)
 
 
 def _count(value: Any) -> int:

@@ -101,6 +101,28 @@ def test_the_export_itself_gives_the_printed_rk_family(capsys, printout):
     assert "Rk construction levels" in text
 
 
+@pytest.mark.realdata
+def test_the_export_itself_gives_the_printed_rsm_and_rc(capsys, printout):
+    """The export read directly pairs its profile elements as the SurfTest does (from the
+    first mean-line crossing of each sampling length), so the defaults reproduce the
+    printed RSm 419.9 µm and Rc 13.306 µm to the printed digits (main: peak-first
+    elements, 416.6 µm and 13.217 µm), and the output says which pairing and why."""
+    from conftest import REALDATA, shared_file
+
+    path = str(shared_file(REALDATA / "mitutoyo_2_mock.xlsx"))
+    rc, out, _ = _run(capsys, "roughness", path, "--json")
+    assert rc == 0
+    rec = json.loads(out)[0]
+    got = rec["parameters"]
+    for sym, ours in (("RSm", "Rsm"), ("Rc", "Rc")):
+        assert abs(got[ours]["value"] - printout.results[sym]) <= printout.digits[sym], sym
+    start = rec["settings"]["conditions"]["element_start"]
+    assert start["value"] == "first-crossing" and "Mitutoyo" in start["why"]
+    assert rec["settings"]["element_start"] == start
+    rc, text, _ = _run(capsys, "roughness", path)
+    assert "profile elements paired first-crossing" in text
+
+
 def test_standard_flag_and_lc_none(capsys, sine_profile):
     path, amps = sine_profile
     rq = {}

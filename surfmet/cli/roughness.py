@@ -118,9 +118,12 @@ def _conditions_line(cond: dict[str, Any]) -> str:
     std = cond["standard"]
     n = cond["n_sampling"]
     rk = cond.get("rk_line")
+    el = cond.get("element_start")
     return (f"standard {std['name']} ({std['why']}); λc {length(cond['lc'])}; "
             f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})"
-            + (f"; Rk construction {rk['value']} ({rk['why']})" if rk else ""))
+            + (f"; Rk construction {rk['value']} ({rk['why']})" if rk else "")
+            + (f"; profile elements paired {el['value']} ({el['why']})"
+               if el and el["value"] != "peak" else ""))
 
 
 def _condition_cells(rec: dict[str, Any]) -> list[str]:

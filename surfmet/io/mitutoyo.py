@@ -19,6 +19,7 @@ Metadata (SI values; the keys agreed with ``roughness``, see docs/formats.md):
 ``evaluation_conditions``  ``{"standard": "iso4287", "standard_text": "ISO 1997",
                            "lc": 0.0025, "ls": 8e-06, "n_sampling": 4, "profile": "R",
                            "filter": "gaussian", "rk_line": "levels",
+                           "element_start": "first-crossing",
                            "source": "Mitutoyo SurfTest export"}``;
                            a key is absent when the file does not state it
 ``instrument_results``     the printed results in print order, ``{"Ra": {"value": 3.308e-06,
@@ -56,6 +57,8 @@ _LENGTH_RE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*([^\s\d]+)\s*$")
 _RENAME = {"Rkµ": "Rku", "Rkμ": "Rku", "RDq": "Rdq", "RSm": "Rsm"}
 #: The Rk construction of the SurfTest (:data:`profiles.rk.CONSTRUCTIONS`).
 RK_LINE = "levels"
+#: How the SurfTest pairs profile elements (:data:`profiles.elements.ELEMENT_STARTS`).
+ELEMENT_START = "first-crossing"
 # ISO 13565-2 areas, printed without a unit in (height unit) x %
 _AREAS = ("A1", "A2")
 _STANDARDS = {"iso 1997": "iso4287", "iso1997": "iso4287", "iso 4287": "iso4287",
@@ -172,6 +175,10 @@ def _evaluation(found: dict[str, str], name: str) -> tuple[dict[str, Any], str |
         # levels (reproduced to the printed digits on the realdata export; the secant
         # construction differs by 6 % in Rpk, 16 % in Mr1)
         ev["rk_line"] = RK_LINE
+        # and its profile elements (RSm, Rc) are paired from the first mean-line crossing
+        # of each sampling length (RSm 419.9 µm, Rc 13.306 µm to the printed digits on the
+        # same export; peak-first pairing gives 416.6 and 13.217)
+        ev["element_start"] = ELEMENT_START
         ev["source"] = "Mitutoyo SurfTest export"
     return ev, (cut[1] if cut is not None else None)
 

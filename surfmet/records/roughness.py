@@ -112,6 +112,7 @@ def conditions_record(cond: Any, settings: dict[str, Any],
         "ls": ls_block,
         "n_sampling": {"value": settings.get("n_sampling"), "why": cond.why["n_sampling"]},
         "rk_line": {"value": cond.rk_line, "why": cond.why["rk_line"]},
+        "element_start": {"value": cond.element_start, "why": cond.why["element_start"]},
     }
 
 
