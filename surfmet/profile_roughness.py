@@ -30,6 +30,7 @@ FROM_USER = "given by the user"
 FROM_FILE = "stated in the file (instrument's evaluation conditions)"
 FROM_RULE = "ISO 4288 rule"
 FROM_DEFAULT = "default"
+FROM_DEFAULT_PEAK = FROM_DEFAULT + " (ISO 4287: peak first)"
 
 _UNSET = object()
 
@@ -77,7 +78,8 @@ def _standard(value: Any) -> str:
 
 
 def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: Any,
-                       n_sampling: Any, rk_line: Any = None) -> Conditions:
+                       n_sampling: Any, rk_line: Any = None,
+                       element_start: Any = None) -> Conditions:
     """User choices first, then the file's stated conditions, then the rule or default."""
     stated = metadata.get("evaluation_conditions") or {}
     why: dict[str, str] = {}
@@ -123,15 +125,43 @@ def resolve_conditions(metadata: dict[str, Any], *, standard: Any, lc: Any, ls: 
                           else FROM_FILE)
     else:
         line, why["rk_line"] = "secant", FROM_DEFAULT
-    if stated.get("element_start"):
-        # like the Rk construction: how the instrument pairs its profile elements (RSm, Rc)
-        start = str(stated["element_start"])
-        why["element_start"] = (f"the instrument's own profile-element pairing "
-                                f"({stated['source']}), part of the evaluation the file "
-                                "states" if stated.get("source") else FROM_FILE)
-    else:
-        start, why["element_start"] = "peak", FROM_DEFAULT + " (ISO 4287: peak first)"
+    start, why["element_start"] = _element_start(stated, std, element_start)
     return Conditions(std, lc_v, ls_v, n, prefiltered, why, line, start)
+
+
+def _element_start(stated: dict[str, Any], std: str, user: Any) -> tuple[str, str]:
+    """The profile-element pairing (RSm, Rc) and why: the user's, else the file's while its
+    standard is in force, else peak first.
+
+    A file's pairing (a Mitutoyo SurfTest's ``first-crossing``) describes how its
+    instrument evaluates each sampling length under the standard it states. Under another
+    standard (``iso21920``: one stretch, the evaluation length) it would pair every element
+    from the evaluation length's first crossing, a reading the instrument was never seen to
+    make (docs/parameters.md), so it is not carried over; the user may still ask for it.
+    """
+    from profiles.elements import ELEMENT_STARTS
+
+    if user is not None:
+        if user not in ELEMENT_STARTS:
+            raise SurfmetInputError(f"element_start must be one of {', '.join(ELEMENT_STARTS)}"
+                                    f", got {user!r}")
+        if user == "first-crossing" and std == "iso21920":
+            # one stretch: only the evaluation length's start decides the pairing
+            return str(user), (FROM_USER + "; iso21920 has one stretch: elements paired "
+                               "from the evaluation length's first mean-line crossing")
+        return str(user), FROM_USER
+    value = stated.get("element_start")
+    if not value:
+        return "peak", FROM_DEFAULT_PEAK
+    source = f" ({stated['source']})" if stated.get("source") else ""
+    own = stated.get("standard")
+    if own and _standard(own) != std:
+        return "peak", (f"{FROM_DEFAULT_PEAK}: the file's {value} pairing{source} belongs to "
+                        f"the {STANDARD_NAMES[_standard(own)]} evaluation it states, not "
+                        f"carried over to {STANDARD_NAMES[std]}")
+    # like the Rk construction: how the instrument pairs its profile elements
+    return str(value), (f"the instrument's own profile-element pairing{source}, part of the "
+                        "evaluation the file states" if source else FROM_FILE)
 
 
 def _count(value: Any) -> int:

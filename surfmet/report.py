@@ -137,8 +137,8 @@ def scan_section(path: str | Path | Measurement, options: dict[str, Any] | None 
         ``CONTAINER:MEMBER``, as the roughness command names its record).
     options : dict, optional
         Keyword arguments of :func:`surfmet.roughness.roughness` (level, ls, lc, window,
-        profile, spikes, edge, standard, n_sampling, rk_line, valley_suppression), as
-        ``surfmet roughness`` passes them.
+        profile, spikes, edge, standard, n_sampling, rk_line, valley_suppression,
+        element_start), as ``surfmet roughness`` passes them.
     include_3d : bool
         Render the 3D view (pyvista) for areal scans.
     hertz : HertzOptions, optional

@@ -107,6 +107,7 @@ def roughness(
     n_sampling: int | None = None,
     rk_line: str | None = None,
     valley_suppression: bool = False,
+    element_start: str | None = None,
 ) -> RoughnessResult:
     """Roughness parameters of a scan with every processing step recorded.
 
@@ -159,6 +160,12 @@ def roughness(
         ``"secant"``.
     valley_suppression : bool
         Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
+    element_start : {"peak", "first-crossing"}, optional
+        Profiles: how the profile elements of RSm and Rc are paired in each stretch
+        (:mod:`profiles.elements`): peak first, or from the stretch's first mean-line
+        crossing, as a Mitutoyo SurfTest does per sampling length. Default: what the file
+        states (``evaluation_conditions["element_start"]``) while the standard in force is
+        the file's, else ``"peak"``.
 
     Returns
     -------
@@ -176,7 +183,8 @@ def roughness(
         from surfmet.profile_roughness import resolve_conditions
 
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
-                                  n_sampling=n_sampling, rk_line=rk_line)
+                                  n_sampling=n_sampling, rk_line=rk_line,
+                                  element_start=element_start)
         res = evaluate_profile(data, source, level=level, cond=cond, window=win,
                                profile=profile, spikes=spikes,
                                valley_suppression=bool(valley_suppression))

@@ -404,3 +404,35 @@ def test_a_container_one_answer_each(name, api, cli_roughness, report, show):
     api_notes, rec_notes = api_settings.pop("notes"), rec_settings.pop("notes")
     assert api_settings == rec_settings and api_notes[1:] == rec_notes
     assert api_notes[0].startswith("measurement 0 ")
+
+
+#: evaluation options that change a file's numbers, each run through every entry point
+#: that takes the shared roughness options (surfmet.cli._roughness_options)
+OPTION_CASES = {
+    "mitutoyo_2_mock.xlsx": (("--element-start", "peak"),
+                             ("--standard", "iso21920", "--element-start", "first-crossing")),
+}
+
+
+@pytest.mark.parametrize(("name", "argv"), [(n, a) for n, cases in OPTION_CASES.items()
+                                            for a in cases])
+def test_an_option_gives_one_answer_everywhere(name, argv, tmp_path):
+    """The option reaches the API's keyword through roughness, report and show alike: the
+    same record everywhere, and not the record without it (so it took effect)."""
+    import surfmet.roughness as pipeline
+    from surfmet.records.roughness import roughness_record
+
+    path = _path(name)
+    kwargs = {o.lstrip("-").replace("-", "_"): v for o, v in zip(argv[::2], argv[1::2])}
+    expected = _as_printed({"file": path, "status": "ok",
+                            **roughness_record(pipeline.roughness(path, **kwargs))})
+    plain = _as_printed(roughness_record(pipeline.roughness(path)))
+    assert expected["parameters"]["Rsm"] != plain["parameters"]["Rsm"]
+    _, out, err = _run(["roughness", path, *argv, "--json", "--workers", "1"])
+    assert json.loads(out) == [expected], err
+    _, out, err = _run(["report", path, *argv, "-o", str(tmp_path / "r.html"), "--no-3d",
+                        "--json"])
+    assert json.loads(out)["scans"][0]["roughness"] == expected, err
+    rc, out, err = _run(["show", path, *argv, "-o", str(tmp_path / "s.png"), "--2d",
+                         "--json"])
+    assert rc == 0 and json.loads(out)["roughness"] == expected, err

@@ -10,6 +10,10 @@ from typing import Any
 
 from surfmet.cli._common import positive_length
 
+#: ``--element-start`` choices: the pairings of :data:`profiles.elements.ELEMENT_STARTS`
+#: (the command line names them without importing the engine)
+ELEMENT_STARTS = ("peak", "first-crossing")
+
 
 def positive_int(text: str) -> int:
     """An integer of at least 1 (argparse type)."""
@@ -31,10 +35,11 @@ def cutoff(text: str) -> str | float:
 
 def add_roughness_options(p: argparse.ArgumentParser, *, what: str = "evaluate",
                           group: bool = True) -> None:
-    """Add ``--level --ls --lc --edge --standard --rk-line --valley-suppression
-    --n-sampling --window --profile --spikes`` with ``surfmet roughness``'s meaning and
-    defaults (``--level``: plane, a line on profiles, none for an instrument's R-profile;
-    a profile's λc, λs, standard and sampling lengths: the ones its file states)."""
+    """Add ``--level --ls --lc --edge --standard --rk-line --element-start
+    --valley-suppression --n-sampling --window --profile --spikes`` with ``surfmet
+    roughness``'s meaning and defaults (``--level``: plane, a line on profiles, none for an
+    instrument's R-profile; a profile's λc, λs, standard, sampling lengths, Rk construction
+    and element pairing: the ones its file states)."""
     g: Any = p.add_argument_group("evaluation (as surfmet roughness)") if group else p
     g.add_argument("--level", default=None,
                    help="form removal: none, mean, plane, poly:N, sphere, cylinder (default "
@@ -60,6 +65,12 @@ def add_roughness_options(p: argparse.ArgumentParser, *, what: str = "evaluate",
                    "40%% secant (default, unless the file states its instrument's), its "
                    "least-squares fit, or 'levels' (the curve tabulated at 1%% of Rt, as a "
                    "Mitutoyo SurfTest prints)")
+    g.add_argument("--element-start", choices=ELEMENT_STARTS, default=None,
+                   help="profiles: RSm and Rc profile elements paired peak first (default, "
+                   "unless the file states its instrument's and its standard is in force) "
+                   "or from the first mean-line crossing of each sampling length (of the "
+                   "evaluation length with iso21920; 'first-crossing', as a Mitutoyo "
+                   "SurfTest)")
     g.add_argument("--valley-suppression", action="store_true",
                    help="profiles: ISO 13565-1 two-stage λc filter for stratified surfaces")
     g.add_argument("--n-sampling", type=positive_int, default=None, metavar="N",
@@ -76,4 +87,5 @@ def roughness_options(args: argparse.Namespace) -> dict[str, Any]:
     return {"level": args.level, "ls": args.ls, "lc": args.lc, "window": args.window,
             "profile": args.profile, "spikes": args.spikes, "standard": args.standard,
             "n_sampling": args.n_sampling, "rk_line": args.rk_line,
+            "element_start": args.element_start,
             "valley_suppression": args.valley_suppression, "edge": args.edge}

@@ -106,6 +106,7 @@ def _print_table(rec: dict[str, Any]) -> None:
 
 
 def _conditions_line(cond: dict[str, Any]) -> str:
+    from surfmet.profile_roughness import FROM_DEFAULT_PEAK
     from surfmet.units import format_length
 
     def length(block: dict[str, Any]) -> str:
@@ -123,7 +124,7 @@ def _conditions_line(cond: dict[str, Any]) -> str:
             f"λs {length(cond['ls'])}; {n['value']} sampling lengths ({n['why']})"
             + (f"; Rk construction {rk['value']} ({rk['why']})" if rk else "")
             + (f"; profile elements paired {el['value']} ({el['why']})"
-               if el and el["value"] != "peak" else ""))
+               if el and (el["value"] != "peak" or el["why"] != FROM_DEFAULT_PEAK) else ""))
 
 
 def _condition_cells(rec: dict[str, Any]) -> list[str]:
