@@ -167,8 +167,9 @@ def test_the_stiffness_preconditioner_keeps_the_cg_steps_of_one_contact_disc_fla
     # Opposite-order preconditioning (Steinbach & Wendland 1998, Adv. Comput. Math. 9:191):
     # |q|/2 against K's 2/|q| leaves a count independent of the grid on a smooth contact
     # set, while the diagonal alone grows with the grid (measured 12 -> 20 -> 29 -> 39 from
-    # 32^2 to 256^2, 75 at 1024^2). The growth of the self-affine solve lies in its contact set, not
-    # here (benchmarks/core_scaling.md, "Preconditioners on a fixed contact set").
+    # 32^2 to 256^2, 75 at 1024^2). The growth of the self-affine solve lies in its
+    # contact set, not here (benchmarks/core_scaling.md, "Preconditioners on a fixed
+    # contact set").
     flat = [_disc_cg_steps(n, True) for n in (32, 64, 128)]  # 6, 7, 8
     assert max(flat) - min(flat) <= 2 and max(flat) <= 10
     diagonal = [_disc_cg_steps(n, False) for n in (32, 128)]  # 12, 29
