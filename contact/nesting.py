@@ -10,7 +10,7 @@ viscoelastic rolling solve (:mod:`contact.viscoelastic.surface`) and steady roll
 
 - :func:`coarsen`: the mean of each 2 x 2 block (a gap, a coarse cell's mean height);
 - :func:`prolong`: bilinear interpolation from the coarse centres to the fine ones (two
-  passes of :func:`prolong_axis`);
+  passes of :func:`prolong_axis`), wrapped round a periodic grid;
 - :func:`can_nest` and :func:`coarse_grid`: whether a grid halves, and the halved grid
   (its pitch exactly doubled, its centres the means of the fine ones, its gap coarsened):
   the one coarsening of all three solvers, down to :data:`MIN_COARSE` cells a side
@@ -42,24 +42,43 @@ def coarsen(field: np.ndarray) -> np.ndarray:
     return field.reshape(*lead, ny // 2, 2, nx // 2, 2).mean(axis=(-3, -1))
 
 
-def prolong_axis(a: np.ndarray, axis: int) -> np.ndarray:
+def prolong_axis(a: np.ndarray, axis: int, periodic: bool = False) -> np.ndarray:
     """Linear interpolation along ``axis`` to the grid twice as fine (one pass of
-    :func:`prolong`)."""
+    :func:`prolong`); ``periodic``: the axis wraps round."""
     # Linear interpolation from coarse cell centres to the two fine centres of each cell:
-    # fine 2I sits a quarter cell before coarse I, fine 2I+1 a quarter cell after it; the
-    # edge cells keep their own value outward.
+    # fine 2I sits a quarter cell before coarse I, fine 2I+1 a quarter cell after it. On a
+    # free grid the edge cells keep their own value outward; on a periodic one the cell
+    # beyond the last is the first (a flat extension there would put a seam into the
+    # start of a periodic solve, a kink the fine iteration must first remove).
     a = np.moveaxis(a, axis, 0)
-    prev = np.concatenate((a[:1], a[:-1]))
-    nxt = np.concatenate((a[1:], a[-1:]))
+    if periodic:
+        prev, nxt = np.roll(a, 1, axis=0), np.roll(a, -1, axis=0)
+    else:
+        prev = np.concatenate((a[:1], a[:-1]))
+        nxt = np.concatenate((a[1:], a[-1:]))
     out = np.empty((2 * a.shape[0], *a.shape[1:]), dtype=a.dtype)
     out[0::2] = 0.75 * a + 0.25 * prev
     out[1::2] = 0.75 * a + 0.25 * nxt
     return np.moveaxis(out, 0, axis)
 
 
-def prolong(field: np.ndarray) -> np.ndarray:
-    """Bilinear interpolation of a cell field (last two axes) onto the grid twice as fine."""
-    return prolong_axis(prolong_axis(field, -2), -1)
+def prolong(field: np.ndarray, periodic: bool = False) -> np.ndarray:
+    """Bilinear interpolation of a cell field (last two axes) onto the grid twice as fine.
+
+    ``periodic``: both axes wrap round (a periodic grid's field), instead of the edge cells
+    keeping their value outward.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from contact.nesting import prolong
+    >>> ring = np.array([[0.0, 4.0]])  # one period of two cells along x
+    >>> prolong(ring, periodic=True)[0].tolist()
+    [1.0, 1.0, 3.0, 3.0]
+    >>> prolong(ring)[0].tolist()
+    [0.0, 1.0, 3.0, 4.0]
+    """
+    return prolong_axis(prolong_axis(field, -2, periodic), -1, periodic)
 
 
 def can_nest(ny: int, nx: int, smallest: int = MIN_COARSE) -> bool:

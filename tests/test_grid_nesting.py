@@ -135,3 +135,17 @@ def test_solve_normal_takes_a_grid_and_loose_arrays_through_gap_grid() -> None:
         solve_normal(g.h, e_star=1e11, load=0.5)
     with pytest.raises(ContactInputError, match="must carry a gap"):
         solve_normal(centred_grid(32, 4e-6), e_star=1e11, load=0.5)
+
+
+def test_prolong_of_a_periodic_field_wraps_round_as_periodic_linear_interpolation() -> None:
+    # the truth: numpy's own linear interpolation of the periodic coarse samples (period
+    # m cells), at the fine centres a quarter coarse cell either side of each coarse one
+    m = 8
+    rng = np.random.default_rng(3)
+    coarse = rng.random((m, m))
+    fine_at = (np.arange(2 * m) - 0.5) / 2.0  # fine centres in coarse-cell units
+    rows = np.array([np.interp(fine_at, np.arange(m), r, period=m) for r in coarse])
+    truth = np.array([np.interp(fine_at, np.arange(m), c, period=m) for c in rows.T]).T
+    np.testing.assert_allclose(prolong(coarse, periodic=True), truth, rtol=0, atol=1e-14)
+    # the free grid keeps its edge values outward, as before
+    assert prolong(coarse)[0, 0] == coarse[0, 0]

@@ -128,8 +128,11 @@ def solve_normal(
         first = solve_normal(coarse, e_star=e_star, load=load, approach=approach,
                              bounds=bounds, options=start_opts)
         # C-ordered, so that the iteration takes it over without a copy
-        p_init = (np.clip(np.ascontiguousarray(prolong(np.asarray(first.pressure))), 0.0,
-                          cap) if first.load > 0 else None)
+        # (wrapped round a periodic grid); no name holds the unclipped copy, which would
+        # stay alive through the whole fine solve (8 bytes a cell)
+        p_init = (np.clip(np.ascontiguousarray(prolong(np.asarray(first.pressure),
+                                                       grid.periodic)), 0.0, cap)
+                  if first.load > 0 else None)
     else:
         p_init = None
 
