@@ -91,6 +91,10 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    help="cells per side (default: with the Dugdale law the grid, at least "
                    "128, that gives the cohesive zone 2 pixels, within memory; 128 with the "
                    "exponential law; with --line, across the period, default 2048)")
+    p.add_argument("--model", choices=("auto", "axisymmetric", "3d"), default="auto",
+                   help="the sphere's discretisation (default auto: a smooth sphere without "
+                   "--grid or --size on axisymmetric rings that resolve the cohesive zone at "
+                   "any Maugis lambda; scans, --grid or --size: the periodic 3D grid)")
     p.add_argument("--line", action="store_true",
                    help="a cylinder of radius --radius (plane strain), per unit length")
     p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
@@ -126,7 +130,8 @@ def run(args: argparse.Namespace) -> int:
         run_ = (line_adhesion if args.line else adhesion)(
             args.radius, materials=args.materials, e_star=args.e_star, interaction=law,
             grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
-            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
+            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1),
+            **({} if args.line else {"model": args.model}))
     if args.plot:
         save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:
@@ -184,13 +189,19 @@ def _print(run_: Any) -> None:
           f"{format_length(law.range)}, peak tension {format_quantity(law.peak, 'Pa')}")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
     if law.smoothing > 0.0:
-        scale = ("the grid's scale, capped at the range" if law.smoothing >= law.range
-                 else "the grid's scale")
+        where = "rings'" if run_.axisymmetric else "grid's"
+        scale = (f"the {where} scale, capped at the range" if law.smoothing >= law.range
+                 else f"the {where} scale")
         step = f"{law.name.capitalize()} step"
         print(f"{step:15s} smoothed over {format_length(law.smoothing)} of gap "
               f"({scale}: removes the pixels' pinning of the zone's end)")
-    print(f"grid            {ball.grid} x {ball.grid} cells, "
-          f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
+    if run_.axisymmetric:
+        print(f"rings           {ball.rings} rings of {format_length(ball.dr)} to radius "
+              f"{format_length(ball.outer_radius)} (axisymmetric, free half-space; the "
+              f"cohesive zone {ball.process_zone / ball.dr:.3g} rings wide)")
+    else:
+        print(f"grid            {ball.grid} x {ball.grid} cells, "
+              f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
     print(f"                {run_.grid_why}")
     in_w_r = cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius)
     print(f"pull-off force  {_pull_off(cyc, 'µN', 1e6)}"
