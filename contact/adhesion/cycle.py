@@ -32,16 +32,16 @@ class AdhesiveProblem(Protocol):
     :class:`contact.adhesion.rings.RingProblem`)."""
 
     @property
-    def gap0(self) -> np.ndarray: ...  # noqa: D102
+    def gap0(self) -> np.ndarray: ...
 
     @property
-    def e_star(self) -> float: ...  # noqa: D102
+    def e_star(self) -> float: ...
 
     @property
-    def law(self) -> InteractionLaw: ...  # noqa: D102
+    def law(self) -> InteractionLaw: ...
 
     def equilibrium(self, approach: float, initial: np.ndarray | None = None, *,
-                    tol: float = 1e-7) -> AdhesiveState: ...  # noqa: D102
+                    tol: float = 1e-7) -> AdhesiveState: ...
 
 
 @dataclass(frozen=True)
@@ -243,11 +243,11 @@ def find_jump(branch: Branch, *, entering: bool, e_star: float | None = None,
     either side. ``reach`` (m), the interaction's range, marks a wider step unresolved.
     """
     touching = branch.contact_area > 0.0
-    change = np.flatnonzero(touching[1:] != touching[:-1])
-    change = [i for i in change if touching[i + 1] == entering]
+    flips = np.flatnonzero(touching[1:] != touching[:-1])
+    change = [int(i) for i in flips if touching[i + 1] == entering]
     if not change:
         return None
-    i = int(change[0])
+    i = change[0]
     steps = np.abs(np.diff(branch.load))
     jump = float(steps[i])
     if e_star is None:

@@ -149,7 +149,7 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
         raise ContactInputError(f"the steps must be an integer of at least 4, got {steps!r}")
     width, outer = ring_width(radius, e_star, law)
     dr = width if dr is None else positive(dr, "the ring width", "m")
-    n = max(16, int(math.ceil(outer / dr)))
+    n = max(16, math.ceil(outer / dr))
     problem = ring_problem(radius, e_star, law, np.arange(n + 1) * dr)
     far, deep = approach_range(radius, e_star, law)
     cycle = approach_retraction(problem, np.linspace(far, deep, int(steps)), tol=tol,

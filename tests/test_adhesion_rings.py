@@ -1,0 +1,109 @@
+"""The smooth adhesive sphere on axisymmetric rings (``surfmet adhesion``'s default for a
+smooth sphere) against closed forms: Hertz (no adhesion), Maugis-Dugdale's pull-off and
+the approach at it (Maugis 1992, solved independently in tests/maugis_reference.py) from
+lambda 0.05 to 10, and the JKR and DMT limits 1.5 and 2 pi w R.
+
+On main the command's default at lambda 10 was the 1952^2 periodic grid (more than an
+hour of CPU) and there was no ``--model``: these tests fail there (the facade has no
+``model``, the JSON no ``discretisation``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from maugis_reference import md_pull_off, md_pull_off_approach
+
+from surfmet.cli import main
+
+R, E_STAR, W = 1e-3, 1e9, 0.05
+K = 4.0 * E_STAR / 3.0
+# h0 for Maugis' lambda: lambda = 2 (w / h0) (R / (pi w K^2))^(1/3)
+_SCALE = 2.0 * W * (R / (math.pi * W * K * K)) ** (1 / 3)
+# Maugis' approach scale (pi^2 w^2 R / K^2)^(1/3)
+D_SCALE = (math.pi ** 2 * W * W * R / (K * K)) ** (1 / 3)
+
+
+def _run(lam: float, steps: int = 40, law: str = "dugdale"):
+    from surfmet.mechanics.adhesion import adhesion
+
+    return adhesion(R, work=W, range_=_SCALE / lam, e_star=E_STAR, interaction=law,
+                    steps=steps, model="axisymmetric")
+
+
+def test_without_adhesion_the_rings_give_hertz():
+    """w = 1e-9 J/m^2: P = (4/3) E* sqrt(R) delta^(3/2), a = sqrt(R delta) (Hertz)."""
+    from contact.adhesion.laws import DugdaleLaw
+    from contact.adhesion.rings import ring_problem, solve_rings
+
+    law = DugdaleLaw.from_range(1e-9, 1e-9)
+    delta = 1e-7
+    a = math.sqrt(R * delta)
+    problem = ring_problem(R, E_STAR, law, np.linspace(0.0, 3.0 * a, 601))
+    st = solve_rings(problem, delta)
+    assert st.load == pytest.approx(4.0 / 3.0 * E_STAR * math.sqrt(R) * delta ** 1.5, rel=5e-3)
+    assert math.sqrt(st.contact_area / math.pi) == pytest.approx(a, abs=problem.dx)
+
+
+@pytest.mark.parametrize("lam", [0.05, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0])
+def test_pull_off_is_maugis_from_lambda_0_05_to_10(lam):
+    run = _run(lam)
+    res = run.result
+    assert run.axisymmetric and res.maugis_parameter == pytest.approx(lam, rel=1e-3)
+    want = md_pull_off(res.maugis_parameter) * math.pi * W * R
+    assert res.cycle.pull_off_force == pytest.approx(want, rel=0.02)
+    assert not res.warnings
+
+
+@pytest.mark.parametrize("lam", [0.1, 1.0, 10.0])
+def test_the_approach_at_pull_off_is_maugis(lam):
+    """The rings' half-space is free: the approach is Maugis' delta itself, from the
+    distant surface (the periodic grid's is from the deformed mean plane)."""
+    res = _run(lam).result
+    want = md_pull_off_approach(res.maugis_parameter) * D_SCALE
+    assert res.cycle.pull_off_approach == pytest.approx(want, rel=0.03, abs=0.01 * D_SCALE)
+
+
+def test_jkr_and_dmt_limits():
+    """lambda 10: the pull-off within 2 % of JKR's 1.5 pi w R; lambda 0.05 within 2 % of
+    DMT's 2 pi w R (Maugis' curve itself is within 1.3 % of each there)."""
+    jkr, dmt = _run(10.0).result, _run(0.05).result
+    assert jkr.cycle.pull_off_force == pytest.approx(jkr.jkr_pull_off, rel=0.02)
+    assert dmt.cycle.pull_off_force == pytest.approx(dmt.dmt_pull_off, rel=0.02)
+
+
+def test_command_default_at_lambda_10_is_maugis_on_rings(capsys):
+    """The issue's command at lambda 10: the default is the rings, within 2 % of Maugis,
+    the JSON naming the discretisation and the zone's rings."""
+    rc = main(["adhesion", "--radius", "1mm", "--e-star", "1GPa", "--work-of-adhesion",
+               "0.05J/m2", "--range", f"{_SCALE / 10.0 * 1e9:.6g}nm", "--interaction",
+               "dugdale", "--json", "--quiet"])
+    assert rc == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["discretisation"] == "axisymmetric"
+    assert rec["grid"]["discretisation"] == "axisymmetric"
+    assert rec["grid"]["process_zone_rings"]["value"] >= 8.0
+    lam = rec["maugis_parameter"]["value"]
+    assert lam == pytest.approx(10.0, rel=1e-3)
+    want = md_pull_off(lam) * math.pi * W * R
+    assert rec["pull_off_force"]["value"] == pytest.approx(want, rel=0.02)
+
+
+def test_model_3d_and_a_grid_keep_the_periodic_grid(capsys):
+    base = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhesion",
+            "50mJ/m2", "--range", "2nm", "--steps", "6", "--json", "--quiet"]
+    for extra in (["--grid", "16"], ["--model", "3d", "--grid", "16"]):
+        assert main(base + extra) == 0
+        rec = json.loads(capsys.readouterr().out)
+        assert rec["discretisation"] == "3d" and rec["grid"]["cells"] == 16
+
+
+def test_axisymmetric_with_a_grid_is_one_line(capsys):
+    rc = main(["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhesion",
+               "50mJ/m2", "--range", "2nm", "--model", "axisymmetric", "--grid", "32"])
+    assert rc == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--model 3d" in err[0]
