@@ -131,7 +131,7 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
     Examples
     --------
     Maugis' lambda 1 (R 1 mm, E* 1 GPa, w 0.05 J/m^2, h0 15.3 nm): the pull-off lies
-    between JKR's 1.5 pi w R and DMT's 2 pi w R (Maugis' curve: 1.70 pi w R):
+    between JKR's 1.5 pi w R and DMT's 2 pi w R (Maugis' curve: 1.60 pi w R):
 
     >>> from contact.adhesion.laws import DugdaleLaw
     >>> from contact.adhesion.ring_ball import adhesive_sphere, ring_width
@@ -139,7 +139,7 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
     >>> dr, _ = ring_width(1e-3, 1e9, law)
     >>> ball = adhesive_sphere(1e-3, 1e9, law.on_grid(dr, 1e9), steps=12)
     >>> print(f"{ball.cycle.pull_off_force / (3.14159265 * 0.05 * 1e-3):.2f} pi w R")
-    1.70 pi w R
+    1.61 pi w R
     """
     positive(radius, "the radius", "m")
     e_star = modulus(e_star)

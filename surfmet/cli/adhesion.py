@@ -49,7 +49,8 @@ than {zone:g} pixels wide is warned about (JSON grid.process_zone_pixels): the p
 comes out too large, by the measured excess the warning states. On the 3D grid without
 --grid the Dugdale law's grid is the one (at least 128 cells) that makes the zone {zone:g}
 pixels wide; where the memory does not allow it, the largest grid that fits is used and a
-warning says by how much the pull-off is then off (JSON grid.why; measured convergence in docs/adhesion.md).
+warning says by how much the pull-off is then off (JSON grid.why; measured convergence
+in docs/adhesion.md).
 Measured against Maugis-Dugdale on this command's sphere, Dugdale step smoothed on the
 grid (benchmarks/adhesion_zone_threshold.py): within 2.1 % from 2 pixels up (Maugis
 lambda 1 to 5), up to +3.8 % between 1.5 and 2, +4.6 % to +14 % below
