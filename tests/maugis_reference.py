@@ -53,3 +53,18 @@ def md_curve_error(lam: float, a: np.ndarray, load: np.ndarray) -> np.ndarray:
     zero load, where a relative error would blow up (the norm of the 2 % asked for)."""
     ref = md_load_at_radius(lam, a)
     return np.abs(np.asarray(load, dtype=float) - ref) / np.maximum(np.abs(ref), md_pull_off(lam))
+
+
+def md_pull_off_approach(lam: float) -> float:
+    """The approach at the pull-off (the largest tension), over (pi^2 w^2 R / K^2)^(1/3):
+    Delta = A^2 - (4/3) lambda A sqrt(m^2 - 1) (Maugis 1992; Johnson & Greenwood 1997,
+    eq. 6) at the m of the curve's least load."""
+    m = 1.0 + np.logspace(-8, 4, 20001)
+    _, p = md_curve(lam, m)
+    k = int(np.argmin(p))
+    best = m[k]
+    if 0 < k < m.size - 1:
+        best = optimize.minimize_scalar(lambda x: md_curve(lam, np.array([x]))[1][0],
+                                        bracket=(m[k - 1], m[k], m[k + 1])).x
+    a, _ = md_curve(lam, np.array([best]))
+    return float(a[0] ** 2 - 4.0 / 3.0 * lam * a[0] * np.sqrt(best * best - 1.0))

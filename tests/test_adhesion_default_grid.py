@@ -88,7 +88,7 @@ def test_where_memory_caps_the_grid_it_says_by_how_much():
 def _pull_off(capsys, lam: float) -> tuple[float, dict]:
     rc = main(["adhesion", "--radius", "1mm", "--e-star", "1GPa", "--work-of-adhesion",
                "0.05J/m2", "--range", f"{_h0(lam) * 1e9:.6g}nm", "--interaction", "dugdale",
-               "--json", "--quiet"])
+               "--model", "3d", "--json", "--quiet"])  # the 3D grid's default
     assert rc == 0
     rec = json.loads(capsys.readouterr().out)
     return rec["pull_off_force"]["value"], rec

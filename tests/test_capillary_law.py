@@ -136,3 +136,18 @@ def test_the_capillary_law_is_in_three_files():
         and word.search(p.read_text(encoding="utf-8")))
     assert files == ["contact/adhesion/laws/capillary.py", "docs/adhesion.md",
                      "tests/test_capillary_law.py"]
+
+
+def test_the_text_echoes_the_contact_angle_in_degrees(capsys):
+    """The inputs' text states the contact angle in degrees, as given (30deg), not
+    0.523599 rad; the JSON keeps SI with its unit (on main the text read 0.523599 rad)."""
+    argv = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--interaction",
+            "capillary", "--surface-tension", "72mN/m", "--contact-angle", "30deg",
+            "--kelvin-radius", "1nm", "--grid", "16", "--steps", "4", "--quiet"]
+    assert main(argv) == 0
+    line = [s for s in capsys.readouterr().out.splitlines() if "contact angle" in s]
+    assert len(line) == 1 and line[0].split()[-1] == "30°" and "rad" not in line[0]
+    assert main([*argv, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["inputs"]["contact_angle"] == {"value": pytest.approx(THETA, rel=1e-12),
+                                              "unit": "rad"}

@@ -14,13 +14,34 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
-from contact.adhesion.solver import AdhesiveProblem, AdhesiveState, solve_adhesive
+from contact.adhesion.laws import InteractionLaw
+from contact.adhesion.solver import AdhesiveState
 from contact.record import SolveRecord, combine
 
 _GOLDEN = 0.5 * (math.sqrt(5.0) - 1.0)
+
+
+class AdhesiveProblem(Protocol):
+    """What a cycle asks of a problem: its undeformed gap, modulus and law, and one
+    equilibrium at an approach from a warm-start gap (the periodic grid's
+    :class:`contact.adhesion.solver.AdhesiveProblem`, the rings'
+    :class:`contact.adhesion.rings.RingProblem`)."""
+
+    @property
+    def gap0(self) -> np.ndarray: ...
+
+    @property
+    def e_star(self) -> float: ...
+
+    @property
+    def law(self) -> InteractionLaw: ...
+
+    def equilibrium(self, approach: float, initial: np.ndarray | None = None, *,
+                    tol: float = 1e-7) -> AdhesiveState: ...
 
 
 @dataclass(frozen=True)
@@ -111,8 +132,7 @@ def advance(problem: AdhesiveProblem, previous: tuple[float, AdhesiveState] | No
     :data:`MAX_SPLITS` halvings). Returns every (approach, state) reached, in order; the
     record of every solve run, the attempts a split discards included, is appended to
     ``records`` if given."""
-    st = solve_adhesive(problem, target, None if previous is None else previous[1].gap,
-                        tol=tol)
+    st = problem.equilibrium(target, None if previous is None else previous[1].gap, tol=tol)
     if records is not None:
         records.append(st.solve)
     if previous is None or depth >= MAX_SPLITS:
@@ -143,7 +163,7 @@ def run_branch(problem: AdhesiveProblem, approaches: np.ndarray,
     previous = None
     if initial is not None:
         d0, g0 = initial
-        previous = (float(d0), solve_adhesive(problem, float(d0), g0, tol=tol))
+        previous = (float(d0), problem.equilibrium(float(d0), g0, tol=tol))
         run.append(previous[1].solve)
     for k, d in enumerate(approaches):
         done += advance(problem, previous, float(d), tol, records=run)
@@ -184,7 +204,7 @@ def refine_pull_off(problem: AdhesiveProblem, branch: Branch, gaps: list[np.ndar
     hi, lo, start = float(branch.approach[k - 1]), float(branch.approach[k + 1]), gaps[k - 1]
 
     def tension(d: float) -> float:
-        state = solve_adhesive(problem, d, start, tol=tol)
+        state = problem.equilibrium(d, start, tol=tol)
         if records is not None:
             records.append(state.solve)
         return -state.load
@@ -223,11 +243,11 @@ def find_jump(branch: Branch, *, entering: bool, e_star: float | None = None,
     either side. ``reach`` (m), the interaction's range, marks a wider step unresolved.
     """
     touching = branch.contact_area > 0.0
-    change = np.flatnonzero(touching[1:] != touching[:-1])
-    change = [i for i in change if touching[i + 1] == entering]
+    flips = np.flatnonzero(touching[1:] != touching[:-1])
+    change = [int(i) for i in flips if touching[i + 1] == entering]
     if not change:
         return None
-    i = int(change[0])
+    i = change[0]
     steps = np.abs(np.diff(branch.load))
     jump = float(steps[i])
     if e_star is None:

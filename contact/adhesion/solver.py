@@ -156,6 +156,12 @@ class AdhesiveProblem:
         """Stiffness per area of the mean-displacement spring (Pa/m)."""
         return float(self.stiffness[0, 0])
 
+    def equilibrium(self, approach: float, initial: np.ndarray | None = None, *,
+                    tol: float = 1e-7) -> AdhesiveState:
+        """:func:`solve_adhesive` at ``approach`` from the gap ``initial`` (the call of
+        :mod:`contact.adhesion.cycle`, which the ring problem answers too)."""
+        return solve_adhesive(self, approach, initial, tol=tol)
+
 
 def adhesive_problem(gap0: np.ndarray | Grid, dx: float | None = None,
                      e_star: float | None = None,

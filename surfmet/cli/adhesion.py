@@ -34,16 +34,23 @@ EPILOG = """examples:
   surfmet adhesion --line --radius 10um --e-star 1GPa --work-of-adhesion 50mJ/m2 \\
       --range 3nm --json
 
-The sphere is a paraboloid in the middle of a periodic cell (--size, default four times
-the larger of the JKR contact radius at zero load and the interaction zone). --range is
+A smooth sphere (no PLATE, --ball, --grid or --size) is solved by default on
+axisymmetric rings (--model auto; JSON "discretisation"): a free half-space, rings
+narrow enough to put {rings:g} across the cohesive zone (or 200 across the contact where
+the zone is wider), so the pull-off is Maugis' within 2 % from lambda 0.05 to 10 and the
+approach is Maugis' delta, from the distant surface. --model 3d (or --grid, --size, a
+scan) takes the periodic 3D grid instead: the sphere is a paraboloid in the middle of a
+periodic cell (--size, default four times the larger of the JKR contact radius at zero
+load and the interaction zone), the approach from the deformed mean plane. --range is
 h0 = w / sigma0 for the Dugdale (Maugis) law, rho for the exponential law
 t(g) = (w / rho) exp(-g / rho). The pull-off force is the largest tension on the way out
 (displacement control). A grid that leaves the cohesive zone pi E* w / (4 sigma0^2) fewer
 than {zone:g} pixels wide is warned about (JSON grid.process_zone_pixels): the pull-off then
-comes out too large, by the measured excess the warning states. Without --grid the Dugdale
-law's grid is the one (at least 128 cells) that makes the zone {zone:g} pixels wide; where
-the memory does not allow it, the largest grid that fits is used and a warning says by how
-much the pull-off is then off (JSON grid.why; measured convergence in docs/adhesion.md).
+comes out too large, by the measured excess the warning states. On the 3D grid without
+--grid the Dugdale law's grid is the one (at least 128 cells) that makes the zone {zone:g}
+pixels wide; where the memory does not allow it, the largest grid that fits is used and a
+warning says by how much the pull-off is then off (JSON grid.why; measured convergence
+in docs/adhesion.md).
 Measured against Maugis-Dugdale on this command's sphere, Dugdale step smoothed on the
 grid (benchmarks/adhesion_zone_threshold.py): within 2.1 % from 2 pixels up (Maugis
 lambda 1 to 5), up to +3.8 % between 1.5 and 2, +4.6 % to +14 % below
@@ -62,6 +69,7 @@ and with the rigid cylinder's. With PLATE the roughness is the scan's middle row
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
+    from contact.adhesion.ring_ball import ZONE_RINGS
     from contact.zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN
     from surfmet.units import parse_surface_energy
 
@@ -69,10 +77,12 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         "adhesion",
         help="pull-off, jumps and hysteresis of an adhesive sphere on a flat",
         description="Approach an elastic sphere to a flat and retract it under displacement "
-        "control, with a Dugdale (Maugis) or exponential adhesion law solved on an FFT "
+        "control, with a Dugdale (Maugis) or exponential adhesion law solved on axisymmetric "
+        "rings (a smooth sphere) or an FFT "
         "boundary-element grid: pull-off force, jump-in and jump-out, energy lost in the "
         "cycle, and the Maugis and Tabor parameters.",
-        epilog=EPILOG.format(zone=MIN_ZONE_PIXELS, plain=MIN_ZONE_PIXELS_PLAIN),
+        epilog=EPILOG.format(zone=MIN_ZONE_PIXELS, plain=MIN_ZONE_PIXELS_PLAIN,
+                             rings=ZONE_RINGS),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--radius", type=positive_length, required=True, metavar="R",
@@ -88,9 +98,14 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "work and a range)")
     add_interaction_argument(p)
     p.add_argument("--grid", type=int, default=None, metavar="N",
-                   help="cells per side (default: with the Dugdale law the grid, at least "
+                   help="cells per side of the 3D grid (implies --model 3d; default: with "
+                   "the Dugdale law the grid, at least "
                    "128, that gives the cohesive zone 2 pixels, within memory; 128 with the "
                    "exponential law; with --line, across the period, default 2048)")
+    p.add_argument("--model", choices=("auto", "axisymmetric", "3d"), default="auto",
+                   help="the sphere's discretisation (default auto: a smooth sphere without "
+                   "--grid or --size on axisymmetric rings that resolve the cohesive zone at "
+                   "any Maugis lambda; scans, --grid or --size: the periodic 3D grid)")
     p.add_argument("--line", action="store_true",
                    help="a cylinder of radius --radius (plane strain), per unit length")
     p.add_argument("--size", type=positive_length, metavar="L", help="side of the periodic cell")
@@ -126,7 +141,8 @@ def run(args: argparse.Namespace) -> int:
         run_ = (line_adhesion if args.line else adhesion)(
             args.radius, materials=args.materials, e_star=args.e_star, interaction=law,
             grid=args.grid, size=args.size, steps=args.steps, plate=args.plate,
-            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1))
+            ball=args.ball, spikes=args.spikes, progress=lambda done, total: bar.update(1),
+            **({} if args.line else {"model": args.model}))
     if args.plot:
         save_figure((line_plot if args.line else plot)(run_, args.plot), args.plot)
     if args.json:
@@ -184,13 +200,19 @@ def _print(run_: Any) -> None:
           f"{format_length(law.range)}, peak tension {format_quantity(law.peak, 'Pa')}")
     print(f"Maugis lambda   {ball.maugis_parameter:.4g}   (Tabor mu {ball.tabor_parameter:.4g})")
     if law.smoothing > 0.0:
-        scale = ("the grid's scale, capped at the range" if law.smoothing >= law.range
-                 else "the grid's scale")
+        where = "rings'" if run_.axisymmetric else "grid's"
+        scale = (f"the {where} scale, capped at the range" if law.smoothing >= law.range
+                 else f"the {where} scale")
         step = f"{law.name.capitalize()} step"
         print(f"{step:15s} smoothed over {format_length(law.smoothing)} of gap "
               f"({scale}: removes the pixels' pinning of the zone's end)")
-    print(f"grid            {ball.grid} x {ball.grid} cells, "
-          f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
+    if run_.axisymmetric:
+        print(f"rings           {ball.rings} rings of {format_length(ball.dr)} to radius "
+              f"{format_length(ball.outer_radius)} (axisymmetric, free half-space; the "
+              f"cohesive zone {ball.process_zone / ball.dr:.3g} rings wide)")
+    else:
+        print(f"grid            {ball.grid} x {ball.grid} cells, "
+              f"pixel {format_length(ball.dx)}, periodic cell {format_length(ball.size)}")
     print(f"                {run_.grid_why}")
     in_w_r = cyc.pull_off_force / (3.141592653589793 * law.work * ball.radius)
     print(f"pull-off force  {_pull_off(cyc, 'µN', 1e6)}"

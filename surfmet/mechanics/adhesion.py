@@ -71,13 +71,24 @@ class Adhesion:
         """Whether this is a line contact (results per unit length)."""
         return hasattr(self.result, "cells")
 
+    @property
+    def axisymmetric(self) -> bool:
+        """Whether the sphere was solved on rings
+        (:class:`contact.adhesion.ring_ball.RingBall`) rather than a periodic 3D grid."""
+        return hasattr(self.result, "rings")
+
+
+#: The discretisations of the sphere: ``auto`` takes rings for a smooth sphere without
+#: ``grid`` or ``size`` (the periodic grid's), the 3D grid otherwise.
+MODELS = ("auto", "axisymmetric", "3d")
+
 
 def adhesion(radius: float, *, work: float | None = None, range_: float | None = None,
              materials: Materials | None = None, e_star: float | None = None,
              interaction: str | AdhesionLaw = INTERACTION,
              grid: int | None = None, size: float | None = None, steps: int = 40,
              plate: ScanSource | None = None, ball: ScanSource | None = None,
-             spikes: Spikes = SPIKES,
+             spikes: Spikes = SPIKES, model: str = "auto",
              progress: Callable[[int, int], None] | None = None) -> Adhesion:
     """The approach-retraction cycle of a sphere of ``radius`` on a flat (a cylinder:
     :func:`surfmet.mechanics.adhesion_line.line_adhesion`).
@@ -116,6 +127,11 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
         Scans (smooth surfaces without).
     spikes : {"remove", "keep"} or bool
         Spike handling of the scans.
+    model : {"auto", "axisymmetric", "3d"}
+        The discretisation (:data:`MODELS`): a smooth sphere without ``grid`` and
+        ``size`` is solved on rings by default (:func:`ring_run`: axisymmetric, the
+        cohesive zone resolved at any lambda for the price of a radius), a rough one or
+        one given a grid on the periodic 3D grid.
     progress : callable, optional
         ``progress(done, total)`` after each step.
 
@@ -169,6 +185,8 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
 
     mats = adhesion_pair(materials, e_star)
     law = interaction_law(interaction, work, range_)
+    if _on_rings(model, grid, size, plate, ball):
+        return ring_run(radius, mats, law, steps, progress)
     if size is None:
         size = default_size(radius, mats.e_star, law)
     choice = None
@@ -186,6 +204,67 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
         res = dataclasses.replace(res, warnings=(*res.warnings, choice.why))
     why = choice.why if choice is not None else "given by the user"
     return Adhesion(res, scans, why)
+
+
+def _on_rings(model: str, grid: int | None, size: float | None, plate: Any, ball: Any) -> bool:
+    """Whether the sphere is solved on rings (:data:`MODELS`); a ring model asked for
+    with a grid, a cell or scans is one line."""
+    if model not in MODELS:
+        raise SurfmetInputError(f"the model must be one of {', '.join(MODELS)}, got {model!r}")
+    given = [name for name, v in (("a grid", grid), ("a periodic cell size", size),
+                                  ("a plate scan", plate), ("a ball scan", ball))
+             if v is not None]
+    if model == "axisymmetric" and given:
+        raise SurfmetInputError(
+            f"the axisymmetric model is the smooth sphere's: {', '.join(given)} need "
+            "--model 3d")
+    return model == "axisymmetric" or (model == "auto" and not given)
+
+
+def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
+             progress: Callable[[int, int], None] | None = None) -> Adhesion:
+    """The smooth sphere's cycle on rings (:func:`contact.adhesion.ring_ball.adhesive_sphere`),
+    the law's step smoothed on the rings' width as on a grid's pixel.
+
+    Parameters
+    ----------
+    radius : float
+        Sphere radius (m).
+    mats : MaterialPair
+        The resolved pair (:func:`adhesion_pair`).
+    law : InteractionLaw
+        The law (:func:`interaction_law`).
+    steps : int
+        Approach and retraction steps.
+    progress : callable, optional
+        ``progress(done, total)``.
+
+    Returns
+    -------
+    Adhesion
+        The run; ``grid_why`` states the rings and their resolution of the zone.
+
+    Examples
+    --------
+    >>> from surfmet.mechanics.adhesion import adhesion_pair, interaction_law, ring_run
+    >>> run = ring_run(1e-3, adhesion_pair(None, 1e9), interaction_law("dugdale", 0.05,
+    ...                1.53e-7), 8)
+    >>> run.axisymmetric, run.result.rings
+    (True, 416)
+    """
+    from contact.adhesion.ring_ball import ZONE_RINGS, adhesive_sphere, ring_width
+    from contact.zone_resolution import process_zone
+
+    dr, _ = ring_width(radius, mats.e_star, law)
+    if law.smoothing == 0.0:  # a step smoothed on the rings, where the law has one
+        law = law.on_grid(dr, mats.e_star)
+    res = adhesive_sphere(radius, mats, law, dr=dr, steps=steps, progress=progress)
+    zone = process_zone(mats.e_star, law.work, law.peak)
+    why = (f"default for a smooth sphere: axisymmetric rings ({res.rings} of "
+           f"{dr:.3g} m), the cohesive zone {zone / dr:.3g} rings wide (at least "
+           f"{ZONE_RINGS:g}, or 200 across the contact's scale where the zone is wider); "
+           "--model 3d for the periodic 3D grid")
+    return Adhesion(res, None, why)
 
 
 def default_grid(size: float, e_star: float, law: AdhesionLaw, steps: int) -> GridChoice:

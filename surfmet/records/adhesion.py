@@ -142,17 +142,32 @@ def adhesion_record(run: Any) -> dict[str, Any]:
         "jump_in": jump_record(cyc.jump_in),
         "jump_out": jump_record(cyc.jump_out),
         "hysteresis_energy": quantity(cyc.hysteresis_energy, "J"),
-        "grid": {"cells": ball.grid, "size": quantity(ball.size, "m"),
-                 "pixel": quantity(ball.dx, "m"), "periodic": True,
-                 "process_zone": quantity(ball.process_zone, "m"),
-                 "process_zone_pixels": quantity(ball.process_zone / ball.dx, ""),
-                 "why": run.grid_why},
+        "discretisation": "axisymmetric" if run.axisymmetric else "3d",
+        "grid": _grid(run),
         "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
         "solve": solve_record(cyc.solve),
         "curve": {"in": _leg(cyc.approach_leg), "out": _leg(cyc.retraction_leg)},
         "scans": scans_record(run.scans),
         "warnings": list(ball.warnings),
     }
+
+
+def _grid(run: Any) -> dict[str, Any]:
+    """The discretisation of a sphere's run: the rings (axisymmetric, free half-space) or
+    the periodic 3D grid, with the cohesive zone's width in rings or pixels."""
+    ball = run.result
+    zone = quantity(ball.process_zone, "m")
+    if run.axisymmetric:
+        return {"discretisation": "axisymmetric", "rings": ball.rings,
+                "ring_width": quantity(ball.dr, "m"),
+                "outer_radius": quantity(ball.outer_radius, "m"), "periodic": False,
+                "process_zone": zone,
+                "process_zone_rings": quantity(ball.process_zone / ball.dr, ""),
+                "why": run.grid_why}
+    return {"discretisation": "3d", "cells": ball.grid, "size": quantity(ball.size, "m"),
+            "pixel": quantity(ball.dx, "m"), "periodic": True, "process_zone": zone,
+            "process_zone_pixels": quantity(ball.process_zone / ball.dx, ""),
+            "why": run.grid_why}
 
 
 def _line_leg(branch: Branch) -> dict[str, Any]:

@@ -12,6 +12,7 @@ command has and their units is the command line's knowledge
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from typing import Any
 
@@ -69,6 +70,8 @@ def _text(value: Any) -> str:
             return "n/a"
         if unit == "":
             return f"{v:.6g}"
+        if unit == "rad":  # an angle reads in degrees, as one is given (30deg); SI in JSON
+            return f"{math.degrees(v):.6g}°"
         return format_quantity(v, unit, 6)
     if isinstance(value, list):
         return ", ".join(_text(v) for v in value)
