@@ -309,3 +309,18 @@ def _cached(ny: int, nx: int, dx: float, dy: float, periodic: bool, ahead: int,
 
 # the factory's cache, cleared as before (benchmarks time cold operators)
 convolution.cache_clear = _cached.cache_clear  # type: ignore[attr-defined]
+
+
+def drop_cached() -> None:
+    """Forget every cached operator and kernel (their arrays go with the last user).
+
+    A nested solve of a large grid calls it between its coarse levels and its own
+    operator: the coarse kernels (quadrant, half spectrum and stiffness of n/2, n/4, ...:
+    6 bytes a fine cell) are not kept through the fine solve. Rebuilding them costs a
+    third of the fine kernel's construction, once per cold solve; warm-started solves
+    (a load sweep) do not nest and keep their operator.
+    """
+    _cached.cache_clear()
+    for cached in (free_kernel_quadrant, free_kernel_spectrum, extended_kernel_spectrum,
+                   periodic_kernel_spectrum, periodic_kernel_real):
+        cached.cache_clear()
