@@ -66,7 +66,8 @@ def sphere_gap(n: int, dx: float, radius: float, *, ny: int | None = None,
     dy = dx if dy is None else dy
     r2 = centred_coordinates(n, dx)[None, :] ** 2 + centred_coordinates(ny, dy)[:, None] ** 2
     if not exact:
-        return r2 / (2.0 * radius)
+        r2 /= 2.0 * radius  # in place: a fresh array of the grid's size is a page-fault pass
+        return r2
     if r2.max() >= radius**2:
         raise ContactInputError("the domain is wider than the sphere; use a smaller size")
     return radius - np.sqrt(radius**2 - r2)

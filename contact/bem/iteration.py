@@ -74,7 +74,7 @@ def start(problem: Problem, work: Workspace, stats: SolverStats,
     """The first iterate: the warm start, a uniform pressure (load control) or the
     penetration spread over the grid (approach control), made feasible.
 
-    ``approach`` is E* delta in approach control (ignored in load control).
+    ``approach`` is delta (m) in approach control (ignored in load control).
     ``displacement`` is K * ``initial`` where the caller has it exactly (a warm start
     from the last answer of a loop: one float64 convolution saved); used in elastic load
     control only, where making the start feasible only rescales it.

@@ -7,7 +7,8 @@ called through :class:`contact.setups.ball_on_plate.SphereContact`):
 =========================================================  ==============
 array (:class:`contact.bem.state.Workspace`)               bytes per cell
 =========================================================  ==============
-gap h, E* h, p, u, d, t                                    6 x 8 = 48
+gap h (the iteration's own: pressures in E* units), p, u,
+d, t                                                       5 x 8 = 40
 float32 search direction (Workspace.direction_fft, also
 where many corrections are scattered)                      4
 correction index and value (int32 + float64; mostly never
@@ -21,7 +22,9 @@ nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the kernels
 =========================================================  ==============
 
 (issue 37: the padded grid is transformed by blocks and never held whole, the spectrum's
-even half only, no separate dense or preconditioned work array). Measured: the whole
+even half only, no separate dense or preconditioned work array; the float64 re-sync
+written over the displacement it replaces, the coarse answer dropped before the fine
+solve: a nested free 512^2 solve peaks at 97 B/cell under tracemalloc). Measured: the whole
 ``surfmet contact`` command on the bundled plate at 4096^2 peaks at 2.09 GB resident
 (125 B/cell, the interpreter and the scans included; 207 B/cell before issue 37), and a
 1024^2 rough solve alone adds 126 MB to the resident set size; :data:`BYTES_PER_CELL`

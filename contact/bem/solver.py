@@ -24,9 +24,14 @@ from contact.bem.result import ContactResult, build_result
 from contact.bem.state import IterationState, Problem, SolverStats, workspace
 from contact.errors import ContactInputError, ConvergenceError
 from contact.grid import Grid, scan_grid
-from contact.halfspace.convolution import convolution
+from contact.halfspace.convolution import convolution, drop_cached
 from contact.nesting import coarse_grid, prolong
 from contact.record import edge_warning
+
+#: A nested solve of at least this many cells drops the cached coarse kernels before its
+#: own solve (:func:`contact.halfspace.convolution.drop_cached`): 6 bytes a cell of the
+#: peak, for a rebuild of about 2 % of a cold solve's time; smaller grids keep them.
+DROP_COARSE_CELLS = 2048 * 2048
 
 
 def solve_normal(
@@ -118,6 +123,7 @@ def solve_normal(
     cap = bounds.hardness
     tol = opts.tol
 
+    first: ContactResult | None = None  # the coarse grid's answer, where nested
     coarse = None if initial is not None or not opts.nested else coarse_grid(grid)
     if initial is not None:
         p_init = _warm_start(initial, h.shape, cap)
@@ -135,17 +141,27 @@ def solve_normal(
                   if first.load > 0 else None)
     else:
         p_init = None
+    # the coarse answer (four fields of a quarter of the cells) is not kept through the
+    # fine solve: 8 bytes a cell of its peak
+    first = None
+    if coarse is not None and ny * nx >= DROP_COARSE_CELLS:
+        drop_cached()  # the coarse levels' kernels: before the fine one is built
+    if p_init is not None:
+        p_init /= e_star  # a fresh array (clipped): the iteration's unit, p / E*
 
     problem = Problem(
-        # units where E* = 1: the gap E* h, the displacement K * p, the approach E* delta;
-        gap=(h * e_star).ravel(), grid=grid,
+        # units where the pressure is p / E* (E* = 1): the gap is h itself, a view and
+        # not a copy of the grid's size (E* h was one), the displacement K * p / E* and
+        # the approach delta in metres
+        gap=h.ravel(), grid=grid,
         operator=convolution(ny, nx, float(dx), float(dy), grid.periodic,
                              kernel=opts.kernel),
-        load_control=load is not None, target=load / (dx * dy) if load is not None else 0.0,
-        bounds=bounds, single=opts.precision == "mixed", precondition=opts.precondition,
-        workers=workers, tol=tol, max_iter=opts.max_iter,
+        load_control=load is not None,
+        target=load / (dx * dy * e_star) if load is not None else 0.0,
+        bounds=_per_modulus(bounds, e_star), single=opts.precision == "mixed",
+        precondition=opts.precondition, workers=workers, tol=tol, max_iter=opts.max_iter,
     )
-    state, ok = _run(problem, stats, p_init, e_star * approach if load is None else 0.0,
+    state, ok = _run(problem, stats, p_init, float(approach or 0.0),
                      None, opts.callback)
     it, res = state.iteration, state.residual
     stats.levels.append((ny, nx, it))
@@ -168,11 +184,16 @@ def solve_normal(
     return result
 
 
+def _per_modulus(bounds: PressureBounds, e_star: float) -> PressureBounds:
+    """The bounds in the iteration's pressure unit, E* (the cap H / E*)."""
+    return PressureBounds.elastic(bounds.hardness / e_star) if bounds.plastic else bounds
+
+
 def _run(problem: Problem, stats: SolverStats, p_init: np.ndarray | None, approach: float,
          displacement: np.ndarray | None,
          callback: Callable[[int, float], Any] | None) -> tuple[IterationState, bool]:
-    """Start and iterate ``problem`` (units where E* = 1); the final state and whether it
-    converged."""
+    """Start and iterate ``problem`` (units where E* = 1: pressures p / E*, lengths in
+    metres); the final state and whether it converged."""
     try:
         # the grid passes on as many threads as the FFT (their chunks, hence the answer,
         # do not depend on it)
@@ -228,23 +249,26 @@ def resolve_pressure(gap0: np.ndarray, dx: float, dy: float, *, e_star: float, l
     start. Inputs are trusted (an internal path: no checks).
     """
     ny, nx = gap0.shape
-    problem = Problem(
-        gap=(np.asarray(gap0, dtype=float) * e_star).ravel(),
+    problem = Problem(  # the units of solve_normal's iteration: p / E*, metres
+        gap=np.ascontiguousarray(gap0, dtype=float).ravel(),
         grid=scan_grid((ny, nx), dx, dy), operator=convolution(ny, nx, float(dx), float(dy),
                                                                False),
-        load_control=True, target=load / (dx * dy), bounds=PressureBounds.elastic(None),
-        single=True, precondition=True, workers=os.cpu_count() or 1, tol=tol,
-        max_iter=max_iter)
-    p_init, displacement = np.clip(start.pressure, 0.0, None), start.displacement
+        load_control=True, target=load / (dx * dy * e_star),
+        bounds=PressureBounds.elastic(None), single=True, precondition=True,
+        workers=os.cpu_count() or 1, tol=tol, max_iter=max_iter)
+    p_init = np.clip(start.pressure, 0.0, None) / e_star
+    displacement = start.displacement
     if not p_init.any():
         # nothing to start from (solve_normal's warm start does the same): a uniform start
         p_init, displacement = None, None
-    u_init = None if displacement is None else np.asarray(displacement) * e_star
+    u_init = None if displacement is None else np.asarray(displacement, dtype=float)
     state, ok = _run(problem, SolverStats(), p_init, 0.0, u_init, None)
+    pressure = state.pressure
+    pressure *= e_star
     return PressureField(
-        pressure=state.pressure.reshape(ny, nx),
-        displacement=state.displacement.reshape(ny, nx) / e_star,
-        approach=state.approach / e_star, iterations=state.iteration,
+        pressure=pressure.reshape(ny, nx),
+        displacement=state.displacement.reshape(ny, nx),
+        approach=state.approach, iterations=state.iteration,
         residual=state.residual, converged=ok)
 
 
@@ -323,11 +347,16 @@ def _assemble(h: np.ndarray, state: IterationState, e_star: float, hardness: flo
     """The result of a finished iteration, back in SI units."""
     ny, nx = h.shape
     p = state.pressure.reshape(ny, nx)
-    u_m = state.displacement.reshape(ny, nx) / e_star
-    delta = state.approach / e_star
+    # the cells at the cap H / E* of the iteration (before the unit goes back: (H / E*) E*
+    # need not round to H)
+    capped = None if hardness is None else p >= hardness / e_star
+    p *= e_star  # in place: the iterate is not used again
+    u_m = state.displacement.reshape(ny, nx)
+    delta = state.approach
     g = h + u_m - delta
-    if hardness is not None:
-        plastic = np.where(p >= hardness, np.maximum(-g, 0.0), 0.0)
+    if capped is not None:
+        p[capped] = hardness
+        plastic = np.where(capped, np.maximum(-g, 0.0), 0.0)
     else:
         plastic = np.zeros_like(p)
     gap = np.maximum(g, 0.0)

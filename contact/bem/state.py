@@ -1,7 +1,7 @@
 """What the normal solver carries from one iteration to the next.
 
-Three small objects, all in units where E* = 1 (gap and approach multiplied by E*,
-displacement u = K * p), on flattened C-contiguous arrays:
+Three small objects, all in units where E* = 1 (the pressure divided by E*; gap,
+approach and displacement u = K * p in metres), on flattened C-contiguous arrays:
 
 - :class:`Problem`: what the solve is asked, fixed during the iteration;
 - :class:`Workspace`: the preallocated work arrays, so that an iteration allocates nothing
@@ -65,11 +65,12 @@ class SolverStats:
 class Problem:
     """One solve's fixed data, in units where E* = 1.
 
-    ``gap`` is E* h, flattened; ``grid`` the cells (:class:`contact.grid.Grid`: shape,
-    pitch, origin, periodic or free boundary; its gap, in metres, is not used here);
-    ``target`` the prescribed sum of the cell pressures (the load over the cell area) in
-    load control, 0 in approach control; ``bounds`` the pressure bounds (non-adhesive
-    here: 0 <= p <= hardness); ``single`` runs the search-direction convolutions in float32.
+    ``gap`` is h (m), flattened (a view of the caller's gap, not a copy); ``grid`` the
+    cells (:class:`contact.grid.Grid`: shape, pitch, origin, periodic or free boundary);
+    ``target`` the prescribed sum of the cell pressures (the load over the cell area and
+    E*) in load control, 0 in approach control; ``bounds`` the pressure bounds
+    (non-adhesive here: 0 <= p <= hardness / E*); ``single`` runs the search-direction
+    convolutions in float32.
     """
 
     gap: np.ndarray
@@ -154,7 +155,7 @@ def workspace(problem: Problem) -> Workspace:
 class IterationState:
     """The iterate and the flags that steer the next step.
 
-    ``pressure`` p and ``displacement`` u = K * p (flattened), ``approach`` E* delta.
+    ``pressure`` p and ``displacement`` u = K * p (flattened), ``approach`` delta (m).
     ``synced``: u was last computed exactly in float64 (not updated by superposition);
     ``restart``: the next conjugate-gradient step restarts from steepest descent;
     ``projected_next``: the next elastic-plastic step is a projected gradient step;

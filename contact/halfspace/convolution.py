@@ -168,28 +168,34 @@ class Convolution:
         return inverse(buf, ny, nx, nx, workers)
 
     def _cyclic(self, x: np.ndarray, rows: tuple[int, int], multiplier: np.ndarray,
-                single: bool, workers: int) -> np.ndarray:
+                single: bool, workers: int, out: np.ndarray | None = None) -> np.ndarray:
         """The unpadded cyclic convolution: irfft2(rfft2(x) * multiplier), pruned to ``rows``."""
         ny, nx = self.ny, self.nx
         lo, hi = rows
         real_type, complex_type = real_types(single)
         if hi <= lo:
-            return np.zeros((ny, nx), dtype=real_type)
+            if out is None:
+                return np.zeros((ny, nx), dtype=real_type)
+            out.fill(0.0)
+            return out
         # the same blocked transform as the padded one, with nothing padded: the cyclic
         # convolution shifts with its input exactly
         return convolve_padded(x, multiplier, (ny, nx), rows, nx,
-                               self._buffer(ny, nx // 2 + 1, complex_type), workers)
+                               self._buffer(ny, nx // 2 + 1, complex_type), workers, out)
 
     def _padded(self, x: np.ndarray, rows: tuple[int, int], single: bool,
-                workers: int) -> np.ndarray:
+                workers: int, out: np.ndarray | None = None) -> np.ndarray:
         """The free-boundary (DC-FFT) convolution: x zero-padded to the cyclic grid."""
         lo, hi = rows
         keep = self.nx + self.ahead
         real_type, complex_type = real_types(single)
         if hi <= lo:
-            return np.zeros((self.ny, keep), dtype=real_type)
+            if out is None:
+                return np.zeros((self.ny, keep), dtype=real_type)
+            out.fill(0.0)
+            return out
         work = self._buffer(self.ny, self.shape[1] // 2 + 1, complex_type)
-        return convolve_padded(x, self.spec64, self.shape, rows, keep, work, workers)
+        return convolve_padded(x, self.spec64, self.shape, rows, keep, work, workers, out)
 
     def precondition(self, x: np.ndarray, rows: tuple[int, int], single: bool = False,
                      workers: int = -1) -> np.ndarray:
@@ -203,17 +209,20 @@ class Convolution:
         rows: tuple[int, int] | None = None,
         single: bool = False,
         workers: int = -1,
+        out: np.ndarray | None = None,
     ) -> np.ndarray:
         """K * x on the grid, shape (ny, nx + ahead), C-contiguous.
 
         ``rows=(lo, hi)`` says that x is zero outside rows [lo, hi) (only those rows are
-        transformed). ``single`` computes in float32 and returns float32.
+        transformed). ``single`` computes in float32 and returns float32. ``out`` (a
+        C-contiguous array of the result's shape and precision, not overlapping x)
+        receives the result instead of a new array.
         """
         span = (0, self.ny) if rows is None else (int(rows[0]), int(rows[1]))
         if self.periodic:
             return self._cyclic(x, span, self.spec32 if single else self.spec64, single,
-                                workers)
-        return self._padded(x, span, single, workers)
+                                workers, out)
+        return self._padded(x, span, single, workers, out)
 
 
 class SpectralConvolution(Convolution):
@@ -300,3 +309,18 @@ def _cached(ny: int, nx: int, dx: float, dy: float, periodic: bool, ahead: int,
 
 # the factory's cache, cleared as before (benchmarks time cold operators)
 convolution.cache_clear = _cached.cache_clear  # type: ignore[attr-defined]
+
+
+def drop_cached() -> None:
+    """Forget every cached operator and kernel (their arrays go with the last user).
+
+    A nested solve of a large grid calls it between its coarse levels and its own
+    operator: the coarse kernels (quadrant, half spectrum and stiffness of n/2, n/4, ...:
+    6 bytes a fine cell) are not kept through the fine solve. Rebuilding them costs a
+    third of the fine kernel's construction, once per cold solve; warm-started solves
+    (a load sweep) do not nest and keep their operator.
+    """
+    _cached.cache_clear()
+    for cached in (free_kernel_quadrant, free_kernel_spectrum, extended_kernel_spectrum,
+                   periodic_kernel_spectrum, periodic_kernel_real):
+        cached.cache_clear()

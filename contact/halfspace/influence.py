@@ -92,6 +92,26 @@ def self_influence(dx: float, dy: float) -> float:
     return float(love_coefficients(np.array(0.0), np.array(0.0), dx, dy))
 
 
+def _corner_lattice(xc: np.ndarray, yc: np.ndarray) -> np.ndarray:
+    """:func:`love_corner` on the lattice (yc[i], xc[j]) of cell corners, bit for bit.
+
+    No corner lies on an axis (the coordinates are odd multiples of half a cell), so the
+    guards against |x| = 0 are not needed; the two terms are formed in place, and on a
+    square lattice (xc == yc) the second is the transpose of the first,
+    y asinh(x/|y|) at (i, j) being x asinh(y/|x|) at (j, i): one asinh a corner instead of
+    two (the quadrant's cost, 1.3 s of the 4096^2 command, was mostly these).
+    """
+    t1 = np.arcsinh(yc[:, None] / np.abs(xc)[None, :])
+    t1 *= xc[None, :]
+    if xc.shape == yc.shape and np.array_equal(xc, yc):
+        t1 += t1.T.copy()
+        return t1
+    t2 = np.arcsinh(xc[None, :] / np.abs(yc)[:, None])
+    t2 *= yc[:, None]
+    t1 += t2
+    return t1
+
+
 @lru_cache(maxsize=8)
 def free_kernel_quadrant(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
     """K at the non-negative offsets (i dy, j dx), 0 <= i < ny, 0 <= j < nx (read-only).
@@ -105,7 +125,7 @@ def free_kernel_quadrant(ny: int, nx: int, dx: float, dy: float) -> np.ndarray:
     # same in both, sets the error).
     xc = (np.arange(nx + 1) - 0.5) * dx
     yc = (np.arange(ny + 1) - 0.5) * dy
-    f = love_corner(xc[None, :], yc[:, None])
+    f = _corner_lattice(xc, yc)
     q = f[1:, 1:] - f[:-1, 1:]
     q -= f[1:, :-1]
     q += f[:-1, :-1]

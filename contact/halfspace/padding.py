@@ -134,7 +134,7 @@ def _run_blocks(fun, starts: range, workers: int) -> None:
 
 def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
                     rows: tuple[int, int], keep: int, work: np.ndarray,
-                    workers: int = -1) -> np.ndarray:
+                    workers: int = -1, out: np.ndarray | None = None) -> np.ndarray:
     """The first ``keep`` columns of the cyclic convolution of x (ny, nx) zero-padded to
     ``shape``, by blocks: the (ny, nx) grid's own rows and columns are all that is kept.
 
@@ -154,14 +154,17 @@ def convolve_padded(x: np.ndarray, spectrum: np.ndarray, shape: tuple[int, int],
 
     The blocks run on ``workers`` threads. Compared with :func:`forward` and
     :func:`inverse` on the whole padded grid this halves the work array, and no strided
-    copy of the padded result is made.
+    copy of the padded result is made. ``out``, a C-contiguous (ny, keep) array in the
+    transform's precision that does not overlap x, receives the result (the solver's
+    float64 re-sync writes over the displacement it replaces: no second one at its peak).
     """
     ny = x.shape[0]
     py, px = shape
     lo, hi = rows
     real_type = np.float32 if work.dtype == np.complex64 else np.float64
     ncol = work.shape[1]
-    out = np.empty((ny, keep), dtype=real_type)
+    if out is None:
+        out = np.empty((ny, keep), dtype=real_type)
 
     def along_x(r0: int) -> None:
         r1 = min(r0 + BLOCK, hi)

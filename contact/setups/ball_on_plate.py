@@ -200,9 +200,11 @@ class SphereContact:
         n, dx = dom.n, dom.dx
         h = sphere_gap(n, dx, self.radius, exact=self.exact_sphere)
         if self._z is not None:
-            h = h - sample_roughness(self._z, self.zdx, self.zdy, dom.grid, centre=self.centre)
-        # Approach counted from the first touch: offsets of the data drop out.
-        self.gap0 = h - h.min()
+            h -= sample_roughness(self._z, self.zdx, self.zdy, dom.grid, centre=self.centre)
+        # Approach counted from the first touch: offsets of the data drop out. (In place,
+        # h being this method's own: no second gap of the grid's size.)
+        h -= h.min()
+        self.gap0 = h
 
     @property
     def x(self) -> np.ndarray:
