@@ -25,10 +25,12 @@ The output and figure on the documentation's page are ``mechanisms.py --gallery`
 while the documentation is built: the smooth pair with the typical loss factors only
 (the full run adds the highest ones), without the micro-slip mechanism (a 3D frictional
 solve per load, minutes; in the full run it is the smallest of them, some 100 times below
-the hysteresis rule), on 64-cell grids and 5 loads (2-12 N) instead of 128 cells and 7
-loads, so its moments and exponents are coarser than the full run's; the figure draws
-each mechanism's M_r(N). The full comparison: ``python
-examples/paper_2022/mechanisms.py`` (add ``--scans`` for the rough pair).
+the hysteresis rule), on 64-cell grids and 5 loads (2-12 N; the rotor's three ball loads
+are always added) instead of 128 cells and 7 loads, so its moments and exponents are
+coarser than the full run's (the computed viscoelastic local exponent wobbles at the
+rotor's closely spaced loads); the figure draws each mechanism's M_r(N). The full
+comparison: ``python examples/paper_2022/mechanisms.py`` (add ``--scans`` for the rough
+pair).
 """
 
 from __future__ import annotations
