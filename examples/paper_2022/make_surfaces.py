@@ -63,11 +63,20 @@ import math
 import sys
 from pathlib import Path
 
-import numpy as np
+# The script beside this one is called contact.py: keep this folder off the import path,
+# or surfmet's own "import contact" (reached once the roughness pipeline runs) would
+# import that script instead of the contact engine.
+try:
+    _HERE = Path(__file__).resolve().parent
+except NameError:  # the documentation's gallery defines no __file__; it runs in this folder
+    _HERE = Path.cwd()
+sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
-from surfmet.io import encode
-from surfmet.model import Topography
-from surfmet.roughness import roughness
+import numpy as np  # noqa: E402
+
+from surfmet.io import encode  # noqa: E402
+from surfmet.model import Topography  # noqa: E402
+from surfmet.roughness import roughness  # noqa: E402
 
 SEED = 20220325  # Materials 15(7):2518 was published in March 2022
 
@@ -168,10 +177,7 @@ def make_ball(seed: int = SEED + 1) -> Topography:
 def main(argv: list[str]) -> int:
     import argparse
 
-    try:
-        root = Path(__file__).resolve().parents[2]
-    except NameError:  # the documentation's gallery defines no __file__; it runs in this folder
-        root = Path.cwd().resolve().parents[1]
+    root = _HERE.parents[1]
     parser = argparse.ArgumentParser(
         description="Make the bundled stand-ins of the paper's two scans.")
     parser.add_argument("outdir", nargs="?", default=str(root / "surfmet" / "data"),
