@@ -22,7 +22,7 @@ asperities: less of the contact yields, the peak pressures are lower, and the ro
 exponents move), and its intervals over the track positions, from 2 positions, say
 little. The study itself is the full run, ``python
 examples/paper_2022/contact.py`` (11 track positions, 13 loads, the scans' own pixel;
-the better part of an hour on two cores).
+tens of minutes: its first Hertz check alone takes about a minute of CPU).
 """
 
 from __future__ import annotations
