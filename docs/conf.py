@@ -72,10 +72,13 @@ nitpick_ignore_regex = [(r"py:.*", r"^(?!(surfmet|contact|profiles)\b).*")]
 sphinx_gallery_conf = {
     "examples_dirs": [str(ROOT / "examples")],
     "gallery_dirs": ["auto_examples"],
-    # only the short how-tos run at build time; the paper's scripts (examples/paper_2022,
-    # minutes each) are shown with their source and run by their own tests
-    "filename_pattern": r"/plot_",
+    # every example runs at build time and shows its output and figures: the how-tos as
+    # they are, the paper's scripts (examples/paper_2022, minutes to an hour each in full)
+    # in the reduced form their pages describe, from the command line that
+    # docs/_ext/gallery_argv.py gives them (``SCRIPT [OUTDIR] --gallery``)
+    "filename_pattern": r"\.py$",
     "ignore_pattern": r"__init__\.py",
+    "reset_argv": "gallery_argv.reset_argv",
     "within_subsection_order": "FileNameSortKey",
     "download_all_examples": False,
     "remove_config_comments": True,

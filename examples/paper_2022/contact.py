@@ -5,12 +5,24 @@ The ball-on-plate contact of Alaci et al. (2022), end to end: does Hertz hold, d
 asperities yield at the experiment's loads, and what exponent lambda does the contact
 itself give M_r = s_r N^lambda?
 
-Run:  python examples/paper_2022/contact.py [OUTDIR] [--quick]
+Run:  python examples/paper_2022/contact.py [OUTDIR] [--quick | --gallery]
 
 Uses the synthetic stand-ins of the paper's scans shipped with surfmet
 (``surfmet/data/paper_plate.x3p``, ``paper_ball.x3p``; built by ``make_surfaces.py`` from
 Table 2). Prints the findings and writes figures and ``contact_findings.json`` to OUTDIR
-(default ``contact_out``). ``--quick`` uses one plate position and fewer loads.
+(default ``contact_out``). ``--quick`` uses three track positions and fewer loads.
+
+The output and figures on the documentation's page are a reduced run,
+``contact.py OUTDIR --gallery``, made while the documentation is built: the Hertz checks
+of the 10 N load and of the asymmetric rotor's heavier ball only, each on a 96-cell grid
+(a pixel of 14 µm instead of the scans' 5 µm), no resolution study, and the rolling
+exponent from 2 track positions and 5 loads on 128-cell grids (a pixel of about 10 µm).
+Its numbers are therefore coarser than the study's (a coarser pixel smooths the
+asperities: less of the contact yields, the peak pressures are lower, and the rolling
+exponents move), and its intervals over the track positions, from 2 positions, say
+little. The study itself is the full run, ``python
+examples/paper_2022/contact.py`` (11 track positions, 13 loads, the scans' own pixel;
+tens of minutes: its first Hertz check alone takes about a minute of CPU).
 """
 
 from __future__ import annotations
@@ -24,7 +36,10 @@ from pathlib import Path
 
 # This script is called contact.py: keep its own folder off the import path, or
 # "import contact" below would import the script instead of the contact engine.
-_HERE = Path(__file__).resolve().parent
+try:
+    _HERE = Path(__file__).resolve().parent
+except NameError:  # the documentation's gallery defines no __file__; it runs in this folder
+    _HERE = Path.cwd()
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
@@ -59,6 +74,19 @@ from surfmet.units import jsonable  # noqa: E402
 RADIUS = BALL_RADIUS  # m, the balls of the rotor
 MATERIALS = "steel,aluminium"
 
+#: How much each kind of run computes: the study (the default), ``--quick`` and the
+#: documentation's ``--gallery`` (which must finish in well under a minute while the pages
+#: are built). ``grid``: cells per side of the Hertz checks (None: the scans' own pixel);
+#: ``rolling_grid``: of the rough rolling sweeps (None: the automatic domain).
+RUNS = {
+    "full": {"checks": "all", "grid": None, "study": True, "loads": 13, "positions": 11,
+             "rolling_grid": None},
+    "quick": {"checks": "all", "grid": None, "study": True, "loads": 7, "positions": 3,
+              "rolling_grid": None},
+    "gallery": {"checks": "figures", "grid": 96, "study": False, "loads": 5,
+                "positions": 2, "rolling_grid": 128},
+}
+
 
 def heading(text: str) -> None:
     print()
@@ -92,13 +120,20 @@ def table2_check(plate: surfmet.Topography, ball: surfmet.Topography) -> dict:
 def main(argv: list[str]) -> int:
     import argparse
 
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
+    parser = argparse.ArgumentParser(
+        description="Ball on plate: Hertz, yield and the contact's own lambda.")
     parser.add_argument("outdir", nargs="?", default="contact_out",
                         help="output folder (default contact_out)")
-    parser.add_argument("--quick", action="store_true",
-                        help="one plate position and fewer loads (about 1 min)")
+    size = parser.add_mutually_exclusive_group()
+    size.add_argument("--quick", action="store_true",
+                      help="three track positions and fewer loads")
+    size.add_argument("--gallery", action="store_true",
+                      help="the documentation's reduced run (coarse grids, two Hertz checks, "
+                      "no resolution study; under a minute)")
     opts = parser.parse_args(argv)
-    quick = opts.quick
+    run = RUNS["gallery" if opts.gallery else "quick" if opts.quick else "full"]
+    # the gallery shows the figures left open; a command-line run writes and closes them
+    keep = close if not opts.gallery else (lambda fig: None)
     outdir = Path(opts.outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     t_start = time.time()
@@ -122,12 +157,16 @@ def main(argv: list[str]) -> int:
 
     heading("Hertz against boundary elements")
     checks = {}
-    for label, load in (("paper's 10 N check", HERTZ_CHECK_LOAD),
-                        ("symmetric rotor, per ball", sym[0]),
-                        ("asymmetric rotor, ball 1", asym[0]),
-                        ("asymmetric rotor, ball 2", asym[1])):
+    cases = (("paper's 10 N check", HERTZ_CHECK_LOAD),
+             ("symmetric rotor, per ball", sym[0]),
+             ("asymmetric rotor, ball 1", asym[0]),
+             ("asymmetric rotor, ball 2", asym[1]))
+    if run["checks"] == "figures":  # the two loads the figures and the conclusions use
+        cases = (cases[0], cases[2])
+    for label, load in cases:
         t0 = time.time()
-        chk = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS)
+        chk = hertz_check(plate, ball=ball, radius=RADIUS, load=load, materials=MATERIALS,
+                          grid=run["grid"])
         c = chk.comparison
         checks[label] = chk
         print(f"\n{label}: W = {load:.3f} N  ({time.time() - t0:.1f} s, grid "
@@ -141,15 +180,18 @@ def main(argv: list[str]) -> int:
         findings.setdefault("hertz_check", {})[label] = {
             "load": load, **hertz_check_record(chk), "details": hertz_check_details(chk)}
         findings["hertz_check"][label].pop("radial_profile")
-    close(checks["paper's 10 N check"].figure(outdir / "hertz_check_10N.png"))
-    close(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
+    keep(checks["paper's 10 N check"].figure(outdir / "hertz_check_10N.png"))
+    keep(checks["asymmetric rotor, ball 1"].figure(outdir / "hertz_check_ball1.png"))
 
     heading("Which of these survive refinement? (resolution study: pixel 40, 20, 10, 5 µm)")
     from surfmet.mechanics.resolution_study import contact_study, study_lines
     from surfmet.records import study_record
 
     findings["resolution_study"] = {}
-    for label, chk in checks.items():
+    if not run["study"]:
+        print("(not in the gallery's run: it solves each load again at the scans' own 5 µm "
+              "pixel, minutes each; the full run prints it)")
+    for label, chk in checks.items() if run["study"] else ():
         study, _ = contact_study(plate, ball, radius=RADIUS, load=chk.load,
                                  materials=MATERIALS, hardness=hardness)
         print(f"\n{label}: W = {chk.load:.3f} N")
@@ -210,13 +252,16 @@ def main(argv: list[str]) -> int:
     heading("Rolling-resistance exponent over 1-100 N")
     prep = prepare_scans(plate, ball)
     pair = prep.pair
-    loads = log_loads(1.0, 100.0, 7 if quick else 13)
+    loads = log_loads(1.0, 100.0, run["loads"])
     # The ball rolls along x: every position of its apex along the track is one snapshot
     # of the rolling contact, and the moment per unit distance rolled is their average.
     # One snapshot is not enough for a rough contact (at light load a few asperities,
     # in front of or behind the apex, carry everything).
     width, height = (np.array(pair.roughness.shape[::-1]) - 1) * pair.dx
-    xs = np.linspace(0.16 * width, 0.84 * width, 3 if quick else 11)
+    xs = np.linspace(0.16 * width, 0.84 * width, run["positions"])
+    # a fixed coarse grid (a 96-cell grid over a wider domain, a 31 µm pixel, left the first
+    # pass's plastic moment at 1 N zero: no yield once the asperities are smoothed away)
+    rough_domain = None if run["rolling_grid"] is None else DomainSpec(grid=run["rolling_grid"])
     centres = [(float(x), float(height / 2)) for x in xs]
     share_plate = displacement_shares(steel, alu)[1]
     per_model: dict[str, list] = {"hysteresis": [], "frozen": [], "plastic": []}
@@ -225,11 +270,11 @@ def main(argv: list[str]) -> int:
     for centre in progress(centres, total=len(centres), desc="track positions"):
         rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy, centre=centre)
         rms = prep.sigma  # the plastic band's roughness, as the scans give it
-        hy = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+        hy = sphere_sweep(RADIUS, e_star, loads, roughness=rough, domain=rough_domain,
                           dissipation=Dissipation(model="hysteresis", roughness_rms=rms))
         frozen_f = np.array([hysteresis_work(r, RADIUS, kinematics="frozen")
                              for r in hy.results])
-        pl = sphere_sweep(RADIUS, e_star, loads, roughness=rough,
+        pl = sphere_sweep(RADIUS, e_star, loads, roughness=rough, domain=rough_domain,
                           dissipation=Dissipation(model="plastic", hardness=hardness,
                                                   roughness_rms=rms))
         per_model["hysteresis"].append(hy.moments)
@@ -301,13 +346,13 @@ def main(argv: list[str]) -> int:
                              local_lambda=results[m]["local_lambda"], radius=RADIUS,
                              settings={"contact": "sphere"})
                 for m in ("hysteresis", "frozen", "plastic")]
-    close(rolling_figure([*ensemble, smooth], outdir / "rolling_exponent.png",
-                         labels=["hysteresis (track mean)", "hysteresis, frozen (track mean)",
-                                 "plastic 1st pass (track mean)", "smooth ball (Hertz)"]))
-    close(rolling_figure([first["hysteresis"], first["plastic"], smooth],
-                         outdir / "rolling_exponent_one_position.png",
-                         labels=["hysteresis (one position)", "plastic (one position)",
-                                 "smooth ball (Hertz)"]))
+    keep(rolling_figure([*ensemble, smooth], outdir / "rolling_exponent.png",
+                        labels=["hysteresis (track mean)", "hysteresis, frozen (track mean)",
+                                "plastic 1st pass (track mean)", "smooth ball (Hertz)"]))
+    keep(rolling_figure([first["hysteresis"], first["plastic"], smooth],
+                        outdir / "rolling_exponent_one_position.png",
+                        labels=["hysteresis (one position)", "plastic (one position)",
+                                "smooth ball (Hertz)"]))
 
     heading("What the rotor comparison can see of λ")
     n1, n2 = asym
@@ -404,5 +449,13 @@ def _wrap(text: str, width: int = 92) -> list[str]:
     return textwrap.wrap(text, width)
 
 
+# %%
+# The run
+# -------
+# The documentation's gallery runs this file as ``contact.py OUTDIR --gallery`` (the
+# reduced run described at the top); the output and the figures below are that run's.
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # no SystemExit on success: the gallery runs this file inside the documentation build
+    if status := main(sys.argv[1:]):
+        sys.exit(status)

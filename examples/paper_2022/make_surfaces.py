@@ -4,12 +4,19 @@
 Synthetic stand-ins for the two scans of Alaci et al. (2022), built from the paper's
 statistics and written with surfmet's own X3P writer.
 
-Run:  python examples/paper_2022/make_surfaces.py [OUTDIR]
+Run:  python examples/paper_2022/make_surfaces.py [OUTDIR] [--gallery]
 
 (default OUTDIR: ``surfmet/data``, where the package ships ``paper_plate.x3p`` and
 ``paper_ball.x3p``). The generator is seeded, so the files are reproducible; but what makes
 them stand-ins for the paper is their statistics, which ``tests/test_paper_surfaces.py``
 checks against the paper's numbers through surfmet's reader and roughness pipeline.
+
+The output and figures on the documentation's page are ``make_surfaces.py OUTDIR
+--gallery``, run while the documentation is built: the same two scans, made the same way
+and written to a folder of the build (never over the shipped copies), with the closing
+check of the statistics over every eighth row instead of every row, and the two height
+maps drawn. The full run, ``python examples/paper_2022/make_surfaces.py``, rewrites
+``surfmet/data`` and checks every row.
 
 The aluminium plate (Table 2, Figs. 13-14)
 ------------------------------------------
@@ -56,11 +63,20 @@ import math
 import sys
 from pathlib import Path
 
-import numpy as np
+# The script beside this one is called contact.py: keep this folder off the import path,
+# or surfmet's own "import contact" (reached once the roughness pipeline runs) would
+# import that script instead of the contact engine.
+try:
+    _HERE = Path(__file__).resolve().parent
+except NameError:  # the documentation's gallery defines no __file__; it runs in this folder
+    _HERE = Path.cwd()
+sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
-from surfmet.io import encode
-from surfmet.model import Topography
-from surfmet.roughness import roughness
+import numpy as np  # noqa: E402
+
+from surfmet.io import encode  # noqa: E402
+from surfmet.model import Topography  # noqa: E402
+from surfmet.roughness import roughness  # noqa: E402
 
 SEED = 20220325  # Materials 15(7):2518 was published in March 2022
 
@@ -161,27 +177,50 @@ def make_ball(seed: int = SEED + 1) -> Topography:
 def main(argv: list[str]) -> int:
     import argparse
 
-    root = Path(__file__).resolve().parents[2]
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
+    root = _HERE.parents[1]
+    parser = argparse.ArgumentParser(
+        description="Make the bundled stand-ins of the paper's two scans.")
     parser.add_argument("outdir", nargs="?", default=str(root / "surfmet" / "data"),
                         help="where to write paper_plate.x3p and paper_ball.x3p "
                         "(default: surfmet/data, the shipped copies)")
-    out = Path(parser.parse_args(argv).outdir)
+    parser.add_argument("--gallery", action="store_true",
+                        help="the documentation's run: check every eighth row, draw the maps")
+    opts = parser.parse_args(argv)
+    out = Path(opts.outdir)
+    every = 8 if opts.gallery else 1
     out.mkdir(parents=True, exist_ok=True)
     plate, ball = make_plate(), make_ball()
     (out / "paper_plate.x3p").write_bytes(encode(plate, "x3p", dtype="F",
                                                  date="2022-03-25T00:00:00"))
     (out / "paper_ball.x3p").write_bytes(encode(ball, "x3p", date="2022-03-25T00:00:00"))
     for name, topo, settings, rows in (
-        ("plate", plate, PLATE_SETTINGS, range(PLATE_SHAPE[0])),
-        ("ball", ball, BALL_SETTINGS, range(BALL_SHAPE[0])),
+        ("plate", plate, PLATE_SETTINGS, range(0, PLATE_SHAPE[0], every)),
+        ("ball", ball, BALL_SETTINGS, range(0, BALL_SHAPE[0], every)),
     ):
         st = row_statistics(topo, settings, rows)
         text = ", ".join(f"{k} {np.median(v) * 1e6:.3f} µm" for k, v in st.items())
         size = (out / f"paper_{name}.x3p").stat().st_size
         print(f"{name}: median over {len(rows)} rows: {text}  ({size / 1e6:.2f} MB)")
+        shipped = root / "surfmet" / "data" / f"paper_{name}.x3p"
+        if shipped.exists() and shipped.resolve() != (out / shipped.name).resolve():
+            same = shipped.read_bytes() == (out / shipped.name).read_bytes()
+            print(f"  {shipped.name} is byte for byte the shipped copy: {same}")
+    if opts.gallery:  # the gallery shows the figures left open
+        from surfmet.plots.areal import height_map
+
+        height_map(plate, title="plate stand-in (spikes included: the colour scale "
+                   "clips them)")
+        height_map(ball, title="ball stand-in (the cap of a 20 mm ball)")
     return 0
 
 
+# %%
+# The run
+# -------
+# The documentation's gallery runs this file as ``make_surfaces.py OUTDIR --gallery``
+# (see the top); the output and the height maps below are that run's.
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # no SystemExit on success: the gallery runs this file inside the documentation build
+    if status := main(sys.argv[1:]):
+        sys.exit(status)
