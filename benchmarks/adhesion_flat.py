@@ -151,10 +151,10 @@ def write_surfaces(folder: Path, sizes: list[int]) -> None:
 def run_ours(n: int) -> dict:
     """CPU times and answers of our non-adhesive and adhesive solves at size n."""
     from contact import SolveOptions
+    from contact._grid import gap_grid
     from contact.adhesion import ExponentialLaw
     from contact.adhesion.flat import adhesive_flat
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     z = surface(n)
     dx, p0, tol = CASE["box_side"] / n, CASE["mean_pressure"], CASE["tolerance"]
@@ -190,8 +190,8 @@ def warm(n: int) -> None:
     the first run's non-adhesive time includes it, 0.4 s at 512^2, and that run's ratio
     comes out low)."""
     from contact import SolveOptions
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     z = surface(n)
     dx = CASE["box_side"] / n

@@ -22,9 +22,9 @@ def main() -> None:
     from contact_synth import rough_surface
 
     from contact import SolveOptions
+    from contact._grid import gap_grid
     from contact.adhesion import ExponentialLaw, adhesive_problem, solve_adhesive
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=256)

@@ -7,7 +7,7 @@ load and the zone's reach, 40 approach steps per leg) for R = 10 µm, E* = 1 GPa
 w = 50 mJ/m² and a range h0 setting Maugis' lambda; the grid is varied, so the cohesive
 zone l = pi E* w / (4 sigma0^2) spans more or fewer pixels. The truth is Maugis' pull-off
 solved independently (tests/maugis_reference.md_pull_off at the run's own lambda).
-The threshold :data:`contact.zone_resolution.MIN_ZONE_PIXELS` is read off this table
+The threshold :data:`contact._zone_resolution.MIN_ZONE_PIXELS` is read off this table
 (measured 2026-12-02 on 2 shared cores; runs whose JKR radius spans fewer than 8 pixels
 left out, they are warned about on their own):
 
@@ -36,7 +36,7 @@ left out, they are warned about on their own):
         0.33  9.988   256    0.26       64.0        3.0013  1.5016   +99.87
 
 (the last four rows: 2026-12-02, issue 38, 9 to 33 s CPU each; their upper envelope with
-the rows above is the measured convergence law contact.zone_resolution.ZONE_PULL_OFF_EXCESS)
+the rows above is the measured convergence law contact._zone_resolution.ZONE_PULL_OFF_EXCESS)
 
 From 2 pixels up the pull-off is within 2.1 % of Maugis'; between 1.5 and 2 up to +3.8 %;
 at about a pixel and below +2.6 % to +14 %: the warning starts below 2.

@@ -16,11 +16,11 @@ import textwrap
 import numpy as np
 from _timing import min_time
 
-from surfmet.areal.filters import l_filter
-from surfmet.areal.form import remove_form
-from surfmet.areal.height import height_parameters
-from surfmet.areal.hybrid import gradient_parameters
-from surfmet.model import Topography
+from surfmet._model import Topography
+from surfmet.areal._filters import l_filter
+from surfmet.areal._form import remove_form
+from surfmet.areal._height import height_parameters
+from surfmet.areal._hybrid import gradient_parameters
 
 N = 2048
 

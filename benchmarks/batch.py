@@ -13,7 +13,7 @@ import time
 from functools import partial
 from pathlib import Path
 
-from surfmet.batch import batch_map
+from surfmet._batch import batch_map
 from surfmet.roughness import roughness_file
 
 REALDATA = Path(__file__).resolve().parents[2] / "shared" / "realdata"

@@ -39,12 +39,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact import SolveOptions
+from contact._geometry import contact_extent, sphere_gap
+from contact._grid import gap_grid
+from contact._hertz import hertz_sphere
+from contact._materials import composite_modulus, material
 from contact.bem import solve_normal
-from contact.geometry import contact_extent, sphere_gap
-from contact.grid import gap_grid
 from contact.halfspace.convolution import convolution
-from contact.hertz import hertz_sphere
-from contact.materials import composite_modulus, material
 
 R, W = 0.02, 10.0
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

@@ -19,7 +19,7 @@ Mapping of the case onto CONTACT (module 3, non-Hertzian, ``IPOTCN = 1``, ``IBAS
 - rolling direction ``CHI = 0`` (the contact moves along +x, the leading edge is at the
   largest x), the step ``DQ = DX``: CONTACT's steady-state slip is then
   s_I = w + (u_I - u_{I+1})/dx, the same upwind difference as
-  :func:`contact.tangential.kinematics.rolling_slip`; a positive creepage ``CKSI`` is
+  :func:`contact.tangential._kinematics.rolling_slip`; a positive creepage ``CKSI`` is
   our positive ``xi`` and ``FX`` is the same force on the ball;
 - h = (x^2 + y^2)/(2 R) at the element centres (``B1 = B3 = 1/(2R)``), piecewise-constant
   tractions with analytical half-space coefficients (``C = 2``), Coulomb friction
@@ -78,8 +78,8 @@ class Case:
 
 def pair():
     """Materials (body 1 steel ball, body 2 aluminium), the pair constants and Hertz a."""
-    from contact.hertz import hertz_sphere
-    from contact.materials import material
+    from contact._hertz import hertz_sphere
+    from contact._materials import material
     from contact.tangential import pair_constants
 
     steel, al = material("steel"), material("aluminium")

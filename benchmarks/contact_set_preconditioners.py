@@ -184,8 +184,8 @@ def counts(contact: np.ndarray, gap: np.ndarray, pixel: float, islands: bool) ->
 
 
 def main(argv: list[str] | None = None) -> int:
+    from contact._grid import gap_grid
     from contact.bem import SolveOptions, solve_normal
-    from contact.grid import gap_grid
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="128,256,512")

@@ -105,9 +105,9 @@ def periodic_case(n: int) -> tuple[np.ndarray, float, float]:
 
 def periodic(sizes: list[int]) -> list[dict]:
     """Finest-grid iterations and solve time of the periodic case at each size."""
+    from contact._grid import gap_grid
     from contact.bem import SolveOptions, solve_normal
-    from contact.bem.state import SolverStats
-    from contact.grid import gap_grid
+    from contact.bem._state import SolverStats
 
     rows = []
     for n in sizes:

@@ -14,7 +14,7 @@ from importlib import resources
 from _timing import min_time_and_result
 
 from contact import composite_modulus, hertz_sphere, material
-from contact.roughcontact.greenwood_tripp import Asperities, greenwood_tripp
+from contact.roughcontact._greenwood_tripp import Asperities, greenwood_tripp
 from rotor import BALL_RADIUS, HERTZ_CHECK_LOAD, paper_ball_loads
 
 

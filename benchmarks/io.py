@@ -35,7 +35,7 @@ def main() -> int:
     args = ap.parse_args()
     root = Path(os.environ.get("SURFMET_SHARED", Path(__file__).resolve().parents[2] / "shared"))
     import surfmet.io as sio
-    from surfmet.errors import SurfmetFormatError
+    from surfmet._errors import SurfmetFormatError
 
     leaked = sorted(m for m in sys.modules if m.split(".")[0] in ("profiles", "contact",
                     "matplotlib", "numba") or m in ANALYSIS)

@@ -6,7 +6,7 @@ ISO 1997). Every other per-sampling-length parameter agrees with the points to i
 printed digit, so the sampling lengths are the instrument's; this script tabulates what
 each reading of the profile-element rule (ISO 4287:1997 3.2.3-3.2.5, 4.1.4, 4.3.1; the
 SJ-210 / SJ-410 manuals' "profile element restrictions") gives on those points, so the
-search is reproducible. It is written apart from ``profiles.elements``: its ISO default
+search is reproducible. It is written apart from ``profiles._elements``: its ISO default
 reproduces that module's 416.6 µm / 13.217 µm, and its ``first`` reading the printout.
 Run from the repository root (about 20 s; ``--grid`` adds about a minute)::
 

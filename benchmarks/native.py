@@ -9,7 +9,7 @@ the next:
 
 ``cli``
     The whole command under ``/usr/bin/time -v`` (wall time and peak resident set size),
-    plus the memory model's estimate (:mod:`contact.bem.memory`) for the same grid.
+    plus the memory model's estimate (:mod:`contact.bem._memory`) for the same grid.
 ``iter``
     The same problem's fine-grid solve: time per Polonsky-Keer iteration (from the
     solver's per-iteration callback, first to last call, so the coarse nested levels and
@@ -71,11 +71,11 @@ def iteration_child(n: int, repeats: int) -> dict:
 
     import surfmet
     from contact import DomainSpec, SolveOptions
-    from contact.bem.state import SolverStats  # live counters, read in the callback
+    from contact._materials import composite_modulus, material
+    from contact.bem._state import SolverStats  # live counters, read in the callback
     from contact.halfspace.convolution import convolution
-    from contact.materials import composite_modulus, material
     from contact.setups import CompositeRoughness
-    from contact.setups.ball_on_plate import SphereContact
+    from contact.setups._ball_on_plate import SphereContact
     from surfmet.mechanics.pairing import prepare_pair
 
     pair = prepare_pair(surfmet.read(DATA / "paper_plate.x3p"),
@@ -144,7 +144,7 @@ def main() -> int:
     if args.child:
         print(json.dumps(iteration_child(args.child, args.repeats)))
         return 0
-    from contact.bem.memory import estimate_peak_bytes
+    from contact.bem._memory import estimate_peak_bytes
 
     out: dict = {"cli": [], "iter": [], "native": None}
     for n in (int(v) for v in args.cli.split(",") if v):

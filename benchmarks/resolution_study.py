@@ -13,9 +13,9 @@ from importlib import resources
 from _timing import min_time
 
 import surfmet
-from contact.materials import composite_modulus, material
-from contact.resolution import sphere_study
-from contact.rolling import log_loads
+from contact._materials import composite_modulus, material
+from contact._resolution import sphere_study
+from contact._rolling import log_loads
 from surfmet.mechanics.resolution_study import rolling_study
 from surfmet.mechanics.scan_preparation import prepare_scans
 

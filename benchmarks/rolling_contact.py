@@ -7,7 +7,7 @@ Cases (issue 19):
   force, against one frictionless normal solve of the same gap on the same grid
   (:func:`contact.bem.solve_normal`).
 - ``sweep``: the micro-slip rolling resistance of the paper's pair over 10 loads
-  (1-100 N, 32^2 per load), free rolling (:func:`contact.tangential.microslip.microslip_sweep`).
+  (1-100 N, 32^2 per load), free rolling (:func:`contact.tangential._microslip.microslip_sweep`).
 - ``compare``: micro-slip against the hysteresis (alpha_h = 1) and plastic rules at the
   rotor's ball loads 3.97-5.36 N, free rolling and with a traction ratio.
 
@@ -34,9 +34,9 @@ def _best(fun, repeats: int) -> tuple[float, object]:
 
 
 def free_rolling(sizes: list[int], repeats: int) -> None:
+    from contact._hertz import hertz_sphere
+    from contact._materials import material
     from contact.bem import solve_normal
-    from contact.hertz import hertz_sphere
-    from contact.materials import material
     from contact.tangential import pair_constants, sphere_grid, steady_rolling
 
     c = pair_constants(material("steel"), material("aluminium"))
@@ -59,8 +59,8 @@ def free_rolling(sizes: list[int], repeats: int) -> None:
 
 
 def sweep() -> None:
-    from contact.materials import material
-    from contact.tangential.microslip import microslip_sweep
+    from contact._materials import material
+    from contact.tangential._microslip import microslip_sweep
 
     t = time.perf_counter()
     s = microslip_sweep(0.02, material("steel"), material("aluminium"),
@@ -71,9 +71,9 @@ def sweep() -> None:
 
 def compare() -> None:
     from contact import DomainSpec
-    from contact.materials import composite_modulus, material
-    from contact.rolling import sphere_sweep
-    from contact.tangential.microslip import microslip_sweep
+    from contact._materials import composite_modulus, material
+    from contact._rolling import sphere_sweep
+    from contact.tangential._microslip import microslip_sweep
 
     steel, al = material("steel"), material("aluminium")
     loads = np.geomspace(3.97, 5.36, 4)

@@ -43,7 +43,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 
 from rotor_calibration import clean_columns, mark_frames  # noqa: E402
 
-from contact.errors import ContactInputError  # noqa: E402
+from contact._errors import ContactInputError  # noqa: E402
 from rotor import (  # noqa: E402
     analyse_test,
     check_adequacy,

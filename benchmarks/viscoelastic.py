@@ -15,14 +15,14 @@ import time
 
 import numpy as np
 
+from contact._grid import gap_grid
+from contact._hertz import hertz_sphere
+from contact._materials import composite_modulus, material
 from contact.bem import solve_normal
-from contact.grid import gap_grid
-from contact.hertz import hertz_sphere
-from contact.materials import composite_modulus, material
 from contact.viscoelastic import StandardLinearSolid, hunter_cylinder, pair_creep
-from contact.viscoelastic.line import rolling_cylinder
-from contact.viscoelastic.loss import sls_from_loss
-from contact.viscoelastic.surface import rolling_sphere
+from contact.viscoelastic._line import rolling_cylinder
+from contact.viscoelastic._loss import sls_from_loss
+from contact.viscoelastic._surface import rolling_sphere
 
 # Hunter's case: rigid cylinder, PA6-like SLS (Eg/Er = 2), V tau = a_r
 R2, W2, NU2, EG2, ER2 = 0.05, 6.0e5, 0.4, 3.2e9, 1.6e9

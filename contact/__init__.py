@@ -16,10 +16,10 @@ Main entry points::
     check_sphere(...)                      # BEM against Hertz, with a verdict (hertzcheck)
 
 Rooms: set-ups (``contact.setups``: ball on plate, line, flat, the composite roughness),
-field post-processing (``contact.fields``), roughness statistics (``contact.roughstats``),
-theories (``contact.hertz``, ``contact.roughcontact``), verdicts (``contact.hertzcheck``,
-``contact.resolution``), rolling resistance (``contact.rolling``) and its load exponent
-(``contact.exponent``)::
+field post-processing (``contact._fields``), roughness statistics (``contact._roughstats``),
+theories (``contact._hertz``, ``contact.roughcontact``), verdicts (``contact._hertzcheck``,
+``contact._resolution``), rolling resistance (``contact._rolling``) and its load exponent
+(``contact._exponent``)::
 
     sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
 
@@ -28,8 +28,7 @@ Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 
 from __future__ import annotations
 
-from contact._lazy import attach
-from contact.errors import (
+from contact._errors import (
     ContactError,
     ContactInputError,
     ContactMemoryError,
@@ -37,14 +36,15 @@ from contact.errors import (
     EdgeContactError,
     EdgeContactWarning,
 )
-from contact.hertz import (
+from contact._hertz import (
     HertzCylinder,
     HertzSphere,
     hertz_cylinder,
     hertz_sphere,
     hertz_sphere_from_approach,
 )
-from contact.materials import (
+from contact._lazy import attach
+from contact._materials import (
     MATERIALS,
     Material,
     compliance,
@@ -55,28 +55,28 @@ from contact.materials import (
 )
 
 _LAZY = {
-    "MaterialPair": "contact.material_pair",
-    "resolve_pair": "contact.material_pair",
-    "CompositeRoughness": "contact.setups.composite",
-    "flat_contact": "contact.setups.flat",
+    "MaterialPair": "contact._material_pair",
+    "resolve_pair": "contact._material_pair",
+    "CompositeRoughness": "contact.setups._composite",
+    "flat_contact": "contact.setups._flat",
     "solve_normal": "contact.bem",
-    "SolveOptions": "contact.bem.options",
-    "PressureBounds": "contact.bem.bounds",
-    "Grid": "contact.grid",
-    "DomainSpec": "contact.geometry",
-    "Dissipation": "contact.dissipation",
-    "ContactResult": "contact.bem.result",
-    "SphereContact": "contact.setups.ball_on_plate",
-    "solve_sphere": "contact.setups.ball_on_plate",
-    "auto_domain": "contact.geometry",
-    "sphere_gap": "contact.geometry",
-    "cylinder_gap": "contact.geometry",
-    "gjm_alpha": "contact.roughstats",
-    "check_sphere": "contact.hertzcheck",
-    "sphere_sweep": "contact.rolling",
-    "cylinder_sweep": "contact.rolling",
-    "fit_exponent": "contact.exponent",
-    "solve_cylinder": "contact.setups.line",
+    "SolveOptions": "contact.bem._options",
+    "PressureBounds": "contact.bem._bounds",
+    "Grid": "contact._grid",
+    "DomainSpec": "contact._geometry",
+    "Dissipation": "contact._dissipation",
+    "ContactResult": "contact.bem._result",
+    "SphereContact": "contact.setups._ball_on_plate",
+    "solve_sphere": "contact.setups._ball_on_plate",
+    "auto_domain": "contact._geometry",
+    "sphere_gap": "contact._geometry",
+    "cylinder_gap": "contact._geometry",
+    "gjm_alpha": "contact._roughstats",
+    "check_sphere": "contact._hertzcheck",
+    "sphere_sweep": "contact._rolling",
+    "cylinder_sweep": "contact._rolling",
+    "fit_exponent": "contact._exponent",
+    "solve_cylinder": "contact.setups._line",
 }
 
 

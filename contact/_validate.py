@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 
 
 def positive(value: Any, what: str, unit: str = "") -> float:

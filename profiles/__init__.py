@@ -16,32 +16,32 @@ feature_parameters   ISO 21920-2 Rpd, Rvd, Rmpc, Rmvc, R5p, R5v, R10z (Wolf prun
 remove_form          least-squares line / polynomial removal
 
 Scale-dependent statistics (slope and curvature over a distance, tip-radius cut-off,
-variable bandwidth) live in :mod:`profiles.scales`, imported on demand.
+variable bandwidth) live in :mod:`profiles._scales`, imported on demand.
 """
 
-from profiles.analysis import ProfileAnalysis, analyze_profile
-from profiles.circle import CircleFit, fit_circle
-from profiles.cutoff import CutoffChoice, iso4288_cutoff
-from profiles.errors import ProfileError
-from profiles.features import FeatureParameters, feature_parameters
-from profiles.filters import (
+from profiles._analysis import ProfileAnalysis, analyze_profile
+from profiles._circle import CircleFit, fit_circle
+from profiles._cutoff import CutoffChoice, iso4288_cutoff
+from profiles._errors import ProfileError
+from profiles._features import FeatureParameters, feature_parameters
+from profiles._filters import (
     ALPHA,
     ProfileSplit,
     gaussian_mean_line,
     gaussian_transmission,
     split_profile,
 )
-from profiles.form import FormFit, level_profile, remove_form
-from profiles.material_ratio import (
+from profiles._form import FormFit, level_profile, remove_form
+from profiles._material_ratio import (
     height_at_ratio,
     material_ratio,
     material_ratio_curve,
     material_ratio_height,
     section_height_difference,
 )
-from profiles.parameters import ProfileParameters, profile_parameters
-from profiles.positions import RegularProfile, regularize
-from profiles.rk import (
+from profiles._parameters import ProfileParameters, profile_parameters
+from profiles._positions import RegularProfile, regularize
+from profiles._rk import (
     ProbabilityParameters,
     RkParameters,
     probability_parameters,

@@ -1,7 +1,7 @@
 """Input checks shared by the profile engine: turn user arrays into clean float64 vectors.
 
 Every public function of :mod:`profiles` validates through here, so that a bad argument
-fails with one :class:`~profiles.errors.ProfileError` a user can act on rather than with a
+fails with one :class:`~profiles._errors.ProfileError` a user can act on rather than with a
 traceback from deep inside numpy.
 """
 
@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from profiles.errors import ProfileError
+from profiles._errors import ProfileError
 
 
 def as_heights(z: Any, name: str = "z") -> np.ndarray:

@@ -24,7 +24,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._adequacy import AdequacyCheck, check_adequacy
 from rotor._arrays import readonly
 from rotor._extension import extend_family

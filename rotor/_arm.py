@@ -45,9 +45,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from contact.errors import ContactInputError
-from contact.hertz import hertz_sphere
-from contact.materials import Material, composite_modulus, material
+from contact._errors import ContactInputError
+from contact._hertz import hertz_sphere
+from contact._materials import Material, composite_modulus, material
 from rotor._mechanics import G_STANDARD
 from rotor._rig import Rig, slope_lower_bound, solve_lambda
 

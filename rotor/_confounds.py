@@ -12,9 +12,9 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from contact.hertz import hertz_sphere
-from contact.material_pair import resolve_pair
-from contact.materials import Material
+from contact._hertz import hertz_sphere
+from contact._material_pair import resolve_pair
+from contact._materials import Material
 from rotor._mechanics import G_STANDARD
 from rotor._rig import Rig, offset_for_lambda
 

@@ -17,7 +17,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 from scipy.optimize import least_squares
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._arrays import on_rows, readonly
 from rotor._diagnostics import (
     lag1_autocorrelation,

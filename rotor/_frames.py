@@ -19,7 +19,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._paper import TABLE3_COLUMNS, TABLE3_PRINTED_ROWS
 
 __all__ = ["split_rows", "table3", "table3_tsv"]

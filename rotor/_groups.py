@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import least_squares
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._alignment import ResidualAlignment, residual_alignment
 from rotor._analysis import TestReport, analyse_test
 from rotor._arrays import readonly

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._mechanics import G_STANDARD, MassProperties, mass_properties, normal_reactions
 
 __all__ = ["IDENTIFIABILITY", "RollingLawInference", "infer_rolling_law"]

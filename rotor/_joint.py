@@ -23,7 +23,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.stats import t as student_t
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._analysis import prepare_column
 from rotor._misreads import MISREAD_MIN_FRAMES, MISREAD_THRESHOLD
 from rotor._noise import Noise, estimate_noise, quantisation_sigma

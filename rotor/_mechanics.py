@@ -39,8 +39,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact._errors import ContactInputError
 from contact._validate import positive
-from contact.errors import ContactInputError
 from rotor import _paper as paper
 
 G_STANDARD = 9.80665

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._arrays import readonly
 from rotor._diagnostics import (
     lag1_autocorrelation,

@@ -24,7 +24,7 @@ from scipy.optimize import brentq
 from scipy.stats import nct
 from scipy.stats import t as student_t
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._mechanics import G_STANDARD, mass_properties, normal_reactions
 from rotor._paper import FPS, MARK_STEP
 from rotor._tables import GROUPS as PAPER_COLLARS
@@ -176,7 +176,7 @@ def rig_from_mapping(d: Mapping) -> Rig:
     >>> rig_from_mapping({"fps": 120})
     Traceback (most recent call last):
     ...
-    contact.errors.ContactInputError: rig: unknown keys [] / missing keys [...]...
+    contact._errors.ContactInputError: rig: unknown keys [] / missing keys [...]...
     """
     if not isinstance(d, Mapping):
         raise ContactInputError("rig: the file must hold one JSON object")

@@ -21,7 +21,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._family import MODELS, SELECTABLE, ModelFit, ancestors, is_nested
 
 __all__ = [

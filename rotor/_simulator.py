@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._arrays import readonly
 from rotor._mechanics import (
     G_STANDARD,

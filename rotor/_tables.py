@@ -20,7 +20,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._mechanics import G_STANDARD, MassProperties, mass_properties
 from rotor._paper import FPS, MARK_STEP
 from rotor._simulator import HiddenEffects, simulate_rotor

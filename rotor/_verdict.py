@@ -30,8 +30,8 @@ from pathlib import Path
 import numpy as np
 from scipy.stats import t as student_t
 
-from contact.errors import ContactInputError
-from contact.materials import Material
+from contact._errors import ContactInputError
+from contact._materials import Material
 from rotor._arm import ArmBound, arm_bound, paper_materials
 from rotor._confounds import Confound, confound_budget
 from rotor._joint import (

@@ -7,7 +7,7 @@ Reading scans::
     topo = surfmet.read(path("paper_plate.x3p"))  # Topography or Profile, heights in metres
     surfmet.write(topo, "copy.x3p")
 
-Analysis lives in submodules (``surfmet.areal``, ``surfmet.areal.filters``...) and in the two
+Analysis lives in submodules (``surfmet.areal``, ``surfmet.areal._filters``...) and in the two
 array-level engines ``profiles`` and ``contact``; they are imported on first use so that
 ``import surfmet`` stays fast: ``surfmet.areal`` or ``surfmet.mechanics.hertz_check`` works
 after a bare ``import surfmet`` and loads only what it names.
@@ -17,16 +17,16 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from surfmet._errors import SurfmetError, SurfmetFormatError, SurfmetInputError
 from surfmet._lazy import attach
+from surfmet._model import Profile, Topography
 from surfmet._version import __version__
-from surfmet.errors import SurfmetError, SurfmetFormatError, SurfmetInputError
-from surfmet.model import Profile, Topography
 
 if TYPE_CHECKING:
     import os
     from pathlib import Path
 
-    from surfmet.io.registry import Source
+    from surfmet.io._registry import Source
 
 
 def read(source: Source, format: str | None = None, **options: Any) -> Topography | Profile:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from surfmet.errors import SurfmetError
+from surfmet._errors import SurfmetError
 
 __all__ = ["channel_choices", "channel_listing", "info_record"]
 
@@ -65,7 +65,7 @@ def info_record(path: str | os.PathLike, scan: Any, format: str | None = None,
     >>> rec["format"], rec["kind"]
     ('x3p', 'areal')
     """
-    from surfmet.records.scans import channel_record, scan_record
+    from surfmet.records._scans import channel_record, scan_record
 
     rec = scan_record(scan)
     if listing is None:

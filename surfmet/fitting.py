@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography, require_measurement
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography, require_measurement
 
 _LOSSES = ("linear", "huber", "soft_l1", "cauchy", "arctan")
 
@@ -149,9 +149,9 @@ def _require_curvature(x: np.ndarray, y: np.ndarray, z: np.ndarray, rms_shape: f
     """Whether the curvature is resolved; raises when it is not and ``require``.
 
     The rule is the profile engine's, one for every form fit
-    (:data:`profiles.circle.CURVATURE_RESOLVED_RATIO`: a plane's rms residual must exceed
+    (:data:`profiles._circle.CURVATURE_RESOLVED_RATIO`: a plane's rms residual must exceed
     the curved shape's twice over)."""
-    from profiles.circle import curvature_message, curvature_resolved
+    from profiles._circle import curvature_message, curvature_resolved
 
     a = np.column_stack([np.ones_like(x), x - x.mean(), y - y.mean()])
     coef, *_ = np.linalg.lstsq(a, z - z.mean(), rcond=None)

@@ -52,8 +52,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 
 WINDOWS = ("hann", "blackman", "none")
 
@@ -357,7 +357,7 @@ def areal_psd(topo: Topography, *, window: str = "hann", detrend: str = "mean") 
     window : {"hann", "blackman", "none"}
         Separable taper ``w(x) w(y)`` (see the module docstring).
     detrend : {"mean", "plane"}
-        Remove the mean, or a least-squares plane (:func:`surfmet.areal.form.remove_form`),
+        Remove the mean, or a least-squares plane (:func:`surfmet.areal._form.remove_form`),
         of the measured points before the transform.
 
     Returns
@@ -375,7 +375,7 @@ def areal_psd(topo: Topography, *, window: str = "hann", detrend: str = "mean") 
         raise SurfmetInputError(f"an areal PSD needs at least 4 x 4 points, got "
                                 f"{topo.nx} x {topo.ny}")
     if detrend == "plane":
-        from surfmet.areal.form import remove_form
+        from surfmet.areal._form import remove_form
 
         topo, _ = remove_form(topo, "plane")
     z = np.array(topo.heights, dtype=float)

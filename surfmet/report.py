@@ -14,7 +14,7 @@ For each scan the report holds:
   (lengths in µm, Spd in 1/mm², Spc in 1/µm; the exact SI value is kept in the cell's
   ``data-si`` attribute), and the processing settings used (form removal, S/L filters
   with nesting indices and edge treatment, spikes, window, the full settings as JSON);
-* pictures: the 3D view (:func:`surfmet.render.render_3d`), the height map, the
+* pictures: the 3D view (:func:`surfmet._render.render_3d`), the height map, the
   Abbott–Firestone curve with the Sk construction, the PSD with its Hurst fit exactly as
   ``surfmet spectrum FILE`` gives it (:func:`surfmet.mechanics.spectrum.scan_spectrum`); for
   a profile, the primary / waviness / roughness figure instead of the two maps;
@@ -38,10 +38,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
-from surfmet.report_figures import figures_areal, figures_profile, spectrum_section
-from surfmet.report_hertz import HertzOptions, hertz_figure, hertz_html, run_hertz_check
-from surfmet.report_html import (
+from surfmet._errors import SurfmetInputError
+from surfmet._report_figures import figures_areal, figures_profile, spectrum_section
+from surfmet._report_hertz import HertzOptions, hertz_figure, hertz_html, run_hertz_check
+from surfmet._report_html import (
     esc,
     figures_html,
     kv_table,
@@ -50,7 +50,7 @@ from surfmet.report_html import (
 from surfmet.units import valid_text
 
 if TYPE_CHECKING:
-    from surfmet.measurements import Measurement
+    from surfmet._measurements import Measurement
 
 _CSS = """
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
@@ -132,7 +132,7 @@ def scan_section(path: str | Path | Measurement, options: dict[str, Any] | None 
 
     Parameters
     ----------
-    path : str, Path or surfmet.measurements.Measurement
+    path : str, Path or surfmet._measurements.Measurement
         A scan file, or one measurement of a container (its section is named
         ``CONTAINER:MEMBER``, as the roughness command names its record).
     options : dict, optional
@@ -145,7 +145,7 @@ def scan_section(path: str | Path | Measurement, options: dict[str, Any] | None 
         Add the Hertz-check section.
     """
     import surfmet
-    from surfmet.measurements import Measurement, read_measurement
+    from surfmet._measurements import Measurement, read_measurement
 
     options = dict(options or {})
     sec = ScanSection(file=str(path))  # a container's measurement: CONTAINER:MEMBER
@@ -174,7 +174,7 @@ def _error_text(exc: BaseException) -> str:
     """A scan's error as the page and the JSON state it: the message of a user error, and
     for anything else (a bug) that it is an internal error, as ``surfmet roughness`` rows
     say it."""
-    from surfmet.errors import user_error_types
+    from surfmet._errors import user_error_types
 
     if isinstance(exc, user_error_types()):
         return str(exc)
@@ -193,7 +193,7 @@ def _evaluate(sec: ScanSection, scan: Any, options: dict[str, Any], include_3d: 
     sec.info = _jsonable(info_record(sec.file, scan, read_options=read_options,
                                      listing=[] if measurement else None))
     res = roughness(scan, **options)
-    from surfmet.records.roughness import parameters_record, roughness_record
+    from surfmet.records._roughness import parameters_record, roughness_record
 
     sec.roughness = {"file": sec.file, "status": "ok", **roughness_record(res)}
     sec.kind = res.kind  # "profile" also for a row of an areal scan
@@ -390,7 +390,7 @@ def render_html(sections: Sequence[ScanSection], *, title: str = "surfmet report
              f"{esc(json.dumps(_jsonable(opts), ensure_ascii=False) if opts else 'defaults')}"
              "</p>"]
     if rotor is not None:
-        from surfmet.report_rotor import rotor_html
+        from surfmet._report_rotor import rotor_html
 
         parts.append(rotor_html(rotor))
     parts.append(_overview(sections))
@@ -436,14 +436,14 @@ def write_report(
     list of ScanSection
         One per scan, in order (``status`` "ok" or "error").
     """
-    from surfmet.batch import progress_bar
-    from surfmet.measurements import expand_measurements
+    from surfmet._batch import progress_bar
+    from surfmet._measurements import expand_measurements
 
     # a container's measurements each get a section, as each gets a roughness record
     paths = expand_measurements(paths)
     if not paths:
         raise SurfmetInputError("the report needs at least one scan file")
-    from surfmet.atomic import check_writable, write_text
+    from surfmet._atomic import check_writable, write_text
 
     out = Path(out)
     check_writable(out, "report")

@@ -7,9 +7,9 @@ removed, the filters and nesting indices, the edge treatment, the window, the sp
 removed and the Sq/Sa (or Rq/Ra) spike diagnosis.
 
 Order of operations for an areal scan (ISO 25178-2, 3.1.4): optional window →
-optional spike removal (:mod:`surfmet.spikes`, on the raw scan, because spikes would bias
-the least-squares form) → F-operator (:mod:`surfmet.areal.form`) → optional S-filter (λs) →
-optional L-filter (λc) (:mod:`surfmet.areal.filters`) → parameters (:mod:`surfmet.areal`).
+optional spike removal (:mod:`surfmet._spikes`, on the raw scan, because spikes would bias
+the least-squares form) → F-operator (:mod:`surfmet.areal._form`) → optional S-filter (λs) →
+optional L-filter (λc) (:mod:`surfmet.areal._filters`) → parameters (:mod:`surfmet.areal`).
 Without ``ls``/``lc`` the parameters are those of the S-F surface after the F-operator,
 which is what surfalize and SurfaceTopography report after their plane levelling.
 
@@ -26,11 +26,11 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.measurements import DETREND_LEVELS, Measurement, read_measurement
-from surfmet.model import Profile, Topography, require_measurement
-from surfmet.profile_evaluation import _profile_level, evaluate_profile  # noqa: F401  (show uses it)
-from surfmet.roughness_result import RoughnessResult, consistent_diagnosis, unit_caveats
+from surfmet._errors import SurfmetInputError
+from surfmet._measurements import DETREND_LEVELS, Measurement, read_measurement
+from surfmet._model import Profile, Topography, require_measurement
+from surfmet._profile_evaluation import _profile_level, evaluate_profile  # noqa: F401  (show uses it)
+from surfmet._roughness_result import RoughnessResult, consistent_diagnosis, unit_caveats
 from surfmet.units import parse_length, parse_length_range
 
 AREAL_LEVELS = ("none", "mean", "plane", "poly:N", "sphere", "cylinder")
@@ -113,7 +113,7 @@ def roughness(
 
     Parameters
     ----------
-    scan : Topography, Profile, path or surfmet.measurements.Measurement
+    scan : Topography, Profile, path or surfmet._measurements.Measurement
         A file holding several measurements (a container) gives its first here;
         :func:`roughness_many` and the command evaluate each.
     level : str, optional
@@ -131,10 +131,10 @@ def roughness(
     profile : "row:K" or "col:K", optional
         Evaluate a profile extracted from an areal scan (R-parameters).
     spikes : bool
-        Remove spikes (:func:`surfmet.spikes.remove_spikes`) before levelling; the report
+        Remove spikes (:func:`surfmet._spikes.remove_spikes`) before levelling; the report
         goes into the result.
     edge : {"discard", "moment", "renormalise"}
-        Edge treatment of the areal Gaussian filters (:mod:`surfmet.areal.filters`).
+        Edge treatment of the areal Gaussian filters (:mod:`surfmet.areal._filters`).
         Default ``"discard"``: the Gaussian filter of ISO 16610-61 is the full weighting
         function only where it lies inside the scan; within half a nesting index of a
         border it is cut (the end effects of ISO 16610-21, 4.3, whose corrections ISO
@@ -155,14 +155,14 @@ def roughness(
         Profiles: number of sampling lengths. Default: what the file states, else 5.
     rk_line : {"secant", "least-squares", "levels"}, optional
         Profiles: construction of the ISO 13565-2 equivalent straight line
-        (:mod:`profiles.rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
+        (:mod:`profiles._rk`); ``"levels"`` reproduces a Mitutoyo SurfTest printout.
         Default: what the file states (``evaluation_conditions["rk_line"]``), else
         ``"secant"``.
     valley_suppression : bool
         Profiles: ISO 13565-1 two-stage λc filter (stratified surfaces).
     element_start : {"peak", "first-crossing"}, optional
         Profiles: how the profile elements of RSm and Rc are paired in each stretch
-        (:mod:`profiles.elements`): peak first, or from the stretch's first mean-line
+        (:mod:`profiles._elements`): peak first, or from the stretch's first mean-line
         crossing, as a Mitutoyo SurfTest does per sampling length. Default: what the file
         states (``evaluation_conditions["element_start"]``) while the standard in force is
         the file's, else ``"peak"``.
@@ -180,7 +180,7 @@ def roughness(
     win = _window(window)
     level, why_level = _stated_level(data, level)
     if isinstance(data, Profile) or profile is not None:
-        from surfmet.profile_roughness import resolve_conditions
+        from surfmet._profile_roughness import resolve_conditions
 
         cond = resolve_conditions(dict(data.metadata), standard=standard, lc=lc, ls=ls,
                                   n_sampling=n_sampling, rk_line=rk_line,
@@ -209,19 +209,19 @@ def roughness(
 
 def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc, window,
                      spikes: bool, edge: str, which: Any) -> RoughnessResult:
-    from profiles.form import is_flat
+    from profiles._form import is_flat
+    from surfmet._flat_scan import flat_diagnosis, flat_parameters
+    from surfmet._spikes import remove_spikes, spike_diagnosis
     from surfmet.areal import PARAMETER_UNITS, areal_parameters
-    from surfmet.areal.filters import l_filter, s_filter
-    from surfmet.areal.form import dominant_form, remove_form
-    from surfmet.flat_scan import flat_diagnosis, flat_parameters
-    from surfmet.records.form import form_record
-    from surfmet.records.roughness import (
+    from surfmet.areal._filters import l_filter, s_filter
+    from surfmet.areal._form import dominant_form, remove_form
+    from surfmet.records._form import form_record
+    from surfmet.records._roughness import (
         areal_settings_record,
         cutoff_record,
         filter_record,
         spike_report_record,
     )
-    from surfmet.spikes import remove_spikes, spike_diagnosis
 
     settings = areal_settings_record("areal", AREAL_STANDARD, topo, window)
     if window is not None:
@@ -252,7 +252,7 @@ def _areal_roughness(topo: Topography, source: str | None, *, level: str, ls, lc
         filters.append(filter_record(info))
     settings["filters"] = filters
     if filters:
-        from surfmet.areal.filters import EDGE_MEANING
+        from surfmet.areal._filters import EDGE_MEANING
 
         settings["edge"] = {"value": edge, "meaning": EDGE_MEANING.get(edge, "")}
     settings["surface"] = ("S-L surface" if lc is not None else "S-F surface")
@@ -304,7 +304,7 @@ def roughness_file(path: str | os.PathLike[str] | Measurement,
     process pools and Dask. ``read_options`` go to :func:`surfmet.read` (``height_unit=``,
     ``dx=``, ``dy=``, ``channel=``).
     """
-    from surfmet.errors import user_error_types
+    from surfmet._errors import user_error_types
 
     name = str(path)
     try:
@@ -322,7 +322,7 @@ def roughness_file(path: str | os.PathLike[str] | Measurement,
     except Exception as exc:  # a bug must not stop a batch; it is reported as such
         return {"file": name, "status": "error",
                 "error": f"internal error: {type(exc).__name__}: {exc}"}
-    from surfmet.records.roughness import roughness_record
+    from surfmet.records._roughness import roughness_record
 
     return {"file": name, "status": "ok", **roughness_record(res)}
 
@@ -336,7 +336,7 @@ def roughness_many(
     **options: Any,
 ) -> list[dict[str, Any]]:
     """:func:`roughness_file` on each path; one entry per file (per measurement of a
-    container, :func:`surfmet.measurements.expand_measurements`), in order, failures
+    container, :func:`surfmet._measurements.expand_measurements`), in order, failures
     included.
 
     Parameters
@@ -353,8 +353,8 @@ def roughness_many(
     """
     from functools import partial
 
-    from surfmet.batch import batch_map
-    from surfmet.measurements import expand_measurements
+    from surfmet._batch import batch_map
+    from surfmet._measurements import expand_measurements
 
     return batch_map(partial(roughness_file, **options), expand_measurements(paths),
                      workers=workers, scheduler=scheduler, progress=progress,

@@ -7,14 +7,14 @@ autocorrelation, variable-bandwidth rms height and 1D PSD over the scales it res
 reliably; the surface's value at a scale is the mean over the measurements that contribute
 there, each with one equal vote.
 
-Rules (the engine's definitions are in :mod:`profiles.scales`):
+Rules (the engine's definitions are in :mod:`profiles._scales`):
 
 * distance grid ``10^(j/N)`` m (``N`` points per decade), whole decades included, from the
   shortest to the longest scale any measurement resolves;
 * a measurement contributes to a derivative of order ``n`` at distance ``d`` when
   ``n · max(pixel, cut-off) < d < size`` (the peer's container rule);
 * the reliability cut-off comes from the probe: the tip radius that the file states, else
-  ``tip_radius=`` (``--tip-radius``), through :func:`profiles.scales.tip_cutoff`; without
+  ``tip_radius=`` (``--tip-radius``), through :func:`profiles._scales.tip_cutoff`; without
   a radius there is no cut-off (stated as such);
 * direction (``direction=``, ``--direction``): the derivatives of a map are taken along x
   (the rows; the default, the one SurfaceTopography's tests of maps use), along y (the
@@ -26,7 +26,7 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
   taken along their length;
 * PSD (along x; along y with ``direction="y"``; with ``both`` along x, as contact.engineering
   averages a map's rows): averaged as contact.engineering averages it
-  (:mod:`surfmet.averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors (periodic
+  (:mod:`surfmet._averaged_psd`): each measurement's 1D PSD on its own DFT wavevectors (periodic
   Hann window, levelled as the container states; maps: mean of the rows; nonuniform profiles:
   their piecewise-linear curve, 5x oversampled), kept below ``2π/cut-off``, bin-averaged in log
   bins of q of its own decades and averaged over the measurements with data in each bin (equal
@@ -34,7 +34,7 @@ Rules (the engine's definitions are in :mod:`profiles.scales`):
   default), not on the distance grid; variable-bandwidth rms height is interpolated log-log onto
   the distance grid and averaged likewise.
 
-Bad input (one :class:`~surfmet.errors.SurfmetInputError` line each): a tip radius that
+Bad input (one :class:`~surfmet._errors.SurfmetInputError` line each): a tip radius that
 leaves no reliable scale in any measurement, and measurements whose reliable bandwidths
 leave a gap (no overlap: measurements of different surfaces, or of the same surface with a
 hole in scale that the average would hide).
@@ -47,7 +47,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from profiles.scales import (
+from profiles._scales import (
     Scan,
     height_difference_acf,
     make_scan,
@@ -55,8 +55,8 @@ from profiles.scales import (
     tip_cutoff,
     variable_bandwidth,
 )
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 
 #: The axes a map's derivatives may be taken along (module notes).
 DIRECTIONS = ("x", "y", "both")
@@ -137,10 +137,10 @@ def level_as_stated(m: Profile | Topography) -> Profile | Topography:
                                     "expected)")
         return m
     if isinstance(m, Profile):
-        from profiles.form import remove_form
+        from profiles._form import remove_form
 
         return m.replace(z=remove_form(m.z, m.dx, x=m.x, degree=degree).residuals)
-    from surfmet.areal.form import remove_form as remove_areal_form
+    from surfmet.areal._form import remove_form as remove_areal_form
 
     return remove_areal_form(m, {0: "mean", 1: "plane", 2: "poly:2"}[degree])[0]
 
@@ -177,8 +177,8 @@ def _cutoff(m: Profile | Topography, scan: Scan, tip_radius: float | None
 def measurement_spectrum(m: Profile | Topography, scan: Scan, cutoff: float | None
                      ) -> tuple[np.ndarray, np.ndarray]:
     """The measurement's reliable 1D PSD on its own wavevectors
-    (:func:`surfmet.averaged_psd.measurement_psd`, levelled as its container states)."""
-    from surfmet.averaged_psd import measurement_psd
+    (:func:`surfmet._averaged_psd.measurement_psd`, levelled as its container states)."""
+    from surfmet._averaged_psd import measurement_psd
 
     mode = str(m.metadata.get("detrend_mode") or "")
     degree = {"center": 0, "height": 1, "curvature": 2}.get(mode)
@@ -281,7 +281,7 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
         Points per decade of the distance grid.
     psd_per_decade : int, optional
         Bins per decade of q of the averaged PSD, independent of the distance grid
-        (default :data:`surfmet.averaged_psd.PSD_PER_DECADE`, contact.engineering's).
+        (default :data:`surfmet._averaged_psd.PSD_PER_DECADE`, contact.engineering's).
     direction : {"x", "y", "both"}
         The axis (or axes) a map's derivatives are taken along (module notes); profiles
         are taken along their length whatever it is.
@@ -303,7 +303,7 @@ def analyze_scales(scans: list[Profile | Topography], *, tip_radius: float | Non
     d = distance_grid(min(b[0] for b in bands), max(b[1] for b in bands), per_decade)
     ms = [_measure(s, d, tip_radius, direction) for s in scans]
     _check_overlap(ms)
-    from surfmet.averaged_psd import PSD_PER_DECADE, average_psd
+    from surfmet._averaged_psd import PSD_PER_DECADE, average_psd
 
     if psd_per_decade is not None and psd_per_decade < 1:
         raise SurfmetInputError(f"PSD bins per decade must be at least 1, got {psd_per_decade}")

@@ -3,7 +3,7 @@
 :func:`sweep_items` expands the Cartesian product into :class:`SweepItem` rows, each with a
 stable key (its parameters, not its place in the list); :func:`run_item` solves one item
 as ``surfmet contact`` or ``surfmet hertz-check`` would and returns a flat row of
-``name -> (value, unit)``; :func:`run_sweep` runs them through :func:`surfmet.batch.batch_map`
+``name -> (value, unit)``; :func:`run_sweep` runs them through :func:`surfmet._batch.batch_map`
 (local processes by default, serial, or a Dask cluster), so that:
 
 * the rows are bitwise those of the serial run (every item is a fresh call of the same
@@ -34,10 +34,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_pair
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
-from surfmet.records.sweep import sweep_row_record
+from surfmet.records._sweep import sweep_row_record
 
 TASKS = ("contact", "hertz-check")
 
@@ -47,7 +47,7 @@ BASE_COLUMNS: tuple[tuple[str, str], ...] = (
     ("materials", ""), ("load", "N"), ("radius", "m"), ("position_x", "m"),
     ("position_y", "m"), ("spikes", ""), ("status", ""), ("error", ""), ("caveats", ""),
 )
-#: The solve record (:class:`contact.record.SolveRecord`) of each row.
+#: The solve record (:class:`contact._record.SolveRecord`) of each row.
 SOLVE_COLUMNS: tuple[tuple[str, str], ...] = (
     ("solve_iterations", ""), ("solve_residual", ""), ("solve_converged", ""),
     ("solve_edge_contact", ""),
@@ -156,7 +156,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
     row["caveats"] = (_scan_caveats(plate=plate, ball=ball), "")
     if item.task == "hertz-check":
         from surfmet.mechanics.hertz_check import hertz_check
-        from surfmet.records.hertz import hertz_check_solve
+        from surfmet.records._hertz import hertz_check_solve
 
         chk = hertz_check(plate, radius=item.radius, load=item.load,
                           materials=item.materials, ball=ball, hardness=item.hardness,
@@ -201,7 +201,7 @@ def run_item(item: SweepItem) -> dict[str, tuple[Any, str]]:
 
 def _scan_caveats(**scans: Any) -> str | None:
     """The units each scan's file does not state (assumed) or the user stated, as the
-    command's text and JSON give them (:meth:`surfmet.model.Calibration.caveats`), each
+    command's text and JSON give them (:meth:`surfmet._model.Calibration.caveats`), each
     named by its body; ``; ``-joined as the ``warnings`` column, None when there are none."""
     out = [f"{body}: {c}" for body, scan in scans.items() if scan is not None
            for c in scan.calibration.caveats()]
@@ -219,7 +219,7 @@ def _solve_columns(rec: Any) -> dict[str, tuple[Any, str]]:
 def error_row(item: SweepItem, message: str) -> dict[str, tuple[Any, str]]:
     """The row of a failed item: its parameters, ``status = "error"`` and the message
     (less the advice to accept a truncated result, which a sweep cannot)."""
-    from contact.record import TRUNCATED_ADVICE
+    from contact._record import TRUNCATED_ADVICE
 
     message = message.replace(TRUNCATED_ADVICE, "")
     row = _base(item)
@@ -236,11 +236,11 @@ def columns(task: str) -> tuple[tuple[str, str], ...]:
 class RowWriter:
     """Appends rows to a CSV and/or a JSON Lines file, each row whole or not at all.
 
-    The outputs are locked (:func:`surfmet.atomic.output_lock`: a second run on the same
+    The outputs are locked (:func:`surfmet._atomic.output_lock`: a second run on the same
     file is refused) and opened (created) at construction, so that an unwritable path
     fails before any work. Each row goes to every file in one write per file, flushed to
     disk; a write the disk refuses is undone in every file (they keep exactly the rows
-    before it) and raised as one :class:`~surfmet.errors.SurfmetWriteError`.
+    before it) and raised as one :class:`~surfmet._errors.SurfmetWriteError`.
 
     With ``resume`` the existing files are validated first (:func:`valid_rows`): a line
     cut short by a stop and anything after it are dropped, and a row that reached only
@@ -252,7 +252,7 @@ class RowWriter:
                  json_path: str | Path | None = None, *, resume: bool = False) -> None:
         import contextlib
 
-        from surfmet.atomic import output_lock
+        from surfmet._atomic import output_lock
 
         self.cols = columns(task)
         self.done: set[str] = set()
@@ -282,7 +282,7 @@ class RowWriter:
 
     def write(self, row: dict[str, tuple[Any, str]]) -> None:
         """Append one row to every open file and flush it to disk (all or nothing)."""
-        from surfmet.errors import SurfmetWriteError
+        from surfmet._errors import SurfmetWriteError
         from surfmet.units import jsonable
 
         texts = {}
@@ -325,7 +325,7 @@ class RowWriter:
 def _distinct(csv_path: str | Path | None, json_path: str | Path | None) -> None:
     """Refuse one file given for both outputs (by any of its names): the two formats
     would interleave in it, and its lock would seem held by another run."""
-    from surfmet.atomic import real_target
+    from surfmet._atomic import real_target
 
     if csv_path is None or json_path is None:
         return
@@ -447,7 +447,7 @@ def _restore(cols: Sequence[tuple[str, str]], csv_path: str | Path | None,
              json_path: str | Path | None) -> set[str]:
     """Rewrite the existing outputs (atomically) with only the rows whole in all of them;
     their keys."""
-    from surfmet.atomic import write_text
+    from surfmet._atomic import write_text
 
     found = valid_rows(cols, csv_path, json_path)
     paths = {"csv": csv_path, "json": json_path}
@@ -469,7 +469,7 @@ def run_sweep(items: Iterable[SweepItem], *, workers: int | None = None,
 
     Each finished row goes to ``writer`` (and ``on_row``) as soon as it arrives.
     """
-    from surfmet.batch import batch_map
+    from surfmet._batch import batch_map
 
     todo = [it for it in items if not skip or it.key not in skip]
 

@@ -22,8 +22,8 @@ import math
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 
 
 def _grid(n: int | tuple[int, int]) -> tuple[int, int]:

@@ -12,7 +12,7 @@ import sys
 from collections.abc import Mapping
 from typing import Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 # Symbols accepted on the command line and in file headers. Both the micro sign (U+00B5)
 # and the Greek mu (U+03BC) occur in real files.

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 __all__ = ["DEFAULT_POINTS", "MAX_POINTS", "parse_values", "split_items"]
 
@@ -63,7 +63,7 @@ def _range(item: str, parse_one: Callable[[str], float], what: str) -> list[floa
         raise SurfmetInputError(f"{what}: the range {item!r} needs 0 < START < END")
     import numpy as np
 
-    # the engine's spacing (contact.rolling.log_loads), END included exactly
+    # the engine's spacing (contact._rolling.log_loads), END included exactly
     return [float(v) for v in np.geomspace(lo, hi, n)]
 
 

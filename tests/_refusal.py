@@ -7,7 +7,7 @@ from typing import Any
 
 import pytest
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import read_bytes
 
 

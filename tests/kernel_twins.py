@@ -1,7 +1,7 @@
 """Plain-numpy twins of the numba kernels: what each kernel computes, in a few lines.
 
 The twin of ``kernel`` is ``kernel_reference``; ``tests/test_contact_kernels.py`` runs both
-on small inputs. The kernels are those of :mod:`contact.bem.kernels` and the periodised
+on small inputs. The kernels are those of :mod:`contact.bem._kernels` and the periodised
 Love spectrum of :mod:`contact.halfspace.influence`. The twins are written independently
 of the loops (whole-array numpy, bisection where the kernels use Newton), so that a kernel
 and its twin share no code.
@@ -31,7 +31,7 @@ def periodic_love_spectrum_reference(ny, nx, dx, dy, n_alias):
 
 
 def pk_gap_mean_reference(p, u, h, hmax):
-    """numpy twin of :func:`contact.bem.kernels.pk_gap_mean`."""
+    """numpy twin of :func:`contact.bem._kernels.pk_gap_mean`."""
     free = (p > 0) & (p < hmax)
     contact = p > 0
     return (float((u + h)[free].sum()), int(free.sum()), float(p[contact].sum()),
@@ -39,7 +39,7 @@ def pk_gap_mean_reference(p, u, h, hmax):
 
 
 def pk_residual_reference(p, u, h, gbar, hmax):
-    """numpy twin of :func:`contact.bem.kernels.pk_residual`; returns (d, G, viol, nviol)."""
+    """numpy twin of :func:`contact.bem._kernels.pk_residual`; returns (d, G, viol, nviol)."""
     d = u + h - gbar
     free = (p > 0) & (p < hmax)
     bad = ((p <= 0) & (d < 0)) | ((p >= hmax) & (d > 0))
@@ -47,7 +47,7 @@ def pk_residual_reference(p, u, h, gbar, hmax):
 
 
 def pk_direction_reference(d, p, t, beta, hmax, nx):
-    """numpy twin of :func:`contact.bem.kernels.pk_direction`; returns (t_new, lo, hi)."""
+    """numpy twin of :func:`contact.bem._kernels.pk_direction`; returns (t_new, lo, hi)."""
     free = (p > 0) & (p < hmax)
     t_new = np.where(free, d + beta * t, 0.0)
     rows = np.nonzero(free.reshape(-1, nx).any(axis=1))[0]
@@ -56,7 +56,7 @@ def pk_direction_reference(d, p, t, beta, hmax, nx):
 
 
 def pk_step_length_reference(r, t, d, p, hmax, subtract_mean):
-    """numpy twin of :func:`contact.bem.kernels.pk_step_length`."""
+    """numpy twin of :func:`contact.bem._kernels.pk_step_length`."""
     free = (p > 0) & (p < hmax)
     r = r.astype(float)
     rbar = float(r[free].mean()) if (subtract_mean and free.any()) else 0.0
@@ -66,7 +66,7 @@ def pk_step_length_reference(r, t, d, p, hmax, subtract_mean):
 
 
 def pk_update_pressure_reference(p, t, d, tau, hmax):
-    """numpy twin of :func:`contact.bem.kernels.pk_update_pressure`.
+    """numpy twin of :func:`contact.bem._kernels.pk_update_pressure`.
 
     Returns (p_new, correction, entered).
     """
@@ -84,7 +84,7 @@ def pk_update_pressure_reference(p, t, d, tau, hmax):
 
 
 def capped_scale_reference(p, target, hmax):
-    """numpy twin of :func:`contact.bem.kernels.capped_scale`, s by bisection.
+    """numpy twin of :func:`contact.bem._kernels.capped_scale`, s by bisection.
 
     Returns (s, new p).
     """
@@ -106,12 +106,12 @@ def capped_scale_reference(p, target, hmax):
 
 
 def axpy_scale_reference(u, r, tau, s):
-    """numpy twin of :func:`contact.bem.kernels.axpy_scale`."""
+    """numpy twin of :func:`contact.bem._kernels.axpy_scale`."""
     return s * (u - tau * r.astype(float))
 
 
 def sparse_convolve_add_reference(u, index, value, kernel, nx, periodic):
-    """numpy twin of :func:`contact.bem.kernels.sparse_convolve_add` (returns a new array)."""
+    """numpy twin of :func:`contact.bem._kernels.sparse_convolve_add` (returns a new array)."""
     ny = u.size // nx
     out = u.reshape(ny, nx).copy()
     rows = np.arange(ny)[:, None]
@@ -126,7 +126,7 @@ def sparse_convolve_add_reference(u, index, value, kernel, nx, periodic):
 
 
 def masked_copy_reference(d, p, hmax, nx):
-    """numpy twin of :func:`contact.bem.kernels.masked_copy`; returns (out, lo, hi)."""
+    """numpy twin of :func:`contact.bem._kernels.masked_copy`; returns (out, lo, hi)."""
     free = (p > 0) & (p < hmax)
     rows = np.nonzero(free.reshape(-1, nx).any(axis=1))[0]
     lo, hi = (int(rows[0]), int(rows[-1]) + 1) if rows.size else (0, 0)
@@ -134,7 +134,7 @@ def masked_copy_reference(d, p, hmax, nx):
 
 
 def center_on_free_reference(zin, d, p, hmax, subtract_mean):
-    """numpy twin of :func:`contact.bem.kernels.center_on_free`; returns (z, rho)."""
+    """numpy twin of :func:`contact.bem._kernels.center_on_free`; returns (z, rho)."""
     free = (p > 0) & (p < hmax)
     zin = zin.astype(float)
     zbar = float(zin[free].mean()) if (subtract_mean and free.any()) else 0.0
@@ -143,7 +143,7 @@ def center_on_free_reference(zin, d, p, hmax, subtract_mean):
 
 
 def projected_gradient_reference(p, d, alpha, target, hmax, load_control):
-    """numpy twin of :func:`contact.bem.kernels.projected_gradient`, mu by bisection.
+    """numpy twin of :func:`contact.bem._kernels.projected_gradient`, mu by bisection.
 
     Returns (s, gs, ss, mu).
     """
@@ -163,18 +163,18 @@ def projected_gradient_reference(p, d, alpha, target, hmax, load_control):
 
 
 def add_step_reference(p, s, u, w, theta, hmax):
-    """numpy twin of :func:`contact.bem.kernels.add_step`; returns (p, u)."""
+    """numpy twin of :func:`contact.bem._kernels.add_step`; returns (p, u)."""
     v = np.clip(p + theta * s, 0.0, hmax)
     v[v >= hmax * (1 - 1e-14)] = hmax
     return np.where(s != 0, v, p), u + theta * w.astype(float)
 
 
 def step_terms_reference(p, p_old, u, u_old, d):
-    """numpy twin of :func:`contact.bem.kernels.step_terms`."""
+    """numpy twin of :func:`contact.bem._kernels.step_terms`."""
     s = p - p_old
     return float(d @ s), float(s @ (u - u_old)), float(p.sum())
 
 
 def blend_reference(p, p_old, u, u_old, theta):
-    """numpy twin of :func:`contact.bem.kernels.blend`; returns (p, u)."""
+    """numpy twin of :func:`contact.bem._kernels.blend`; returns (p, u)."""
     return p_old + theta * (p - p_old), u_old + theta * (u - u_old)

@@ -26,8 +26,8 @@ import numpy as np
 from scipy.signal import fftconvolve
 
 from contact import SolveOptions
+from contact._grid import gap_grid
 from contact.bem import solve_normal
-from contact.grid import gap_grid
 
 
 @dataclass(frozen=True, eq=False)
@@ -77,7 +77,7 @@ def fixed_point_plastic(
     max_outer: int = 300,
 ) -> PlasticReference:
     """Elastic-perfectly-plastic contact of ``problem`` (an elastic
-    :class:`contact.setups.ball_on_plate.SphereContact`) at ``load``, warm-started from its
+    :class:`contact.setups._ball_on_plate.SphereContact`) at ``load``, warm-started from its
     elastic solution ``elastic``; stops when no yielded cell carries more than
     H (1 + yield_tol). Raises AssertionError when it does not converge."""
     n, dx = problem.domain.n, problem.domain.dx

@@ -16,13 +16,13 @@ from contact_synth import rough_surface
 from maugis_reference import md_pull_off
 
 from contact import DomainSpec, SolveOptions
+from contact._errors import ContactInputError, ConvergenceError
+from contact._grid import gap_grid
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.cycle import refine_pull_off, run_branch
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw, maugis_parameter
 from contact.adhesion.solver import adhesive_problem, solve_adhesive
 from contact.bem import solve_normal
-from contact.errors import ContactInputError, ConvergenceError
-from contact.grid import gap_grid
 
 # Units in which K = 4 E* / 3 = 1, R = 1 and the Maugis length (pi w R^2 / K)^(1/3) = 0.1.
 R, E_STAR, W = 1.0, 0.75, 1e-3 / math.pi

@@ -74,7 +74,7 @@ def test_a_default_grid_beyond_the_measured_ones_says_its_cost_and_the_halfs_exc
 def test_where_memory_caps_the_grid_it_says_by_how_much():
     from contact.adhesion.default_grid import resolving_grid
     from contact.adhesion.memory import estimate_adhesion_bytes
-    from contact.bem.memory import SAFETY
+    from contact.bem._memory import SAFETY
 
     avail = 400e6  # room for about 500^2 cells
     size, zone = 36e-6, 37e-9  # lambda 10: 2 pixels need 1952 cells

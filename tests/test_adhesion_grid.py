@@ -1,4 +1,4 @@
-"""The adhesive solves take the core's one grid (contact.grid.Grid), as the normal BEM does.
+"""The adhesive solves take the core's one grid (contact._grid.Grid), as the normal BEM does.
 
 Truths used: the same solve given the gap as a loose array and its pitch, which is the
 entry point the adhesion validation (Maugis, JKR, DMT, Johnson's wavy surface) was run
@@ -11,12 +11,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from contact._errors import ContactInputError
+from contact._grid import centred_grid, scan_grid
 from contact.adhesion.flat import adhesive_flat
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.line import periodic_line_grid
 from contact.adhesion.solver import adhesive_problem, solve_adhesive
-from contact.errors import ContactInputError
-from contact.grid import centred_grid, scan_grid
 
 E_STAR = 1e9
 DX = 0.25e-6

@@ -15,8 +15,8 @@ import warnings
 import numpy as np
 
 from contact import DomainSpec
+from contact._record import SolveRecord
 from contact.adhesion.cycle import Branch, find_jump
-from contact.record import SolveRecord
 
 E_STAR = 1e9
 _REC = SolveRecord(method="test", iterations=1, residual=0.0, tolerance=1.0, converged=True,

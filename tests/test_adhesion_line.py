@@ -25,6 +25,7 @@ import numpy as np
 import pytest
 from maugis_line_reference import md_line_pull_off, md_line_state
 
+from contact._errors import ContactInputError
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.line import (
     adhesive_line,
@@ -34,10 +35,9 @@ from contact.adhesion.line import (
     line_scales,
     periodic_line_grid,
 )
-from contact.errors import ContactInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
 
 E_STAR, W, R = 1e9, 0.05, 10e-6
 

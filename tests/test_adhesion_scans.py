@@ -16,10 +16,10 @@ import pytest
 import surfmet
 from contact.adhesion.ball import default_size
 from contact.adhesion.laws import DugdaleLaw
+from surfmet._model import Topography
 from surfmet.cli import main
 from surfmet.mechanics.adhesion import adhesion
-from surfmet.model import Topography
-from surfmet.records.adhesion import adhesion_record
+from surfmet.records._adhesion import adhesion_record
 
 R, E_STAR, W, H0 = 10e-6, 1e9, 0.05, 10e-9
 KW = {"work": W, "range_": H0, "e_star": E_STAR, "grid": 32, "steps": 6}

@@ -340,8 +340,8 @@ def test_smoothed_dugdale_law_keeps_work_and_peak():
     """The ramp keeps the work (integral of t over the gap) and the peak; the potential is
     the traction's integral (finite differences); a ramp wider than h0 or negative is one
     input error."""
+    from contact._errors import ContactInputError
     from contact.adhesion.laws import DugdaleLaw
-    from contact.errors import ContactInputError
 
     law = DugdaleLaw(2.0, 4.0, smoothing=0.3)  # h0 = 0.5
     g = np.linspace(0.0, 1.0, 200001)

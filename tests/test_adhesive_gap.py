@@ -26,10 +26,10 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 from contact import SolveOptions
+from contact._grid import gap_grid
 from contact.adhesion import ExponentialLaw
 from contact.adhesion.flat import adhesive_flat, gap_means
 from contact.bem import solve_normal
-from contact.grid import gap_grid
 
 sys.path.insert(0, str(Path(__file__).parent))
 import adhesive_gap_case as case

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import contact.adhesion.line as line
+from contact._record import combine
 from contact.adhesion.laws import DugdaleLaw
 from contact.adhesion.solver import (
     adhesive_problem,
@@ -22,7 +23,6 @@ from contact.adhesion.solver import (
     solve_adhesive_at_pressure,
 )
 from contact.halfspace.convolution import Convolution
-from contact.record import combine
 
 E_STAR, R = 1e9, 10e-6
 LAW = DugdaleLaw.from_range(0.05, 2e-9)

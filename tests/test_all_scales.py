@@ -18,13 +18,13 @@ from scipy.integrate import quad
 from scipy.special import erf
 
 import surfmet
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.roughcontact import isotropic_moments
-from contact.roughcontact.isotropic import iso_from_profile_psd, log_quadrature
+from contact.roughcontact._isotropic import iso_from_profile_psd, log_quadrature
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.all_scales import all_scales_spectrum, persson_all_scales
-from surfmet.model import Profile, Topography
 from surfmet.scale_dependent import analyze_scales
 
 # --- the engine: C_iso from C_1D ---------------------------------------------------------------

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
-from surfmet.extract import extract_profile
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._extract import extract_profile
+from surfmet._model import Topography
 from surfmet.roughness import roughness
 
 

@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.areal import PARAMETER_UNITS, areal_parameters
-from surfmet.areal.form import remove_form
-from surfmet.areal.height import height_parameters
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet.areal._form import remove_form
+from surfmet.areal._height import height_parameters
 from surfmet.roughness import roughness
 
 HEIGHT = ("Sa", "Sq", "Sp", "Sv", "Sz", "Ssk", "Sku")

@@ -8,16 +8,16 @@ import numpy as np
 import pytest
 from areal_synth import gaussian_surface
 
+from surfmet._model import Topography
 from surfmet.areal import areal_parameters
-from surfmet.areal.features import feature_parameters, significant_hills
-from surfmet.areal.hybrid import gradient_parameters
-from surfmet.areal.material_ratio import (
+from surfmet.areal._features import feature_parameters, significant_hills
+from surfmet.areal._hybrid import gradient_parameters
+from surfmet.areal._material_ratio import (
     functional_parameters,
     inverse_material_ratio,
     material_ratio,
 )
-from surfmet.areal.spatial import spatial_parameters, texture_direction
-from surfmet.model import Topography
+from surfmet.areal._spatial import spatial_parameters, texture_direction
 
 
 def _grid(nx, ny, dx, dy):

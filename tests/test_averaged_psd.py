@@ -1,4 +1,4 @@
-"""contact.engineering's averaged PSD (issue 38, item 3): surfmet.averaged_psd.
+"""contact.engineering's averaged PSD (issue 38, item 3): surfmet._averaged_psd.
 
 Two truths: SurfaceTopography 1.27.1's own container average of container-2.zip (a TEM
 nonuniform profile, an AFM map, a stylus profile), computed in a separate virtualenv by
@@ -16,8 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from profiles.scales import make_scan
-from surfmet.averaged_psd import average_psd, continuous_level, measurement_psd
+from profiles._scales import make_scan
+from surfmet._averaged_psd import average_psd, continuous_level, measurement_psd
 
 ST = json.loads((Path(__file__).parent / "data" / "st_container2_psd.json").read_text())
 

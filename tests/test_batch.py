@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from surfmet.batch import batch_map, default_workers
-from surfmet.errors import SurfmetInputError
+from surfmet._batch import batch_map, default_workers
+from surfmet._errors import SurfmetInputError
 from surfmet.roughness import roughness_file
 
 ROOT = Path(__file__).resolve().parents[1]

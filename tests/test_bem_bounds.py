@@ -1,15 +1,15 @@
-"""The pressure bounds object of the normal BEM (contact.bem.bounds)."""
+"""The pressure bounds object of the normal BEM (contact.bem._bounds)."""
 
 import math
 
 import numpy as np
 import pytest
 
+from contact._errors import ContactInputError
+from contact._grid import gap_grid
 from contact.adhesion.laws import DugdaleLaw
 from contact.bem import solve_normal
-from contact.bem.bounds import PressureBounds
-from contact.errors import ContactInputError
-from contact.grid import gap_grid
+from contact.bem._bounds import PressureBounds
 
 
 def _sphere(n=32, dx=2e-6, radius=1e-3):

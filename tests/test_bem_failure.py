@@ -18,9 +18,9 @@ from contact import (
     material,
     solve_sphere,
 )
+from contact._geometry import sphere_gap
+from contact._grid import gap_grid
 from contact.bem import solve_normal
-from contact.geometry import sphere_gap
-from contact.grid import gap_grid
 from contact.setups import CompositeRoughness
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

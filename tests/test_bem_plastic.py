@@ -37,12 +37,12 @@ from contact import (
     material,
     solve_sphere,
 )
+from contact._geometry import sphere_gap
+from contact._grid import gap_grid
 from contact.bem import solve_normal
-from contact.geometry import sphere_gap
-from contact.grid import gap_grid
 from contact.halfspace.influence import love_coefficients, self_influence
 from contact.setups import CompositeRoughness
-from contact.setups.ball_on_plate import SphereContact
+from contact.setups._ball_on_plate import SphereContact
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 H_AL = material("aluminium").hardness

@@ -1,4 +1,4 @@
-"""The warm normal re-solve of the steady-rolling coupling (:func:`contact.bem.solver.
+"""The warm normal re-solve of the steady-rolling coupling (:func:`contact.bem._solver.
 resolve_pressure`): the normal solver's iteration without its record, started from the
 last answer of a loop and, where known, that answer's displacement.
 
@@ -14,14 +14,15 @@ import numpy as np
 import pytest
 
 from contact import SolveOptions
+from contact._errors import ConvergenceError
+from contact._grid import gap_grid
+from contact._hertz import hertz_sphere
+from contact._materials import material
 from contact.bem import solve_normal
-from contact.bem.solver import WarmStart, resolve_pressure
-from contact.errors import ConvergenceError
-from contact.grid import gap_grid
+from contact.bem._solver import WarmStart, resolve_pressure
 from contact.halfspace.pair import HalfSpacePair
-from contact.hertz import hertz_sphere
-from contact.materials import material
-from contact.tangential import coupling, pair_constants, sphere_grid
+from contact.tangential import _coupling as coupling
+from contact.tangential import pair_constants, sphere_grid
 
 STEEL_AL = pair_constants(material("steel"), material("aluminium"))
 
@@ -76,7 +77,7 @@ def test_a_given_displacement_gives_the_public_solvers_answer(ball, tol):
 def test_a_coupling_solve_that_does_not_converge_says_so_in_one_line(ball, monkeypatch):
     """The coupling's solve raises the contact ConvergenceError (not a silent answer)
     when the normal iteration stops short."""
-    import contact.bem.solver as solver
+    import contact.bem._solver as solver
 
     grid, gap, p0 = ball
     op = HalfSpacePair(64, 64, grid.dx, grid.dy, STEEL_AL)

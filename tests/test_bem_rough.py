@@ -147,9 +147,9 @@ def test_enlarged_rough_domain_matches_a_large_one():
 
 def test_raw_solver_warns_when_the_contact_is_cut_by_the_domain():
     from contact import SolveOptions
+    from contact._geometry import sphere_gap
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.geometry import sphere_gap
-    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 64

@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from contact import SolveOptions
+from contact._grid import gap_grid
 from contact.bem import solve_normal
-from contact.grid import gap_grid
 
 E_STAR, LAM, DELTA = 80e9, 1e-3, 1e-6
 NX, NY = 512, 4

@@ -1,4 +1,4 @@
-"""The capillary law (contact/adhesion/laws/capillary.py): a meniscus of Laplace pressure
+"""The capillary law (contact/adhesion/laws/_capillary.py): a meniscus of Laplace pressure
 gamma / r_K where the gap is below h_c = 2 r_K cos(theta), added as a plug-in in three
 files (the law, this test, its section of docs/adhesion.md).
 
@@ -19,11 +19,11 @@ import numpy as np
 import pytest
 from maugis_reference import md_pull_off
 
+from contact._errors import ContactInputError
+from contact._geometry import DomainSpec
 from contact.adhesion import adhesive_ball
 from contact.adhesion.ball import default_size
 from contact.adhesion.laws import law_class
-from contact.errors import ContactInputError
-from contact.geometry import DomainSpec
 from surfmet.cli import main
 from surfmet.mechanics.adhesion import adhesion
 
@@ -134,7 +134,7 @@ def test_the_capillary_law_is_in_three_files():
         # generated API pages)
         and not {"__pycache__", "_build", "generated"} & set(p.parts)
         and word.search(p.read_text(encoding="utf-8")))
-    assert files == ["contact/adhesion/laws/capillary.py", "docs/adhesion.md",
+    assert files == ["contact/adhesion/laws/_capillary.py", "docs/adhesion.md",
                      "tests/test_capillary_law.py"]
 
 

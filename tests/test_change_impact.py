@@ -21,8 +21,8 @@ import pytest
 import surfmet
 import surfmet.cli
 import surfmet.io
-from surfmet.errors import SurfmetFormatError
-from surfmet.io import registry
+from surfmet._errors import SurfmetFormatError
+from surfmet.io import _registry as registry
 
 ROOT = Path(__file__).resolve().parents[1]
 ARCHITECTURE = ROOT / "docs" / "architecture.md"
@@ -133,8 +133,8 @@ def test_today_every_format_and_command_meets_the_checks():
 READER = '''
 """A throwaway binary format: the magic bytes, ny and nx (uint32), heights in nm (float64)."""
 import numpy as np
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
+from surfmet._model import Topography
 
 MAGIC = b"\\x89IMPACT\\x00"
 

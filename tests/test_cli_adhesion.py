@@ -9,8 +9,8 @@ import pytest
 from maugis_reference import md_pull_off
 
 from contact import composite_modulus, material
+from surfmet._errors import SurfmetInputError
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
 from surfmet.units import parse_surface_energy
 
 BASE = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--range", "2nm"]

@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import build_parser, main
-from surfmet.model import Topography
 
 
 def _subparsers() -> dict[str, argparse.ArgumentParser]:
@@ -165,7 +165,7 @@ def test_user_errors_exit_1(argv, files, capsys):
 
 @pytest.mark.parametrize("target, argv", [
     ("surfmet.roughness.roughness", ["roughness", "{scan}"]),
-    ("surfmet.render.render_3d", ["show", "{scan}", "-o", "{tmp}/v.png"]),
+    ("surfmet._render.render_3d", ["show", "{scan}", "-o", "{tmp}/v.png"]),
     ("surfmet.report.render_html", ["report", "{scan}", "-o", "{tmp}/r.html", "--no-3d"]),
 ])
 def test_internal_errors_exit_2(target, argv, files, capsys, monkeypatch):

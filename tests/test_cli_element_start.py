@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile
 from surfmet.roughness import roughness
 
 A, DX = 1e-6, 0.25e-6
@@ -103,7 +103,7 @@ def test_a_bad_value_is_refused_in_one_line(capsys, runs_file, tmp_path, command
 
 
 def test_the_choices_are_the_engines():
-    from profiles.elements import ELEMENT_STARTS as ENGINE
+    from profiles._elements import ELEMENT_STARTS as ENGINE
     from surfmet.cli._roughness_options import ELEMENT_STARTS
 
     assert ELEMENT_STARTS == ENGINE

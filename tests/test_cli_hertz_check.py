@@ -11,8 +11,8 @@ from contact_synth import rough_surface
 
 import surfmet
 from contact import DomainSpec, composite_modulus, hertz_sphere, material
+from surfmet._model import Profile, Topography
 from surfmet.cli import main
-from surfmet.model import Profile, Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R, W = 5e-3, 1.0
@@ -153,9 +153,9 @@ def test_hierarchy_head_never_denies_a_model_within_tolerance():
     """Issue 25 item 1: when Hertz matches the boundary elements on a* and profile but
     fails another criterion (here α), the named model's reason says which, instead of
     "no model of the hierarchy is within tolerance"."""
-    from contact.hertzcheck import compare_with_hertz
-    from contact.roughcontact.hierarchy import model_hierarchy
-    from contact.setups.ball_on_plate import SphereContact
+    from contact._hertzcheck import compare_with_hertz
+    from contact.roughcontact._hierarchy import model_hierarchy
+    from contact.setups._ball_on_plate import SphereContact
 
     e_star = composite_modulus(material("steel"), material("aluminium"))
     res = SphereContact(0.02, e_star, 10.0, domain=DomainSpec(grid=64)).solve(10.0)
@@ -171,7 +171,7 @@ def test_hierarchy_head_never_denies_a_model_within_tolerance():
 def test_report_and_demo_say_an_unresolved_scan_has_no_verdict():
     """Issue 25 item 1: every entry point gives the same answer: the report and the demo's
     story do not print "does not hold" for a scan that cannot be judged."""
-    from surfmet.report_hertz import hertz_html
+    from surfmet._report_hertz import hertz_html
 
     html = hertz_html({"hertz_holds": False, "judged": False, "alpha": None}, None, None)
     assert "no verdict: the scan's pixel does not resolve the contact" in html

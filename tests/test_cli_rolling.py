@@ -12,8 +12,8 @@ from scipy import stats
 
 import surfmet
 from contact import composite_modulus, hertz_sphere, material
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 BASE = ["rolling", "--radius", "20mm", "--materials", "steel,aluminium"]

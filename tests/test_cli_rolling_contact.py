@@ -8,8 +8,8 @@ import math
 
 import pytest
 
-from contact.hertz import hertz_cylinder
-from contact.materials import composite_modulus, material
+from contact._hertz import hertz_cylinder
+from contact._materials import composite_modulus, material
 from surfmet.cli import main
 
 BASE = ["rolling-contact", "--radius", "25mm", "--materials", "steel,steel"]
@@ -74,7 +74,7 @@ def test_rough_domain_is_sized_from_the_scans(capsys):
     """The help's own example on the bundled pair: rough contact spreads beyond 1.5 Hertz
     radii, so the domain comes from the roughness (as for ``contact``) and holds the whole
     contact: no loaded element on the domain's edge, and the load carried in full."""
-    from contact.geometry import contact_extent
+    from contact._geometry import contact_extent
 
     assert main([*ROUGH, "--grid", "32", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
@@ -109,8 +109,8 @@ def test_grid_beyond_memory_is_refused_in_one_line(capsys, monkeypatch, extra, s
     available; the named grid's estimate fits, the next even one's does not)."""
     import re
 
-    from contact.bem.memory import SAFETY
-    from contact.tangential import memory
+    from contact.bem._memory import SAFETY
+    from contact.tangential import _memory as memory
 
     monkeypatch.setattr(memory, "available_bytes", lambda: 2 * 10**9)
     assert main([*BASE, "--mu", "0.3", *extra]) == 1
@@ -132,7 +132,7 @@ def test_memory_estimate_bounds_the_measured_peak():
     import subprocess
     import sys
 
-    from contact.tangential.memory import estimate_rolling_bytes
+    from contact.tangential._memory import estimate_rolling_bytes
 
     code = (
         "from surfmet.mechanics.rolling_contact import solve_rolling_contact as s\n"
@@ -173,7 +173,7 @@ def test_slip_elements_dissipate_mu_p_slip():
     traction opposes the slip there), and positive."""
     import numpy as np
 
-    from contact.tangential.kernels import SLIP
+    from contact.tangential._kernels import SLIP
     from surfmet.mechanics.rolling_contact import solve_rolling_contact
 
     r = solve_rolling_contact(0.02, 5.0, "steel,aluminium", 0.3, creepage=2e-4,

@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from contact.viscoelastic.hunter import hunter_cylinder
+from contact.viscoelastic._hunter import hunter_cylinder
 from surfmet.cli import main
 
 

@@ -53,7 +53,7 @@ def test_all_mechanisms_json(capsys) -> None:
     assert 3.9 < min(n1, n2) < 4.0 and 5.3 < max(n1, n2) < 5.4  # the paper's 3.97-5.36 N
     # the rotor verdict's group offset, the same numbers as `surfmet rotor paper2022 --json`
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.records.rotor_verdict import offset_record
+    from surfmet.records._rotor_verdict import offset_record
 
     v = paper_verdict()
     assert out["group_offset"] == json.loads(json.dumps(offset_record(v)))

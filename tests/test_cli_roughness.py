@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.areal import PARAMETER_UNITS
 from surfmet.cli import main
-from surfmet.model import Topography
 
 
 def _run(capsys, *argv):
@@ -171,7 +171,7 @@ def test_diagnosis_and_table_agree_and_no_spike_advice_after_removal(capsys, tmp
     # issue 16 item 13: (1) a profile's table said Rku 79.6 and its diagnosis 79.9 (about
     # the sample mean instead of the mean line); (2) after --spikes removed spikes the
     # diagnosis still advised "--spikes"
-    from surfmet.model import Profile
+    from surfmet._model import Profile
 
     rng = np.random.default_rng(12)
     z = 1e-8 * rng.standard_normal(4000) + 3e-9  # a mean off the mean line
@@ -209,7 +209,7 @@ def test_areal_default_leaves_out_the_filter_edges_and_gets_the_closed_form_sq(c
     # keeps 1 - exp(-π (α λc / λ)²) of its amplitude (ISO 16610-61), so the S-L surface is
     # known in closed form at every point; Sq over the area the output keeps must be its
     # rms there (issue 18: the kept edge bands made Sq about 2 % low)
-    from surfmet.areal.filters import ALPHA
+    from surfmet.areal._filters import ALPHA
 
     n, dx, lc = 500, 4e-6, 0.8e-3
     y, x = np.mgrid[:n, :n] * dx
@@ -282,7 +282,7 @@ def test_one_flipped_bit_is_refused_not_summarised(tmp_path, capsys):
 def test_heights_beyond_any_surface_are_refused_by_the_statistics():
     """Issue 25 items 11-12: a Topography built in memory with heights x 1e300 is refused
     by the parameters themselves (no OverflowError, no non-finite Sq)."""
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.roughness import roughness
 
     z = np.random.default_rng(6).normal(size=(32, 32)) * 1e294

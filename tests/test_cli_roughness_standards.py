@@ -13,8 +13,8 @@ import pytest
 from mitutoyo_printout import read_printout
 
 import surfmet
+from surfmet._model import Profile
 from surfmet.cli import main
-from surfmet.model import Profile
 
 
 def _run(capsys, *argv):

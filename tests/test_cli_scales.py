@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Profile
 from surfmet.cli import main
-from surfmet.model import Profile
 
 
 def _profile(tmp_path, name: str, n: int, dx: float, seed: int) -> str:

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 from surfmet.synth import self_affine
 
 
@@ -111,7 +111,7 @@ def test_report_psd_is_the_spectrum_commands(tmp_path):
     quickstart's plate its own fit crossed the plateau, H = -0.479) and carries its caveat."""
     from pathlib import Path
 
-    from surfmet.report_figures import spectrum_section
+    from surfmet._report_figures import spectrum_section
 
     plate = surfmet.read(Path(surfmet.__file__).parent / "data" / "paper_plate.x3p")
     _rec, (caption, png) = spectrum_section(plate, "paper_plate.x3p")

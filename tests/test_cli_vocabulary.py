@@ -116,7 +116,7 @@ def test_messages_name_options_not_the_api(small_plate, tmp_path, capsys):
     assert rc == 1 and "format=" not in err and "known formats: " in err
     rc, _, err = _run(capsys, ["info", str(junk)])
     assert rc == 1 and "format=" not in err and "--format" in err
-    prof = surfmet.write(surfmet.model.Profile(np.random.default_rng(3).normal(0, 1e-7, 1000),
+    prof = surfmet.write(surfmet._model.Profile(np.random.default_rng(3).normal(0, 1e-7, 1000),
                                                1e-6), tmp_path / "p.npz")
     rc, _, err = _run(capsys, ["roughness", str(prof), "--lc", "0.8mm", "--n-sampling", "5"])
     assert rc == 1 and "--n-sampling" in err and "--lc none" in err
@@ -230,7 +230,7 @@ ADHESION = ["adhesion", "--radius", "10um", "--e-star", "1GPa", "--work-of-adhes
 
 
 def test_adhesion_threshold_is_one_number_in_help_docs_and_code(capsys):
-    from contact.zone_resolution import MIN_ZONE_PIXELS
+    from contact._zone_resolution import MIN_ZONE_PIXELS
 
     with pytest.raises(SystemExit):
         main(["adhesion", "--help"])

@@ -8,7 +8,7 @@ import kernel_twins as twin
 import numpy as np
 import pytest
 
-from contact.bem import kernels
+from contact.bem import _kernels as kernels
 from contact.halfspace.influence import (
     free_kernel_quadrant,
     periodic_kernel_real,

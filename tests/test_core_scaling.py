@@ -13,9 +13,9 @@ import tracemalloc
 import numpy as np
 import pytest
 
+from contact._geometry import sphere_gap
+from contact._grid import gap_grid
 from contact.bem import SolveOptions, solve_normal
-from contact.geometry import sphere_gap
-from contact.grid import gap_grid
 from contact.halfspace import influence
 from contact.halfspace.convolution import Convolution, convolution
 from contact.halfspace.influence import love_coefficients
@@ -122,7 +122,7 @@ def test_a_nested_free_solve_peaks_below_110_bytes_a_cell():
 
 
 def test_separable_bilinear_sampling_reproduces_a_bilinear_map_exactly():
-    from contact.sampling import bilinear
+    from contact._sampling import bilinear
 
     rng = np.random.default_rng(2)
     yy, xx = np.mgrid[0:40, 0:55].astype(float)

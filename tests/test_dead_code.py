@@ -46,13 +46,13 @@ TEST_ONLY = {
     "contact.halfspace.pair:HalfSpacePair.self_normal":
         "the coupled operator's self-influence, the operator protocol's third member "
         "(issue 37 item 1); tested against Convolution.self_influence",
-    "contact.roughcontact.greenwood_tripp:asperity_mean_pressure":
+    "contact.roughcontact._greenwood_tripp:asperity_mean_pressure":
         "one asperity's mean pressure under the elastic-plastic law, the check that the "
         "CEB and cap laws bound it by K·H (tests/test_greenwood_tripp.py)",
-    "contact.viscoelastic.traction3d:rolling_sphere_tractions":
+    "contact.viscoelastic._traction3d:rolling_sphere_tractions":
         "the 3D viscoelastic tractions of a rolling ball in one call (normal solve, then "
         "tractions), the engine's entry that the traction tests validate",
-    "surfmet.areal.material_ratio:inverse_material_ratio":
+    "surfmet.areal._material_ratio:inverse_material_ratio":
         "Smc(mr), an ISO 25178-2 functional parameter the module's table names",
 }
 

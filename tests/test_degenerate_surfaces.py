@@ -1,6 +1,6 @@
 """Degenerate surfaces and what each output says about them (issue 34, item 15).
 
-A plane is flat for every command (one criterion, :func:`profiles.form.is_flat`): its
+A plane is flat for every command (one criterion, :func:`profiles._form.is_flat`): its
 amplitude parameters are 0 and its shape parameters left out, where roughness printed
 Sa 1.9e-15 nm, Ssk -0.106, Sdr -3.3e-14 % and spectrum called it flat. A circle fit whose
 curvature a line explains as well is refused, as the sphere fit is; its form deviation and
@@ -19,10 +19,10 @@ import math
 import numpy as np
 import pytest
 
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.spectrum import prepare
-from surfmet.model import Profile, Topography
 from surfmet.roughness import roughness
 
 HEIGHTS = ("Sa", "Sq", "Sp", "Sv", "Sz", "Sdq", "Sdr")

@@ -6,7 +6,7 @@ computed between its cursors R = 468 µm and M = 733 µm:
     Ra 0.00525 µm, Rq 0.01143 µm, Skew 6.96, RzDin 0.04917 µm,
     Wa = Ra, Wq = Rq (so no λc filter was applied), WMaxDev 0.12861 µm.
 
-Reverse-engineered processing (see profiles.analysis): the points nearest the two cursors
+Reverse-engineered processing (see profiles._analysis): the points nearest the two cursors
 (inclusive, indices 2995..4691 of 9600), a least-squares line over that window, no filter,
 RzDin = mean peak-to-valley of 5 equal parts. The export prints x rounded to 0.1 µm while the
 scan is uniform at 1500 µm / 9600 = 0.15625 µm; fitting the line against the printed

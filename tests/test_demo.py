@@ -209,9 +209,9 @@ def test_contact_and_rolling_are_sound(demo):
 def test_the_verdict_comes_first_and_equals_the_rotor_commands(demo):
     """The paper's question is answered first, after the story's own header (issue 34
     item 16: the verdict came before it), with the numbers of `surfmet rotor`."""
-    from surfmet.demo.story import TITLE
+    from surfmet.demo._story import TITLE
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.records.rotor_verdict import verdict_record
+    from surfmet.records._rotor_verdict import verdict_record
 
     got = demo["summary"]["verdict"]
     want = json.loads(json.dumps(verdict_record(paper_verdict())))

@@ -13,7 +13,7 @@ import zlib
 import numpy as np
 import pytest
 
-from surfmet.model import Profile, Topography
+from surfmet._model import Profile, Topography
 
 
 def _png(html: str) -> tuple[int, int, np.ndarray]:

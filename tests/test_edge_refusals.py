@@ -16,8 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError, ContactMemoryError
-from contact.hertz import hertz_cylinder, hertz_sphere
+from contact._errors import ContactInputError, ContactMemoryError
+from contact._hertz import hertz_cylinder, hertz_sphere
 from surfmet.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -43,7 +43,7 @@ def _cli(args: list[str], **kw) -> subprocess.CompletedProcess:
 @pytest.mark.parametrize("option", [["--load", "1e-320N", "--radius", "20mm"],
                                     ["--load", "5N", "--radius", "1e-320m"]])
 def test_a_subnormal_load_or_radius_is_one_line(option, capsys):
-    """main: ZeroDivisionError in contact/hertz.py, exit 2."""
+    """main: ZeroDivisionError in contact/_hertz.py, exit 2."""
     assert main(["contact", *option, "--materials", "steel,aluminium"]) == 1
     assert "too small to compute with" in _line(capsys)
 
@@ -226,7 +226,7 @@ def test_a_demo_stopped_by_a_full_disk_says_so_in_its_summary(tmp_path):
 def test_a_failure_summary_that_does_not_fit_is_written_in_place(tmp_path, monkeypatch):
     """Where the disk takes no new file, the "running" summary's own bytes are
     overwritten with a short failed record."""
-    from surfmet.demo import outputs
+    from surfmet.demo import _outputs as outputs
 
     path = tmp_path / "summary.json"
     outputs.write_json(path, {"generator": outputs.GENERATOR, "status": "running"})

@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 from surfmet.cli import main
-from surfmet.records.hertz import hertz_check_record
-from surfmet.records.rolling import rolling_record
+from surfmet.records._hertz import hertz_check_record
+from surfmet.records._rolling import rolling_record
 
 DATA = Path(__file__).resolve().parents[1] / "surfmet" / "data"
 PLATE, BALL = str(DATA / "paper_plate.x3p"), str(DATA / "paper_ball.x3p")
@@ -47,7 +47,7 @@ def test_hertz_check_cli_and_api_agree(capsys, api_check):
 
 def test_report_states_the_same_grid_and_numbers(tmp_path, api_check):
     import surfmet
-    from surfmet.report_hertz import HertzOptions, run_hertz_check
+    from surfmet._report_hertz import HertzOptions, run_hertz_check
 
     rec = run_hertz_check(surfmet.read(PLATE), HertzOptions(0.01, 4.7, "steel,aluminium",
                                                               ball=BALL))
@@ -55,7 +55,7 @@ def test_report_states_the_same_grid_and_numbers(tmp_path, api_check):
     assert rec["grid"] == api["grid"] and rec["bem"] == api["bem"]
     import html as html_lib
 
-    from surfmet.report_hertz import hertz_html
+    from surfmet._report_hertz import hertz_html
 
     html = html_lib.unescape(hertz_html(rec, None, HertzOptions(0.01, 4.7, "steel,aluminium",
                                                                  ball=BALL)))

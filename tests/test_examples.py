@@ -110,7 +110,7 @@ def test_the_gallery_writes_nothing_into_the_checkout():
 def test_readme_numbers_of_the_paper_pair():
     import re
 
-    from contact.materials import contact_hardness
+    from contact._materials import contact_hardness
     from contact.roughcontact import plasticity_index
     from surfmet.mechanics.hertz_check import hertz_check
 

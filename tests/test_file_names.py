@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 pytestmark = pytest.mark.skipif(os.name == "nt", reason="POSIX file names are bytes")
 

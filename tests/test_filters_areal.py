@@ -7,7 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from surfmet.areal.filters import (
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
+from surfmet.areal._filters import (
     ALPHA,
     _correlate_axis,
     gaussian_weights,
@@ -16,8 +18,6 @@ from surfmet.areal.filters import (
     s_filter,
     transmission,
 )
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
 
 
 def _amplitude(x, z, lam):
@@ -136,7 +136,7 @@ def test_too_small_scan_and_bad_cutoffs_raise():
 def test_separable_moment_path_equals_the_general_3x3_solution():
     # Complete grids use separable weight moments; scans with holes solve the local 3 x 3
     # normal equations. On a complete grid both must give the same filter.
-    from surfmet.areal.filters import _moment_full, _moment_masked
+    from surfmet.areal._filters import _moment_full, _moment_masked
 
     rng = np.random.default_rng(4)
     z = rng.standard_normal((150, 260))

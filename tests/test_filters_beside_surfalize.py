@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from surfmet.areal.filters import l_filter
-from surfmet.model import Topography
+from surfmet._model import Topography
+from surfmet.areal._filters import l_filter
 
 ROOT = Path(__file__).resolve().parents[1]
 REF = json.loads((ROOT / "tests" / "data" / "surfalize_gaussian_l_filter.json")

@@ -7,9 +7,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.fitting import fit_sphere
-from surfmet.model import Topography
 
 
 def _cap(rng, R, half_angle_deg, n, noise, holes=0.0, concave=False):
@@ -139,9 +139,9 @@ def test_demo_and_fit_state_the_same_form_deviation(capsys):
 
     import surfmet
     from surfmet.cli import main
-    from surfmet.demo.outputs import data_file
-    from surfmet.demo.story import _ball, _Text
-    from surfmet.demo.surfaces import ball_form
+    from surfmet.demo._outputs import data_file
+    from surfmet.demo._story import _ball, _Text
+    from surfmet.demo._surfaces import ball_form
 
     path = data_file("paper_ball.x3p")
     assert main(["fit", str(path), "--shape", "sphere", "--json"]) == 0

@@ -1,6 +1,6 @@
 """Adhesive flat contact (contact.adhesion.flat, ``surfmet flat-contact --work-of-adhesion``).
 
-Truths used: the non-adhesive periodic BEM (contact.setups.flat, a separate algorithm) in
+Truths used: the non-adhesive periodic BEM (contact.setups._flat, a separate algorithm) in
 the limit of negligible adhesion; closed forms of the attractive pressure (the law's
 traction averaged over the nominal area) on gap fields written by hand, and on a flat
 gap, where the equilibrium under a tensile mean pressure s has the uniform gap
@@ -17,6 +17,8 @@ import pytest
 
 import surfmet
 from contact import SolveOptions
+from contact._errors import ContactInputError
+from contact._grid import gap_grid
 from contact.adhesion.flat import (
     adhesive_flat,
     attractive_pressure,
@@ -26,9 +28,7 @@ from contact.adhesion.flat import (
 )
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.solver import adhesive_problem, solve_adhesive, solve_adhesive_at_pressure
-from contact.errors import ContactInputError
-from contact.grid import gap_grid
-from contact.setups.flat import flat_contact
+from contact.setups._flat import flat_contact
 from surfmet.cli import main
 from surfmet.synth import self_affine
 
@@ -219,7 +219,7 @@ def test_cli_pixels_square_within_a_tenth_of_a_percent(tmp_path, capsys, stretch
     """Instruments' calibrated pitches differ by ~1e-4 (KautschukInfiniteFocus: 2.27998 and
     2.27979 um): taken as square; 1 % apart is one line."""
     topo = self_affine(32, 1e-6, hurst=0.7, slope_rms=0.05, short_cutoff=4e-6, seed=2)
-    path = surfmet.write(surfmet.model.Topography(topo.heights, 1e-6, stretch * 1e-6),
+    path = surfmet.write(surfmet._model.Topography(topo.heights, 1e-6, stretch * 1e-6),
                          tmp_path / "s.npz")
     assert main(["flat-contact", str(path), "--e-star", "1GPa", "--pressures", "1MPa",
                  "--periodic", "yes", "--work-of-adhesion", "50mJ/m2", "--range", "5nm",

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 import surfmet
-from contact.errors import ContactInputError
-from contact.grid import gap_grid
-from contact.setups.flat import flat_contact
+from contact._errors import ContactInputError
+from contact._grid import gap_grid
+from contact.setups._flat import flat_contact
 from surfmet.cli import main
 from surfmet.synth import self_affine
 
@@ -71,7 +71,7 @@ def test_sweep_is_monotonic_and_stiffness_is_the_gap_slope():
 
 
 def test_curve_stiffness_is_exact_on_the_exponential_law():
-    from contact.setups.flat import curve_stiffness
+    from contact.setups._flat import curve_stiffness
 
     rng = np.random.default_rng(20)
     u0, p0 = rng.uniform(0.1e-6, 2e-6), rng.uniform(1e5, 1e7)
@@ -151,7 +151,7 @@ def test_cli_bad_input_exits_1(argv, scan, capsys):
 ])
 def test_a_flat_scan_is_one_clear_line(argv, level, tmp_path, capsys):
     # constant heights (issue 16 item 9: was exit 2, "ValueError: zero-size array")
-    flat = surfmet.model.Topography(np.full((64, 48), level), 1e-6, 1e-6)
+    flat = surfmet._model.Topography(np.full((64, 48), level), 1e-6, 1e-6)
     path = str(surfmet.write(flat, tmp_path / "flat.npz"))
     assert main([a.format(scan=path) for a in argv]) == 1
     err = capsys.readouterr().err.strip().splitlines()
@@ -174,7 +174,7 @@ def test_curve_stiffness_never_reports_a_negative_stiffness():
     """Issue 25 item 4: three pressures a decade apart on a non-exponential curve bend the
     quadratic the wrong way at the first point (K < 0 on main); the secant through the
     neighbours is given there, and the point is named."""
-    from contact.setups.flat import bent_points, curve_stiffness
+    from contact.setups._flat import bent_points, curve_stiffness
 
     p = np.array([1e6, 1e7, 1e8])
     u = np.array([5.781e-6, 1.507e-6, 0.2468e-6])  # the paper ball's BEM gaps

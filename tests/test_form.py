@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from surfmet.areal.form import parse_method, remove_form
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
+from surfmet.areal._form import parse_method, remove_form
 
 
 def _xy(ny, nx, dx, dy):

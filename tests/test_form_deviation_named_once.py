@@ -19,8 +19,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 R, N, DX, C = 10e-3, 101, 10e-6, 2.0
 TRUTH = 2 * C * (50 * DX) ** 2  # 1 µm
@@ -51,7 +51,7 @@ def test_fit_json_and_text_name_the_form_deviation(cap, capsys):
 
 
 def test_demo_reports_the_same_form_deviation(cap, capsys):
-    from surfmet.demo.surfaces import ball_form
+    from surfmet.demo._surfaces import ball_form
 
     topo, path = cap
     rec, _ = ball_form(topo)

@@ -16,15 +16,15 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from contact import composite_modulus, hertz_sphere, material
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.halfspace.axisymmetric import ring_influence
-from contact.roughcontact.greenwood_tripp import (
+from contact.roughcontact._greenwood_tripp import (
     Asperities,
     asperity_mean_pressure,
     greenwood_tripp,
 )
+from surfmet._model import Topography
 from surfmet.mechanics.hertz_check import hertz_check
-from surfmet.model import Topography
 
 E, R, N = 70e9, 0.01, 2.0
 

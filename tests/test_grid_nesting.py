@@ -1,16 +1,16 @@
-"""The one grid (contact.grid), the one nesting stencil (contact.nesting) and the one
-sample_roughness (contact.sampling), checked against closed forms."""
+"""The one grid (contact._grid), the one nesting stencil (contact._nesting) and the one
+sample_roughness (contact._sampling), checked against closed forms."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
-from contact.geometry import Domain, sphere_gap
-from contact.grid import Grid, centred_grid, cylinder_grid, scan_grid, sphere_grid
-from contact.nesting import can_nest, coarse_grid, coarsen, prolong
-from contact.sampling import sample_roughness
+from contact._errors import ContactInputError
+from contact._geometry import Domain, sphere_gap
+from contact._grid import Grid, centred_grid, cylinder_grid, scan_grid, sphere_grid
+from contact._nesting import can_nest, coarse_grid, coarsen, prolong
+from contact._sampling import sample_roughness
 
 
 def _linear(x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -122,8 +122,8 @@ def test_sample_roughness_averages_on_a_coarser_grid_fills_holes_and_checks_cove
 
 
 def test_solve_normal_takes_a_grid_and_loose_arrays_through_gap_grid() -> None:
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     g = centred_grid(32, 4e-6, periodic=False)
     g = g.with_gap((g.x[None, :] ** 2 + g.y[:, None] ** 2) / 0.02)

@@ -12,7 +12,7 @@ import math
 
 import pytest
 
-from contact.materials import composite_modulus, material
+from contact._materials import composite_modulus, material
 from surfmet.cli import main
 from surfmet.mechanics.ball_contact import MIN_CELLS_PER_RADIUS
 

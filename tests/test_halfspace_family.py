@@ -25,12 +25,12 @@ import math
 import numpy as np
 import pytest
 
+from contact._materials import material
 from contact.halfspace.cerruti import element_integrals, influence_blocks, line_integrals
 from contact.halfspace.constants import pair_constants, pair_constants_from
 from contact.halfspace.convolution import Convolution
 from contact.halfspace.influence import love_coefficients
 from contact.halfspace.pair import HalfSpacePair
-from contact.materials import material
 
 DX, DY = 1.0e-5, 1.3e-5
 STEEL_AL = pair_constants(material("steel"), material("aluminium"))  # K != 0

@@ -1,5 +1,5 @@
-"""The default hardness is decided in one place: :func:`contact.material_pair.resolve_pair`
-(with :meth:`contact.material_pair.MaterialPair.with_hardness` for the user's value): the
+"""The default hardness is decided in one place: :func:`contact._material_pair.resolve_pair`
+(with :meth:`contact._material_pair.MaterialPair.with_hardness` for the user's value): the
 user's hardness, else the softer body's table value (issue 37, item 5). No facade or
 engine re-decides it with its own ``pair.hardness if hardness is None else hardness``.
 """
@@ -10,7 +10,7 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-HOME = "contact/material_pair.py"
+HOME = "contact/_material_pair.py"
 PAIRS = {"pair", "mats", "materials", "pair_"}  # the names a resolved pair goes by
 
 

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from contact.errors import ContactInputError
-from contact.hertz import hertz_cylinder, hertz_sphere, hertz_sphere_from_approach
-from contact.materials import composite_modulus, material
+from contact._errors import ContactInputError
+from contact._hertz import hertz_cylinder, hertz_sphere, hertz_sphere_from_approach
+from contact._materials import composite_modulus, material
 
 
 @pytest.fixture

@@ -19,9 +19,9 @@ import surfmet
 from contact import composite_modulus, hertz_sphere, material
 from contact.adhesion.stickiness import pastewka_robbins, rms_gradient_curvature
 from contact.roughcontact import summit_parameters
+from surfmet._model import Topography
 from surfmet.cli import main
 from surfmet.mechanics.hertz_adhesion import assess_adhesion
-from surfmet.model import Topography
 from surfmet.psd import areal_psd
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))

@@ -12,14 +12,14 @@ from contact_synth import rough_surface
 from plastic_reference import fixed_point_plastic
 
 from contact import DomainSpec, composite_modulus, hertz_sphere, material
-from contact.errors import ContactError, ContactInputError
-from contact.fields import effective_radius, radial_average
-from contact.hertzcheck import ALPHA_LIMIT, check_sphere
-from contact.roughstats import combined_rms, gjm_alpha
+from contact._errors import ContactError, ContactInputError
+from contact._fields import effective_radius, radial_average
+from contact._hertzcheck import ALPHA_LIMIT, check_sphere
+from contact._roughstats import combined_rms, gjm_alpha
 from contact.setups import CompositeRoughness
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.mechanics.hertz_check import hertz_check
-from surfmet.model import Profile, Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 H_AL = material("aluminium").hardness
@@ -107,9 +107,9 @@ def test_soft_plate_yields_and_the_verdict_says_so():
 
 def test_elastic_plastic_solution_matches_the_capped_solver_and_its_conditions():
     from contact import PressureBounds
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
-    from contact.setups.ball_on_plate import SphereContact
+    from contact.setups._ball_on_plate import SphereContact
 
     hz = hertz_sphere(0.02, 10.0, E_STAR)
     H = hz.p0 / 1.2
@@ -189,7 +189,7 @@ def test_paper_rough_plate_fails_with_reasons():
 
 def test_to_json_has_exactly_the_issue_keys():
     z = rough_surface(128, 2e-6, 20e-9, seed=3, corr=10e-6)
-    from surfmet.records.hertz import hertz_check_record
+    from surfmet.records._hertz import hertz_check_record
 
     rec = hertz_check_record(hertz_check(Topography(z, 2e-6, 2e-6), radius=5e-3, load=1.0,
                                          materials="steel,aluminium", grid=64))

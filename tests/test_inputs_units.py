@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 from surfmet.units import split_quantity
 
 SMOOTH = ["contact", "--load", "10N", "--materials", "steel,aluminium", "--grid", "32"]
@@ -94,7 +94,7 @@ def test_inputs_record_reads_units_from_the_parsers():
     from surfmet.cli._common import force, positive_length
     from surfmet.cli._inputs import command_inputs
     from surfmet.cli._values import loads
-    from surfmet.records.inputs import inputs_lines
+    from surfmet.records._inputs import inputs_lines
 
     p = argparse.ArgumentParser()
     p.add_argument("--radius", type=positive_length)

@@ -8,7 +8,7 @@ import pytest
 from _peer_metrics import st_rms_gradient, st_rq
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import detect_format, read_bytes
 
 

@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io import read_bytes, read_container
-from surfmet.model import Profile, Topography
 
 
 @pytest.mark.realdata

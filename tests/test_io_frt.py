@@ -10,7 +10,7 @@ import pytest
 from _peer_metrics import detrend_curvature, st_rq, st_sq
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import read_bytes
 
 # SurfaceTopography's definitions (valid points only) are in _peer_metrics.

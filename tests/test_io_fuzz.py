@@ -9,7 +9,7 @@ The seeds are fixed, so every run tests the same cases.
 
 For every case the outcome must be either a valid scan (the registry has already checked
 that it is a Topography or Profile with finite-or-NaN heights) or a
-:class:`~surfmet.errors.SurfmetFormatError` whose cause is not a ``MemoryError``. Any other
+:class:`~surfmet._errors.SurfmetFormatError` whose cause is not a ``MemoryError``. Any other
 exception type, a ``MemoryError`` behind the format error (a reader trying to allocate
 what a header claims) or a case slower than a few seconds is a failure, reported with the
 file, the mutation and the exception so it can be routed to the reader's owner.
@@ -41,9 +41,9 @@ import numpy as np
 import pytest
 from _refusal import refused_cheaply
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io import read_bytes
-from surfmet.model import Profile, Topography
 
 REALDATA = Path(os.environ.get("SURFMET_SHARED", Path(__file__).resolve().parents[2] / "shared")) \
     / "realdata"

@@ -16,8 +16,8 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
+from surfmet._model import Topography
 from surfmet.io import detect_format, read_bytes
-from surfmet.model import Topography
 
 MAGIC = {1: b"\x88\x1b\x03\x6f", 2: b"\x88\x1b\x03\x70", 3: b"\x88\x1b\x03\x71"}
 

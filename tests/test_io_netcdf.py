@@ -11,7 +11,7 @@ import pytest
 from scipy.io import netcdf_file
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import detect_format, read_bytes
 
 

@@ -15,8 +15,8 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io import detect_format, read_bytes
-from surfmet.model import Profile, Topography
 
 
 def nms_file(raw: np.ndarray, *, f_low: float = 1.0, f_high: float = 3.0, n_low: int = 0,

@@ -15,8 +15,8 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
+from surfmet._model import Topography
 from surfmet.io import detect_format, read_bytes
-from surfmet.model import Topography
 
 
 def opd_file(blocks: list[tuple[str, int, bytes]], *, extra_entries: int = 2) -> bytes:

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import read_bytes
 
 # (index, x in m, height in m) from opdx-3.txt, the instrument's own text export

@@ -16,8 +16,8 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io import detect_format, read_bytes
-from surfmet.model import Profile, Topography
 
 
 def plu_file(z_um: np.ndarray, *, mppx: float = 1.5, mppy: float = 2.0, mtype: int = 3,

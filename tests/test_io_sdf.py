@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import read_bytes
 
 # The 7 x 4 example of ISO 25178-71 (values in µm, Zscale 1e-6), row by row.

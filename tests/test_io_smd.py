@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import detect_format, read_bytes
 
 ETX = "\x03"

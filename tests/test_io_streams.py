@@ -16,9 +16,9 @@ from conftest import REALDATA
 from test_io_smd import profile_file
 
 import surfmet
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.io import encode, read_container
-from surfmet.model import Profile, Topography
 
 pytestmark = pytest.mark.realdata
 

@@ -17,8 +17,8 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io import detect_format, read_bytes
-from surfmet.model import Profile, Topography
 
 
 def sur_object(points: np.ndarray, *, obj_type: int = 2, bits: int = 32, zmin: int | None = None,

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io import detect_format, read_bytes
 
 

@@ -19,9 +19,9 @@ from _refusal import refused_cheaply
 
 import surfmet
 from surfmet import SurfmetFormatError
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.io import detect_format, encode, read_bytes
-from surfmet.model import Profile, Topography
 
 NS = "http://www.opengps.eu/2008/ISO5436_2"
 OWN_REAL_FILES = ("x3p-2.x3p", "KautschukInfiniteFocus.x3p", "sur-3.sur", "plu-1.plu",

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
 from surfmet.io import detect_format, read_bytes
 
 

@@ -1,6 +1,6 @@
-"""The threaded passes of :mod:`contact.bem.kernels` on grids of several chunks.
+"""The threaded passes of :mod:`contact.bem._kernels` on grids of several chunks.
 
-A pass over more than one chunk (:mod:`contact.bem.chunks`) must give its numpy twin's
+A pass over more than one chunk (:mod:`contact.bem._chunks`) must give its numpy twin's
 answer, its corrections in cell order, and the same bits on one thread as on two.
 """
 
@@ -13,8 +13,8 @@ import numba as nb
 import numpy as np
 import pytest
 
-from contact.bem import kernels
-from contact.bem.chunks import kernel_threads, n_chunks
+from contact.bem import _kernels as kernels
+from contact.bem._chunks import kernel_threads, n_chunks
 
 NY, NX = 96, 1100  # 105600 cells: three chunks
 

@@ -18,6 +18,8 @@ import numpy as np
 import pytest
 from scipy import integrate
 
+from contact._errors import ContactInputError
+from contact._geometry import DomainSpec
 from contact.adhesion import adhesive_ball
 from contact.adhesion.laws import (
     LAWS,
@@ -28,12 +30,10 @@ from contact.adhesion.laws import (
 )
 from contact.adhesion.line import adhesive_line, rigid_line_pull_off
 from contact.adhesion.solver import adhesive_problem, law_code, solve_adhesive
-from contact.errors import ContactInputError
-from contact.geometry import DomainSpec
+from surfmet._errors import SurfmetInputError
 from surfmet.cli import build_parser, main
-from surfmet.errors import SurfmetInputError
 from surfmet.mechanics.adhesion import adhesion, default_grid, interaction_name
-from surfmet.records.adhesion import adhesion_record
+from surfmet.records._adhesion import adhesion_record
 
 ROOT = Path(__file__).resolve().parents[1]
 R, E_STAR = 1e-5, 1e9

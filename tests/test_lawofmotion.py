@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._analysis import analyse_test
 from rotor._family import MODELS
 from rotor._fitting import fit_all_models, fit_model, loo_exact

@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from contact.materials import material
-from contact.setups.line import solve_cylinder
+from contact._materials import material
+from contact.setups._line import solve_cylinder
 from contact.tangential import Grid, pair_constants, steady_rolling
 
 R, LOAD = 0.02, 1e5  # 20 mm roller, 100 N/mm

@@ -6,9 +6,9 @@ import math
 
 import pytest
 
-from contact.errors import ContactInputError
-from contact.material_pair import MaterialPair, resolve_pair
-from contact.materials import material
+from contact._errors import ContactInputError
+from contact._material_pair import MaterialPair, resolve_pair
+from contact._materials import material
 
 # steel E = 210 GPa, nu = 0.30; aluminium E = 70 GPa, nu = 0.33 (the table's values)
 C_STEEL = (1 - 0.30**2) / 210e9   # 0.91 / 210 GPa   = 4.3333e-12 1/Pa
@@ -77,7 +77,7 @@ def test_bad_pairs_are_refused(kwargs):
 
 
 def test_the_surfmet_spelling_resolves_through_the_same_pair():
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.material_spec import material_pair, parse_materials
 
     pair = material_pair("steel,al:H=0.9GPa")

@@ -7,8 +7,8 @@ import math
 
 import pytest
 
-from contact.errors import ContactInputError
-from contact.materials import (
+from contact._errors import ContactInputError
+from contact._materials import (
     MATERIALS,
     Material,
     compliance,
@@ -103,7 +103,7 @@ def test_a_material_with_all_its_constants_needs_no_table_entry():
     ("steel,aluminium:H=1.1", "has no unit"),
 ])
 def test_a_modulus_without_its_unit_is_refused(spec, needle):
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.material_spec import parse_materials
 
     with pytest.raises(SurfmetInputError, match=needle):

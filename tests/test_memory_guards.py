@@ -8,8 +8,8 @@ import pytest
 from test_io_fuzz import address_space_cap
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 
 def test_a_device_is_refused_before_reading(capsys):
@@ -23,7 +23,7 @@ def test_a_device_is_refused_before_reading(capsys):
 
 def test_a_file_larger_than_the_memory_left_is_refused_before_reading(tmp_path,
                                                                         monkeypatch):
-    import contact.sysmem as memory
+    import contact._sysmem as memory
 
     path = tmp_path / "scan.npy"
     np.save(path, np.zeros((512, 512)))  # 2 MB
@@ -37,7 +37,7 @@ def test_a_file_larger_than_the_memory_left_is_refused_before_reading(tmp_path,
 def test_the_address_space_limit_counts_as_available_memory():
     """A valid file under ``ulimit -v`` was called "corrupted"; the limit is now part of
     the memory the estimate plans with."""
-    from contact.sysmem import available_bytes
+    from contact._sysmem import available_bytes
 
     free = available_bytes()
     with address_space_cap(64 * 2**20):
@@ -48,7 +48,7 @@ def test_the_address_space_limit_counts_as_available_memory():
 
 def test_a_valid_file_that_does_not_fit_is_not_called_corrupted(tmp_path, monkeypatch):
     """When memory runs out while decoding, the message says so, not "corrupted"."""
-    import contact.sysmem as memory
+    import contact._sysmem as memory
     import surfmet.io.npy as npy
 
     path = tmp_path / "scan.npy"
@@ -68,7 +68,7 @@ def test_spatial_parameters_do_not_grow_with_pixel_anisotropy():
     """A 10 x 10 map of 1 mm x 0.1 µm pixels took 7.5 s and 1.3 GB (rays sampled at half
     the smaller pixel). Under a 300 MB address-space cap it now runs, and Sal along the
     fine axis is the analytic decay length of a cosine's ACF."""
-    from surfmet.areal.spatial import spatial_parameters
+    from surfmet.areal._spatial import spatial_parameters
 
     ny, nx, dy, dx, lam = 200, 10, 0.1e-6, 1e-3, 4e-6
     y = np.arange(ny) * dy

@@ -13,12 +13,12 @@ import numpy as np
 import pytest
 from contact_synth import rough_surface
 
-import contact.bem.memory as memory
+import contact.bem._memory as memory
 import surfmet
 from contact import ContactMemoryError, composite_modulus, hertz_sphere, material
-from contact.geometry import fast_even
+from contact._geometry import fast_even
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R, W = 5e-3, 1.0
@@ -160,7 +160,7 @@ def test_estimate_is_within_a_factor_of_the_measured_peak_rss():
                          cwd=ROOT, check=True, timeout=300)
     got = json.loads(out.stdout.strip().splitlines()[-1])
     est = memory.estimate_peak_bytes(got["n"])
-    # stated in contact.bem.memory: the estimate is within 1.5x of the measured peak
+    # stated in contact.bem._memory: the estimate is within 1.5x of the measured peak
     assert est / 1.5 <= got["added"] <= 1.5 * est, (got, est)
 
 

@@ -19,7 +19,7 @@ def test_top_level_help_states_the_pressure_rule(capsys):
 
 def test_spike_caveat_names_the_option_not_the_api():
     """The spike warning a command prints names --spikes, not roughness(..., spikes=True)."""
-    from surfmet.spikes import spike_diagnosis
+    from surfmet._spikes import spike_diagnosis
 
     z = np.random.default_rng(0).normal(size=(40, 40))
     z[5, 5] = 200.0
@@ -31,8 +31,8 @@ def test_spike_caveat_names_the_option_not_the_api():
 
 def test_spike_caveat_of_a_result_names_the_option_not_the_api():
     """The restated diagnosis a roughness result carries says --spikes too."""
-    from surfmet.roughness_result import consistent_diagnosis
-    from surfmet.spikes import spike_diagnosis
+    from surfmet._roughness_result import consistent_diagnosis
+    from surfmet._spikes import spike_diagnosis
 
     z = np.random.default_rng(0).normal(size=(40, 40))
     z[5, 5] = 200.0
@@ -167,7 +167,7 @@ def test_demo_states_the_ball_fit_as_fit_prints_it(capsys):
 
     from surfmet.data import path
 
-    story = importlib.import_module("surfmet.demo.story")  # the package's story() shadows it
+    story = importlib.import_module("surfmet.demo._story")  # the package's story() shadows it
     ball = str(path("paper_ball.x3p"))
     assert main(["fit", ball, "--shape", "sphere", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
@@ -193,7 +193,7 @@ def test_demo_states_the_hardness_as_the_hertz_check_does():
     table) as its Hertz check's bullets do, '1.05 GPa' (was '1049 MPa')."""
     import importlib
 
-    story = importlib.import_module("surfmet.demo.story")
+    story = importlib.import_module("surfmet.demo._story")
     q = lambda v, u: {"value": v, "unit": u}  # noqa: E731
     solve = {"method": "normal BEM, elastic-plastic", "iterations": 8, "residual": q(1e-7, ""),
              "residual_definition": "rms gap error", "tolerance": q(1e-6, ""),

@@ -3,9 +3,9 @@
 Two checks, neither the solver checking itself:
 
 - an AST scan of ``contact/`` counts the ``for``/``while`` loops whose body takes a
-  normal-solve iteration step (a Polonsky-Keer step of :mod:`contact.bem.steps`, the
+  normal-solve iteration step (a Polonsky-Keer step of :mod:`contact.bem._steps`, the
   adhesive gradient kernel, or a method's ``step()``): one, the driver's
-  (:func:`contact.bem.loop.drive`); the line contact, Greenwood-Tripp and the
+  (:func:`contact.bem._loop.drive`); the line contact, Greenwood-Tripp and the
   tangential and viscoelastic couplings keep their own discretisation and loops;
 - every 3D entry point (the elastic and the plastic ``solve_normal``, the adhesive
   solve at an approach and under a load) is patched into counting its calls of the
@@ -26,15 +26,17 @@ from adhesion_cases import strip_half_width, wavy_problem
 from johnson_wavy import mean_pressure
 
 from contact import hertz_sphere
-from contact.adhesion import descent
+from contact._geometry import sphere_gap
+from contact._grid import gap_grid
+from contact.adhesion import _descent as descent
 from contact.adhesion.solver import solve_adhesive, solve_adhesive_at_pressure
-from contact.bem import PressureBounds, SolveOptions, iteration, loop, solve_normal
-from contact.geometry import sphere_gap
-from contact.grid import gap_grid
+from contact.bem import PressureBounds, SolveOptions, solve_normal
+from contact.bem import _iteration as iteration
+from contact.bem import _loop as loop
 
 ROOT = Path(__file__).resolve().parents[1] / "contact"
 #: the loops that keep their own iteration (issue 37: their own discretisation)
-OWN_LOOPS = ("bem/line.py", "adhesion/line.py", "roughcontact/greenwood_tripp.py",
+OWN_LOOPS = ("bem/_line.py", "adhesion/line.py", "roughcontact/_greenwood_tripp.py",
              "tangential/", "viscoelastic/")
 #: what a normal-solve iteration step calls
 STEP_CALLS = {"conjugate_gradient_step", "projected_gradient_step", "gradient_step",
@@ -65,9 +67,9 @@ def _stepping_loops() -> list[str]:
 
 
 def test_one_loop_steps_the_3d_normal_solves():
-    """On main: three (bem/iteration.py and two copies in adhesion/solver.py)."""
+    """On main: three (bem/_iteration.py and two copies in adhesion/solver.py)."""
     found = _stepping_loops()
-    assert len(found) == 1 and found[0].startswith("bem/loop.py:"), found
+    assert len(found) == 1 and found[0].startswith("bem/_loop.py:"), found
 
 
 @pytest.fixture

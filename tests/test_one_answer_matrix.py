@@ -7,7 +7,7 @@ close. The matrix runs each file in ``../shared/realdata`` through
 * the Python API: :func:`surfmet.roughness.roughness` (what ``surfmet roughness FILE
   --json`` prints for one file) and the spectrum command's
   :func:`surfmet.mechanics.spectrum.scan_spectrum`;
-* ``surfmet roughness FILE... --json`` (the batch path, :func:`surfmet.batch.batch_map`);
+* ``surfmet roughness FILE... --json`` (the batch path, :func:`surfmet._batch.batch_map`);
 * ``surfmet report FILE... --json`` (its per-scan ``info``, ``roughness`` and
   ``spectrum`` records);
 * ``surfmet show FILE --json`` (the record of the surface it draws; the 2D view, which
@@ -140,9 +140,9 @@ def _key(function, scan, options: dict) -> tuple:
 
     import numpy as np
 
+    from surfmet._measurements import Measurement, read_measurement
+    from surfmet._model import Profile, Topography
     from surfmet.io import read
-    from surfmet.measurements import Measurement, read_measurement
-    from surfmet.model import Profile, Topography
 
     handed = "data"
     if isinstance(scan, Measurement):  # a container's measurement, as roughness reads it
@@ -232,8 +232,8 @@ def one_computation_per_input():
             return _fresh(value)
 
         mp.setattr(module, name, memoised)
+    import surfmet._report_figures as report_figures
     import surfmet.plots._style as style
-    import surfmet.report_figures as report_figures
 
     mp.setattr(report_figures, "figure_png", _NoPixels.figure_png)
     mp.setattr(style, "save", _NoPixels.save)
@@ -245,8 +245,8 @@ def one_computation_per_input():
 def api() -> dict[str, tuple[str, object]]:
     """roughness(file) per file: ("ok", record) or ("error", message)."""
     import surfmet.roughness as pipeline
-    from surfmet.errors import user_error_types
-    from surfmet.records.roughness import roughness_record
+    from surfmet._errors import user_error_types
+    from surfmet.records._roughness import roughness_record
 
     out: dict[str, tuple[str, object]] = {}
     for name in FILES:
@@ -267,8 +267,8 @@ def api_spectrum() -> dict[str, tuple[str, object]]:
     """scan_spectrum(read(file)) per areal file, as the spectrum command records it."""
     import surfmet
     import surfmet.mechanics.spectrum as spectral
-    from surfmet.errors import user_error_types
-    from surfmet.records.spectrum import spectrum_command_record
+    from surfmet._errors import user_error_types
+    from surfmet.records._spectrum import spectrum_command_record
 
     out: dict[str, tuple[str, object]] = {}
     for name in FILES:
@@ -420,7 +420,7 @@ def test_an_option_gives_one_answer_everywhere(name, argv, tmp_path):
     """The option reaches the API's keyword through roughness, report and show alike: the
     same record everywhere, and not the record without it (so it took effect)."""
     import surfmet.roughness as pipeline
-    from surfmet.records.roughness import roughness_record
+    from surfmet.records._roughness import roughness_record
 
     path = _path(name)
     kwargs = {o.lstrip("-").replace("-", "_"): v for o, v in zip(argv[::2], argv[1::2])}

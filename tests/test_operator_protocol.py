@@ -28,9 +28,9 @@ import numpy as np
 import pytest
 
 from contact import hertz_sphere, sphere_gap
+from contact._errors import ContactInputError
+from contact._grid import gap_grid
 from contact.bem import SolveOptions, solve_normal
-from contact.errors import ContactInputError
-from contact.grid import gap_grid
 from contact.halfspace.axisymmetric import RingOperator
 from contact.halfspace.convolution import Convolution, SpectralConvolution, convolution
 from contact.halfspace.operator import GEOMETRIES, KERNELS, Operator
@@ -225,9 +225,9 @@ def _elliptic_users(tree: ast.AST) -> int:
 
 
 def test_each_half_space_integral_has_one_home():
-    """The strip integral was defined twice (bem/line.py _prim, halfspace/cerruti.py f_log),
+    """The strip integral was defined twice (bem/_line.py _prim, halfspace/cerruti.py f_log),
     the periodic alias sum twice (halfspace/influence.py, cerruti.py), the ring operator in
-    roughcontact/greenwood_tripp.py: each now lives in one module of contact/halfspace."""
+    roughcontact/_greenwood_tripp.py: each now lives in one module of contact/halfspace."""
     found = {"strip": {}, "alias": {}, "rings": {}}
     for name, tree in _modules():
         for key, count in (("strip", _strip_primitives(tree)), ("alias", _alias_loops(tree)),

@@ -37,10 +37,10 @@ CASES = [
      ["flat-contact", PLATE, "--materials", "steel,aluminium", "--pressures", "1MPa",
       "--plot", "{bad}/f.png"]),
     ("surfmet.read", "-o", ["show", PLATE, "-o", "{bad}/v.png"]),
-    ("surfmet.demo.run.load_scans", "--out", ["demo", "--out", "{file}/demo"]),
-    ("surfmet.batch.batch_map", "--csv",
+    ("surfmet.demo._run.load_scans", "--out", ["demo", "--out", "{file}/demo"]),
+    ("surfmet._batch.batch_map", "--csv",
      ["roughness", PLATE, BALL, "--csv", "{bad}/t.csv"]),
-    ("surfmet.frames.read_frames_table", "--plot",
+    ("surfmet._frames.read_frames_table", "--plot",
      ["rotor", "paper2022", "--plot", "{bad}/r.png"]),
 ]
 
@@ -132,7 +132,7 @@ def test_atomic_write_replaces_whole(tmp_path):
     permissions (0666 less the umask), and leaves nothing beside it."""
     import os
 
-    from surfmet.atomic import write_text
+    from surfmet._atomic import write_text
 
     out = tmp_path / "a.txt"
     out.write_text("old")

@@ -54,8 +54,8 @@ def _tiny_project(tmp_path: Path, page: str, extra_conf: str = "") -> Path:
 
 def test_docs_build_fails_on_a_broken_reference(tmp_path):
     pytest.importorskip("sphinx")
-    page = ("Title\n=====\n\n:func:`surfmet.read`, :func:`contact.rolling.sphere_sweep` "
-            "and :class:`profiles.scales.Scan` name real objects.\n")
+    page = ("Title\n=====\n\n:func:`surfmet.read`, :func:`contact._rolling.sphere_sweep` "
+            "and :class:`profiles._scales.Scan` name real objects.\n")
     good = _sphinx(_tiny_project(tmp_path / "good", page), tmp_path / "good" / "out")
     assert good.returncode == 0, good.stderr
     broken = page + "\n:func:`surfmet.read_everything` names nothing.\n"

@@ -12,17 +12,17 @@ import numpy as np
 import pytest
 
 from contact import Dissipation, DomainSpec
+from contact._grid import gap_grid
+from contact._hertzcheck import check_sphere
+from contact._material_pair import MaterialPair, modulus, resolve_pair
+from contact._materials import material
 from contact.adhesion.ball import adhesive_ball
 from contact.adhesion.flat import adhesive_flat
 from contact.adhesion.laws import DugdaleLaw, ExponentialLaw
 from contact.adhesion.line import adhesive_line
-from contact.grid import gap_grid
-from contact.hertzcheck import check_sphere
-from contact.material_pair import MaterialPair, modulus, resolve_pair
-from contact.materials import material
-from contact.setups.ball_on_plate import solve_sphere
-from contact.setups.flat import flat_contact
-from contact.setups.line import solve_cylinder, solve_line
+from contact.setups._ball_on_plate import solve_sphere
+from contact.setups._flat import flat_contact
+from contact.setups._line import solve_cylinder, solve_line
 
 CLI = Path(__file__).resolve().parents[1] / "surfmet" / "cli"
 
@@ -53,7 +53,7 @@ def test_modulus_reads_a_pair_and_passes_a_number_through(pair):
 
 def test_sphere_and_hertz_check(pair):
     rng = np.random.default_rng(3)
-    from contact.setups.composite import CompositeRoughness
+    from contact.setups._composite import CompositeRoughness
 
     rough = CompositeRoughness(rng.normal(0, 2e-7, (64, 64)), 5e-6)
     a = solve_sphere(0.02, 5.0, pair, roughness=rough, domain=DomainSpec(grid=32))
@@ -73,7 +73,7 @@ def test_sphere_and_hertz_check(pair):
 
 
 def test_rolling_sweep(pair):
-    from contact.rolling import sphere_sweep
+    from contact._rolling import sphere_sweep
 
     a = sphere_sweep(
         0.02,
@@ -136,7 +136,7 @@ def test_adhesive_ball_line_and_flat(soft):
 
 
 def test_mechanisms_take_the_pair_and_its_hardness(pair):
-    from contact.viscoelastic.mechanisms import compare_mechanisms
+    from contact.viscoelastic._mechanisms import compare_mechanisms
 
     kw = dict(loads=[3.0, 6.0], rotor_loads=(4.0, 3.0, 5.0), rolling_inertia=1e-4,
               speed=0.1, loss=(3e-4, 5e-4), grid=16)
@@ -155,7 +155,7 @@ def test_surfmet_facades_resolve_the_materials_text():
 
     plate = Path(surfmet.__file__).parent / "data" / "paper_plate.x3p"
     full, per, _, _ = prepared_scan(surfmet.read(str(plate)))
-    scan = surfmet.model.Topography(np.asarray(full.heights)[:96, :96], full.dx, full.dy)
+    scan = surfmet._model.Topography(np.asarray(full.heights)[:96, :96], full.dx, full.dy)
     pair = resolve_pair(material("steel"), material("aluminium"))
     s = spectrum(scan, periodic=per, materials="steel,aluminium")
     assert s.materials.names == ["steel", "aluminium"] and s.materials.e_star == pair.e_star
@@ -166,7 +166,7 @@ def test_surfmet_facades_resolve_the_materials_text():
     s1 = spectrum(scan, periodic=per, materials="aluminium", hardness=1e9)
     assert s1.materials.e_star == 1.0 / ((1 - alu.nu**2) / alu.E)
     assert s1.materials.hardness == 1e9
-    sub = surfmet.model.Topography(np.asarray(full.heights)[:32, :32], full.dx, full.dy)
+    sub = surfmet._model.Topography(np.asarray(full.heights)[:32, :32], full.dx, full.dy)
     a = surf_flat(sub, materials="steel,aluminium", pressures=[2e7], periodic=True)
     b = surf_flat(sub, e_star=pair.e_star, pressures=[2e7], periodic=True)
     assert a.materials.names == ["steel", "aluminium"] and b.materials is None
@@ -180,7 +180,7 @@ def test_surfmet_facades_resolve_the_materials_text():
 BUILDERS = {"resolve_pair", "composite_modulus", "contact_hardness", "displacement_shares",
             "compliance", "pair_constants", "material_pair", "parse_material",
             "parse_materials", "materials_e_star", "MaterialPair", "Material", "scan_pair"}
-MODULES = {"contact.materials", "contact.material_pair", "contact.halfspace.constants"}
+MODULES = {"contact._materials", "contact._material_pair", "contact.halfspace.constants"}
 
 
 def pair_builders(source: str) -> list[str]:
@@ -203,11 +203,11 @@ def pair_builders(source: str) -> list[str]:
 
 
 def test_the_checker_finds_a_cli_that_builds_e_star():
-    bad = ("from contact.materials import composite_modulus, material\n"
+    bad = ("from contact._materials import composite_modulus, material\n"
            "def run(args):\n"
-           "    import contact.material_pair\n"
+           "    import contact._material_pair\n"
            "    from surfmet.mechanics.material_spec import material_pair\n"
-           "    return material_pair(args.materials).e_star, contact.materials.compliance(a, b)\n")
+           "    return material_pair(args.materials).e_star, contact._materials.compliance(a, b)\n")
     assert len(pair_builders(bad)) == 5
     assert len(pair_builders("from surfmet.mechanics.material_spec import scan_pair\n")) == 1
     assert pair_builders("from surfmet.mechanics.all_scales import all_scales\n") == []

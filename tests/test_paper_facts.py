@@ -33,7 +33,7 @@ def test_table2_is_the_printed_table(table2):
 
 
 def test_demo_compares_with_the_means_of_table2(table2):
-    from surfmet.demo.settings import PAPER_TABLE2_MEAN
+    from surfmet.demo._settings import PAPER_TABLE2_MEAN
 
     for ours, theirs in SURFACES.items():
         assert PAPER_TABLE2_MEAN[ours]

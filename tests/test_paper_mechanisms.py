@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import pytest
 
-from contact.viscoelastic.loss import loss_data
+from contact.viscoelastic._loss import loss_data
 from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms
 
 
@@ -57,7 +57,7 @@ def test_every_mechanism_falls_short_of_the_verdicts_offset(report) -> None:
 
 def test_readme_table_side_figures(report) -> None:
     from contact import composite_modulus, hertz_sphere, material
-    from contact.materials import contact_hardness
+    from contact._materials import contact_hardness
 
     got = {m.name: m for m in report.comparison.mechanisms}
     lo, hi = got["viscoelastic"].sweep.lambda_ci

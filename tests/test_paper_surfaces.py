@@ -76,7 +76,7 @@ def test_plate_rows_reproduce_table2(plate, paper):
 def test_plate_carries_a_few_spikes(plate):
     # Table 1's Sq/Sa up to 4.3 says the real scans had spikes; so does the stand-in,
     # and the spike detection finds them as isolated points
-    from surfmet.spikes import remove_spikes
+    from surfmet._spikes import remove_spikes
 
     raw = roughness(plate, which=("Sa", "Sq"))
     assert raw.spike_diagnosis.suspected
@@ -98,7 +98,7 @@ def test_ball_rows_reproduce_table2_ra_rq(ball, paper):
 
 def test_ball_radius_and_a_measurable_form_deviation(ball):
     import profiles
-    from surfmet.extract import extract_profile
+    from surfmet._extract import extract_profile
     from surfmet.fitting import fit_sphere
 
     fit = fit_sphere(ball)

@@ -12,7 +12,7 @@ import pytest
 
 
 def _sweep(exponent: float):
-    from contact.viscoelastic.sweep import sweep_record
+    from contact.viscoelastic._sweep import sweep_record
 
     loads = np.geomspace(1.0, 100.0, 5)
     return sweep_record("hysteresis", loads, 1e-4 * loads**exponent, 0.02,
@@ -54,7 +54,7 @@ def test_rolling_reference_exponents_are_named_and_inside(exponent):
 def test_abbott_legend_does_not_cover_its_note():
     # a spiky surface: the height axis is clipped and the figure says so; the note was
     # drawn in the lower right, under the legend of the construction (the report's page)
-    from surfmet.model import Topography
+    from surfmet._model import Topography
     from surfmet.plots._style import close
     from surfmet.plots.areal import abbott_firestone
     from surfmet.roughness import roughness
@@ -84,7 +84,7 @@ def test_height_map_fills_its_panel(shape):
     # its panel blank: the figure takes the map's shape, so the map spans most of the
     # figure along its long side and a good share along the other (labels and the colour
     # bar take the rest)
-    from surfmet.model import Topography
+    from surfmet._model import Topography
     from surfmet.plots._style import close
     from surfmet.plots.areal import height_map
 

@@ -8,8 +8,8 @@ import io
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.plots._style import close
 
 
@@ -201,11 +201,11 @@ def _discs(rng, shape, k):
 
 
 def _result(p, periodic=False, dx=2e-6):
-    from contact.bem.result import build_result
+    from contact.bem._result import build_result
 
     ny, nx = p.shape
     z = np.zeros_like(p)
-    from contact.grid import Grid
+    from contact._grid import Grid
 
     grid = Grid(x=(np.arange(nx) - nx / 2) * dx, y=(np.arange(ny) - ny / 2) * dx,
                 periodic=periodic, pitch=(dx, dx))
@@ -279,7 +279,7 @@ def test_pressure_map_labels_leave_small_clusters_visible():
 
 
 def test_cluster_labels_wrap_in_periodic_domains():
-    from contact.bem.result import cluster_labels, count_clusters
+    from contact.bem._result import cluster_labels, count_clusters
 
     c = np.zeros((20, 20), bool)
     c[5:8, 0:3] = True
@@ -295,8 +295,8 @@ def test_cluster_labels_wrap_in_periodic_domains():
 
 
 def test_radial_pressure_hertz_units():
-    from contact.hertz import hertz_sphere
-    from contact.materials import composite_modulus, material
+    from contact._hertz import hertz_sphere
+    from contact._materials import composite_modulus, material
     from surfmet.plots.contact import radial_pressure
 
     h = hertz_sphere(0.01, 4.7, composite_modulus(material("steel"), material("aluminium")))

@@ -7,7 +7,7 @@ import pytest
 from scipy.ndimage import gaussian_filter1d
 
 from profiles import ProfileError, iso4288_cutoff
-from profiles.cutoff import LS_FOR_LC, table_cutoff
+from profiles._cutoff import LS_FOR_LC, table_cutoff
 
 
 def _random_profile(ra: float, length: float, dx: float, seed: int, corr: float = 1.5e-6):

@@ -16,8 +16,8 @@ import pytest
 from scipy.io import loadmat
 
 from profiles import ProfileError
-from profiles.features import feature_characterization, feature_parameters, segment
-from profiles.material_ratio import material_ratio_height
+from profiles._features import feature_characterization, feature_parameters, segment
+from profiles._material_ratio import material_ratio_height
 
 DATA = Path(__file__).parent / "data" / "mts"
 DX = 0.5e-6  # the reference case studies' step
@@ -293,8 +293,8 @@ def test_open_closed_rules_on_a_sine_with_two_depths():
 
 def test_profile_output_states_rcm_and_rz_of_the_reference():
     # the reference profiles are R-profiles already: evaluate them as they are
-    from surfmet.model import Profile
-    from surfmet.records.roughness import roughness_record
+    from surfmet._model import Profile
+    from surfmet.records._roughness import roughness_record
     from surfmet.roughness import roughness
 
     for name in RCM:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from profiles import ALPHA, ProfileError, gaussian_mean_line, gaussian_transmission, split_profile
-from profiles.filters import END_TREATMENTS
+from profiles._filters import END_TREATMENTS
 
 
 def _amplitude(signal, x, lam):
@@ -157,7 +157,7 @@ def test_filter_errors():
 
 
 def test_cutoff_shorter_than_three_steps_is_refused():
-    # the one rule of profiles.resolution (ISO 25178-3 Table 1): 3 sampling distances
+    # the one rule of profiles._resolution (ISO 25178-3 Table 1): 3 sampling distances
     with pytest.raises(ProfileError, match=r"spans 1\.25 sampling distances"):
         gaussian_mean_line(np.zeros(100), 2e-6, 2.5e-6)
 

@@ -14,7 +14,7 @@ import pytest
 from mitutoyo_printout import read_printout
 
 from profiles import ProfileError, profile_parameters
-from profiles.elements import profile_elements
+from profiles._elements import profile_elements
 
 # printout symbol -> ours
 SAME_DIGIT = {"Ra": "Ra", "Rq": "Rq", "Rz": "Rz", "Rp": "Rp", "Rv": "Rv", "Rsk": "Rsk",

@@ -64,7 +64,7 @@ def test_report_progress_per_scan(tmp_path, capsys, quiet):
 def test_a_long_stage_adds_a_line_now_and_then(monkeypatch, capsys):
     """Off a terminal a stage longer than _Lines.EVERY seconds says how far it is, so a
     long run's log is not silent until its end."""
-    from surfmet import batch
+    from surfmet import _batch as batch
 
     clock = iter(range(0, 1000, 40))  # each call 40 s later
     monkeypatch.setattr("time.monotonic", lambda: float(next(clock)))

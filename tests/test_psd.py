@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.psd import areal_psd, fit_hurst, profile_psd, psd
 
 SEEDS = [0, 1, 2, 3]
@@ -169,7 +169,7 @@ def test_errors(call, needle):
 def test_profile_moments_of_a_single_wave_are_exact():
     """h = A cos(q0 x + φ) on a periodic grid: <|∇h|²> = A²q0²/2, <(∇²h)²> = A²q0⁴/2, so
     m0 = A²/2, m2 = A²q0²/4, m4 = 3A²q0⁴/16, whatever the random A, φ and wavelength."""
-    from surfmet.model import Topography
+    from surfmet._model import Topography
     from surfmet.psd import areal_psd
 
     rng = np.random.default_rng(175)

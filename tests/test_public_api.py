@@ -75,7 +75,7 @@ print(json.dumps({"unknown": unknown, "before": before, "areal": areal, "hertz":
 def test_import_surfmet_stays_light_and_rooms_load_on_first_use():
     result = _run(_LIGHT)
     assert result["before"] == []
-    assert result["areal"] == "surfmet.areal.parameters"
+    assert result["areal"] == "surfmet.areal._parameters"
     assert result["hertz"] == "hertz_check"
     assert result["room"] == "module"
     assert result["dir"] is True

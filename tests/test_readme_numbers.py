@@ -77,7 +77,7 @@ def test_share_of_the_real_contact_area_at_the_hardness(checks):
 
 def test_verdict_tolerance_and_the_scans_pixel():
     import surfmet
-    from contact.hertzcheck import PROFILE_TOLERANCE, RADIUS_TOLERANCE
+    from contact._hertzcheck import PROFILE_TOLERANCE, RADIUS_TOLERANCE
     from surfmet.data import path
 
     tol = float(quoted(r"The `verdict` names the simplest model within (\d+) %").group(1))
@@ -88,7 +88,7 @@ def test_verdict_tolerance_and_the_scans_pixel():
 
 
 def test_memory_estimate_per_cell():
-    from contact.bem.memory import BYTES_PER_CELL
+    from contact.bem._memory import BYTES_PER_CELL
 
     m = quoted(r"about (\d+) bytes per cell, `contact\.bem\.memory`")
     assert BYTES_PER_CELL == int(m.group(1))
@@ -114,7 +114,7 @@ def test_quickstart_figures():
     import inspect
 
     import surfmet
-    from contact.convergence import CONVERGED
+    from contact._convergence import CONVERGED
     from surfmet.data import path
     from surfmet.mechanics.resolution_study import contact_study
     from surfmet.mechanics.rolling_resistance import rolling_resistance
@@ -144,7 +144,7 @@ def test_rotor_paragraph_quotes_the_verdict_with_its_design_p_and_arm_bound():
     radius against their closed forms."""
     import math
 
-    from contact.materials import composite_modulus, material
+    from contact._materials import composite_modulus, material
     from surfmet.mechanics.rotor_verdict import paper_verdict
 
     v = paper_verdict()

@@ -6,7 +6,7 @@ import pytest
 import surfmet
 from surfmet import SurfmetFormatError, Topography
 from surfmet.io import detect_format, encode, formats, read_bytes
-from surfmet.io.registry import register_reader
+from surfmet.io._registry import register_reader
 
 # Every format issue 2 names must have a registered reader.
 REQUIRED_READERS = {

@@ -35,8 +35,8 @@ def test_round_ticks_are_round_and_inside(lo, hi):
 
 def test_the_3d_colour_bar_has_round_labels(monkeypatch):
     pv = pytest.importorskip("pyvista")
-    from surfmet.model import Topography
-    from surfmet.render import render_3d
+    from surfmet._model import Topography
+    from surfmet._render import render_3d
 
     seen = {}
     shot = pv.Plotter.screenshot

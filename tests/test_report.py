@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
+from surfmet._report_hertz import HertzOptions, hertz_check_available
 from surfmet.cli import main
-from surfmet.model import Topography
 from surfmet.report import render_html, scan_section
-from surfmet.report_hertz import HertzOptions, hertz_check_available
 from surfmet.roughness import roughness
 
 EVIL = '<script>alert("x")</script> & <img src=x onerror=alert(1)>'
@@ -142,7 +142,7 @@ def test_report_is_self_contained_and_inert(tmp_path, evil_scan):
 
 
 def test_filters_and_settings_are_stated(tmp_path, evil_scan):
-    # λs of 3 pixels: the least a sampling carries (profiles.resolution, ISO 25178-3)
+    # λs of 3 pixels: the least a sampling carries (profiles._resolution, ISO 25178-3)
     sec = scan_section(evil_scan, {"level": "poly:2", "lc": 30e-6, "ls": 3e-6},
                        include_3d=False)
     assert sec.status == "ok" and len(sec.figures) == 3
@@ -188,9 +188,9 @@ def test_real_files_and_a_broken_one(tmp_path, realdata):
 def test_hertz_section_rendering(tmp_path, evil_scan):
     # The renderer of the Hertz-check section, fed the contract of surfmet.mechanics.hertz_check's
     # to_json() (values from Hertz's formulas; the BEM curve carries a hidden dip).
-    from contact.hertz import hertz_sphere
-    from contact.materials import composite_modulus, material
-    from surfmet.report_hertz import hertz_figure, hertz_html
+    from contact._hertz import hertz_sphere
+    from contact._materials import composite_modulus, material
+    from surfmet._report_hertz import hertz_figure, hertz_html
 
     h = hertz_sphere(0.01, 4.7, composite_modulus(material("steel"), material("aluminium")))
     r = np.linspace(0, 1.4 * h.a, 50)
@@ -243,7 +243,7 @@ def test_hertz_options_on_the_command_line(tmp_path, evil_scan, capsys):
     # the verdict follows from GJM's alpha = sigma R / a0^2 (Johnson 1985 eq. 13.8), from the
     # scan's generated rms (2e-7 m) and Hertz's a0 in closed form: about 3.4, far above the
     # 0.05 below which Hertz may hold, so Hertz does not hold (was: either verdict accepted)
-    from contact.materials import composite_modulus, material
+    from contact._materials import composite_modulus, material
 
     e_star = composite_modulus(material("steel"), material("aluminium"))
     a0 = (3 * 0.05 * 2e-3 / (4 * e_star)) ** (1 / 3)
@@ -257,7 +257,7 @@ def test_hertz_table_puts_each_pair_side_by_side():
     second-moment radius), δ beside the approach, p0 beside pmax, each with the difference;
     the real-contact-area radius in a row of its own (main: it stood beside a as "-71.6 %",
     the issue's "-63.4 %", while the narrative said a* = 2.3 a0)."""
-    from surfmet.report_hertz import hertz_html
+    from surfmet._report_hertz import hertz_html
 
     # the bundled pair's numbers at 10 N (surfmet hertz-check's printout)
     check = {"hertz_holds": False, "alpha": {"value": 2.58, "unit": ""},

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import surfmet
-from surfmet.model import Topography
+from surfmet._model import Topography
 from surfmet.report import write_report
 from surfmet.roughness import roughness
 

@@ -98,7 +98,7 @@ def test_report_json_carries_the_rotor_verdict_it_prints(tmp_path, capsys, reald
     """The rotor section's numbers are in --json too, as the verdict record ``surfmet
     rotor paper2022 --json`` emits (main: the page printed them, the JSON had no rotor)."""
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.records.rotor_verdict import verdict_record
+    from surfmet.records._rotor_verdict import verdict_record
     from surfmet.units import jsonable
 
     page = tmp_path / "rotor.html"

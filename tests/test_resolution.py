@@ -1,4 +1,4 @@
-"""Resolution study (contact/resolution.py, surfmet/mechanics/resolution_study.py,
+"""Resolution study (contact/_resolution.py, surfmet/mechanics/resolution_study.py,
 --resolution-study)."""
 
 from __future__ import annotations
@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from contact import hertz_sphere
-from contact.convergence import trend
-from contact.errors import ContactInputError
-from contact.fields import PERIMETER_COEFFICIENT, block_average, corrected_area
-from contact.resolution import CRITERION_QUANTITY, sphere_study
-from contact.roughstats import rms_slope
+from contact._convergence import trend
+from contact._errors import ContactInputError
+from contact._fields import PERIMETER_COEFFICIENT, block_average, corrected_area
+from contact._resolution import CRITERION_QUANTITY, sphere_study
+from contact._roughstats import rms_slope
 from surfmet.cli import main
 
 E_STAR, RADIUS, LOAD = 70e9, 0.01, 2.0
@@ -157,7 +157,7 @@ def test_cli_rolling_study_json(capsys):
 
 
 def test_smooth_rolling_study_gives_four_thirds():
-    from contact.resolution import rolling_study
+    from contact._resolution import rolling_study
 
     study = rolling_study(RADIUS, E_STAR, [1.0, 2.0, 4.0], np.zeros((300, 300)), 1e-6)
     lam = study.trends["lambda_eff"]

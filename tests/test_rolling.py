@@ -21,9 +21,9 @@ from contact import (
     material,
     solve_sphere,
 )
-from contact.errors import ContactInputError
-from contact.exponent import fit_exponent, local_exponent
-from contact.rolling import (
+from contact._errors import ContactInputError
+from contact._exponent import fit_exponent, local_exponent
+from contact._rolling import (
     cylinder_sweep,
     hysteresis_work,
     log_loads,
@@ -31,7 +31,7 @@ from contact.rolling import (
     sphere_sweep,
 )
 from contact.setups import CompositeRoughness
-from contact.setups.line import solve_cylinder
+from contact.setups._line import solve_cylinder
 
 E_STAR = composite_modulus(material("steel"), material("aluminium"))
 R = 0.02
@@ -115,9 +115,9 @@ def test_asperities_travel_with_the_material_in_rolling(seed):
     # exactly the change of approach plus (x_j^2 - x_{j-1}^2)/2R, whatever the roughness:
     # the asperity slopes do not load the material ("rolling" kinematics). The snapshot's
     # -du/dx ("frozen") differs from it by the roughness slope.
+    from contact._geometry import sphere_gap
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.geometry import sphere_gap
-    from contact.grid import gap_grid
 
     rng = np.random.default_rng(seed)
     Rb, W = 5e-3, 1.0

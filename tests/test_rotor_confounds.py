@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.materials import material
+from contact._materials import material
 from rotor import paper_rig
 from rotor._confounds import FRICTION, KALKER_C22, LATERAL_CREEP, confound_budget, lateral_creep
 

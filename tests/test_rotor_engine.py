@@ -125,7 +125,7 @@ def test_star_import_is_clean_and_every_face_name_resolves():
 # do not build JSON quantities; the records live in surfmet/records/rotor*.py
 ROTOR_USERS = ("surfmet/cli/rotor.py", "surfmet/mechanics/_rotor_adequacy.py",
                "surfmet/mechanics/_rotor_argument.py", "surfmet/mechanics/_rotor_sensitivity.py",
-               "surfmet/mechanics/rotor_rough_bound.py", "surfmet/mechanics/rotor_verdict.py")
+               "surfmet/mechanics/_rotor_rough_bound.py", "surfmet/mechanics/rotor_verdict.py")
 
 
 def _quantities(tree: ast.AST) -> list[int]:
@@ -155,7 +155,7 @@ def test_the_rotor_command_and_facades_build_no_json_quantities():
         if lines:
             found[rel] = lines
     assert not found, found
-    records = sorted(p.name for p in (ROOT / "surfmet" / "records").glob("rotor*.py"))
+    records = sorted(p.name for p in (ROOT / "surfmet" / "records").glob("_rotor*.py"))
     assert records and all(_quantities(ast.parse((ROOT / "surfmet" / "records" / n)
                                                  .read_text(encoding="utf-8")))
                            for n in records), records

@@ -93,7 +93,7 @@ def test_lane_calibration_published_with_held_out_rates() -> None:
     rates measured on held-out tables only, and what the verdict's JSON carries."""
     from rotor._lanes import lane_calibration
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.records.rotor_verdict import verdict_record
+    from surfmet.records._rotor_verdict import verdict_record
 
     cal = lane_calibration()
     lt = cal["lane_test"]

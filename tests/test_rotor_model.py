@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._inference import infer_rolling_law
 from rotor._mechanics import (
     G_STANDARD,

@@ -33,8 +33,8 @@ def test_frame_rate_scales_every_acceleration_as_its_square(v, rows) -> None:
     eps scales as fps²) and the same code."""
     from rotor._rig import paper_rig
     from rotor._verdict import judge_table
+    from surfmet._frames import read_frames_table
     from surfmet.data import path
-    from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(path("table3_frames.tsv"))
     rig = paper_rig()
@@ -51,8 +51,8 @@ def test_swapped_labels_flip_the_offset_and_no_lambda_makes_it(v, rows) -> None:
     gives -0.200 and the same F; 0 < lambda < 1 makes at most ~0.01 rad/s² of that sign."""
     from rotor._rig import offset_for_lambda, paper_rig
     from rotor._verdict import judge_table
+    from surfmet._frames import read_frames_table
     from surfmet.data import path
-    from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(path("table3_frames.tsv"))
     swapped = {"as": ["s1", "s2", "s3"], "s": ["as1", "as2", "as3"]}
@@ -122,12 +122,12 @@ def test_label_swap_said_by_every_entry_point(v, capsys) -> None:
     report and the demo's story all say the paper's labels are swapped."""
     import html
 
+    from surfmet._report_rotor import rotor_html
     from surfmet.cli import main
-    from surfmet.demo.story import _Text, _verdict
+    from surfmet.demo._story import _Text, _verdict
     from surfmet.mechanics._rotor_sensitivity import LABEL_SWAP, label_swap_text
     from surfmet.mechanics.rotor_verdict import verdict_lines
-    from surfmet.records.rotor_verdict import verdict_record
-    from surfmet.report_rotor import rotor_html
+    from surfmet.records._rotor_verdict import verdict_record
 
     assert label_swap_text(v) == LABEL_SWAP
     assert any(LABEL_SWAP in line for line in verdict_lines(v))

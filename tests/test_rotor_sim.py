@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._forward import crossing_times
 from rotor._simulator import (
     EFFECTS,

@@ -35,7 +35,7 @@ import numpy as np
 import pytest
 from threadpoolctl import threadpool_limits
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._arm import arm_bound
 from rotor._mechanics import G_STANDARD, mass_properties
 from rotor._paper import FPS, MARK_STEP

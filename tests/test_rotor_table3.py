@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._frames import split_rows, table3, table3_tsv
 from rotor._paper import TABLE3_COLUMNS as COLUMNS
 from rotor._paper import TABLE3_PRINTED_ROWS as PRINTED_ROWS

@@ -16,7 +16,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from rotor._mechanics import mass_properties
 from rotor._rig import (
     offset_for_lambda,
@@ -248,8 +248,8 @@ def test_report_keeps_the_p_floor_and_the_lambda_interval() -> None:
     slope."""
     import html
 
+    from surfmet._report_rotor import rotor_html
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.report_rotor import rotor_html
 
     v = paper_verdict()
     page = html.unescape(rotor_html(v))

@@ -69,7 +69,7 @@ def test_paper_verdict_headline_is_robust() -> None:
     no longer the polynomial's end values (+0.400 at the release, +2.98 at the last mark,
     0-47 mm)."""
     from surfmet.mechanics.rotor_verdict import paper_verdict
-    from surfmet.records.rotor_verdict import verdict_record
+    from surfmet.records._rotor_verdict import verdict_record
 
     v = paper_verdict()
     d = v.difference

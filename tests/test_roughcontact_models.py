@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.roughcontact import (
     KAPPA_BGT,
     bush_gibson_thomas,

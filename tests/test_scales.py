@@ -1,4 +1,4 @@
-"""Scale-dependent statistics (profiles.scales, surfmet.scale_dependent) against independent
+"""Scale-dependent statistics (profiles._scales, surfmet.scale_dependent) against independent
 truths: the values SurfaceTopography's tests assert on real files, closed forms for a
 sinusoid and for a self-affine profile built from a known spectrum, and Parseval between
 surfmet's PSD and the rms height and slope."""
@@ -11,16 +11,16 @@ import numpy as np
 import pytest
 
 import surfmet
-from profiles.scales import (
+from profiles._scales import (
     derivative,
     height_difference_acf,
     make_scan,
     scale_variance,
     tip_cutoff,
 )
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.io import read_container
-from surfmet.model import Profile, Topography
 from surfmet.scale_dependent import analyze_scales, distance_grid
 
 # --- SurfaceTopography's asserted values on real files ------------------------------------
@@ -152,7 +152,7 @@ def test_self_affine_slope_at_distance_and_psd_level_and_slope():
 def test_variable_bandwidth_grows_as_the_hurst_power(hurst):
     # Self-affine: the rms height over a window of width ℓ scales as ℓ^H (Jacobs, Junge &
     # Pastewka 2017, sec. 3.3); a tilted line leaves nothing once each segment loses its line.
-    from profiles.scales import variable_bandwidth
+    from profiles._scales import variable_bandwidth
 
     z = _self_affine(4096, hurst, 1e-8, 1)[0][:4096]
     w, r = variable_bandwidth(make_scan(z, 1e-8))
@@ -236,7 +236,7 @@ def test_container_slope_and_curvature_at_five_per_decade_match_the_peer(realdat
 def test_a_map_scan_without_dy_has_square_pixels():
     # found by the type check (issue 36): Scan(z_map, dx) without dy raised TypeError in
     # bandwidth(); make_scan's rule is dy = dx, so the longest distance is the mean side
-    from profiles.scales import Scan
+    from profiles._scales import Scan
 
     s = Scan(np.zeros((4, 8)), 1e-6)
     assert s.bandwidth() == pytest.approx((1e-6, 0.5 * (8e-6 + 4e-6)))

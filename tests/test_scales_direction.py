@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 N, DX = 1024, 1e-6
 A, B = 0.2e-6, 0.5e-6  # amplitudes along x and along y

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.materials import composite_modulus, material
+from contact._materials import composite_modulus, material
 from surfmet.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -137,9 +137,9 @@ def test_a_profile_is_refused_in_words_a_user_reads(tmp_path):
     import numpy as np
     import pytest
 
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
+    from surfmet._model import Profile
     from surfmet.mechanics.scan_preparation import read_areal
-    from surfmet.model import Profile
 
     prof = Profile(np.zeros(16), dx=1e-6)
     with pytest.raises(SurfmetInputError) as err:

@@ -1,4 +1,4 @@
-"""The composite-roughness value object of the contact set-ups (contact.setups.composite)."""
+"""The composite-roughness value object of the contact set-ups (contact.setups._composite)."""
 
 from __future__ import annotations
 

@@ -4,7 +4,7 @@ A profile shorter than the Gaussian kernel crashed the filter (numpy's ``"same"`
 convolution returns the kernel's length); the automatic ISO 4288 cut-off then crashed on
 any profile under ~0.13 mm. A container's measurements are each evaluated, as ``scales``
 reads them. A nesting index or sampling length under three sampling distances
-(:mod:`profiles.resolution`, ISO 25178-3 Table 1) is refused in one line instead of
+(:mod:`profiles._resolution`, ISO 25178-3 Table 1) is refused in one line instead of
 giving Sa = Sq = Sz = 0 or Rz = 0 beside Rt > 0.
 """
 
@@ -18,10 +18,10 @@ import pytest
 
 import surfmet
 from profiles import ProfileError
-from profiles.filters import gaussian_mean_line
+from profiles._filters import gaussian_mean_line
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
 from surfmet.roughness import roughness
 
 

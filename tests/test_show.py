@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import surfmet
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
+from surfmet._render import auto_exaggeration, decimate, render_3d
 from surfmet.cli import main
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
-from surfmet.render import auto_exaggeration, decimate, render_3d
 
 
 def _surface_region(img: np.ndarray) -> np.ndarray:

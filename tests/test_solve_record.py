@@ -1,4 +1,4 @@
-"""The one solve record (contact.record) of every solver family, and the one treatment of
+"""The one solve record (contact._record) of every solver family, and the one treatment of
 contact at the domain edge: the record is present and tells the truth (a solve cut short
 says so; a contact cut by the domain says so, in the record, the warning, the text and
 the JSON of a command)."""
@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 
 from contact import DomainSpec
-from contact.errors import EdgeContactError, EdgeContactWarning
-from contact.geometry import sphere_gap
-from contact.hertz import hertz_sphere
-from contact.record import SolveRecord, combine, edge_contact
-from surfmet.records.solve import solve_from_record, solve_record
+from contact._errors import EdgeContactError, EdgeContactWarning
+from contact._geometry import sphere_gap
+from contact._hertz import hertz_sphere
+from contact._record import SolveRecord, combine, edge_contact
+from surfmet.records._solve import solve_from_record, solve_record
 
 E_STAR, R, W = 1.1e11, 0.01, 5.0
 
@@ -59,8 +59,8 @@ def test_record_text_and_json_say_the_same():
 
 def test_bem_record_says_not_converged_after_two_iterations():
     from contact import SolveOptions
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 64
@@ -75,8 +75,8 @@ def test_bem_record_says_not_converged_after_two_iterations():
 
 
 def test_bem_hertz_on_a_too_small_domain_says_edge_contact():
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     hz = hertz_sphere(R, W, E_STAR)
     n = 32
@@ -91,8 +91,8 @@ def test_bem_hertz_on_a_too_small_domain_says_edge_contact():
 
 
 def test_line_record():
-    from contact.hertz import hertz_cylinder
-    from contact.setups.line import solve_cylinder
+    from contact._hertz import hertz_cylinder
+    from contact.setups._line import solve_cylinder
 
     res = solve_cylinder(0.01, 1e5, E_STAR, n=128)
     rec = res.solve
@@ -120,8 +120,8 @@ def test_tangential_record_and_leading_edge_error():
 
 
 def test_viscoelastic_record_replaces_the_untyped_dict():
-    from contact.viscoelastic.rheology import StandardLinearSolid, pair_creep
-    from contact.viscoelastic.surface import rolling_sphere
+    from contact.viscoelastic._rheology import StandardLinearSolid, pair_creep
+    from contact.viscoelastic._surface import rolling_sphere
 
     nu, eg, er = 0.5, 30e6, 10e6
     a_r = (3 * 1.0 * 0.01 * ((1 - nu**2) / er) / 4) ** (1 / 3)
@@ -154,8 +154,8 @@ def test_adhesive_record():
 
 
 def test_periodic_and_free_bem_records_say_whether_edge_contact_applies():
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     x = (np.arange(32) - 16) * 1e-5
     h = (x[:, None] ** 2 + x[None, :] ** 2) / (2 * R)
@@ -173,8 +173,8 @@ def test_bem_counters_are_part_of_the_one_record():
     """The BEM's FFT and level counters live in its SolveRecord (not a second result
     type), cover every level of a nested solve and stay out of the JSON."""
     import contact.bem as bem
+    from contact._grid import gap_grid
     from contact.bem import solve_normal
-    from contact.grid import gap_grid
 
     x = (np.arange(256) - 128) * 2.5e-6
     res = solve_normal(gap_grid((x[:, None] ** 2 + x[None, :] ** 2) / (2 * R), 2.5e-6),

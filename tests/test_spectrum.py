@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.mechanics.spectrum import is_periodic, spectrum
-from surfmet.model import Topography
 from surfmet.synth import self_affine
 
 PX = 1e-6

@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from surfmet._model import Topography
 from surfmet.mechanics.spectrum import spectrum
-from surfmet.model import Topography
 from surfmet.synth import self_affine
 
 N, PX = 256, 1e-6

@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 from areal_synth import gaussian_surface, hide_effects
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
+from surfmet._spikes import GAUSSIAN_SQ_OVER_SA, remove_spikes, spike_diagnosis
 from surfmet.roughness import roughness
-from surfmet.spikes import GAUSSIAN_SQ_OVER_SA, remove_spikes, spike_diagnosis
 
 DX = 1e-6
 
@@ -79,7 +79,7 @@ def test_paper_like_sq_over_sa_is_explained_by_spikes():
     rng = np.random.default_rng(42)
     z = gaussian_surface(rng, 300, 300, 1e-6, 3.0)
     # (not on the outermost rows/columns: there only one direction can be tested, see
-    # surfmet.spikes, and such spikes are left alone)
+    # surfmet._spikes, and such spikes are left alone)
     inner = np.zeros(z.shape, dtype=bool)
     inner[1:-1, 1:-1] = True
     idx = rng.choice(np.flatnonzero(inner), size=int(0.003 * z.size), replace=False)

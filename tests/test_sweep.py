@@ -16,8 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.hertz import hertz_sphere
-from contact.materials import composite_modulus, material
+from contact._hertz import hertz_sphere
+from contact._materials import composite_modulus, material
 from surfmet.cli import main
 from surfmet.sweep import RowWriter, run_sweep, sweep_items
 

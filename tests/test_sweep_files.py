@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from surfmet.atomic import write_text
+from surfmet._atomic import write_text
 from surfmet.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]

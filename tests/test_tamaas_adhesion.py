@@ -40,11 +40,11 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 from contact import SolveOptions
+from contact._grid import gap_grid
 from contact.adhesion import ExponentialLaw
 from contact.adhesion.flat import adhesive_flat, attractive_pressure, solve_at_pressure
 from contact.adhesion.solver import AdhesiveProblem
 from contact.bem import solve_normal
-from contact.grid import gap_grid
 from surfmet.synth import self_affine
 
 DATA = json.loads((Path(__file__).parent / "data" / "tamaas_adhesion.json").read_text())

@@ -12,12 +12,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from contact._hertz import hertz_sphere
+from contact._materials import material
 from contact.halfspace.cerruti import influence_blocks
 from contact.halfspace.pair import HalfSpacePair
-from contact.hertz import hertz_sphere
-from contact.materials import material
-from contact.tangential import RollingOptions, coupling, pair_constants, sphere_grid, steady_rolling
-from contact.tangential.cropped import BoxProducts
+from contact.tangential import RollingOptions, pair_constants, sphere_grid, steady_rolling
+from contact.tangential import _coupling as coupling
+from contact.tangential._cropped import BoxProducts
 
 STEEL_AL = pair_constants(material("steel"), material("aluminium"))
 
@@ -78,9 +79,9 @@ def test_inexact_coupling_keeps_the_answer(monkeypatch, fx):
     grid = sphere_grid(0.02, 1.25 * a, 64)
     fast = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=fx)
     monkeypatch.setattr(coupling, "LOOSEST", coupling.PRESSURE_TOL)
-    monkeypatch.setattr("contact.tangential.steady.LOOSEST", coupling.PRESSURE_TOL)
-    monkeypatch.setattr("contact.tangential.steady.LAG", 0)
-    monkeypatch.setattr("contact.tangential.steady.COARSE_PRESSURE_TOL",
+    monkeypatch.setattr("contact.tangential._steady.LOOSEST", coupling.PRESSURE_TOL)
+    monkeypatch.setattr("contact.tangential._steady.LAG", 0)
+    monkeypatch.setattr("contact.tangential._steady.COARSE_PRESSURE_TOL",
                         coupling.PRESSURE_TOL)
     tight = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=fx)
     assert np.array_equal(fast.state, tight.state)
@@ -109,14 +110,14 @@ def test_start_from_the_coarsest_grid_keeps_the_answer(monkeypatch):
     """128^2 free rolling started from 32^2 directly (prolonged twice) against the same
     solve started through 64^2: the same stick/slip states, tractions within 1e-6 of
     max|q|, the creepage within 1e-6."""
-    from contact import nesting
-    from contact.tangential import nested
+    from contact import _nesting as nesting
+    from contact.tangential import _nested as nested
 
     a = hertz_sphere(0.02, 5.0, STEEL_AL.e_star).a
     grid = sphere_grid(0.02, 1.25 * a, 128)
     assert nested.coarse_grid(grid)[1] == 2
     direct = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0)
-    monkeypatch.setattr("contact.tangential.steady.coarse_grid",
+    monkeypatch.setattr("contact.tangential._steady.coarse_grid",
                         lambda g: (lambda c: None if c is None else (c, 1))(
                             nesting.coarse_grid(g, nested.SMALLEST)))
     chained = steady_rolling(grid, STEEL_AL, 5.0, 0.3, fx=0.0)

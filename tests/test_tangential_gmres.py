@@ -1,4 +1,4 @@
-"""The Newton steps' GMRES (contact.tangential.newton.gmres) against a direct solve.
+"""The Newton steps' GMRES (contact.tangential._newton.gmres) against a direct solve.
 
 GMRES returns on its least-squares residual estimate, with no product to confirm it, so
 the estimate must be the true residual: checked here on a non-symmetric system with a
@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contact.tangential.newton import gmres
+from contact.tangential._newton import gmres
 
 
 def _system(n: int = 120, seed: int = 3):

@@ -1,7 +1,7 @@
 """Cerruti/Boussinesq element influence and the combined constants of a pair.
 
 Independent truths: numerical quadrature of the point-load kernels over an element, the
-composite modulus of :mod:`contact.materials`, Dundurs' beta written from its own
+composite modulus of :mod:`contact._materials`, Dundurs' beta written from its own
 definition, and the numpy twin of the compiled friction-law update.
 """
 
@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 from scipy.integrate import dblquad, quad
 
+from contact._materials import composite_modulus, material
 from contact.halfspace.cerruti import element_integrals, line_integrals
 from contact.halfspace.constants import pair_constants, shear_modulus
-from contact.materials import composite_modulus, material
-from contact.tangential.kernels import update_states
+from contact.tangential._kernels import update_states
 
 KERNELS = {
     "one": lambda x, y: 1.0 / math.hypot(x, y),
@@ -57,7 +57,7 @@ def test_line_integrals_match_quadrature():
 
 
 def test_pair_constants_steel_aluminium():
-    """(1 - nu)/G is 1/E* of contact.materials; K/(1 - nu) is Dundurs' beta."""
+    """(1 - nu)/G is 1/E* of contact._materials; K/(1 - nu) is Dundurs' beta."""
     steel, al = material("steel"), material("aluminium")
     c = pair_constants(steel, al)
     assert c.e_star == pytest.approx(composite_modulus(steel, al), rel=1e-12)
@@ -70,7 +70,7 @@ def test_pair_constants_steel_aluminium():
 
 
 def _update_reference(q, s, g, state, e, dxx, dyy, slack, allow):
-    """numpy twin of :func:`contact.tangential.kernels.update_states`."""
+    """numpy twin of :func:`contact.tangential._kernels.update_states`."""
     state, e = state.copy(), e.copy()
     if dxx > 0:
         t = np.stack([-(s[0] - dxx * q[0]) / dxx, -(s[1] - dyy * q[1]) / dyy])

@@ -8,9 +8,9 @@ import json
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
-from contact.materials import material
-from contact.tangential.microslip import microslip_dissipation, microslip_sweep
+from contact._errors import ContactInputError
+from contact._materials import material
+from contact.tangential._microslip import microslip_dissipation, microslip_sweep
 from surfmet.cli import main
 
 

@@ -21,7 +21,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError, ConvergenceError
+from contact._errors import ContactInputError, ConvergenceError
 from contact.tangential import (
     Creepage,
     Grid,
@@ -175,7 +175,7 @@ def test_bad_input_one_error_line_each():
         Creepage(xi=float("nan"))
     with pytest.raises(ContactInputError, match="friction limit"):
         shift(grid, c, 10.0, 0.3, fx=3.5)
-    from contact.tangential import solver
+    from contact.tangential import _solver as solver
 
     with pytest.raises(ConvergenceError, match="did not settle"):
         solver.solve_tangential(

@@ -10,8 +10,8 @@ import json
 import numpy as np
 import pytest
 
+from surfmet._model import Topography
 from surfmet.cli import main
-from surfmet.model import Topography
 
 
 @pytest.fixture

@@ -9,13 +9,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contact.grid import Grid
+from contact._grid import Grid
+from contact._materials import Material
 from contact.halfspace.constants import pair_constants
-from contact.materials import Material
 from contact.tangential import Creepage, steady_rolling
 from contact.viscoelastic import StandardLinearSolid, pair_creep
-from contact.viscoelastic.surface import rolling_sphere
-from contact.viscoelastic.traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
+from contact.viscoelastic._surface import rolling_sphere
+from contact.viscoelastic._traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
 
 STEEL = Material("steel", 210e9, 0.3)
 R, N, V, MU = 0.02, 5.0, 0.1, 0.3

@@ -2,7 +2,7 @@
 
 - Hunter (1961): contact edges, pressure offset, peak pressure and rolling-resistance
   coefficient against V tau / a, from the Chebyshev-Bessel form of Hunter's solution
-  (contact.viscoelastic.hunter: a different reduction of the problem, no shared code).
+  (contact.viscoelastic._hunter: a different reduction of the problem, no shared code).
 - Elastic limits: tau -> 0 and tau -> inf give the Hertz line contacts of the relaxed and
   the glassy modulus (Johnson 1985, sec. 4.3).
 - CONTACT's published reference output examples/visc_cylindr.ref_out (eve70a/CONTACT,
@@ -16,11 +16,11 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
-from contact.hertz import hertz_cylinder
-from contact.viscoelastic.hunter import hunter_cylinder
-from contact.viscoelastic.line import exp_e1, line_grid, rolling_cylinder, solve_line
-from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid, pair_creep
+from contact._errors import ContactInputError
+from contact._hertz import hertz_cylinder
+from contact.viscoelastic._hunter import hunter_cylinder
+from contact.viscoelastic._line import exp_e1, line_grid, rolling_cylinder, solve_line
+from contact.viscoelastic._rheology import CreepSeries, StandardLinearSolid, pair_creep
 
 R, W, NU = 0.05, 6.0e5, 0.4
 EG, ER = 3.2e9, 1.6e9

@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
-from contact.materials import material
-from contact.viscoelastic.rheology import (
+from contact._errors import ContactInputError
+from contact._materials import material
+from contact.viscoelastic._rheology import (
     CreepSeries,
     PronySeries,
     StandardLinearSolid,
@@ -79,7 +79,7 @@ def test_bad_rheology() -> None:
 
 
 def test_sls_from_loss_peak() -> None:
-    from contact.viscoelastic.loss import loss_data, sls_from_loss
+    from contact.viscoelastic._loss import loss_data, sls_from_loss
 
     sls = sls_from_loss(70e9, 0.33, 1e-3, 2e-3)
     w = np.geomspace(1.0, 1e6, 20001)

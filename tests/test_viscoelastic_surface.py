@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
+from contact._hertz import hertz_sphere
 from contact.halfspace.influence import love_coefficients as love_kernel
-from contact.hertz import hertz_sphere
-from contact.viscoelastic.kernels import creep_filter_rows
-from contact.viscoelastic.rheology import StandardLinearSolid, pair_creep
-from contact.viscoelastic.surface import rolling_sphere
+from contact.viscoelastic._kernels import creep_filter_rows
+from contact.viscoelastic._rheology import StandardLinearSolid, pair_creep
+from contact.viscoelastic._surface import rolling_sphere
 
 R, W, NU = 0.01, 1.0, 0.5
 EG, ER = 30e6, 10e6

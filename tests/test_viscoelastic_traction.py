@@ -8,11 +8,11 @@ import math
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
-from contact.hertz import hertz_cylinder
-from contact.viscoelastic.line import influence_matrix, line_grid, rolling_cylinder, solve_line
-from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid, pair_creep
-from contact.viscoelastic.traction import steady_traction
+from contact._errors import ContactInputError
+from contact._hertz import hertz_cylinder
+from contact.viscoelastic._line import influence_matrix, line_grid, rolling_cylinder, solve_line
+from contact.viscoelastic._rheology import CreepSeries, StandardLinearSolid, pair_creep
+from contact.viscoelastic._traction import steady_traction
 
 
 def test_carter_creepage_and_stick_zone() -> None:

@@ -1,4 +1,4 @@
-"""3D steady rolling tractions on a viscoelastic half-space (contact.viscoelastic.traction3d).
+"""3D steady rolling tractions on a viscoelastic half-space (contact.viscoelastic._traction3d).
 
 Independent truths: the elastic tangential solver of contact.tangential with the relaxed
 and glassy moduli (the limits V tau/a -> 0 and -> inf), Coulomb's full-slip limit
@@ -13,11 +13,11 @@ import functools
 import numpy as np
 import pytest
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.tangential import Creepage, steady_rolling
-from contact.tangential.grid import Grid
-from contact.viscoelastic.rheology import StandardLinearSolid
-from contact.viscoelastic.traction3d import (
+from contact.tangential._grid import Grid
+from contact.viscoelastic._rheology import StandardLinearSolid
+from contact.viscoelastic._traction3d import (
     ViscoRolling,
     constants_at,
     rolling_sphere_tractions,
@@ -109,11 +109,11 @@ def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
     R and the same relaxed half-width a; V tau = vt a (None: relaxed, tau -> 0)."""
     import math
 
-    from contact.grid import scan_grid
-    from contact.tangential.grid import centres
-    from contact.viscoelastic.line import influence_matrix, rolling_cylinder
-    from contact.viscoelastic.surface import solve_surface
-    from contact.viscoelastic.traction import steady_traction
+    from contact._grid import scan_grid
+    from contact.tangential._grid import centres
+    from contact.viscoelastic._line import influence_matrix, rolling_cylinder
+    from contact.viscoelastic._surface import solve_surface
+    from contact.viscoelastic._traction import steady_traction
 
     nu, mu, ratio, k = 0.3, 0.3, 0.6, 25.0
     a_r = 2.2196e-4  # relaxed centre half-width of this ellipse (its own solve, 48 x 48)
@@ -138,7 +138,7 @@ def _slender_creepage(vt: float | None) -> tuple[float, float, float]:
 def test_slender_contact_viscoelastic_factor_matches_plane_strain(vt):
     """The 2D limit. At equal F_x/(mu N) = -0.6 the viscoelastic factor of the creepage,
     xi(V tau/a)/xi(relaxed), of a slender elliptical contact (b/a ~ 7.8) matches that of
-    plane strain (contact.viscoelastic.traction, Carter with creep) within 1 %. (The
+    plane strain (contact.viscoelastic._traction, Carter with creep) within 1 %. (The
     creepages themselves differ by ~14 % at b/a = 8 and at b/a = 18 alike: the approach
     of an ellipse to plane strain is logarithmic in b/a, out of reach of a fast test.)"""
     xi3_r, xi2_r, a = _slender_creepage(None)

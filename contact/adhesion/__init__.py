@@ -4,8 +4,8 @@
   law: Dugdale (Maugis), exponential, ...), the Maugis and Tabor parameters;
 - :mod:`contact.adhesion.solver`: one equilibrium at a prescribed approach (or load) on a
   periodic grid, tensile tractions solved (:func:`solve_adhesive`);
-- :mod:`contact.adhesion.descent`: its method, the accelerated projected gradient on the
-  gap, run by the one driver of the normal solves (:mod:`contact.bem.loop`);
+- :mod:`contact.adhesion._descent`: its method, the accelerated projected gradient on the
+  gap, run by the one driver of the normal solves (:mod:`contact.bem._loop`);
 - :mod:`contact.adhesion.cycle`: displacement-controlled approach and retraction, pull-off,
   jumps and hysteresis;
 - :mod:`contact.adhesion.ball`: the sphere on a flat (:func:`adhesive_ball`);
@@ -16,7 +16,7 @@
 - :mod:`contact.adhesion.rolling`: adhesion hysteresis as a rolling-resistance mechanism.
 
 The pressure bounds that carry a law into a normal solve are
-:class:`contact.bem.bounds.PressureBounds`.
+:class:`contact.bem._bounds.PressureBounds`.
 """
 
 from contact._lazy import attach

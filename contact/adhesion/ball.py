@@ -13,17 +13,17 @@ Maugis' curve (benchmarks/adhesion_maugis.py: cell 4 x the larger of the JKR rad
 the zone reach, 24 retraction steps, step halving of :mod:`contact.adhesion.cycle`):
 lambda = 1 gives +11.8 % and +5.3 % at l_pz = 6.6 and 13 pixels (64^2, 128^2), an error
 that halves with the pixel; lambda = 5 gives +81 % at 0.53 pixel (128^2). Below
-:data:`contact.zone_resolution.MIN_ZONE_PIXELS_PLAIN` a warning is issued. The contact
+:data:`contact._zone_resolution.MIN_ZONE_PIXELS_PLAIN` a warning is issued. The contact
 itself must span several pixels too: the JKR radius at zero load should be eight pixels
 or more. These figures are the plain Dugdale step's; the step smoothed on the grid's scale
 (:meth:`contact.adhesion.laws.DugdaleLaw.on_grid`) removes most of the pinning (lambda = 1:
 +1.4 % on 48^2 of a cell 6 x a0; lambda = 5: +1.3 % at 1.6 pixels); its threshold
-:data:`contact.zone_resolution.MIN_ZONE_PIXELS` is measured on the command's own sphere, and
+:data:`contact._zone_resolution.MIN_ZONE_PIXELS` is measured on the command's own sphere, and
 :func:`edge_radius` reads the contact radius sub-pixel.
 
 Rough surfaces: a composite roughness z sampled onto the grid (positive outward from
 either body, so that it closes the gap: h = r^2 / (2 R) - z, the convention of
-:mod:`contact.setups.ball_on_plate`) is subtracted from the paraboloid and the gap shifted
+:mod:`contact.setups._ball_on_plate`) is subtracted from the paraboloid and the gap shifted
 so that the first touch is at approach 0. The approach then runs 3 z_rms further than for
 the smooth sphere, so that the contact reaches about the same size through the asperities.
 """
@@ -36,22 +36,22 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact._errors import ContactInputError
+from contact._geometry import DomainSpec, domain_spec
+from contact._grid import Grid
+from contact._material_pair import MaterialPair, modulus
 from contact._validate import positive
-from contact.adhesion.cycle import Cycle, approach_retraction
-from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
-from contact.adhesion.memory import check_adhesion_memory
-from contact.adhesion.solver import adhesive_problem
-from contact.errors import ContactInputError
-from contact.geometry import DomainSpec, domain_spec
-from contact.grid import Grid
-from contact.material_pair import MaterialPair, modulus
-from contact.zone_resolution import (  # noqa: F401 (the thresholds, re-exported)
+from contact._zone_resolution import (  # noqa: F401 (the thresholds, re-exported)
     MIN_ZONE_PIXELS,
     MIN_ZONE_PIXELS_PLAIN,
     min_zone_pixels,
     process_zone,
     pull_off_excess,
 )
+from contact.adhesion.cycle import Cycle, approach_retraction
+from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
+from contact.adhesion.memory import check_adhesion_memory
+from contact.adhesion.solver import adhesive_problem
 
 #: A JKR contact radius at zero load of fewer pixels than this is under-resolved.
 MIN_CONTACT_PIXELS = 8.0
@@ -131,7 +131,7 @@ def adhesive_ball(radius: float, e_star: float | MaterialPair, law: InteractionL
     ----------
     radius, e_star : float
         Sphere radius (m) and composite modulus (Pa),
-        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
+        or a resolved :class:`contact._material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         A registered law (:mod:`contact.adhesion.laws`: e.g.
         :class:`~contact.adhesion.laws.DugdaleLaw`).
@@ -224,7 +224,7 @@ def coarse_zone_effect(cycle: Cycle, zone_pixels: float | None = None) -> str:
     """What an unresolved cohesive zone does to this cycle's answer, in words: the
     pull-off comes out too large (the pixels pin the contact edge, see the module notes),
     by the measured excess at ``zone_pixels`` where given (smoothed Dugdale step:
-    :func:`contact.zone_resolution.pull_off_excess`), or, where the retraction never
+    :func:`contact._zone_resolution.pull_off_excess`), or, where the retraction never
     pulled, there is no pull-off to overestimate and the adhesive tractions are what is
     not resolved."""
     if cycle.pull_off_force > 0.0:

@@ -18,9 +18,9 @@ from typing import Protocol
 
 import numpy as np
 
+from contact._record import SolveRecord, combine
 from contact.adhesion.laws import InteractionLaw
 from contact.adhesion.solver import AdhesiveState
-from contact.record import SolveRecord, combine
 
 _GOLDEN = 0.5 * (math.sqrt(5.0) - 1.0)
 
@@ -29,7 +29,7 @@ class AdhesiveProblem(Protocol):
     """What a cycle asks of a problem: its undeformed gap, modulus and law, and one
     equilibrium at an approach from a warm-start gap (the periodic grid's
     :class:`contact.adhesion.solver.AdhesiveProblem`, the rings'
-    :class:`contact.adhesion.rings.RingProblem`)."""
+    :class:`contact.adhesion._rings.RingProblem`)."""
 
     @property
     def gap0(self) -> np.ndarray: ...
@@ -51,7 +51,7 @@ class Branch:
     ``approach`` is the rigid approach imposed (m), ``surface_approach`` the approach of the
     mean plane (m), ``load`` (N), ``contact_area`` (m^2), ``energy`` the elastic plus
     interaction energy (J), ``iterations`` per step; ``solve`` the records of every solve
-    run for the leg combined (:func:`contact.record.combine`), a split step's discarded
+    run for the leg combined (:func:`contact._record.combine`), a split step's discarded
     attempt included.
     """
 

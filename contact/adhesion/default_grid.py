@@ -2,16 +2,16 @@
 within the memory guard.
 
 On a grid whose pixels are wider than the cohesive zone l_pz = pi E* w / (4 sigma0^2) the
-contact edge is pinned and the pull-off comes out too large (:mod:`contact.zone_resolution`:
+contact edge is pinned and the pull-off comes out too large (:mod:`contact._zone_resolution`:
 +27 % at half a pixel, lambda 5). The zone narrows as 0.75 l_M / lambda^2 (l_M = (pi w R^2
 / K)^(1/3) Maugis' length) while the periodic cell is about 7.3 l_M (4 a0), so a fixed
 grid cannot serve every lambda: the default is the grid that gives the zone
-:data:`contact.zone_resolution.MIN_ZONE_PIXELS` pixels (never fewer cells than
+:data:`contact._zone_resolution.MIN_ZONE_PIXELS` pixels (never fewer cells than
 :data:`LEAST_GRID`, the default before), rounded up to a multiple of
 :data:`GRID_MULTIPLE` (fast FFT lengths), and at most the largest grid that fits in
 memory (:func:`contact.adhesion.memory.largest_adhesion_grid`); where memory caps it, the
 choice says so and by how much the pull-off is then off
-(:func:`contact.zone_resolution.pull_off_excess`, measured). A grid beyond the largest
+(:func:`contact._zone_resolution.pull_off_excess`, measured). A grid beyond the largest
 default run measured (:data:`LARGEST_MEASURED`) is still chosen (extrapolation over
 coarser grids does not replace it: benchmarks/adhesion_richardson.py), and its reason
 says so and what half of it would be off by.
@@ -22,8 +22,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from contact._zone_resolution import min_zone_pixels, pull_off_excess
 from contact.adhesion.memory import largest_adhesion_grid
-from contact.zone_resolution import min_zone_pixels, pull_off_excess
 
 #: The least default grid (cells per side): the command's fixed default before the grid
 #: followed the zone, ample for the contact itself (a0 spans 32 pixels on it).
@@ -105,7 +105,7 @@ def resolving_grid(size: float, zone: float, *, steps: int, smoothed: bool = Tru
 
 def _cost(grid: int, size: float, zone: float) -> str:
     """What a default ``grid`` beyond :data:`LARGEST_MEASURED` costs and what half of it
-    would be off by (the measured :func:`contact.zone_resolution.pull_off_excess`), in
+    would be off by (the measured :func:`contact._zone_resolution.pull_off_excess`), in
     words; empty up to it."""
     top, seconds = LARGEST_MEASURED
     if grid <= top:

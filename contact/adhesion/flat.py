@@ -24,7 +24,7 @@ loading step from the furthest state short of the pressure, from the non-contact
 (every gap beyond the law's reach), split (:func:`contact.adhesion.cycle.advance`) while
 the touching area changes by more than 10 %. A tensile pressure that falls inside a jump of
 the load-approach curve has no equilibrium on the branch and is one
-:class:`~contact.errors.ConvergenceError`.
+:class:`~contact._errors.ConvergenceError`.
 
 On the tests' 64^2 surface at 0.1 pixel of cohesive zone (exponential law, w 0.2 J/m^2,
 rho 5 nm, 0.1 MPa) both controls find the same contact set (area fraction 0.0168, mean gap
@@ -42,7 +42,7 @@ before the longer load-controlled steps of :mod:`contact.adhesion.solver`; see
 benchmarks/adhesion_flat.py for the CPU times), the secant 42 solves and 6197.
 
 Per pressure the sweep reports, with the same definitions as the non-adhesive driver
-:func:`contact.setups.flat.flat_contact`: the area fraction where the surfaces touch (gap
+:func:`contact.setups._flat.flat_contact`: the area fraction where the surfaces touch (gap
 zero), the mean gap (the mean of the deformed gap), and the attractive pressure
 :func:`attractive_pressure`, the interaction law's traction averaged over the whole
 nominal area, touching points included (a positive magnitude). The nominal pressure is
@@ -50,7 +50,7 @@ the repulsive mean minus the attractive one.
 
 Resolution: as for a sphere (:mod:`contact.adhesion.ball`), the cohesive zone at each
 contact edge is about l_pz = pi E* w / (4 sigma0^2) wide; below
-:func:`contact.zone_resolution.min_zone_pixels` pixels the edges are pinned by the grid and
+:func:`contact._zone_resolution.min_zone_pixels` pixels the edges are pinned by the grid and
 the adhesive area is not resolved, which the result warns about.
 """
 
@@ -62,6 +62,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from contact._errors import ContactInputError, ConvergenceError
+from contact._grid import Grid
+from contact._record import SolveRecord
+from contact._zone_resolution import min_zone_pixels
 from contact.adhesion.cycle import MAX_AREA_CHANGE, MAX_SPLITS, advance
 from contact.adhesion.laws import InteractionLaw, checked_law
 from contact.adhesion.solver import (
@@ -71,10 +75,6 @@ from contact.adhesion.solver import (
     solve_adhesive,
     solve_adhesive_at_pressure,
 )
-from contact.errors import ContactInputError, ConvergenceError
-from contact.grid import Grid
-from contact.record import SolveRecord
-from contact.zone_resolution import min_zone_pixels
 
 #: Secant tries allowed per tensile nominal pressure.
 MAX_SOLVES = 40
@@ -118,7 +118,7 @@ class AdhesiveFlatPoint:
         Equilibrium solves on the loading path (the secant's tries and their quasi-static
         sub-steps), and their iterations in all.
     solve : SolveRecord
-        The record (:mod:`contact.record`): the iterations in all, the solves as outer
+        The record (:mod:`contact._record`): the iterations in all, the solves as outer
         iterations, the last equilibrium's residual.
     mean_gap_out_of_contact : float
         Mean of the deformed gap over the cells that do not touch only (m; NaN where all
@@ -414,17 +414,17 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
     ----------
     gap0 : ndarray or Grid
         Initial gap to the flat (``max(z) - z`` for a surface z), or a periodic
-        :class:`contact.grid.Grid` carrying it and its pitch (then ``dx`` is not given).
+        :class:`contact._grid.Grid` carrying it and its pitch (then ``dx`` is not given).
     dx, e_star : float
         Pixel (m) and composite modulus (Pa),
-        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
+        or a resolved :class:`contact._material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         The adhesion law.
     pressures : array_like
         Nominal pressures (Pa), in increasing order (the loading branch).
     mean_gaps, stiffnesses : array_like
         Starting estimates per pressure: the non-adhesive solve's mean gap (m) and contact
-        stiffness -dp/dū (Pa/m) (:func:`contact.setups.flat.flat_contact`); only the
+        stiffness -dp/dū (Pa/m) (:func:`contact.setups._flat.flat_contact`); only the
         secant of a tensile pressure uses them (a compressive one is imposed).
     rtol, tol : float
         Pressure and equilibrium tolerances (:func:`solve_at_pressure`).
@@ -437,7 +437,7 @@ def adhesive_flat(gap0: np.ndarray | Grid, dx: float | None = None,
     progress : callable, optional
         Called as ``progress(done, total)`` after each pressure.
     """
-    from contact.material_pair import modulus
+    from contact._material_pair import modulus
 
     if any(v is None for v in (e_star, law, pressures, mean_gaps, stiffnesses)):
         raise ContactInputError("give e_star, the law, the pressures and one starting mean "

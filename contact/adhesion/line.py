@@ -39,7 +39,7 @@ that a cylinder and a sphere of the same R, w, sigma0 and E* state the same lamb
 Tabor's mu = (R w^2 / (E*^2 z^3))^(1/3) of the law's range z, and with the cohesive
 zone's width against a_c. Resolution and domain follow :mod:`contact.adhesion.ball`:
 the cohesive zone pi E* w / (4 sigma0^2) should span
-:data:`contact.zone_resolution.MIN_ZONE_PIXELS_PLAIN` cells, and
+:data:`contact._zone_resolution.MIN_ZONE_PIXELS_PLAIN` cells, and
 the periodic images of the cylinder shift the load at a given width by about
 (pi^2 / 6) (a / L)^2, so the default cell is 16 times the larger of a_0 and the
 interaction's reach.
@@ -53,17 +53,17 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from contact._errors import ContactInputError
+from contact._grid import Grid, centred_coordinates
+from contact._material_pair import MaterialPair, modulus
 from contact._validate import positive
+from contact._zone_resolution import MIN_ZONE_PIXELS_PLAIN
 from contact.adhesion.ball import coarse_zone_effect, rough_gap
 from contact.adhesion.cycle import Branch, Cycle, Jump, approach_retraction
 from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 from contact.adhesion.memory import check_adhesion_memory
 from contact.adhesion.solver import AdhesiveProblem
-from contact.errors import ContactInputError
-from contact.grid import Grid, centred_coordinates
 from contact.halfspace.influence import periodic_kernel_spectrum
-from contact.material_pair import MaterialPair, modulus
-from contact.zone_resolution import MIN_ZONE_PIXELS_PLAIN
 
 #: The default cell, in units of the larger of a_0 and the reach of the interaction.
 CELL_WIDTHS = 16.0
@@ -159,14 +159,14 @@ def line_scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[floa
 def line_problem(grid: Grid, e_star: float, law: InteractionLaw) -> AdhesiveProblem:
     """The adhesive problem of a periodic line-contact grid (plane strain) and its gap (m).
 
-    ``grid`` is a :class:`contact.grid.Grid` with ``line`` and ``periodic`` set and the
+    ``grid`` is a :class:`contact._grid.Grid` with ``line`` and ``periodic`` set and the
     undeformed gap ``h`` (see :func:`periodic_line_grid`). The stiffness is the inverse of
     the core's periodic Love spectrum for a single row (module notes), its q = 0 entry the
     mean-displacement spring of :func:`contact.adhesion.solver.adhesive_problem`.
     """
     if not isinstance(grid, Grid) or grid.h is None or not (grid.line and grid.periodic):
         raise ContactInputError("the adhesive line needs a periodic line-contact "
-                                "contact.grid.Grid with its gap h")
+                                "contact._grid.Grid with its gap h")
     h = np.ascontiguousarray(grid.h, dtype=float).reshape(1, -1)
     dx = grid.dx
     if h.shape[1] < 8 or not np.isfinite(h).all():
@@ -234,7 +234,7 @@ def adhesive_line(radius: float, e_star: float | MaterialPair, law: InteractionL
     ----------
     radius, e_star : float
         Cylinder radius (m) and composite plane-strain modulus (Pa),
-        or a resolved :class:`contact.material_pair.MaterialPair` (its E*, bit for bit).
+        or a resolved :class:`contact._material_pair.MaterialPair` (its E*, bit for bit).
     law : InteractionLaw
         A registered law (:mod:`contact.adhesion.laws`: e.g.
         :class:`~contact.adhesion.laws.DugdaleLaw`).

@@ -8,12 +8,12 @@ least two per approach step (one on the way in, one on the way out), more where 
 is split. Measured (peak resident set size added by ``adhesive_ball`` with the Dugdale
 law of the ``surfmet adhesion`` help's first example at 256^2): 143 MB with 4 steps (83
 equilibria after the splits), 172 MB with 40 steps (132 equilibria): about 9 B/cell per
-equilibrium kept. With the solver's fixed :data:`contact.bem.memory.BASE_BYTES`,
+equilibrium kept. With the solver's fixed :data:`contact.bem._memory.BASE_BYTES`,
 :data:`BYTES_PER_CELL` and :data:`STATE_BYTES_PER_CELL` are set, and the count of
 equilibria taken at its least (two per step), so that the estimate stays below both
 measured peaks (130 and 168 MB): a grid refused would not have fitted. The available
 memory and the share of it that may be planned for are those of the normal solver
-(:mod:`contact.bem.memory`). A line contact's cells are counted with the same figures
+(:mod:`contact.bem._memory`). A line contact's cells are counted with the same figures
 (not measured separately: its solves at 2^18 cells took over five minutes each here),
 so only grids of millions of cells are refused there.
 """
@@ -22,8 +22,8 @@ from __future__ import annotations
 
 import math
 
-from contact.bem.memory import BASE_BYTES, SAFETY, available_bytes
-from contact.errors import ContactMemoryError
+from contact._errors import ContactMemoryError
+from contact.bem._memory import BASE_BYTES, SAFETY, available_bytes
 
 #: Peak bytes per cell of the solver's workspace (from the measured peaks: module notes).
 BYTES_PER_CELL = 900
@@ -41,7 +41,7 @@ def estimate_adhesion_bytes(cells: int, steps: int) -> int:
 def largest_adhesion_grid(*, steps: int, line: bool = False,
                           available: int | None = None) -> int | None:
     """The largest even grid (cells per side; along x for a ``line``) whose estimated peak
-    fits in :data:`contact.bem.memory.SAFETY` of the available memory; None when the
+    fits in :data:`contact.bem._memory.SAFETY` of the available memory; None when the
     available memory is unknown (no limit)."""
     avail = available_bytes() if available is None else int(available)
     if avail is None:
@@ -65,7 +65,7 @@ def check_adhesion_memory(n: int, *, steps: int, line: bool = False,
     line : bool
         A line contact (one row of n cells).
     available : int, optional
-        Available memory (bytes); default :func:`contact.bem.memory.available_bytes` (no
+        Available memory (bytes); default :func:`contact.bem._memory.available_bytes` (no
         check if unknown).
 
     Returns
@@ -76,7 +76,7 @@ def check_adhesion_memory(n: int, *, steps: int, line: bool = False,
     Raises
     ------
     ContactMemoryError
-        The estimate exceeds :data:`contact.bem.memory.SAFETY` of the available memory; the
+        The estimate exceeds :data:`contact.bem._memory.SAFETY` of the available memory; the
         message names the largest grid that fits.
     """
     cells = int(n) if line else int(n) ** 2

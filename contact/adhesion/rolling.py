@@ -74,7 +74,7 @@ def adhesion_hysteresis_forces(loads: Sequence[float], radius: float, e_star: fl
     positive(e_star, "E*", "Pa")
     positive(work, "the work of adhesion", "J/m^2")
     if not (math.isfinite(hysteresis) and 0.0 <= hysteresis <= work):
-        from contact.errors import ContactInputError
+        from contact._errors import ContactInputError
 
         raise ContactInputError(f"the adhesion hysteresis must lie between 0 and the work of "
                                 f"adhesion {work:g} J/m^2, got {hysteresis!r}")

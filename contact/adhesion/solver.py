@@ -25,9 +25,9 @@ gradient with Nesterov momentum (FISTA, Beck & Teboulle 2009, SIAM J. Imaging Sc
 the momentum restarted whenever it points uphill (O'Donoghue & Candes 2015, Found. Comput.
 Math. 15:715), with the step 1 / (the largest stiffness), and 1.3 times that under
 load control (:data:`LOAD_STEP`). Both controls are one method
-(:class:`contact.adhesion.descent.AcceleratedGradient`: load control is approach control
+(:class:`contact.adhesion._descent.AcceleratedGradient`: load control is approach control
 with the mean-plane spring off and the load's pressure on) run by the one driver of the
-normal solves (:func:`contact.bem.loop.drive`), as the non-adhesive and plastic solves
+normal solves (:func:`contact.bem._loop.drive`), as the non-adhesive and plastic solves
 of :mod:`contact.bem` are.
 
 Discretisation: a cell either touches (zero gap) or not and carries a uniform pressure,
@@ -43,14 +43,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact._errors import ContactInputError, ConvergenceError
+from contact._grid import Grid, scan_grid
+from contact._record import SolveRecord, edge_contact
 from contact._validate import positive
-from contact.adhesion.descent import descend, elastic_offset
+from contact.adhesion._descent import descend, elastic_offset
 from contact.adhesion.laws import InteractionLaw, kernel_arguments
-from contact.bem.state import SolverStats
-from contact.errors import ContactInputError, ConvergenceError
-from contact.grid import Grid, scan_grid
+from contact.bem._state import SolverStats
 from contact.halfspace.convolution import Convolution, convolution
-from contact.record import SolveRecord, edge_contact
 
 #: Step of the load-controlled solve (:func:`solve_adhesive_at_pressure`) in units of
 #: 1 / (the largest stiffness). The momentum iteration y = x + beta (x - x'), x+ = y - s
@@ -101,7 +101,7 @@ class AdhesiveState:
     iterations : int
         Projected-gradient iterations.
     solve : SolveRecord
-        The solve record (:mod:`contact.record`; the domain is periodic: no edge).
+        The solve record (:mod:`contact._record`; the domain is periodic: no edge).
     """
 
     gap: np.ndarray
@@ -172,7 +172,7 @@ def adhesive_problem(gap0: np.ndarray | Grid, dx: float | None = None,
     ----------
     gap0 : ndarray, shape (ny, nx), or Grid
         The undeformed gap h (m) on square cells of pitch ``dx``, or a periodic 3D
-        :class:`contact.grid.Grid` carrying it (then ``dx`` is not given: the grid holds
+        :class:`contact._grid.Grid` carrying it (then ``dx`` is not given: the grid holds
         its pitch and origin, as for :func:`contact.bem.solve_normal`).
     dx : float
         Pixel (m), with an array gap.
@@ -216,7 +216,7 @@ def _periodic_grid(gap0: np.ndarray | Grid, dx: float | None) -> Grid:
         h = np.asarray(gap0.h, dtype=float)
     else:
         if dx is None:
-            raise ContactInputError("give the pixel dx (m), or the gap as a contact.grid.Grid")
+            raise ContactInputError("give the pixel dx (m), or the gap as a contact._grid.Grid")
         h = np.asarray(gap0, dtype=float)
     if h.ndim != 2 or min(h.shape) < 4 or not np.isfinite(h).all():
         raise ContactInputError("the gap must be a finite 2D array of at least 4x4")
@@ -324,12 +324,12 @@ def law_code(law: InteractionLaw, single: bool = False) -> tuple[int, float, flo
 
 def _counters(problem: AdhesiveProblem, evaluations: int, single: bool) -> SolverStats:
     """The work of one adhesive solve, counted as the normal BEM counts its own
-    (:class:`contact.bem.state.SolverStats`, copied into ``SolveRecord.counters``): each
+    (:class:`contact.bem._state.SolverStats`, copied into ``SolveRecord.counters``): each
     gradient evaluation of the descent applies the stiffness once with the operator's
     transforms (:meth:`contact.halfspace.convolution.Convolution.spectral`, a forward and
     an inverse FFT), in float32 where ``single``; the record's pressure (:func:`_state`)
     applies it once more in float64. The forward transforms of the undeformed gap
-    (:func:`contact.adhesion.descent.elastic_offset`, one per descent and one for the
+    (:func:`contact.adhesion._descent.elastic_offset`, one per descent and one for the
     record) are no convolution and are not counted."""
     n = int(evaluations)
     return SolverStats(iterations=n, fft_single=n if single else 0,

@@ -2,23 +2,23 @@
 
 The package's public entry is :func:`solve_normal`; its rooms:
 
-- :mod:`contact.bem.solver`: input checks, nesting, result assembly (``solve_normal``:
-  a :class:`~contact.grid.Grid`, the load or approach, the
-  :class:`~contact.bem.bounds.PressureBounds` and the
-  :class:`~contact.bem.options.SolveOptions`);
-- :mod:`contact.bem.options`: :class:`~contact.bem.options.SolveOptions`, how a solve runs;
-- :mod:`contact.bem.loop`: the one iteration driver of the 3D normal solves (this one's
+- :mod:`contact.bem._solver`: input checks, nesting, result assembly (``solve_normal``:
+  a :class:`~contact._grid.Grid`, the load or approach, the
+  :class:`~contact.bem._bounds.PressureBounds` and the
+  :class:`~contact.bem._options.SolveOptions`);
+- :mod:`contact.bem._options`: :class:`~contact.bem._options.SolveOptions`, how a solve runs;
+- :mod:`contact.bem._loop`: the one iteration driver of the 3D normal solves (this one's
   and the adhesive solve's): residual test, step, budget, callback;
-- :mod:`contact.bem.iteration`: the feasible start and the Polonsky-Keer method the
+- :mod:`contact.bem._iteration`: the feasible start and the Polonsky-Keer method the
   driver runs;
-- :mod:`contact.bem.steps`: the conjugate-gradient (Polonsky-Keer) step, the projected
+- :mod:`contact.bem._steps`: the conjugate-gradient (Polonsky-Keer) step, the projected
   gradient step and the mixed-precision re-sync, each a function of the iteration state;
-- :mod:`contact.bem.state`: the problem, the work arrays, the iteration state, the counters;
-- :mod:`contact.bem.kernels`: the numba kernels of the steps;
-- :mod:`contact.nesting`: grid transfer for the nested (coarse-to-fine) solve;
-- :mod:`contact.bem.result`: :class:`~contact.bem.result.ContactResult` and its derived
+- :mod:`contact.bem._state`: the problem, the work arrays, the iteration state, the counters;
+- :mod:`contact.bem._kernels`: the numba kernels of the steps;
+- :mod:`contact._nesting`: grid transfer for the nested (coarse-to-fine) solve;
+- :mod:`contact.bem._result`: :class:`~contact.bem._result.ContactResult` and its derived
   quantities;
-- :mod:`contact.bem.memory`: the memory model (peak bytes per cell) and the grid check.
+- :mod:`contact.bem._memory`: the memory model (peak bytes per cell) and the grid check.
 
 The elastic half-space itself (influence coefficients, FFT convolution) is
 :mod:`contact.halfspace`.
@@ -101,8 +101,8 @@ What makes it fast
 - Kernel spectra and convolution plans are cached by (grid, pitch, periodicity).
 """
 
-from contact.bem.bounds import PressureBounds
-from contact.bem.options import SolveOptions
-from contact.bem.solver import solve_normal
+from contact.bem._bounds import PressureBounds
+from contact.bem._options import SolveOptions
+from contact.bem._solver import solve_normal
 
 __all__ = ["PressureBounds", "SolveOptions", "solve_normal"]

@@ -13,7 +13,7 @@ pressure rings is exact: the discretisation error is that of the pressure only.
 
 :class:`RingOperator` is the axisymmetric implementation of
 :class:`contact.halfspace.operator.Operator`, the dense matrix of the rings (a few
-hundred); the Greenwood-Tripp rough sphere (:mod:`contact.roughcontact.greenwood_tripp`)
+hundred); the Greenwood-Tripp rough sphere (:mod:`contact.roughcontact._greenwood_tripp`)
 solves on it.
 """
 
@@ -24,7 +24,7 @@ import math
 import numpy as np
 from scipy.special import ellipe, ellipk
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.halfspace.operator import line_precondition, line_stiffness
 
 

@@ -3,7 +3,7 @@ and Kalker's normal-tangential coupling, on rectangular elements and on strips.
 
 What the contact conditions need is the *difference* of the surface displacements of
 the two bodies, u = u(1) - u(2) (body 1 receives +t), with the normal component counted
-positive into the bodies (it opens the gap, as in :mod:`contact.hertz`). With the
+positive into the bodies (it opens the gap, as in :mod:`contact._hertz`). With the
 combined constants G, nu, K of :mod:`contact.halfspace.constants`, a unit point load at
 the origin gives, at rho = |(x, y)| (Johnson 1985, *Contact Mechanics*, eqs. 3.19 and
 3.86-3.87; Kalker 1990, *Three-Dimensional Elastic Bodies in Rolling Contact*, sec. 1.5)::

@@ -18,8 +18,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from contact.errors import ContactInputError
-from contact.materials import Material
+from contact._errors import ContactInputError
+from contact._materials import Material
 
 
 @dataclass(frozen=True)
@@ -52,7 +52,7 @@ class PairConstants:
 
 
 def shear_modulus(m: Material) -> float:
-    """G in Pa: the material's own :attr:`~contact.materials.Material.shear_modulus`."""
+    """G in Pa: the material's own :attr:`~contact._materials.Material.shear_modulus`."""
     return m.shear_modulus
 
 

@@ -38,7 +38,7 @@ from functools import lru_cache
 import numpy as np
 from scipy.fft import irfft2
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.halfspace.influence import (
     extended_kernel_spectrum,
     free_kernel_quadrant,

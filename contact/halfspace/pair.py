@@ -21,7 +21,7 @@ from functools import lru_cache
 import numpy as np
 import scipy.fft as sfft
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.halfspace.cerruti import influence_blocks, periodic_spectra
 from contact.halfspace.constants import PairConstants
 from contact.halfspace.padding import forward, inverse, padded_shape, wrapped_offsets

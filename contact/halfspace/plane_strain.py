@@ -7,7 +7,7 @@ over y). A uniform pressure on the strip [-dx/2, dx/2] integrates it in closed f
     int_{-dx/2}^{dx/2} -2 ln|x - s| ds = -2 [F(x + dx/2) - F(x - dx/2)],  F(v) = v ln|v| - v
 
 (:func:`strip_log`, the one home of that integral: the normal line contact of
-:mod:`contact.bem.line` and the plane-strain blocks of the pair operator,
+:mod:`contact.bem._line` and the plane-strain blocks of the pair operator,
 :func:`contact.halfspace.cerruti.line_integrals`, both take it from here).
 
 A half-plane has no displacement datum: the displacement grows like log(distance), and
@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-from contact.errors import ContactInputError
+from contact._errors import ContactInputError
 from contact.halfspace.operator import line_precondition, line_stiffness
 
 

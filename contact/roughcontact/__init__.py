@@ -2,21 +2,21 @@
 
 The room for the statistical and spectral models of rough contact (Greenwood-Williamson,
 Bush-Gibson-Thomas, Persson, Greenwood-Tripp), the spectral summit parameters they take and
-the isotropic PSD from a profile PSD (:mod:`~contact.roughcontact.isotropic`).
+the isotropic PSD from a profile PSD (:mod:`~contact.roughcontact._isotropic`).
 Arrays and SI floats in, small frozen dataclasses out; never imports surfmet.
 """
 
-from contact.roughcontact.bgt import KAPPA_BGT, bush_gibson_thomas
-from contact.roughcontact.greenwood_tripp import Asperities, GreenwoodTripp, greenwood_tripp
-from contact.roughcontact.gw import greenwood_williamson, gw_integral, gw_state
-from contact.roughcontact.hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
-from contact.roughcontact.isotropic import (
+from contact.roughcontact._bgt import KAPPA_BGT, bush_gibson_thomas
+from contact.roughcontact._greenwood_tripp import Asperities, GreenwoodTripp, greenwood_tripp
+from contact.roughcontact._gw import greenwood_williamson, gw_integral, gw_state
+from contact.roughcontact._hierarchy import ModelHierarchy, ModelPrediction, model_hierarchy
+from contact.roughcontact._isotropic import (
     iso_from_profile_psd,
     log_quadrature,
     self_affine_factor,
 )
-from contact.roughcontact.persson import KAPPA_PERSSON, ModelCurve, kappa, persson
-from contact.roughcontact.summits import (
+from contact.roughcontact._persson import KAPPA_PERSSON, ModelCurve, kappa, persson
+from contact.roughcontact._summits import (
     SummitParameters,
     isotropic_moments,
     plasticity_index,

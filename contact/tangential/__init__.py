@@ -8,20 +8,20 @@ compression (Spence); plane strain and 3D, smooth or rough.
 
 The influence operator and the pair's constants are those of :mod:`contact.halfspace`
 (:mod:`~contact.halfspace.pair`, :mod:`~contact.halfspace.constants`, re-exported here).
-Modules: :mod:`~contact.tangential.kinematics` (creepage, slip), :mod:`contact.grid` (the grid),
-:mod:`~contact.tangential.normal` (pressure with an extra gap),
-:mod:`~contact.tangential.solver` (active-set iteration), :mod:`~contact.tangential.kernels`
-(compiled loops), :mod:`~contact.tangential.forcecontrol`, :mod:`~contact.tangential.steady`
-(steady rolling), :mod:`~contact.tangential.nested` (coarse-grid start),
-:mod:`~contact.tangential.shift`, :mod:`~contact.tangential.results`.
+Modules: :mod:`~contact.tangential._kinematics` (creepage, slip), :mod:`contact._grid` (the grid),
+:mod:`~contact.tangential._normal` (pressure with an extra gap),
+:mod:`~contact.tangential._solver` (active-set iteration), :mod:`~contact.tangential._kernels`
+(compiled loops), :mod:`~contact.tangential._forcecontrol`, :mod:`~contact.tangential._steady`
+(steady rolling), :mod:`~contact.tangential._nested` (coarse-grid start),
+:mod:`~contact.tangential._shift`, :mod:`~contact.tangential._results`.
 """
 
-from contact.grid import Grid, cylinder_grid, sphere_grid
+from contact._grid import Grid, cylinder_grid, sphere_grid
 from contact.halfspace.constants import PairConstants, pair_constants, pair_constants_from
-from contact.tangential.kinematics import Creepage
-from contact.tangential.results import TangentialResult
-from contact.tangential.shift import compress_in_steps, shift
-from contact.tangential.steady import RollingOptions, steady_rolling
+from contact.tangential._kinematics import Creepage
+from contact.tangential._results import TangentialResult
+from contact.tangential._shift import compress_in_steps, shift
+from contact.tangential._steady import RollingOptions, steady_rolling
 
 __all__ = [
     "Creepage", "Grid", "PairConstants", "RollingOptions", "TangentialResult",

@@ -11,17 +11,17 @@ boundary elements on a grid), :mod:`.loss` (loss data of materials, with sources
 :mod:`.result` (the result record). Guide: docs/viscoelastic_rolling.md.
 """
 
-from contact.viscoelastic.hunter import HunterSolution, hunter_cylinder
-from contact.viscoelastic.line import rolling_cylinder, solve_line
-from contact.viscoelastic.result import RollingResult
-from contact.viscoelastic.rheology import (
+from contact.viscoelastic._hunter import HunterSolution, hunter_cylinder
+from contact.viscoelastic._line import rolling_cylinder, solve_line
+from contact.viscoelastic._result import RollingResult
+from contact.viscoelastic._rheology import (
     CreepSeries,
     PronySeries,
     StandardLinearSolid,
     pair_creep,
 )
-from contact.viscoelastic.traction import TractionResult, steady_traction
-from contact.viscoelastic.traction3d import (
+from contact.viscoelastic._traction import TractionResult, steady_traction
+from contact.viscoelastic._traction3d import (
     ViscoHalfSpacePair,
     ViscoRolling,
     visco_steady_tractions,

@@ -2,7 +2,7 @@
 
 With ``nitpicky = True`` Sphinx warns on every reference it cannot link. The API pages
 document the public faces only, so a docstring's reference to an engine's inner function
-(``contact.rolling.sphere_sweep``) has no page to link to; this extension silences such a
+(``contact._rolling.sphere_sweep``) has no page to link to; this extension silences such a
 warning when the dotted name resolves to a real module, attribute or dataclass field of
 surfmet, contact or profiles, and lets it through when it resolves to nothing (a typo, a
 renamed or removed function). Under ``-W`` that warning fails the build.

@@ -18,7 +18,7 @@ print(f"{plate.nx} x {plate.ny} points, pixel {plate.dx * 1e6:.1f} µm")
 
 # %%
 # The roughness call is the one ``surfmet roughness`` makes: the same defaults, the same
-# record (``surfmet.records.roughness.roughness_record(res)`` is the command's ``--json``).
+# record (``surfmet.records._roughness.roughness_record(res)`` is the command's ``--json``).
 
 res = roughness(plate, level="plane", lc="0.8mm", ls="25um", spikes=True)
 for name in ("Sa", "Sq", "Sz", "Ssk", "Sku"):

@@ -34,7 +34,7 @@ The aluminium plate (Table 2, Figs. 13-14)
 - 60 spikes (single-pixel optical outliers, 20-150 µm, four in five upwards), the kind
   NanoFocus scans carry and that make Table 1's Sq/Sa reach 4.3. They are documented
   artefacts, not roughness: ``surfmet hertz-check`` and ``surfmet rolling`` remove them
-  (``surfmet.spikes``) before the contact analysis.
+  (``surfmet._spikes``) before the contact analysis.
 - Heights rounded to float32 (the file stores ``F`` data; 2 MB).
 
 The steel ball (Table 2, Figs. 15-16)
@@ -44,7 +44,7 @@ The steel ball (Table 2, Figs. 15-16)
 - Roughness: white at the 50 µm pitch, heavy-tailed (Student t, 2.2 degrees of freedom)
   because Table 2's Rq/Ra = 0.316/0.210 = 1.50 is far above a Gaussian's 1.25; scaled so
   that the median row Rq equals Table 2's mean 0.316 µm (Ra then lands on 0.211 µm).
-  About 0.5 % of its points are then isolated outliers that ``surfmet.spikes`` flags, as
+  About 0.5 % of its points are then isolated outliers that ``surfmet._spikes`` flags, as
   the outliers of a real 50 µm-pitch optical scan of a polished ball would be (a bearing
   ball's true Ra is nearer 0.02 µm: Table 2's 0.21 µm is mostly instrument noise).
   Settings: ``--profile row:K --level poly:2 --lc 0.8mm`` (the parabola takes the ball's
@@ -74,8 +74,8 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
+from surfmet._model import Topography  # noqa: E402
 from surfmet.io import encode  # noqa: E402
-from surfmet.model import Topography  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 
 SEED = 20220325  # Materials 15(7):2518 was published in March 2022

@@ -10,8 +10,8 @@ For the smooth steel ball (R = 20 mm) on the aluminium plate, at the rotor's bal
 
 - viscoelastic hysteresis, computed (contact.viscoelastic) from the metals' loss factors
   with each loss peak placed at the contact frequency V/a (an upper bound),
-- the hysteresis rule with alpha_h = 2 pi eta (contact.rolling),
-- first-pass plastic work at the aluminium's hardness (contact.rolling),
+- the hysteresis rule with alpha_h = 2 pi eta (contact._rolling),
+- first-pass plastic work at the aluminium's hardness (contact._rolling),
 - micro-slip of free rolling between the dissimilar elastic bodies (contact.tangential,
   mu = 0.3 assumed),
 
@@ -48,7 +48,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
-from contact.viscoelastic.loss import loss_data  # noqa: E402
+from contact.viscoelastic._loss import loss_data  # noqa: E402
 from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms  # noqa: E402
 
 RADIUS = 0.02

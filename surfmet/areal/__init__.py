@@ -1,4 +1,4 @@
-"""Areal (3D) surface texture of a :class:`~surfmet.model.Topography`: the areal layer above
+"""Areal (3D) surface texture of a :class:`~surfmet._model.Topography`: the areal layer above
 the profile engine (:mod:`profiles`), one concept per module.
 
 Rooms
@@ -15,6 +15,6 @@ parameters      all of them in one call (:func:`areal_parameters`), units and gr
 Every parameter uses the measured (non-NaN) points of the scan and nothing else.
 """
 
-from surfmet.areal.parameters import GROUPS, PARAMETER_UNITS, ArealParameters, areal_parameters
+from surfmet.areal._parameters import GROUPS, PARAMETER_UNITS, ArealParameters, areal_parameters
 
 __all__ = ["GROUPS", "PARAMETER_UNITS", "ArealParameters", "areal_parameters"]

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography, require_measurement
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography, require_measurement
 
 
 def heights_of(topo: Topography) -> np.ndarray:

@@ -133,7 +133,7 @@ def negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> list[st
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit status."""
-    from surfmet.errors import user_error_types
+    from surfmet._errors import user_error_types
 
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = None

@@ -9,7 +9,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any, TypeVar
 
 from surfmet import units
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 T = TypeVar("T")
 
@@ -83,8 +83,8 @@ def spike_summary(prep: Any) -> str:
 
 def check_output(path: Any, option: str) -> None:
     """Refuse, before any work, an output path that cannot be written
-    (:func:`surfmet.atomic.check_writable`)."""
-    from surfmet.atomic import check_writable
+    (:func:`surfmet._atomic.check_writable`)."""
+    from surfmet._atomic import check_writable
 
     check_writable(path, option)
 
@@ -133,8 +133,8 @@ def show_progress(args: Any) -> bool:
 
 def progress(iterable: Iterable[T], total: int | None = None, desc: str = "",
              show: bool | None = True) -> Iterator[T]:
-    """Progress on stderr over a long loop (:func:`surfmet.batch.progress_bar`)."""
-    from surfmet.batch import progress_bar
+    """Progress on stderr over a long loop (:func:`surfmet._batch.progress_bar`)."""
+    from surfmet._batch import progress_bar
 
     with progress_bar(total, desc, show) as bar:
         for item in iterable:
@@ -143,12 +143,12 @@ def progress(iterable: Iterable[T], total: int | None = None, desc: str = "",
 
 
 def print_solve(record: Any, label: str = "solve", warned: Iterable[str] = ()) -> None:
-    """The solve record's line (:meth:`contact.record.SolveRecord.text`; ``record`` the
+    """The solve record's line (:meth:`contact._record.SolveRecord.text`; ``record`` the
     record or its JSON), and its
     edge-contact warning on a line of its own unless a warning about the domain edge is
     among ``warned`` (printed by the command already); the label padded as in the tables."""
     if isinstance(record, dict):  # a command's JSON "solve" object
-        from surfmet.records.solve import solve_from_record
+        from surfmet.records._solve import solve_from_record
 
         record = solve_from_record(record)
     indent = " " * (len(label) - len(label.lstrip()))

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import pixel_source
 
 __all__ = ["MIN_GRID", "add_grid_argument", "add_on_edge_argument", "check_grid", "pixel_source"]

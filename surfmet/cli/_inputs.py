@@ -1,7 +1,7 @@
 """Every command states its inputs: :func:`surfmet.cli.build_parser` wraps each command's
 ``func`` (:func:`stating_inputs`) to run inside :func:`invocation`, so that its JSON
 (:func:`surfmet.cli._common.emit_json`) carries an ``"inputs"`` record and its text ends
-with the ``inputs`` lines (:mod:`surfmet.records.inputs`): no command can forget them,
+with the ``inputs`` lines (:mod:`surfmet.records._inputs`): no command can forget them,
 and a new one states its inputs without a line of its own.
 """
 
@@ -56,7 +56,7 @@ def _unit(action: argparse.Action, name: str) -> str | None:
 def _parse_text(name: str, text: str) -> Any:
     """An option's text that its command parses itself, parsed by the same function, or
     the text unchanged where it is not a quantity (``--lc none``)."""
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.units import parse_force, parse_length, parse_pressure, parse_speed
 
     parsers = {"m": parse_length, "N": parse_force, "m/s": parse_speed}
@@ -81,10 +81,10 @@ def _parse_text(name: str, text: str) -> Any:
 
 def command_inputs(actions: Iterable[argparse.Action], args: argparse.Namespace
                    ) -> dict[str, Any]:
-    """The ``"inputs"`` record (:func:`surfmet.records.inputs.inputs_record`) of a command
+    """The ``"inputs"`` record (:func:`surfmet.records._inputs.inputs_record`) of a command
     run with ``args``: every option and positional of its parser (``actions``) but those
     of :data:`NOT_INPUTS`, defaults included, each with the unit of its parser."""
-    from surfmet.records.inputs import inputs_record
+    from surfmet.records._inputs import inputs_record
 
     def triples() -> Iterator[tuple[str, Any, str | None]]:
         for action in actions:
@@ -172,6 +172,6 @@ def print_text(state: dict[str, Any]) -> None:
     rec = current_inputs()
     if not rec:
         return
-    from surfmet.records.inputs import inputs_lines
+    from surfmet.records._inputs import inputs_lines
 
     print("\n".join(inputs_lines(rec)), file=sys.stdout)

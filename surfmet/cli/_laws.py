@@ -15,7 +15,7 @@ import math
 import re
 from typing import Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 __all__ = ["add_law_arguments", "angle", "interaction_from_arguments"]
 
@@ -68,8 +68,8 @@ def add_law_arguments(p: Any, default: str, help_head: str) -> None:
 def interaction_from_arguments(args: argparse.Namespace, *, optional: bool = False) -> Any:
     """The law ``--interaction`` names, of the parameters given as options; with
     ``optional``, None where no law parameter was given at all."""
+    from contact._errors import ContactInputError
     from contact.adhesion.laws import build_law, law_parameters
-    from contact.errors import ContactInputError
 
     values = {k: getattr(args, k, None) for k in law_parameters()}
     if optional and all(v is None for v in values.values()):

@@ -8,8 +8,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from surfmet._errors import SurfmetInputError
 from surfmet.cli._common import emit_json, log
-from surfmet.errors import SurfmetInputError
 
 
 def add_resolution_study_flag(parser: Any) -> None:

@@ -1,15 +1,15 @@
 """``surfmet rotor --plate FILE [--ball FILE]``: the scans that give the rough contact's
 extent beside the Hertz radius in the verdict's arm bound
-(:mod:`surfmet.mechanics.rotor_rough_bound`)."""
+(:mod:`surfmet.mechanics._rotor_rough_bound`)."""
 
 from __future__ import annotations
 
 import argparse
 from typing import Any
 
+from surfmet._errors import SurfmetInputError
 from surfmet.cli._grid import add_grid_argument, check_grid
 from surfmet.cli._scan_options import add_scan_options, read_bodies
-from surfmet.errors import SurfmetInputError
 
 __all__ = ["add_scan_arguments", "read_rotor_scans", "rough_bound"]
 
@@ -45,7 +45,7 @@ def rough_bound(args: argparse.Namespace, verdict: Any) -> Any:
     if verdict is None or verdict.arm is None or verdict.rig is None:
         raise SurfmetInputError("--plate needs the rig's arm bound (paper2022, or --rig "
                                 "RIG.json)")
-    from surfmet.mechanics.rotor_rough_bound import rough_arm_bound
+    from surfmet.mechanics._rotor_rough_bound import rough_arm_bound
 
     return rough_arm_bound(verdict.arm, verdict.rig.ball_radius, args.plate, args.ball,
                            grid=args.grid)

@@ -10,7 +10,7 @@ from typing import Any
 
 from surfmet.cli._common import positive_length
 
-#: ``--element-start`` choices: the pairings of :data:`profiles.elements.ELEMENT_STARTS`
+#: ``--element-start`` choices: the pairings of :data:`profiles._elements.ELEMENT_STARTS`
 #: (the command line names them without importing the engine)
 ELEMENT_STARTS = ("peak", "first-crossing")
 

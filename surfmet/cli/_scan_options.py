@@ -27,7 +27,7 @@ import re
 from typing import Any
 
 from surfmet import units
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 _BARE = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*$")
 
@@ -152,7 +152,7 @@ def read_bodies(args: argparse.Namespace, bodies: tuple[str, ...] = ("plate", "b
 
 def scan_caveats(*scans: Any) -> list[str]:
     """Each scan's units that were assumed or stated by the user
-    (:meth:`surfmet.model.Calibration.caveats`), prefixed by its file when several scans
+    (:meth:`surfmet._model.Calibration.caveats`), prefixed by its file when several scans
     are given; for the ``caveats`` of a command's text and JSON."""
     named = [s for s in scans if s is not None]
     out = []

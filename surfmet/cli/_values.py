@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import Any
 
 from surfmet import units
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.value_lists import DEFAULT_POINTS, MAX_POINTS, parse_values, split_items
 
 #: The help text's description of a list-or-range option (its metavar).
@@ -87,7 +87,7 @@ def add_interaction_argument(p: Any) -> None:
     (:data:`surfmet.mechanics.adhesion.INTERACTION`), and the laws' parameter options
     (:func:`surfmet.cli._laws.add_law_arguments`)."""
     from surfmet.cli._laws import add_law_arguments
-    from surfmet.mechanics.adhesion_laws import INTERACTION
+    from surfmet.mechanics._adhesion_laws import INTERACTION
 
     add_law_arguments(p, INTERACTION, f"adhesion law (default {INTERACTION}, in every "
                       "command)")

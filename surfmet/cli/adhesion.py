@@ -69,8 +69,8 @@ and with the rigid cylinder's. With PLATE the roughness is the scan's middle row
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
-    from contact.adhesion.ring_ball import ZONE_RINGS
-    from contact.zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN
+    from contact._zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN
+    from contact.adhesion._ring_ball import ZONE_RINGS
     from surfmet.units import parse_surface_energy
 
     p = sub.add_parser(
@@ -124,11 +124,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.batch import progress_bar
+    from surfmet._batch import progress_bar
     from surfmet.cli._laws import interaction_from_arguments
     from surfmet.mechanics.adhesion import adhesion, plot
     from surfmet.mechanics.adhesion_line import line_adhesion, line_plot, refuse_ball
-    from surfmet.records.adhesion import adhesion_record, line_record
+    from surfmet.records._adhesion import adhesion_record, line_record
     from surfmet.units import readable_quantities
 
     law = interaction_from_arguments(args)  # its options checked before any scan is read

@@ -94,7 +94,7 @@ def run(args: argparse.Namespace) -> int:
         return run_study(args, "contact")
     check_grid(args.grid)
     check_output(args.out, "--out")
-    from surfmet.batch import progress_bar
+    from surfmet._batch import progress_bar
 
     # a smooth ball on a small grid is done before a line would help
     big = (args.grid or 0) >= 512 or bool(args.plate or args.ball)
@@ -119,12 +119,12 @@ def run(args: argparse.Namespace) -> int:
         for w in sol.warnings:
             log(f"warning: {w}")
 
-    from surfmet.records.contact import ball_contact_record
+    from surfmet.records._contact import ball_contact_record
 
     rec = ball_contact_record(sol)
     rec["grid"]["pixel_source"] = pixel_source(res.dx, pair, args.grid)
     if args.out:
-        from surfmet.atomic import atomic_open
+        from surfmet._atomic import atomic_open
 
         with atomic_open(args.out, "wb") as fh:  # a file object: numpy adds no suffix
             np.savez_compressed(fh, **res.arrays(), dx=res.dx, dy=res.dy,

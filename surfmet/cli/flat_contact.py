@@ -116,8 +116,8 @@ def add_adhesion_arguments(p: argparse.ArgumentParser) -> None:
 def adhesion_law(args: argparse.Namespace) -> Any:
     """The adhesion law the arguments ask for (:mod:`surfmet.cli._laws`: the law
     ``--interaction`` names, of its parameters), or None where no law parameter is given."""
+    from surfmet._errors import SurfmetInputError
     from surfmet.cli._laws import interaction_from_arguments
-    from surfmet.errors import SurfmetInputError
 
     work = getattr(args, "work_of_adhesion", None)
     if work is not None and not work > 0:
@@ -126,8 +126,8 @@ def adhesion_law(args: argparse.Namespace) -> Any:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.batch import progress_bar
-    from surfmet.errors import SurfmetInputError
+    from surfmet._batch import progress_bar
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.flat_contact import flat_contact, plot
     from surfmet.records import flat_contact_record
 
@@ -163,12 +163,12 @@ def run(args: argparse.Namespace) -> int:
 
 def _run_several(args: argparse.Namespace, scans: list[Any], pressures: Any, law: Any) -> int:
     """Persson from the averaged PSD of all measurements; the BEM on the first map."""
-    from surfmet.batch import progress_bar
+    from surfmet._batch import progress_bar
+    from surfmet._model import Topography
     from surfmet.mechanics.all_scales import all_scales
     from surfmet.mechanics.flat_contact import flat_contact, plot
-    from surfmet.model import Topography
     from surfmet.records import flat_contact_record
-    from surfmet.records.all_scales import all_scales_record
+    from surfmet.records._all_scales import all_scales_record
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
     # the facade resolves --materials or --e-star once, before the analysis

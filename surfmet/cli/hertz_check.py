@@ -93,7 +93,7 @@ def run(args: argparse.Namespace) -> int:
     from surfmet.cli._values import require_plate
 
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.hertz_check import hertz_check
     from surfmet.units import format_length, format_quantity, readable_quantities
 
@@ -118,7 +118,7 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(check.figure(args.plot), args.plot)
     if args.json:
-        from surfmet.records.hertz import hertz_check_record
+        from surfmet.records._hertz import hertz_check_record
 
         emit_json(hertz_check_record(check))
         return 0
@@ -155,7 +155,7 @@ def run(args: argparse.Namespace) -> int:
           f"({source}); "
           f"load {check.load:.4g} N, R = {format_length(check.radius)}, "
           f"{check.ball_material.name} on {check.plate_material.name}")
-    from surfmet.records.hertz import hertz_check_solve
+    from surfmet.records._hertz import hertz_check_solve
 
     print_solve(hertz_check_solve(check))
     return 0

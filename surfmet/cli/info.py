@@ -6,10 +6,10 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from surfmet._model import SOURCE_WORDS, STATED, unit_text
 from surfmet.cli._common import add_json_flag, emit_json
 from surfmet.cli._scan_options import add_scan_options, read_options
-from surfmet.model import SOURCE_WORDS, STATED, unit_text
-from surfmet.records.scans import channel_record
+from surfmet.records._scans import channel_record
 from surfmet.units import format_length
 
 

@@ -72,12 +72,12 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
 
     check_output(args.output, "-o")
     read_bodies(args, ("ball",))  # the ball as the user states it (--ball-pixel...)
+    from surfmet._report_hertz import HertzOptions, hertz_check_available
     from surfmet.report import write_report
-    from surfmet.report_hertz import HertzOptions, hertz_check_available
 
     options = roughness_options(args)
     given = [n for n in ("radius", "load", "materials") if getattr(args, n) is not None]
@@ -112,7 +112,7 @@ def run(args: argparse.Namespace) -> int:
         rec: dict[str, Any] = {"output": args.output,
                                "scans": [s.summary() for s in sections]}
         if rotor is not None:  # the verdict record surfmet rotor --json emits
-            from surfmet.records.rotor_verdict import verdict_record
+            from surfmet.records._rotor_verdict import verdict_record
 
             rec["rotor"] = {"verdict": verdict_record(rotor)}
         emit_json(rec)
@@ -123,15 +123,15 @@ def run(args: argparse.Namespace) -> int:
 
 def _rotor_verdict(args: argparse.Namespace) -> Any:
     """The verdict ``surfmet rotor`` gives on ``--rotor`` (with ``--rig``), or None."""
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
 
     if args.rotor is None:
         if args.rig:
             raise SurfmetInputError("--rig goes with --rotor TABLE")
         return None
     from rotor import FPS, MARK_STEP
+    from surfmet._frames import read_frames_table
     from surfmet.cli.rotor import PAPER_ALIAS, _paper_path
-    from surfmet.frames import read_frames_table
     from surfmet.mechanics.rotor_verdict import judge, load_rig, paper_verdict
 
     if args.rotor == PAPER_ALIAS and not args.rig:

@@ -21,9 +21,9 @@ from surfmet.cli._common import (
 )
 from surfmet.cli._grid import add_grid_argument, check_grid, pixel_source
 from surfmet.cli._resolution_study import add_resolution_study_flag
+from surfmet.cli._rolling_visco import add_visco_arguments, run_visco
 from surfmet.cli._scan_options import add_scan_options, read_bodies
 from surfmet.cli._values import VALUES_METAVAR, loads, positions, refuse_unused, values_help
-from surfmet.cli.rolling_visco import add_visco_arguments, run_visco
 
 EPILOG = """examples:
   surfmet rolling plate.x3p --radius 20mm --materials steel,aluminium \\
@@ -118,7 +118,7 @@ def run(args: argparse.Namespace) -> int:
     read_bodies(args)  # the scans as the user states them (--height-unit, --pixel...)
     import math
 
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.rolling_resistance import rolling_resistance
     from surfmet.units import format_length, format_quantity
 
@@ -159,7 +159,7 @@ def run(args: argparse.Namespace) -> int:
     pair = rep.scans.pair if rep.scans is not None else None
     source = pixel_source(s.settings["dx"], pair, args.grid)
     if args.json:
-        from surfmet.records.rolling import rolling_record
+        from surfmet.records._rolling import rolling_record
 
         emit_json(rolling_record(rep))
         return 0
@@ -189,7 +189,7 @@ def run(args: argparse.Namespace) -> int:
 def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
     """Several track positions through
     :func:`surfmet.mechanics.rolling_resistance.rolling_tracks`."""
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.rolling_resistance import rolling_tracks
 
     if args.workers is not None and args.workers < 1:
@@ -207,7 +207,7 @@ def _run_tracks(args: argparse.Namespace, loads: Any) -> int:
         spikes=args.spikes, grid=args.grid)
     failed = [t for t in rep.tracks if t.get("error")]
     if args.json:
-        from surfmet.records.rolling import tracks_record
+        from surfmet.records._rolling import tracks_record
 
         emit_json({**tracks_record(rep), "model": args.model})
         return 1 if failed else 0

@@ -16,9 +16,9 @@ from surfmet.cli._common import (
     speed,
     spike_summary,
 )
+from surfmet.cli._rolling_contact_text import print_summary
+from surfmet.cli._rolling_contact_visco import add_visco_options, run_viscoelastic
 from surfmet.cli._scan_options import add_scan_options, read_bodies
-from surfmet.cli.rolling_contact_text import print_summary
-from surfmet.cli.rolling_contact_visco import add_visco_options, run_viscoelastic
 
 EPILOG = """examples:
   surfmet rolling-contact --radius 20mm --load 5N --materials steel,aluminium --mu 0.3
@@ -77,9 +77,9 @@ def run(args: argparse.Namespace) -> int:
     import math
 
     from surfmet import units
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.mechanics.rolling_contact import parse_line_load, solve_rolling_contact
-    from surfmet.records.rolling_contact import rolling_contact_record
+    from surfmet.records._rolling_contact import rolling_contact_record
 
     if args.creepage is not None and not math.isfinite(args.creepage):
         raise SurfmetInputError("--creepage must be a finite number")

@@ -16,9 +16,9 @@ from pathlib import Path
 from typing import Any
 
 from rotor import FPS, MARK_STEP, TABLE3_FILENAME
+from surfmet._errors import SurfmetInputError
 from surfmet.cli._common import add_json_flag, add_quiet_flag, check_output, emit_json, log
 from surfmet.cli._rotor_scans import add_scan_arguments, read_rotor_scans, rough_bound
-from surfmet.errors import SurfmetInputError
 from surfmet.mechanics._rotor_adequacy import adequacy_sentences
 from surfmet.mechanics.rotor_verdict import (
     table_verdict,
@@ -26,8 +26,8 @@ from surfmet.mechanics.rotor_verdict import (
     verdict_lines,
     verdict_plot_path,
 )
-from surfmet.records.rotor_analysis import analysis_record
-from surfmet.records.rotor_verdict import verdict_record
+from surfmet.records._rotor_analysis import analysis_record
+from surfmet.records._rotor_verdict import verdict_record
 from surfmet.units import display_unit
 
 PAPER_ALIAS = "paper2022"
@@ -201,7 +201,7 @@ def run(args: argparse.Namespace) -> int:
         raise SurfmetInputError(f"--step-deg must be positive, got {args.step_deg}")
     read_rotor_scans(args)
     source = str(_paper_path()) if args.file == PAPER_ALIAS else args.file
-    from surfmet.frames import read_frames_table
+    from surfmet._frames import read_frames_table
 
     ks, cols = read_frames_table(source)
     if args.plot:

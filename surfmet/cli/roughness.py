@@ -106,7 +106,7 @@ def _print_table(rec: dict[str, Any]) -> None:
 
 
 def _conditions_line(cond: dict[str, Any]) -> str:
-    from surfmet.profile_roughness import FROM_DEFAULT_PEAK
+    from surfmet._profile_roughness import FROM_DEFAULT_PEAK
     from surfmet.units import format_length
 
     def length(block: dict[str, Any]) -> str:
@@ -160,7 +160,7 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
             if sym not in units:
                 symbols.append(sym)
                 units[sym] = q["unit"]
-    from surfmet.atomic import atomic_open
+    from surfmet._atomic import atomic_open
     from surfmet.units import csv_column, valid_text
 
     cols = (["file", "status", "error", "standard", csv_column("lc", "m"), csv_column("ls", "m"),
@@ -184,8 +184,8 @@ def _write_csv(records: list[dict[str, Any]], out: str) -> None:
 def run(args: argparse.Namespace) -> int:
     from functools import partial
 
-    from surfmet.batch import batch_map
-    from surfmet.measurements import Measurement, expand_measurements, read_measurement
+    from surfmet._batch import batch_map
+    from surfmet._measurements import Measurement, expand_measurements, read_measurement
     from surfmet.roughness import roughness, roughness_file
 
     check_output(args.csv if args.csv != "-" else None, "--csv")
@@ -198,7 +198,7 @@ def run(args: argparse.Namespace) -> int:
         scan = (read_measurement(item, **read_options(args))
                 if isinstance(item, Measurement) else read_scan(item, args))
         res = roughness(scan, **opts)
-        from surfmet.records.roughness import roughness_record
+        from surfmet.records._roughness import roughness_record
 
         rec = {"file": str(item), "status": "ok", **roughness_record(res)}
         if args.json:

@@ -66,7 +66,7 @@ def read_measurements(files: list[str], **read_options: Any) -> list[Any]:
     from pathlib import Path
 
     import surfmet
-    from surfmet.io.calibration import state_units
+    from surfmet.io._calibration import state_units
     from surfmet.io.container import _is_container, read_container
 
     units = {k: v for k, v in read_options.items() if k != "channel"}
@@ -83,7 +83,7 @@ def read_measurements(files: list[str], **read_options: Any) -> list[Any]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.records.scales import scales_record
+    from surfmet.records._scales import scales_record
     from surfmet.scale_dependent import analyze_scales
 
     check_output(args.plot, "--plot")

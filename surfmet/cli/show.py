@@ -74,7 +74,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.roughness import roughness
 
     out = Path(args.output)
@@ -106,13 +106,13 @@ def run(args: argparse.Namespace) -> int:
         close(fig)
         rec.update(view="2d", shown=[])
     else:
-        from surfmet.render import render_3d
+        from surfmet._render import render_3d
 
         img = render_3d(res.surface, out, exaggeration=args.exaggeration, cmap=args.cmap,
                         window_size=args.size, max_points=args.max_points)
         rec.update(view="3d", size=[int(img.shape[1]), int(img.shape[0])], shown=[])
     # named as the roughness command names the record of the same surface
-    from surfmet.records.roughness import roughness_record
+    from surfmet.records._roughness import roughness_record
 
     rec["roughness"] = {"file": drawn["name"] if drawn else args.file, "status": "ok",
                         **roughness_record(res)}
@@ -144,7 +144,7 @@ def _check_picture(args: argparse.Namespace) -> None:
     import matplotlib as mpl
     from matplotlib.backend_bases import FigureCanvasBase
 
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
 
     if args.cmap not in mpl.colormaps:
         names = sorted(n for n in mpl.colormaps if not n.endswith("_r"))
@@ -170,7 +170,7 @@ def _draw_profile(res: Any, out: Path, name: str) -> None:
 
 
 def _save(fig: Any, out: Path) -> None:
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.plots._style import save
 
     try:

@@ -69,7 +69,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     from surfmet.cli.scales import read_measurements
     from surfmet.mechanics.spectrum import scan_spectrum
-    from surfmet.records.spectrum import spectrum_command_record
+    from surfmet.records._spectrum import spectrum_command_record
 
     check_output(args.plot, "--plot")
     scans = read_measurements(args.files, **read_options(args))
@@ -95,7 +95,7 @@ def _run_several(args: argparse.Namespace, scans: list[Any]) -> int:
     """The averaged PSD of several measurements and the rms values of its band."""
     from surfmet.cli.scales import print_all_scales
     from surfmet.mechanics.all_scales import all_scales
-    from surfmet.records.all_scales import all_scales_record
+    from surfmet.records._all_scales import all_scales_record
 
     log(f"{len(scans)} measurements from {len(args.files)} file(s)")
     # the facade resolves the materials (with --hardness), before the analysis

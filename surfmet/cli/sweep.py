@@ -83,7 +83,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
     from surfmet.sweep import RowWriter, run_sweep, sweep_items
 
     if args.csv is None and args.json is None:
@@ -95,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
     if args.workers is not None and args.workers < 1:
         raise SurfmetInputError("--workers must be at least 1")
     if args.scheduler is not None:
-        from surfmet.batch import check_scheduler
+        from surfmet._batch import check_scheduler
 
         check_scheduler(args.scheduler)  # before the files are touched
     items = sweep_items(task=args.task, loads=args.loads, radius=args.radius,
@@ -117,7 +117,7 @@ def run(args: argparse.Namespace) -> int:
     failed = [r for r in rows if r["status"][0] == "error"]
     if to_stdout:
         from surfmet.cli._common import emit_json
-        from surfmet.records.sweep import sweep_row_record
+        from surfmet.records._sweep import sweep_row_record
 
         emit_json({"task": args.task, "rows": [sweep_row_record(r) for r in rows],
                    "caveats": caveats})

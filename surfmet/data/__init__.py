@@ -15,7 +15,7 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 
 def names() -> tuple[str, ...]:

@@ -26,17 +26,17 @@ Figures and ``summary.json`` (every dimensional value ``{"value": v, "unit": "..
 go to the output folder; :func:`story` turns the summary into the text ``surfmet demo``
 prints.
 
-Modules: :mod:`~surfmet.demo.outputs` (the output folder and ``summary.json``),
-:mod:`~surfmet.demo.settings` (the settings and Table 2; the paper's rotor facts are
+Modules: :mod:`~surfmet.demo._outputs` (the output folder and ``summary.json``),
+:mod:`~surfmet.demo._settings` (the settings and Table 2; the paper's rotor facts are
 :mod:`rotor._paper`),
-:mod:`~surfmet.demo.surfaces`, :mod:`~surfmet.demo.mechanics` and
-:mod:`~surfmet.demo.lawofmotion` (the steps), :mod:`~surfmet.demo.figures`,
-:mod:`~surfmet.demo.run` (the steps in order) and :mod:`~surfmet.demo.story` (the text).
+:mod:`~surfmet.demo._surfaces`, :mod:`~surfmet.demo._mechanics` and
+:mod:`~surfmet.demo._lawofmotion` (the steps), :mod:`~surfmet.demo._figures`,
+:mod:`~surfmet.demo._run` (the steps in order) and :mod:`~surfmet.demo._story` (the text).
 """
 
-from surfmet.demo.outputs import FIGURES, GENERATOR, SUMMARY, data_file, prepare_output
-from surfmet.demo.run import run_demo
-from surfmet.demo.story import story
+from surfmet.demo._outputs import FIGURES, GENERATOR, SUMMARY, data_file, prepare_output
+from surfmet.demo._run import run_demo
+from surfmet.demo._story import story
 
 __all__ = ["FIGURES", "GENERATOR", "SUMMARY", "data_file", "prepare_output", "run_demo",
            "story"]

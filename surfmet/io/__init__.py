@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import importlib
 
-from surfmet.io.registry import (
+from surfmet.io._registry import (
     FormatSpec,
     detect_format,
     formats,
@@ -18,7 +18,7 @@ from surfmet.io.registry import (
     register_reader,
     register_writer,
 )
-from surfmet.io.writing import encode, write
+from surfmet.io._writing import encode, write
 
 # Every built-in format module; each registers itself on import. Order matters only for
 # magic detection ties, which ``priority`` settles.
@@ -133,7 +133,7 @@ def read_container(path):
     >>> read_container(path("paper_plate.x3p"))
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetFormatError: ...: not a contact.engineering container ...)
+    surfmet._errors.SurfmetFormatError: ...: not a contact.engineering container ...)
     """
     from surfmet.io.container import read_container as _read
 

@@ -2,7 +2,7 @@
 
 Every size a header states is checked against the bytes that are really there before
 anything is allocated, so a 1 KB file claiming a 10^9-point grid fails fast with a clear
-:class:`~surfmet.errors.SurfmetFormatError` instead of allocating gigabytes.
+:class:`~surfmet._errors.SurfmetFormatError` instead of allocating gigabytes.
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
-from surfmet.model import Profile
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Profile
 
 # Largest grid any reader accepts: 2**31 points is 16 GiB of float64, beyond any instrument.
 MAX_POINTS = 2**31

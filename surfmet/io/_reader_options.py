@@ -10,7 +10,7 @@ import inspect
 from collections.abc import Callable
 from typing import Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 # The functions take a format's name and its decoder, not the registry's FormatSpec, so that
 # this module needs nothing from the registry that calls it.
@@ -32,7 +32,7 @@ def accepts(decode: Decoder, option: str) -> bool:
 def take_generic_options(fmt: str, decode: Decoder, options: dict[str, Any], name: str
                          ) -> dict[str, Any]:
     """Take out of ``options`` the units the user states that the reader does not take
-    itself (:func:`surfmet.io.calibration.state_units` applies them after the read), and
+    itself (:func:`surfmet.io._calibration.state_units` applies them after the read), and
     refuse ``channel`` for a format that holds a single one."""
     if options.get("channel") is not None and not accepts(decode, "channel"):
         raise SurfmetInputError(f"{name}: a {fmt} file holds a single channel: no "

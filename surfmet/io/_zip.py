@@ -2,7 +2,7 @@
 
 A member's declared size is checked against a limit and against what deflate can expand
 to before anything is decompressed, so a zip bomb or a corrupted central directory fails
-with one :class:`~surfmet.errors.SurfmetFormatError` line.
+with one :class:`~surfmet._errors.SurfmetFormatError` line.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import io
 import zipfile
 import zlib
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
 from surfmet.io._binary import MAX_DEFLATE_RATIO, format_error
 
 ZIP_MAGIC = b"PK\x03\x04"

@@ -24,9 +24,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "al3d"
 MAGIC = b"AliconaImaging\x00\r\n"
@@ -118,7 +118,7 @@ def _image_block(r: ByteReader, tags: dict[str, str], key: str, row_bytes: int, 
 @register_reader(FORMAT, extensions=("al3d",), description="Alicona Imaging AL3D",
                  magic=_is_al3d, priority=10)
 def decode(buf: bytes, name: str) -> Topography:
-    """Read an Alicona ``.al3d`` file into a :class:`~surfmet.model.Topography`."""
+    """Read an Alicona ``.al3d`` file into a :class:`~surfmet._model.Topography`."""
     tags, header_end = read_header(buf, name)
     r = ByteReader(buf, name, FORMAT)
     nx = _int(_need(tags, "Cols", r), "Cols", r)

@@ -18,7 +18,7 @@ Three flavours are recognised:
   ``# Value units: m`` comment lines, then the matrix.
 * **Bare matrix** of numbers separated by blanks, commas, semicolons or tabs. It carries
   no unit and no pixel size: it is read as heights in metres with ``dx = dy = 1`` m, both
-  marked assumed (:class:`surfmet.model.Calibration`); ``height_unit=`` and ``dx=`` /
+  marked assumed (:class:`surfmet._model.Calibration`); ``height_unit=`` and ``dx=`` /
   ``dy=`` of :func:`surfmet.read` state them (a unit the header states cannot be
   contradicted: it is refused).
 
@@ -32,7 +32,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import ASSUMED, STATED, USER, Topography
 from surfmet.io._binary import (
     MAX_POINTS,
     check_grid,
@@ -41,9 +42,8 @@ from surfmet.io._binary import (
     format_error,
     looks_like_text,
 )
-from surfmet.io.calibration import contradiction
-from surfmet.io.registry import register_reader
-from surfmet.model import ASSUMED, STATED, USER, Topography
+from surfmet.io._calibration import contradiction
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor
 
 FORMAT = "asc"

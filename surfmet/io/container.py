@@ -35,12 +35,12 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import STATED, Profile, Topography, unit_sources
 from surfmet.io._binary import format_error
+from surfmet.io._registry import read_bytes, register_reader
+from surfmet.io._sources import Source, source_bytes
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip, read_member
-from surfmet.io.registry import read_bytes, register_reader
-from surfmet.io.sources import Source, source_bytes
-from surfmet.model import STATED, Profile, Topography, unit_sources
 from surfmet.units import length_factor, quantity
 
 FORMAT = "ce"

@@ -53,10 +53,10 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import Profile
 from surfmet.io._binary import decode_text, format_error, looks_like_text, positions_profile
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor, quantity
 
 FORMAT = "dektak"
@@ -262,7 +262,7 @@ def _columns(lines: list[str], first: int, xu: tuple[str, float], zu: tuple[str,
 @register_reader(FORMAT, extensions=("csv",), description="Dektak profilometer CSV export",
                  magic=_is_dektak, priority=40)
 def decode(buf: bytes, name: str) -> Profile:
-    """Read a Dektak CSV export into a :class:`~surfmet.model.Profile`."""
+    """Read a Dektak CSV export into a :class:`~surfmet._model.Profile`."""
     lines = decode_text(buf).splitlines()
     params, result_rows, data_start = _sections(lines)
     if data_start is None:

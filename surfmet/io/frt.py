@@ -39,9 +39,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "frt"
 MAGIC = b"FRTM_GLIDERV"
@@ -179,7 +179,7 @@ def _pick_image(r: ByteReader, blocks: dict[int, tuple[int, int]],
 @register_reader(FORMAT, extensions=("frt",), description="FRT MicroProf",
                  magic=_is_frt, priority=10)
 def decode(buf: bytes, name: str, channel: int | None = None) -> Topography:
-    """Read a MicroProf ``.frt`` file into a :class:`~surfmet.model.Topography`.
+    """Read a MicroProf ``.frt`` file into a :class:`~surfmet._model.Topography`.
 
     Parameters
     ----------

@@ -44,10 +44,10 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.calibration import assumed
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._calibration import assumed
+from surfmet.io._registry import register_reader
 from surfmet.units import quantity
 
 FORMAT = "gwy"

@@ -5,7 +5,7 @@ numeric data sets at its root, each one channel (the Challenge's files hold one,
 ``surface``). As in SurfaceTopography's ``H5Reader``, the first array index is x, so a
 data set of shape (640, 480) is a map of nx = 640 by ny = 480 points. HDF5 stores neither
 units nor pixel sizes: the map is read with heights taken as metres and a pixel of 1 m,
-both marked assumed (:class:`surfmet.model.Calibration`); ``height_unit=`` and ``dx=`` /
+both marked assumed (:class:`surfmet._model.Calibration`); ``height_unit=`` and ``dx=`` /
 ``dy=`` of :func:`surfmet.read` state them. The default channel is the first data set in
 the file's order.
 
@@ -21,11 +21,11 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Topography
 from surfmet.io._binary import MAX_DEFLATE_RATIO, MAX_POINTS, format_error
-from surfmet.io.calibration import assumed
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._calibration import assumed
+from surfmet.io._registry import register_reader
 
 FORMAT = "h5"
 MAGIC = b"\x89HDF\r\n\x1a\n"

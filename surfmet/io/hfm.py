@@ -23,10 +23,10 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import Profile
 from surfmet.io._binary import decode_text, format_error, looks_like_text, positions_profile
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor, quantity
 
 FORMAT = "hfm"
@@ -56,7 +56,7 @@ def _unit(cell: str, name: str, what: str) -> tuple[str, float]:
 @register_reader(FORMAT, extensions=("hfm",), description="HFM text profile (X;Y;valid)",
                  magic=_is_hfm, priority=40)
 def decode(buf: bytes, name: str) -> Profile:
-    """Read an HFM profile into a :class:`~surfmet.model.Profile` (metres)."""
+    """Read an HFM profile into a :class:`~surfmet._model.Profile` (metres)."""
     lines = [ln for ln in decode_text(buf).splitlines() if ln.strip()]
     if not lines or lines[0].strip().replace(" ", "").lower() != _SIGNATURE:
         raise _fail(name, "the first line must be 'X;Y;valid'")

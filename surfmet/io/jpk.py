@@ -25,11 +25,11 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, channel_index, check_step, format_error
+from surfmet.io._registry import register_reader
 from surfmet.io._tiff import Ifd, first_ifd_tags, read_ifds, strip_image
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
 from surfmet.units import length_factor
 
 FORMAT = "jpk"

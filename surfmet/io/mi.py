@@ -20,10 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, channel_index, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor
 
 FORMAT = "mi"

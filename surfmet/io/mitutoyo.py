@@ -43,21 +43,21 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import Profile
 from surfmet.io._binary import check_step, format_error, positions_profile
+from surfmet.io._registry import register_reader
 from surfmet.io._xlsx import Cells, read_cells, shared_strings, sheet_paths
 from surfmet.io._zip import ZIP_MAGIC, member_names, open_zip
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile
 from surfmet.units import length_factor, quantity
 
 FORMAT = "mitutoyo"
 _RESULT_RE = re.compile(r"^\s*(\S+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S*)\s*$")
 _LENGTH_RE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*([^\s\d]+)\s*$")
 _RENAME = {"Rkµ": "Rku", "Rkμ": "Rku", "RDq": "Rdq", "RSm": "Rsm"}
-#: The Rk construction of the SurfTest (:data:`profiles.rk.CONSTRUCTIONS`).
+#: The Rk construction of the SurfTest (:data:`profiles._rk.CONSTRUCTIONS`).
 RK_LINE = "levels"
-#: How the SurfTest pairs profile elements (:data:`profiles.elements.ELEMENT_STARTS`).
+#: How the SurfTest pairs profile elements (:data:`profiles._elements.ELEMENT_STARTS`).
 ELEMENT_START = "first-crossing"
 # ISO 13565-2 areas, printed without a unit in (height unit) x %
 _AREAS = ("A1", "A2")

@@ -32,11 +32,11 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import Topography
 from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
 from surfmet.io._cfb import SIGNATURE, CompoundFile
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor
 
 FORMAT = "mnt"

@@ -19,11 +19,11 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.calibration import assumed
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
+from surfmet.io._calibration import assumed
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor
 
 FORMAT = "nc"

@@ -42,9 +42,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "nms"
 VERSION_OFFSET = 32

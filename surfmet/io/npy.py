@@ -5,7 +5,7 @@
 ``metadata`` (a JSON string). All values are SI, so a write/read round trip is exact.
 
 A bare ``.npy`` array carries no unit and no pixel size: it is read as heights in metres
-with ``dx = dy = 1`` m, both marked assumed (:class:`surfmet.model.Calibration`);
+with ``dx = dy = 1`` m, both marked assumed (:class:`surfmet._model.Calibration`);
 ``height_unit=`` and ``dx=`` / ``dy=`` of :func:`surfmet.read` state them.
 """
 
@@ -17,11 +17,11 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import MAX_POINTS, format_error
+from surfmet.io._calibration import assumed
+from surfmet.io._registry import register_reader, register_writer
 from surfmet.io._zip import ZIP_MAGIC
-from surfmet.io.calibration import assumed
-from surfmet.io.registry import register_reader, register_writer
-from surfmet.model import Profile, Topography
 from surfmet.units import jsonable
 
 _NPY_MAGIC = b"\x93NUMPY"

@@ -31,9 +31,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "opd"
 MAGIC = b"\x01\x00Directory"

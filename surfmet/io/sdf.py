@@ -17,7 +17,7 @@ per unit), ``Zresolution`` (metres, negative if unknown), ``Compression`` and ``
   negative value for signed integer types (-2**15, -2**31), as surfalize writes them.
 
 Heights are ``value * Zscale``, ``dx = Xscale``, ``dy = Yscale``. A file with one profile
-is returned as a :class:`~surfmet.model.Profile`.
+is returned as a :class:`~surfmet._model.Profile`.
 """
 
 from __future__ import annotations
@@ -27,9 +27,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step, decode_text
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "sdf"
 MAGIC_ASCII = b"aISO-1.0"

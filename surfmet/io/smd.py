@@ -20,8 +20,8 @@ defines four records of Latin-1 text, each ended by the ETX character (0x03):
    itself is accepted too).
 
 Real value = value x scale x unit. A profile with an incremental x axis becomes a uniform
-:class:`~surfmet.model.Profile`; an absolute x axis keeps its positions (re-based to 0).
-Areal files (CX and CY incremental) become a :class:`~surfmet.model.Topography`.
+:class:`~surfmet._model.Profile`; an absolute x axis keeps its positions (re-based to 0).
+Areal files (CX and CY incremental) become a :class:`~surfmet._model.Topography`.
 """
 
 from __future__ import annotations
@@ -31,7 +31,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import (
     MAX_POINTS,
     check_grid,
@@ -39,8 +40,7 @@ from surfmet.io._binary import (
     format_error,
     positions_profile,
 )
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
+from surfmet.io._registry import register_reader
 
 FORMAT = "smd"
 _ETX = b"\x03"

@@ -9,7 +9,7 @@ nx ``float32`` heights.
 **Units.** The file states none. TrueMap scanners image fields of about 20 mm, and the sample's
 18.96 x 18.96 field with heights 0 to 1 is a millimetre-scale relief, so lengths and heights are
 read as millimetres (SurfaceTopography 1.27 also reports mm; its current reader says µm, which
-would make a 19 µm field); both are marked assumed (:class:`surfmet.model.Calibration`), so
+would make a 19 µm field); both are marked assumed (:class:`surfmet._model.Calibration`), so
 every output says so. Pass ``unit="um"`` to read them as micrometres instead (then stated by
 the user), or state either alone with ``height_unit=`` / ``dx=``. Non-finite heights become
 NaN.
@@ -21,9 +21,9 @@ from typing import Any
 
 import numpy as np
 
+from surfmet._model import ASSUMED, USER, Topography
 from surfmet.io._binary import ByteReader, check_grid, check_step
-from surfmet.io.registry import register_reader
-from surfmet.model import ASSUMED, USER, Topography
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor
 
 FORMAT = "tmd"

@@ -22,8 +22,8 @@ float data, NaN; they become NaN. Integer data types are **signed** (the schema 
 and int32; SurfaceTopography 1.27 reads them as unsigned, which turns negative heights
 into large positive ones).
 
-Only gridded data are read: ``SUR`` becomes a :class:`~surfmet.model.Topography` and
-``PRF`` (a matrix of N x 1 x 1) a :class:`~surfmet.model.Profile`. Point clouds (``PCL``),
+Only gridded data are read: ``SUR`` becomes a :class:`~surfmet._model.Topography` and
+``PRF`` (a matrix of N x 1 x 1) a :class:`~surfmet._model.Profile`. Point clouds (``PCL``),
 absolute x/y axes and multi-layer matrices (SizeZ > 1) are refused with a clear message.
 
 Guards: ``main.xml`` larger than :data:`MAX_XML_BYTES` or carrying a DOCTYPE/ENTITY
@@ -46,11 +46,11 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError
+from surfmet._errors import SurfmetFormatError
+from surfmet._model import Profile, Topography
 from surfmet.io._binary import MAX_POINTS, check_grid, check_step, format_error
+from surfmet.io._registry import register_reader
 from surfmet.io._zip import ZIP_MAGIC, open_zip, read_member
-from surfmet.io.registry import register_reader
-from surfmet.model import Profile, Topography
 
 FORMAT = "x3p"
 # main.xml of a real file is a few kB; 16 MB of XML is never a header.

@@ -18,11 +18,11 @@ from xml.sax.saxutils import escape
 
 import numpy as np
 
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet._version import __version__
-from surfmet.errors import SurfmetInputError
-from surfmet.io.registry import register_writer
+from surfmet.io._registry import register_writer
 from surfmet.io.x3p import FORMAT
-from surfmet.model import Profile, Topography
 
 NAMESPACE = "http://www.opengps.eu/2008/ISO5436_2"
 REVISION = "ISO5436 - 2000"

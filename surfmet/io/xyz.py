@@ -4,16 +4,16 @@ Columns may be separated by blanks, tabs, commas or semicolons (detected from th
 data line). Lines before the first numeric line (column titles...) and lines starting
 with ``#`` or ``%`` are skipped; ``nan`` marks a non-measured height.
 
-* **Two columns** ``x, z``: a :class:`~surfmet.model.Profile`. Positions must be strictly
+* **Two columns** ``x, z``: a :class:`~surfmet._model.Profile`. Positions must be strictly
   monotonic (a decreasing list is reversed). If the steps are constant to 1e-3 relative the
   profile is uniform with ``dx`` = that step, otherwise the positions are kept as ``x``.
-* **Three columns** ``x, y, z``: a :class:`~surfmet.model.Topography`. The points must lie
+* **Three columns** ``x, y, z``: a :class:`~surfmet._model.Topography`. The points must lie
   on a regular grid (constant steps along x and y, in any order); a grid node without a
   point becomes NaN. A grid node given twice, or points off the grid, are errors.
 
 Units: the text states none. ``unit=`` is the unit of x and y (default ``"m"``, assumed),
 ``height_unit=`` the unit of z (default: the same as ``unit``); what is not given is marked
-assumed (:class:`surfmet.model.Calibration`), what is given stated by the user.
+assumed (:class:`surfmet._model.Calibration`), what is given stated by the user.
 Positions are shifted to start at 0; the original origin
 is kept in ``metadata["x_offset"]`` (and ``"y_offset"``).
 
@@ -27,7 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetFormatError, SurfmetInputError
+from surfmet._errors import SurfmetFormatError, SurfmetInputError
+from surfmet._model import ASSUMED, USER, Profile, Topography
 from surfmet.io._binary import (
     MAX_POINTS,
     decode_text,
@@ -35,8 +36,7 @@ from surfmet.io._binary import (
     looks_like_text,
     positions_profile,
 )
-from surfmet.io.registry import register_reader
-from surfmet.model import ASSUMED, USER, Profile, Topography
+from surfmet.io._registry import register_reader
 from surfmet.units import length_factor, quantity
 
 FORMAT = "xyz"

@@ -27,10 +27,10 @@ from xml.etree import ElementTree
 
 import numpy as np
 
+from surfmet._model import Topography
 from surfmet.io._binary import MAX_POINTS, ByteReader, check_grid, check_step, format_error
+from surfmet.io._registry import register_reader
 from surfmet.io._zip import open_zip, read_member
-from surfmet.io.registry import register_reader
-from surfmet.model import Topography
 
 FORMAT = "zon"
 _HEIGHT = "4cdb0c75-5706-48cc-a9a1-adf395d609ae"

@@ -2,7 +2,7 @@
 the friction arm against its physical bound (:mod:`rotor._arm`), the rig used, the
 model-free windows, the lane test, and the table of the four differences with the two
 misread rules (:mod:`rotor._reconcile`). Called by :mod:`surfmet.mechanics.rotor_verdict`;
-the same evidence as JSON is :mod:`surfmet.records.rotor_verdict` (and the records it
+the same evidence as JSON is :mod:`surfmet.records._rotor_verdict` (and the records it
 gathers), which reads the sentences shared by both from here.
 """
 
@@ -11,13 +11,13 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from surfmet.mechanics.rotor_rough_bound import deciding_bound, rough_bound_line
+from surfmet.mechanics._rotor_rough_bound import deciding_bound, rough_bound_line
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
 
     from rotor import ArmBound, LawOfMotionAnalysis, RotorVerdict
-    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics._rotor_rough_bound import RoughArmBound
 
 __all__ = ["LOWER_BOUND", "MISREAD_WHY", "argument_lines", "differences_lines", "lane_line",
            "permutation_line", "windows_lines"]

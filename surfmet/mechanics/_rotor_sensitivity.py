@@ -1,6 +1,6 @@
 """Every assumption's weight on the rotor verdict, the experiment that would settle it, and
 the paper's swapped labels, in words (:mod:`rotor._sensitivity`; their JSON is
-:mod:`surfmet.records.rotor_sensitivity`). Called by :mod:`surfmet.mechanics.rotor_verdict`,
+:mod:`surfmet.records._rotor_sensitivity`). Called by :mod:`surfmet.mechanics.rotor_verdict`,
 so every entry point says them.
 """
 

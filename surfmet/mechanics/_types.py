@@ -1,10 +1,10 @@
 """The types of the facades' inputs, named once (imported under ``TYPE_CHECKING`` only, so
 that the facades' imports stay lazy: nothing here is loaded when a facade runs).
 
-- :data:`ScanSource`: a scan, as a :class:`~surfmet.model.Topography` or a file to read
+- :data:`ScanSource`: a scan, as a :class:`~surfmet._model.Topography` or a file to read
   with :func:`surfmet.read`;
-- :data:`Materials`: ``"BALL,PLATE"`` text, a pair of :class:`contact.materials.Material`
-  or a resolved :class:`contact.material_pair.MaterialPair`;
+- :data:`Materials`: ``"BALL,PLATE"`` text, a pair of :class:`contact._materials.Material`
+  or a resolved :class:`contact._material_pair.MaterialPair`;
 - :data:`Spikes`: ``"remove"`` / ``"keep"``, or True (remove) / False (keep);
 - :data:`Loads`: the loads of a sweep (N, or N/m for a line);
 - :data:`Progress`: wraps an iterable to show progress (``tqdm``'s calling form);
@@ -22,10 +22,10 @@ from typing import Any, TypeAlias
 
 import numpy as np
 
+from contact._material_pair import MaterialPair
+from contact._materials import Material
 from contact.adhesion.laws import InteractionLaw
-from contact.material_pair import MaterialPair
-from contact.materials import Material
-from surfmet.model import Topography
+from surfmet._model import Topography
 
 ScanSource: TypeAlias = Topography | str | os.PathLike[str]
 Materials: TypeAlias = str | MaterialPair | tuple[Material, Material] | list[Material]

@@ -6,7 +6,7 @@ law (:mod:`contact.adhesion.laws`), samples the scans' roughness onto the solver
 (:func:`rough_grid`) and runs the cycle of :func:`contact.adhesion.ball.adhesive_ball`
 (the line contact's facade, on :func:`contact.adhesion.line.adhesive_line`, is
 :mod:`surfmet.mechanics.adhesion_line`);
-:func:`surfmet.records.adhesion.adhesion_record` is its JSON record, :func:`plot`
+:func:`surfmet.records._adhesion.adhesion_record` is its JSON record, :func:`plot`
 its figure. The range means h0 = w / sigma0 for the Dugdale law and rho for
 the exponential one.
 """
@@ -18,8 +18,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
-from surfmet.mechanics.adhesion_laws import (  # noqa: F401  (the facade's face)
+from surfmet._errors import SurfmetInputError
+from surfmet.mechanics._adhesion_laws import (  # noqa: F401  (the facade's face)
     INTERACTION,
     interaction_law,
     interaction_name,
@@ -50,7 +50,7 @@ class Adhesion:
     See Also
     --------
     adhesion : makes it.
-    surfmet.records.adhesion.adhesion_record : its JSON record.
+    surfmet.records._adhesion.adhesion_record : its JSON record.
 
     Examples
     --------
@@ -74,7 +74,7 @@ class Adhesion:
     @property
     def axisymmetric(self) -> bool:
         """Whether the sphere was solved on rings
-        (:class:`contact.adhesion.ring_ball.RingBall`) rather than a periodic 3D grid."""
+        (:class:`contact.adhesion._ring_ball.RingBall`) rather than a periodic 3D grid."""
         return hasattr(self.result, "rings")
 
 
@@ -168,7 +168,7 @@ def adhesion(radius: float, *, work: float | None = None, range_: float | None =
     3.14 µN); this coarse grid overestimates it slightly, as its warning says:
 
     >>> from surfmet.mechanics.adhesion import adhesion
-    >>> from surfmet.records.adhesion import adhesion_record
+    >>> from surfmet.records._adhesion import adhesion_record
     >>> run = adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=32, steps=6)
     >>> rec = adhesion_record(run)
     >>> print(f"lambda = {rec['maugis_parameter']['value']:.2f}")
@@ -223,7 +223,7 @@ def _on_rings(model: str, grid: int | None, size: float | None, plate: Any, ball
 
 def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
              progress: Callable[[int, int], None] | None = None) -> Adhesion:
-    """The smooth sphere's cycle on rings (:func:`contact.adhesion.ring_ball.adhesive_sphere`),
+    """The smooth sphere's cycle on rings (:func:`contact.adhesion._ring_ball.adhesive_sphere`),
     the law's step smoothed on the rings' width as on a grid's pixel.
 
     Parameters
@@ -252,8 +252,8 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
     >>> run.axisymmetric, run.result.rings
     (True, 416)
     """
-    from contact.adhesion.ring_ball import ZONE_RINGS, adhesive_sphere, ring_width
-    from contact.zone_resolution import process_zone
+    from contact._zone_resolution import process_zone
+    from contact.adhesion._ring_ball import ZONE_RINGS, adhesive_sphere, ring_width
 
     dr, _ = ring_width(radius, mats.e_star, law)
     if law.smoothing == 0.0:  # a step smoothed on the rings, where the law has one
@@ -305,8 +305,8 @@ def default_grid(size: float, e_star: float, law: AdhesionLaw, steps: int) -> Gr
     128
     512
     """
+    from contact._zone_resolution import process_zone
     from contact.adhesion.default_grid import LEAST_GRID, GridChoice, resolving_grid
-    from contact.zone_resolution import process_zone
 
     if not law.grid_smoothed:
         return GridChoice(LEAST_GRID, LEAST_GRID, f"default for the {law.name} law: "
@@ -315,7 +315,7 @@ def default_grid(size: float, e_star: float, law: AdhesionLaw, steps: int) -> Gr
 
 
 def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
-    """The resolved pair (:class:`contact.material_pair.MaterialPair`) of exactly one of a
+    """The resolved pair (:class:`contact._material_pair.MaterialPair`) of exactly one of a
     material pair and E* itself (Pa), by
     :func:`surfmet.mechanics.material_spec.material_pair`.
 
@@ -328,7 +328,7 @@ def adhesion_pair(materials: Materials | None, e_star: float | None) -> Any:
 
     Returns
     -------
-    contact.material_pair.MaterialPair
+    contact._material_pair.MaterialPair
         The pair.
 
     Raises
@@ -358,7 +358,7 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     (:func:`surfmet.mechanics.scan_preparation.prepare_scans`: spikes, the plate levelled,
     the ball's best-fit sphere removed, both paired on one square grid, so non-square
     pixels are resampled) and sampled with the engine's
-    :func:`contact.sampling.sample_roughness`. (None, None) without scans.
+    :func:`contact._sampling.sample_roughness`. (None, None) without scans.
 
     Parameters
     ----------
@@ -375,7 +375,7 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     -------
     (ndarray or None, ScansUsed or None)
         The roughness on the grid (m) and the scans used (their record is
-        :func:`surfmet.records.adhesion.scans_record`).
+        :func:`surfmet.records._adhesion.scans_record`).
 
     Raises
     ------
@@ -395,9 +395,9 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     """
     if plate is None and ball is None:
         return None, None
-    from contact.geometry import max_centred_cells
-    from contact.grid import centred_grid
-    from contact.sampling import sample_roughness
+    from contact._geometry import max_centred_cells
+    from contact._grid import centred_grid
+    from contact._sampling import sample_roughness
     from surfmet.mechanics.scan_preparation import ScansUsed, prepare_scans
 
     if int(grid) != grid or grid < 16:

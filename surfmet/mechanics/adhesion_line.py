@@ -2,11 +2,11 @@
 
 :func:`line_adhesion` samples the plate scan's roughness along the cylinder's cross-section
 and runs :func:`contact.adhesion.line.adhesive_line`;
-:func:`surfmet.records.adhesion.line_record` is the JSON record
+:func:`surfmet.records._adhesion.line_record` is the JSON record
 (forces per unit length in N/m, energies in J/m), :func:`line_plot` the figure. The
 cylinder's axis lies along the scan's y; the profile is the row through the middle of the
 levelled plate, sampled by the engine's
-:func:`contact.sampling.sample_roughness` (as ``rolling-contact --line`` does).
+:func:`contact._sampling.sample_roughness` (as ``rolling-contact --line`` does).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.adhesion import (
     INTERACTION,
     Adhesion,
@@ -48,7 +48,7 @@ def refuse_ball(ball: ScanSource | None) -> None:
     >>> refuse_ball("ball.x3p")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: --ball does not apply to a line contact ...
+    surfmet._errors.SurfmetInputError: --ball does not apply to a line contact ...
     """
     if ball is not None:
         raise SurfmetInputError("--ball does not apply to a line contact (the ball's sphere "
@@ -85,7 +85,7 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
     See Also
     --------
     surfmet.mechanics.adhesion.adhesion : the sphere.
-    surfmet.records.adhesion.line_record : the JSON record.
+    surfmet.records._adhesion.line_record : the JSON record.
 
     References
     ----------
@@ -95,7 +95,7 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
     Examples
     --------
     >>> from surfmet.mechanics.adhesion_line import line_adhesion
-    >>> from surfmet.records.adhesion import line_record
+    >>> from surfmet.records._adhesion import line_record
     >>> run = line_adhesion(1e-5, work=0.05, range_=2e-9, e_star=1e9, grid=64, steps=8)
     >>> rec = line_record(run)
     >>> rec["geometry"], rec["pull_off_force"]["unit"], run.line
@@ -117,8 +117,8 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
         size = CELL_WIDTHS * max(line_scales(radius, mats.e_star, law))
     z, scans = None, None
     if plate is not None:
-        from contact.grid import Grid
-        from contact.sampling import sample_roughness
+        from contact._grid import Grid
+        from contact._sampling import sample_roughness
         from surfmet.mechanics.scan_preparation import ScansUsed, prepare_scans
 
         prep = prepare_scans(plate, None, spikes=spikes)

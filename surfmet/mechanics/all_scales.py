@@ -5,7 +5,7 @@ contact.engineering container) take the profile (1D) PSD averaged over them as `
 scales`` computes it (:func:`surfmet.scale_dependent.analyze_scales`: each measurement
 counts above its pixel and reliability cut-off and below its size, one vote each where it
 counts) and turn it into the isotropic areal PSD ``C^iso`` that Persson's theory integrates
-(:func:`contact.roughcontact.isotropic.iso_from_profile_psd`, the inverse of the Abel
+(:func:`contact.roughcontact._isotropic.iso_from_profile_psd`, the inverse of the Abel
 projection of Jacobs, Junge & Pastewka 2017, Surf. Topogr. Metrol. Prop. 5, 013001).
 
 The PSD is known only over the band where some measurement contributes: the rms values and
@@ -24,12 +24,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from contact.roughcontact import ModelCurve, SummitParameters
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.psd import PSD, HurstFit, fit_hurst
 from surfmet.scale_dependent import ScaleAnalysis
 
 if TYPE_CHECKING:
-    from contact.material_pair import MaterialPair
+    from contact._material_pair import MaterialPair
     from surfmet.mechanics._types import Materials
 
 #: Quadrature points per decade of the isotropic PSD over the measured band.
@@ -48,7 +48,7 @@ class AllScalesSpectrum:
         Wavevectors (rad/m) between which the averaged PSD is measured.
     q, c_iso, weights, dq :
         Isotropic PSD ``C^iso`` (m⁴) on a log quadrature of the band
-        (:func:`contact.roughcontact.isotropic.log_quadrature`).
+        (:func:`contact.roughcontact._isotropic.log_quadrature`).
     h_rms, slope_rms, curvature_rms : float
         Of the roughness in the band (m, -, 1/m): √m0, √(2 m2), √(8 m4/3).
     hurst : HurstFit or None
@@ -163,9 +163,9 @@ def all_scales_spectrum(analysis: ScaleAnalysis, per_decade: int = QUAD_PER_DECA
     >>> print(f"h_rms = {spec.h_rms * 1e6:.2f} µm, slope_rms = {spec.slope_rms:.3f}")
     h_rms = 2.33 µm, slope_rms = 0.488
     """
-    from contact.errors import ContactInputError
+    from contact._errors import ContactInputError
     from contact.roughcontact import isotropic_moments, summit_parameters
-    from contact.roughcontact.isotropic import iso_from_profile_psd, log_quadrature
+    from contact.roughcontact._isotropic import iso_from_profile_psd, log_quadrature
 
     good = np.isfinite(analysis.psd) & (analysis.psd > 0)
     if good.sum() < 2:
@@ -257,7 +257,7 @@ def persson_all_scales(s: AllScalesSpectrum, pressures: np.ndarray, e_star: floa
     >>> print([f"{a:.2e}" for a in curve.area_fraction])
     ['5.59e-05', '5.59e-04']
     """
-    from contact.errors import ContactInputError
+    from contact._errors import ContactInputError
     from contact.roughcontact import persson
 
     try:
@@ -276,7 +276,7 @@ class AllScales:
         Their scale-dependent analysis (:func:`surfmet.scale_dependent.analyze_scales`).
     spectrum : AllScalesSpectrum
         The isotropic PSD of the averaged profile PSD (:func:`all_scales_spectrum`).
-    pair : contact.material_pair.MaterialPair or None
+    pair : contact._material_pair.MaterialPair or None
         The pair (None: no materials nor E* given), resolved once here with its hardness.
     curve : ModelCurve or None
         Persson's theory at the pressures asked (None: none asked).

@@ -17,13 +17,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 if TYPE_CHECKING:
-    from contact.bem.result import ContactResult
-    from contact.material_pair import MaterialPair
-    from contact.materials import Material
+    from contact._material_pair import MaterialPair
+    from contact._materials import Material
+    from contact.bem._result import ContactResult
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
     from surfmet.mechanics.scan_preparation import PreparedScans
@@ -44,7 +44,7 @@ class BallContact:
     ----------
     result : contact.ContactResult
         The solution (pressure, gap, contact area, Hertz's values for comparison).
-    ball_material, plate_material : contact.materials.Material
+    ball_material, plate_material : contact._materials.Material
     pair : surfmet.mechanics.pairing.PairedRoughness or None
         The paired scans; None for smooth surfaces.
     radius : float
@@ -90,7 +90,7 @@ class BallContact:
 
     def _repr_html_(self) -> str:
         """Load, approach, contact radius and area, peak pressure, with units (Jupyter)."""
-        from surfmet.display import quantity_table
+        from surfmet._display import quantity_table
 
         res = self.result
         rows = [("load", res.load, "N"), ("ball radius", self.radius, "m"),
@@ -251,7 +251,7 @@ def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
                   max_grid: int | None = MAX_GRID, **options: Any) -> tuple[Any, tuple[str, ...]]:
     """Solve the ball-on-plate set-up on a paired roughness (None: smooth surfaces).
 
-    ``e_star`` is the resolved :class:`contact.material_pair.MaterialPair` (or its E*, Pa).
+    ``e_star`` is the resolved :class:`contact._material_pair.MaterialPair` (or its E*, Pa).
     ``options`` go to the set-up and the solver (``grid``, ``size``, ``periodic``,
     ``max_grid``, ``on_edge``, ``tol``, ``max_iter``, ``callback``). Returns the result and
     the warnings of the solve as text (a contact reaching the domain's edge).
@@ -277,8 +277,8 @@ def solve_on_pair(pair: PairedRoughness | None, *, radius: float, load: float,
     >>> print(f"{res.pmax / 1e6:.0f} MPa", warnings)
     255 MPa ()
     """
-    from contact.errors import EdgeContactWarning
-    from contact.setups.ball_on_plate import solve_sphere
+    from contact._errors import EdgeContactWarning
+    from contact.setups._ball_on_plate import solve_sphere
 
     domain, solve = _engine_settings(max_grid=max_grid, **options)
     with warnings.catch_warnings(record=True) as caught:
@@ -329,7 +329,7 @@ def ball_contact(
     plastic : bool
         Cap the pressure at the softer material's table hardness.
     grid, size, periodic, on_edge, tol, max_iter, max_grid, callback
-        The set-up and the solver (:func:`contact.setups.ball_on_plate.solve_sphere`);
+        The set-up and the solver (:func:`contact.setups._ball_on_plate.solve_sphere`);
         ``max_grid`` defaults to :data:`~surfmet.mechanics.scan_preparation.MAX_GRID`
         (None: the scans' own pixel at any size), the same for every entry point.
     spikes : {"remove", "keep"} or bool

@@ -3,7 +3,7 @@
 :func:`flat_contact` levels the scan (a periodic one keeps its heights, see
 :func:`surfmet.mechanics.spectrum.prepare`), describes its spectrum
 (:func:`surfmet.mechanics.spectrum.spectrum`),
-runs the boundary elements along the nominal pressures (:func:`contact.setups.flat.flat_contact`:
+runs the boundary elements along the nominal pressures (:func:`contact.setups._flat.flat_contact`:
 periodic for a periodic scan, free boundary otherwise) and evaluates the three theories on
 the same spectrum:
 
@@ -27,17 +27,17 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from contact.roughcontact import ModelCurve
-from contact.setups.flat import FlatContact
-from surfmet.errors import SurfmetInputError
+from contact.setups._flat import FlatContact
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.mechanics.scan_preparation import SPIKES
 from surfmet.mechanics.spectrum import Spectrum
-from surfmet.model import Topography
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from contact._material_pair import MaterialPair
     from contact.adhesion.flat import AdhesiveFlat
-    from contact.material_pair import MaterialPair
     from surfmet.mechanics._types import AdhesionLaw, Loads, Materials, PathLike, Spikes
     from surfmet.mechanics.scan_preparation import FlatPreparation
 
@@ -48,7 +48,7 @@ class FlatContactReport:
 
     Attributes
     ----------
-    bem : contact.setups.flat.FlatContact
+    bem : contact.setups._flat.FlatContact
         The boundary-element sweep.
     models : dict of str to ModelCurve
         The theories (``"persson"``, ``"gw"``, ``"bgt"``) at the same pressures.
@@ -122,7 +122,7 @@ def parse_pressures(text: str) -> np.ndarray:
     >>> parse_pressures("ten")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: cannot read pressure 'ten': ...
+    surfmet._errors.SurfmetInputError: cannot read pressure 'ten': ...
     """
     from surfmet.units import parse_pressure
     from surfmet.value_lists import parse_values
@@ -152,7 +152,7 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     periodic : bool, optional
         None: detect from the edges.
     stiffness : {"curve", "solve"}
-        How the BEM stiffness is measured (see :func:`contact.setups.flat.flat_contact`).
+        How the BEM stiffness is measured (see :func:`contact.setups._flat.flat_contact`).
     spikes : {"remove", "keep"} or bool
         The scan's spikes, removed by default; non-measured points are filled with the
         nearest measured value (:func:`surfmet.mechanics.scan_preparation.prepare_flat`).
@@ -175,7 +175,7 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     -------
     FlatContactReport
         The BEM sweep and the theories at each pressure, and ``figure()`` (its record:
-        :func:`surfmet.records.flat.flat_contact_record`).
+        :func:`surfmet.records._flat.flat_contact_record`).
 
     Raises
     ------
@@ -217,10 +217,10 @@ def flat_contact(topo: Topography, *, e_star: float | None = None,
     gw ['8.1e-04', '2.3e-03']
     persson ['4.5e-04', '1.3e-03']
     """
-    from contact.errors import ContactInputError
-    from contact.grid import gap_grid
+    from contact._errors import ContactInputError
+    from contact._grid import gap_grid
     from contact.roughcontact import bush_gibson_thomas, greenwood_williamson, persson
-    from contact.setups.flat import flat_contact as bem_sweep
+    from contact.setups._flat import flat_contact as bem_sweep
     from surfmet.mechanics.spectrum import prepared_scan, spectrum
 
     p = parse_pressures(pressures) if isinstance(pressures, str) else np.sort(
@@ -353,7 +353,7 @@ def adhesive_sweep(scan: Topography, bem: FlatContact, law: AdhesionLaw) -> Any:
     ----------
     scan : Topography
         The prepared scan (:func:`surfmet.mechanics.spectrum.prepared_scan`).
-    bem : contact.setups.flat.FlatContact
+    bem : contact.setups._flat.FlatContact
         The non-adhesive sweep to start from.
     law : DugdaleLaw or ExponentialLaw
         The adhesion law (:func:`surfmet.mechanics.adhesion.interaction_law`).

@@ -151,7 +151,7 @@ def assess_adhesion(summits: SummitParameters | None, *, radius: float, load: fl
     """
     from contact.adhesion.laws import tabor_parameter
     from contact.adhesion.stickiness import pastewka_robbins, rms_gradient_curvature
-    from surfmet.errors import SurfmetInputError
+    from surfmet._errors import SurfmetInputError
 
     if not (math.isfinite(work) and work > 0):
         raise SurfmetInputError(f"the work of adhesion must be positive, got {work!r} J/m^2")

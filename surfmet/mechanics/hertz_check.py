@@ -4,8 +4,8 @@
 (optical outliers are not asperities: a single 50 µm spike would carry newtons in an
 elastic solution), levels the plate, removes the ball's sphere, pairs the two on one grid
 (:func:`surfmet.mechanics.pairing.prepare_pair`), solves the contact elastically and with the softer
-body's hardness (:func:`contact.hertzcheck.check_sphere`) and compares with Hertz
-(criteria and verdict in :mod:`contact.hertzcheck`).
+body's hardness (:func:`contact._hertzcheck.check_sphere`) and compares with Hertz
+(criteria and verdict in :mod:`contact._hertzcheck`).
 
 The combined roughness sigma of the GJM parameter is sqrt(sigma_plate^2 + sigma_ball^2),
 each the rms of its scan's *measured* points after its own form removal (plane for the
@@ -13,7 +13,7 @@ plate, best-fit sphere for the ball), over the whole scan: non-measured points n
 count nor are replaced by anything in sigma (the contact solver sees them filled with the
 nearest measured value, which the notes report).
 
-Its record (:func:`surfmet.records.hertz.hertz_check_record`) has the keys
+Its record (:func:`surfmet.records._hertz.hertz_check_record`) has the keys
 ``hertz_holds``, ``judged`` (false: the scan's pixel does not resolve the contact, no
 verdict), ``alpha``, ``sigma``, ``hertz`` {a, delta, p0}, ``bem`` {pmax,
 effective_radius, contact_radius, approach, area_fraction, plastic_fraction},
@@ -21,11 +21,11 @@ effective_radius, contact_radius, approach, area_fraction, plastic_fraction},
 {hertz, bem, greenwood_tripp[, greenwood_tripp_plastic]} each with ``effective_radius``,
 ``approach``, ``peak_pressure``, ``radial_profile`` {r, p}, ``radius_error`` and
 ``profile_error`` against the BEM, ``verdict`` {model, reasons} (the simplest model within
-tolerance, :mod:`contact.roughcontact.hierarchy`) and ``summits`` (the combined spectral
+tolerance, :mod:`contact.roughcontact._hierarchy`) and ``summits`` (the combined spectral
 summit parameters; absent for smooth scans); every
 dimensional value is ``{"value": v, "unit": "..."}`` (``area_fraction`` and
 ``plastic_fraction`` are fractions of the nominal Hertz area pi a0^2;
-``effective_radius`` is the second-moment radius a*, see :mod:`contact.hertzcheck`;
+``effective_radius`` is the second-moment radius a*, see :mod:`contact._hertzcheck`;
 ``contact_radius`` is sqrt(A_real/pi), the same quantity under the same name as in
 ``surfmet contact``).
 """
@@ -37,17 +37,17 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.material_spec import parse_materials
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES, PreparedScans, prepare_scans
 
 if TYPE_CHECKING:
-    from contact.bem.result import ContactResult
-    from contact.hertzcheck import HertzComparison, SphereCheck
-    from contact.material_pair import MaterialPair
-    from contact.materials import Material
+    from contact._hertzcheck import HertzComparison, SphereCheck
+    from contact._material_pair import MaterialPair
+    from contact._materials import Material
+    from contact.bem._result import ContactResult
     from contact.roughcontact import SummitParameters
-    from contact.roughcontact.hierarchy import ModelHierarchy
+    from contact.roughcontact._hierarchy import ModelHierarchy
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.hertz_adhesion import HertzAdhesion
 
@@ -58,15 +58,15 @@ class HertzCheck:
 
     Attributes
     ----------
-    comparison : contact.hertzcheck.HertzComparison
+    comparison : contact._hertzcheck.HertzComparison
         Criteria, verdict and the compared quantities.
     elastic, plastic : contact.ContactResult
         Elastic solution, and the elastic-plastic one (None without a hardness).
     radius, load, e_star : float
-    ball_material, plate_material : contact.materials.Material
+    ball_material, plate_material : contact._materials.Material
     scans : PreparedScans
     notes : tuple of str
-    materials : contact.material_pair.MaterialPair
+    materials : contact._material_pair.MaterialPair
         The resolved pair (E*, the default hardness and its source).
 
     See Also
@@ -104,7 +104,7 @@ class HertzCheck:
     @property
     def verdict(self) -> str:
         """The simplest model within tolerance (hertz, greenwood_tripp,
-        greenwood_tripp_plastic or bem; see :mod:`contact.roughcontact.hierarchy`)."""
+        greenwood_tripp_plastic or bem; see :mod:`contact.roughcontact._hierarchy`)."""
         if self.hierarchy is None:
             return "hertz" if self.hertz_holds else "bem"
         return self.hierarchy.verdict
@@ -135,7 +135,7 @@ class HertzCheck:
         """A grid too coarse for the contact (fewer cells per Hertz radius than
         :data:`surfmet.mechanics.ball_contact.MIN_CELLS_PER_RADIUS`): the verdict rests
         on an unresolved solution; a scan whose pixel does not resolve the contact
-        (:data:`contact.hertzcheck.MIN_SCAN_PIXELS_PER_RADIUS`): no verdict."""
+        (:data:`contact._hertzcheck.MIN_SCAN_PIXELS_PER_RADIUS`): no verdict."""
         from surfmet.mechanics.ball_contact import grid_warnings
 
         c = self.comparison
@@ -151,7 +151,7 @@ class HertzCheck:
     def _repr_html_(self) -> str:
         """The verdict and the numbers it rests on: GJM alpha, sigma, load, radius, E*,
         Hertz's and the boundary elements' contact radius and peak pressure (Jupyter)."""
-        from surfmet.display import quantity_table
+        from surfmet._display import quantity_table
 
         c = self.comparison
         return quantity_table("Hertz check", [
@@ -217,7 +217,7 @@ def hertz_check(
         Contact grid (cells per side) and the largest automatic grid; ``max_grid=None``
         runs on the scans' own pixel at any size that fits in memory (native resolution).
     on_edge : {"enlarge", "warn", "raise"}
-        Contact reaching the domain edge (see :mod:`contact.setups.ball_on_plate`).
+        Contact reaching the domain edge (see :mod:`contact.setups._ball_on_plate`).
     offset : (float, float), optional
         Apex position (x, y) relative to the middle of the paired roughness map (m): a
         track position. Default the middle.
@@ -232,7 +232,7 @@ def hertz_check(
     HertzCheck
         The verdict (``hertz_holds``, ``reasons``), the roughness parameter ``alpha``, the
         elastic and elastic-plastic solutions and the scans' preparation, and
-        ``figure()`` (its record: :func:`surfmet.records.hertz.hertz_check_record`).
+        ``figure()`` (its record: :func:`surfmet.records._hertz.hertz_check_record`).
 
     Raises
     ------
@@ -275,7 +275,7 @@ def hertz_check(
     True
     """
     from contact import DomainSpec
-    from contact.hertzcheck import check_sphere
+    from contact._hertzcheck import check_sphere
     from surfmet.mechanics.material_spec import material_pair
     from surfmet.units import parse_force, parse_length
 
@@ -295,7 +295,7 @@ def hertz_check(
         hardness = None
     if hardness is not None and not (math.isfinite(hardness) and hardness > 0):
         raise SurfmetInputError(f"the hardness must be a positive pressure, got {hardness!r}")
-    # the one home of the default hardness (contact.material_pair.resolve_pair): the
+    # the one home of the default hardness (contact._material_pair.resolve_pair): the
     # user's, else the softer body's table value
     mats = mats.with_hardness(hardness)
     hardness = mats.hardness if plastic else None
@@ -387,7 +387,7 @@ def scan_summits(prep: PreparedScans) -> SummitParameters | None:
         total = [a + b for a, b in zip(total, mom, strict=True)]
     if not all(math.isfinite(v) and v > 0 for v in total):
         return None
-    from contact.errors import ContactInputError
+    from contact._errors import ContactInputError
 
     try:
         return summit_parameters(*total)
@@ -401,7 +401,7 @@ def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, r
 
     Parameters
     ----------
-    check : contact.hertzcheck.SphereCheck
+    check : contact._hertzcheck.SphereCheck
         The BEM check.
     summits : SummitParameters or None
         The scans' summit parameters (:func:`scan_summits`).
@@ -412,7 +412,7 @@ def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, r
 
     Returns
     -------
-    contact.roughcontact.hierarchy.ModelHierarchy
+    contact.roughcontact._hierarchy.ModelHierarchy
         The models side by side, the verdict on which one the contact needs, and the
         models left out with their reasons.
 
@@ -437,9 +437,9 @@ def rough_ball_models(check: SphereCheck, summits: SummitParameters | None, *, r
     >>> list(models.models)
     ['hertz', 'greenwood_tripp', 'greenwood_tripp_plastic', 'bem']
     """
-    from contact.errors import ContactInputError, ConvergenceError
-    from contact.roughcontact.greenwood_tripp import Asperities, greenwood_tripp
-    from contact.roughcontact.hierarchy import model_hierarchy
+    from contact._errors import ContactInputError, ConvergenceError
+    from contact.roughcontact._greenwood_tripp import Asperities, greenwood_tripp
+    from contact.roughcontact._hierarchy import model_hierarchy
 
     extended: dict[str, Any] = {}
     left_out: dict[str, str] = {}

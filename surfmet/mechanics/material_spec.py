@@ -1,7 +1,7 @@
 """Material specifications at the surfmet layer: text such as ``steel,aluminium`` or
-``steel:E=200GPa:nu=0.29,aluminium:H=1.1GPa`` to :class:`contact.materials.Material`.
+``steel:E=200GPa:nu=0.29,aluminium:H=1.1GPa`` to :class:`contact._materials.Material`.
 
-The table itself (values with their sources) lives in :mod:`contact.materials`; this module
+The table itself (values with their sources) lives in :mod:`contact._materials`; this module
 only parses the user's text, with units, into it.
 """
 
@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.units import parse_pressure
 
 if TYPE_CHECKING:
@@ -62,7 +62,7 @@ def poisson_ratio(value: str) -> float:
     Returns
     -------
     float
-        The ratio (its range is checked by :class:`contact.materials.Material`).
+        The ratio (its range is checked by :class:`contact._materials.Material`).
 
     Raises
     ------
@@ -77,7 +77,7 @@ def poisson_ratio(value: str) -> float:
     >>> poisson_ratio("half")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: Poisson's ratio 'half' is not a number
+    surfmet._errors.SurfmetInputError: Poisson's ratio 'half' is not a number
     """
     try:
         return float(value)
@@ -121,7 +121,7 @@ def material_constant(value: str, what: str) -> float:
     >>> material_constant("70", "E")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: E: pressure '70' has no unit: write it with one, ...
+    surfmet._errors.SurfmetInputError: E: pressure '70' has no unit: write it with one, ...
     """
     try:
         return parse_pressure(value, example="GPa")
@@ -130,12 +130,12 @@ def material_constant(value: str, what: str) -> float:
 
 
 def parse_material(text: str) -> Any:
-    """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact.materials.Material`.
+    """``NAME[:E=..][:nu=..][:H=..]`` -> :class:`contact._materials.Material`.
 
     ``E`` and ``H`` take pressure units (``200GPa``, ``1.1GPa``); a bare number is
     refused. A name that is
     not in the table is a custom material when ``E`` and ``nu`` are both given
-    (:func:`contact.materials.material`).
+    (:func:`contact._materials.material`).
 
     Parameters
     ----------
@@ -144,7 +144,7 @@ def parse_material(text: str) -> Any:
 
     Returns
     -------
-    contact.materials.Material
+    contact._materials.Material
         The material, the user's values replacing the table's.
 
     Raises
@@ -165,7 +165,7 @@ def parse_material(text: str) -> Any:
     >>> parse_material("gel:E=50kPa:nu=0.5").E
     50000.0
     """
-    from contact.materials import material
+    from contact._materials import material
 
     name, *opts = [s.strip() for s in str(text).split(":")]
     kw: dict[str, float] = {}
@@ -182,8 +182,8 @@ def parse_material(text: str) -> Any:
 
 
 def parse_materials(materials: Materials) -> tuple[Any, Any]:
-    """``"BALL,PLATE"`` text, a pair of :class:`contact.materials.Material` or a resolved
-    :class:`contact.material_pair.MaterialPair` -> ``(ball, plate)``.
+    """``"BALL,PLATE"`` text, a pair of :class:`contact._materials.Material` or a resolved
+    :class:`contact._material_pair.MaterialPair` -> ``(ball, plate)``.
 
     Parameters
     ----------
@@ -208,10 +208,10 @@ def parse_materials(materials: Materials) -> tuple[Any, Any]:
     >>> parse_materials("steel")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: materials need two names, BALL,PLATE; got 'steel'
+    surfmet._errors.SurfmetInputError: materials need two names, BALL,PLATE; got 'steel'
     """
-    from contact.material_pair import MaterialPair
-    from contact.materials import Material
+    from contact._material_pair import MaterialPair
+    from contact._materials import Material
 
     if isinstance(materials, MaterialPair):
         if materials.body1 is None or materials.body2 is None:
@@ -231,10 +231,10 @@ def parse_materials(materials: Materials) -> tuple[Any, Any]:
 
 def material_pair(materials: Materials | None = None, *, e_star: float | None = None,
                   hardness: float | None = None, rigid_flat: bool = False) -> Any:
-    """The resolved pair (:class:`contact.material_pair.MaterialPair`) of the user's materials.
+    """The resolved pair (:class:`contact._material_pair.MaterialPair`) of the user's materials.
 
     ``materials`` is ``"BALL,PLATE"`` text (or ``"A"``, a body on a rigid flat, where
-    ``rigid_flat`` allows it), a pair of :class:`contact.materials.Material`, or an already
+    ``rigid_flat`` allows it), a pair of :class:`contact._materials.Material`, or an already
     resolved pair; or give ``e_star`` (Pa) instead. ``hardness`` (Pa) replaces the softer
     body's table value.
 
@@ -251,7 +251,7 @@ def material_pair(materials: Materials | None = None, *, e_star: float | None = 
 
     Returns
     -------
-    contact.material_pair.MaterialPair
+    contact._material_pair.MaterialPair
         E*, the default hardness and its source.
 
     Raises
@@ -270,7 +270,7 @@ def material_pair(materials: Materials | None = None, *, e_star: float | None = 
     >>> print(f"E* = {pair.e_star / 1e9:.2f} GPa, H = {pair.hardness / 1e9:.2f} GPa")
     E* = 58.61 GPa, H = 1.05 GPa
     """
-    from contact.material_pair import MaterialPair, resolve_pair
+    from contact._material_pair import MaterialPair, resolve_pair
 
     if isinstance(materials, MaterialPair):
         if e_star is not None:
@@ -297,7 +297,7 @@ def scan_pair(materials: Materials | None = None, *, e_star: float | None = None
 
     Returns
     -------
-    contact.material_pair.MaterialPair
+    contact._material_pair.MaterialPair
         The pair.
 
     Raises

@@ -4,7 +4,7 @@
 
 1. the plate is levelled (least-squares plane removed: a tilt of the specimen under the
    profilometer is not roughness);
-2. the ball's best-fit sphere is removed (:func:`surfmet.areal.form.remove_form` with
+2. the ball's best-fit sphere is removed (:func:`surfmet.areal._form.remove_form` with
    ``"sphere"``); what remains is its roughness and form error, positive outward;
 3. the ball residual is mirrored (x -> -x): the ball was scanned from above and is turned
    over onto the plate, which reverses one in-plane axis;
@@ -13,7 +13,7 @@
    measured value (the fraction is reported);
 5. the composite roughness is the sum of the two, each measured outward from its own body,
    so that it closes the gap: h = r^2/(2R) - z (the convention of
-   :mod:`contact.setups.ball_on_plate`).
+   :mod:`contact.setups._ball_on_plate`).
 
 The result holds plain arrays and SI floats, ready for
 :class:`contact.setups.CompositeRoughness`.
@@ -27,8 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 
 #: Largest ratio of the coarsest to the finest pixel of a pair (either axis) accepted.
 MAX_PITCH_RATIO = 10.0
@@ -138,12 +138,12 @@ def fill_nearest(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def _resample(z: np.ndarray, dx: float, dy: float, nx: int, ny: int, pitch: float
               ) -> tuple[np.ndarray, np.ndarray]:
     """Resampling of a centred (ny, nx) window of pitch ``pitch``
-    (:func:`contact.sampling.sample_roughness`); also returns where the source was not
+    (:func:`contact._sampling.sample_roughness`); also returns where the source was not
     measured (nearest-neighbour of the NaN mask)."""
     from scipy.ndimage import map_coordinates
 
-    from contact.grid import Grid
-    from contact.sampling import sample_roughness
+    from contact._grid import Grid
+    from contact._sampling import sample_roughness
 
     filled, bad = fill_nearest(z)
     sy, sx = z.shape
@@ -204,7 +204,7 @@ def prepare_pair(
     >>> print(f"R = {pair.ball_radius * 1e3:.2f} mm, plate rms = {pair.plate_rms * 1e6:.2f} µm")
     R = 19.96 mm, plate rms = 2.42 µm
     """
-    from surfmet.areal.form import remove_form
+    from surfmet.areal._form import remove_form
 
     if plate is None and ball is None:
         raise SurfmetInputError("give a plate scan, a ball scan, or both")

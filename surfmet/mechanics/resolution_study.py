@@ -4,10 +4,10 @@
 The scans are prepared as for the ordinary commands (spikes removed, plate levelled, the
 ball's sphere removed, both paired on the finer pitch by
 :func:`surfmet.mechanics.pairing.prepare_pair`),
-then :mod:`contact.resolution` solves the contact on the composite roughness block-averaged
+then :mod:`contact._resolution` solves the contact on the composite roughness block-averaged
 8x, 4x, 2x and at the native pixel, and fits the trend of each quantity against the pixel.
 This module prints the study as a table (its JSON record is
-:func:`surfmet.records.resolution.study_record`); the command line's
+:func:`surfmet.records._resolution.study_record`); the command line's
 ``--resolution-study`` is :mod:`surfmet.cli._resolution_study`.
 """
 
@@ -16,14 +16,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import SPIKES
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
 
-    from contact.material_pair import MaterialPair
-    from contact.resolution import ResolutionStudy
+    from contact._material_pair import MaterialPair
+    from contact._resolution import ResolutionStudy
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.scan_preparation import PreparedScans
 
@@ -46,7 +46,7 @@ QUANTITIES = {
 def _study_inputs(plate: ScanSource | None, ball: ScanSource | None, materials: Materials,
                   spikes: Spikes, hardness: float | None = None
                   ) -> tuple[MaterialPair, PreparedScans]:
-    """The resolved pair (:class:`contact.material_pair.MaterialPair`, ``hardness`` in place
+    """The resolved pair (:class:`contact._material_pair.MaterialPair`, ``hardness`` in place
     of the table's) and the prepared scans of a study."""
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
@@ -93,11 +93,11 @@ def contact_study(
 
     Returns
     -------
-    (contact.resolution.ResolutionStudy, surfmet.mechanics.scan_preparation.PreparedScans)
+    (contact._resolution.ResolutionStudy, surfmet.mechanics.scan_preparation.PreparedScans)
 
     See Also
     --------
-    contact.resolution : the engine's study.
+    contact._resolution : the engine's study.
     study_lines : the table in words.
 
     Examples
@@ -114,7 +114,7 @@ def contact_study(
     >>> type(study).__name__, prep.spikes_removed
     ('ResolutionStudy', {'plate': 2})
     """
-    from contact.resolution import sphere_study
+    from contact._resolution import sphere_study
 
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
     if plastic or hardness is not None:
@@ -140,8 +140,8 @@ def rolling_study(
     progress: Callable[[str], Any] | None = None,
     **sweep_kwargs: Any,
 ) -> tuple[Any, Any]:
-    """Resolution study of lambda_eff (:func:`contact.resolution.rolling_study`) from scans;
-    ``sweep_kwargs`` go to :func:`contact.rolling.sphere_sweep`.
+    """Resolution study of lambda_eff (:func:`contact._resolution.rolling_study`) from scans;
+    ``sweep_kwargs`` go to :func:`contact._rolling.sphere_sweep`.
 
     The materials are resolved here: ``lossy`` ("ball" or "plate") scales the hysteresis
     moment by that body's share of the displacement, and the plastic model takes the pair's
@@ -150,7 +150,7 @@ def rolling_study(
     See Also
     --------
     contact_study : the same for one contact.
-    contact.resolution : the engine's study.
+    contact._resolution : the engine's study.
 
     Examples
     --------
@@ -169,7 +169,7 @@ def rolling_study(
     from dataclasses import fields
 
     from contact import Dissipation
-    from contact.resolution import rolling_study as engine
+    from contact._resolution import rolling_study as engine
 
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
     if lossy not in ("both", "ball", "plate"):

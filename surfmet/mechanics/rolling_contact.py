@@ -19,7 +19,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 if TYPE_CHECKING:
     from contact.tangential import TangentialResult
@@ -47,7 +47,7 @@ class RollingContact:
 
     Attributes
     ----------
-    result : contact.tangential.results.TangentialResult
+    result : contact.tangential._results.TangentialResult
         The normal and tangential solution (pressure, tractions, stick/slip, forces).
     radius, load : float
         Ball or cylinder radius (m) and load (N, or N/m for a line).
@@ -124,7 +124,7 @@ def parse_line_load(text: str) -> float:
 
 
 #: Half-width of a rough contact's domain over the radius within which it may touch
-#: (:func:`contact.geometry.contact_extent`), the margin ``surfmet contact`` takes.
+#: (:func:`contact._geometry.contact_extent`), the margin ``surfmet contact`` takes.
 ROUGH_MARGIN = 1.25
 #: How often a domain the contact outgrows is enlarged (1.5x each time) before giving up.
 ENLARGEMENTS = 3
@@ -147,7 +147,7 @@ def solve_rolling_contact(
 
     The domain is sized as for ``surfmet contact``: 1.25 Hertz radii for a smooth ball;
     for a rough one, 1.25 times the radius within which asperities up to three standard
-    deviations high may touch (:func:`contact.geometry.contact_extent`), since rough
+    deviations high may touch (:func:`contact._geometry.contact_extent`), since rough
     contact spreads well beyond the Hertz radius. A contact that still reaches the
     leading edge enlarges the domain (1.5x, up to :data:`ENLARGEMENTS` times, said in
     the notes) unless ``size`` fixes it.
@@ -188,7 +188,7 @@ def solve_rolling_contact(
 
     See Also
     --------
-    surfmet.records.rolling_contact.rolling_contact_record : its JSON record.
+    surfmet.records._rolling_contact.rolling_contact_record : its JSON record.
 
     References
     ----------
@@ -204,16 +204,16 @@ def solve_rolling_contact(
     within Coulomb's μN = 3 N:
 
     >>> from surfmet.mechanics.rolling_contact import solve_rolling_contact
-    >>> from surfmet.records.rolling_contact import rolling_contact_record
+    >>> from surfmet.records._rolling_contact import rolling_contact_record
     >>> rc = solve_rolling_contact(0.02, 10.0, "steel,steel", 0.3, creepage=1e-4, grid=32)
     >>> fx = rolling_contact_record(rc)["fx"]
     >>> print(fx["unit"], 0 < abs(fx["value"]) < 0.3 * 10.0)
     N True
     """
-    from contact.errors import EdgeContactError
-    from contact.record import LEADING_EDGE, raise_edge
+    from contact._errors import EdgeContactError
+    from contact._record import LEADING_EDGE, raise_edge
     from contact.tangential import Creepage, steady_rolling
-    from contact.tangential.memory import check_rolling_memory
+    from contact.tangential._memory import check_rolling_memory
     from surfmet.mechanics.material_spec import material_pair
 
     constants = material_pair(materials).constants()
@@ -276,8 +276,8 @@ def _half_width(radius: float, load: float, e_star: float, line: bool,
     """The automatic half-width of the domain (m): see :func:`solve_rolling_contact`."""
     import numpy as np
 
-    from contact.geometry import contact_extent
-    from contact.hertz import hertz_cylinder, hertz_sphere
+    from contact._geometry import contact_extent
+    from contact._hertz import hertz_cylinder, hertz_sphere
 
     if line:
         return (1.5 if roughness is not None else 1.25) * hertz_cylinder(radius, load,
@@ -291,8 +291,8 @@ def _half_width(radius: float, load: float, e_star: float, line: bool,
 
 def _grid(radius: float, half: float, n: int, line: bool, roughness: RoughnessMap | None) -> Any:
     """The tangential grid of half-width ``half``, with the roughness sampled onto it."""
-    from contact.grid import cylinder_grid, sphere_grid
-    from contact.sampling import sample_roughness
+    from contact._grid import cylinder_grid, sphere_grid
+    from contact._sampling import sample_roughness
 
     make = cylinder_grid if line else sphere_grid
     z = None

@@ -4,10 +4,10 @@ ball rolling on a scanned plate (and a scanned ball).
 The scans are prepared as for every contact
 (:func:`surfmet.mechanics.scan_preparation.prepare_scans`:
 spikes removed, plate levelled, ball sphere removed, both paired on one grid) and the load
-sweep runs in the contact engine (:func:`contact.rolling.sphere_sweep`; the models, the
-choice of displacement and the exponent fit are documented in :mod:`contact.rolling`).
+sweep runs in the contact engine (:func:`contact._rolling.sphere_sweep`; the models, the
+choice of displacement and the exponent fit are documented in :mod:`contact._rolling`).
 
-Its record (:func:`surfmet.records.rolling.rolling_record`) holds ``lambda_eff``,
+Its record (:func:`surfmet.records._rolling.rolling_record`) holds ``lambda_eff``,
 ``lambda_ci`` [lo, hi], ``loads``, ``moments``, ``local_lambda``, ``model`` and the
 ``settings`` used; every value is ``{"value": v, "unit": "..."}``.
 """
@@ -21,15 +21,15 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.scan_preparation import MAX_GRID, SPIKES
 
 if TYPE_CHECKING:
     from distributed import Client
 
-    from contact.exponent import ExponentFit
-    from contact.materials import Material
-    from contact.rolling import RollingSweep
+    from contact._exponent import ExponentFit
+    from contact._materials import Material
+    from contact._rolling import RollingSweep
     from surfmet.mechanics._types import Loads, Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.scan_preparation import PreparedScans
 
@@ -42,9 +42,9 @@ class RollingReport:
 
     Attributes
     ----------
-    sweep : contact.rolling.RollingSweep
+    sweep : contact._rolling.RollingSweep
     radius : float
-    ball_material, plate_material : contact.materials.Material
+    ball_material, plate_material : contact._materials.Material
     scans : surfmet.mechanics.scan_preparation.PreparedScans
     notes : tuple of str
 
@@ -129,7 +129,7 @@ def rolling_resistance(
     loads : str or sequence of float
         ``"F1:F2[:N]"`` (N log-spaced loads, default 9) or the loads (N).
     model : {"hysteresis", "plastic"}
-        Dissipation model (see :mod:`contact.rolling`).
+        Dissipation model (see :mod:`contact._rolling`).
     hardness : float, optional
         Flow pressure of the softer body (Pa; plastic model); default the materials'.
     alpha_h : float
@@ -138,7 +138,7 @@ def rolling_resistance(
         The body whose hysteresis dissipates: its share of the displacement is used
         ("both": the combined displacement, both bodies losing alpha_h).
     kinematics : {"rolling", "frozen"}
-        See :func:`contact.rolling.hysteresis_work`.
+        See :func:`contact._rolling.hysteresis_work`.
     spikes : {"remove", "keep"} or bool
         Remove spikes from the scans first (the default) or keep them.
     grid, max_grid : int, optional
@@ -152,7 +152,7 @@ def rolling_resistance(
     progress : callable, optional
         Wraps the iterable of loads (a progress bar).
     mu, traction_ratio : float
-        Microslip model (:mod:`contact.tangential.microslip`): friction coefficient and
+        Microslip model (:mod:`contact.tangential._microslip`): friction coefficient and
         ``|F_x|/N`` opposing the rolling (0: free rolling).
 
     Returns
@@ -160,7 +160,7 @@ def rolling_resistance(
     RollingReport
         The sweep (loads, forces, moments), the fitted exponent ``lambda_eff`` with its
         interval ``lambda_ci``, the notes, and ``figure()`` (its record:
-        :func:`surfmet.records.rolling.rolling_record`).
+        :func:`surfmet.records._rolling.rolling_record`).
 
     Raises
     ------
@@ -189,7 +189,7 @@ def rolling_resistance(
     >>> print(f"lambda = {report.lambda_eff:.3f}, 95 % CI {low:.3f}..{high:.3f}")
     lambda = 1.334, 95 % CI 1.331..1.338
     """
-    from contact.rolling import MODELS, sphere_sweep
+    from contact._rolling import MODELS, sphere_sweep
     from contact.setups import CompositeRoughness
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
@@ -205,7 +205,7 @@ def rolling_resistance(
     mats = material_pair(materials)
     ball_m, plate_m = parse_materials(mats)
     if model == "plastic":
-        # the one home of the default hardness (contact.material_pair.resolve_pair): the
+        # the one home of the default hardness (contact._material_pair.resolve_pair): the
         # user's, else the softer body's table value
         hardness = mats.with_hardness(hardness).hardness
         if hardness is None:
@@ -223,7 +223,7 @@ def rolling_resistance(
 
         centre = apex_centre(pair, offset)
     if model == "microslip":
-        from contact.tangential.microslip import microslip_sweep
+        from contact.tangential._microslip import microslip_sweep
 
         sweep = microslip_sweep(
             radius, ball_m, plate_m, w, mu, traction_ratio=traction_ratio,
@@ -328,7 +328,7 @@ class TrackReport:
         The loads (N).
     mean_moments : ndarray
         Mean moment over the positions that succeeded (N m), summed in position order.
-    fit : contact.exponent.ExponentFit or None
+    fit : contact._exponent.ExponentFit or None
         Power law fitted to the mean moments (None with fewer than 3 dissipating loads).
 
     See Also
@@ -362,7 +362,7 @@ def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = No
     """:func:`rolling_resistance` at several track positions, in parallel, and the exponent
     of the mean moment.
 
-    Each position's warm-started load sweep is one item of :func:`surfmet.batch.batch_map`
+    Each position's warm-started load sweep is one item of :func:`surfmet._batch.batch_map`
     (local processes by default, a Dask cluster with ``scheduler``), so the moments are
     bitwise those of the serial run (``workers=1``). A position that fails keeps its error
     in ``tracks`` and is left out of the mean.
@@ -380,7 +380,7 @@ def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = No
     See Also
     --------
     rolling_resistance : one position.
-    surfmet.batch.batch_map : the parallel map.
+    surfmet._batch.batch_map : the parallel map.
 
     Examples
     --------
@@ -393,8 +393,8 @@ def rolling_tracks(plate: ScanSource | None = None, ball: ScanSource | None = No
     >>> print(len(report.tracks), f"lambda = {report.fit.exponent:.3f}")
     2 lambda = 1.334
     """
-    from contact.exponent import fit_exponent
-    from surfmet.batch import batch_map
+    from contact._exponent import fit_exponent
+    from surfmet._batch import batch_map
 
     if not positions:
         raise SurfmetInputError("give at least one track position")

@@ -13,11 +13,11 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 if TYPE_CHECKING:
     from rotor import LawOfMotionAnalysis, Rig, RotorVerdict
-    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics._rotor_rough_bound import RoughArmBound
 
 __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
            "paper_verdict", "shared_track_p_text", "table_verdict", "verdict_figure",
@@ -52,9 +52,9 @@ def load_rig(path: str | Path) -> Rig:
     >>> load_rig("no-such-rig.json")
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: --rig no-such-rig.json: no such file
+    surfmet._errors.SurfmetInputError: --rig no-such-rig.json: no such file
     """
-    from contact.errors import ContactInputError
+    from contact._errors import ContactInputError
     from rotor import rig_from_mapping
 
     try:
@@ -136,9 +136,9 @@ def judge(cols: Mapping[str, Sequence[float]], ks: Sequence[int] | None, *, fps:
     >>> judge({"s1": np.round(1000 + 120 * t)}, None, fps=120.0, step=np.pi / 2)
     Traceback (most recent call last):
     ...
-    surfmet.errors.SurfmetInputError: ...
+    surfmet._errors.SurfmetInputError: ...
     """
-    from contact.errors import ContactInputError
+    from contact._errors import ContactInputError
     from rotor import judge_table
 
     groups = ({g.name: list(g.columns) for g in rig.groups} if rig is not None
@@ -180,8 +180,8 @@ def paper_verdict() -> RotorVerdict:
     'undetermined'
     """
     from rotor import paper_rig
+    from surfmet._frames import read_frames_table
     from surfmet.data import path as data_path
-    from surfmet.frames import read_frames_table
 
     ks, cols = read_frames_table(data_path("table3_frames.tsv"))
     rig = paper_rig()
@@ -243,8 +243,8 @@ def verdict_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis | None = None,
     analysis : rotor.LawOfMotionAnalysis, optional
         The table's per-test analysis (:func:`rotor.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
-        (as :func:`surfmet.records.rotor_verdict.verdict_record` adds their JSON).
-    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
+        (as :func:`surfmet.records._rotor_verdict.verdict_record` adds their JSON).
+    rough : surfmet.mechanics._rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent, after the friction arm's line.
 
     Returns
@@ -254,7 +254,7 @@ def verdict_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis | None = None,
 
     See Also
     --------
-    surfmet.records.rotor_verdict.verdict_record : the same as JSON.
+    surfmet.records._rotor_verdict.verdict_record : the same as JSON.
 
     Examples
     --------

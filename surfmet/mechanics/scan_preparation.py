@@ -5,14 +5,14 @@ command and API entry point that builds a contact from a scan (``contact``, ``he
 
 1. Spikes (:data:`SPIKES`, ``"remove"`` by default): optical outliers are not asperities.
    A single 50 µm spike carries newtons in an elastic solution and pushes the peak pressure
-   above the composite modulus; :func:`surfmet.spikes.remove_spikes` turns them into
+   above the composite modulus; :func:`surfmet._spikes.remove_spikes` turns them into
    non-measured points. ``"keep"`` leaves the scan as measured.
 2. The plate is levelled, the ball's best-fit sphere removed, both paired on one grid and
    the non-measured points filled with the nearest measured value
    (:func:`surfmet.mechanics.pairing.prepare_pair`).
 
 Every result built this way states what was done (its record is
-:func:`surfmet.records.preparation.preparation_record`).
+:func:`surfmet.records._preparation.preparation_record`).
 """
 
 from __future__ import annotations
@@ -25,8 +25,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 
 if TYPE_CHECKING:
     from surfmet.mechanics._types import ScanSource, Spikes
@@ -169,7 +169,7 @@ def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES
 
     See Also
     --------
-    surfmet.spikes : the spike detector.
+    surfmet._spikes : the spike detector.
 
     Examples
     --------
@@ -182,7 +182,7 @@ def clean_spikes(scan: Topography, what: str, spikes: Spikes = SPIKES
     """
     if spike_mode(spikes) == "keep":
         return scan, 0, f"spikes kept in the {what} scan (--spikes keep)"
-    from surfmet.spikes import remove_spikes
+    from surfmet._spikes import remove_spikes
 
     new, report = remove_spikes(scan)
     if not report.count:
@@ -259,7 +259,7 @@ class FlatPreparation:
     See Also
     --------
     prepare_flat : makes it.
-    surfmet.records.preparation.flat_preparation_record : its record.
+    surfmet.records._preparation.flat_preparation_record : its record.
 
     Examples
     --------
@@ -298,7 +298,7 @@ class ScansUsed:
     See Also
     --------
     surfmet.mechanics.adhesion.rough_grid : makes it.
-    surfmet.records.adhesion.scans_record : its record.
+    surfmet.records._adhesion.scans_record : its record.
 
     Examples
     --------
@@ -383,7 +383,7 @@ def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = Non
     plate, ball : Topography or path, optional
         The scans (either, both or none).
     spikes : {"remove", "keep"} or bool
-        Remove spikes (:func:`surfmet.spikes.remove_spikes`) from each scan first (they
+        Remove spikes (:func:`surfmet._spikes.remove_spikes`) from each scan first (they
         become non-measured points), or keep them. True means "remove".
 
     Returns
@@ -409,7 +409,7 @@ def prepare_scans(plate: ScanSource | None = None, ball: ScanSource | None = Non
     >>> print(prep.notes[3])
     ball: best-fit sphere of radius 19.956 mm removed, residual mirrored in x
     """
-    from surfmet.areal.form import remove_form
+    from surfmet.areal._form import remove_form
     from surfmet.mechanics.pairing import prepare_pair
 
     mode = spike_mode(spikes)

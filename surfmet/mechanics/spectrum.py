@@ -39,13 +39,13 @@ from contact.roughcontact import (
     plasticity_index,
     summit_parameters,
 )
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Topography
 from surfmet.mechanics._spectrum_cutoffs import cutoffs, noise_floor
-from surfmet.model import Topography
 from surfmet.psd import PSD, HurstFit, areal_psd, fit_hurst
 
 if TYPE_CHECKING:
-    from contact.material_pair import MaterialPair
+    from contact._material_pair import MaterialPair
     from surfmet.mechanics._types import Materials, ScanSource, Spikes
     from surfmet.mechanics.scan_preparation import FlatPreparation
 
@@ -394,7 +394,7 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
     A periodic scan (detected on the raw heights, or declared) only loses its mean, since a
     fitted plane would break its periodicity; any other scan loses its least-squares plane,
     or its second-order surface when a curved form dominates what the plane leaves
-    (:func:`surfmet.areal.form.dominant_form`: a ball's cap is form, not roughness; the
+    (:func:`surfmet.areal._form.dominant_form`: a ball's cap is form, not roughness; the
     levelling is then ``"poly:2"``).
 
     Parameters
@@ -427,14 +427,14 @@ def prepare(topo: Topography, periodic: bool | None = None) -> tuple[Topography,
         z = np.asarray(topo.heights, float)
         out, how = Topography(z - np.nanmean(z), topo.dx, topo.dy, topo.metadata), "mean"
     else:
-        from surfmet.areal.form import dominant_form, remove_form
+        from surfmet.areal._form import dominant_form, remove_form
 
         out, fit = remove_form(topo, "plane")
         how = "plane"
         if dominant_form(topo, fit):
             out, how = remove_form(topo, "poly:2")[0], "poly:2"
     # what levelling leaves of constant or planar heights is rounding: the one criterion
-    from profiles.form import is_flat
+    from profiles._form import is_flat
 
     if is_flat(topo.heights, out.heights):
         raise SurfmetInputError(f"the scan is flat (constant heights{'' if per else ' or a plane'}"

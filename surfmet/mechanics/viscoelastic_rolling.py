@@ -6,7 +6,7 @@ Text forms
 ``--viscoelastic BODY:Eg=..:Er=..:tau=..[:nu=..]``: BODY is ``ball`` or ``plate``; ``Eg``
 and ``Er`` are the glassy and relaxed moduli (pressure units), ``tau`` the creep time
 tau_c in CONTACT's convention (``s``, ``ms``, ``us``; a bare number is seconds; the
-stress-relaxation time is tau_c Er/Eg, :mod:`contact.viscoelastic.rheology`). ``nu``
+stress-relaxation time is tau_c Er/Eg, :mod:`contact.viscoelastic._rheology`). ``nu``
 defaults to the body's material.
 
 The mechanism comparison (:func:`rolling_mechanisms`) uses the rotor of Alaci et al.
@@ -23,13 +23,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_constant, poisson_ratio, spec_options
 
 if TYPE_CHECKING:
-    from contact.materials import Material
-    from contact.rolling import RollingSweep
-    from contact.viscoelastic.mechanisms import MechanismComparison
+    from contact._materials import Material
+    from contact._rolling import RollingSweep
+    from contact.viscoelastic._mechanisms import MechanismComparison
     from rotor import GroupOffset, RotorVerdict
     from surfmet.mechanics._types import Loads, Materials, Progress, ScanSource
 
@@ -140,7 +140,7 @@ def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | Non
     """Rolling resistance of viscoelastic bodies over a load sweep (smooth or scans).
 
     Each body is the ``--viscoelastic`` SLS given for it, else, with ``loss``, the SLS of
-    that loss factor peaking at V/a (:func:`contact.viscoelastic.loss.sls_from_loss`), else
+    that loss factor peaking at V/a (:func:`contact.viscoelastic._loss.sls_from_loss`), else
     elastic.
 
     Parameters
@@ -197,9 +197,9 @@ def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | Non
     >>> print(f"lambda = {report.sweep.fit.exponent:.2f}")
     lambda = 1.03
     """
-    from contact.hertz import hertz_sphere
-    from contact.viscoelastic.loss import sls_from_loss
-    from contact.viscoelastic.sweep import viscoelastic_sweep
+    from contact._hertz import hertz_sphere
+    from contact.viscoelastic._loss import sls_from_loss
+    from contact.viscoelastic._sweep import viscoelastic_sweep
     from surfmet.mechanics.material_spec import material_pair, parse_materials
     from surfmet.mechanics.scan_preparation import prepare_scans
 
@@ -224,7 +224,7 @@ def viscoelastic_rolling(plate: ScanSource | None = None, ball: ScanSource | Non
         roughness_dy=None if pair is None else pair.dy, n=grid, progress=progress)
     notes = [*(prep.notes if pair is not None else ()), *sweep.notes]
     if pair is not None:
-        notes.append("roughness frozen in the contact frame (contact.viscoelastic.sweep)")
+        notes.append("roughness frozen in the contact frame (contact.viscoelastic._sweep)")
     return ViscoRollingReport(sweep, float(radius), (bodies["ball"], bodies["plate"]),
                               tuple(notes))
 
@@ -294,7 +294,7 @@ def microslip_sweep(radius: float, materials: Materials, mu: float,
     >>> print(f"lambda = {sweep.fit.exponent:.3f}")
     lambda = 1.333
     """
-    from contact.viscoelastic.sweep import sweep_record
+    from contact.viscoelastic._sweep import sweep_record
     from surfmet.mechanics.rolling_contact import solve_rolling_contact
 
     def run(loads: Loads) -> Any:
@@ -317,7 +317,7 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Materials = "steel,al
                        ) -> MechanismsReport:
     """Mechanisms at the rotor's ball loads (smooth pair) beside Table 3's measurement.
 
-    ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic.loss`;
+    ``loss`` defaults to the typical loss factors of :mod:`contact.viscoelastic._loss`;
     ``mu`` (assumed; dry steel on aluminium) sets the micro-slip mechanism, None leaves it
     out (it costs one 3D frictional solve per load). ``adhesion`` = (w, Delta_w) (J/m^2)
     sets the adhesion-hysteresis mechanism; None entries take steel on aluminium in air
@@ -367,9 +367,9 @@ def rolling_mechanisms(*, radius: float = 0.02, materials: Materials = "steel,al
     >>> rolling_mechanisms(mu=None, loads=(2.0, 12.0, 3)).verdict.code
     'undetermined'
     """
-    from contact.rolling import log_loads
-    from contact.viscoelastic.loss import loss_data
-    from contact.viscoelastic.mechanisms import compare_mechanisms
+    from contact._rolling import log_loads
+    from contact.viscoelastic._loss import loss_data
+    from contact.viscoelastic._mechanisms import compare_mechanisms
     from rotor import mass_properties, normal_reactions
     from surfmet.mechanics.material_spec import material_pair, parse_materials
 

@@ -1,7 +1,7 @@
 """One steady viscoelastic rolling solve (``surfmet rolling-contact --viscoelastic``): the
 normal problem, the tangential one where the model can answer it, and its JSON record in
 the elastic command's vocabulary
-(:func:`~surfmet.records.rolling_contact.visco_rolling_contact_record`: the elastic
+(:func:`~surfmet.records._rolling_contact.visco_rolling_contact_record`: the elastic
 record's keys, sign convention and grid record).
 
 What the tangential solve leaves out. The plane-strain traction solver
@@ -11,9 +11,9 @@ prescribed) the tractions of a pair with K != 0 come from that coupling alone (t
 elastic solve of steel on PMMA finds a creepage of 9e-4 and a slip band), while the
 uncoupled problem has the trivial solution q = 0: free rolling of a dissimilar pair in
 plane strain is reported as *not solved*, with the reason, instead of as zeros. The 3D
-solver (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`) takes the
+solver (:func:`contact.viscoelastic._traction3d.visco_steady_tractions`) takes the
 coupling one way: the tangential displacement of the pressure, with its own hereditary
-integral (:func:`contact.viscoelastic.traction3d.pressure_tangential`), joins the slip;
+integral (:func:`contact.viscoelastic._traction3d.pressure_tangential`), joins the slip;
 the tractions' normal displacement does not change the pressure. In its relaxed and
 glassy limits it gives the elastic solver's creepage and areas for the same pressure;
 against the elastic two-way coupled solve of steel on PMMA (48 x 48) the free-rolling
@@ -27,11 +27,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 
 if TYPE_CHECKING:
-    from contact.materials import Material
-    from contact.viscoelastic.rheology import CreepSeries, StandardLinearSolid
+    from contact._materials import Material
+    from contact.viscoelastic._rheology import CreepSeries, StandardLinearSolid
     from surfmet.mechanics._types import Materials, ScanSource
 
 #: ``|K|`` at or below this is quasi-identical (the viscoelastic traction solvers' model).
@@ -82,7 +82,7 @@ class ViscoRollingContact:
 
 def _shear(body: Material | StandardLinearSolid, glassy: bool) -> tuple[float, float]:
     """(G, nu) of an elastic Material or, glassy or relaxed, a standard linear solid."""
-    from contact.viscoelastic.rheology import StandardLinearSolid
+    from contact.viscoelastic._rheology import StandardLinearSolid
 
     if isinstance(body, StandardLinearSolid):
         e = body.E_g if glassy else body.E_r
@@ -191,7 +191,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
     mu, creepage : float, optional
         Coefficient of friction and creepage (default free rolling) for the tangential
         tractions: plane strain (:func:`contact.viscoelastic.steady_traction`) or, for a
-        ball, 3D (:func:`contact.viscoelastic.traction3d.visco_steady_tractions`).
+        ball, 3D (:func:`contact.viscoelastic._traction3d.visco_steady_tractions`).
 
     Returns
     -------
@@ -205,7 +205,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
 
     See Also
     --------
-    surfmet.records.rolling_contact.visco_rolling_contact_record : its JSON record.
+    surfmet.records._rolling_contact.visco_rolling_contact_record : its JSON record.
     surfmet.mechanics.rolling_contact.solve_rolling_contact : the elastic case.
 
     References
@@ -225,7 +225,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
     >>> bool(vc.normal.rolling_resistance > 0)
     True
     """
-    from contact.tangential.memory import check_rolling_memory
+    from contact.tangential._memory import check_rolling_memory
     from contact.viscoelastic import pair_creep
     from surfmet.mechanics.material_spec import parse_materials
     from surfmet.mechanics.viscoelastic_rolling import parse_viscoelastic
@@ -266,8 +266,8 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
 def _line(radius: float, load: float, creep: CreepSeries, speed: float, n: int, mu: float | None,
           creepage: float | None) -> tuple[Any, Any]:
     """The plane-strain normal solve and, with ``mu``, Carter's problem with creep."""
-    from contact.tangential.memory import check_rolling_memory
-    from contact.viscoelastic.line import influence_matrix, rolling_cylinder
+    from contact.tangential._memory import check_rolling_memory
+    from contact.viscoelastic._line import influence_matrix, rolling_cylinder
 
     check_rolling_memory(n, line=True, dense=True)
     res = rolling_cylinder(radius, load, creep, speed, n=n)
@@ -286,12 +286,12 @@ def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
           coupled: bool) -> tuple[Any, Any]:
     """The 3D normal solve (smooth or with the scans) and, with ``mu``, the tractions
     (``coupled``: with the pressure's tangential displacement of a dissimilar pair)."""
-    from contact.viscoelastic.surface import rolling_sphere
+    from contact.viscoelastic._surface import rolling_sphere
 
     z = None
     if plate is not None or ball is not None:
-        from contact.viscoelastic.sweep import roughness_window
-        from contact.viscoelastic.window import sphere_window
+        from contact.viscoelastic._sweep import roughness_window
+        from contact.viscoelastic._window import sphere_window
         from surfmet.mechanics.scan_preparation import prepare_scans
 
         pair = prepare_scans(plate, ball, spikes=spikes).pair
@@ -300,8 +300,8 @@ def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
     res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
     if mu is None:
         return res, None
-    from contact.grid import Grid
-    from contact.viscoelastic.traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
+    from contact._grid import Grid
+    from contact.viscoelastic._traction3d import ViscoRolling, pair_poisson, visco_steady_tractions
 
     x, y = np.asarray(res.x), np.asarray(res.y)
     grid3 = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius))

@@ -29,7 +29,7 @@ def new_figure(nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (6.4,
 
 
 def finish(fig: Any, path: str | Path | None = None, dpi: int = 120) -> Any:
-    """Save ``fig`` to ``path`` when given (whole or not at all, :mod:`surfmet.atomic`),
+    """Save ``fig`` to ``path`` when given (whole or not at all, :mod:`surfmet._atomic`),
     and return it."""
     if path is not None:
         save(fig, path, dpi=dpi)
@@ -38,7 +38,7 @@ def finish(fig: Any, path: str | Path | None = None, dpi: int = 120) -> Any:
 
 def save(fig: Any, path: str | Path, dpi: int = 120) -> None:
     """Write ``fig`` to ``path`` (format from the extension) whole or not at all."""
-    from surfmet.atomic import atomic_path
+    from surfmet._atomic import atomic_path
 
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=dpi)

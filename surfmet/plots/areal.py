@@ -12,8 +12,8 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
-from surfmet.model import Profile, Topography
+from surfmet._errors import SurfmetInputError
+from surfmet._model import Profile, Topography
 from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
 from surfmet.units import valid_text
 

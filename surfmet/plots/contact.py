@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.plots._style import MPA, add_scale_bar, finish, lateral_unit, new_figure
 
 
@@ -82,7 +82,7 @@ def pressure_map(
                    cmap=cm, vmin=0.0, vmax=vmax / MPA, interpolation="nearest", aspect="equal")
     cb = fig.colorbar(im, ax=ax, shrink=0.9, extend="max" if pmax > vmax else "neither")
     cb.set_label("contact pressure (MPa)")
-    from contact.bem.result import cluster_labels
+    from contact.bem._result import cluster_labels
 
     labels, n = cluster_labels(contact, bool(getattr(result, "periodic", False)))
     if zoom and contact.any():

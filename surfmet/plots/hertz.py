@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.plots._style import finish, new_figure
 
 
@@ -52,13 +52,13 @@ def rolling_figure(sweeps: Any, path: str | Path | None = None, *,
 
     Parameters
     ----------
-    sweeps : contact.rolling.RollingSweep or a list of them
+    sweeps : contact._rolling.RollingSweep or a list of them
     labels : list of str, optional
         Legend entries (default: the model names).
     """
     items = list(sweeps) if isinstance(sweeps, (list, tuple)) else [sweeps]
     if not items or not all(hasattr(s, "moments") and hasattr(s, "loads") for s in items):
-        raise SurfmetInputError("rolling_figure needs contact.rolling.RollingSweep results")
+        raise SurfmetInputError("rolling_figure needs contact._rolling.RollingSweep results")
     # the hysteresis moments scale with the assumed loss fraction: the label says which
     labels = labels or [s.model + (f" (α_h = {s.settings['alpha_h']:g})"
                                    if s.settings.get("alpha_h") is not None else "")

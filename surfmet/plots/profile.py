@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from surfmet.errors import SurfmetInputError
+from surfmet._errors import SurfmetInputError
 from surfmet.plots._style import UM, finish, lateral_unit, new_figure
 
 
@@ -73,7 +73,7 @@ def profile_figure(analysis: Any, path: str | Path | None = None, *, title: str 
     rough = np.asarray(analysis.roughness)
     ev = np.asarray(analysis.evaluated, dtype=bool)
     p = analysis.parameters
-    # the primary profile's parameters carry P names (ISO 21920-2; surfmet.profile_evaluation)
+    # the primary profile's parameters carry P names (ISO 21920-2; surfmet._profile_evaluation)
     r = st.get("parameter_letter", "R")
     ax.plot(xs, rough / UM, color="C2", lw=0.7,
             label=f"{r}a = {p.Ra / UM:.4g} µm, {r}q = {p.Rq / UM:.4g} µm")
