@@ -277,7 +277,7 @@ def test_a_new_interaction_law_touches_three_files():
         assert home.startswith("contact/adhesion/laws/") and not home.endswith(
             ("registry.py", "base.py", "__init__.py")), (name, home)
     assert "docs/adhesion.md" in files
-    assert files[0] == "contact/adhesion/laws/<law>.py"
+    assert files[0] == "contact/adhesion/laws/_<law>.py"
 
 
 @pytest.mark.parametrize("doc", ["architecture.md", "contact_core.md"])
