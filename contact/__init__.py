@@ -15,11 +15,12 @@ Main entry points::
     results = prob.sweep([1, 3, 10, 30, 100])   # warm-started load sweep
     check_sphere(...)                      # BEM against Hertz, with a verdict (hertzcheck)
 
-Rooms: set-ups (``contact.setups``: ball on plate, line, flat, the composite roughness),
-field post-processing (``contact._fields``), roughness statistics (``contact._roughstats``),
-theories (``contact._hertz``, ``contact.roughcontact``), verdicts (``contact._hertzcheck``,
-``contact._resolution``), rolling resistance (``contact._rolling``) and its load exponent
-(``contact._exponent``)::
+Rooms are subpackages (``contact.setups``: ball on plate, line, flat, the composite
+roughness; ``contact.bem``, ``contact.adhesion``, ``contact.roughcontact``...); the modules
+behind the names below are private (scikit-image's split: ``contact._hertz``,
+``contact._hertzcheck``, ``contact._rolling``, ``contact._exponent``...), so import the
+names from ``contact``: theories (``hertz_sphere``), verdicts (``check_sphere``), roughness
+statistics (``gjm_alpha``), rolling resistance and its load exponent::
 
     sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
 
