@@ -362,7 +362,7 @@ def test_scan_options_refused_in_one_line(capsys, args, needle):
 
 
 def test_rough_bound_in_words_says_which_radius_decides():
-    from surfmet.mechanics._rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
     from surfmet.mechanics.rotor_verdict import paper_verdict, verdict_lines
 
     v = paper_verdict()

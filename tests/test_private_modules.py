@@ -98,8 +98,8 @@ def test_the_public_tables_and_their_reasons_are_in_the_architecture_page():
     missing = sorted(t for t in keeping if f"`{t}`" not in section)
     assert keeping and not missing, f"tables keeping modules public, not explained: {missing}"
     # and the section names no table that keeps nothing public any more
-    named = set(re.findall(r"`((?:%s)(?:\.\w+)*\.(?:__all__|[A-Z_]+))`" % "|".join(ROOTS),
-                           section))
+    roots = "|".join(ROOTS)
+    named = set(re.findall(rf"`((?:{roots})(?:\.\w+)*\.(?:__all__|[A-Z_]+))`", section))
     assert named <= set(keeping), sorted(named - set(keeping))
 
 

@@ -125,7 +125,7 @@ def test_star_import_is_clean_and_every_face_name_resolves():
 # do not build JSON quantities; the records live in surfmet/records/rotor*.py
 ROTOR_USERS = ("surfmet/cli/rotor.py", "surfmet/mechanics/_rotor_adequacy.py",
                "surfmet/mechanics/_rotor_argument.py", "surfmet/mechanics/_rotor_sensitivity.py",
-               "surfmet/mechanics/_rotor_rough_bound.py", "surfmet/mechanics/rotor_verdict.py")
+               "surfmet/mechanics/rotor_rough_bound.py", "surfmet/mechanics/rotor_verdict.py")
 
 
 def _quantities(tree: ast.AST) -> list[int]:

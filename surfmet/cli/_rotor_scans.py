@@ -1,6 +1,6 @@
 """``surfmet rotor --plate FILE [--ball FILE]``: the scans that give the rough contact's
 extent beside the Hertz radius in the verdict's arm bound
-(:mod:`surfmet.mechanics._rotor_rough_bound`)."""
+(:mod:`surfmet.mechanics.rotor_rough_bound`)."""
 
 from __future__ import annotations
 
@@ -45,7 +45,7 @@ def rough_bound(args: argparse.Namespace, verdict: Any) -> Any:
     if verdict is None or verdict.arm is None or verdict.rig is None:
         raise SurfmetInputError("--plate needs the rig's arm bound (paper2022, or --rig "
                                 "RIG.json)")
-    from surfmet.mechanics._rotor_rough_bound import rough_arm_bound
+    from surfmet.mechanics.rotor_rough_bound import rough_arm_bound
 
     return rough_arm_bound(verdict.arm, verdict.rig.ball_radius, args.plate, args.ball,
                            grid=args.grid)

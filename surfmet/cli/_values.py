@@ -87,7 +87,7 @@ def add_interaction_argument(p: Any) -> None:
     (:data:`surfmet.mechanics.adhesion.INTERACTION`), and the laws' parameter options
     (:func:`surfmet.cli._laws.add_law_arguments`)."""
     from surfmet.cli._laws import add_law_arguments
-    from surfmet.mechanics._adhesion_laws import INTERACTION
+    from surfmet.mechanics.adhesion_laws import INTERACTION
 
     add_law_arguments(p, INTERACTION, f"adhesion law (default {INTERACTION}, in every "
                       "command)")

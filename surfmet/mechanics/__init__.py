@@ -23,6 +23,7 @@ from surfmet._lazy import attach
 # imports none of them.
 __all__ = [
     "adhesion",
+    "adhesion_laws",
     "adhesion_line",
     "all_scales",
     "ball_contact",
@@ -34,6 +35,7 @@ __all__ = [
     "resolution_study",
     "rolling_contact",
     "rolling_resistance",
+    "rotor_rough_bound",
     "rotor_verdict",
     "scan_preparation",
     "spectrum",

@@ -11,13 +11,13 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from surfmet.mechanics._rotor_rough_bound import deciding_bound, rough_bound_line
+from surfmet.mechanics.rotor_rough_bound import deciding_bound, rough_bound_line
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
 
     from rotor import ArmBound, LawOfMotionAnalysis, RotorVerdict
-    from surfmet.mechanics._rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
 __all__ = ["LOWER_BOUND", "MISREAD_WHY", "argument_lines", "differences_lines", "lane_line",
            "permutation_line", "windows_lines"]

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from surfmet._errors import SurfmetInputError
-from surfmet.mechanics._adhesion_laws import (  # noqa: F401  (the facade's face)
+from surfmet.mechanics.adhesion_laws import (  # noqa: F401  (the facade's face)
     INTERACTION,
     interaction_law,
     interaction_name,

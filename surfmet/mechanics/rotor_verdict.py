@@ -17,7 +17,7 @@ from surfmet._errors import SurfmetInputError
 
 if TYPE_CHECKING:
     from rotor import LawOfMotionAnalysis, Rig, RotorVerdict
-    from surfmet.mechanics._rotor_rough_bound import RoughArmBound
+    from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
 __all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
            "paper_verdict", "shared_track_p_text", "table_verdict", "verdict_figure",
@@ -244,7 +244,7 @@ def verdict_lines(v: RotorVerdict, analysis: LawOfMotionAnalysis | None = None,
         The table's per-test analysis (:func:`rotor.analyse_table`): adds,
         after a blank line, the table of the four differences and the two misread rules
         (as :func:`surfmet.records._rotor_verdict.verdict_record` adds their JSON).
-    rough : surfmet.mechanics._rotor_rough_bound.RoughArmBound, optional
+    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent, after the friction arm's line.
 
     Returns

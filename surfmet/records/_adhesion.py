@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from surfmet.mechanics._adhesion_laws import interaction_name
+from surfmet.mechanics.adhesion_laws import interaction_name
 from surfmet.records._preparation import preparation_record
 from surfmet.records._solve import solve_record
 from surfmet.units import quantity

@@ -1,6 +1,6 @@
 """JSON record of the rotor verdict's decisive argument: the friction arm ``s_r = M_r / N``
 against the contact radius that bounds it (:func:`rotor.arm_bound`: Hertz's, or the scanned
-rough contact's a*, :mod:`surfmet.mechanics._rotor_rough_bound`), the least lambda the
+rough contact's a*, :mod:`surfmet.mechanics.rotor_rough_bound`), the least lambda the
 offset needs there, and what lambda = 4/3 would need.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from surfmet.mechanics._rotor_argument import LOWER_BOUND
-from surfmet.mechanics._rotor_rough_bound import (
+from surfmet.mechanics.rotor_rough_bound import (
     MATERIALS,
     RoughArmBound,
     deciding_bound,
@@ -28,7 +28,7 @@ def _interval(value: float, low: float, high: float, unit: str) -> dict[str, Any
 
 def argument_record(v: Any, rough: Any = None) -> dict[str, Any]:
     """The arm fields of ``verdict``: ``friction_arm``, ``arm_bound`` (with the rough
-    contact's extent, a :class:`~surfmet.mechanics._rotor_rough_bound.RoughArmBound`, where
+    contact's extent, a :class:`~surfmet.mechanics.rotor_rough_bound.RoughArmBound`, where
     given), ``lambda_at_arm_bound``, ``slope_lambda_4_3`` (and ``arm_lambda_4_3``)."""
     b = v.arm
     if b is None:
@@ -66,7 +66,7 @@ def rough_bound_record(rb: RoughArmBound, friction_arm: float) -> dict[str, Any]
 
     Examples
     --------
-    >>> from surfmet.mechanics._rotor_rough_bound import RoughArmBound
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound
     >>> from surfmet.records._rotor_arm import rough_bound_record
     >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
     ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),

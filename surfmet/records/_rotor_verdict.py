@@ -60,7 +60,7 @@ def verdict_record(v: Any, analysis: Any = None, rough: Any = None) -> dict[str,
     analysis : rotor.LawOfMotionAnalysis, optional
         The table's per-test analysis (:func:`rotor.analyse_table`): adds
         the table of the four differences and the two misread rules.
-    rough : surfmet.mechanics._rotor_rough_bound.RoughArmBound, optional
+    rough : surfmet.mechanics.rotor_rough_bound.RoughArmBound, optional
         The scanned contact's extent: added to ``arm_bound`` beside the Hertz radius.
 
     Returns

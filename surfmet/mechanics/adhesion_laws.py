@@ -59,7 +59,7 @@ def interaction_law(interaction: str | AdhesionLaw, work: float | None = None,
 
     Examples
     --------
-    >>> from surfmet.mechanics._adhesion_laws import interaction_law, interaction_name
+    >>> from surfmet.mechanics.adhesion_laws import interaction_law, interaction_name
     >>> law = interaction_law("exponential", 0.05, 1e-9)
     >>> law, interaction_name(law)
     (ExponentialLaw(work=0.05, rho=1e-09), 'exponential')
@@ -98,7 +98,7 @@ def interaction_name(law: AdhesionLaw) -> str:
 
     Examples
     --------
-    >>> from surfmet.mechanics._adhesion_laws import interaction_law, interaction_name
+    >>> from surfmet.mechanics.adhesion_laws import interaction_law, interaction_name
     >>> interaction_name(interaction_law("dugdale", 0.05, 1e-9))
     'dugdale'
     """

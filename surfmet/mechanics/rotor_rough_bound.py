@@ -39,7 +39,7 @@ class RoughArmBound:
 
     Examples
     --------
-    >>> from surfmet.mechanics._rotor_rough_bound import RoughArmBound
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound
     >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
     ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
     ...                    cell=2e-5, warnings=())
@@ -98,7 +98,7 @@ def rough_arm_bound(arm: ArmBound, ball_radius: float, plate: ScanSource,
     Examples
     --------
     >>> from surfmet.data import path
-    >>> from surfmet.mechanics._rotor_rough_bound import rough_arm_bound
+    >>> from surfmet.mechanics.rotor_rough_bound import rough_arm_bound
     >>> from surfmet.mechanics.rotor_verdict import paper_verdict
     >>> v = paper_verdict()
     >>> rb = rough_arm_bound(v.arm, 0.02, path("paper_plate.x3p"), path("paper_ball.x3p"),
@@ -124,7 +124,7 @@ def rough_basis(rb: RoughArmBound) -> str:
 
     Examples
     --------
-    >>> from surfmet.mechanics._rotor_rough_bound import RoughArmBound, rough_basis
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_basis
     >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
     ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
     ...                    cell=2e-5, warnings=())
@@ -149,7 +149,7 @@ def deciding_bound(v: RotorVerdict, rb: RoughArmBound | None) -> ArmBound:
     --------
     A bound three times Hertz's radius allows a larger torque, so a smaller lambda:
 
-    >>> from surfmet.mechanics._rotor_rough_bound import RoughArmBound, deciding_bound
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, deciding_bound
     >>> from surfmet.mechanics.rotor_verdict import paper_verdict
     >>> v = paper_verdict()
     >>> rb = RoughArmBound(radius=3 * v.arm.arm_bound, hertz_radius=v.arm.arm_bound,
@@ -173,7 +173,7 @@ def rough_bound_line(rb: RoughArmBound, friction_arm: float) -> list[str]:
 
     Examples
     --------
-    >>> from surfmet.mechanics._rotor_rough_bound import RoughArmBound, rough_bound_line
+    >>> from surfmet.mechanics.rotor_rough_bound import RoughArmBound, rough_bound_line
     >>> rb = RoughArmBound(radius=318e-6, hertz_radius=106e-6, load=4.67, ball_radius=0.02,
     ...                    plate_file="plate.x3p", ball_file=None, grid=(64, 64),
     ...                    cell=2e-5, warnings=())
