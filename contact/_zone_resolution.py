@@ -24,6 +24,11 @@ __all__ = ["MIN_ZONE_PIXELS", "MIN_ZONE_PIXELS_PLAIN", "ZONE_PULL_OFF_EXCESS",
 #: pull-off is within 2.1 % of Maugis' (lambda 1 to 5), between 1.5 and 2 up to +3.8 %,
 #: below 1.1 pixels +2.6 % to +14 %.
 MIN_ZONE_PIXELS = 2.0
+#: Rings across the cohesive zone l_pz on the axisymmetric rings of a smooth sphere
+#: (measured: docs/adhesion.md, "Axisymmetric rings"); kept here, light, for the CLI's help.
+ZONE_RINGS = 8.0
+#: Fewer zone rings than this are warned about.
+MIN_ZONE_RINGS = 4.0
 #: The same for a law whose step is not smoothed (the plain Dugdale step of the line
 #: contact, and the exponential law): the pixels pin the zone's end, an error first order
 #: in the pixel over the zone (+11.8 % at 6.6 pixels, +5.3 % at 13, lambda = 1:

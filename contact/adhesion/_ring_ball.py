@@ -22,18 +22,14 @@ import numpy as np
 from contact._errors import ContactInputError
 from contact._material_pair import MaterialPair, modulus
 from contact._validate import positive
-from contact._zone_resolution import process_zone
+from contact._zone_resolution import MIN_ZONE_RINGS, ZONE_RINGS, process_zone
 from contact.adhesion._rings import ring_problem
 from contact.adhesion.ball import scales
 from contact.adhesion.cycle import Cycle, approach_retraction
 from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 
-#: Rings across the cohesive zone l_pz (measured: docs/adhesion.md, "Axisymmetric rings").
-ZONE_RINGS = 8.0
 #: Rings across the contact's scale max(a0, sqrt(2 R h)), for the DMT end (a wide zone).
 CONTACT_RINGS = 200.0
-#: Fewer zone rings than this are warned about.
-MIN_ZONE_RINGS = 4.0
 #: The rings' outer radius over the rigid sphere's reach at the deepest approach.
 OUTER_MARGIN = 1.2
 

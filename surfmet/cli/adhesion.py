@@ -69,8 +69,7 @@ and with the rigid cylinder's. With PLATE the roughness is the scan's middle row
 
 
 def add_parser(sub: Any) -> argparse.ArgumentParser:
-    from contact._zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN
-    from contact.adhesion._ring_ball import ZONE_RINGS
+    from contact._zone_resolution import MIN_ZONE_PIXELS, MIN_ZONE_PIXELS_PLAIN, ZONE_RINGS
     from surfmet.units import parse_surface_energy
 
     p = sub.add_parser(
