@@ -47,6 +47,9 @@ from contact.record import SolveRecord
 NEWTON_RINGS = 48
 #: A ring's slope below this share of the largest is not kept in the Newton step.
 SLOPE_SHARE = 1e-3
+#: The widest band of rings next to the disc solved through its Schur complement
+#: (:func:`_band_step`).
+BLOCK_RINGS = 256
 #: Iterations of one equilibrium (Newton steps and set changes together).
 MAX_ITERATIONS = 400
 #: Newton iterations tried from the warm start before the descent takes over.
@@ -161,6 +164,11 @@ def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
     coupling = np.abs(slope) * problem.diagonal[k:]
     strong = np.flatnonzero(coupling > SLOPE_SHARE * max(float(coupling.max(initial=0.0)),
                                                         1e-300))
+    if strong.size and k and int(strong[-1]) < BLOCK_RINGS:
+        # the strong rings lie next to the disc: take the whole band k ... k + m - 1,
+        # whose Schur complement is a block of the LU factors already held
+        ring = np.arange(k, k + int(strong[-1]) + 1)
+        return _band_step(problem, delta, k, p, g, ring, slope[: ring.size])
     if strong.size > NEWTON_RINGS:
         strong = strong[np.argsort(-coupling[strong])[:NEWTON_RINGS]]
     ring = np.sort(strong) + k
@@ -186,6 +194,30 @@ def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
         new[:k] = y - x @ new[ring]
     else:
         new[ring] = np.linalg.solve(np.eye(ring.size) + d[:, None] * block, right)
+    return new
+
+
+def _band_step(problem: RingProblem, delta: float, k: int, p: np.ndarray, g: np.ndarray,
+               ring: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """:func:`_newton_step` where its rings are the band k ... k + m - 1 next to the disc.
+
+    With K = L U unpivoted, the Schur complement K_bb - K_bk K_kk^-1 K_kb of the band is
+    L_bb U_bb (the band's diagonal blocks of the factors), so the step costs two disc
+    solves of one vector and an m x m product instead of m disc solves."""
+    law, kmat, h, lu = problem.law, problem.matrix, problem.gap0, problem.lu
+    lo, hi = k, k + ring.size
+    new = p.copy()
+    new[hi:] = -law.traction(g[hi:])
+    fixed = new.copy()
+    fixed[:hi] = 0.0
+    u_fixed = kmat @ fixed
+    band = lu[lo:hi, lo:hi]
+    schur = np.tril(band, -1) @ np.triu(band) + np.triu(band)  # L_bb U_bb, L unit
+    right = -law.traction(g[lo:hi]) + d * (kmat[lo:hi] @ p - u_fixed[lo:hi])
+    y = _disc_solve(problem, k, delta - h[:k] - u_fixed[:k])
+    left = np.eye(ring.size) + d[:, None] * schur
+    new[lo:hi] = np.linalg.solve(left, right - d * (kmat[lo:hi, :k] @ y))
+    new[:k] = _disc_solve(problem, k, delta - h[:k] - u_fixed[:k] - kmat[:k, lo:hi] @ new[lo:hi])
     return new
 
 
