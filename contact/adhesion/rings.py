@@ -53,7 +53,10 @@ BLOCK_RINGS = 256
 #: Iterations of one equilibrium (Newton steps and set changes together).
 MAX_ITERATIONS = 400
 #: Newton iterations tried from the warm start before the descent takes over.
-NEWTON_TRIES = 60
+NEWTON_TRIES = 20
+#: Newton iterations that must halve the open rings' residual, else the descent takes over
+#: (Newton converges quadratically where it converges at all).
+STALL = 6
 #: Halvings of a Newton step that does not lower the residual.
 HALVINGS = 8
 #: A residual (over the pressure scale) past which Newton has left its branch.
@@ -305,6 +308,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
         p[:k] = _disc_solve(problem, k, approach - h[:k] - kmat[:k, k:] @ p[k:])
     u = kmat @ p
     seen: dict[int, int] = {}
+    trail: list[float] = []  # the open rings' residual at each iteration
     for it in range(1, max_iter + 1):
         g = _gaps(problem, approach, k, u)
         scale = max(law.peak, float(p.max()))
@@ -314,6 +318,9 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
         if not math.isfinite(residual) or residual > DIVERGED:
             return None
         newton = float(np.abs(p[k:] + law.traction(np.maximum(g[k:], 0.0))).max(initial=0.0))
+        trail.append(newton / scale)
+        if len(trail) > STALL and trail[-1] > 0.5 * trail[-1 - STALL]:
+            return None  # not converging (rings cycling across the law's step): descend
         if newton <= tol * scale:  # equilibrium for this disc: move the disc
             k_new = _next_disc(problem, k, p, g, tol * scale)
             seen[k_new] = seen.get(k_new, 0) + 1
@@ -321,6 +328,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
                 return None
             k = k_new
             g = _gaps(problem, approach, k, u)
+            trail.clear()
         p, u = _damped(problem, approach, k, p, u, g)
     return None
 
