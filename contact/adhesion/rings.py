@@ -49,7 +49,7 @@ NEWTON_RINGS = 48
 SLOPE_SHARE = 1e-3
 #: The widest band of rings next to the disc solved through its Schur complement
 #: (:func:`_band_step`).
-BLOCK_RINGS = 256
+BLOCK_RINGS = 48
 #: Iterations of one equilibrium (Newton steps and set changes together).
 MAX_ITERATIONS = 400
 #: Newton iterations tried from the warm start before the descent takes over.
