@@ -47,10 +47,16 @@ from contact.halfspace.axisymmetric import RingOperator
 NEWTON_RINGS = 48
 #: A ring's slope below this share of the largest is not kept in the Newton step.
 SLOPE_SHARE = 1e-3
+#: The widest band of rings next to the disc solved through its Schur complement
+#: (:func:`_band_step`).
+BLOCK_RINGS = 48
 #: Iterations of one equilibrium (Newton steps and set changes together).
 MAX_ITERATIONS = 400
 #: Newton iterations tried from the warm start before the descent takes over.
-NEWTON_TRIES = 60
+NEWTON_TRIES = 20
+#: Newton iterations that must halve the open rings' residual, else the descent takes over
+#: (Newton converges quadratically where it converges at all).
+STALL = 6
 #: Halvings of a Newton step that does not lower the residual.
 HALVINGS = 8
 #: A residual (over the pressure scale) past which Newton has left its branch.
@@ -58,6 +64,9 @@ DIVERGED = 1e3
 #: The descent's tolerance before Newton finishes, and its iteration budget.
 DESCENT_TOL = 1e-3
 DESCENT_ITERATIONS = 20000
+#: Rings whose gap (or the rigid sphere's) is within this many times the law's reach are
+#: the descent's (with a margin); the outer ones carry no traction.
+OUTER_REACH = 4.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -161,6 +170,11 @@ def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
     coupling = np.abs(slope) * problem.diagonal[k:]
     strong = np.flatnonzero(coupling > SLOPE_SHARE * max(float(coupling.max(initial=0.0)),
                                                         1e-300))
+    if strong.size and k and int(strong[-1]) < BLOCK_RINGS:
+        # the strong rings lie next to the disc: take the whole band k ... k + m - 1,
+        # whose Schur complement is a block of the LU factors already held
+        ring = np.arange(k, k + int(strong[-1]) + 1)
+        return _band_step(problem, delta, k, p, g, ring, slope[: ring.size])
     if strong.size > NEWTON_RINGS:
         strong = strong[np.argsort(-coupling[strong])[:NEWTON_RINGS]]
     ring = np.sort(strong) + k
@@ -186,6 +200,30 @@ def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
         new[:k] = y - x @ new[ring]
     else:
         new[ring] = np.linalg.solve(np.eye(ring.size) + d[:, None] * block, right)
+    return new
+
+
+def _band_step(problem: RingProblem, delta: float, k: int, p: np.ndarray, g: np.ndarray,
+               ring: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """:func:`_newton_step` where its rings are the band k ... k + m - 1 next to the disc.
+
+    With K = L U unpivoted, the Schur complement K_bb - K_bk K_kk^-1 K_kb of the band is
+    L_bb U_bb (the band's diagonal blocks of the factors), so the step costs two disc
+    solves of one vector and an m x m product instead of m disc solves."""
+    law, kmat, h, lu = problem.law, problem.matrix, problem.gap0, problem.lu
+    lo, hi = k, k + ring.size
+    new = p.copy()
+    new[hi:] = -law.traction(g[hi:])
+    fixed = new.copy()
+    fixed[:hi] = 0.0
+    u_fixed = kmat @ fixed
+    band = lu[lo:hi, lo:hi]
+    schur = np.tril(band, -1) @ np.triu(band) + np.triu(band)  # L_bb U_bb, L unit
+    right = -law.traction(g[lo:hi]) + d * (kmat[lo:hi] @ p - u_fixed[lo:hi])
+    y = _disc_solve(problem, k, delta - h[:k] - u_fixed[:k])
+    left = np.eye(ring.size) + d[:, None] * schur
+    new[lo:hi] = np.linalg.solve(left, right - d * (kmat[lo:hi, :k] @ y))
+    new[:k] = _disc_solve(problem, k, delta - h[:k] - u_fixed[:k] - kmat[:k, lo:hi] @ new[lo:hi])
     return new
 
 
@@ -273,6 +311,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
         p[:k] = _disc_solve(problem, k, approach - h[:k] - kmat[:k, k:] @ p[k:])
     u = kmat @ p
     seen: dict[int, int] = {}
+    trail: list[float] = []  # the open rings' residual at each iteration
     for it in range(1, max_iter + 1):
         g = _gaps(problem, approach, k, u)
         scale = max(law.peak, float(p.max()))
@@ -282,6 +321,9 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
         if not math.isfinite(residual) or residual > DIVERGED:
             return None
         newton = float(np.abs(p[k:] + law.traction(np.maximum(g[k:], 0.0))).max(initial=0.0))
+        trail.append(newton / scale)
+        if len(trail) > STALL and trail[-1] > 0.5 * trail[-1 - STALL]:
+            return None  # not converging (rings cycling across the law's step): descend
         if newton <= tol * scale:  # equilibrium for this disc: move the disc
             k_new = _next_disc(problem, k, p, g, tol * scale)
             seen[k_new] = seen.get(k_new, 0) + 1
@@ -289,6 +331,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
                 return None
             k = k_new
             g = _gaps(problem, approach, k, u)
+            trail.clear()
         p, u = _damped(problem, approach, k, p, u, g)
     return None
 
@@ -321,18 +364,40 @@ def _damped(problem: RingProblem, approach: float, k: int, p: np.ndarray, u: np.
 
 def _descend(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
              max_iter: int) -> tuple[np.ndarray, int]:
+    """:func:`_descend_rings` on the leading rings only, where the outer ones are far from
+    the law's reach: they carry no traction, so their pressure is zero and the inner
+    rings' problem is closed (its stiffness the leading block of the LU factors), at a
+    cost of the inner rings squared per iteration. Checked after: an outer ring found
+    within reach has the descent rerun on all rings."""
+    h, reach, n = problem.gap0, problem.law.reach, problem.gap0.size
+    near = np.flatnonzero(np.minimum(g, h - approach) < OUTER_REACH * reach)
+    m = n if near.size == 0 else min(n, int(near[-1]) + 1 + max(16, n // 20))
+    if m < n:
+        inner, used = _descend_rings(problem, approach, g[:m], tol, max_iter)
+        p = linalg.lu_solve((problem.lu[:m, :m], np.arange(m)), inner - h[:m] + approach,
+                            check_finite=False)
+        outer = h[m:] - approach + problem.matrix[m:, :m] @ p
+        if float(outer.min()) > reach:
+            return np.concatenate([inner, outer]), used
+    return _descend_rings(problem, approach, g, tol, max_iter)
+
+
+def _descend_rings(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
+                   max_iter: int) -> tuple[np.ndarray, int]:
     """The accelerated projected gradient (FISTA with restart, as
-    :mod:`contact.adhesion._descent` runs it on a grid) on the rings' total energy
-    1/2 u.A S u + sum A phi(g), S = K^-1, from the gap ``g``: the gap reached and the
-    iterations. Every step descends, so it ends at a minimum (a stable equilibrium)."""
-    h, law = problem.gap0, problem.law
+    :mod:`contact.adhesion._descent` runs it on a grid) on the total energy
+    1/2 u.A S u + sum A phi(g), S = K^-1, of the leading ``g.size`` rings (the others
+    without pressure), from the gap ``g``: the gap reached and the iterations. Every step
+    descends, so it ends at a minimum (a stable equilibrium)."""
+    law, m = problem.law, g.size
+    h = problem.gap0[:m]
+    lu = (problem.lu[:m, :m], np.arange(m))
     step = 1.0 / problem.largest_stiffness
     x = g.copy()
     y = g.copy()
     theta = 1.0
     for it in range(1, max_iter + 1):
-        p = linalg.lu_solve((problem.lu, np.arange(h.size)), y - h + approach,
-                            check_finite=False)
+        p = linalg.lu_solve(lu, y - h + approach, check_finite=False)
         grad = p + law.traction(y)
         viol = np.where(y <= 0.0, np.maximum(-grad, 0.0), np.abs(grad))
         if float(viol.max()) <= tol * max(law.peak, float(p.max())):
