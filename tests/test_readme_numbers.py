@@ -90,7 +90,7 @@ def test_verdict_tolerance_and_the_scans_pixel():
 def test_memory_estimate_per_cell():
     from contact.bem._memory import BYTES_PER_CELL
 
-    m = quoted(r"about (\d+) bytes per cell, `contact\.bem\.memory`")
+    m = quoted(r"about (\d+) bytes per cell, `contact\.bem\._memory`")
     assert BYTES_PER_CELL == int(m.group(1))
 
 
