@@ -25,10 +25,11 @@ nested coarse grids (n/2, n/4, ...; kernels cached)        + 1/3 of the kernels
 even half only, no separate dense or preconditioned work array; the float64 re-sync
 written over the displacement it replaces, the coarse answer dropped before the fine
 solve: a nested free 512^2 solve peaks at 97 B/cell under tracemalloc). Measured: the whole
-``surfmet contact`` command on the bundled plate at 4096^2 peaks at 2.09 GB resident
-(125 B/cell, the interpreter and the scans included; 207 B/cell before issue 37), and a
-1024^2 rough solve alone adds 126 MB to the resident set size; :data:`BYTES_PER_CELL`
-holds 110. The estimate is within 1.5x of the measured peak (a test checks it at 1024^2).
+``surfmet contact`` command on the bundled plate at 4096^2 peaks at 1.78 GB resident
+(106 B/cell, the interpreter and the scans included; 207 B/cell before issue 37), and a
+1024^2 rough solve alone adds 110 MB to the resident set size (126 MB before the in-place
+re-sync); :data:`BYTES_PER_CELL` holds 110 and :data:`BASE_BYTES` 16 MiB, a little above
+both. The estimate is within 1.5x of the measured peak (a test checks it at 1024^2).
 
 An elastic-plastic solve adds p_old, u_old, the projected step and its candidates
 (4 x 8 B) and doubles the correction buffers (+16 B):
@@ -55,7 +56,7 @@ PLASTIC_EXTRA_PER_CELL = 48
 #: Bytes per cell of each further result kept (four float64 fields).
 RESULT_BYTES_PER_CELL = 32
 #: Fixed overhead of a solve beyond the interpreter (bytes): FFT plans, small arrays.
-BASE_BYTES = 64 * 2**20
+BASE_BYTES = 16 * 2**20
 # SAFETY (the fraction of the available memory a solve may plan to use) and
 # available_bytes live in contact._sysmem, light enough for a file reader to import.
 
