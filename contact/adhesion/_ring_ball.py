@@ -24,7 +24,7 @@ from contact._material_pair import MaterialPair, modulus
 from contact._validate import positive
 from contact._zone_resolution import MIN_ZONE_RINGS, ZONE_RINGS, process_zone
 from contact.adhesion._rings import ring_problem
-from contact.adhesion.ball import scales
+from contact.adhesion.ball import SpherePullOffs, scales
 from contact.adhesion.cycle import Cycle, approach_retraction
 from contact.adhesion.laws import InteractionLaw, checked_law, tabor_parameter
 
@@ -35,7 +35,7 @@ OUTER_MARGIN = 1.2
 
 
 @dataclass(frozen=True)
-class RingBall:
+class RingBall(SpherePullOffs):
     """An approach-retraction cycle of a smooth adhesive sphere on rings (SI units).
 
     Attributes
@@ -72,15 +72,6 @@ class RingBall:
     warnings: tuple[str, ...]
     roughness_rms: float = 0.0
 
-    @property
-    def jkr_pull_off(self) -> float:
-        """3 pi w R / 2 (N), Johnson, Kendall & Roberts (1971)."""
-        return 1.5 * math.pi * self.law.work * self.radius
-
-    @property
-    def dmt_pull_off(self) -> float:
-        """2 pi w R (N), Derjaguin, Muller & Toporov (1975)."""
-        return 2.0 * math.pi * self.law.work * self.radius
 
 
 def approach_range(radius: float, e_star: float, law: InteractionLaw) -> tuple[float, float]:

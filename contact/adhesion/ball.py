@@ -57,8 +57,26 @@ from contact.adhesion.solver import adhesive_problem
 MIN_CONTACT_PIXELS = 8.0
 
 
+class SpherePullOffs:
+    """The closed-form pull-offs of a sphere of ``radius`` under ``law``, shared by the
+    grid's and the rings' results."""
+
+    radius: float
+    law: InteractionLaw
+
+    @property
+    def jkr_pull_off(self) -> float:
+        """3 pi w R / 2 (N), Johnson, Kendall & Roberts (1971)."""
+        return 1.5 * math.pi * self.law.work * self.radius
+
+    @property
+    def dmt_pull_off(self) -> float:
+        """2 pi w R (N), Derjaguin, Muller & Toporov (1975)."""
+        return 2.0 * math.pi * self.law.work * self.radius
+
+
 @dataclass(frozen=True)
-class AdhesiveBall:
+class AdhesiveBall(SpherePullOffs):
     """An approach-retraction cycle of an adhesive sphere on a flat (SI units).
 
     Attributes
@@ -96,15 +114,6 @@ class AdhesiveBall:
     warnings: tuple[str, ...]
     roughness_rms: float = 0.0
 
-    @property
-    def jkr_pull_off(self) -> float:
-        """3 pi w R / 2 (N), Johnson, Kendall & Roberts (1971)."""
-        return 1.5 * math.pi * self.law.work * self.radius
-
-    @property
-    def dmt_pull_off(self) -> float:
-        """2 pi w R (N), Derjaguin, Muller & Toporov (1975)."""
-        return 2.0 * math.pi * self.law.work * self.radius
 
 
 def scales(radius: float, e_star: float, law: InteractionLaw) -> tuple[float, float, float]:
