@@ -55,7 +55,10 @@ def test_the_displacement_is_that_of_the_pressure(ball):
 @pytest.mark.parametrize("tol", [1e-5, 1e-8])
 def test_a_given_displacement_gives_the_public_solvers_answer(ball, tol):
     """Started from a pressure and its displacement, the re-solve gives solve_normal's
-    pressure (1e-10 of its largest value) and approach (1e-12) from the same warm start,
+    pressure (1e-8 of its largest value: the start's displacement is the pair's own FFT
+    product, whose last-bit rounding the iterations carry, 2.3e-10 seen with numpy 2.4.6
+    pocketfft; a different algorithm differs by the tolerance, 1e-5) and approach (1e-12)
+    from the same warm start,
     in the same iterations; a wrong displacement does not (the start is read from it).
     The start carries a tenth more than the load: both rescale it, with its
     displacement."""
@@ -67,7 +70,7 @@ def test_a_given_displacement_gives_the_public_solvers_answer(ball, tol):
     r = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
                          start=WarmStart(p0, u0), tol=tol)
     assert r.iterations == ref.iterations
-    assert np.abs(r.pressure - ref.pressure).max() <= 1e-10 * ref.pressure.max()
+    assert np.abs(r.pressure - ref.pressure).max() <= 1e-8 * ref.pressure.max()
     assert abs(r.approach - ref.approach) <= 1e-12 * abs(ref.approach)
     wrong = resolve_pressure(gap, grid.dx, grid.dy, e_star=STEEL_AL.e_star, load=5.0,
                              start=WarmStart(p0, 0.9 * u0), tol=tol, max_iter=1)
