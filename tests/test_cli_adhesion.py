@@ -194,3 +194,19 @@ def test_the_jump_lines_show_a_round_off_load_as_zero(capsys):
         shown = [float(x.split()[0]) for x in loads]
         assert all(x == 0.0 or abs(x) > 1e-9 * max(map(abs, shown)) for x in shown), lines[name]
     assert lines["jump-out"].split("-> ")[1].startswith("0 µN")  # apart again: no load
+
+
+def test_ring_width_is_written_as_a_person_reads_it(capsys):
+    """The default ring solve's reason names the ring width with an SI prefix (nm), in the
+    text and in the JSON, never as a bare exponent of metres ("4.45e-08 m")."""
+    import re
+
+    argv = ["adhesion", "--radius", "1mm", "--e-star", "1GPa", "--range", "5nm",
+            "--work-of-adhesion", "50mJ/m2", "--steps", "8", "--quiet"]
+    assert main(argv) == 0
+    text = capsys.readouterr().out
+    assert re.search(r"axisymmetric rings \(\d+ of [\d.]+ nm\)", text), text
+    rec = _json(capsys, [*argv, "--json"])
+    dumped = json.dumps(rec)
+    assert "axisymmetric rings" in dumped
+    assert not re.search(r"\d(\.\d+)?e-\d+ m\b", dumped), dumped

@@ -254,6 +254,7 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
     """
     from contact._zone_resolution import process_zone
     from contact.adhesion._ring_ball import ZONE_RINGS, adhesive_sphere, ring_width
+    from surfmet.units import format_length
 
     dr, _ = ring_width(radius, mats.e_star, law)
     if law.smoothing == 0.0:  # a step smoothed on the rings, where the law has one
@@ -261,7 +262,7 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
     res = adhesive_sphere(radius, mats, law, dr=dr, steps=steps, progress=progress)
     zone = process_zone(mats.e_star, law.work, law.peak)
     why = (f"default for a smooth sphere: axisymmetric rings ({res.rings} of "
-           f"{dr:.3g} m), the cohesive zone {zone / dr:.3g} rings wide (at least "
+           f"{format_length(dr, 3)}), the cohesive zone {zone / dr:.3g} rings wide (at least "
            f"{ZONE_RINGS:g}, or 200 across the contact's scale where the zone is wider); "
            "--model 3d for the periodic 3D grid")
     return Adhesion(res, None, why)
