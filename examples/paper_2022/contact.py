@@ -45,9 +45,15 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 import numpy as np  # noqa: E402
 
 import surfmet  # noqa: E402
-from contact import Dissipation, DomainSpec  # noqa: E402
-from contact._exponent import fit_exponent, local_exponent  # noqa: E402
-from contact._materials import composite_modulus, displacement_shares, material  # noqa: E402
+from contact import (  # noqa: E402
+    Dissipation,
+    DomainSpec,
+    composite_modulus,
+    displacement_shares,
+    fit_exponent,
+    material,
+)
+from contact._exponent import local_exponent  # noqa: E402
 from contact._rolling import (  # noqa: E402
     RollingSweep,
     hysteresis_work,
@@ -67,7 +73,7 @@ from surfmet.mechanics.hertz_check import hertz_check  # noqa: E402
 from surfmet.mechanics.scan_preparation import prepare_scans  # noqa: E402
 from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
-from surfmet.records._hertz import hertz_check_details, hertz_check_record  # noqa: E402
+from surfmet.records import hertz_check_details, hertz_check_record  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 from surfmet.units import jsonable  # noqa: E402
 

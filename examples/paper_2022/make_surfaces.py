@@ -74,7 +74,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
-from surfmet._model import Topography  # noqa: E402
+from surfmet import Topography  # noqa: E402
 from surfmet.io import encode  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
 
