@@ -90,7 +90,13 @@ class Jump:
 
 @dataclass(frozen=True)
 class Cycle:
-    """An approach-retraction cycle (SI units)."""
+    """An approach-retraction cycle (SI units).
+
+    ``hysteresis_energy`` is the energy lost (J; :func:`hysteresis`), 0 where its closed
+    integral is within ``hysteresis_resolution`` of zero: the solves' tolerance times the
+    work done on the two legs, what loads converged to that tolerance can tell from no
+    loss (a cycle without a jump, whose legs coincide).
+    """
 
     approach_leg: Branch
     retraction_leg: Branch
@@ -100,6 +106,7 @@ class Cycle:
     jump_out: Jump | None
     hysteresis_energy: float
     pull_off_solve: SolveRecord | None = None
+    hysteresis_resolution: float = 0.0
 
     @property
     def solve(self) -> SolveRecord:
@@ -289,6 +296,17 @@ def hysteresis(approach_leg: Branch, retraction_leg: Branch) -> float:
     return float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(d)))
 
 
+def hysteresis_resolution(approach_leg: Branch, retraction_leg: Branch, tol: float) -> float:
+    """The smallest loss (J) loads solved to ``tol`` (relative to the pressure scale) tell
+    from none: ``tol`` times the work done on the two legs, the trapezoidal integrals of
+    |P| over the imposed approach. A loss within it is reported as 0 (:class:`Cycle`)."""
+    work = 0.0
+    for leg in (approach_leg, retraction_leg):
+        p = np.abs(leg.load)
+        work += float(np.sum(0.5 * (p[1:] + p[:-1]) * np.abs(np.diff(leg.approach))))
+    return tol * work
+
+
 def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
                         tol: float = 1e-7,
                         progress: Callable[[int, int], None] | None = None) -> Cycle:
@@ -305,12 +323,15 @@ def approach_retraction(problem: AdhesiveProblem, approaches: np.ndarray, *,
     areal = problem.e_star if problem.gap0.shape[0] > 1 else None  # not a line contact
     refining: list[SolveRecord] = []
     force, where = refine_pull_off(problem, leg_out, gaps_out, tol=tol, records=refining)
+    lost = hysteresis(leg_in, leg_out)
+    resolution = hysteresis_resolution(leg_in, leg_out, tol)
     return Cycle(
         approach_leg=leg_in, retraction_leg=leg_out, pull_off_force=force,
         pull_off_approach=where,
         jump_in=find_jump(leg_in, entering=True, e_star=areal, reach=problem.law.range),
         jump_out=find_jump(leg_out, entering=False, e_star=areal, reach=problem.law.range),
-        hysteresis_energy=hysteresis(leg_in, leg_out),
+        hysteresis_energy=lost if abs(lost) > resolution else 0.0,
         pull_off_solve=combine(refining, "golden-section refinement of the pull-off")
         if refining else None,
+        hysteresis_resolution=resolution,
     )

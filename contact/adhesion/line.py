@@ -296,7 +296,8 @@ def _per_length(cycle: Cycle, dx: float) -> Cycle:
                    retraction_leg=leg(cycle.retraction_leg),
                    pull_off_force=cycle.pull_off_force / dx, jump_in=jump(cycle.jump_in),
                    jump_out=jump(cycle.jump_out),
-                   hysteresis_energy=cycle.hysteresis_energy / dx)
+                   hysteresis_energy=cycle.hysteresis_energy / dx,
+                   hysteresis_resolution=cycle.hysteresis_resolution / dx)
 
 
 def _warnings(zone: float, a0: float, reach: float, dx: float, size: float,

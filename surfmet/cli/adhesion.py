@@ -268,6 +268,11 @@ def _print_cycle(cyc: Any, force_unit: str, scale: float, energy_unit: str) -> N
                   f"{format_length(jump.step / 2)}), load {before:.4g} -> "
                   f"{after:.4g} {force_unit}"
                   f"{_how(jump)}")
-    print(f"hysteresis      {cyc.hysteresis_energy:.4g} {energy_unit} lost in the cycle"
-          f"{_NEGATIVE if cyc.hysteresis_energy < 0 else ''}")
+    lost, resolution = cyc.hysteresis_energy, cyc.hysteresis_resolution
+    if lost == 0.0 and resolution > 0.0:
+        print(f"hysteresis      0 {energy_unit} lost in the cycle (within {resolution:.2g} "
+              f"{energy_unit} of zero: the solves' tolerance times the work on the legs)")
+    else:
+        print(f"hysteresis      {lost:.4g} {energy_unit} lost in the cycle"
+              f"{_NEGATIVE if lost < 0 else ''}")
     print_solve(cyc.solve, "solve          ")

@@ -253,12 +253,18 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
     (True, 416)
     """
     from contact._zone_resolution import process_zone
-    from contact.adhesion._ring_ball import ZONE_RINGS, adhesive_sphere, ring_width
+    from contact.adhesion._ring_ball import (
+        ZONE_RINGS,
+        adhesive_sphere,
+        ring_count,
+        ring_law,
+        ring_width,
+    )
     from surfmet.units import format_length
 
-    dr, _ = ring_width(radius, mats.e_star, law)
+    dr, outer = ring_width(radius, mats.e_star, law)
     if law.smoothing == 0.0:  # a step smoothed on the rings, where the law has one
-        law = law.on_grid(dr, mats.e_star)
+        law = ring_law(law, mats.e_star, dr, ring_count(dr, outer))
     res = adhesive_sphere(radius, mats, law, dr=dr, steps=steps, progress=progress)
     zone = process_zone(mats.e_star, law.work, law.peak)
     why = (f"default for a smooth sphere: axisymmetric rings ({res.rings} of "

@@ -142,6 +142,7 @@ def adhesion_record(run: Any) -> dict[str, Any]:
         "jump_in": jump_record(cyc.jump_in),
         "jump_out": jump_record(cyc.jump_out),
         "hysteresis_energy": quantity(cyc.hysteresis_energy, "J"),
+        "hysteresis_resolution": quantity(cyc.hysteresis_resolution, "J"),
         "discretisation": "axisymmetric" if run.axisymmetric else "3d",
         "grid": _grid(run),
         "solver": {"iterations": int(cyc.solve.iterations)},  # the curve's and pull-off's
@@ -217,6 +218,7 @@ def line_record(run: Any) -> dict[str, Any]:
         "jump_in": jump_record(cyc.jump_in, "N/m"),
         "jump_out": jump_record(cyc.jump_out, "N/m"),
         "hysteresis_energy": quantity(cyc.hysteresis_energy, "J/m"),
+        "hysteresis_resolution": quantity(cyc.hysteresis_resolution, "J/m"),
         "grid": {"cells": res.cells, "size": quantity(res.size, "m"),
                  "pixel": quantity(res.dx, "m"), "periodic": True, "plane_strain": True,
                  "process_zone": quantity(res.process_zone, "m"),
