@@ -176,7 +176,8 @@ def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
     offset, ci_low, ci_high : float
         The offset and its interval (rad/s²).
     e_star : float, optional
-        Composite modulus (Pa); default the rig's, else steel on aluminium.
+        Composite modulus (Pa); default the rig's (its ``e_star``, else its
+        ``materials``'), else steel on aluminium.
     radius : float, optional
         A contact radius (m) to use instead of Hertz's.
     radius_basis : str
@@ -220,6 +221,9 @@ def arm_bound(rig: Rig, minuend: str, subtrahend: str, slope: float,
     basis = "given E*"
     if e_star is None and rig.e_star is not None:
         e_star, basis = rig.e_star, f"the rig's {rig.plate or 'plate'}"
+    if e_star is None and rig.materials is not None:
+        e_star = composite_modulus(material(rig.materials[0]), material(rig.materials[1]))
+        basis = f"the rig's {rig.materials[0]} on {rig.materials[1]}"
     if e_star is None:
         e_star = composite_modulus(*paper_materials())
         basis = "steel ball on aluminium plate, the paper's materials"

@@ -33,8 +33,11 @@ __all__ = ["RIG_KEYS", "Rig", "RigGroup", "launches_needed", "offset_for_lambda"
            "rig_from_mapping", "slope_lower_bound", "solve_lambda"]
 
 RIG_KEYS = ("ball_radius_m", "mass_kg", "axial_inertia_kg_m2", "fps", "step_deg", "slope_rad",
-            "groups")
-"""The keys of a rig file (``slope_rad`` optional)."""
+            "groups", "e_star_Pa", "plate", "materials")
+"""The keys of a rig file (:data:`OPTIONAL_KEYS` optional)."""
+OPTIONAL_KEYS = ("slope_rad", "e_star_Pa", "plate", "materials")
+"""The rig file's optional keys: the slope, the contact's composite modulus (Pa), the plate
+in words, and ``[ball, plate]`` names from the material table."""
 UPPER_SLOPE = math.radians(1.0)
 """Slope assumed when none is given: the paper's "tilting angle smaller than one degree"."""
 LAMBDA_RANGE = (0.05, 20.0)
@@ -75,8 +78,10 @@ class Rig:
     """The rotor and camera (SI): ``ball_radius`` (m), ``mass`` (kg), ``axial_inertia``
     (kg m²), ``fps`` (1/s), ``step`` (rad between marks), ``slope`` (rad, or None);
     ``e_star``: the ball-plate contact's composite modulus (Pa) that sets the friction arm's
-    Hertz bound (:mod:`rotor._arm`), None for the paper's steel on aluminium;
-    ``plate``: what it is, in words.
+    Hertz bound (:mod:`rotor._arm`) and the lateral creep's Hertz radius
+    (:mod:`rotor._confounds`), None for the paper's steel on aluminium (or ``materials``');
+    ``plate``: what it is, in words; ``materials``: (ball, plate) names in the material
+    table (:mod:`contact._materials`), None where the rig does not state them.
 
     Parameters
     ----------
@@ -93,6 +98,8 @@ class Rig:
         Composite modulus of the ball-plate contact (Pa).
     plate : str, optional
         The plate, in words.
+    materials : (str, str), optional
+        The ball's and the plate's materials (names in the material table).
 
     See Also
     --------
@@ -117,6 +124,7 @@ class Rig:
     groups: tuple[RigGroup, ...]
     e_star: float | None = None
     plate: str = ""
+    materials: tuple[str, str] | None = None
 
     @property
     def rolling_inertia(self) -> float:
@@ -144,9 +152,10 @@ def rig_from_mapping(d: Mapping) -> Rig:
     ----------
     d : Mapping
         ``ball_radius_m``, ``mass_kg``, ``axial_inertia_kg_m2``, ``fps``, ``step_deg``,
-        optionally ``slope_rad``, and ``groups``: exactly two entries
-        ``{name: {"ball_loads_N": [N1, N2], "columns": [...]}}``, each with at least two
-        columns.
+        optionally ``slope_rad``, ``e_star_Pa`` (the contact's E*), ``plate`` (words) and
+        ``materials`` (``[ball, plate]`` in the material table), and ``groups``: exactly two
+        entries ``{name: {"ball_loads_N": [N1, N2], "columns": [...]}}``, each with at least
+        two columns.
 
     Returns
     -------
@@ -181,10 +190,11 @@ def rig_from_mapping(d: Mapping) -> Rig:
     if not isinstance(d, Mapping):
         raise ContactInputError("rig: the file must hold one JSON object")
     unknown = sorted(set(d) - set(RIG_KEYS))
-    missing = sorted(set(RIG_KEYS) - {"slope_rad"} - set(d))
+    missing = sorted(set(RIG_KEYS) - set(OPTIONAL_KEYS) - set(d))
     if unknown or missing:
         raise ContactInputError(f"rig: unknown keys {unknown} / missing keys {missing}; a rig "
-                                f"file holds exactly {', '.join(RIG_KEYS)} (slope_rad optional)")
+                                f"file holds exactly {', '.join(RIG_KEYS)} "
+                                f"({', '.join(OPTIONAL_KEYS)} optional)")
     slope = None
     if d.get("slope_rad") is not None:
         slope = _positive(d, "slope_rad")
@@ -209,9 +219,28 @@ def rig_from_mapping(d: Mapping) -> Rig:
             raise ContactInputError(f"rig: group {name!r} has {len(cols)} launch; the verdict "
                                     f"needs at least 2 per group")
         out.append(RigGroup(str(name), (float(loads[0]), float(loads[1])), tuple(cols)))
+    e_star = None if d.get("e_star_Pa") is None else _positive(d, "e_star_Pa")
+    plate = d.get("plate") or ""
+    if not isinstance(plate, str):
+        raise ContactInputError(f"rig: plate must be words, got {plate!r}")
     return Rig(_positive(d, "ball_radius_m"), _positive(d, "mass_kg"),
                _positive(d, "axial_inertia_kg_m2"), _positive(d, "fps"),
-               math.radians(_positive(d, "step_deg")), slope, tuple(out))
+               math.radians(_positive(d, "step_deg")), slope, tuple(out), e_star=e_star,
+               plate=plate, materials=_materials(d.get("materials")))
+
+
+def _materials(names: object) -> tuple[str, str] | None:
+    """The rig file's ``materials``, ``[ball, plate]`` in the material table, checked."""
+    if names is None:
+        return None
+    from contact._materials import material
+
+    if not isinstance(names, list) or len(names) != 2 or not all(
+            isinstance(n, str) for n in names):
+        raise ContactInputError(f"rig: materials must be [ball, plate] names, got {names!r}")
+    for n in names:
+        material(n)  # an unknown name is refused here, with the table's names
+    return str(names[0]), str(names[1])
 
 
 def paper_rig() -> Rig:

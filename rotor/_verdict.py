@@ -32,7 +32,7 @@ from scipy.stats import t as student_t
 
 from contact._errors import ContactInputError
 from contact._materials import Material
-from rotor._arm import ArmBound, arm_bound, paper_materials
+from rotor._arm import ArmBound, arm_bound
 from rotor._confounds import Confound, confound_budget
 from rotor._joint import (
     GroupOffset,
@@ -331,7 +331,8 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
         Also run the exact permutation test.
     materials : (Material, Material), optional
         The ball's and the plate's materials for the confound budget's lateral creep
-        (default the paper's steel ball on aluminium, :data:`rotor._arm.PAPER_PAIR`).
+        (default the rig's stated E* and materials, else the paper's steel ball on
+        aluminium, :func:`rotor._confounds.creep_moduli`).
 
     Returns
     -------
@@ -402,7 +403,7 @@ def judge_table(columns: Mapping[str, Sequence[float]], groups: Mapping[str, Seq
         confounds = confound_budget(rig, off.value, max(smallest, 1e-300), exponent.slope,
                                     mean_acc, float(np.ptp(prof)), float(np.max(s)),
                                     off.minuend, off.subtrahend, mechanisms,
-                                    materials=materials or paper_materials())
+                                    materials=materials)
     perm = permutation_test(data, shared, groupwise) if permutation else None
     sentence = _sentence(code, off, f, _p_value(f), diff, exponent, rig, perm, arm)
     if not adequate:

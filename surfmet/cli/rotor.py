@@ -71,8 +71,11 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
                    "and the verdict's figure beside it (PATH_verdict.png)")
     p.add_argument("--rig", metavar="RIG.json",
                    help="the rig (SI): ball_radius_m, mass_kg, axial_inertia_kg_m2, fps, "
-                   "step_deg, optional slope_rad, groups {NAME: {ball_loads_N: [N1, N2], "
-                   "columns: [...]}}; gives the verdict's lambda outputs and confounds "
+                   "step_deg, optional slope_rad, e_star_Pa, plate (words), materials "
+                   "[BALL, PLATE], groups {NAME: {ball_loads_N: [N1, N2], "
+                   "columns: [...]}}; gives the verdict's lambda outputs and confounds (the "
+                   "arm bound and the lateral creep take the rig's E* and materials, else "
+                   "the paper's steel on aluminium) "
                    f"({PAPER_ALIAS} carries the paper's rig)")
     add_scan_arguments(p)
     add_quiet_flag(p)

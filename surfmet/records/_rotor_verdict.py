@@ -143,7 +143,8 @@ def _verdict_record(v: Any) -> dict[str, Any]:
     rec["confounds"] = [{"name": c.name,
                          "equivalent_acceleration": quantity(c.equivalent_acceleration, "rad/s^2"),
                          "can_explain": c.can_explain, "formula": c.formula,
-                         "assumption": c.assumption, "source": c.source}
+                         "assumption": c.assumption, "source": c.source,
+                         **_moduli(c)}
                         for c in v.confounds]
     return rec
 
@@ -253,3 +254,13 @@ def lane_record(v: Any) -> dict[str, Any] | None:
         "undetermined_rate_group_tracks": {k: quantity(held[k]["undetermined"], "")
                                            for k in ("track", "lanetrack")},
     }
+
+
+def _moduli(c: Any) -> dict[str, Any]:
+    """The lateral creep's elastic constants and their basis (the rig's or the paper's
+    pair), as a record's keys; none for the other confounds."""
+    m = c.moduli
+    if m is None:
+        return {}
+    return {"moduli": {"e_star": quantity(m.e_star, "Pa"),
+                       "shear_modulus": quantity(m.shear, "Pa"), "basis": m.basis}}
