@@ -115,6 +115,17 @@ def test_cli_json_units_and_errors(scan, tmp_path, capsys):
         err = r0[name]["relative_error"]["area_fraction"]
         assert err == pytest.approx(r0[name]["area_fraction"] / r0["bem"]["area_fraction"] - 1)
     assert r0["persson"]["kappa"] == pytest.approx(math.sqrt(8 / math.pi), rel=1e-3)
+    # closed forms beside the records' own ratios: the scan's rms slope is the synthetic
+    # surface's 0.05 (its spectral gradient; measured 0.0510 from the PSD), Persson's area
+    # erf(sqrt(2) p / (E* h'_rms)) and BGT's sqrt(2 pi) p / (E* h'_rms) at it
+    from scipy.special import erf
+
+    slope = rec["spectrum"]["slope_rms"]["spectrum"]["value"]
+    assert slope == pytest.approx(0.05, rel=0.03)
+    for r in rec["results"]:
+        x = r["pressure"]["value"] / (10e9 * slope)
+        assert r["persson"]["area_fraction"] == pytest.approx(erf(math.sqrt(2) * x), rel=1e-3)
+        assert r["bgt"]["area_fraction"] == pytest.approx(math.sqrt(2 * math.pi) * x, rel=1e-3)
     assert out.stat().st_size > 1000
 
 
