@@ -389,8 +389,15 @@ def test_a_container_one_answer_each(name, api, cli_roughness, report, show):
     path = _path(name)
     records = cli_roughness[path]
     assert len(records) > 1 and all(r["status"] == "ok" for r in records)
-    assert [r["file"] for r in records] == [f"{path}:{r['file'].split(':', 1)[1]}"
-                                            for r in records]
+    # one record per measurement, named CONTAINER:MEMBER with the container's own data
+    # files, as the zip lists them (was: each name rebuilt from itself, which could only
+    # check the prefix)
+    import zipfile
+
+    with zipfile.ZipFile(REALDATA / name) as zf:
+        members = [m for m in zf.namelist()
+                   if m != "meta.yml" and not m.upper().startswith("LICENSE")]
+    assert [r["file"] for r in records] == [f"{path}:{m}" for m in members]
     for r in records:
         sec = report[r["file"]]
         assert sec["status"] == "ok" and sec["roughness"] == r
