@@ -20,8 +20,8 @@ if TYPE_CHECKING:
     from rotor import LawOfMotionAnalysis, Rig, RotorVerdict
     from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
-__all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
-           "paper_verdict", "read_frames_table", "shared_track_p_text", "table_verdict", "verdict_figure",
+__all__ = ["column_groups", "judge", "label_swap_text", "load_rig", "paper_verdict",
+           "read_frames_table", "shared_track_p_text", "table_verdict", "verdict_figure",
            "verdict_lines", "verdict_plot_path"]
 
 

@@ -39,8 +39,8 @@ from surfmet.records._contact import (
 from surfmet.records._flat import flat_contact_record
 from surfmet.records._hertz import hertz_check_details, hertz_check_record
 from surfmet.records._resolution import study_record
-from surfmet.records._roughness import roughness_record
 from surfmet.records._rolling import rolling_record, tracks_record
+from surfmet.records._roughness import roughness_record
 from surfmet.records._scans import fit_record, scan_record
 from surfmet.records._spectrum import spectrum_record
 
