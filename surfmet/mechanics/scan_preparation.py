@@ -239,12 +239,12 @@ class PreparedScans:
         return None if self.pair is None else self.pair.filled_fraction
 
     def paired(self) -> PairedRoughness:
-        """:attr:`pair`, for a computation that needs the scans' roughness.
+        """``pair``, for a computation that needs the scans' roughness.
 
         Raises
         ------
         SurfmetInputError
-            No scan was given (two smooth bodies: :attr:`pair` is None).
+            No scan was given (two smooth bodies: ``pair`` is None).
         """
         if self.pair is None:
             raise SurfmetInputError("this needs a scan (a plate or a ball): with two smooth "
