@@ -23,6 +23,8 @@ names from ``contact``: theories (``hertz_sphere``), verdicts (``check_sphere``)
 statistics (``gjm_alpha``), rolling resistance and its load exponent::
 
     sphere_sweep(...); fit_exponent(...)   # rolling resistance (rolling), its exponent (exponent)
+    hysteresis_work(res, R); local_exponent(loads, moments)   # one solution; the drift
+    radial_average(res.pressure, res.x, res.y)                # azimuthal pressure profile
 
 Heavy modules (numba kernels, scipy.fft) load on first use of the solver.
 """
@@ -77,6 +79,11 @@ _LAZY = {
     "sphere_sweep": "contact._rolling",
     "cylinder_sweep": "contact._rolling",
     "fit_exponent": "contact._exponent",
+    "local_exponent": "contact._exponent",
+    "RollingSweep": "contact._rolling",
+    "hysteresis_work": "contact._rolling",
+    "RadialProfile": "contact._fields",
+    "radial_average": "contact._fields",
     "solve_cylinder": "contact.setups._line",
 }
 
@@ -106,6 +113,8 @@ __all__ = [
     "Material",
     "MaterialPair",
     "PressureBounds",
+    "RadialProfile",
+    "RollingSweep",
     "SolveOptions",
     "SphereContact",
     "auto_domain",
@@ -122,7 +131,10 @@ __all__ = [
     "hertz_cylinder",
     "hertz_sphere",
     "hertz_sphere_from_approach",
+    "hysteresis_work",
+    "local_exponent",
     "material",
+    "radial_average",
     "resolve_pair",
     "solve_cylinder",
     "solve_normal",

@@ -116,7 +116,32 @@ def fit_exponent(loads: Sequence[float], moments: Sequence[float],
 
 
 def local_exponent(loads: Sequence[float], moments: Sequence[float]) -> np.ndarray:
-    """d ln M / d ln N at each load (second-order differences; one-sided at the ends)."""
+    """d ln M / d ln N at each load (second-order differences; one-sided at the ends).
+
+    Parameters
+    ----------
+    loads : sequence of float
+        Normal loads N (N, or N/m for a line contact), positive, increasing.
+    moments : sequence of float
+        Rolling-resistance moments M at those loads (N m), positive.
+
+    Returns
+    -------
+    ndarray
+        The local exponent at each load (dimensionless); :func:`fit_exponent` gives the
+        one exponent of the whole sweep.
+
+    Raises
+    ------
+    ContactInputError
+        Fewer than 2 loads, shapes that differ, or a load or moment that is not positive.
+
+    Examples
+    --------
+    >>> from contact import local_exponent
+    >>> local_exponent([1.0, 2.0, 4.0, 8.0], [1.0, 2.0**1.5, 4.0**1.5, 8.0**1.5])
+    array([1.5, 1.5, 1.5, 1.5])
+    """
     n_ = np.asarray(loads, dtype=float)
     m_ = np.asarray(moments, dtype=float)
     if n_.size < 2 or n_.shape != m_.shape:

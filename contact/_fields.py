@@ -49,6 +49,15 @@ class RadialProfile:
         Bin width w (m).
     centre : (float, float)
         Centre of the average (m).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from contact import radial_average
+    >>> x = np.linspace(-1e-4, 1e-4, 41)
+    >>> prof = radial_average(np.ones((41, 41)), x, x)
+    >>> prof.r.size, float(prof.p[0]), prof.p_hertz is None
+    (29, 1.0, True)
     """
 
     r: np.ndarray
@@ -91,6 +100,26 @@ def radial_average(
     -------
     RadialProfile
         Bins that hold no cell are dropped.
+
+    Raises
+    ------
+    ContactInputError
+        A pressure field whose shape is not ``(y.size, x.size)``, or a width or r_max
+        that is not positive.
+
+    Examples
+    --------
+    The Hertz pressure of the paper's ball, averaged about its centre, is its own average:
+
+    >>> import numpy as np
+    >>> from contact import composite_modulus, hertz_sphere, material, radial_average
+    >>> h = hertz_sphere(0.02, 10.0, composite_modulus(material("steel"),
+    ...                                                material("aluminium")))
+    >>> x = np.linspace(-2 * h.a, 2 * h.a, 81)
+    >>> p = h.pressure(np.hypot(x[None, :], x[:, None]))
+    >>> rad = radial_average(p, x, x, hertz=h)
+    >>> print(f"{rad.p[0] / h.p0:.3f}", bool(np.allclose(rad.p, rad.p_hertz)))
+    1.000 True
     """
     p = np.asarray(pressure, dtype=float)
     x = np.asarray(x, dtype=float)

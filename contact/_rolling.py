@@ -142,6 +142,16 @@ def hysteresis_work(
     -------
     float
         Work per unit rolling distance (J/m = N; N for a line contact per unit length).
+
+    Examples
+    --------
+    A smooth ball: the work is Johnson's (3/16) W a / R (eq. 9.19, alpha_h = 1):
+
+    >>> from contact import DomainSpec, hertz_sphere, hysteresis_work, solve_sphere
+    >>> res = solve_sphere(0.02, 10.0, 58.6e9, domain=DomainSpec(grid=64))
+    >>> a = hertz_sphere(0.02, 10.0, 58.6e9).a
+    >>> print(f"{hysteresis_work(res, 0.02) / (3 / 16 * 10.0 * a / 0.02):.3f}")
+    0.999
     """
     if kinematics not in KINEMATICS:
         raise ContactInputError(f"kinematics must be one of {KINEMATICS}, got {kinematics!r}")
@@ -248,6 +258,13 @@ class RollingSweep:
     notes : tuple of str
     results : tuple
         The contact solutions (for figures; not part of JSON records).
+
+    Examples
+    --------
+    >>> from contact import DomainSpec, sphere_sweep
+    >>> sweep = sphere_sweep(0.02, 58.6e9, [1.0, 3.0, 10.0], domain=DomainSpec(grid=64))
+    >>> sweep.model, sweep.loads.size, f"{sweep.lambda_eff:.2f}"
+    ('hysteresis', 3, '1.33')
     """
 
     model: str
@@ -330,7 +347,7 @@ def sphere_sweep(
         Ball radius R (m), composite modulus E* (Pa) or a resolved
         :class:`contact._material_pair.MaterialPair` (its E*, bit for bit).
     loads : iterable of float
-        Normal loads (N); see :func:`log_loads`.
+        Normal loads (N), e.g. ``numpy.geomspace(1.0, 100.0, 7)``.
     dissipation : Dissipation, optional
         The dissipation model and its settings (:class:`contact._dissipation.Dissipation`:
         model, hardness, alpha_h, share, kinematics, band, roughness_rms, the level of

@@ -6,6 +6,7 @@ Reading scans::
     from surfmet.data import path
     topo = surfmet.read(path("paper_plate.x3p"))  # Topography or Profile, heights in metres
     surfmet.write(topo, "copy.x3p")
+    row = surfmet.extract_profile(topo, "row:256")  # a Profile: one row of the scan
 
 Analysis lives in submodules (``surfmet.areal``, ``surfmet.areal._filters``...) and in the two
 array-level engines ``profiles`` and ``contact``; they are imported on first use so that
@@ -18,6 +19,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from surfmet._errors import SurfmetError, SurfmetFormatError, SurfmetInputError
+from surfmet._extract import extract_profile
 from surfmet._lazy import attach
 from surfmet._model import Profile, Topography
 from surfmet._version import __version__
@@ -151,6 +153,7 @@ __all__ = [
     "SurfmetInputError",
     "Topography",
     "__version__",
+    "extract_profile",
     "read",
     "write",
 ]

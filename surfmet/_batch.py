@@ -191,6 +191,16 @@ def batch_map(
     ------
     SurfmetInputError
         ``workers`` < 1, or a scheduler that cannot be reached.
+
+    Examples
+    --------
+    A failure becomes its item's row and the batch goes on (``workers=1``: serial):
+
+    >>> from surfmet.sweep import batch_map
+    >>> batch_map(abs, [-1, 2, -3], workers=1)
+    [1, 2, 3]
+    >>> batch_map(int, ["1", "x"], workers=1)[1]["status"]
+    'error'
     """
     items = list(items)
     if workers is not None and int(workers) < 1:

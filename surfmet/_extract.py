@@ -71,6 +71,20 @@ def extract_profile(topo: Topography, spec: str | Sequence[float]) -> Profile:
     ------
     SurfmetInputError
         Malformed spec, index or segment outside the scan, a segment shorter than 2 samples.
+
+    Examples
+    --------
+    >>> import surfmet
+    >>> from surfmet.data import path
+    >>> plate = surfmet.read(path("paper_plate.x3p"))
+    >>> row = surfmet.extract_profile(plate, "row:256")
+    >>> row.z.size, row.dx, row.metadata["profile"]
+    (1024, 5e-06, 'row:256')
+    >>> surfmet.extract_profile(plate, "col:-1").metadata["profile"]
+    'col:1023'
+    >>> diagonal = surfmet.extract_profile(plate, "0,0,1mm,1mm")  # sampled at min(dx, dy)
+    >>> diagonal.z.size, diagonal.metadata["profile"]
+    (283, 'line:0,0,0.001,0.001')
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError("profile extraction needs an areal scan (a Topography)")

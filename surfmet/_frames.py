@@ -17,7 +17,37 @@ from surfmet._errors import SurfmetFormatError
 def read_frames_table(path: str | Path) -> tuple[list[int], dict[str, list[float]]]:
     """Read a frame-index table: header ``k`` and column names, then integer rows.
 
-    Returns the row numbers and ``{column: values}`` (NaN for missing readings).
+    Parameters
+    ----------
+    path : str or Path
+        A text table, tab- or space-separated (``#`` starts a comment line): the header
+        ``k`` and one name per test, then one row per mark with the frame index at which
+        each test reached it (empty, ``nan``, ``na`` or ``-`` for a missing reading).
+
+    Returns
+    -------
+    ks : list of int
+        The row numbers k (increasing).
+    cols : dict of str to list of float
+        ``{column: frame indices}`` (NaN for missing readings), in the header's order.
+
+    Raises
+    ------
+    SurfmetFormatError
+        A missing or unreadable file, a header that is not ``k`` and distinct names, a
+        row that is not numbers, row numbers that do not increase, fewer than 2 rows.
+
+    Examples
+    --------
+    The paper's Table 3 (Alaci et al. 2022), shipped with surfmet:
+
+    >>> from surfmet.data import path
+    >>> from surfmet.mechanics.rotor_verdict import read_frames_table
+    >>> ks, cols = read_frames_table(path("table3_frames.tsv"))
+    >>> len(ks), list(cols)
+    (25, ['as1', 'as2', 'as3', 's1', 's2', 's3'])
+    >>> cols["as1"][:3]
+    [2071.0, 2200.0, 2263.0]
     """
     path = Path(path)
     try:

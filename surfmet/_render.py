@@ -122,6 +122,21 @@ def render_3d(
     -------
     ndarray, shape (height, width, 3), uint8
         The rendered image.
+
+    Raises
+    ------
+    SurfmetInputError
+        A profile, fewer than 2 x 2 points, or no measured point.
+    SurfmetError
+        pyvista is not installed (``MissingExtraError``: the ``view`` extra).
+
+    Examples
+    --------
+    >>> from surfmet.plots.areal import render_3d
+    >>> from surfmet.synth import self_affine
+    >>> topo = self_affine(64, 1e-6, hurst=0.8, h_rms=1e-7, seed=1)
+    >>> render_3d(topo, window_size=(320, 240)).shape  # pyvista, off-screen
+    (240, 320, 3)
     """
     if not isinstance(topo, Topography):
         raise SurfmetInputError(f"a 3D view needs an areal scan (Topography), got "

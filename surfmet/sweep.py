@@ -34,6 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from surfmet._batch import batch_map as batch_map  # re-exported: the parallel map of run_sweep
 from surfmet._errors import SurfmetInputError
 from surfmet.mechanics.material_spec import material_pair
 from surfmet.mechanics.scan_preparation import SPIKES, spike_mode
@@ -469,8 +470,6 @@ def run_sweep(items: Iterable[SweepItem], *, workers: int | None = None,
 
     Each finished row goes to ``writer`` (and ``on_row``) as soon as it arrives.
     """
-    from surfmet._batch import batch_map
-
     todo = [it for it in items if not skip or it.key not in skip]
 
     def arrived(k: int, row: dict[str, tuple[Any, str]]) -> None:

@@ -13,6 +13,7 @@ boundary elements on a grid), :mod:`.loss` (loss data of materials, with sources
 
 from contact.viscoelastic._hunter import HunterSolution, hunter_cylinder
 from contact.viscoelastic._line import rolling_cylinder, solve_line
+from contact.viscoelastic._loss import LossData, loss_data
 from contact.viscoelastic._result import RollingResult
 from contact.viscoelastic._rheology import (
     CreepSeries,
@@ -30,6 +31,7 @@ from contact.viscoelastic._traction3d import (
 __all__ = [
     "CreepSeries",
     "HunterSolution",
+    "LossData",
     "PronySeries",
     "RollingResult",
     "StandardLinearSolid",
@@ -37,6 +39,7 @@ __all__ = [
     "ViscoHalfSpacePair",
     "ViscoRolling",
     "hunter_cylinder",
+    "loss_data",
     "pair_creep",
     "rolling_cylinder",
     "solve_line",

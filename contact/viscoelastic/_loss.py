@@ -51,6 +51,13 @@ class LossData:
     low, typical, high : float
         Loss factor eta band and a typical value.
     source : str
+        Where the numbers come from.
+
+    Examples
+    --------
+    >>> from contact.viscoelastic import LossData, loss_data
+    >>> isinstance(loss_data("aluminium"), LossData)
+    True
     """
 
     name: str
@@ -75,7 +82,33 @@ LOSS: dict[str, LossData] = {
 
 
 def loss_data(name: str) -> LossData:
-    """The loss band of a material (table name or alias of :mod:`contact._materials`)."""
+    """The loss band of a material (table name or alias of :mod:`contact._materials`).
+
+    Parameters
+    ----------
+    name : str
+        A material of the loss table (``"steel"``, ``"mild_steel"``, ``"aluminium"``,
+        ``"pmma"``) or an alias of it (``"Al 6061-T6"``...); case and separators ignored.
+
+    Returns
+    -------
+    LossData
+        The loss-factor band (low, typical, high; dimensionless) and its source.
+
+    Raises
+    ------
+    ContactInputError
+        No loss data for that material.
+
+    Examples
+    --------
+    >>> from contact.viscoelastic import loss_data
+    >>> steel = loss_data("steel")
+    >>> steel.low, steel.typical, steel.high
+    (0.0001, 0.0003, 0.001)
+    >>> loss_data("PMMA").typical
+    0.07
+    """
     from contact._materials import ALIASES
 
     key = name.strip().lower().replace("-", "_").replace(" ", "_")

@@ -48,16 +48,13 @@ import surfmet  # noqa: E402
 from contact import (  # noqa: E402
     Dissipation,
     DomainSpec,
+    RollingSweep,
     composite_modulus,
     displacement_shares,
     fit_exponent,
-    material,
-)
-from contact._exponent import local_exponent  # noqa: E402
-from contact._rolling import (  # noqa: E402
-    RollingSweep,
     hysteresis_work,
-    log_loads,
+    local_exponent,
+    material,
     sphere_sweep,
 )
 from contact.setups import CompositeRoughness  # noqa: E402
@@ -68,10 +65,8 @@ from rotor import (  # noqa: E402
     normal_reactions,
     paper_rotor,
 )
-from surfmet.cli._common import progress  # noqa: E402
 from surfmet.mechanics.hertz_check import hertz_check  # noqa: E402
 from surfmet.mechanics.scan_preparation import prepare_scans  # noqa: E402
-from surfmet.plots._style import close  # noqa: E402
 from surfmet.plots.hertz import rolling_figure  # noqa: E402
 from surfmet.records import hertz_check_details, hertz_check_record  # noqa: E402
 from surfmet.roughness import roughness  # noqa: E402
@@ -123,6 +118,13 @@ def table2_check(plate: surfmet.Topography, ball: surfmet.Topography) -> dict:
     return out
 
 
+def close_figure(fig) -> None:
+    """Release a figure's memory (a full run draws many); pyplot is loaded by the figures."""
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+
+
 def main(argv: list[str]) -> int:
     import argparse
 
@@ -139,7 +141,7 @@ def main(argv: list[str]) -> int:
     opts = parser.parse_args(argv)
     run = RUNS["gallery" if opts.gallery else "quick" if opts.quick else "full"]
     # the gallery shows the figures left open; a command-line run writes and closes them
-    keep = close if not opts.gallery else (lambda fig: None)
+    keep = close_figure if not opts.gallery else (lambda fig: None)
     outdir = Path(opts.outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     t_start = time.time()
@@ -258,7 +260,7 @@ def main(argv: list[str]) -> int:
     heading("Rolling-resistance exponent over 1-100 N")
     prep = prepare_scans(plate, ball)
     pair = prep.pair
-    loads = log_loads(1.0, 100.0, run["loads"])
+    loads = np.geomspace(1.0, 100.0, run["loads"])  # log-spaced, both ends included
     # The ball rolls along x: every position of its apex along the track is one snapshot
     # of the rolling contact, and the moment per unit distance rolled is their average.
     # One snapshot is not enough for a rough contact (at light load a few asperities,
@@ -273,7 +275,8 @@ def main(argv: list[str]) -> int:
     per_model: dict[str, list] = {"hysteresis": [], "frozen": [], "plastic": []}
     first = {}
     t0 = time.time()
-    for centre in progress(centres, total=len(centres), desc="track positions"):
+    for k, centre in enumerate(centres, start=1):
+        print(f"  track position {k}/{len(centres)}", file=sys.stderr, flush=True)
         rough = CompositeRoughness(pair.roughness, pair.dx, pair.dy, centre=centre)
         rms = prep.sigma  # the plastic band's roughness, as the scans give it
         hy = sphere_sweep(RADIUS, e_star, loads, roughness=rough, domain=rough_domain,

@@ -48,7 +48,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 import numpy as np  # noqa: E402
 
-from contact.viscoelastic._loss import loss_data  # noqa: E402
+from contact.viscoelastic import loss_data  # noqa: E402
 from surfmet.mechanics.viscoelastic_rolling import rolling_mechanisms  # noqa: E402
 
 RADIUS = 0.02

@@ -291,7 +291,6 @@ def main(argv: list[str]) -> int:
           f"{h_opt * 1e3:.1f} mm gives xi_G {xi_opt * 1e3:.2f} mm)")
 
     heading("8. Figures")
-    from surfmet.plots._style import close
     from surfmet.plots.rotor import (
         acceleration_profile_figure,
         law_of_motion_figure,
@@ -305,7 +304,9 @@ def main(argv: list[str]) -> int:
                      ("lambda_vs_slope.png", lambda p: rolling_law_figure(infs, p))):
         fig = fn(out / name)
         if not opts.gallery:  # the gallery shows the figures left open
-            close(fig)
+            import matplotlib.pyplot as plt  # loaded by the figure already
+
+            plt.close(fig)  # release its memory
         print(f"  {out / name}")
     return 0
 

@@ -28,7 +28,10 @@ from surfmet.mechanics.scan_preparation import SPIKES
 
 if TYPE_CHECKING:
 
+    from contact.adhesion._ring_ball import RingBall
+    from contact.adhesion.ball import AdhesiveBall
     from contact.adhesion.default_grid import GridChoice
+    from contact.adhesion.line import AdhesiveLine
     from surfmet.mechanics._types import AdhesionLaw, Materials, PathLike, ScanSource, Spikes
     from surfmet.mechanics.pairing import PairedRoughness
     from surfmet.mechanics.scan_preparation import ScansUsed
@@ -62,7 +65,7 @@ class Adhesion:
     ('AdhesiveBall', None, 'grid too coarse for the interact')
     """
 
-    result: Any
+    result: AdhesiveBall | AdhesiveLine | RingBall
     scans: ScansUsed | None = None
     grid_why: str = "given by the user"
 
@@ -410,7 +413,7 @@ def rough_grid(plate: ScanSource | None, ball: ScanSource | None, grid: int, siz
     if int(grid) != grid or grid < 16:
         raise SurfmetInputError(f"the grid must be an integer of at least 16, got {grid!r}")
     prep = prepare_scans(plate, ball, spikes=spikes)
-    pair = prep.pair
+    pair = prep.paired()
     ny, nx = pair.roughness.shape
     centre = (0.5 * (nx - 1) * pair.dx, 0.5 * (ny - 1) * pair.dy)
     dx = size / grid
@@ -469,6 +472,12 @@ def plot(run: Adhesion, path: PathLike | None = None) -> Any:
     matplotlib.figure.Figure
         The figure.
 
+    Raises
+    ------
+    SurfmetInputError
+        A line contact's run (its figure is
+        :func:`surfmet.mechanics.adhesion_line.line_plot`).
+
     Examples
     --------
     >>> from surfmet.mechanics.adhesion import adhesion, plot
@@ -476,9 +485,13 @@ def plot(run: Adhesion, path: PathLike | None = None) -> Any:
     >>> len(fig.axes)
     2
     """
+    from contact.adhesion.line import AdhesiveLine
     from surfmet.plots._style import finish, new_figure
 
     ball = run.result
+    if isinstance(ball, AdhesiveLine):
+        raise SurfmetInputError("plot draws a sphere's cycle; a line contact's is "
+                                "surfmet.mechanics.adhesion_line.line_plot")
     fig, (a1, a2) = new_figure(1, 2, size=(10, 4.2))
     for leg, style, name in ((ball.cycle.approach_leg, "C0o-", "approach"),
                              (ball.cycle.retraction_leg, "C3s-", "retraction")):

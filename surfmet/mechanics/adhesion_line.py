@@ -122,7 +122,7 @@ def line_adhesion(radius: float, *, work: float | None = None, range_: float | N
         from surfmet.mechanics.scan_preparation import ScansUsed, prepare_scans
 
         prep = prepare_scans(plate, None, spikes=spikes)
-        pair = prep.pair
+        pair = prep.paired()
         dx = size / cells
         x = (np.arange(cells) - cells // 2) * dx
         if (pair.roughness.shape[1] - 1) * pair.dx < 2.0 * max(-x[0], x[-1]):

@@ -119,7 +119,7 @@ def contact_study(
     mats, prep = _study_inputs(plate, ball, materials, spikes, hardness)
     if plastic or hardness is not None:
         hardness = mats.hardness
-    pair = prep.pair
+    pair = prep.paired()
     study = sphere_study(radius, load, mats, pair.roughness, pair.dx, pair.dy,
                          hardness=hardness, sigma=prep.sigma, factors=factors,
                          progress=progress)
@@ -180,7 +180,7 @@ def rolling_study(
         if mats.hardness is None:
             raise SurfmetInputError("the plastic model needs a hardness: give --hardness")
         sweep_kwargs["hardness"] = mats.hardness
-    pair = prep.pair
+    pair = prep.paired()
     # the flat keywords of the dissipation model travel as one contact.Dissipation
     named = {f.name for f in fields(Dissipation)}
     dissipation = Dissipation(**{k: sweep_kwargs.pop(k) for k in list(sweep_kwargs)

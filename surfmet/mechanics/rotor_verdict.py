@@ -14,13 +14,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from surfmet._errors import SurfmetInputError
+from surfmet._frames import read_frames_table
 
 if TYPE_CHECKING:
     from rotor import LawOfMotionAnalysis, Rig, RotorVerdict
     from surfmet.mechanics.rotor_rough_bound import RoughArmBound
 
-__all__ = ["column_groups", "judge", "label_swap_text", "load_rig",
-           "paper_verdict", "shared_track_p_text", "table_verdict", "verdict_figure",
+__all__ = ["column_groups", "judge", "label_swap_text", "load_rig", "paper_verdict",
+           "read_frames_table", "shared_track_p_text", "table_verdict", "verdict_figure",
            "verdict_lines", "verdict_plot_path"]
 
 
@@ -180,7 +181,6 @@ def paper_verdict() -> RotorVerdict:
     'undetermined'
     """
     from rotor import paper_rig
-    from surfmet._frames import read_frames_table
     from surfmet.data import path as data_path
 
     ks, cols = read_frames_table(data_path("table3_frames.tsv"))

@@ -21,7 +21,7 @@ import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -224,7 +224,7 @@ class PreparedScans:
     sigma = 2.28 µm {'plate': 60}
     """
 
-    pair: Any
+    pair: PairedRoughness | None
     sigma: float
     sigma_plate: float
     sigma_ball: float
@@ -237,6 +237,19 @@ class PreparedScans:
     def filled_fraction(self) -> float | None:
         """The fraction of the paired grid that was not measured (None: no scans)."""
         return None if self.pair is None else self.pair.filled_fraction
+
+    def paired(self) -> PairedRoughness:
+        """``pair``, for a computation that needs the scans' roughness.
+
+        Raises
+        ------
+        SurfmetInputError
+            No scan was given (two smooth bodies: ``pair`` is None).
+        """
+        if self.pair is None:
+            raise SurfmetInputError("this needs a scan (a plate or a ball): with two smooth "
+                                    "bodies there is no roughness to pair")
+        return self.pair
 
 
 @dataclass(frozen=True, eq=False)
@@ -339,7 +352,7 @@ class ScansUsed:
     def notes(self) -> list[str]:
         """The preparation's notes, and one when the solver's pixel is finer than the
         scans' (the roughness is then interpolated)."""
-        pair = self.prep.pair
+        pair = self.prep.paired()
         notes = list(self.prep.notes)
         if self.dx < pair.dx * (1 - 1e-9):
             notes.append(f"the solver's pixel ({self.dx * 1e9:.4g} nm) is finer than the "

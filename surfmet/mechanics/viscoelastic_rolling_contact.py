@@ -31,7 +31,10 @@ from surfmet._errors import SurfmetInputError
 
 if TYPE_CHECKING:
     from contact._materials import Material
+    from contact.tangential._results import TangentialResult
+    from contact.viscoelastic._result import RollingResult
     from contact.viscoelastic._rheology import CreepSeries, StandardLinearSolid
+    from contact.viscoelastic._traction import TractionResult
     from surfmet.mechanics._types import Materials, ScanSource
 
 #: ``|K|`` at or below this is quasi-identical (the viscoelastic traction solvers' model).
@@ -67,8 +70,8 @@ class ViscoRollingContact:
     (True, 2)
     """
 
-    normal: Any
-    traction: Any
+    normal: RollingResult
+    traction: TractionResult | TangentialResult | None
     radius: float
     load: float
     line: bool
@@ -251,6 +254,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
                      f"elastic limit 0.5 % on the free-rolling creepage of steel on PMMA)")
     n = grid or (1024 if line else 128)
     solve_tr = mu is not None and reason is None
+    tr: TractionResult | TangentialResult | None
     if line:
         if plate is not None or ball is not None:
             raise SurfmetInputError("--line takes no scans")
@@ -264,7 +268,7 @@ def viscoelastic_rolling_contact(*, radius: float, load: float, materials: Mater
 
 
 def _line(radius: float, load: float, creep: CreepSeries, speed: float, n: int, mu: float | None,
-          creepage: float | None) -> tuple[Any, Any]:
+          creepage: float | None) -> tuple[RollingResult, TractionResult | None]:
     """The plane-strain normal solve and, with ``mu``, Carter's problem with creep."""
     from contact.tangential._memory import check_rolling_memory
     from contact.viscoelastic._line import influence_matrix, rolling_cylinder
@@ -283,7 +287,7 @@ def _line(radius: float, load: float, creep: CreepSeries, speed: float, n: int, 
 def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
           plate: ScanSource | None, ball: ScanSource | None, spikes: bool,
           bodies: dict[str, Any], mu: float | None, creepage: float | None,
-          coupled: bool) -> tuple[Any, Any]:
+          coupled: bool) -> tuple[RollingResult, TangentialResult | None]:
     """The 3D normal solve (smooth or with the scans) and, with ``mu``, the tractions
     (``coupled``: with the pressure's tangential displacement of a dissimilar pair)."""
     from contact.viscoelastic._surface import rolling_sphere
@@ -294,7 +298,7 @@ def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
         from contact.viscoelastic._window import sphere_window
         from surfmet.mechanics.scan_preparation import prepare_scans
 
-        pair = prepare_scans(plate, ball, spikes=spikes).pair
+        pair = prepare_scans(plate, ball, spikes=spikes).paired()
         half = sphere_window(load, radius, creep.relaxed)
         z = roughness_window(pair.roughness, pair.dx, pair.dy, None, half, n)
     res = rolling_sphere(radius, load, creep, speed, n=n, roughness=z)
@@ -306,10 +310,10 @@ def _ball(radius: float, load: float, creep: CreepSeries, speed: float, n: int,
     x, y = np.asarray(res.x), np.asarray(res.y)
     grid3 = Grid(x=x, y=y, h=(x[None, :] ** 2 + y[:, None] ** 2) / (2.0 * radius))
     nu = pair_poisson(bodies["ball"], bodies["plate"])
-    pair = (bodies["ball"], bodies["plate"]) if coupled else None
+    bodies_pair = (bodies["ball"], bodies["plate"]) if coupled else None
     return res, visco_steady_tractions(grid3, np.asarray(res.pressure),
                                        ViscoRolling(creep, nu, speed), mu,
-                                       creepage=creepage, coupling=pair)
+                                       creepage=creepage, coupling=bodies_pair)
 
 
 #: What the viscoelastic record's rolling-resistance coefficient is (beside the elastic

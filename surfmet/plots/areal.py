@@ -1,4 +1,5 @@
-"""Areal figures: the height map, the Abbott–Firestone (material ratio) curve, the PSD.
+"""Areal figures: the height map, the Abbott–Firestone (material ratio) curve, the PSD, and
+the 3D view (:func:`render_3d`, pyvista off-screen: an image, not a matplotlib figure).
 
 Units everywhere in surfmet's figures: heights in µm, lateral lengths in µm (or mm when
 the extent passes 2 mm, :func:`lateral_unit`), pressures in MPa, wavevectors in rad/µm.
@@ -14,6 +15,7 @@ import numpy as np
 
 from surfmet._errors import SurfmetInputError
 from surfmet._model import Profile, Topography
+from surfmet._render import render_3d as render_3d  # re-exported: the 3D view of a scan
 from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
 from surfmet.units import valid_text
 

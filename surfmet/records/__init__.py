@@ -30,14 +30,21 @@ command's inputs) and :mod:`~surfmet.records._demo`, :mod:`~surfmet.records._dem
 (the demo's steps).
 """
 
-from surfmet.records._contact import contact_record, grid_record, material_record
+from surfmet.records._contact import (
+    ball_contact_record,
+    contact_record,
+    grid_record,
+    material_record,
+)
 from surfmet.records._flat import flat_contact_record
 from surfmet.records._hertz import hertz_check_details, hertz_check_record
 from surfmet.records._resolution import study_record
 from surfmet.records._rolling import rolling_record, tracks_record
+from surfmet.records._roughness import roughness_record
 from surfmet.records._scans import fit_record, scan_record
 from surfmet.records._spectrum import spectrum_record
 
-__all__ = ["contact_record", "fit_record", "flat_contact_record", "grid_record",
-           "hertz_check_details", "hertz_check_record", "material_record", "rolling_record",
-           "scan_record", "spectrum_record", "study_record", "tracks_record"]
+__all__ = ["ball_contact_record", "contact_record", "fit_record", "flat_contact_record",
+           "grid_record", "hertz_check_details", "hertz_check_record", "material_record",
+           "rolling_record", "roughness_record", "scan_record", "spectrum_record",
+           "study_record", "tracks_record"]

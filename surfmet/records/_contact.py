@@ -82,10 +82,20 @@ def ball_contact_record(run: Any) -> dict[str, Any]:
     """The ``surfmet contact`` record of a :class:`surfmet.mechanics.ball_contact.BallContact`
     (every value with its unit), with what was done to the scans and the warnings.
 
+    Parameters
+    ----------
+    run : BallContact
+        What :func:`surfmet.mechanics.ball_contact.ball_contact` returned.
+
+    Returns
+    -------
+    dict
+        The record of ``surfmet contact --json`` (JSON types, values with their units).
+
     Examples
     --------
     >>> from surfmet.mechanics.ball_contact import ball_contact
-    >>> from surfmet.records._contact import ball_contact_record
+    >>> from surfmet.records import ball_contact_record
     >>> rec = ball_contact_record(ball_contact(radius=0.02, load=10.0, grid=64))
     >>> print(f"{rec['pmax']['value'] / 1e6:.0f} MPa", rec["warnings"])
     255 MPa []

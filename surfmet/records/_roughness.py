@@ -22,11 +22,22 @@ def roughness_record(res: Any) -> dict[str, Any]:
     Lengths in a profile's settings (SI floats in its ``settings``) become
     ``{"value", "unit"}`` here (:func:`profile_settings_record`).
 
+    Parameters
+    ----------
+    res : RoughnessResult
+        What :func:`surfmet.roughness.roughness` returned.
+
+    Returns
+    -------
+    dict
+        The record of ``surfmet roughness --json`` for the scan (JSON types, values with
+        their units).
+
     Examples
     --------
     >>> from surfmet.data import path
     >>> from surfmet.roughness import roughness
-    >>> from surfmet.records._roughness import roughness_record
+    >>> from surfmet.records import roughness_record
     >>> roughness_record(roughness(path("paper_plate.x3p")))["parameters"]["Sa"]["unit"]
     'm'
     """
