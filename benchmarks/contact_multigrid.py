@@ -223,6 +223,67 @@ def fas_solve(gap: np.ndarray, pixel: float, load: float, args: argparse.Namespa
             "seconds": time.perf_counter() - t0, "history": history}
 
 
+def _pcg(a, m, center, b, x0, tol, maxit, flexible=False):
+    """Preconditioned CG (Polak-Ribiere's beta where ``flexible``); iterate and steps."""
+    x = x0.copy()
+    r = center(b - a(x))
+    r0 = np.linalg.norm(r)
+    z = m(r)
+    t, rho = z.copy(), float(np.vdot(r, z))
+    for k in range(maxit):
+        if np.linalg.norm(r) <= tol * r0 or rho == 0.0:
+            return x, k
+        at = a(t)
+        step = rho / float(np.vdot(t, at))
+        x += step * t
+        r_new = center(r - step * at)
+        z_new = m(r_new)
+        rho_new = float(np.vdot(r_new, z_new))
+        beta = (rho_new - float(np.vdot(z_new, r))) / rho if flexible else rho_new / rho
+        r, rho = r_new, rho_new
+        t = z_new + beta * t
+    return x, maxit
+
+
+def ideal_two_grid(contact: np.ndarray, gap: np.ndarray, pixel: float) -> dict:
+    """CG steps to a 1e-8 drop on the final contact set F (the linear problem of
+    ``contact_set_preconditioners.py``): |q|/2 alone, and a two-grid cycle whose coarse
+    operator is the exact Galerkin one, E^T C K C E (E: a 2 x 2 block's value on its
+    contact cells, C: the load-neutral projection on F), solved to 1e-10 by an inner CG
+    preconditioned by the coarse |q|/2 (each inner step a fine convolution: a yardstick
+    of what a coarse level could do at best, not a cheap method)."""
+    from contact_set_preconditioners import Level as SetLevel
+
+    n, m = contact.shape[0], contact.shape[0] // 2
+    fine = SetLevel(n, pixel, contact.astype(float))
+    blocks = contact.reshape(m, 2, m, 2).any(axis=(1, 3))
+    coarse = SetLevel(m, 2 * pixel, blocks.astype(float))
+
+    def prolong_on(e: np.ndarray) -> np.ndarray:
+        return fine.center(np.repeat(np.repeat(e, 2, 0), 2, 1) * contact)
+
+    def restrict_on(r: np.ndarray) -> np.ndarray:
+        return r.reshape(m, 2, m, 2).sum(axis=(1, 3)) * blocks
+
+    def galerkin(e: np.ndarray) -> np.ndarray:
+        return restrict_on(fine.center(fine.a(prolong_on(e))))
+
+    inner: list[int] = []
+
+    def cycle(r: np.ndarray) -> np.ndarray:
+        z = fine.smooth(r)
+        rc = restrict_on(fine.center(r - fine.a(z)))
+        e, k = _pcg(galerkin, coarse.smooth, coarse.center, rc, np.zeros((m, m)), 1e-10, 500)
+        inner.append(k)
+        z = z + prolong_on(e)
+        return z + fine.smooth(fine.center(r - fine.a(z)))
+
+    b, x0 = -gap * contact, contact / contact.sum()
+    plain = _pcg(fine.a, fine.smooth, fine.center, b, x0, 1e-8, 1000)[1]
+    two = _pcg(fine.a, cycle, fine.center, b, x0, 1e-8, 200, flexible=True)[1]
+    return {"stiffness": plain, "galerkin two-grid": two, "inner max": max(inner)}
+
+
 def production(gap: np.ndarray, pixel: float, load: float) -> dict:
     from contact._grid import gap_grid
     from contact.bem import SolveOptions, solve_normal
@@ -248,7 +309,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--nu2", type=int, default=4)
     ap.add_argument("--gamma", type=int, default=1)
     ap.add_argument("--correct", choices=("contact", "all"), default="contact")
-    ap.add_argument("--prolong", choices=("bilinear", "block"), default="bilinear")
+    ap.add_argument("--prolong", choices=("bilinear", "block"), default="block")
+    ap.add_argument("--ideal", action="store_true",
+                    help="the Galerkin two-grid yardstick on the final contact set instead")
     ap.add_argument("--two-grid", action="store_true",
                     help="two levels, the coarse contact problem solved to 1e-10")
     ap.add_argument("--max-cycles", type=int, default=60)
@@ -259,6 +322,9 @@ def main(argv: list[str] | None = None) -> int:
     for n in (int(v) for v in args.sizes.split(",") if v):
         gap, pixel, load = periodic_case(n)
         ref = production(gap, pixel, load)
+        if args.ideal:
+            print(f"{n:5d}^2", ideal_two_grid(ref["pressure"] > 0, gap, pixel), flush=True)
+            continue
         fas = fas_solve(gap, pixel, load, args, args.tol)
         p_ref, p = ref["pressure"], fas["pressure"]
         dp = float(np.abs(p - p_ref).max() / p_ref.max())
