@@ -20,9 +20,10 @@ contact of Venner & Lubrecht 2000, "Multilevel methods in lubrication", ch. 4-5)
 - the coarse problem is itself a contact problem with the FAS gap
   h_H = R g + delta - K_H (R p): at P = R p its gap is R g, so it corrects the fine
   iterate only by what the fine grid cannot see;
-- the coarse correction P - R p is prolonged bilinearly (periodic), added on the fine
-  contact set (or everywhere: ``--correct all``), projected on p >= 0, the load
-  restored; then post-relaxation;
+- the coarse correction P - R p is spread evenly over each block's fine contact cells
+  (the default, ``--prolong block``), or prolonged bilinearly (periodic) and added on
+  the fine contact set (``--prolong bilinear``; everywhere with ``--correct all``);
+  projected on p >= 0, the load restored; then post-relaxation;
 - V(nu1, nu2) cycles down to 64^2 (solved there to 1e-10 by the same iteration), or
   W cycles (``--gamma 2``).
 
