@@ -2,8 +2,10 @@
 
 Run in a separate virtualenv that has Tamaas (never imported by surfmet or its tests)::
 
-    PYTHONPATH=. python3 -c "import sys; sys.path.insert(0, 'benchmarks'); ..."  # see main()
-    /path/to/venv/bin/python benchmarks/peer_tamaas_iterations.py HEIGHTS.npy
+    python3 -c "import sys, numpy as np; sys.path.insert(0, 'benchmarks');
+    from core_scaling import periodic_case; g = periodic_case(512)[0];
+    np.save('z512.npy', g.max() - g)"
+    /path/to/venv/bin/python benchmarks/peer_tamaas_iterations.py z512.npy
 
 ``HEIGHTS.npy`` holds the surface heights (m) of ``core_scaling.periodic_case(n)``
 (``z = gap.max() - gap``), written by surfmet's environment; the pixel is 1 um, E* 1 Pa
