@@ -45,11 +45,11 @@ OUTER_MARGIN = 1.2
 #: Uniform rings beyond this many are graded instead (:func:`ring_edges`): Maugis' lambda
 #: above about 5.5 on any sphere (the count depends on lambda alone).
 GRADED_ABOVE = 1000
-#: The graded rings' fine band: the JKR contact radius at pull-off, 4^(-1/3) a0, plus or
-#: minus this share of a0 (and :data:`BAND_ZONES` cohesive zones); measured at lambda 5,
-#: the retraction's least load lies at 0.62 a0 and is within 10 % of it from 0.53 a0 to
-#: 0.73 a0 (benchmarks/adhesion_rings.md).
-BAND_HALF = 0.15
+#: The graded rings' fine band: the JKR contact radius at pull-off, 4^(-1/3) a0 = 0.63 a0,
+#: plus or minus this share of a0 (and :data:`BAND_ZONES` cohesive zones); measured at
+#: lambda 5 and 10, the retraction's least load lies at 0.62 a0 and the golden section
+#: refines it between 0.59 a0 and 0.65 a0 (benchmarks/adhesion_rings.md).
+BAND_HALF = 0.1
 BAND_ZONES = 3.0
 #: The contact edge's travel over a cycle, (least over a0, largest over max(a0, sqrt(2 R
 #: h))): the JKR jump-out at a0 / 6^(2/3) = 0.30 a0 to past the deepest approach's 1.32 a0
