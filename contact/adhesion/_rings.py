@@ -88,20 +88,24 @@ class RingProblem:
     lu: np.ndarray = field(repr=False)
 
     @cached_property
-    def largest_stiffness(self) -> float:
-        """The largest eigenvalue of S = K^-1 (Pa/m), by inverse power iteration on K:
-        the descent's step is its inverse."""
+    def descent_step(self) -> np.ndarray:
+        """The descent's step per ring (m/Pa): each ring's self-compliance K_ii over the
+        largest eigenvalue of D^1/2 S D^1/2 (S = K^-1, D = diag K_ii), by power iteration
+        on it (a solve with K each), with a 5 % margin. On uniform rings K_ii is about one
+        value and this is the plain step 1 / max eig S; on graded ones a ring of ten times
+        the width takes a step ten times as long, not the finest ring's."""
+        d = np.sqrt(self.diagonal)
         x = np.ones_like(self.r)
         piv = np.arange(x.size)
         value = 0.0
         for _ in range(60):
-            y = linalg.lu_solve((self.lu, piv), x, check_finite=False)
+            y = d * linalg.lu_solve((self.lu, piv), d * x, check_finite=False)
             new = float(np.linalg.norm(y) / np.linalg.norm(x))
             x = y / np.linalg.norm(y)
             if abs(new - value) <= 1e-4 * new:
                 break
             value = new
-        return 1.05 * new
+        return self.diagonal / (1.05 * new)
 
     @cached_property
     def diagonal(self) -> np.ndarray:
@@ -393,7 +397,7 @@ def _descend_rings(problem: RingProblem, approach: float, g: np.ndarray, tol: fl
     law, m = problem.law, g.size
     h = problem.gap0[:m]
     lu = (problem.lu[:m, :m], np.arange(m))
-    step = 1.0 / problem.largest_stiffness
+    step = problem.descent_step[:m]
     x = g.copy()
     y = g.copy()
     theta = 1.0
