@@ -141,7 +141,7 @@ def test_command_default_at_lambda_10_is_maugis_on_rings(capsys):
     assert rec["discretisation"] == "axisymmetric"
     assert rec["grid"]["discretisation"] == "axisymmetric"
     assert rec["grid"]["process_zone_rings"]["value"] >= 8.0
-    assert "graded axisymmetric rings" in rec["grid"]["why"]
+    assert rec["grid"]["graded"] and "graded axisymmetric rings" in rec["grid"]["why"]
     lam = rec["maugis_parameter"]["value"]
     assert lam == pytest.approx(10.0, rel=1e-3)
     want = md_pull_off(lam) * math.pi * W * R
