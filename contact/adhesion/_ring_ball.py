@@ -9,6 +9,16 @@ away from the flat, so the zone ends inside it. The cycle is the 3D command's
 (:func:`contact.adhesion.cycle.approach_retraction`, the same approach range as
 :func:`contact.adhesion.ball.adhesive_ball`), the approach measured from the distant
 surface (Maugis' delta) since the half-space is not periodic.
+
+Where uniform rings would be more than :data:`GRADED_ABOVE` (Maugis' lambda above about
+5.5: at lambda 10, 3,329 rings and ten minutes of CPU), they are graded
+(:func:`ring_edges`): :data:`ZONE_RINGS` rings across the zone around the JKR contact
+radius at pull-off, :data:`CYCLE_ZONE_RINGS` over the whole travel of the contact edge in
+the cycle, widths growing by :data:`GROWTH` a ring away from both. The law's step is then
+smoothed on the travel's rings (:func:`smoothing_width`), not the finest: on rings wider
+than the width it is smoothed on, the zone's end is pinned (lattice trapping) and the
+retraction holds the edge out, a pull-off 14 % high at lambda 10 (the step smoothed on
+the fine rings); smoothed on the travel's rings, +0.3 % (benchmarks/adhesion_rings.md).
 """
 
 from __future__ import annotations
@@ -36,6 +46,25 @@ OUTER_MARGIN = 1.2
 #: A stepped law's ramp on the rings is at least this many times the gap that the ring
 #: most compliant to itself opens by letting go of the peak tension (:func:`ring_law`).
 RING_RAMP = 2.0
+#: Uniform rings beyond this many are graded instead (:func:`ring_edges`): Maugis' lambda
+#: above about 5.5 on any sphere (the count depends on lambda alone).
+GRADED_ABOVE = 1000
+#: The graded rings' fine band: the JKR contact radius at pull-off, 4^(-1/3) a0 = 0.63 a0,
+#: plus or minus this share of a0 (and :data:`BAND_ZONES` cohesive zones); measured at
+#: lambda 5 and 10, the retraction's least load lies at 0.62 a0 and the golden section
+#: refines it between 0.59 a0 and 0.65 a0 (benchmarks/adhesion_rings.md).
+BAND_HALF = 0.1
+BAND_ZONES = 3.0
+#: The contact edge's travel over a cycle, (least over a0, largest over max(a0, sqrt(2 R
+#: h))): the JKR jump-out at a0 / 6^(2/3) = 0.30 a0 to past the deepest approach's 1.32 a0
+#: (measured at lambda 5), with margins; there the rings are the cohesive zone over
+#: this many wide, so that the edge is not trapped on a ring wider than the zone.
+CYCLE_EDGES = (0.25, 1.5)
+CYCLE_ZONE_RINGS = 2.0
+#: Growth of the ring widths away from the fine band, and the widest ring over the
+#: contact's scale max(a0, sqrt(2 R h)).
+GROWTH = 1.1
+WIDEST = 0.01
 
 
 @dataclass(frozen=True)
@@ -61,6 +90,8 @@ class RingBall(SpherePullOffs):
         The cohesive zone width l_pz = pi E* w / (4 sigma0^2) (m).
     warnings : tuple of str
         Resolution warnings (empty when none).
+    graded : bool
+        Whether the rings are graded (:func:`ring_edges`); ``dr`` is then the finest.
     """
 
     radius: float
@@ -75,6 +106,7 @@ class RingBall(SpherePullOffs):
     process_zone: float
     warnings: tuple[str, ...]
     roughness_rms: float = 0.0
+    graded: bool = False
 
 
 
@@ -96,23 +128,21 @@ def ring_width(radius: float, e_star: float, law: InteractionLaw, *,
     return dr, OUTER_MARGIN * math.sqrt(2.0 * radius * (deepest + law.reach))
 
 
-def ring_count(dr: float, outer: float) -> int:
-    """The rings of width ``dr`` (m) that reach ``outer`` (m), at least 16."""
-    return max(16, math.ceil(outer / dr))
-
-
-def self_compliance(dr: float, rings: int) -> np.ndarray:
-    """Each ring's displacement at its centre per unit pressure on itself, times E* (m):
-    the discs' difference (:func:`contact.halfspace.axisymmetric.disc_displacement`)."""
-    edges = np.arange(rings + 1) * dr
+def self_compliance(edges: np.ndarray) -> np.ndarray:
+    """Each ring's displacement at its centre per unit pressure on itself, times E* (m),
+    for rings of any widths between ``edges`` (m): the discs' difference
+    (:func:`contact.halfspace.axisymmetric.disc_displacement`)."""
+    edges = np.asarray(edges, dtype=float)
     r = 0.5 * (edges[1:] + edges[:-1])
     return np.array([float(disc_displacement(r[j:j + 1], edges[j + 1])[0]
                            - (disc_displacement(r[j:j + 1], edges[j])[0] if j else 0.0))
-                     for j in range(rings)])
+                     for j in range(r.size)])
 
 
-def ring_law(law: InteractionLaw, e_star: float, dr: float, rings: int) -> InteractionLaw:
-    """``law`` with its step (where it has one) smoothed for ``rings`` rings of width ``dr``.
+def ring_law(law: InteractionLaw, e_star: float, edges: np.ndarray,
+             smooth: float) -> InteractionLaw:
+    """``law`` with its step (where it has one) smoothed on the rings between ``edges``
+    (m), on the width ``smooth`` (m; :func:`smoothing_width`) or wider where a ring needs it.
 
     A grid's ramp, ``law.on_grid(dx, e_star)``, is :data:`EDGE_SMOOTHING` sigma0 dx / E*
     wide, several times the gap a pixel opens by letting go of sigma0. A ring's
@@ -123,12 +153,80 @@ def ring_law(law: InteractionLaw, e_star: float, dr: float, rings: int) -> Inter
     lattice trapping: a loss in a cycle that has no jump (measured 2.3e-14 J at Maugis
     lambda 0.0765, R 1 mm, E* 1 GPa, w 50 mJ/m^2, h0 200 nm, the ring beyond h0 by
     0.07 nm on the way in and within it on the way out). The ramp is therefore widened to
-    :data:`RING_RAMP` times the largest sigma0 K_ii where that is wider, which leaves
-    every ring's release stable (its traction's slope sigma0 / s below its own
-    stiffness 1 / K_ii); a law without a step is returned as ``on_grid`` returns it.
+    :data:`RING_RAMP` times the largest sigma0 K_ii of the rings the contact edge travels
+    over (those no wider than ``smooth``: all of them on uniform rings, the fine bands on
+    graded ones) where that is wider, which leaves each such ring's release stable (its
+    traction's slope sigma0 / s below its own stiffness 1 / K_ii); a law without a step
+    is returned as ``on_grid`` returns it.
     """
-    stable = RING_RAMP * float(self_compliance(dr, rings).max()) / EDGE_SMOOTHING
-    return law.on_grid(max(dr, stable), e_star)
+    edges = np.asarray(edges, dtype=float)
+    travel = np.diff(edges) <= smooth * (1.0 + 1e-9)
+    stable = RING_RAMP * float(self_compliance(edges)[travel].max()) / EDGE_SMOOTHING
+    return law.on_grid(max(smooth, stable), e_star)
+
+
+def graded_edges(outer: float, bands: list[tuple[float, float, float]], widest: float, *,
+                 growth: float = GROWTH) -> np.ndarray:
+    """Ring edges (m) from 0 to ``outer``, graded: each band (lo, hi, width) asks rings of
+    at most ``width`` between lo and hi (m); away from the bands the widths grow by
+    ``growth`` a ring (a width w + (growth - 1) d at a distance d from a band of width w),
+    up to ``widest``. A last ring narrower than half its neighbour is merged with it.
+
+    Examples
+    --------
+    >>> e = graded_edges(100.0, [(40.0, 50.0, 1.0)], 5.0)
+    >>> w = np.diff(e)
+    >>> float(e[0]), float(e[-1]), float(w.min()), bool(np.all(w[1:] / w[:-1] < 1.11))
+    (0.0, 100.0, 1.0, True)
+    """
+    def width(x: float) -> float:
+        out = widest
+        for lo, hi, w in bands:
+            out = min(out, w + (growth - 1.0) * max(lo - x, x - hi, 0.0))
+        return out
+
+    edges = [0.0]
+    while edges[-1] < outer:
+        x = edges[-1]
+        w = width(x)
+        edges.append(x + min(w, width(x + w)))  # no wider than the width where it ends
+    edges[-1] = outer
+    if len(edges) > 2 and edges[-1] - edges[-2] < 0.5 * (edges[-2] - edges[-3]):
+        del edges[-2]
+    return np.array(edges)
+
+
+def graded(outer: float, dr: float) -> bool:
+    """Whether rings of width ``dr`` (m) to ``outer`` (m) are graded (:func:`ring_edges`)."""
+    return max(16, math.ceil(outer / dr)) > GRADED_ABOVE
+
+
+def smoothing_width(radius: float, e_star: float, law: InteractionLaw, dr: float,
+                    outer: float) -> float:
+    """The ring width (m) to smooth the law's step on (``law.on_grid``): ``dr``, or on
+    graded rings the widest the contact edge travels over (module notes)."""
+    if not graded(outer, dr):
+        return dr
+    return max(dr, process_zone(e_star, law.work, law.peak) / CYCLE_ZONE_RINGS)
+
+
+def ring_edges(radius: float, e_star: float, law: InteractionLaw, dr: float,
+               outer: float) -> np.ndarray:
+    """The rings' edges (m): uniform of width ``dr`` to ``outer``, or graded
+    (:func:`graded_edges`) where uniform rings would be more than :data:`GRADED_ABOVE`
+    (module notes): ``dr`` around the JKR contact radius at pull-off, the cohesive zone
+    over :data:`CYCLE_ZONE_RINGS` over the contact edge's whole travel."""
+    n = max(16, math.ceil(outer / dr))
+    if not graded(outer, dr):
+        return np.arange(n + 1) * dr
+    a0, reach, _ = scales(radius, e_star, law)
+    ell = max(a0, reach)
+    zone = process_zone(e_star, law.work, law.peak)
+    half = BAND_HALF * a0 + BAND_ZONES * zone
+    centre = 4.0 ** (-1.0 / 3.0) * a0
+    bands = [(centre - half, centre + half, dr),
+             (CYCLE_EDGES[0] * a0, CYCLE_EDGES[1] * ell, max(dr, zone / CYCLE_ZONE_RINGS))]
+    return graded_edges(n * dr, bands, max(dr, WIDEST * ell))
 
 
 def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: InteractionLaw, *,
@@ -144,7 +242,8 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
         :class:`contact._material_pair.MaterialPair`.
     law : InteractionLaw
         A registered law, as the solve should see it: smooth its step on the rings with
-        :func:`ring_law` first (``dr`` from :func:`ring_width`).
+        :func:`ring_law` first, on :func:`ring_edges` and :func:`smoothing_width` (its
+        ``dr`` and ``outer`` from :func:`ring_width`).
     dr : float, optional
         Ring width (m); default :func:`ring_width`'s.
     steps : int
@@ -160,11 +259,12 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
     between JKR's 1.5 pi w R and DMT's 2 pi w R (Maugis' curve: 1.60 pi w R):
 
     >>> from contact.adhesion.laws import DugdaleLaw
-    >>> from contact.adhesion._ring_ball import (adhesive_sphere, ring_count, ring_law,
-    ...                                          ring_width)
+    >>> from contact.adhesion._ring_ball import (adhesive_sphere, ring_edges, ring_law,
+    ...                                          ring_width, smoothing_width)
     >>> law = DugdaleLaw.from_range(0.05, 1.530e-8)
     >>> dr, outer = ring_width(1e-3, 1e9, law)
-    >>> law = ring_law(law, 1e9, dr, ring_count(dr, outer))
+    >>> edges = ring_edges(1e-3, 1e9, law, dr, outer)
+    >>> law = ring_law(law, 1e9, edges, smoothing_width(1e-3, 1e9, law, dr, outer))
     >>> ball = adhesive_sphere(1e-3, 1e9, law, steps=12)
     >>> print(f"{ball.cycle.pull_off_force / (3.14159265 * 0.05 * 1e-3):.2f} pi w R")
     1.60 pi w R
@@ -177,8 +277,9 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
         raise ContactInputError(f"the steps must be an integer of at least 4, got {steps!r}")
     width, outer = ring_width(radius, e_star, law)
     dr = width if dr is None else positive(dr, "the ring width", "m")
-    n = ring_count(dr, outer)
-    problem = ring_problem(radius, e_star, law, np.arange(n + 1) * dr)
+    edges = ring_edges(radius, e_star, law, dr, outer)
+    n = edges.size - 1
+    problem = ring_problem(radius, e_star, law, edges)
     far, deep = approach_range(radius, e_star, law)
     cycle = approach_retraction(problem, np.linspace(far, deep, int(steps)), tol=tol,
                                 progress=progress)
@@ -192,7 +293,7 @@ def adhesive_sphere(radius: float, e_star: float | MaterialPair, law: Interactio
                         "may lie beyond the last step")
     return RingBall(
         radius=float(radius), e_star=float(e_star), law=law, rings=n,
-        outer_radius=n * dr, dr=dr, cycle=cycle,
+        outer_radius=float(edges[-1]), dr=dr, cycle=cycle,
         maugis_parameter=law.maugis(radius, e_star),
         tabor_parameter=tabor_parameter(law.work, radius, e_star, law.range),
-        process_zone=zone, warnings=tuple(warnings))
+        process_zone=zone, warnings=tuple(warnings), graded=graded(outer, dr))

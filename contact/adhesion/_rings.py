@@ -88,20 +88,24 @@ class RingProblem:
     lu: np.ndarray = field(repr=False)
 
     @cached_property
-    def largest_stiffness(self) -> float:
-        """The largest eigenvalue of S = K^-1 (Pa/m), by inverse power iteration on K:
-        the descent's step is its inverse."""
+    def descent_step(self) -> np.ndarray:
+        """The descent's step per ring (m/Pa): each ring's self-compliance K_ii over the
+        largest eigenvalue of D^1/2 S D^1/2 (S = K^-1, D = diag K_ii), by power iteration
+        on it (a solve with K each), with a 5 % margin. On uniform rings K_ii is about one
+        value and this is the plain step 1 / max eig S; on graded ones a ring of ten times
+        the width takes a step ten times as long, not the finest ring's."""
+        d = np.sqrt(self.diagonal)
         x = np.ones_like(self.r)
         piv = np.arange(x.size)
         value = 0.0
         for _ in range(60):
-            y = linalg.lu_solve((self.lu, piv), x, check_finite=False)
+            y = d * linalg.lu_solve((self.lu, piv), d * x, check_finite=False)
             new = float(np.linalg.norm(y) / np.linalg.norm(x))
             x = y / np.linalg.norm(y)
             if abs(new - value) <= 1e-4 * new:
                 break
             value = new
-        return 1.05 * new
+        return self.diagonal / (1.05 * new)
 
     @cached_property
     def diagonal(self) -> np.ndarray:
@@ -110,8 +114,9 @@ class RingProblem:
 
     @property
     def dx(self) -> float:
-        """The rings' width (m)."""
-        return float(self.edges[1] - self.edges[0])
+        """The narrowest ring's width (m): the width of uniform rings, the fine band's of
+        graded ones."""
+        return float(np.min(np.diff(self.edges)))
 
     def equilibrium(self, approach: float, initial: np.ndarray | None = None, *,
                     tol: float = 1e-7) -> AdhesiveState:
@@ -122,18 +127,18 @@ class RingProblem:
 def ring_problem(radius: float, e_star: float, law: InteractionLaw,
                  edges: np.ndarray) -> RingProblem:
     """The sphere of ``radius`` (m) and modulus ``e_star`` (Pa) with ``law`` on the rings
-    between ``edges`` (m, from 0, uniform).
+    between ``edges`` (m, from 0, increasing; uniform or graded, as
+    :func:`contact.adhesion._ring_ball.graded_edges` makes them: each ring's influence is
+    exact for any widths, :mod:`contact.halfspace.axisymmetric`).
 
     Raises
     ------
     ContactInputError
-        Edges that are not uniform from 0, or (never met on uniform rings) a ring matrix
-        whose LU needs pivoting, so that its leading blocks would not be the discs'.
+        Edges that do not start at 0 and increase, or (never met on uniform rings, nor on
+        graded ones whose widths grow by 10 % a ring) a ring matrix whose LU needs
+        pivoting, so that its leading blocks would not be the discs'.
     """
     op = RingOperator(np.asarray(edges, dtype=float))
-    widths = np.diff(op.edges)
-    if not np.allclose(widths, widths[0], rtol=1e-9):
-        raise ContactInputError("the axisymmetric adhesive solve needs uniform rings")
     matrix = op.matrix / e_star
     lu, piv = linalg.lu_factor(matrix, check_finite=False)
     if np.any(piv != np.arange(piv.size)):
@@ -392,7 +397,7 @@ def _descend_rings(problem: RingProblem, approach: float, g: np.ndarray, tol: fl
     law, m = problem.law, g.size
     h = problem.gap0[:m]
     lu = (problem.lu[:m, :m], np.arange(m))
-    step = 1.0 / problem.largest_stiffness
+    step = problem.descent_step[:m]
     x = g.copy()
     y = g.copy()
     theta = 1.0

@@ -206,7 +206,8 @@ def _print(run_: Any) -> None:
         print(f"{step:15s} smoothed over {format_length(law.smoothing)} of gap "
               f"({scale}: removes the pixels' pinning of the zone's end)")
     if run_.axisymmetric:
-        print(f"rings           {ball.rings} rings of {format_length(ball.dr)} to radius "
+        kind = "graded rings, the finest" if ball.graded else "rings of"
+        print(f"rings           {ball.rings} {kind} {format_length(ball.dr)} to radius "
               f"{format_length(ball.outer_radius)} (axisymmetric, free half-space; the "
               f"cohesive zone {ball.process_zone / ball.dr:.3g} rings wide)")
     else:

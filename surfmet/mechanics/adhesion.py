@@ -259,21 +259,27 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
     from contact.adhesion._ring_ball import (
         ZONE_RINGS,
         adhesive_sphere,
-        ring_count,
+        ring_edges,
         ring_law,
         ring_width,
+        smoothing_width,
     )
     from surfmet.units import format_length
 
     dr, outer = ring_width(radius, mats.e_star, law)
+    smooth = smoothing_width(radius, mats.e_star, law, dr, outer)
     if law.smoothing == 0.0:  # a step smoothed on the rings, where the law has one
-        law = ring_law(law, mats.e_star, dr, ring_count(dr, outer))
+        law = ring_law(law, mats.e_star, ring_edges(radius, mats.e_star, law, dr, outer),
+                       smooth)
     res = adhesive_sphere(radius, mats, law, dr=dr, steps=steps, progress=progress)
     zone = process_zone(mats.e_star, law.work, law.peak)
-    why = (f"default for a smooth sphere: axisymmetric rings ({res.rings} of "
-           f"{format_length(dr, 3)}), the cohesive zone {zone / dr:.3g} rings wide (at least "
-           f"{ZONE_RINGS:g}, or 200 across the contact's scale where the zone is wider); "
-           "--model 3d for the periodic 3D grid")
+    rings = (f"graded axisymmetric rings ({res.rings}: {format_length(dr, 3)} about the "
+             f"contact edge at pull-off, {format_length(smooth, 3)} over its travel, the "
+             "step smoothed on these)" if res.graded else
+             f"axisymmetric rings ({res.rings} of {format_length(dr, 3)})")
+    why = (f"default for a smooth sphere: {rings}, the cohesive zone {zone / dr:.3g} rings "
+           f"wide (at least {ZONE_RINGS:g}, or 200 across the contact's scale where the "
+           "zone is wider); --model 3d for the periodic 3D grid")
     return Adhesion(res, None, why)
 
 

@@ -160,7 +160,7 @@ def _grid(run: Any) -> dict[str, Any]:
     zone = quantity(ball.process_zone, "m")
     if run.axisymmetric:
         return {"discretisation": "axisymmetric", "rings": ball.rings,
-                "ring_width": quantity(ball.dr, "m"),
+                "graded": ball.graded, "ring_width": quantity(ball.dr, "m"),
                 "outer_radius": quantity(ball.outer_radius, "m"), "periodic": False,
                 "process_zone": zone,
                 "process_zone_rings": quantity(ball.process_zone / ball.dr, ""),
