@@ -189,9 +189,9 @@ def render_3d(
         )
         _round_bar_labels(plotter.scalar_bar, lo / UM, hi / UM)
         if title is None:
-            from surfmet.plots.areal import _scan_title
+            from surfmet.plots._style import scan_title
 
-            title = _scan_title(topo)
+            title = scan_title(topo)
         note = f"vertical exaggeration ×{exaggeration:g}; x, y in {unit}"
         if factors != (1, 1):
             note += f"; shown at {nx} × {ny} (block means of {factors[1]} × {factors[0]})"

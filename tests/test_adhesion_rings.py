@@ -93,8 +93,8 @@ _LAMBDA_10 = pytest.mark.campaign
 def test_pull_off_is_maugis_from_lambda_0_05_to_10(lam):
     """Measured (16 steps): lambda 0.05 -0.07 %, 0.1 +0.37 %, 0.5 +0.14 %, 1 +0.18 %,
     2 +0.19 %, 5 +0.30 % with the rings' stable ramp (contact.adhesion._ring_ball.ring_law),
-    10 +0.33 % on 1,011 graded rings (28 s CPU); with the grid's ramp before it 0.5 +0.45 %, 1 +0.39 %,
-    2 +0.78 %, 5 +1.20 %, 10 +1.04 % (3,329 uniform rings, 613 s CPU)."""
+    10 +0.33 % on 1,011 graded rings (28 s CPU); with the grid's ramp before it 0.5 +0.45 %,
+    1 +0.39 %, 2 +0.78 %, 5 +1.20 %, 10 +1.04 % (3,329 uniform rings, 613 s CPU)."""
     run = _run(lam)
     res = run.result
     assert run.axisymmetric and res.maugis_parameter == pytest.approx(lam, rel=1e-3)

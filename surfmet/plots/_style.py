@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from surfmet._model import Profile, Topography
 
 UM = 1e-6
 MM = 1e-3
@@ -99,3 +102,16 @@ def add_scale_bar(ax: Any, extent_m: float, scale: float, unit: str, color: str 
                           label_top=True, sep=3)
     ax.add_artist(bar)
     return bar
+
+
+def scan_title(scan: Topography | Profile) -> str:
+    """A scan's title: its file's name and its size (``name  (size)``), or the size."""
+    from surfmet._model import Topography
+    from surfmet.units import format_length, valid_text
+
+    name = valid_text(Path(str(scan.metadata.get("source", ""))).name)
+    if isinstance(scan, Topography):
+        size = f"{format_length(scan.size_x)} × {format_length(scan.size_y)}"
+    else:
+        size = format_length(scan.length)
+    return f"{name}  ({size})" if name else size

@@ -16,8 +16,14 @@ import numpy as np
 from surfmet._errors import SurfmetInputError
 from surfmet._model import Profile, Topography
 from surfmet._render import render_3d as render_3d  # re-exported: the 3D view of a scan
-from surfmet.plots._style import UM, add_scale_bar, finish, lateral_unit, new_figure
-from surfmet.units import valid_text
+from surfmet.plots._style import (
+    UM,
+    add_scale_bar,
+    finish,
+    lateral_unit,
+    new_figure,
+    scan_title,
+)
 
 HEIGHT_LABEL = "height (µm)"
 
@@ -76,7 +82,7 @@ def height_map(
     cb.set_label(HEIGHT_LABEL)
     if scale_bar:
         add_scale_bar(ax, max(topo.size_x, topo.size_y), scale, unit)
-    ax.set_title(title if title is not None else _scan_title(topo))
+    ax.set_title(title if title is not None else scan_title(topo))
     return finish(fig, path)
 
 
@@ -92,17 +98,6 @@ def map_figure_size(size_x: float, size_y: float) -> tuple[float, float]:
         h_ax = 4.2
         w_ax = max(1.2, h_ax * aspect)
     return (w_ax + 2.4, h_ax + 1.3)
-
-
-def _scan_title(scan: Topography | Profile) -> str:
-    from surfmet.units import format_length
-
-    name = valid_text(Path(str(scan.metadata.get("source", ""))).name)
-    if isinstance(scan, Topography):
-        size = f"{format_length(scan.size_x)} × {format_length(scan.size_y)}"
-    else:
-        size = format_length(scan.length)
-    return f"{name}  ({size})" if name else size
 
 
 def _heights_of(scan: Any) -> np.ndarray:
