@@ -159,10 +159,19 @@ def _disc_solve(problem: RingProblem, k: int, b: np.ndarray) -> np.ndarray:
 
 def _slope(law: InteractionLaw, g: np.ndarray) -> np.ndarray:
     """t'(g) (Pa/m) by a central difference of the law's traction, on a gap step small
-    against its range; one-sided at g = 0 (the law is not defined below)."""
+    against its range; one-sided at g = 0 (the law is not defined below, and a Newton
+    iterate's overlap there is taken at contact: the exponential's exp(-g / rho) of a deep
+    overlap overflows)."""
     eps = 1e-6 * law.range
+    g = np.maximum(g, 0.0)
     lo = np.maximum(g - eps, 0.0)
-    return (law.traction(g + eps) - law.traction(lo)) / (g + eps - lo)
+    step = (g + eps) - lo
+    # a gap so wide that eps is lost in it (a diverging Newton iterate, which the caller
+    # rejects) lies far beyond the law's reach: no slope there, not 0 / 0
+    slope = np.zeros_like(g)
+    ok = step > 0.0
+    slope[ok] = (law.traction(g[ok] + eps) - law.traction(lo[ok])) / step[ok]
+    return slope
 
 
 def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
@@ -171,6 +180,7 @@ def _newton_step(problem: RingProblem, delta: float, k: int, p: np.ndarray,
     strongly coupled open rings (the largest |t'(g)| K_ii) and the disc solved together,
     the other open rings given their traction at their gap."""
     law, kmat, h = problem.law, problem.matrix, problem.gap0
+    g = np.maximum(g, 0.0)  # an open ring's overlap is taken at contact, as in _merit
     slope = _slope(law, g[k:])
     coupling = np.abs(slope) * problem.diagonal[k:]
     strong = np.flatnonzero(coupling > SLOPE_SHARE * max(float(coupling.max(initial=0.0)),
@@ -311,7 +321,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
     gaps, iterations, residual), or None where it has not converged in ``max_iter``."""
     h, law, kmat = problem.gap0, problem.law, problem.matrix
     k = int(np.argmax(g > 0.0)) if np.any(g > 0.0) else h.size
-    p = -law.traction(g)
+    p = -law.traction(np.maximum(g, 0.0))  # the disc's rings are set just below
     if k:
         p[:k] = _disc_solve(problem, k, approach - h[:k] - kmat[:k, k:] @ p[k:])
     u = kmat @ p
