@@ -86,3 +86,42 @@ def test_a_jump_loses_energy_at_the_jumps():
         i = int(np.flatnonzero((touching[1:] != touching[:-1]) & (touching[1:] == entering))[0])
         at_jumps += released[i]
     assert at_jumps == pytest.approx(cyc.hysteresis_energy, rel=0.02)
+
+
+def test_every_equilibrium_closes_its_disc():
+    """Each ring state the cycle accepts holds the touching rings' own equation: their gap,
+    recomputed from the pressures (h - delta + K p), is zero to the solve's tolerance (as
+    the pressure that would close it over the pressure scale). Main read the touching
+    rings' gap as zero by construction, so a damped Newton step after a set change could
+    stop with the disc's edge ring 5.8e-12 m open (13 kPa, 5 % of sigma0): at lambda 0.0765
+    step 31 the approach leg then held a load 3.5e-5 off the retraction's at the same
+    approach."""
+    from contact.adhesion._ring_ball import (
+        approach_range,
+        ring_edges,
+        ring_law,
+        ring_width,
+        smoothing_width,
+    )
+    from contact.adhesion._rings import ring_problem
+    from contact.adhesion.cycle import advance
+    from contact.adhesion.laws import DugdaleLaw
+
+    law = DugdaleLaw(work=W, sigma0=W / 2e-7)
+    dr, outer = ring_width(R, E_STAR, law)
+    law = ring_law(law, E_STAR, ring_edges(R, E_STAR, law, dr, outer),
+                   smoothing_width(R, E_STAR, law, dr, outer))
+    problem = ring_problem(R, E_STAR, law, ring_edges(R, E_STAR, law, dr, outer))
+    far, deep = approach_range(R, E_STAR, law)
+    steps = np.linspace(far, deep, 40)  # the command's steps, halved as the cycle does
+    tol, worst, previous = 1e-7, 0.0, None
+    for target in np.concatenate([steps, steps[::-1]]):
+        reached = advance(problem, previous, float(target), tol)
+        previous = reached[-1]
+        for approach, state in reached:
+            gap = state.gap
+            k = int(np.argmax(gap > 0.0)) if np.any(gap > 0.0) else gap.size
+            closing = np.abs(problem.gap0[:k] - approach + problem.matrix[:k] @ state.pressure)
+            scale = max(law.peak, float(state.pressure.max()))
+            worst = max(worst, float((closing / problem.diagonal[:k]).max(initial=0.0)) / scale)
+    assert worst <= tol

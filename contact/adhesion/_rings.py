@@ -20,7 +20,8 @@ of K (its partial pivoting is the identity, checked at build: the diagonal domin
 column), so each iteration costs O(n^2). Then k moves, as a primal-dual active set does:
 a touching ring holding more tension than t(0) lets go, an open ring with a negative gap
 touches. The iterate is converged when the set no longer changes and equilibrium holds
-to ``tol`` of the pressure scale, the 3D solve's residual
+to ``tol`` of the pressure scale (the touching rings' gap recomputed from the pressures
+included: a damped step or a set change leaves it off zero), the 3D solve's residual
 (:func:`contact.adhesion.solver.solve_adhesive`).
 
 The displacement-controlled cycle is the 3D one's (:mod:`contact.adhesion.cycle`): the
@@ -249,13 +250,17 @@ def _gaps(problem: RingProblem, delta: float, k: int, u: np.ndarray) -> np.ndarr
     return g
 
 
-def _violation(problem: RingProblem, k: int, p: np.ndarray, g: np.ndarray) -> np.ndarray:
-    """Violation of equilibrium per ring (Pa): the touching rings' tension beyond t(0),
-    the open rings' |p + t(g)|, and a negative gap as the pressure it would take to lift
-    it (its gap over the ring's self-compliance)."""
+def _violation(problem: RingProblem, k: int, p: np.ndarray, g: np.ndarray,
+               u: np.ndarray, approach: float) -> np.ndarray:
+    """Violation of equilibrium per ring (Pa): the touching rings' tension beyond t(0) and
+    their gap (from ``u`` = K p, which a damped step or a set change leaves off zero: the
+    disc's own equation) as the pressure it would take to close it, the open rings'
+    |p + t(g)|, and a negative gap as the pressure it would take to lift it (its gap over
+    the ring's self-compliance)."""
     law = problem.law
     out = np.zeros_like(p)
-    out[:k] = np.maximum(-(p[:k] + law.traction(0.0)), 0.0)
+    disc = np.abs(problem.gap0[:k] - approach + u[:k]) / problem.diagonal[:k]
+    out[:k] = np.maximum(np.maximum(-(p[:k] + law.traction(0.0)), 0.0), disc)
     out[k:] = np.abs(p[k:] + law.traction(np.maximum(g[k:], 0.0)))
     neg = g[k:] < 0.0
     out[k:][neg] = np.maximum(out[k:][neg],
@@ -330,7 +335,7 @@ def _newton(problem: RingProblem, approach: float, g: np.ndarray, tol: float,
     for it in range(1, max_iter + 1):
         g = _gaps(problem, approach, k, u)
         scale = max(law.peak, float(p.max()))
-        residual = float(_violation(problem, k, p, g).max()) / scale
+        residual = float(_violation(problem, k, p, g, u, approach).max()) / scale
         if residual <= tol:
             return k, p, g, it, residual
         if not math.isfinite(residual) or residual > DIVERGED:
