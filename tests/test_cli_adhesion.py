@@ -216,3 +216,19 @@ def test_ring_width_is_written_as_a_person_reads_it(capsys):
     dumped = json.dumps(rec)
     assert "axisymmetric rings" in dumped
     assert not re.search(r"\d(\.\d+)?e-\d+ m\b", dumped), dumped
+
+
+def test_ring_width_reads_the_same_on_both_lines(capsys):
+    """The rings line and the reason below it name one ring width, written alike (main:
+    "399 rings of 44.54 nm" above "axisymmetric rings (399 of 44.5 nm)")."""
+    import re
+
+    argv = ["adhesion", "--radius", "1mm", "--e-star", "1GPa", "--range", "10nm",
+            "--work-of-adhesion", "50mJ/m2", "--interaction", "exponential", "--steps", "8",
+            "--quiet"]
+    assert main(argv) == 0
+    text = capsys.readouterr().out
+    above = re.search(r"rings +(\d+) rings of ([\d.]+ nm)", text)
+    below = re.search(r"axisymmetric rings \((\d+) of ([\d.]+ nm)\)", text)
+    assert above and below, text
+    assert above.groups() == below.groups()

@@ -276,10 +276,10 @@ def ring_run(radius: float, mats: Any, law: AdhesionLaw, steps: int,
                        smooth)
     res = adhesive_sphere(radius, mats, law, dr=dr, steps=steps, progress=progress)
     zone = process_zone(mats.e_star, law.work, law.peak)
-    rings = (f"graded axisymmetric rings ({res.rings}: {format_length(dr, 3)} about the "
-             f"contact edge at pull-off, {format_length(smooth, 3)} over its travel, the "
+    rings = (f"graded axisymmetric rings ({res.rings}: {format_length(dr)} about the "
+             f"contact edge at pull-off, {format_length(smooth)} over its travel, the "
              "step smoothed on these)" if res.graded else
-             f"axisymmetric rings ({res.rings} of {format_length(dr, 3)})")
+             f"axisymmetric rings ({res.rings} of {format_length(dr)})")
     why = (f"default for a smooth sphere: {rings}, the cohesive zone {zone / dr:.3g} rings "
            f"wide (at least {ZONE_RINGS:g}, or 200 across the contact's scale where the "
            "zone is wider); --model 3d for the periodic 3D grid")
